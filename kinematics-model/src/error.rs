@@ -1,0 +1,251 @@
+//! Errors of the description and model stages.
+
+use std::fmt;
+
+/// The element of a description an error is about, as a user would name it.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Element {
+    /// The robot as a whole.
+    Robot,
+    /// A URDF link.
+    Link(String),
+    /// A URDF joint.
+    Joint(String),
+    /// A DH table row (1-based) and its joint name.
+    DhRow {
+        /// 1-based row number.
+        row: usize,
+        /// Joint name of the row.
+        joint: String,
+    },
+    /// The fixed base or tool transform of a DH table.
+    DhSection(&'static str),
+}
+
+impl fmt::Display for Element {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Element::Robot => write!(f, "robot"),
+            Element::Link(name) => write!(f, "link `{name}`"),
+            Element::Joint(name) => write!(f, "joint `{name}`"),
+            Element::DhRow { row, joint } => write!(f, "DH row {row} (joint `{joint}`)"),
+            Element::DhSection(section) => write!(f, "DH `{section}` transform"),
+        }
+    }
+}
+
+/// One rule a description broke. Every message names the element.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum ModelError {
+    /// The description has no links.
+    #[error("the robot has no links")]
+    NoLinks,
+    /// Two links share a name.
+    #[error("link `{0}` is defined more than once")]
+    DuplicateLink(String),
+    /// Two joints share a name.
+    #[error("joint `{0}` is defined more than once")]
+    DuplicateJoint(String),
+    /// A joint names a link that does not exist.
+    #[error("{element}: {role} link `{link}` does not exist")]
+    UnknownLink {
+        /// The joint.
+        element: Element,
+        /// `parent` or `child`.
+        role: &'static str,
+        /// The missing link.
+        link: String,
+    },
+    /// A link is the child of more than one joint.
+    #[error("link `{link}` has more than one parent joint: {}", quoted(.joints))]
+    MultipleParents {
+        /// The link.
+        link: String,
+        /// The joints that name it as child.
+        joints: Vec<String>,
+    },
+    /// More than one link is no joint's child.
+    #[error("more than one root link (links that are no joint's child): {}", quoted(.links))]
+    MultipleRoots {
+        /// The root candidates.
+        links: Vec<String>,
+    },
+    /// Links that cannot be reached from the root: they form a cycle.
+    #[error("the joints form a cycle through {}", quoted(.links))]
+    Cycle {
+        /// Links on or behind the cycle.
+        links: Vec<String>,
+    },
+    /// A joint type the model does not support.
+    #[error("{element}: joint type `{kind}` is not supported (revolute, continuous, prismatic, fixed are)")]
+    UnsupportedJoint {
+        /// The joint.
+        element: Element,
+        /// The type as written.
+        kind: &'static str,
+    },
+    /// A moving joint with a zero axis.
+    #[error("{element}: axis is zero")]
+    ZeroAxis {
+        /// The joint.
+        element: Element,
+    },
+    /// A NaN or infinity where a finite number is needed.
+    #[error("{element}: {field} is not a finite number")]
+    NonFinite {
+        /// The element.
+        element: Element,
+        /// Which number (`origin`, `axis`, `lower limit`, ...).
+        field: &'static str,
+    },
+    /// Lower position limit above the upper.
+    #[error("{element}: lower limit {lower} is greater than upper limit {upper}")]
+    LimitOrder {
+        /// The joint.
+        element: Element,
+        /// Lower limit.
+        lower: f64,
+        /// Upper limit.
+        upper: f64,
+    },
+    /// A mimic of a joint that does not exist.
+    #[error("{element}: mimics joint `{source_joint}`, which does not exist")]
+    MimicUnknown {
+        /// The mimic joint.
+        element: Element,
+        /// The missing source.
+        source_joint: String,
+    },
+    /// A mimic of a fixed joint.
+    #[error("{element}: mimics joint `{source_joint}`, which is fixed")]
+    MimicOfFixed {
+        /// The mimic joint.
+        element: Element,
+        /// The fixed source.
+        source_joint: String,
+    },
+    /// A fixed joint that claims to mimic another.
+    #[error("{element}: a fixed joint cannot mimic another joint")]
+    FixedMimic {
+        /// The fixed joint.
+        element: Element,
+    },
+    /// Mimic relations that loop.
+    #[error("mimic joints form a loop: {}", quoted(.joints))]
+    MimicLoop {
+        /// The joints on the loop, in order.
+        joints: Vec<String>,
+    },
+    /// A link name that is not in the tree (chain selection, lookups).
+    #[error("link `{0}` does not exist")]
+    NoSuchLink(String),
+    /// A chain whose base is not an ancestor of its tip.
+    #[error("link `{base}` is not an ancestor of link `{tip}`, so there is no chain from one to the other")]
+    NotAChain {
+        /// Requested base.
+        base: String,
+        /// Requested tip.
+        tip: String,
+    },
+}
+
+fn quoted(names: &[String]) -> String {
+    names.iter().map(|n| format!("`{n}`")).collect::<Vec<_>>().join(", ")
+}
+
+/// Every rule a description broke (never empty).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ModelErrors(Vec<ModelError>);
+
+impl ModelErrors {
+    /// Wraps a non-empty list; `None` if empty.
+    pub fn from_vec(errors: Vec<ModelError>) -> Option<Self> {
+        (!errors.is_empty()).then_some(Self(errors))
+    }
+
+    /// The errors, in the order the rules ran.
+    pub fn errors(&self) -> &[ModelError] {
+        &self.0
+    }
+}
+
+impl From<ModelError> for ModelErrors {
+    fn from(error: ModelError) -> Self {
+        Self(vec![error])
+    }
+}
+
+impl fmt::Display for ModelErrors {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        for (i, e) in self.0.iter().enumerate() {
+            if i > 0 {
+                write!(f, "; ")?;
+            }
+            write!(f, "{e}")?;
+        }
+        Ok(())
+    }
+}
+
+impl std::error::Error for ModelErrors {}
+
+/// What went wrong while loading a robot description.
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum LoadErrorKind {
+    /// The file could not be read.
+    #[error("cannot read the file: {0}")]
+    Io(#[source] std::io::Error),
+    /// The file extension names no format we read.
+    #[error("unknown description format (expected .urdf, .xml, .toml or .json)")]
+    UnknownFormat,
+    /// The text is not well-formed for its format.
+    #[error("{}{message}", line.map(|l| format!("line {l}: ")).unwrap_or_default())]
+    Syntax {
+        /// 1-based line, where the parser gives one.
+        line: Option<usize>,
+        /// The parser's message.
+        message: String,
+    },
+    /// A value is well-formed but wrong (a bad angle, half a limit pair).
+    #[error("{element}: {message}")]
+    Value {
+        /// Where.
+        element: Element,
+        /// What is wrong.
+        message: String,
+    },
+    /// The description breaks model rules.
+    #[error("{0}")]
+    Model(ModelErrors),
+}
+
+/// A description that could not be loaded, with the file as the user named it.
+#[derive(Debug, thiserror::Error)]
+#[error("{file}: {kind}")]
+pub struct LoadError {
+    /// The file, as the caller named it.
+    pub file: String,
+    /// What went wrong.
+    #[source]
+    pub kind: LoadErrorKind,
+}
+
+impl LoadError {
+    /// A load error for `file`.
+    pub fn new(file: impl Into<String>, kind: LoadErrorKind) -> Self {
+        Self {
+            file: file.into(),
+            kind,
+        }
+    }
+
+    /// The model errors, if that is what went wrong.
+    pub fn model_errors(&self) -> Option<&ModelErrors> {
+        match &self.kind {
+            LoadErrorKind::Model(e) => Some(e),
+            _ => None,
+        }
+    }
+}

@@ -1,0 +1,42 @@
+//! Robot descriptions and the validated kinematic tree.
+//!
+//! This crate owns the first two stages of the pipeline: *description* (reading a URDF document or a
+//! Denavit-Hartenberg table from text into a [`Description`]) and *model* (checking that description
+//! against every rule and building a [`KinematicTree`] that is valid by construction: one root, no
+//! cycles, unit axes, finite numbers, mimic joints resolved to their independent source). It does no
+//! file IO and no numeric transform math: the runtime reference (`kinematics-runtime`) and the
+//! compiler both start from the tree built here, and neither shares the other's math.
+//!
+//! ```
+//! use kinematics_model::{parse_source, KinematicTree};
+//!
+//! let urdf = r#"<robot name="pendulum">
+//!   <link name="base"/> <link name="bob"/>
+//!   <joint name="swing" type="continuous">
+//!     <parent link="base"/> <child link="bob"/> <axis xyz="0 0 2"/>
+//!   </joint>
+//! </robot>"#;
+//! let tree: KinematicTree = parse_source("pendulum.urdf", urdf)?;
+//! assert_eq!(tree.dof(), 1);
+//! assert_eq!(tree.joint_by_name("swing").map(|j| j.axis), Some([0.0, 0.0, 1.0]));
+//! # Ok::<(), kinematics_model::LoadError>(())
+//! ```
+
+mod angle;
+mod description;
+pub mod dh;
+mod error;
+mod joint;
+mod source;
+mod transform;
+mod tree;
+pub mod urdf;
+mod validate;
+
+pub use angle::{Angle, PiRational};
+pub use description::{Description, JointDescription, JointTypeDescription, LimitsDescription, MimicDescription};
+pub use error::{Element, LoadError, LoadErrorKind, ModelError, ModelErrors};
+pub use joint::{Joint, JointKind, JointMotion, Limits, Link};
+pub use source::{SourceFormat, parse_source};
+pub use transform::{Axis, Elementary, FixedTransform};
+pub use tree::{Chain, JointId, KinematicTree, LinkId};

@@ -1,0 +1,178 @@
+//! The validated kinematic tree: link and joint arenas in a fixed, documented order.
+
+use crate::description::Description;
+use crate::error::{ModelError, ModelErrors};
+use crate::joint::{Joint, JointMotion, Limits, Link};
+
+/// Index of a link in [`KinematicTree::links`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct LinkId(pub usize);
+
+/// Index of a joint in [`KinematicTree::joints`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct JointId(pub usize);
+
+/// A validated kinematic tree.
+///
+/// Valid by construction: exactly one root, every link reached from it by exactly one path, every
+/// name unique, every number finite, every moving joint's axis of unit length, limits ordered and
+/// mimic joints resolved to an independent source. Later stages therefore have no error path for a
+/// bad robot.
+///
+/// **Order.** Links and joints are stored in depth-first pre-order from the root, visiting a link's
+/// child joints in the order the description lists them; so `LinkId(0)` is the root and every
+/// joint comes after the joint of its parent link. The degrees of freedom (the entries of `q`) are
+/// the moving, non-mimic joints in that same order: for a chain, base to tip; for a DH table, row
+/// order.
+#[derive(Debug, Clone, PartialEq)]
+pub struct KinematicTree {
+    pub(crate) name: String,
+    pub(crate) links: Vec<Link>,
+    pub(crate) joints: Vec<Joint>,
+    pub(crate) dof_joints: Vec<JointId>,
+}
+
+/// The joints on the path from a base link down to a tip link.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Chain {
+    /// The base link.
+    pub base: LinkId,
+    /// The tip link.
+    pub tip: LinkId,
+    /// The joints from base to tip, in that order (empty when base is the tip).
+    pub joints: Vec<JointId>,
+}
+
+impl KinematicTree {
+    /// Checks every rule against `description` and builds the tree, or returns every fault found.
+    pub fn from_description(description: &Description) -> Result<Self, ModelErrors> {
+        crate::validate::build(description)
+    }
+
+    /// Robot name.
+    pub fn name(&self) -> &str {
+        &self.name
+    }
+
+    /// The root link (always `LinkId(0)`).
+    pub fn root(&self) -> LinkId {
+        LinkId(0)
+    }
+
+    /// All links, in depth-first order from the root.
+    pub fn links(&self) -> &[Link] {
+        &self.links
+    }
+
+    /// All joints, in depth-first order from the root.
+    pub fn joints(&self) -> &[Joint] {
+        &self.joints
+    }
+
+    /// The link with this id.
+    ///
+    /// Ids come from this tree, so they are always in range.
+    pub fn link(&self, id: LinkId) -> &Link {
+        &self.links[id.0]
+    }
+
+    /// The joint with this id.
+    pub fn joint(&self, id: JointId) -> &Joint {
+        &self.joints[id.0]
+    }
+
+    /// The id of the link named `name`.
+    pub fn link_id(&self, name: &str) -> Option<LinkId> {
+        self.links.iter().position(|l| l.name == name).map(LinkId)
+    }
+
+    /// The id of the joint named `name`.
+    pub fn joint_id(&self, name: &str) -> Option<JointId> {
+        self.joints.iter().position(|j| j.name == name).map(JointId)
+    }
+
+    /// The link named `name`.
+    pub fn link_by_name(&self, name: &str) -> Option<&Link> {
+        self.link_id(name).map(|id| self.link(id))
+    }
+
+    /// The joint named `name`.
+    pub fn joint_by_name(&self, name: &str) -> Option<&Joint> {
+        self.joint_id(name).map(|id| self.joint(id))
+    }
+
+    /// Number of degrees of freedom (the length of `q`).
+    pub fn dof(&self) -> usize {
+        self.dof_joints.len()
+    }
+
+    /// The independent joints, in degree-of-freedom order: `q[i]` drives `dof_joints()[i]`.
+    pub fn dof_joints(&self) -> &[JointId] {
+        &self.dof_joints
+    }
+
+    /// Names of the independent joints, in degree-of-freedom order.
+    pub fn dof_names(&self) -> Vec<&str> {
+        self.dof_joints.iter().map(|&j| self.joint(j).name.as_str()).collect()
+    }
+
+    /// Position limits of each degree of freedom, in order (`None` for continuous joints).
+    pub fn dof_limits(&self) -> Vec<Option<Limits>> {
+        self.dof_joints.iter().map(|&j| self.joint(j).limits).collect()
+    }
+
+    /// The joints from the root down to `link`, root first.
+    pub fn path_from_root(&self, link: LinkId) -> Vec<JointId> {
+        let mut path = Vec::new();
+        let mut at = link;
+        while let Some(joint) = self.link(at).parent_joint {
+            path.push(joint);
+            at = self.joint(joint).parent;
+        }
+        path.reverse();
+        path
+    }
+
+    /// The chain from link `base` down to link `tip`.
+    ///
+    /// Fails when either link is unknown or `base` is not `tip` or one of its ancestors.
+    pub fn chain(&self, base: &str, tip: &str) -> Result<Chain, ModelError> {
+        let base_id = self.link_id(base).ok_or_else(|| ModelError::NoSuchLink(base.to_owned()))?;
+        let tip_id = self.link_id(tip).ok_or_else(|| ModelError::NoSuchLink(tip.to_owned()))?;
+        let path = self.path_from_root(tip_id);
+        let start = if base_id == self.root() {
+            0
+        } else {
+            match path.iter().position(|&j| self.joint(j).parent == base_id) {
+                Some(i) => i,
+                None if base_id == tip_id => path.len(),
+                None => {
+                    return Err(ModelError::NotAChain {
+                        base: base.to_owned(),
+                        tip: tip.to_owned(),
+                    });
+                }
+            }
+        };
+        Ok(Chain {
+            base: base_id,
+            tip: tip_id,
+            joints: path[start..].to_vec(),
+        })
+    }
+
+    /// The degree-of-freedom indices that move the joints of `chain`, ascending and unique.
+    pub fn chain_dofs(&self, chain: &Chain) -> Vec<usize> {
+        let mut dofs: Vec<usize> = chain
+            .joints
+            .iter()
+            .filter_map(|&j| match self.joint(j).motion {
+                JointMotion::Fixed => None,
+                JointMotion::Dof(i) | JointMotion::Mimic { dof: i, .. } => Some(i),
+            })
+            .collect();
+        dofs.sort_unstable();
+        dofs.dedup();
+        dofs
+    }
+}

@@ -1,0 +1,30 @@
+//! Errors of the runtime reference.
+
+use kinematics_model::ModelError;
+
+/// A runtime query that cannot be answered.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum RuntimeError {
+    /// `q` does not have one entry per degree of freedom.
+    #[error("robot `{robot}` has {expected} degrees of freedom ({joints}), but q has {got} values")]
+    WrongDof {
+        /// Robot name.
+        robot: String,
+        /// Degrees of freedom.
+        expected: usize,
+        /// Length of `q`.
+        got: usize,
+        /// The joint names in DoF order, for the message.
+        joints: String,
+    },
+    /// A link or chain that the tree does not have.
+    #[error("robot `{robot}`: {source}")]
+    Model {
+        /// Robot name.
+        robot: String,
+        /// What is missing.
+        #[source]
+        source: ModelError,
+    },
+}

@@ -1,0 +1,138 @@
+//! Forward kinematics over the tree: `T_world^child = T_world^parent * origin * M(q) * after`.
+
+use kinematics_model::{Elementary, FixedTransform, Joint, JointKind, KinematicTree, LinkId};
+use nalgebra::{Isometry3, Translation3, Unit, UnitQuaternion, Vector3};
+
+use crate::error::RuntimeError;
+
+/// The reference forward kinematics of one robot.
+///
+/// Built once from a validated tree; the fixed transforms are converted to isometries up front, and
+/// every query walks the links in the tree's depth-first order (parents before children).
+#[derive(Debug, Clone)]
+pub struct ReferenceFk {
+    tree: KinematicTree,
+    origins: Vec<Isometry3<f64>>,
+    afters: Vec<Isometry3<f64>>,
+    axes: Vec<Unit<Vector3<f64>>>,
+}
+
+/// The isometry of a fixed transform: the product of its steps, left to right.
+///
+/// ```
+/// use kinematics_model::{Angle, FixedTransform};
+/// let urdf_origin = FixedTransform::from_xyz_rpy([1.0, 2.0, 3.0], [Angle::Radians(0.1), Angle::Radians(0.2), Angle::Radians(0.3)]);
+/// let iso = kinematics_runtime::fixed_isometry(&urdf_origin);
+/// let expected = nalgebra::Isometry3::from_parts(
+///     nalgebra::Translation3::new(1.0, 2.0, 3.0),
+///     nalgebra::UnitQuaternion::from_euler_angles(0.1, 0.2, 0.3),
+/// );
+/// approx::assert_relative_eq!(iso, expected, epsilon = 1e-15);
+/// ```
+pub fn fixed_isometry(t: &FixedTransform) -> Isometry3<f64> {
+    t.steps().iter().fold(Isometry3::identity(), |acc, step| acc * elementary(step))
+}
+
+fn elementary(step: &Elementary) -> Isometry3<f64> {
+    match *step {
+        Elementary::Translation(v) => Isometry3::from_parts(Translation3::new(v[0], v[1], v[2]), UnitQuaternion::identity()),
+        Elementary::Rotation(axis, angle) => {
+            let axis = match axis {
+                kinematics_model::Axis::X => Vector3::x_axis(),
+                kinematics_model::Axis::Y => Vector3::y_axis(),
+                kinematics_model::Axis::Z => Vector3::z_axis(),
+            };
+            Isometry3::from_parts(Translation3::identity(), UnitQuaternion::from_axis_angle(&axis, angle.radians()))
+        }
+    }
+}
+
+impl ReferenceFk {
+    /// Prepares the reference FK of a tree.
+    pub fn new(tree: KinematicTree) -> Self {
+        let origins = tree.joints().iter().map(|j| fixed_isometry(&j.origin)).collect();
+        let afters = tree.joints().iter().map(|j| fixed_isometry(&j.after_motion)).collect();
+        let axes = tree
+            .joints()
+            .iter()
+            .map(|j| Unit::new_normalize(Vector3::new(j.axis[0], j.axis[1], j.axis[2])))
+            .collect();
+        Self {
+            tree,
+            origins,
+            afters,
+            axes,
+        }
+    }
+
+    /// The tree this evaluates.
+    pub fn tree(&self) -> &KinematicTree {
+        &self.tree
+    }
+
+    /// Fails unless `q` has one value per degree of freedom.
+    pub fn check_q(&self, q: &[f64]) -> Result<(), RuntimeError> {
+        if q.len() == self.tree.dof() {
+            return Ok(());
+        }
+        Err(RuntimeError::WrongDof {
+            robot: self.tree.name().to_owned(),
+            expected: self.tree.dof(),
+            got: q.len(),
+            joints: self.tree.dof_names().join(", "),
+        })
+    }
+
+    /// The id of a link, or an error naming it.
+    pub fn link_id(&self, name: &str) -> Result<LinkId, RuntimeError> {
+        self.tree.link_id(name).ok_or_else(|| self.model_error(kinematics_model::ModelError::NoSuchLink(name.to_owned())))
+    }
+
+    pub(crate) fn model_error(&self, source: kinematics_model::ModelError) -> RuntimeError {
+        RuntimeError::Model {
+            robot: self.tree.name().to_owned(),
+            source,
+        }
+    }
+
+    /// The motion `M(value)` of a joint.
+    pub(crate) fn motion(&self, index: usize, joint: &Joint, value: f64) -> Isometry3<f64> {
+        let axis = self.axes[index];
+        match joint.kind {
+            JointKind::Revolute | JointKind::Continuous => {
+                Isometry3::from_parts(Translation3::identity(), UnitQuaternion::from_axis_angle(&axis, value))
+            }
+            JointKind::Prismatic => Isometry3::from_parts(Translation3::from(axis.into_inner() * value), UnitQuaternion::identity()),
+            JointKind::Fixed => Isometry3::identity(),
+        }
+    }
+
+    /// The frame of joint `index` before its motion: `T_world^parent * origin`.
+    pub(crate) fn joint_frame(&self, poses: &[Isometry3<f64>], index: usize) -> Isometry3<f64> {
+        poses[self.tree.joints()[index].parent.0] * self.origins[index]
+    }
+
+    /// World pose of every link, indexed by [`LinkId`] (the tree's link order).
+    pub fn link_poses(&self, q: &[f64]) -> Result<Vec<Isometry3<f64>>, RuntimeError> {
+        self.check_q(q)?;
+        let mut poses = vec![Isometry3::identity(); self.tree.links().len()];
+        for (i, joint) in self.tree.joints().iter().enumerate() {
+            let value = joint.motion.value(q).unwrap_or(0.0);
+            poses[joint.child.0] = self.joint_frame(&poses, i) * self.motion(i, joint, value) * self.afters[i];
+        }
+        Ok(poses)
+    }
+
+    /// World pose of the link named `link`.
+    pub fn link_pose(&self, q: &[f64], link: &str) -> Result<Isometry3<f64>, RuntimeError> {
+        let id = self.link_id(link)?;
+        Ok(self.link_poses(q)?[id.0])
+    }
+
+    /// Pose of link `tip` in the frame of link `base` (`base` need not be an ancestor).
+    pub fn relative_pose(&self, q: &[f64], base: &str, tip: &str) -> Result<Isometry3<f64>, RuntimeError> {
+        let (b, t) = (self.link_id(base)?, self.link_id(tip)?);
+        let poses = self.link_poses(q)?;
+        Ok(poses[b.0].inverse() * poses[t.0])
+    }
+}
