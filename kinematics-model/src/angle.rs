@@ -21,10 +21,7 @@ impl PiRational {
         let g = gcd(num.unsigned_abs(), den.unsigned_abs()).max(1);
         let g = i64::try_from(g).ok()?;
         let sign = if den < 0 { -1 } else { 1 };
-        Some(Self {
-            num: num.checked_div(g)?.checked_mul(sign)?,
-            den: den.checked_div(g)?.checked_mul(sign)?,
-        })
+        Some(Self { num: num.checked_div(g)?.checked_mul(sign)?, den: den.checked_div(g)?.checked_mul(sign)? })
     }
 
     /// Numerator (carries the sign).
@@ -44,10 +41,7 @@ impl PiRational {
 
     /// Exact sum, `None` on overflow.
     pub fn checked_add(self, other: Self) -> Option<Self> {
-        let num = self
-            .num
-            .checked_mul(other.den)?
-            .checked_add(other.num.checked_mul(self.den)?)?;
+        let num = self.num.checked_mul(other.den)?.checked_add(other.num.checked_mul(self.den)?)?;
         Self::new(num, self.den.checked_mul(other.den)?)
     }
 }
@@ -113,8 +107,8 @@ impl Angle {
         }
     }
 
-    /// Sum of two angles; exact when both are exact.
-    pub fn add(self, other: Angle) -> Angle {
+    /// Sum of two angles; exact when both are exact (also available as `+`).
+    pub fn sum(self, other: Angle) -> Angle {
         match (self, other) {
             (Angle::Exact(a), Angle::Exact(b)) => match a.checked_add(b) {
                 Some(sum) => Angle::Exact(sum),
@@ -128,10 +122,12 @@ impl Angle {
 
     /// An angle in degrees: whole degrees are exact (`90` is exactly pi/2), others become radians.
     pub fn from_degrees(degrees: f64) -> Angle {
-        if degrees.is_finite() && degrees.fract() == 0.0 && degrees.abs() < 1e15 {
-            if let Some(r) = PiRational::new(degrees as i64, 180) {
-                return Angle::Exact(r);
-            }
+        if degrees.is_finite()
+            && degrees.fract() == 0.0
+            && degrees.abs() < 1e15
+            && let Some(r) = PiRational::new(degrees as i64, 180)
+        {
+            return Angle::Exact(r);
         }
         Angle::Radians(degrees.to_radians())
     }
@@ -160,6 +156,14 @@ impl Angle {
             t => t.strip_prefix('/')?.parse().ok()?,
         };
         PiRational::new(sign * num, den).map(Angle::Exact)
+    }
+}
+
+impl std::ops::Add for Angle {
+    type Output = Angle;
+
+    fn add(self, other: Angle) -> Angle {
+        self.sum(other)
     }
 }
 
@@ -210,8 +214,8 @@ mod tests {
     fn exact_sums_stay_exact() {
         let half = Angle::parse_exact("pi/2").unwrap();
         let third = Angle::parse_exact("pi/3").unwrap();
-        assert_eq!(half.add(third).exact(), PiRational::new(5, 6));
-        assert_eq!(half.add(Angle::Radians(0.1)).exact(), None);
-        assert_eq!(half.add(Angle::Radians(0.0)), half);
+        assert_eq!((half + third).exact(), PiRational::new(5, 6));
+        assert_eq!((half + Angle::Radians(0.1)).exact(), None);
+        assert_eq!(half + Angle::Radians(0.0), half);
     }
 }

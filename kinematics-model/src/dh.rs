@@ -213,10 +213,7 @@ impl DhTable {
             None => FixedTransform::identity(),
         };
         for (i, row) in self.joints.iter().enumerate() {
-            let element = Element::DhRow {
-                row: i + 1,
-                joint: row.name.clone(),
-            };
+            let element = Element::DhRow { row: i + 1, joint: row.name.clone() };
             let link = row.link.clone().unwrap_or_else(|| format!("link{}", i + 1));
             let parent = links.last().cloned().unwrap_or_default();
             let first = if i == 0 { base.clone() } else { FixedTransform::identity() };
@@ -255,11 +252,7 @@ impl DhTable {
             });
             links.push(tool.name.clone());
         }
-        Ok(Description {
-            name: self.name.clone(),
-            links,
-            joints,
-        })
+        Ok(Description { name: self.name.clone(), links, joints })
     }
 
     /// The row's fixed parts before and after the joint motion (`Rz(q)` or `Tz(q)`).
@@ -272,7 +265,7 @@ impl DhTable {
         let alpha = self.angle(&row.alpha, element, "alpha")?;
         let theta = self.angle(&row.theta, element, "theta")?;
         let (theta, d) = match row.kind {
-            DhJointType::Revolute => (theta.add(self.angle(&row.offset, element, "offset")?), row.d),
+            DhJointType::Revolute => (theta + self.angle(&row.offset, element, "offset")?, row.d),
             DhJointType::Prismatic => (theta, row.d + length(&row.offset, element, "offset")?),
         };
         let identity = FixedTransform::identity();

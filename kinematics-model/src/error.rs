@@ -235,10 +235,7 @@ pub struct LoadError {
 impl LoadError {
     /// A load error for `file`.
     pub fn new(file: impl Into<String>, kind: LoadErrorKind) -> Self {
-        Self {
-            file: file.into(),
-            kind,
-        }
+        Self { file: file.into(), kind }
     }
 
     /// The model errors, if that is what went wrong.

@@ -73,12 +73,7 @@ impl JointMotion {
         match self {
             JointMotion::Fixed => None,
             JointMotion::Dof(i) => q.get(i).copied(),
-            JointMotion::Mimic {
-                dof,
-                multiplier,
-                offset,
-                ..
-            } => q.get(dof).map(|v| multiplier * v + offset),
+            JointMotion::Mimic { dof, multiplier, offset, .. } => q.get(dof).map(|v| multiplier * v + offset),
         }
     }
 }

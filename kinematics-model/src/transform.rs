@@ -41,11 +41,7 @@ impl FixedTransform {
 
     /// The URDF origin `Trans(xyz) * Rz(yaw) * Ry(pitch) * Rx(roll)`, angles in radians.
     pub fn from_xyz_rpy(xyz: [f64; 3], rpy: [Angle; 3]) -> Self {
-        Self::identity()
-            .translate(xyz)
-            .rotate(Axis::Z, rpy[2])
-            .rotate(Axis::Y, rpy[1])
-            .rotate(Axis::X, rpy[0])
+        Self::identity().translate(xyz).rotate(Axis::Z, rpy[2]).rotate(Axis::Y, rpy[1]).rotate(Axis::X, rpy[0])
     }
 
     /// `self * Trans(v)`; a zero vector adds nothing.

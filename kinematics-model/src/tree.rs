@@ -147,18 +147,11 @@ impl KinematicTree {
                 Some(i) => i,
                 None if base_id == tip_id => path.len(),
                 None => {
-                    return Err(ModelError::NotAChain {
-                        base: base.to_owned(),
-                        tip: tip.to_owned(),
-                    });
+                    return Err(ModelError::NotAChain { base: base.to_owned(), tip: tip.to_owned() });
                 }
             }
         };
-        Ok(Chain {
-            base: base_id,
-            tip: tip_id,
-            joints: path[start..].to_vec(),
-        })
+        Ok(Chain { base: base_id, tip: tip_id, joints: path[start..].to_vec() })
     }
 
     /// The degree-of-freedom indices that move the joints of `chain`, ascending and unique.

@@ -56,10 +56,7 @@ fn joint(j: &urdf_rs::Joint) -> JointDescription {
 
 /// Turns a parser message into a syntax error, with the line when the message carries one.
 fn syntax_error(_text: &str, message: &str) -> LoadErrorKind {
-    LoadErrorKind::Syntax {
-        line: line_in_message(message),
-        message: message.trim().to_owned(),
-    }
+    LoadErrorKind::Syntax { line: line_in_message(message), message: message.trim().to_owned() }
 }
 
 /// The XML parsers behind urdf-rs report positions as `line N` or `N:M`; take the first.

@@ -64,25 +64,15 @@ fn duplicates<'a>(names: impl Iterator<Item = &'a String>) -> Vec<String> {
 
 /// Rule: only revolute, continuous, prismatic and fixed joints are supported (for now).
 fn check_joint_type(j: &JointDescription, errors: &mut Vec<ModelError>) {
-    if matches!(
-        j.kind,
-        JointTypeDescription::Floating | JointTypeDescription::Planar | JointTypeDescription::Spherical
-    ) {
-        errors.push(ModelError::UnsupportedJoint {
-            element: j.element.clone(),
-            kind: j.kind.name(),
-        });
+    if matches!(j.kind, JointTypeDescription::Floating | JointTypeDescription::Planar | JointTypeDescription::Spherical)
+    {
+        errors.push(ModelError::UnsupportedJoint { element: j.element.clone(), kind: j.kind.name() });
     }
 }
 
 /// Rule: every number is finite (infinite position limits mean "no limit" and are allowed).
 fn check_finite(j: &JointDescription, errors: &mut Vec<ModelError>) {
-    let mut fault = |field| {
-        errors.push(ModelError::NonFinite {
-            element: j.element.clone(),
-            field,
-        })
-    };
+    let mut fault = |field| errors.push(ModelError::NonFinite { element: j.element.clone(), field });
     if !j.origin.numbers().chain(j.after_motion.numbers()).all(f64::is_finite) {
         fault("origin");
     }
@@ -117,27 +107,19 @@ fn check_finite(j: &JointDescription, errors: &mut Vec<ModelError>) {
 fn check_axis(j: &JointDescription, errors: &mut Vec<ModelError>) {
     let moving = !matches!(j.kind, JointTypeDescription::Fixed);
     if moving && j.axis.iter().all(|v| v.is_finite()) && norm(j.axis) == 0.0 {
-        errors.push(ModelError::ZeroAxis {
-            element: j.element.clone(),
-        });
+        errors.push(ModelError::ZeroAxis { element: j.element.clone() });
     }
 }
 
 /// Rule: a lower limit is not above the upper one; a fixed joint does not mimic.
 fn check_limits(j: &JointDescription, errors: &mut Vec<ModelError>) {
-    if let Some(l) = &j.limits {
-        if l.lower > l.upper {
-            errors.push(ModelError::LimitOrder {
-                element: j.element.clone(),
-                lower: l.lower,
-                upper: l.upper,
-            });
-        }
+    if let Some(l) = &j.limits
+        && l.lower > l.upper
+    {
+        errors.push(ModelError::LimitOrder { element: j.element.clone(), lower: l.lower, upper: l.upper });
     }
     if j.kind == JointTypeDescription::Fixed && j.mimic.is_some() {
-        errors.push(ModelError::FixedMimic {
-            element: j.element.clone(),
-        });
+        errors.push(ModelError::FixedMimic { element: j.element.clone() });
     }
 }
 
@@ -147,11 +129,7 @@ fn check_links_exist(d: &Description, errors: &mut Vec<ModelError>) {
     for j in &d.joints {
         for (role, link) in [("parent", &j.parent), ("child", &j.child)] {
             if !links.contains(link.as_str()) {
-                errors.push(ModelError::UnknownLink {
-                    element: j.element.clone(),
-                    role,
-                    link: link.clone(),
-                });
+                errors.push(ModelError::UnknownLink { element: j.element.clone(), role, link: link.clone() });
             }
         }
     }
@@ -176,9 +154,7 @@ fn check_structure(d: &Description, errors: &mut Vec<ModelError>) {
     }
     let roots: Vec<&String> = d.links.iter().filter(|l| !parents.contains_key(l.as_str())).collect();
     if roots.len() > 1 {
-        errors.push(ModelError::MultipleRoots {
-            links: roots.into_iter().cloned().collect(),
-        });
+        errors.push(ModelError::MultipleRoots { links: roots.into_iter().cloned().collect() });
         return;
     }
     if multiple {
@@ -214,14 +190,10 @@ fn check_mimics(d: &Description, errors: &mut Vec<ModelError>) {
     for j in &d.joints {
         let Some(m) = &j.mimic else { continue };
         match by_name.get(m.joint.as_str()) {
-            None => errors.push(ModelError::MimicUnknown {
-                element: j.element.clone(),
-                source_joint: m.joint.clone(),
-            }),
-            Some(source) if source.kind == JointTypeDescription::Fixed => errors.push(ModelError::MimicOfFixed {
-                element: j.element.clone(),
-                source_joint: m.joint.clone(),
-            }),
+            None => errors.push(ModelError::MimicUnknown { element: j.element.clone(), source_joint: m.joint.clone() }),
+            Some(source) if source.kind == JointTypeDescription::Fixed => {
+                errors.push(ModelError::MimicOfFixed { element: j.element.clone(), source_joint: m.joint.clone() })
+            }
             Some(_) => {
                 let mut walk = vec![j.name.as_str()];
                 let mut at: &JointDescription = j;
@@ -229,9 +201,8 @@ fn check_mimics(d: &Description, errors: &mut Vec<ModelError>) {
                     if let Some(pos) = walk.iter().position(|&n| n == next.name) {
                         let joints = &walk[pos..];
                         if pos == 0 && joints.iter().all(|n| in_loop.insert(n)) {
-                            errors.push(ModelError::MimicLoop {
-                                joints: joints.iter().map(|s| s.to_string()).collect(),
-                            });
+                            errors
+                                .push(ModelError::MimicLoop { joints: joints.iter().map(|s| s.to_string()).collect() });
                         }
                         break;
                     }
@@ -249,23 +220,15 @@ fn norm(v: [f64; 3]) -> f64 {
 
 /// Builds the tree from a description that passed every rule.
 fn assemble(d: &Description) -> KinematicTree {
-    let root = d
-        .links
-        .iter()
-        .find(|l| !d.joints.iter().any(|j| &j.child == *l))
-        .map(String::as_str)
-        .unwrap_or_default();
+    let root =
+        d.links.iter().find(|l| !d.joints.iter().any(|j| &j.child == *l)).map(String::as_str).unwrap_or_default();
     // Depth-first pre-order from the root, children in description order; a joint takes its place
     // when its child link is visited, so joints follow the same pre-order as links.
     let mut links: Vec<Link> = Vec::new();
     let mut order: Vec<&JointDescription> = Vec::new();
     let mut stack: Vec<(&str, Option<&JointDescription>)> = vec![(root, None)];
     while let Some((name, via)) = stack.pop() {
-        links.push(Link {
-            name: name.to_owned(),
-            parent_joint: None,
-            child_joints: Vec::new(),
-        });
+        links.push(Link { name: name.to_owned(), parent_joint: None, child_joints: Vec::new() });
         order.extend(via);
         for j in d.joints.iter().filter(|j| j.parent == name).rev() {
             stack.push((j.child.as_str(), Some(j)));
@@ -331,12 +294,7 @@ fn assemble(d: &Description) -> KinematicTree {
             }
         })
         .collect();
-    KinematicTree {
-        name: d.name.clone(),
-        links,
-        joints,
-        dof_joints,
-    }
+    KinematicTree { name: d.name.clone(), links, joints, dof_joints }
 }
 
 /// Follows a mimic chain to its independent source, composing `m * q + o` along the way.

@@ -1,4 +1,5 @@
 //! Every validation rule, fed a bad description: the error must name the offending element.
+#![allow(clippy::panic, clippy::unwrap_used, clippy::expect_used)] // test helpers fail loudly
 
 use kinematics_model::{LoadError, LoadErrorKind, ModelError, parse_source};
 
@@ -41,8 +42,12 @@ fn check(text: &str, expected: &[&[&str]]) -> Vec<ModelError> {
 fn cycle_names_its_links() {
     let text = urdf(
         &["root", "a", "b"],
-        &[joint("j1", "revolute", "root", "a", ""), joint("j2", "revolute", "a", "b", ""), joint("j3", "revolute", "b", "a", "")]
-            .concat(),
+        &[
+            joint("j1", "revolute", "root", "a", ""),
+            joint("j2", "revolute", "a", "b", ""),
+            joint("j3", "revolute", "b", "a", ""),
+        ]
+        .concat(),
     );
     // `a` has two parents (j1, j3) and {a, b} form a cycle: the parent rule reports it.
     check(&text, &[&["link `a`", "`j1`", "`j3`"]]);
@@ -56,7 +61,10 @@ fn cycle_names_its_links() {
 
 #[test]
 fn self_loop_is_a_cycle() {
-    let text = urdf(&["root", "a"], &[joint("j1", "revolute", "root", "a", ""), joint("j2", "fixed", "root", "root", "")].concat());
+    let text = urdf(
+        &["root", "a"],
+        &[joint("j1", "revolute", "root", "a", ""), joint("j2", "fixed", "root", "root", "")].concat(),
+    );
     check(&text, &[&["cycle", "`root`"]]);
 }
 
@@ -68,13 +76,17 @@ fn more_than_one_root() {
 
 #[test]
 fn unknown_parent_and_child() {
-    let text = urdf(&["a"], &[joint("j1", "revolute", "nowhere", "a", ""), joint("j2", "revolute", "a", "ghost", "")].concat());
+    let text = urdf(
+        &["a"],
+        &[joint("j1", "revolute", "nowhere", "a", ""), joint("j2", "revolute", "a", "ghost", "")].concat(),
+    );
     check(&text, &[&["joint `j1`", "parent link `nowhere`"], &["joint `j2`", "child link `ghost`"]]);
 }
 
 #[test]
 fn duplicate_names() {
-    let text = urdf(&["a", "b", "b"], &[joint("j", "revolute", "a", "b", ""), joint("j", "revolute", "a", "b", "")].concat());
+    let text =
+        urdf(&["a", "b", "b"], &[joint("j", "revolute", "a", "b", ""), joint("j", "revolute", "a", "b", "")].concat());
     check(&text, &[&["link `b`", "more than once"], &["joint `j`", "more than once"]]);
 }
 
@@ -110,7 +122,8 @@ fn mimic_of_unknown_joint() {
 fn mimic_of_fixed_joint() {
     let text = urdf(
         &["a", "b", "c"],
-        &[joint("mount", "fixed", "a", "b", ""), joint("finger", "revolute", "b", "c", "<mimic joint=\"mount\"/>")].concat(),
+        &[joint("mount", "fixed", "a", "b", ""), joint("finger", "revolute", "b", "c", "<mimic joint=\"mount\"/>")]
+            .concat(),
     );
     check(&text, &[&["joint `finger`", "mimics joint `mount`", "fixed"]]);
 }
@@ -135,10 +148,7 @@ fn floating_and_planar_joints_are_refused_by_name() {
         &["a", "b", "c"],
         &[joint("free", "floating", "a", "b", ""), joint("slide", "planar", "a", "c", "")].concat(),
     );
-    check(
-        &text,
-        &[&["joint `free`", "`floating` is not supported"], &["joint `slide`", "`planar` is not supported"]],
-    );
+    check(&text, &[&["joint `free`", "`floating` is not supported"], &["joint `slide`", "`planar` is not supported"]]);
 }
 
 #[test]

