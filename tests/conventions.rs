@@ -8,6 +8,7 @@ use common::{POSE_TOLERANCE, assert_pose_eq, reference};
 use kinematics::ReferenceFk;
 use nalgebra::{Isometry3, Translation3, UnitQuaternion, Vector3};
 use proptest::prelude::*;
+use std::f64::consts::PI;
 
 /// Two descriptions of one robot and the links whose frames are attached to the same body.
 struct Pair {
@@ -129,11 +130,12 @@ proptest! {
 
 #[test]
 fn ur5_frames_relate_as_published() {
-    // Beyond "some fixed transform": the DH flange frame 6 and the URDF's tool0 are the same frame
-    // (ROS-Industrial's tool0 follows the DH convention), and the DH frames and URDF links differ
-    // only by rotations at the joints the URDF turns.
+    // Beyond "some fixed transform": ROS-Industrial's `tool0` is the DH flange frame 6 itself, and
+    // its `base` is DH frame 0, a half turn about z from `base_link`.
     let pair = ur5_std_vs_urdf();
     let (_, _, tool) = pair.links.last().unwrap();
     assert_pose_eq(tool, &Isometry3::identity(), POSE_TOLERANCE, "DH frame 6 vs tool0");
-    let _ = (Translation3::new(0.0, 0.0, 0.0), UnitQuaternion::<f64>::identity(), Vector3::<f64>::zeros());
+    let base = pair.b.relative_pose(&[0.0; 6], "base_link", "base").unwrap();
+    let half_turn = Isometry3::from_parts(Translation3::identity(), UnitQuaternion::from_axis_angle(&Vector3::z_axis(), PI));
+    assert_pose_eq(&base, &half_turn, POSE_TOLERANCE, "base vs base_link");
 }

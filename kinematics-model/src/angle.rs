@@ -13,6 +13,9 @@ pub struct PiRational {
 }
 
 impl PiRational {
+    /// Zero.
+    pub const ZERO: PiRational = PiRational { num: 0, den: 1 };
+
     /// `num / den * pi`, reduced; `None` when `den` is zero or the value would overflow.
     pub fn new(num: i64, den: i64) -> Option<Self> {
         if den == 0 {
@@ -81,7 +84,7 @@ pub enum Angle {
 
 impl Angle {
     /// The zero angle (exact).
-    pub const ZERO: Angle = Angle::Exact(PiRational { num: 0, den: 1 });
+    pub const ZERO: Angle = Angle::Exact(PiRational::ZERO);
 
     /// The angle in radians.
     pub fn radians(self) -> f64 {

@@ -28,7 +28,9 @@
 mod error;
 mod fk;
 mod jacobian;
+mod real;
 
 pub use error::RuntimeError;
 pub use fk::{ReferenceFk, fixed_isometry};
 pub use kinematics_model;
+pub use real::{Pose, Real};

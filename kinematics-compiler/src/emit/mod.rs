@@ -1,0 +1,15 @@
+//! The emit stage: naming and scheduling graph nodes, and rendering them as text, LaTeX and Rust.
+//!
+//! Names follow the textbook: `c1`, `s1` for the cosine and sine of `q1`, `c23` for `cos(q2 + q3)`;
+//! shared intermediate values are `t0, t1, ...` in schedule order, so a small change to a robot
+//! makes a small diff in its code.
+
+mod names;
+mod rust;
+mod schedule;
+mod text;
+
+pub use names::Names;
+pub use rust::{EmitOptions, emit_function, emit_module_source};
+pub use schedule::Schedule;
+pub use text::{latex, text};

@@ -1,0 +1,176 @@
+//! What to compile (base, tips, outputs) and the compiled result.
+
+use kinematics_model::{KinematicTree, LinkId};
+
+use crate::error::CompileError;
+use crate::simplify::{simplify, split_tail, translations_to_tail};
+use crate::stats::OpCount;
+use crate::symbolic::graph::{ExprGraph, ExprId};
+use crate::symbolic::lower::lower_path;
+use crate::symbolic::transform::{SymTransform, fold_from_base, fold_from_tool};
+
+/// Which poses to compile.
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
+pub struct Request {
+    /// The frame poses are expressed in (default: the root link).
+    pub base: Option<String>,
+    /// The links whose poses are wanted; empty means every link below the base.
+    pub tips: Vec<String>,
+    /// Compute positions only (no rotations).
+    pub position_only: bool,
+}
+
+impl Request {
+    /// The pose of one link in the root frame.
+    pub fn tip(link: &str) -> Self {
+        Self { tips: vec![link.to_owned()], ..Self::default() }
+    }
+
+    /// The poses of every link in the root frame.
+    pub fn all_links() -> Self {
+        Self::default()
+    }
+
+    /// Poses relative to `base` instead of the root.
+    pub fn with_base(mut self, base: &str) -> Self {
+        self.base = Some(base.to_owned());
+        self
+    }
+
+    /// Positions only.
+    pub fn positions_only(mut self) -> Self {
+        self.position_only = true;
+        self
+    }
+}
+
+/// One compiled frame: a link's pose in the base frame.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Frame {
+    /// The link.
+    pub link: String,
+    /// Its pose as expressions in the graph.
+    pub transform: SymTransform,
+}
+
+/// The result of [`compile`]: the expression graph and the frames computed from it.
+#[derive(Debug, Clone)]
+pub struct Compiled {
+    /// Robot name.
+    pub robot: String,
+    /// The base link.
+    pub base: String,
+    /// Joint names in degree-of-freedom order (the entries of `q`).
+    pub dof_names: Vec<String>,
+    /// Whether only positions are outputs.
+    pub position_only: bool,
+    pub(crate) graph: ExprGraph,
+    pub(crate) frames: Vec<Frame>,
+}
+
+/// Compiles the poses `request` asks for.
+///
+/// One tip is accumulated from the tool back to the base (the cheapest order for one pose); several
+/// tips are accumulated from the base outwards, so links share their common partial products.
+pub fn compile(tree: &KinematicTree, request: &Request) -> Result<Compiled, CompileError> {
+    let error = |source| CompileError::Model { robot: tree.name().to_owned(), source };
+    let base_name = request.base.clone().unwrap_or_else(|| tree.link(tree.root()).name.clone());
+    let base =
+        tree.link_id(&base_name).ok_or_else(|| error(kinematics_model::ModelError::NoSuchLink(base_name.clone())))?;
+    let tips: Vec<String> = if request.tips.is_empty() {
+        descendants(tree, base).into_iter().map(|l| tree.link(l).name.clone()).collect()
+    } else {
+        request.tips.clone()
+    };
+    let mut graph = ExprGraph::new();
+    let mut frames = Vec::with_capacity(tips.len());
+    for tip in &tips {
+        let chain = tree.chain(&base_name, tip).map_err(error)?;
+        let steps = lower_path(&mut graph, tree, &chain.joints);
+        let steps = simplify(&mut graph, steps);
+        let transform = if tips.len() == 1 {
+            let steps = translations_to_tail(&graph, steps);
+            let (main, tail) = split_tail(&steps);
+            let main = fold_from_tool(&mut graph, main);
+            fold_from_base(&mut graph, main, tail)
+        } else {
+            let identity = SymTransform::identity(&mut graph);
+            fold_from_base(&mut graph, identity, &steps)
+        };
+        frames.push(Frame { link: tip.clone(), transform });
+    }
+    Ok(Compiled {
+        robot: tree.name().to_owned(),
+        base: base_name,
+        dof_names: tree.dof_names().into_iter().map(str::to_owned).collect(),
+        position_only: request.position_only,
+        graph,
+        frames,
+    })
+}
+
+/// The links strictly below `base`, in the tree's (depth-first) order.
+fn descendants(tree: &KinematicTree, base: LinkId) -> Vec<LinkId> {
+    (0..tree.links().len())
+        .map(LinkId)
+        .filter(|&l| l != base && tree.path_from_root(l).iter().any(|&j| tree.joint(j).parent == base))
+        .collect()
+}
+
+impl Compiled {
+    /// The expression graph.
+    pub fn graph(&self) -> &ExprGraph {
+        &self.graph
+    }
+
+    /// The compiled frames, in request order.
+    pub fn frames(&self) -> &[Frame] {
+        &self.frames
+    }
+
+    /// Number of degrees of freedom.
+    pub fn dof(&self) -> usize {
+        self.dof_names.len()
+    }
+
+    /// The output expressions of a frame: 12 for a pose (rotation row-major, then translation),
+    /// or the 3 of the translation for positions only.
+    pub fn frame_outputs(&self, index: usize) -> Vec<ExprId> {
+        let t = &self.frames[index].transform;
+        if self.position_only { t.p.to_vec() } else { t.entries().to_vec() }
+    }
+
+    /// Every output expression, frame by frame.
+    pub fn outputs(&self) -> Vec<ExprId> {
+        (0..self.frames.len()).flat_map(|i| self.frame_outputs(i)).collect()
+    }
+
+    /// Operation counts of everything computed.
+    pub fn op_count(&self) -> OpCount {
+        OpCount::of(&self.graph, self.outputs())
+    }
+
+    /// Operation counts of one frame alone.
+    pub fn frame_op_count(&self, index: usize) -> OpCount {
+        OpCount::of(&self.graph, self.frame_outputs(index))
+    }
+
+    /// Evaluates every frame at `q` with the simplified graph (no Rust compiled): per frame, the
+    /// 12 pose entries (rotation row-major, translation), whatever `position_only` says.
+    pub fn eval(&self, q: &[f64]) -> Vec<[f64; 12]> {
+        let mut values = Vec::new();
+        self.frames.iter().map(|f| f.transform.entries().map(|id| self.graph.eval(id, q, &mut values))).collect()
+    }
+
+    /// The 12 pose entries of frame `index` as text (`c1 + c12`), rotation row-major then translation.
+    pub fn frame_text(&self, index: usize) -> Vec<String> {
+        let names = crate::emit::Names::new(&self.graph, &self.outputs());
+        self.frames[index].transform.entries().iter().map(|&id| crate::emit::text(&self.graph, &names, id)).collect()
+    }
+
+    /// The 12 pose entries of frame `index` as LaTeX.
+    pub fn frame_latex(&self, index: usize) -> Vec<String> {
+        let names = crate::emit::Names::new(&self.graph, &self.outputs());
+        self.frames[index].transform.entries().iter().map(|&id| crate::emit::latex(&self.graph, &names, id)).collect()
+    }
+}

@@ -1,0 +1,70 @@
+//! Rules `axis-sign`, `merge-rotations` and `combine-translations`.
+
+use crate::symbolic::graph::{ExprGraph, ExprId};
+use crate::symbolic::step::{Step, axis_aligned, parallel};
+use crate::symbolic::transform::vec_add;
+
+/// Rule `axis-sign`: `R(-e, a) = R(e, -a)` for a coordinate axis `e`.
+pub fn normalize_axes(steps: Vec<Step>) -> Vec<Step> {
+    steps
+        .into_iter()
+        .map(|step| match step {
+            Step::Rotate { axis, angle } if axis_aligned(axis).is_some_and(|i| axis[i] < 0.0) => {
+                Step::Rotate { axis: axis.map(|x| if x == 0.0 { 0.0 } else { -x }), angle: angle.negated() }
+            }
+            other => other,
+        })
+        .collect()
+}
+
+/// Whether the translation `v` lies along the coordinate axis `axis` (then it commutes with
+/// rotations about that axis).
+pub(crate) fn along(g: &ExprGraph, v: &[ExprId; 3], axis: [f64; 3]) -> bool {
+    match axis_aligned(axis) {
+        Some(i) => (0..3).filter(|&k| k != i).all(|k| g.is_const(v[k], 0.0)),
+        None => false,
+    }
+}
+
+/// Rule `merge-rotations`: `R(u, a) T(v along u)* R(+-u, b) = T(v)* R(u, a +- b)`.
+pub fn merge_rotations(g: &ExprGraph, steps: Vec<Step>) -> Vec<Step> {
+    let mut out: Vec<Step> = Vec::with_capacity(steps.len());
+    for step in steps {
+        if let Step::Rotate { axis, angle } = &step {
+            // Look back past translations along this axis for a rotation about a parallel axis.
+            let mut k = out.len();
+            while k > 0 && matches!(&out[k - 1], Step::Translate(v) if along(g, v, *axis)) {
+                k -= 1;
+            }
+            if k > 0
+                && let Step::Rotate { axis: prev, angle: prev_angle } = &out[k - 1]
+                && let Some(sign) = parallel(*prev, *axis)
+            {
+                let merged = if sign > 0.0 { prev_angle.plus(angle) } else { prev_angle.plus(&angle.negated()) };
+                let prev = *prev;
+                out.remove(k - 1);
+                out.push(Step::Rotate { axis: prev, angle: merged });
+                continue;
+            }
+        }
+        out.push(step);
+    }
+    out
+}
+
+/// Rule `combine-translations`: `T(a) T(b) = T(a + b)`.
+pub fn combine_translations(g: &mut ExprGraph, steps: Vec<Step>) -> Vec<Step> {
+    let mut out: Vec<Step> = Vec::with_capacity(steps.len());
+    for step in steps {
+        if let Step::Translate(v) = &step
+            && let Some(Step::Translate(prev)) = out.last()
+        {
+            let sum = vec_add(g, *prev, *v);
+            out.pop();
+            out.push(Step::Translate(sum));
+            continue;
+        }
+        out.push(step);
+    }
+    out
+}

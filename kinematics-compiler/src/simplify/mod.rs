@@ -1,0 +1,47 @@
+//! The simplify stage: directed rewrites of a chain of [`Step`]s, in a fixed pass order.
+//!
+//! Each pass is one named rule applied everywhere it matches; every rewrite is an exact identity
+//! of rigid transforms, so no pass can change the kinematics (the agreement tests hold it to that).
+//!
+//! 1. `axis-sign`: a rotation about `-u` is a rotation about `u` by the negated angle.
+//! 2. `merge-rotations`: rotations about one axis, separated at most by translations along that
+//!    axis (which commute with them), become one rotation by the sum of the angles. This folds
+//!    constant rotations into joint angles too (`Rz(0.3) Rz(q)` is `Rz(q + 0.3)`).
+//! 3. `quarter-turn`: a constant rotation by a whole number of quarter turns (exact, or within
+//!    1e-12 rad) is a signed permutation; any other constant rotation becomes a numeric matrix.
+//! 4. `push-quarter-turns`: signed permutations move to the end of the chain, conjugating what they
+//!    pass (`P R(u, a) = R(P u, a) P`, `P T(v) = T(P v) P`); they cost nothing there.
+//! 5. `merge-rotations` again, on what the permutations exposed; then `combine-translations`.
+//! 6. `angle-sum`: rotations about parallel axes separated only by translations merge into one
+//!    rotation by the sum, the translations moving before it (`R(a) T(v) R(b) = T(R(a) v) R(a + b)`),
+//!    so the code needs `sin`/`cos` of `q2 + q3`, not of `q3` alone.
+//! 7. `combine-translations`: adjacent translations add up.
+//!
+//! For a single pose, [`translations_to_tail`] then moves translations along a joint axis past
+//! that joint (rule `translation-to-tail`), and the trailing translations are applied last.
+
+mod angle_sum;
+mod merge;
+mod quarter_turn;
+mod tail;
+
+use crate::symbolic::graph::ExprGraph;
+use crate::symbolic::step::Step;
+
+pub use angle_sum::angle_sums;
+pub use merge::{combine_translations, merge_rotations, normalize_axes};
+pub use quarter_turn::{push_quarter_turns, quarter_turns};
+pub use tail::{split_tail, translations_to_tail};
+
+/// Runs every pass in order.
+pub fn simplify(g: &mut ExprGraph, steps: Vec<Step>) -> Vec<Step> {
+    let steps = normalize_axes(steps);
+    let steps = merge_rotations(g, steps);
+    let steps = quarter_turns(steps);
+    let steps = push_quarter_turns(g, steps);
+    let steps = normalize_axes(steps);
+    let steps = merge_rotations(g, steps);
+    let steps = combine_translations(g, steps);
+    let steps = angle_sums(g, steps);
+    combine_translations(g, steps)
+}

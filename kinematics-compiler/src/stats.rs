@@ -1,0 +1,67 @@
+//! Operation counts of compiled expressions.
+
+use std::collections::BTreeSet;
+use std::fmt;
+
+use crate::symbolic::graph::{ExprGraph, ExprId, Node};
+
+/// What evaluating a set of expressions costs at run time.
+///
+/// Multiplications include those by constants; a negation is free (it folds into the sum that uses
+/// it); additions include subtractions and the angle sums such as `q2 + q3`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct OpCount {
+    /// Distinct angles whose sine or cosine is needed: one `sin_cos` call each.
+    pub sin_cos: usize,
+    /// Multiplications.
+    pub mul: usize,
+    /// Additions and subtractions.
+    pub add: usize,
+}
+
+impl OpCount {
+    /// Counts the nodes reachable from `outputs`.
+    pub fn of(g: &ExprGraph, outputs: impl IntoIterator<Item = ExprId>) -> Self {
+        let reachable = reachable(g, outputs);
+        let mut count = OpCount::default();
+        let mut angles = BTreeSet::new();
+        for &id in &reachable {
+            match g.node(id) {
+                Node::Mul(..) => count.mul += 1,
+                Node::Add(..) => count.add += 1,
+                Node::Sin(a) | Node::Cos(a) => {
+                    angles.insert(a);
+                }
+                _ => {}
+            }
+        }
+        count.sin_cos = angles.len();
+        count
+    }
+}
+
+impl fmt::Display for OpCount {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{} sin/cos pairs, {} multiplications, {} additions", self.sin_cos, self.mul, self.add)
+    }
+}
+
+/// Every node reachable from `outputs`, in id order (children before parents).
+pub fn reachable(g: &ExprGraph, outputs: impl IntoIterator<Item = ExprId>) -> BTreeSet<ExprId> {
+    let mut seen = BTreeSet::new();
+    let mut stack: Vec<ExprId> = outputs.into_iter().collect();
+    while let Some(id) = stack.pop() {
+        if !seen.insert(id) {
+            continue;
+        }
+        match g.node(id) {
+            Node::Sin(a) | Node::Cos(a) | Node::Neg(a) => stack.push(a),
+            Node::Add(a, b) | Node::Mul(a, b) => {
+                stack.push(a);
+                stack.push(b);
+            }
+            Node::Const(_) | Node::Var(_) => {}
+        }
+    }
+    seen
+}

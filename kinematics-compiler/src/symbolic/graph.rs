@@ -1,0 +1,353 @@
+//! The expression graph: a hash-consed arena of scalar expressions over the joint variables.
+//!
+//! Nodes are canonical when built: constants fold, `0` and `+-1` vanish from sums and products,
+//! negations are pulled out of products (so `a*b` and `-a*b` share `a*b`, and a negation costs
+//! nothing), operands of `+` and `*` are ordered by id, and `sin^2 x + cos^2 x` is `1`. Equal
+//! nodes get equal ids (the `memo` map), so common subexpressions are shared as they are built.
+//! Children are always older than their parents: ids are a topological order.
+
+use rustc_hash::FxHashMap;
+
+/// Index of a node in an [`ExprGraph`]. Smaller ids are older; children precede parents.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct ExprId(u32);
+
+impl ExprId {
+    /// The index into the arena.
+    pub fn index(self) -> usize {
+        self.0 as usize
+    }
+}
+
+/// A finite `f64` as a hashable key; `-0.0` is stored as `0.0`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct Const(u64);
+
+impl Const {
+    fn new(value: f64) -> Self {
+        Const(if value == 0.0 { 0.0f64.to_bits() } else { value.to_bits() })
+    }
+
+    /// The value.
+    pub fn value(self) -> f64 {
+        f64::from_bits(self.0)
+    }
+}
+
+/// One node of the graph.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Node {
+    /// A constant.
+    Const(Const),
+    /// The joint variable `q[i]`.
+    Var(u32),
+    /// `sin` of a node.
+    Sin(ExprId),
+    /// `cos` of a node.
+    Cos(ExprId),
+    /// Sum (operands ordered by id).
+    Add(ExprId, ExprId),
+    /// Product (operands ordered by id).
+    Mul(ExprId, ExprId),
+    /// Negation (free at run time: it folds into the surrounding sum).
+    Neg(ExprId),
+}
+
+/// Exact sine and cosine for angles within this distance of a multiple of pi/2.
+pub const EXACT_ANGLE_TOLERANCE: f64 = 1e-12;
+
+/// The exact `(sin, cos)` of `angle` if it lies within [`EXACT_ANGLE_TOLERANCE`] of a multiple of pi/2.
+pub fn exact_sin_cos(angle: f64) -> Option<(f64, f64)> {
+    let quarter = (angle / std::f64::consts::FRAC_PI_2).round();
+    if (angle - quarter * std::f64::consts::FRAC_PI_2).abs() > EXACT_ANGLE_TOLERANCE || !quarter.is_finite() {
+        return None;
+    }
+    Some(match (quarter as i64).rem_euclid(4) {
+        0 => (0.0, 1.0),
+        1 => (1.0, 0.0),
+        2 => (0.0, -1.0),
+        _ => (-1.0, 0.0),
+    })
+}
+
+/// A hash-consed arena of expressions.
+#[derive(Debug, Clone, Default)]
+pub struct ExprGraph {
+    nodes: Vec<Node>,
+    memo: FxHashMap<Node, ExprId>,
+}
+
+impl ExprGraph {
+    /// An empty graph.
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// The node with this id.
+    pub fn node(&self, id: ExprId) -> Node {
+        self.nodes[id.index()]
+    }
+
+    /// Number of nodes.
+    pub fn len(&self) -> usize {
+        self.nodes.len()
+    }
+
+    /// Whether the graph has no nodes.
+    pub fn is_empty(&self) -> bool {
+        self.nodes.is_empty()
+    }
+
+    fn intern(&mut self, node: Node) -> ExprId {
+        if let Some(&id) = self.memo.get(&node) {
+            return id;
+        }
+        let id = ExprId(u32::try_from(self.nodes.len()).unwrap_or(u32::MAX));
+        self.nodes.push(node);
+        self.memo.insert(node, id);
+        id
+    }
+
+    /// A constant (must be finite; the model guarantees it).
+    pub fn constant(&mut self, value: f64) -> ExprId {
+        self.intern(Node::Const(Const::new(value)))
+    }
+
+    /// The value of a constant node.
+    pub fn as_const(&self, id: ExprId) -> Option<f64> {
+        match self.node(id) {
+            Node::Const(c) => Some(c.value()),
+            _ => None,
+        }
+    }
+
+    /// Whether `id` is the constant `value`.
+    pub fn is_const(&self, id: ExprId, value: f64) -> bool {
+        self.as_const(id) == Some(value)
+    }
+
+    /// The joint variable `q[index]`.
+    pub fn var(&mut self, index: usize) -> ExprId {
+        self.intern(Node::Var(u32::try_from(index).unwrap_or(u32::MAX)))
+    }
+
+    /// `-a` (rule `neg-neg`, `neg-const`).
+    pub fn neg(&mut self, a: ExprId) -> ExprId {
+        match self.node(a) {
+            Node::Const(c) => self.constant(-c.value()),
+            Node::Neg(inner) => inner,
+            _ => self.intern(Node::Neg(a)),
+        }
+    }
+
+    /// Splits off a negation: `(true, x)` for `-x`, `(false, a)` otherwise.
+    pub fn unneg(&self, a: ExprId) -> (bool, ExprId) {
+        match self.node(a) {
+            Node::Neg(inner) => (true, inner),
+            _ => (false, a),
+        }
+    }
+
+    /// `a + b` (rules `add-const`, `add-zero`, `neg-sum`, `pythagoras`).
+    pub fn add(&mut self, a: ExprId, b: ExprId) -> ExprId {
+        match (self.as_const(a), self.as_const(b)) {
+            (Some(x), Some(y)) => return self.constant(x + y),
+            (Some(0.0), None) => return b,
+            (None, Some(0.0)) => return a,
+            _ => {}
+        }
+        let (na, ia) = self.unneg(a);
+        let (nb, ib) = self.unneg(b);
+        if na && nb {
+            let sum = self.add(ia, ib);
+            return self.neg(sum);
+        }
+        if ia == ib && na != nb {
+            return self.constant(0.0);
+        }
+        if !na && !nb && self.is_pythagorean(a, b) {
+            return self.constant(1.0);
+        }
+        let (x, y) = if a <= b { (a, b) } else { (b, a) };
+        self.intern(Node::Add(x, y))
+    }
+
+    /// `a - b`.
+    pub fn sub(&mut self, a: ExprId, b: ExprId) -> ExprId {
+        let nb = self.neg(b);
+        self.add(a, nb)
+    }
+
+    /// `sin(x)^2 + cos(x)^2` in either order.
+    fn is_pythagorean(&self, a: ExprId, b: ExprId) -> bool {
+        let square_of = |id: ExprId| match self.node(id) {
+            Node::Mul(x, y) if x == y => Some(self.node(x)),
+            _ => None,
+        };
+        match (square_of(a), square_of(b)) {
+            (Some(Node::Sin(x)), Some(Node::Cos(y))) | (Some(Node::Cos(x)), Some(Node::Sin(y))) => x == y,
+            _ => false,
+        }
+    }
+
+    /// `a * b` (rules `mul-const`, `mul-zero`, `mul-one`, `neg-product`, `const-assoc`).
+    pub fn mul(&mut self, a: ExprId, b: ExprId) -> ExprId {
+        match (self.as_const(a), self.as_const(b)) {
+            (Some(x), Some(y)) => return self.constant(x * y),
+            (Some(x), _) | (_, Some(x)) if x == 0.0 => return self.constant(0.0),
+            (Some(1.0), None) => return b,
+            (None, Some(1.0)) => return a,
+            (Some(-1.0), None) => return self.neg(b),
+            (None, Some(-1.0)) => return self.neg(a),
+            _ => {}
+        }
+        let (na, ia) = self.unneg(a);
+        let (nb, ib) = self.unneg(b);
+        if na || nb {
+            let product = self.mul(ia, ib);
+            return if na != nb { self.neg(product) } else { product };
+        }
+        // A negative constant factor becomes a negation, so `k*x` and `-k*x` share `k*x`.
+        for (c, other) in [(a, b), (b, a)] {
+            if let Some(k) = self.as_const(c) {
+                if k < 0.0 {
+                    let positive = self.constant(-k);
+                    let product = self.mul(positive, other);
+                    return self.neg(product);
+                }
+                // k1 * (k2 * x) = (k1 k2) * x
+                if let Node::Mul(x, y) = self.node(other)
+                    && let Some(k2) = self.as_const(x)
+                {
+                    let folded = self.constant(k * k2);
+                    return self.mul(folded, y);
+                }
+            }
+        }
+        let (x, y) = if a <= b { (a, b) } else { (b, a) };
+        self.intern(Node::Mul(x, y))
+    }
+
+    /// `sin(a)` (rules `sin-exact`, `sin-neg`).
+    pub fn sin(&mut self, a: ExprId) -> ExprId {
+        if let Some(x) = self.as_const(a) {
+            let s = exact_sin_cos(x).map_or(x.sin(), |(s, _)| s);
+            return self.constant(s);
+        }
+        let (negated, inner) = self.unneg(a);
+        if negated {
+            let s = self.sin(inner);
+            return self.neg(s);
+        }
+        self.intern(Node::Sin(a))
+    }
+
+    /// `cos(a)` (rules `cos-exact`, `cos-neg`).
+    pub fn cos(&mut self, a: ExprId) -> ExprId {
+        if let Some(x) = self.as_const(a) {
+            let c = exact_sin_cos(x).map_or(x.cos(), |(_, c)| c);
+            return self.constant(c);
+        }
+        let (_, inner) = self.unneg(a);
+        self.intern(Node::Cos(inner))
+    }
+
+    /// Evaluates `id` at `q`, memoising every node below it in `values` (one slot per node).
+    pub fn eval(&self, id: ExprId, q: &[f64], values: &mut Vec<Option<f64>>) -> f64 {
+        values.resize(self.nodes.len(), None);
+        if let Some(v) = values[id.index()] {
+            return v;
+        }
+        let v = match self.node(id) {
+            Node::Const(c) => c.value(),
+            Node::Var(i) => q.get(i as usize).copied().unwrap_or(f64::NAN),
+            Node::Sin(a) => self.eval(a, q, values).sin(),
+            Node::Cos(a) => self.eval(a, q, values).cos(),
+            Node::Add(a, b) => self.eval(a, q, values) + self.eval(b, q, values),
+            Node::Mul(a, b) => self.eval(a, q, values) * self.eval(b, q, values),
+            Node::Neg(a) => -self.eval(a, q, values),
+        };
+        values[id.index()] = Some(v);
+        v
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::f64::consts::FRAC_PI_2;
+
+    #[test]
+    fn folds_zero_one_and_constants() {
+        let mut g = ExprGraph::new();
+        let x = g.var(0);
+        let zero = g.constant(0.0);
+        let one = g.constant(1.0);
+        let minus_one = g.constant(-1.0);
+        assert_eq!(g.add(x, zero), x);
+        assert_eq!(g.mul(x, one), x);
+        assert_eq!(g.mul(x, zero), zero);
+        let nx = g.neg(x);
+        assert_eq!(g.mul(minus_one, x), nx);
+        assert_eq!(g.neg(nx), x);
+        let two = g.constant(2.0);
+        let three = g.constant(3.0);
+        let five = g.add(two, three);
+        assert!(g.is_const(five, 5.0));
+        assert_eq!(g.sub(x, x), zero);
+    }
+
+    #[test]
+    fn shares_and_orders_operands() {
+        let mut g = ExprGraph::new();
+        let (x, y) = (g.var(0), g.var(1));
+        assert_eq!(g.mul(x, y), g.mul(y, x));
+        assert_eq!(g.add(x, y), g.add(y, x));
+        // -k*x shares k*x
+        let k = g.constant(0.5);
+        let mk = g.constant(-0.5);
+        let kx = g.mul(k, x);
+        let mkx = g.mul(mk, x);
+        assert_eq!(g.node(mkx), Node::Neg(kx));
+        let nx = g.neg(x);
+        let p = g.mul(nx, y);
+        let xy = g.mul(x, y);
+        assert_eq!(g.node(p), Node::Neg(xy));
+    }
+
+    #[test]
+    #[allow(clippy::approx_constant)] // the point: near-pi/2 decimals as URDF files write them
+    fn exact_trig_of_quarter_turns() {
+        let mut g = ExprGraph::new();
+        for (angle, s, c) in [
+            (std::f64::consts::FRAC_PI_2, 1.0, 0.0),
+            (-std::f64::consts::PI, 0.0, -1.0),
+            (1.5707963267948966, 1.0, 0.0),
+            (FRAC_PI_2 + 0.9e-12, 1.0, 0.0),
+        ] {
+            let a = g.constant(angle);
+            let (sa, ca) = (g.sin(a), g.cos(a));
+            assert!(g.is_const(sa, s) && g.is_const(ca, c), "{angle}");
+        }
+        // 1.5708 is not pi/2, nor is anything more than 1e-12 away.
+        for angle in [1.5708, FRAC_PI_2 + 2e-12] {
+            let a = g.constant(angle);
+            let c = g.cos(a);
+            assert!(!g.is_const(c, 0.0), "{angle}");
+        }
+    }
+
+    #[test]
+    fn pythagoras() {
+        let mut g = ExprGraph::new();
+        let x = g.var(3);
+        let (s, c) = (g.sin(x), g.cos(x));
+        let (ss, cc) = (g.mul(s, s), g.mul(c, c));
+        let sum = g.add(ss, cc);
+        assert!(g.is_const(sum, 1.0));
+        let nx = g.neg(x);
+        assert_eq!(g.cos(nx), c);
+        let sn = g.sin(nx);
+        assert_eq!(g.node(sn), Node::Neg(s));
+    }
+}
