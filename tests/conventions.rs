@@ -136,6 +136,7 @@ fn ur5_frames_relate_as_published() {
     let (_, _, tool) = pair.links.last().unwrap();
     assert_pose_eq(tool, &Isometry3::identity(), POSE_TOLERANCE, "DH frame 6 vs tool0");
     let base = pair.b.relative_pose(&[0.0; 6], "base_link", "base").unwrap();
-    let half_turn = Isometry3::from_parts(Translation3::identity(), UnitQuaternion::from_axis_angle(&Vector3::z_axis(), PI));
+    let half_turn =
+        Isometry3::from_parts(Translation3::identity(), UnitQuaternion::from_axis_angle(&Vector3::z_axis(), PI));
     assert_pose_eq(&base, &half_turn, POSE_TOLERANCE, "base vs base_link");
 }
