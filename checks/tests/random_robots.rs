@@ -138,13 +138,19 @@ fn check(tree: &KinematicTree, q: &[f64]) -> Result<(), TestCaseError> {
     let reference = fk.link_poses(q).unwrap();
     let scale = size(tree);
     let mut requests = vec![Request::all_links()];
+    let last = tree.links().last().map(|l| l.name.clone()).unwrap_or_default();
     for link in tree.links().iter().filter(|l| l.child_joints.is_empty() && l.parent_joint.is_some()) {
         requests.push(Request::tip(&link.name));
+        // Relative to another link, usually on another branch: up to the common ancestor and down.
+        requests.push(Request::tip(&link.name).with_base(&last));
     }
     for request in requests {
         let compiled = compile(tree, &request).unwrap();
         for (frame, values) in compiled.frames().iter().zip(compiled.eval(q)) {
-            let expected = &reference[fk.link_id(&frame.link).unwrap().0];
+            let expected = match &request.base {
+                Some(base) => fk.relative_pose(q, base, &frame.link).unwrap(),
+                None => reference[fk.link_id(&frame.link).unwrap().0],
+            };
             let r = expected.rotation.to_rotation_matrix();
             for i in 0..3 {
                 let dp = (values[9 + i] - expected.translation.vector[i]).abs() / scale;

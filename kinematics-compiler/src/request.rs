@@ -7,6 +7,7 @@ use crate::simplify::{simplify, split_tail, translations_to_tail};
 use crate::stats::OpCount;
 use crate::symbolic::graph::{ExprGraph, ExprId};
 use crate::symbolic::lower::lower_path;
+use crate::symbolic::step::{Step, invert};
 use crate::symbolic::transform::{SymTransform, fold_from_base, fold_from_tool};
 
 /// Which poses to compile.
@@ -44,7 +45,8 @@ impl Request {
     }
 }
 
-/// One compiled frame: a link's pose in the base frame.
+/// One compiled frame: a link's pose in the base frame (any link: when the base is not an ancestor
+/// of the tip, the path goes up to their common ancestor and down again).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Frame {
     /// The link.
@@ -85,8 +87,8 @@ pub fn compile(tree: &KinematicTree, request: &Request) -> Result<Compiled, Comp
     let mut graph = ExprGraph::new();
     let mut frames = Vec::with_capacity(tips.len());
     for tip in &tips {
-        let chain = tree.chain(&base_name, tip).map_err(error)?;
-        let steps = lower_path(&mut graph, tree, &chain.joints);
+        let tip_id = tree.link_id(tip).ok_or_else(|| error(kinematics_model::ModelError::NoSuchLink(tip.clone())))?;
+        let steps = path_steps(&mut graph, tree, base, tip_id);
         let steps = simplify(&mut graph, steps);
         let transform = if tips.len() == 1 {
             let steps = translations_to_tail(&graph, steps);
@@ -107,6 +109,18 @@ pub fn compile(tree: &KinematicTree, request: &Request) -> Result<Compiled, Comp
         graph,
         frames,
     })
+}
+
+/// The steps of `T_base^tip`: up from `base` to the nearest common ancestor (inverted), then down
+/// to `tip`. When `base` is an ancestor of `tip`, only the downward part remains.
+fn path_steps(g: &mut ExprGraph, tree: &KinematicTree, base: LinkId, tip: LinkId) -> Vec<Step> {
+    let to_base = tree.path_from_root(base);
+    let to_tip = tree.path_from_root(tip);
+    let common = to_base.iter().zip(&to_tip).take_while(|(a, b)| a == b).count();
+    let up = lower_path(g, tree, &to_base[common..]);
+    let mut steps = invert(g, &up);
+    steps.extend(lower_path(g, tree, &to_tip[common..]));
+    steps
 }
 
 /// The links strictly below `base`, in the tree's (depth-first) order.

@@ -88,6 +88,23 @@ pub enum Step {
     ConstRotate([[f64; 3]; 3]),
 }
 
+impl Step {
+    /// The inverse step: `R(u, -a)`, `T(-v)`, `P^T`, `C^T`.
+    pub fn inverse(&self, g: &mut ExprGraph) -> Step {
+        match self {
+            Step::Rotate { axis, angle } => Step::Rotate { axis: *axis, angle: angle.negated() },
+            Step::Translate(v) => Step::Translate(v.map(|x| g.neg(x))),
+            Step::Permute(p) => Step::Permute(p.inverse()),
+            Step::ConstRotate(m) => Step::ConstRotate(std::array::from_fn(|i| std::array::from_fn(|j| m[j][i]))),
+        }
+    }
+}
+
+/// The inverse of the product of `steps`: the inverted steps in reverse order.
+pub fn invert(g: &mut ExprGraph, steps: &[Step]) -> Vec<Step> {
+    steps.iter().rev().map(|s| s.inverse(g)).collect()
+}
+
 /// Whether a unit axis is a coordinate axis (exactly one non-zero entry).
 pub fn axis_aligned(axis: [f64; 3]) -> Option<usize> {
     let nonzero: Vec<usize> = (0..3).filter(|&i| axis[i] != 0.0).collect();
