@@ -27,6 +27,17 @@ impl PiRational {
         Some(Self { num: num.checked_div(g)?.checked_mul(sign)?, den: den.checked_div(g)?.checked_mul(sign)? })
     }
 
+    /// `num / den * pi` for use in constants: `None` unless `den > 0` and the fraction is in lowest terms.
+    pub const fn new_const(num: i64, den: i64) -> Option<Self> {
+        let (mut a, mut b) = (num.unsigned_abs(), den.unsigned_abs());
+        while b != 0 {
+            let t = a % b;
+            a = b;
+            b = t;
+        }
+        if den > 0 && a == 1 { Some(Self { num, den }) } else { None }
+    }
+
     /// Numerator (carries the sign).
     pub fn num(self) -> i64 {
         self.num

@@ -28,6 +28,7 @@ pub mod dh;
 mod error;
 mod joint;
 mod source;
+pub mod synthetic;
 mod transform;
 mod tree;
 pub mod urdf;
