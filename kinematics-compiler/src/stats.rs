@@ -47,11 +47,11 @@ impl fmt::Display for OpCount {
 }
 
 /// Every node reachable from `outputs`, in id order (children before parents).
-pub fn reachable(g: &ExprGraph, outputs: impl IntoIterator<Item = ExprId>) -> BTreeSet<ExprId> {
-    let mut seen = BTreeSet::new();
+pub fn reachable(g: &ExprGraph, outputs: impl IntoIterator<Item = ExprId>) -> Vec<ExprId> {
+    let mut seen = vec![false; g.len()];
     let mut stack: Vec<ExprId> = outputs.into_iter().collect();
     while let Some(id) = stack.pop() {
-        if !seen.insert(id) {
+        if std::mem::replace(&mut seen[id.index()], true) {
             continue;
         }
         match g.node(id) {
@@ -63,5 +63,5 @@ pub fn reachable(g: &ExprGraph, outputs: impl IntoIterator<Item = ExprId>) -> BT
             Node::Const(_) | Node::Var(_) => {}
         }
     }
-    seen
+    seen.iter().enumerate().filter(|(_, s)| **s).map(|(i, _)| g.id(i)).collect()
 }

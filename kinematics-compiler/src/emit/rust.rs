@@ -1,7 +1,9 @@
 //! Rust tokens through `quote`: one function per compiled request.
 
+use std::fmt::Write as _;
+
 use proc_macro2::{Ident, Literal, Span, TokenStream};
-use quote::{format_ident, quote};
+use quote::quote;
 
 use super::schedule::{Item, Schedule};
 use crate::request::Compiled;
@@ -23,111 +25,125 @@ impl EmitOptions {
     }
 }
 
+/// Writes expressions as Rust source text into one buffer (linear in the size of the code, however
+/// deeply the expressions nest); the text is parsed into tokens once at the end.
 struct Writer<'a> {
     g: &'a ExprGraph,
     schedule: &'a Schedule,
+    krate: String,
 }
 
 impl Writer<'_> {
-    fn ident(name: &str) -> Ident {
-        Ident::new(name, Span::call_site())
-    }
-
-    fn constant(x: f64) -> TokenStream {
-        let lit = Literal::f64_unsuffixed(x.abs());
-        if x < 0.0 { quote!(T::from_f64(-#lit)) } else { quote!(T::from_f64(#lit)) }
+    fn constant(x: f64, out: &mut String) {
+        let lit = Literal::f64_unsuffixed(x.abs()).to_string();
+        out.push_str(if x < 0.0 { "T::from_f64(-" } else { "T::from_f64(" });
+        out.push_str(&lit);
+        out.push(')');
     }
 
     /// The expression for `id`: its name if bound, else written out.
-    fn expr(&self, id: ExprId) -> TokenStream {
-        if let Some(name) = self.schedule.bound.get(&id) {
-            let name = Self::ident(name);
-            return quote!(#name);
+    fn expr(&self, id: ExprId, out: &mut String) {
+        match self.schedule.bound.get(&id) {
+            Some(name) => out.push_str(name),
+            None => self.define(id, out),
         }
-        self.define(id)
     }
 
     /// The expression for `id` written out (the right-hand side of its binding).
-    fn define(&self, id: ExprId) -> TokenStream {
+    fn define(&self, id: ExprId, out: &mut String) {
         let g = self.g;
         match g.node(id) {
-            Node::Const(c) => Self::constant(c.value()),
+            Node::Const(c) => Self::constant(c.value(), out),
             Node::Var(i) => {
-                let q = format_ident!("q{}", i as usize + 1);
-                quote!(#q)
+                let _ = write!(out, "q{}", i as usize + 1);
             }
-            Node::Sin(a) => {
-                let name = Self::ident(&self.schedule.names.sin(a));
-                quote!(#name)
-            }
-            Node::Cos(a) => {
-                let name = Self::ident(&self.schedule.names.cos(a));
-                quote!(#name)
-            }
+            Node::Sin(a) => out.push_str(&self.schedule.names.sin(a)),
+            Node::Cos(a) => out.push_str(&self.schedule.names.cos(a)),
             Node::Neg(a) => {
-                let inner = self.operand(a);
-                quote!(-#inner)
+                out.push('-');
+                self.operand(a, out);
             }
             Node::Add(a, b) => {
                 let (na, ia) = g.unneg(a);
                 let (nb, ib) = g.unneg(b);
                 match (na, nb) {
                     (false, true) => {
-                        let (x, y) = (self.expr(a), self.operand_of_sub(ib));
-                        quote!(#x - #y)
+                        self.expr(a, out);
+                        out.push_str(" - ");
+                        self.operand_of_sub(ib, out);
                     }
                     (true, false) => {
-                        let (x, y) = (self.expr(b), self.operand_of_sub(ia));
-                        quote!(#x - #y)
+                        self.expr(b, out);
+                        out.push_str(" - ");
+                        self.operand_of_sub(ia, out);
                     }
                     _ => {
-                        let (x, y) = (self.expr(a), self.expr(b));
-                        quote!(#x + #y)
+                        self.expr(a, out);
+                        out.push_str(" + ");
+                        self.expr(b, out);
                     }
                 }
             }
             Node::Mul(a, b) => {
                 let (a, b) = if g.as_const(b).is_some() { (b, a) } else { (a, b) };
-                let (x, y) = (self.operand(a), self.operand(b));
-                quote!(#x * #y)
+                self.operand(a, out);
+                out.push_str(" * ");
+                self.operand(b, out);
             }
         }
     }
 
-    fn is_inline_sum(&self, id: ExprId) -> bool {
-        !self.schedule.bound.contains_key(&id) && matches!(self.g.node(id), Node::Add(..) | Node::Neg(..))
+    fn inline(&self, id: ExprId) -> bool {
+        !self.schedule.bound.contains_key(&id)
     }
 
     /// An operand of `*` or unary `-`: inline sums and negations get parentheses.
-    fn operand(&self, id: ExprId) -> TokenStream {
-        let e = self.expr(id);
-        if self.is_inline_sum(id) { quote!((#e)) } else { e }
+    fn operand(&self, id: ExprId, out: &mut String) {
+        let wrap = self.inline(id) && matches!(self.g.node(id), Node::Add(..) | Node::Neg(..));
+        self.wrapped(id, wrap, out);
     }
 
     /// The right operand of `-`: inline sums get parentheses.
-    fn operand_of_sub(&self, id: ExprId) -> TokenStream {
-        let e = self.expr(id);
-        if !self.schedule.bound.contains_key(&id) && matches!(self.g.node(id), Node::Add(..)) {
-            quote!((#e))
-        } else {
-            e
+    fn operand_of_sub(&self, id: ExprId, out: &mut String) {
+        let wrap = self.inline(id) && matches!(self.g.node(id), Node::Add(..));
+        self.wrapped(id, wrap, out);
+    }
+
+    fn wrapped(&self, id: ExprId, wrap: bool, out: &mut String) {
+        if wrap {
+            out.push('(');
+        }
+        self.expr(id, out);
+        if wrap {
+            out.push(')');
         }
     }
 
-    fn pose(&self, outputs: &[ExprId], krate: &TokenStream) -> TokenStream {
-        let e: Vec<TokenStream> = outputs.iter().map(|&id| self.expr(id)).collect();
-        if e.len() == 3 {
-            let [x, y, z] = [&e[0], &e[1], &e[2]];
-            return quote!([#x, #y, #z]);
-        }
-        let (r, p) = e.split_at(9);
-        let (r0, r1, r2) = (&r[0..3], &r[3..6], &r[6..9]);
-        quote! {
-            #krate::Pose {
-                rotation: [[#(#r0),*], [#(#r1),*], [#(#r2),*]],
-                translation: [#(#p),*],
+    fn list(&self, ids: &[ExprId], out: &mut String) {
+        out.push('[');
+        for (k, &id) in ids.iter().enumerate() {
+            if k > 0 {
+                out.push_str(", ");
             }
+            self.expr(id, out);
         }
+        out.push(']');
+    }
+
+    fn pose(&self, outputs: &[ExprId], out: &mut String) {
+        if outputs.len() == 3 {
+            return self.list(outputs, out);
+        }
+        let _ = write!(out, "{}::Pose {{ rotation: [", self.krate);
+        for row in 0..3 {
+            if row > 0 {
+                out.push_str(", ");
+            }
+            self.list(&outputs[3 * row..3 * row + 3], out);
+        }
+        out.push_str("], translation: ");
+        self.list(&outputs[9..12], out);
+        out.push_str(" }");
     }
 }
 
@@ -139,56 +155,64 @@ pub fn emit_function(compiled: &Compiled, options: &EmitOptions) -> TokenStream 
     let g = compiled.graph();
     let outputs = compiled.outputs();
     let schedule = Schedule::new(g, &outputs);
-    let w = Writer { g, schedule: &schedule };
     let krate = &options.krate;
+    let w = Writer { g, schedule: &schedule, krate: krate.to_string() };
     let n = compiled.dof();
     let n_lit = Literal::usize_unsuffixed(n);
-    let vars: Vec<TokenStream> = (0..n)
-        .map(|i| {
-            if schedule.used_vars.contains(&i) {
-                let q = format_ident!("q{}", i + 1);
-                quote!(#q)
-            } else {
-                quote!(_)
-            }
-        })
-        .collect();
-    let unpack = if n == 0 { quote!(let _ = q;) } else { quote!(let [#(#vars),*] = *q;) };
-    let mut body = Vec::new();
+    let mut code = String::new();
+    if n == 0 {
+        code.push_str("let _ = q;");
+    } else {
+        let vars: Vec<String> = (0..n)
+            .map(|i| if schedule.used_vars.contains(&i) { format!("q{}", i + 1) } else { "_".to_owned() })
+            .collect();
+        let _ = write!(code, "let [{}] = *q;", vars.join(", "));
+    }
     for item in &schedule.items {
-        body.push(match item {
+        match item {
             Item::SinCos(angle) => {
-                let s = Writer::ident(&schedule.names.sin(*angle));
-                let c = Writer::ident(&schedule.names.cos(*angle));
-                let a = w.operand(*angle);
-                quote!(let (#s, #c) = #a.sin_cos();)
+                let _ = write!(code, "let ({}, {}) = ", schedule.names.sin(*angle), schedule.names.cos(*angle));
+                w.operand(*angle, &mut code);
+                code.push_str(".sin_cos();");
             }
             Item::Let(id, name) => {
-                let name = Writer::ident(name);
-                let e = w.define(*id);
-                quote!(let #name = #e;)
+                let _ = write!(code, "let {name} = ");
+                w.define(*id, &mut code);
+                code.push(';');
             }
-        });
+        }
     }
     let per_frame = if compiled.position_only { 3 } else { 12 };
-    let frames: Vec<TokenStream> = outputs.chunks(per_frame).map(|o| w.pose(o, krate)).collect();
+    let frames: Vec<&[ExprId]> = outputs.chunks(per_frame).collect();
+    if frames.len() > 1 {
+        code.push('[');
+    }
+    for (k, frame) in frames.iter().enumerate() {
+        if k > 0 {
+            code.push_str(", ");
+        }
+        w.pose(frame, &mut code);
+    }
+    if frames.len() > 1 {
+        code.push(']');
+    }
+    // The text is built from our own identifiers, operators and literals, so it always parses.
+    let body: TokenStream = code.parse().unwrap_or_default();
     let one = if compiled.position_only { quote!([T; 3]) } else { quote!(#krate::Pose<T>) };
-    let (ret, value) = if frames.len() == 1 {
-        (one, frames[0].clone())
+    let ret = if frames.len() == 1 {
+        one
     } else {
         let m = Literal::usize_unsuffixed(frames.len());
-        (quote!([#one; #m]), quote!([#(#frames),*]))
+        quote!([#one; #m])
     };
-    let name = Writer::ident(&options.name);
+    let name = Ident::new(&options.name, Span::call_site());
     let docs = doc_lines(compiled);
     quote! {
         #(#[doc = #docs])*
         #[inline]
         #[allow(clippy::approx_constant)] // a robot's own decimals may resemble pi; they are kept as given
         pub fn #name<T: #krate::Real>(q: &[T; #n_lit]) -> #ret {
-            #unpack
-            #(#body)*
-            #value
+            #body
         }
     }
 }

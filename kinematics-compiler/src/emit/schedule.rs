@@ -36,25 +36,25 @@ impl Schedule {
     pub fn new(g: &ExprGraph, outputs: &[ExprId]) -> Self {
         let names = Names::new(g, outputs);
         let nodes = reachable(g, outputs.iter().copied());
-        let mut uses: BTreeMap<ExprId, usize> = BTreeMap::new();
+        let mut uses = vec![0usize; g.len()];
         let mut angles_seen = BTreeSet::new();
         for &id in &nodes {
             match g.node(id) {
                 Node::Sin(a) | Node::Cos(a) => {
                     if angles_seen.insert(a) {
-                        *uses.entry(a).or_default() += 1;
+                        uses[a.index()] += 1;
                     }
                 }
-                Node::Neg(a) => *uses.entry(a).or_default() += 1,
+                Node::Neg(a) => uses[a.index()] += 1,
                 Node::Add(a, b) | Node::Mul(a, b) => {
-                    *uses.entry(a).or_default() += 1;
-                    *uses.entry(b).or_default() += 1;
+                    uses[a.index()] += 1;
+                    uses[b.index()] += 1;
                 }
                 Node::Const(_) | Node::Var(_) => {}
             }
         }
         for &o in outputs {
-            *uses.entry(o).or_default() += 1;
+            uses[o.index()] += 1;
         }
         let mut items = Vec::new();
         let mut bound = BTreeMap::new();
@@ -68,7 +68,7 @@ impl Schedule {
                 Node::Sin(a) | Node::Cos(a) if emitted_angles.insert(a) => {
                     items.push(Item::SinCos(a));
                 }
-                Node::Add(..) | Node::Mul(..) if uses.get(&id).copied().unwrap_or(0) >= 2 => {
+                Node::Add(..) | Node::Mul(..) if uses[id.index()] >= 2 => {
                     let name = format!("t{}", bound.len());
                     bound.insert(id, name.clone());
                     items.push(Item::Let(id, name));

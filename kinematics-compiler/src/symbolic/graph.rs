@@ -83,6 +83,11 @@ impl ExprGraph {
         Self::default()
     }
 
+    /// The id of the node at arena index `index` (which must be below [`ExprGraph::len`]).
+    pub fn id(&self, index: usize) -> ExprId {
+        ExprId(u32::try_from(index).unwrap_or(u32::MAX))
+    }
+
     /// The node with this id.
     pub fn node(&self, id: ExprId) -> Node {
         self.nodes[id.index()]
