@@ -21,6 +21,7 @@
 pub mod emit;
 mod error;
 mod request;
+pub mod robot;
 pub mod simplify;
 mod stats;
 pub mod symbolic;

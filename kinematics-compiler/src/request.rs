@@ -15,7 +15,7 @@ use crate::symbolic::transform::{SymTransform, fold_from_base, fold_from_tool};
 pub struct Request {
     /// The frame poses are expressed in (default: the root link).
     pub base: Option<String>,
-    /// The links whose poses are wanted; empty means every link below the base.
+    /// The links whose poses are wanted; empty means every link but the base.
     pub tips: Vec<String>,
     /// Compute positions only (no rotations).
     pub position_only: bool,
@@ -80,7 +80,7 @@ pub fn compile(tree: &KinematicTree, request: &Request) -> Result<Compiled, Comp
     let base =
         tree.link_id(&base_name).ok_or_else(|| error(kinematics_model::ModelError::NoSuchLink(base_name.clone())))?;
     let tips: Vec<String> = if request.tips.is_empty() {
-        descendants(tree, base).into_iter().map(|l| tree.link(l).name.clone()).collect()
+        tree.links().iter().filter(|l| l.name != base_name).map(|l| l.name.clone()).collect()
     } else {
         request.tips.clone()
     };
@@ -121,14 +121,6 @@ fn path_steps(g: &mut ExprGraph, tree: &KinematicTree, base: LinkId, tip: LinkId
     let mut steps = invert(g, &up);
     steps.extend(lower_path(g, tree, &to_tip[common..]));
     steps
-}
-
-/// The links strictly below `base`, in the tree's (depth-first) order.
-fn descendants(tree: &KinematicTree, base: LinkId) -> Vec<LinkId> {
-    (0..tree.links().len())
-        .map(LinkId)
-        .filter(|&l| l != base && tree.path_from_root(l).iter().any(|&j| tree.joint(j).parent == base))
-        .collect()
 }
 
 impl Compiled {

@@ -24,7 +24,7 @@
 //! same column. An optional `[base]` transform comes before row 1 and an optional `[tool]` frame
 //! after the last row, as a fixed joint.
 
-use serde::Deserialize;
+use serde::{Deserialize, Serialize};
 
 use crate::angle::Angle;
 use crate::description::{Description, JointDescription, JointTypeDescription, LimitsDescription};
@@ -32,7 +32,7 @@ use crate::error::{Element, LoadErrorKind};
 use crate::transform::{Axis, FixedTransform};
 
 /// A DH table as written in the file.
-#[derive(Debug, Clone, Deserialize)]
+#[derive(Debug, Clone, Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct DhTable {
     /// Robot name.
@@ -47,10 +47,10 @@ pub struct DhTable {
     #[serde(default = "default_base_link")]
     pub base_link: String,
     /// Fixed transform before row 1.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub base: Option<DhFixed>,
     /// Fixed tool frame after the last row.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub tool: Option<DhFixed>,
     /// The rows, in order.
     pub joints: Vec<DhRow>,
@@ -69,7 +69,7 @@ fn default_tool_name() -> String {
 }
 
 /// DH convention.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum DhConvention {
     /// Standard (distal): `A_i = Rz(theta_i) Tz(d_i) Tx(a_i) Rx(alpha_i)`.
@@ -82,7 +82,7 @@ pub enum DhConvention {
 }
 
 /// Unit of numeric angles in the table.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize, Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum AngleUnit {
     /// Radians (the default).
@@ -93,7 +93,7 @@ pub enum AngleUnit {
 }
 
 /// A number, or an exact angle written as text (`"pi/2"`).
-#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize, Serialize)]
 #[serde(untagged)]
 pub enum Value {
     /// A plain number, in the table's angle unit where it is an angle.
@@ -109,7 +109,7 @@ impl Default for Value {
 }
 
 /// A fixed base or tool transform, URDF-style.
-#[derive(Debug, Clone, Deserialize)]
+#[derive(Debug, Clone, Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct DhFixed {
     /// Link name of the tool frame (ignored for the base).
@@ -124,7 +124,7 @@ pub struct DhFixed {
 }
 
 /// Joint type of a DH row.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize, Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum DhJointType {
     /// The variable adds to `theta`.
@@ -135,13 +135,13 @@ pub enum DhJointType {
 }
 
 /// One row of the table.
-#[derive(Debug, Clone, Deserialize)]
+#[derive(Debug, Clone, Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct DhRow {
     /// Joint name.
     pub name: String,
     /// Name of the link whose frame this row defines (default `link<i>`).
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub link: Option<String>,
     /// Joint type.
     #[serde(default, rename = "type")]
@@ -162,17 +162,24 @@ pub struct DhRow {
     #[serde(default)]
     pub offset: Value,
     /// Lower position limit.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub lower: Option<Value>,
     /// Upper position limit.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub upper: Option<Value>,
     /// Velocity limit.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub velocity: Option<f64>,
     /// Effort limit.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub effort: Option<f64>,
+}
+
+impl DhTable {
+    /// The table as TOML text (what [`parse_dh_toml`] reads back).
+    pub fn to_toml(&self) -> Result<String, LoadErrorKind> {
+        toml::to_string(self).map_err(|e| LoadErrorKind::Syntax { line: None, message: e.to_string() })
+    }
 }
 
 /// Parses a DH table from TOML.

@@ -25,11 +25,13 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+mod compiled;
 mod error;
 mod fk;
 mod jacobian;
 mod real;
 
+pub use compiled::{JointLimits, Kinematics, check_output, q_array};
 pub use error::RuntimeError;
 pub use fk::{ReferenceFk, fixed_isometry};
 pub use kinematics_model;

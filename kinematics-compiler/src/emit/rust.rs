@@ -16,12 +16,14 @@ pub struct EmitOptions {
     pub name: String,
     /// Path of the crate that provides `Real` and `Pose` (default `::kinematics`).
     pub krate: TokenStream,
+    /// Whether the function is `pub`.
+    pub public: bool,
 }
 
 impl EmitOptions {
     /// A function `name` using `::kinematics`.
     pub fn named(name: &str) -> Self {
-        EmitOptions { name: name.to_owned(), krate: quote!(::kinematics) }
+        EmitOptions { name: name.to_owned(), krate: quote!(::kinematics), public: true }
     }
 }
 
@@ -184,7 +186,7 @@ pub fn emit_function(compiled: &Compiled, options: &EmitOptions) -> TokenStream 
     }
     let per_frame = if compiled.position_only { 3 } else { 12 };
     let frames: Vec<&[ExprId]> = outputs.chunks(per_frame).collect();
-    if frames.len() > 1 {
+    if frames.len() != 1 {
         code.push('[');
     }
     for (k, frame) in frames.iter().enumerate() {
@@ -193,7 +195,7 @@ pub fn emit_function(compiled: &Compiled, options: &EmitOptions) -> TokenStream 
         }
         w.pose(frame, &mut code);
     }
-    if frames.len() > 1 {
+    if frames.len() != 1 {
         code.push(']');
     }
     // The text is built from our own identifiers, operators and literals, so it always parses.
@@ -207,11 +209,12 @@ pub fn emit_function(compiled: &Compiled, options: &EmitOptions) -> TokenStream 
     };
     let name = Ident::new(&options.name, Span::call_site());
     let docs = doc_lines(compiled);
+    let vis = if options.public { quote!(pub) } else { quote!() };
     quote! {
         #(#[doc = #docs])*
         #[inline]
         #[allow(clippy::approx_constant)] // a robot's own decimals may resemble pi; they are kept as given
-        pub fn #name<T: #krate::Real>(q: &[T; #n_lit]) -> #ret {
+        #vis fn #name<T: #krate::Real>(q: &[T; #n_lit]) -> #ret {
             #body
         }
     }

@@ -1,0 +1,122 @@
+//! The `#[kinematics(...)]` attribute, parsed by darling: every key once, each value with its span.
+//!
+//! ```text
+//! #[kinematics(urdf = "robots/ur5.urdf", base = "base", tip = "tool0")]
+//! #[kinematics(dh = "robots/ur5.toml", tips("link3", "link6"), positions, scalars(f64, f32))]
+//! #[kinematics(dh(convention = "standard",
+//!                 joint(name = "shoulder", a = 1.0),
+//!                 joint(name = "elbow", a = 1.0, alpha = "pi/2")))]
+//! ```
+
+use darling::ast::NestedMeta;
+use darling::util::{PathList, SpannedValue};
+use darling::{Error, FromDeriveInput, FromMeta};
+
+use crate::inline_dh::InlineDh;
+use kinematics_compiler::robot::Scalars;
+
+/// The options of one derive.
+#[derive(Debug, FromDeriveInput)]
+#[darling(attributes(kinematics), supports(struct_any))]
+pub struct KinematicsInput {
+    /// The struct.
+    pub ident: syn::Ident,
+    /// Its generics.
+    pub generics: syn::Generics,
+    /// `urdf = "path"`.
+    #[darling(default)]
+    pub urdf: Option<SpannedValue<String>>,
+    /// `dh = "path"` or an inline `dh(...)` table.
+    #[darling(default)]
+    pub dh: Option<SpannedValue<DhSource>>,
+    /// `base = "link"`.
+    #[darling(default)]
+    pub base: Option<SpannedValue<String>>,
+    /// `tip = "link"`.
+    #[darling(default)]
+    pub tip: Option<SpannedValue<String>>,
+    /// `tips("a", "b")`.
+    #[darling(default)]
+    pub tips: Option<Tips>,
+    /// `positions`: also emit position-only functions.
+    #[darling(default)]
+    pub positions: bool,
+    /// `scalars(f64, f32)`.
+    #[darling(default)]
+    pub scalars: Option<SpannedValue<PathList>>,
+    /// `crate = "path"` for a renamed dependency.
+    #[darling(default, rename = "crate")]
+    pub krate: Option<syn::Path>,
+}
+
+impl KinematicsInput {
+    /// The tip links, from `tip` or `tips`.
+    pub fn tips(&self) -> Vec<SpannedValue<String>> {
+        let mut tips: Vec<SpannedValue<String>> = self.tip.iter().cloned().collect();
+        if let Some(list) = &self.tips {
+            tips.extend(list.0.iter().cloned());
+        }
+        tips
+    }
+
+    /// The scalar types asked for (`f64` by default).
+    pub fn scalars(&self) -> darling::Result<Scalars> {
+        let Some(list) = &self.scalars else { return Ok(Scalars::default()) };
+        let mut scalars = Scalars { f64: false, f32: false };
+        let mut errors = Error::accumulator();
+        for path in list.iter() {
+            match path.get_ident().map(ToString::to_string).as_deref() {
+                Some("f64") => scalars.f64 = true,
+                Some("f32") => scalars.f32 = true,
+                _ => errors.push(Error::custom("expected `f64` or `f32`").with_span(path)),
+            }
+        }
+        if !scalars.f64 && !scalars.f32 {
+            errors.push(
+                Error::custom("name at least one scalar type: `scalars(f64)`, `scalars(f32)` or both")
+                    .with_span(&list.span()),
+            );
+        }
+        errors.finish_with(scalars)
+    }
+}
+
+/// `tips("a", "b")`: string literals, each with its span.
+#[derive(Debug, Clone)]
+pub struct Tips(pub Vec<SpannedValue<String>>);
+
+impl FromMeta for Tips {
+    fn from_list(items: &[NestedMeta]) -> darling::Result<Self> {
+        let mut errors = Error::accumulator();
+        let mut tips = Vec::new();
+        for item in items {
+            match item {
+                NestedMeta::Lit(syn::Lit::Str(s)) => tips.push(SpannedValue::new(s.value(), s.span())),
+                other => errors.push(
+                    Error::custom("expected a link name in quotes, like `tips(\"left_hand\", \"right_hand\")`")
+                        .with_span(other),
+                ),
+            }
+        }
+        errors.finish_with(Tips(tips))
+    }
+}
+
+/// Where a DH table comes from.
+#[derive(Debug, Clone)]
+pub enum DhSource {
+    /// A TOML or JSON file.
+    File(String),
+    /// A table written in the attribute.
+    Inline(Box<InlineDh>),
+}
+
+impl FromMeta for DhSource {
+    fn from_string(value: &str) -> darling::Result<Self> {
+        Ok(DhSource::File(value.to_owned()))
+    }
+
+    fn from_list(items: &[NestedMeta]) -> darling::Result<Self> {
+        InlineDh::from_list(items).map(|t| DhSource::Inline(Box::new(t)))
+    }
+}
