@@ -49,4 +49,25 @@ fn unreachable_len(got: usize, expected: usize) -> ! {
     }
 }
 
+/// One robot compiled by `#[derive(Kinematics)]`, reached through the `Kinematics` trait.
+pub struct DerivedRobot {
+    /// File name in `robots/`.
+    pub file: &'static str,
+    /// `file` (the attribute names the file) or `inline` (the table is written in the attribute).
+    pub how: &'static str,
+    /// The tips.
+    pub tips: &'static [&'static str],
+    /// The links `link_poses_into` computes.
+    pub links: &'static [&'static str],
+    /// `Kinematics::tip_poses_into`.
+    pub tip_poses_into: fn(&[f64], &mut [Pose<f64>]) -> Result<(), kinematics::RuntimeError>,
+    /// `Kinematics::link_poses_into`.
+    pub link_poses_into: fn(&[f64], &mut [Pose<f64>]) -> Result<(), kinematics::RuntimeError>,
+    /// The tips' poses through the `f32` functions.
+    pub tip_poses_f32: fn(&[f32]) -> Vec<Pose<f32>>,
+    /// `Kinematics::reference`.
+    pub reference: fn() -> Result<kinematics::ReferenceFk, kinematics::LoadError>,
+}
+
 include!(concat!(env!("OUT_DIR"), "/robots.rs"));
+include!(concat!(env!("OUT_DIR"), "/derived.rs"));

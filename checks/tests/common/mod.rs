@@ -1,0 +1,82 @@
+//! Helpers shared by the agreement tests: robot paths, reach, configurations, pose distances.
+#![allow(dead_code)]
+
+use kinematics::Pose;
+use kinematics::model::{Elementary, JointKind, KinematicTree};
+use nalgebra::{Isometry3, Matrix3};
+use proptest::prelude::*;
+
+/// f64 agreement, relative to the robot's reach (metres) and absolute for rotation entries.
+pub const F64_TOLERANCE: f64 = 1e-12;
+/// f32 agreement, the same way.
+pub const F32_TOLERANCE: f64 = 1e-5;
+pub const CASES: u32 = 10_000;
+
+pub fn robot_path(file: &str) -> String {
+    format!("{}/../robots/{file}", env!("CARGO_MANIFEST_DIR"))
+}
+
+/// An upper bound on how far any link gets from the base: every fixed offset plus every prismatic
+/// stroke, laid end to end (at least 1 m, so tiny robots are held to the absolute tolerance).
+pub fn reach(tree: &KinematicTree) -> f64 {
+    let offsets: f64 = tree
+        .joints()
+        .iter()
+        .flat_map(|j| j.origin.steps().iter().chain(j.after_motion.steps()))
+        .map(|s| match s {
+            Elementary::Translation(v) => (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt(),
+            Elementary::Rotation(..) => 0.0,
+        })
+        .sum();
+    let strokes: f64 = tree
+        .joints()
+        .iter()
+        .filter(|j| j.kind == JointKind::Prismatic)
+        .map(|j| j.limits.map_or(1.0, |l| l.lower.abs().max(l.upper.abs()) + 1.0))
+        .sum();
+    (offsets + strokes).max(1.0)
+}
+
+/// Per joint: a special angle, a value within the limits, or one up to 1 beyond them.
+pub fn configuration(tree: &KinematicTree) -> impl Strategy<Value = Vec<f64>> {
+    use std::f64::consts::{FRAC_PI_2, PI};
+    let per_joint: Vec<BoxedStrategy<f64>> = tree
+        .dof_joints()
+        .iter()
+        .map(|&j| {
+            let joint = tree.joint(j);
+            let (lo, hi) = joint.limits.map_or((-PI, PI), |l| (l.lower, l.upper));
+            let (lo, hi) = if hi > lo { (lo, hi) } else { (lo - 1.0, hi + 1.0) };
+            prop_oneof![
+                2 => lo..hi,
+                1 => (lo - 1.0)..(hi + 1.0),
+                1 => prop::sample::select(vec![0.0, FRAC_PI_2, -FRAC_PI_2, PI, -PI]),
+            ]
+            .boxed()
+        })
+        .collect();
+    per_joint
+}
+
+/// Largest difference: translation relative to `reach`, rotation entries absolute.
+pub fn distance(generated: &Pose<f64>, reference: &Isometry3<f64>, reach: f64) -> f64 {
+    let r = reference.rotation.to_rotation_matrix();
+    let mut worst: f64 = 0.0;
+    for i in 0..3 {
+        worst = worst.max((generated.translation[i] - reference.translation.vector[i]).abs() / reach);
+        for j in 0..3 {
+            worst = worst.max((generated.rotation[i][j] - r[(i, j)]).abs());
+        }
+    }
+    worst
+}
+
+pub fn orthonormality_error(pose: &Pose<f64>) -> f64 {
+    let r = pose.rotation;
+    let m = Matrix3::new(r[0][0], r[0][1], r[0][2], r[1][0], r[1][1], r[1][2], r[2][0], r[2][1], r[2][2]);
+    (m.transpose() * m - Matrix3::identity()).amax()
+}
+
+pub fn to_f64(p: Pose<f32>) -> Pose<f64> {
+    Pose { rotation: p.rotation.map(|row| row.map(f64::from)), translation: p.translation.map(f64::from) }
+}
