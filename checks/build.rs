@@ -61,9 +61,12 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         }
         for (source, how) in sources {
             let ty = format!("Derived_{module}_{how}");
+            // Keyword rows repeat keys (`a = ..` in every `joint(..)`), which clippy's
+            // `duplicated_attributes` mistakes for duplicates; the positional `row(..)` form avoids it.
+            let allow = if how == "inline" { "#[allow(clippy::duplicated_attributes)]\n" } else { "" };
             writeln!(
                 derived,
-                "/// `robots/{file}` ({how}).\n#[derive(::kinematics::Kinematics)]\n#[kinematics({source}, tips({leaf_list}), positions, scalars(f64, f32))]\n#[allow(non_camel_case_types)]\npub struct {ty};"
+                "/// `robots/{file}` ({how}).\n{allow}#[derive(::kinematics::Kinematics)]\n#[kinematics({source}, tips({leaf_list}), positions, scalars(f64, f32))]\n#[allow(non_camel_case_types)]\npub struct {ty};"
             )?;
             let tips_f32 = if leaves.len() == 1 {
                 format!("|q| vec![{ty}::tip_pose_f32(arr(q))]")

@@ -67,3 +67,31 @@ fn generic_code_takes_any_compiled_robot() {
     let err = <Ur5 as Kinematics>::tip_poses_into(&[0.0; 5], &mut out).unwrap_err();
     assert!(err.to_string().contains("6 degrees of freedom"), "{err}");
 }
+
+/// The same planar arm as a textbook table: one positional row per joint.
+#[derive(Kinematics)]
+#[kinematics(
+    dh(
+        convention = "standard",
+        //   joint       a     alpha    d    theta  lower  upper
+        row("shoulder", 1.0,   0.0,    0.0,  0.0),
+        row("elbow",    1.0,   0.0,    0.0,  0.0,   -2.5,  2.5),
+        row("wrist",    0.5, "-pi/2",  0.0,  0.0),
+        row("lift", "prismatic", 0.0, 0.0, 0.1, 0.0, 0.0, 0.4),
+    ),
+    tip = "link4"
+)]
+struct PlanarTable;
+
+#[test]
+fn positional_rows_read_like_the_textbook_table() {
+    assert_eq!(PlanarTable::JOINT_NAMES, ["shoulder", "elbow", "wrist", "lift"]);
+    assert_eq!(PlanarTable::JOINT_LIMITS[1].upper, 2.5);
+    let q = [0.1, 0.2, 0.3, 0.2];
+    let reference = PlanarTable::reference().unwrap().link_pose(&q, "link4").unwrap();
+    let pose = PlanarTable::tip_pose(&q);
+    assert!((pose.to_isometry().translation.vector - reference.translation.vector).norm() < 1e-12);
+    // The prismatic joint slides along the wrist's z, which the -pi/2 twist turned into -y.
+    let [x, _, _] = PlanarTable::tip_pose(&[0.0, 0.0, 0.0, 0.0]).translation;
+    assert!((x - 2.5).abs() < 1e-12);
+}

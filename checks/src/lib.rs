@@ -49,6 +49,9 @@ fn unreachable_len(got: usize, expected: usize) -> ! {
     }
 }
 
+/// `Kinematics::tip_poses_into` and `link_poses_into`.
+pub type PosesInto = fn(&[f64], &mut [Pose<f64>]) -> Result<(), kinematics::RuntimeError>;
+
 /// One robot compiled by `#[derive(Kinematics)]`, reached through the `Kinematics` trait.
 pub struct DerivedRobot {
     /// File name in `robots/`.
@@ -60,9 +63,9 @@ pub struct DerivedRobot {
     /// The links `link_poses_into` computes.
     pub links: &'static [&'static str],
     /// `Kinematics::tip_poses_into`.
-    pub tip_poses_into: fn(&[f64], &mut [Pose<f64>]) -> Result<(), kinematics::RuntimeError>,
+    pub tip_poses_into: PosesInto,
     /// `Kinematics::link_poses_into`.
-    pub link_poses_into: fn(&[f64], &mut [Pose<f64>]) -> Result<(), kinematics::RuntimeError>,
+    pub link_poses_into: PosesInto,
     /// The tips' poses through the `f32` functions.
     pub tip_poses_f32: fn(&[f32]) -> Vec<Pose<f32>>,
     /// `Kinematics::reference`.

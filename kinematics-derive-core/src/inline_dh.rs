@@ -9,6 +9,20 @@
 //!
 //! Keys and meanings are those of a DH file (see `kinematics_model::dh`); numbers may be negative,
 //! angles may be exact strings such as `"pi/2"`.
+//!
+//! The positional form is the table itself, one `row` per joint, columns `a, alpha, d, theta`
+//! (then optionally `lower, upper`); a first column `"prismatic"` makes the joint prismatic:
+//!
+//! ```text
+//! dh(convention = "standard",
+//!    //   joint             a        alpha    d         theta
+//!    row("shoulder_pan",    0.0,    "pi/2",  0.089159, 0.0),
+//!    row("shoulder_lift",  -0.425,   0.0,    0.0,      0.0, "-pi", "pi"),
+//!    row("lift", "prismatic", 0.0,   0.0,    0.1,      0.0, 0.0, 0.5))
+//! ```
+//!
+//! Prefer it when the table has more than one row: clippy's `duplicated_attributes` lint takes
+//! the repeated keys of keyword rows (`a = ...` in every `joint(...)`) for duplicates.
 
 use darling::ast::NestedMeta;
 use darling::{Error, FromMeta};
@@ -79,6 +93,53 @@ pub struct InlineRow {
     effort: Option<f64>,
 }
 
+/// One positional row: `row("name", ["prismatic",] a, alpha, d, theta[, lower, upper])`.
+#[derive(Debug, Clone)]
+pub struct PositionalRow(InlineRow);
+
+impl FromMeta for PositionalRow {
+    fn from_list(items: &[NestedMeta]) -> darling::Result<Self> {
+        let usage = "expected `row(\"name\", a, alpha, d, theta)`, optionally with `\"prismatic\"` after the name and `lower, upper` at the end";
+        let mut values = Vec::new();
+        for item in items {
+            match item {
+                NestedMeta::Lit(lit) => values.push(Number::from_value(lit)?),
+                other => return Err(Error::custom(usage).with_span(other)),
+            }
+        }
+        let Some(Number(Value::Text(name))) = values.first().cloned() else {
+            return Err(Error::custom(usage));
+        };
+        let mut rest = values[1..].to_vec();
+        let mut kind = None;
+        if let Some(Number(Value::Text(t))) = rest.first()
+            && (t == "prismatic" || t == "revolute")
+        {
+            kind = Some(t.clone());
+            rest.remove(0);
+        }
+        if rest.len() != 4 && rest.len() != 6 {
+            return Err(Error::custom(format!("{usage}; found {} numbers", rest.len())));
+        }
+        let mut columns = rest.into_iter().map(Some);
+        let mut next = || columns.next().flatten();
+        Ok(PositionalRow(InlineRow {
+            name,
+            link: None,
+            kind,
+            a: next(),
+            alpha: next(),
+            d: next(),
+            theta: next(),
+            offset: None,
+            lower: next(),
+            upper: next(),
+            velocity: None,
+            effort: None,
+        }))
+    }
+}
+
 /// The base or tool transform: `tool(name = "flange", xyz(0, 0, 0.107), rpy(0, 0, "pi"))`.
 #[derive(Debug, Clone, FromMeta)]
 pub struct InlineFixed {
@@ -126,6 +187,8 @@ pub struct InlineDh {
     tool: Option<InlineFixed>,
     #[darling(multiple, rename = "joint")]
     joints: Vec<InlineRow>,
+    #[darling(multiple, rename = "row")]
+    rows: Vec<PositionalRow>,
 }
 
 impl InlineDh {
@@ -148,9 +211,14 @@ impl InlineDh {
                 AngleUnit::Radians
             }
         };
-        let joints = self
-            .joints
-            .iter()
+        if !self.joints.is_empty() && !self.rows.is_empty() {
+            errors.push(Error::custom(
+                "write the table with `row(...)` or with `joint(...)`, not both: their order would be lost",
+            ));
+        }
+        let rows: Vec<&InlineRow> = self.joints.iter().chain(self.rows.iter().map(|r| &r.0)).collect();
+        let joints = rows
+            .into_iter()
             .enumerate()
             .map(|(i, row)| {
                 let kind = match row.kind.as_deref() {

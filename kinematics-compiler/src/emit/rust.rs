@@ -174,7 +174,10 @@ pub fn emit_function(compiled: &Compiled, options: &EmitOptions) -> TokenStream 
         match item {
             Item::SinCos(angle) => {
                 let _ = write!(code, "let ({}, {}) = ", schedule.names.sin(*angle), schedule.names.cos(*angle));
-                w.operand(*angle, &mut code);
+                // A method call binds tighter than any operator: parenthesise a written-out angle.
+                let composite =
+                    w.inline(*angle) && matches!(g.node(*angle), Node::Add(..) | Node::Mul(..) | Node::Neg(..));
+                w.wrapped(*angle, composite, &mut code);
                 code.push_str(".sin_cos();");
             }
             Item::Let(id, name) => {

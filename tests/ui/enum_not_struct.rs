@@ -1,0 +1,7 @@
+use kinematics::Kinematics;
+
+#[derive(Kinematics)]
+#[kinematics(dh = "../../../../robots/ur5.toml")]
+enum Robot { A }
+
+fn main() {}

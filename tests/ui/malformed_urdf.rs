@@ -1,0 +1,7 @@
+use kinematics::Kinematics;
+
+#[derive(Kinematics)]
+#[kinematics(urdf = "../../../../tests/ui/fixtures/malformed.urdf")]
+struct Robot;
+
+fn main() {}

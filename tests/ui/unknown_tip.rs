@@ -1,0 +1,7 @@
+use kinematics::Kinematics;
+
+#[derive(Kinematics)]
+#[kinematics(urdf = "../../../../robots/ur5.urdf", tip = "tool9")]
+struct Robot;
+
+fn main() {}

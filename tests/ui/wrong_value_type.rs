@@ -1,0 +1,7 @@
+use kinematics::Kinematics;
+
+#[derive(Kinematics)]
+#[kinematics(urdf = 5)]
+struct Robot;
+
+fn main() {}
