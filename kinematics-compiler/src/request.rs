@@ -3,7 +3,7 @@
 use kinematics_model::{KinematicTree, LinkId};
 
 use crate::error::CompileError;
-use crate::simplify::{simplify, split_tail, translations_to_tail};
+use crate::simplify::{Options, simplify_with, split_tail, translations_to_tail};
 use crate::stats::OpCount;
 use crate::symbolic::graph::{ExprGraph, ExprId};
 use crate::symbolic::lower::lower_path;
@@ -72,8 +72,10 @@ pub struct Compiled {
 
 /// Compiles the poses `request` asks for.
 ///
-/// One tip is accumulated from the tool back to the base (the cheapest order for one pose); several
-/// tips are accumulated from the base outwards, so links share their common partial products.
+/// One tip is accumulated both from the tool back to the base and from the base out (tool-to-base
+/// usually wins: the rotations it multiplies first are sparse); several tips are accumulated from
+/// the base outwards, so links share their common partial products. Each is tried with every
+/// [`Options`] of the simplifier, and the cheapest by [`OpCount::weighted`] is kept.
 pub fn compile(tree: &KinematicTree, request: &Request) -> Result<Compiled, CompileError> {
     let error = |source| CompileError::Model { robot: tree.name().to_owned(), source };
     let base_name = request.base.clone().unwrap_or_else(|| tree.link(tree.root()).name.clone());
@@ -84,23 +86,32 @@ pub fn compile(tree: &KinematicTree, request: &Request) -> Result<Compiled, Comp
     } else {
         request.tips.clone()
     };
-    let mut graph = ExprGraph::new();
-    let mut frames = Vec::with_capacity(tips.len());
-    for tip in &tips {
-        let tip_id = tree.link_id(tip).ok_or_else(|| error(kinematics_model::ModelError::NoSuchLink(tip.clone())))?;
-        let steps = path_steps(&mut graph, tree, base, tip_id);
-        let steps = simplify(&mut graph, steps);
-        let transform = if tips.len() == 1 {
-            let steps = translations_to_tail(&graph, steps);
-            let (main, tail) = split_tail(&steps);
-            let main = fold_from_tool(&mut graph, main);
-            fold_from_base(&mut graph, main, tail)
-        } else {
-            let identity = SymTransform::identity(&mut graph);
-            fold_from_base(&mut graph, identity, &steps)
-        };
-        frames.push(Frame { link: tip.clone(), transform });
+    let tip_ids = tips
+        .iter()
+        .map(|tip| tree.link_id(tip).ok_or_else(|| error(kinematics_model::ModelError::NoSuchLink(tip.clone()))))
+        .collect::<Result<Vec<_>, _>>()?;
+    // One pose may be accumulated from the tool back or from the base out; several share their
+    // prefixes from the base out. Every simplifier option is tried and the cheapest code kept (the
+    // first of equals, so the choice is deterministic).
+    let orders: &[Order] = if tip_ids.len() == 1 { &[Order::FromTool, Order::FromBase] } else { &[Order::FromBase] };
+    let mut best: Option<(usize, (ExprGraph, Vec<SymTransform>))> = None;
+    for &order in orders {
+        for options in Options::ALL {
+            let candidate = fold_tips(tree, base, &tip_ids, order, options);
+            let (g, frames) = &candidate;
+            let outputs =
+                frames.iter().flat_map(|t| if request.position_only { t.p.to_vec() } else { t.entries().to_vec() });
+            let cost = OpCount::of(g, outputs).weighted();
+            if best.as_ref().is_none_or(|(c, _)| cost < *c) {
+                best = Some((cost, candidate));
+            }
+        }
     }
+    let (graph, frames) = match best {
+        Some((_, result)) => result,
+        None => (ExprGraph::new(), Vec::new()),
+    };
+    let frames = tips.iter().zip(frames).map(|(link, transform)| Frame { link: link.clone(), transform }).collect();
     Ok(Compiled {
         robot: tree.name().to_owned(),
         base: base_name,
@@ -109,6 +120,45 @@ pub fn compile(tree: &KinematicTree, request: &Request) -> Result<Compiled, Comp
         graph,
         frames,
     })
+}
+
+/// Which way a pose is accumulated.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Order {
+    /// From the tool back to the base (`A1 (A2 (A3 ...))`), trailing translations added last.
+    FromTool,
+    /// From the base out (`((A1 A2) A3) ...`): frames share their common prefixes.
+    FromBase,
+}
+
+/// Lowers, simplifies and folds the pose of every tip in one graph.
+fn fold_tips(
+    tree: &KinematicTree,
+    base: LinkId,
+    tips: &[LinkId],
+    order: Order,
+    options: Options,
+) -> (ExprGraph, Vec<SymTransform>) {
+    let mut graph = ExprGraph::new();
+    let mut frames = Vec::with_capacity(tips.len());
+    for &tip in tips {
+        let steps = path_steps(&mut graph, tree, base, tip);
+        let steps = simplify_with(&mut graph, steps, options);
+        let transform = match order {
+            Order::FromTool => {
+                let steps = translations_to_tail(&graph, steps);
+                let (main, tail) = split_tail(&steps);
+                let main = fold_from_tool(&mut graph, main);
+                fold_from_base(&mut graph, main, tail)
+            }
+            Order::FromBase => {
+                let identity = SymTransform::identity(&mut graph);
+                fold_from_base(&mut graph, identity, &steps)
+            }
+        };
+        frames.push(transform);
+    }
+    (graph, frames)
 }
 
 /// The steps of `T_base^tip`: up from `base` to the nearest common ancestor (inverted), then down

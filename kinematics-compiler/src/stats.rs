@@ -40,6 +40,18 @@ impl OpCount {
     }
 }
 
+/// What one `sin_cos` costs in multiplications or additions, for choosing between forms: about
+/// 20 ns against well under a nanosecond for a multiply-add on the machines we measured.
+pub const SIN_COS_WEIGHT: usize = 40;
+
+impl OpCount {
+    /// One number to compare forms by: sines and cosines weighted by [`SIN_COS_WEIGHT`], plus every
+    /// multiplication and addition.
+    pub fn weighted(&self) -> usize {
+        self.sin_cos * SIN_COS_WEIGHT + self.mul + self.add
+    }
+}
+
 impl fmt::Display for OpCount {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(f, "{} sin/cos pairs, {} multiplications, {} additions", self.sin_cos, self.mul, self.add)

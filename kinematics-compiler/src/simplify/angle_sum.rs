@@ -1,12 +1,18 @@
 //! Rule `angle-sum`: parallel revolute axes separated only by translations.
 
+use crate::symbolic::angle::LinearAngle;
 use crate::symbolic::graph::ExprGraph;
 use crate::symbolic::step::{Step, parallel};
 use crate::symbolic::transform::{mat_vec, rotation_matrix};
 
+/// Every joint variable of `b` already appears in `a`.
+fn adds_no_variable(a: &LinearAngle, b: &LinearAngle) -> bool {
+    b.terms().iter().all(|(dof, _)| a.terms().iter().any(|(d, _)| d == dof))
+}
+
 /// `R(u, a) T(v1) ... T(vk) R(+-u, b) = T(R(u, a) v1) ... T(R(u, a) vk) R(u, a +- b)`, applied left
 /// to right so runs of parallel joints collapse into one rotation by the total angle.
-pub fn angle_sums(g: &mut ExprGraph, steps: Vec<Step>) -> Vec<Step> {
+pub fn angle_sums(g: &mut ExprGraph, steps: Vec<Step>, options: super::Options) -> Vec<Step> {
     let mut out: Vec<Step> = Vec::with_capacity(steps.len());
     for step in steps {
         if let Step::Rotate { axis, angle } = &step {
@@ -19,6 +25,7 @@ pub fn angle_sums(g: &mut ExprGraph, steps: Vec<Step>) -> Vec<Step> {
                 && let Step::Rotate { axis: prev, angle: prev_angle } = &out[k - 1]
                 && !prev_angle.is_constant()
                 && let Some(sign) = parallel(*prev, *axis)
+                && !(options.skip_repeated_angle_sums && adds_no_variable(prev_angle, angle))
             {
                 let (prev, prev_angle) = (*prev, prev_angle.clone());
                 let (s, c) = prev_angle.sin_cos(g);

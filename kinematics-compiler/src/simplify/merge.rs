@@ -1,6 +1,7 @@
 //! Rules `axis-sign`, `merge-rotations` and `combine-translations`.
 
-use crate::symbolic::graph::{ExprGraph, ExprId};
+use crate::symbolic::angle::LinearAngle;
+use crate::symbolic::graph::{ExprGraph, ExprId, exact_sin_cos};
 use crate::symbolic::step::{Step, axis_aligned, parallel};
 use crate::symbolic::transform::vec_add;
 
@@ -27,7 +28,7 @@ pub(crate) fn along(g: &ExprGraph, v: &[ExprId; 3], axis: [f64; 3]) -> bool {
 }
 
 /// Rule `merge-rotations`: `R(u, a) T(v along u)* R(+-u, b) = T(v)* R(u, a +- b)`.
-pub fn merge_rotations(g: &ExprGraph, steps: Vec<Step>) -> Vec<Step> {
+pub fn merge_rotations(g: &ExprGraph, steps: Vec<Step>, options: super::Options) -> Vec<Step> {
     let mut out: Vec<Step> = Vec::with_capacity(steps.len());
     for step in steps {
         if let Step::Rotate { axis, angle } = &step {
@@ -39,6 +40,7 @@ pub fn merge_rotations(g: &ExprGraph, steps: Vec<Step>) -> Vec<Step> {
             if k > 0
                 && let Step::Rotate { axis: prev, angle: prev_angle } = &out[k - 1]
                 && let Some(sign) = parallel(*prev, *axis)
+                && !(options.keep_constant_rotations && mixes_numeric_constant(prev_angle, angle))
             {
                 let merged = if sign > 0.0 { prev_angle.plus(angle) } else { prev_angle.plus(&angle.negated()) };
                 let prev = *prev;
@@ -50,6 +52,12 @@ pub fn merge_rotations(g: &ExprGraph, steps: Vec<Step>) -> Vec<Step> {
         out.push(step);
     }
     out
+}
+
+/// One angle is a constant that is not a whole number of quarter turns, the other moves.
+fn mixes_numeric_constant(a: &LinearAngle, b: &LinearAngle) -> bool {
+    let numeric = |x: &LinearAngle| x.is_constant() && exact_sin_cos(x.constant_radians()).is_none();
+    (numeric(a) && !b.is_constant()) || (numeric(b) && !a.is_constant())
 }
 
 /// Rule `combine-translations`: `T(a) T(b) = T(a + b)`.

@@ -33,15 +33,43 @@ pub use merge::{combine_translations, merge_rotations, normalize_axes};
 pub use quarter_turn::{push_quarter_turns, quarter_turns};
 pub use tail::{split_tail, translations_to_tail};
 
-/// Runs every pass in order.
+/// Choices the passes leave open, because which is cheaper depends on the robot: the compiler tries
+/// each and keeps the cheapest result.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Options {
+    /// Keep a numeric constant rotation apart from a joint rotation about the same axis instead of
+    /// folding it into the joint's angle: folding saves a constant matrix product but makes a new
+    /// angle, which costs a `sin_cos` when the joint's own angle is needed elsewhere.
+    pub keep_constant_rotations: bool,
+    /// Skip `angle-sum` when the second angle adds no new joint variable (a mimic of a joint
+    /// already in the first): `sin_cos(q)` shared by both beats `sin_cos(q)` and `sin_cos(2q)`.
+    pub skip_repeated_angle_sums: bool,
+}
+
+impl Options {
+    /// Every combination, the default first.
+    pub const ALL: [Options; 4] = [
+        Options { keep_constant_rotations: false, skip_repeated_angle_sums: false },
+        Options { keep_constant_rotations: true, skip_repeated_angle_sums: false },
+        Options { keep_constant_rotations: false, skip_repeated_angle_sums: true },
+        Options { keep_constant_rotations: true, skip_repeated_angle_sums: true },
+    ];
+}
+
+/// Runs every pass in order, with the default options.
 pub fn simplify(g: &mut ExprGraph, steps: Vec<Step>) -> Vec<Step> {
+    simplify_with(g, steps, Options::default())
+}
+
+/// Runs every pass in order.
+pub fn simplify_with(g: &mut ExprGraph, steps: Vec<Step>, options: Options) -> Vec<Step> {
     let steps = normalize_axes(steps);
-    let steps = merge_rotations(g, steps);
+    let steps = merge_rotations(g, steps, options);
     let steps = quarter_turns(steps);
     let steps = push_quarter_turns(g, steps);
     let steps = normalize_axes(steps);
-    let steps = merge_rotations(g, steps);
+    let steps = merge_rotations(g, steps, options);
     let steps = combine_translations(g, steps);
-    let steps = angle_sums(g, steps);
+    let steps = angle_sums(g, steps, options);
     combine_translations(g, steps)
 }
