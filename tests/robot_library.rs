@@ -386,8 +386,12 @@ fn humanoid_tree() {
     assert!(moving_joints(&tree) >= 30, "{} moving joints", moving_joints(&tree));
     assert_eq!(moving_joints(&tree), 42);
     assert!(kind_count(&tree, JointKind::Fixed) >= 10, "sensor and tool frames");
-    let mimics: Vec<&str> =
-        tree.joints().iter().filter(|j| matches!(j.motion, JointMotion::Mimic { .. })).map(|j| j.name.as_str()).collect();
+    let mimics: Vec<&str> = tree
+        .joints()
+        .iter()
+        .filter(|j| matches!(j.motion, JointMotion::Mimic { .. }))
+        .map(|j| j.name.as_str())
+        .collect();
     assert_eq!(mimics.len(), 17, "{mimics:?}");
     assert_eq!(mimic_of(&tree, "RHipYawPitch"), ("LHipYawPitch", 1.0, 0.0));
     for (hand, side) in [("LHand", "L"), ("RHand", "R")] {
@@ -402,7 +406,7 @@ fn humanoid_tree() {
     assert!((Vector3::from(axis) - Vector3::new(0.0, 1.0, -1.0).normalize()).norm() < 1e-15);
     // Standing straight at q = 0, the left sole is below the hip by thigh + tibia + foot height.
     let fk = ReferenceFk::new(tree);
-    let sole = fk.link_pose(&vec![0.0; 25], "l_sole").unwrap();
+    let sole = fk.link_pose(&[0.0; 25], "l_sole").unwrap();
     let expected = Vector3::new(0.0, 0.05, -0.085 - 0.1 - 0.1029 - 0.04511);
     assert!((sole.translation.vector - expected).norm() < POSE_TOLERANCE, "{sole}");
     // One motor drives both hip yaw-pitch joints: moving it moves both feet.
@@ -410,7 +414,7 @@ fn humanoid_tree() {
     q[dof_index(fk.tree(), "LHipYawPitch")] = 0.5;
     for foot in ["l_sole", "r_sole"] {
         let moved = fk.link_pose(&q, foot).unwrap().translation.vector;
-        let still = fk.link_pose(&vec![0.0; 25], foot).unwrap().translation.vector;
+        let still = fk.link_pose(&[0.0; 25], foot).unwrap().translation.vector;
         assert!((moved - still).norm() > 1e-3, "{foot} did not move");
     }
 }
