@@ -1,8 +1,30 @@
-//! Forward kinematics for robots, from a URDF file or a Denavit-Hartenberg table.
+//! Forward kinematics for robots, from a URDF file or a Denavit-Hartenberg table, compiled to
+//! closed-form Rust.
 //!
-//! One dependency for users: this crate re-exports the model ([`model`]: descriptions and the
-//! validated [`KinematicTree`]) and the runtime reference ([`runtime`]: [`ReferenceFk`], poses and
-//! Jacobians on nalgebra), and adds [`load`], which reads a description file.
+//! Most users meet it as a derive:
+//!
+//! ```
+//! use kinematics::Kinematics;
+//!
+//! #[derive(Kinematics)]
+//! #[kinematics(urdf = "robots/ur5.urdf", base = "base", tip = "tool0", positions)]
+//! pub struct Ur5;
+//!
+//! let q = [0.3, -1.2, 1.0, 0.4, -0.7, 2.0];
+//! let pose = Ur5::tip_pose(&q);
+//! assert_eq!(Ur5::tip_position(&q), pose.translation);
+//! // Checked against the runtime reference built from the same file:
+//! let reference = Ur5::reference()?.relative_pose(&q, "base", "tool0")?;
+//! let iso: nalgebra::Isometry3<f64> = pose.into();
+//! assert!((iso.translation.vector - reference.translation.vector).norm() < 1e-12);
+//! assert_eq!(Ur5::link_poses(&q).len(), Ur5::LINK_NAMES.len());
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+//!
+//! This crate is the one dependency users add: it re-exports the derive and its trait
+//! ([`Kinematics`]), the model ([`model`]: descriptions and the validated [`KinematicTree`]) and
+//! the runtime reference ([`runtime`]: [`ReferenceFk`], poses and Jacobians on nalgebra), and adds
+//! [`load`], which reads a description file.
 //!
 //! ```
 //! let fk = kinematics::ReferenceFk::new(kinematics::load(concat!(env!("CARGO_MANIFEST_DIR"), "/robots/planar_3r.toml"))?);
