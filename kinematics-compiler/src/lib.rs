@@ -27,5 +27,5 @@ mod stats;
 pub mod symbolic;
 
 pub use error::CompileError;
-pub use request::{Compiled, Frame, Request, compile};
+pub use request::{Compiled, Frame, Request, compile, plain_product_count};
 pub use stats::OpCount;

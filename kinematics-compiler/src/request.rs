@@ -122,6 +122,19 @@ pub fn compile(tree: &KinematicTree, request: &Request) -> Result<Compiled, Comp
     })
 }
 
+/// What the pose of `tip` in `base` costs as a plain sequential product of its transforms (zeros
+/// and ones folded, nothing else): the baseline the compiler's simplifications are measured against.
+pub fn plain_product_count(tree: &KinematicTree, base: &str, tip: &str) -> Result<OpCount, CompileError> {
+    let error = |source| CompileError::Model { robot: tree.name().to_owned(), source };
+    let link =
+        |name: &str| tree.link_id(name).ok_or_else(|| error(kinematics_model::ModelError::NoSuchLink(name.to_owned())));
+    let mut g = ExprGraph::new();
+    let steps = path_steps(&mut g, tree, link(base)?, link(tip)?);
+    let identity = SymTransform::identity(&mut g);
+    let t = fold_from_base(&mut g, identity, &steps);
+    Ok(OpCount::of(&g, t.entries()))
+}
+
 /// Which way a pose is accumulated.
 #[derive(Clone, Copy, PartialEq, Eq)]
 enum Order {

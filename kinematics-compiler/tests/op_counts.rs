@@ -6,29 +6,13 @@
 
 mod common;
 
-use kinematics_compiler::simplify::simplify;
-use kinematics_compiler::symbolic::graph::ExprGraph;
-use kinematics_compiler::symbolic::lower::lower_path;
-use kinematics_compiler::symbolic::transform::{SymTransform, fold_from_base};
-use kinematics_compiler::{OpCount, Request, compile};
+use kinematics_compiler::{OpCount, Request, compile, plain_product_count};
 use kinematics_model::KinematicTree;
 
 /// The end effector: the deepest link (the last leaf of the longest path from the root).
 fn end_effector(tree: &KinematicTree) -> String {
     let deepest = (0..tree.links().len()).max_by_key(|&l| (tree.path_from_root(kinematics_model::LinkId(l)).len(), l));
     tree.link(kinematics_model::LinkId(deepest.unwrap_or(0))).name.clone()
-}
-
-/// The same pose as a plain product, base to tip, of every joint's transforms (with or without the
-/// simplifier's rewrites).
-fn sequential(tree: &KinematicTree, tip: &str, simplified: bool) -> OpCount {
-    let mut g = ExprGraph::new();
-    let path = tree.path_from_root(tree.link_id(tip).unwrap());
-    let steps = lower_path(&mut g, tree, &path);
-    let steps = if simplified { simplify(&mut g, steps) } else { steps };
-    let identity = SymTransform::identity(&mut g);
-    let t = fold_from_base(&mut g, identity, &steps);
-    OpCount::of(&g, t.entries())
 }
 
 fn robots() -> Vec<String> {
@@ -55,7 +39,7 @@ fn table_of_every_robot() {
         let pose = compile(&tree, &Request::tip(&tip)).unwrap().op_count();
         let position = compile(&tree, &Request::tip(&tip).positions_only()).unwrap().op_count();
         let all = compile(&tree, &Request::all_links()).unwrap().op_count();
-        let plain = sequential(&tree, &tip, false);
+        let plain = plain_product_count(&tree, tree.link(tree.root()).name.as_str(), &tip).unwrap();
         println!(
             "| {file:<24} | {:>2} | {tip:<20} | {:>12} | {:>12} | {:>12} | {:>13} |",
             tree.dof(),
