@@ -3,7 +3,7 @@
 use kinematics_model::{KinematicTree, LinkId};
 
 use crate::error::CompileError;
-use crate::simplify::{Options, simplify_with, split_tail, translations_to_tail};
+use crate::simplify::{Options, factor_common, simplify_with, split_tail, translations_to_tail};
 use crate::stats::OpCount;
 use crate::symbolic::graph::{ExprGraph, ExprId};
 use crate::symbolic::lower::lower_path;
@@ -97,7 +97,7 @@ pub fn compile(tree: &KinematicTree, request: &Request) -> Result<Compiled, Comp
     let mut best: Option<(usize, (ExprGraph, Vec<SymTransform>))> = None;
     for &order in orders {
         for options in Options::ALL {
-            let candidate = fold_tips(tree, base, &tip_ids, order, options);
+            let candidate = fold_tips(tree, base, &tip_ids, order, options, request.position_only);
             let (g, frames) = &candidate;
             let outputs =
                 frames.iter().flat_map(|t| if request.position_only { t.p.to_vec() } else { t.entries().to_vec() });
@@ -151,6 +151,7 @@ fn fold_tips(
     tips: &[LinkId],
     order: Order,
     options: Options,
+    position_only: bool,
 ) -> (ExprGraph, Vec<SymTransform>) {
     let mut graph = ExprGraph::new();
     let mut frames = Vec::with_capacity(tips.len());
@@ -170,6 +171,21 @@ fn fold_tips(
             }
         };
         frames.push(transform);
+    }
+    // Pull shared factors out of the sums of what will be computed.
+    let per_frame = if position_only { 3 } else { 12 };
+    let outputs: Vec<ExprId> = frames
+        .iter()
+        .flat_map(|t: &SymTransform| if position_only { t.p.to_vec() } else { t.entries().to_vec() })
+        .collect();
+    let factored = factor_common(&mut graph, &outputs);
+    for (t, new) in frames.iter_mut().zip(factored.chunks(per_frame)) {
+        if position_only {
+            t.p = [new[0], new[1], new[2]];
+        } else {
+            t.r = [[new[0], new[1], new[2]], [new[3], new[4], new[5]], [new[6], new[7], new[8]]];
+            t.p = [new[9], new[10], new[11]];
+        }
     }
     (graph, frames)
 }

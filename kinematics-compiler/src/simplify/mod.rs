@@ -19,8 +19,11 @@
 //!
 //! For a single pose, [`translations_to_tail`] then moves translations along a joint axis past
 //! that joint (rule `translation-to-tail`), and the trailing translations are applied last.
+//! Once the poses are folded into expressions, [`factor_common`] (rule `common-factor`) pulls
+//! shared factors out of sums.
 
 mod angle_sum;
+mod factor;
 mod merge;
 mod quarter_turn;
 mod tail;
@@ -29,6 +32,7 @@ use crate::symbolic::graph::ExprGraph;
 use crate::symbolic::step::Step;
 
 pub use angle_sum::angle_sums;
+pub use factor::factor_common;
 pub use merge::{combine_translations, merge_rotations, normalize_axes};
 pub use quarter_turn::{push_quarter_turns, quarter_turns};
 pub use tail::{split_tail, translations_to_tail};

@@ -1,0 +1,181 @@
+//! The code `build.rs` generated, against the runtime reference (`kinematics::load` +
+//! `ReferenceFk`) on a few thousand random configurations, and against `#[derive(Kinematics)]`
+//! structs of the same robots with the same options, which must give the very same numbers.
+#![allow(clippy::panic, clippy::unwrap_used, clippy::expect_used)] // test helpers fail loudly
+
+use kinematics::model::{Elementary, KinematicTree};
+use kinematics::{Kinematics, Pose, ReferenceFk};
+use kinematics_build_example::{Panda, Ur5};
+use nalgebra::Isometry3;
+
+/// f64 agreement: translations relative to the robot's reach, rotation entries absolute.
+const TOLERANCE: f64 = 1e-12;
+const CASES: usize = 3_000;
+
+#[derive(Kinematics)]
+#[kinematics(urdf = "../../robots/ur5.urdf", base = "base", tip = "tool0", positions)]
+struct DerivedUr5;
+
+#[derive(Kinematics)]
+#[kinematics(
+    urdf = "../../robots/panda.urdf",
+    base = "panda_link0",
+    tips("panda_hand_tcp", "panda_leftfinger", "panda_rightfinger"),
+    positions,
+    scalars(f64, f32)
+)]
+struct DerivedPanda;
+
+fn load(file: &str) -> ReferenceFk {
+    ReferenceFk::new(kinematics::load(format!("{}/../../robots/{file}", env!("CARGO_MANIFEST_DIR"))).unwrap())
+}
+
+/// Every fixed offset laid end to end (at least 1 m): an upper bound on any link's distance.
+fn reach(tree: &KinematicTree) -> f64 {
+    let offsets: f64 = tree
+        .joints()
+        .iter()
+        .flat_map(|j| j.origin.steps().iter().chain(j.after_motion.steps()))
+        .map(|s| match s {
+            Elementary::Translation(v) => v.iter().map(|x| x * x).sum::<f64>().sqrt(),
+            Elementary::Rotation(..) => 0.0,
+        })
+        .sum();
+    offsets.max(1.0)
+}
+
+/// A deterministic stream of configurations (splitmix64): per joint, a special angle (0, +-pi/2,
+/// +-pi) a quarter of the time, else a value within the limits or up to 1 beyond them.
+struct Configurations {
+    state: u64,
+    limits: Vec<(f64, f64)>,
+}
+
+impl Configurations {
+    fn new(limits: &[kinematics::JointLimits]) -> Self {
+        let pi = std::f64::consts::PI;
+        let limits = limits.iter().map(|l| if l.lower.is_finite() { (l.lower, l.upper) } else { (-pi, pi) }).collect();
+        Configurations { state: 0x5eed, limits }
+    }
+
+    fn next_u64(&mut self) -> u64 {
+        self.state = self.state.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = self.state;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        z ^ (z >> 31)
+    }
+
+    fn unit(&mut self) -> f64 {
+        (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64
+    }
+
+    fn next<const N: usize>(&mut self) -> [f64; N] {
+        use std::f64::consts::{FRAC_PI_2, PI};
+        std::array::from_fn(|i| {
+            let (lo, hi) = self.limits[i];
+            match self.next_u64() % 4 {
+                0 => [0.0, FRAC_PI_2, -FRAC_PI_2, PI, -PI][(self.next_u64() % 5) as usize],
+                1 => lo - 1.0 + self.unit() * (hi - lo + 2.0),
+                _ => lo + self.unit() * (hi - lo),
+            }
+        })
+    }
+}
+
+/// Largest difference: translation relative to `reach`, rotation entries absolute.
+fn distance(generated: &Pose<f64>, reference: &Isometry3<f64>, reach: f64) -> f64 {
+    let r = reference.rotation.to_rotation_matrix();
+    let mut worst: f64 = 0.0;
+    for i in 0..3 {
+        worst = worst.max((generated.translation[i] - reference.translation.vector[i]).abs() / reach);
+        for j in 0..3 {
+            worst = worst.max((generated.rotation[i][j] - r[(i, j)]).abs());
+        }
+    }
+    worst
+}
+
+fn assert_close(what: &str, generated: &Pose<f64>, reference: &Isometry3<f64>, reach: f64, q: &[f64]) -> f64 {
+    let d = distance(generated, reference, reach);
+    assert!(d <= TOLERANCE, "{what}: off by {d:e} x reach at q = {q:?}");
+    d
+}
+
+#[test]
+fn ur5_agrees_with_the_runtime_reference() {
+    let fk = load("ur5.urdf");
+    let reach = reach(fk.tree());
+    let base = fk.link_id(Ur5::BASE).unwrap().0;
+    let mut configurations = Configurations::new(&Ur5::JOINT_LIMITS);
+    let mut worst: f64 = 0.0;
+    for _ in 0..CASES {
+        let q = configurations.next::<6>();
+        let poses = fk.link_poses(&q).unwrap();
+        let relative = |link: &str| poses[base].inverse() * poses[fk.link_id(link).unwrap().0];
+        let tip = Ur5::tip_pose(&q);
+        worst = worst.max(assert_close("tool0", &tip, &relative("tool0"), reach, &q));
+        let position = Pose { rotation: tip.rotation, translation: Ur5::tip_position(&q) };
+        assert_close("tool0 position", &position, &relative("tool0"), reach, &q);
+        for ((pose, position), link) in Ur5::link_poses(&q).iter().zip(Ur5::link_positions(&q)).zip(Ur5::LINK_NAMES) {
+            worst = worst.max(assert_close(link, pose, &relative(link), reach, &q));
+            assert_close(link, &Pose { rotation: pose.rotation, translation: position }, &relative(link), reach, &q);
+        }
+    }
+    println!("ur5.urdf: {CASES} configurations, largest error {worst:.2e} x reach");
+}
+
+#[test]
+fn panda_agrees_with_the_runtime_reference() {
+    let fk = load("panda.urdf");
+    let reach = reach(fk.tree());
+    let base = fk.link_id(Panda::BASE).unwrap().0;
+    let mut configurations = Configurations::new(&Panda::JOINT_LIMITS);
+    let mut worst: f64 = 0.0;
+    for _ in 0..CASES {
+        let q = configurations.next::<8>();
+        let poses = fk.link_poses(&q).unwrap();
+        let relative = |link: &str| poses[base].inverse() * poses[fk.link_id(link).unwrap().0];
+        for (pose, tip) in Panda::tip_poses(&q).iter().zip(Panda::TIPS) {
+            worst = worst.max(assert_close(tip, pose, &relative(tip), reach, &q));
+        }
+        for (pose, link) in Panda::link_poses(&q).iter().zip(Panda::LINK_NAMES) {
+            worst = worst.max(assert_close(link, pose, &relative(link), reach, &q));
+        }
+    }
+    println!("panda.urdf: {CASES} configurations, largest error {worst:.2e} x reach");
+}
+
+#[test]
+fn the_build_api_and_the_derive_give_the_same_numbers() {
+    assert_eq!(Ur5::LINK_NAMES, DerivedUr5::LINK_NAMES);
+    assert_eq!(Ur5::JOINT_NAMES, DerivedUr5::JOINT_NAMES);
+    assert_eq!(Ur5::JOINT_LIMITS, DerivedUr5::JOINT_LIMITS);
+    assert_eq!((Panda::TIPS, Panda::BASE, Panda::DOF), (DerivedPanda::TIPS, DerivedPanda::BASE, DerivedPanda::DOF));
+    let mut ur5 = Configurations::new(&Ur5::JOINT_LIMITS);
+    let mut panda = Configurations::new(&Panda::JOINT_LIMITS);
+    for _ in 0..CASES {
+        let q = ur5.next::<6>();
+        assert_eq!(Ur5::tip_pose(&q), DerivedUr5::tip_pose(&q), "q = {q:?}");
+        assert_eq!(Ur5::tip_position(&q), DerivedUr5::tip_position(&q), "q = {q:?}");
+        assert_eq!(Ur5::link_poses(&q), DerivedUr5::link_poses(&q), "q = {q:?}");
+        let q = panda.next::<8>();
+        assert_eq!(Panda::tip_poses(&q), DerivedPanda::tip_poses(&q), "q = {q:?}");
+        assert_eq!(Panda::link_positions(&q), DerivedPanda::link_positions(&q), "q = {q:?}");
+        let q32 = q.map(|x| x as f32);
+        assert_eq!(Panda::tip_poses_f32(&q32), DerivedPanda::tip_poses_f32(&q32), "q = {q:?}");
+    }
+}
+
+#[test]
+fn the_trait_and_the_reference_match_the_derive() {
+    let q = [0.3, -1.2, 1.0, 0.4, -0.7, 2.0];
+    let mut built = [Ur5::tip_pose(&q); 1];
+    let mut derived = built;
+    <Ur5 as Kinematics>::tip_poses_into(&q, &mut built).unwrap();
+    <DerivedUr5 as Kinematics>::tip_poses_into(&q, &mut derived).unwrap();
+    assert_eq!(built, derived);
+    assert!(<Ur5 as Kinematics>::tip_poses_into(&q[..5], &mut built).is_err());
+    assert_eq!(Ur5::reference().unwrap().tree(), DerivedUr5::reference().unwrap().tree());
+    assert_eq!(Panda::reference().unwrap().tree(), load("panda.urdf").tree());
+}

@@ -1,0 +1,84 @@
+//! Everything that can go wrong between a build script's call and the written file.
+
+use kinematics_compiler::CompileError;
+use kinematics_model::LoadError;
+
+/// Why a robot could not be generated or written. Messages name the description file as the
+/// caller wrote it, the element (link, joint, DH row, option) and the fault, lower-case.
+///
+/// `Debug` prints the message too, so a build script whose `main` returns
+/// `Result<(), BuildError>` (or a boxed error) shows it as it is.
+#[derive(thiserror::Error)]
+#[non_exhaustive]
+pub enum BuildError {
+    /// The description could not be read, has an unknown extension, is malformed, or breaks a
+    /// model rule (every broken rule is listed).
+    #[error(transparent)]
+    Load(#[from] LoadError),
+    /// A base or tip that the robot does not have.
+    #[error("{file}: {role} link `{link}` does not exist{}", suggestion.as_ref().map(|s| format!("; did you mean `{s}`?")).unwrap_or_default())]
+    UnknownLink {
+        /// The description file.
+        file: String,
+        /// `base` or `tip`.
+        role: &'static str,
+        /// The link asked for.
+        link: String,
+        /// The closest link name, when it looks like a typo.
+        suggestion: Option<String>,
+    },
+    /// A struct name that is not a Rust identifier.
+    #[error("{file}: struct name `{name}` is not a Rust identifier")]
+    StructName {
+        /// The description file.
+        file: String,
+        /// The name given.
+        name: String,
+    },
+    /// A crate path that is not a Rust path.
+    #[error("{file}: crate path `{path}` is not a Rust path")]
+    CratePath {
+        /// The description file.
+        file: String,
+        /// The path given.
+        path: String,
+    },
+    /// The compiler refused the request.
+    #[error("{file}: {source}")]
+    Compile {
+        /// The description file.
+        file: String,
+        /// What the compiler said.
+        #[source]
+        source: CompileError,
+    },
+    /// The emitted tokens did not parse as a Rust file (a bug in the compiler, reported rather
+    /// than written).
+    #[error("{file}: the generated code does not parse ({message}); please report this")]
+    Unparsable {
+        /// The description file.
+        file: String,
+        /// The parser's message.
+        message: String,
+    },
+    /// `write_to_out_dir` outside a build script.
+    #[error("OUT_DIR is not set: `write_to_out_dir` is for build scripts (use `write_to` elsewhere)")]
+    NoOutDir,
+    /// The output file could not be written (nothing is left behind).
+    #[error("{file}: cannot write `{path}`: {source}")]
+    Write {
+        /// The description file.
+        file: String,
+        /// The output path.
+        path: String,
+        /// The IO error.
+        #[source]
+        source: std::io::Error,
+    },
+}
+
+impl std::fmt::Debug for BuildError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        std::fmt::Display::fmt(self, f)
+    }
+}

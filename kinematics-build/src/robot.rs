@@ -1,0 +1,369 @@
+//! The builder: which description, which frames, which name, and where the code goes.
+
+use std::path::{Path, PathBuf};
+
+use kinematics_model::SourceFormat;
+
+use crate::emit::{Emit, default_struct_name, emit_source};
+use crate::error::BuildError;
+use crate::links::find_link;
+use crate::source::{load, resolve};
+use crate::write::write_atomic;
+
+/// One robot to compile: the options of `#[derive(Kinematics)]` as builder calls.
+///
+/// | derive key | builder |
+/// |---|---|
+/// | `urdf = "path"` | [`Robot::urdf`] |
+/// | `dh = "path"` | [`Robot::dh`] |
+/// | `base = "link"` | [`Robot::base`] |
+/// | `tip = "link"` / `tips(..)` | [`Robot::tip`] (once per tip) / [`Robot::tips`] |
+/// | `positions` | [`Robot::positions`] |
+/// | `scalars(f64, f32)` | [`Robot::f32`] |
+/// | `crate = "path"` | [`Robot::crate_path`] |
+///
+/// plus [`Robot::struct_name`] (default: the robot's name in UpperCamelCase, see
+/// [`default_struct_name`]). Paths are relative to `CARGO_MANIFEST_DIR` (the directory of the
+/// `Cargo.toml` whose build script runs), or to [`Robot::manifest_dir`].
+#[derive(Debug, Clone)]
+#[must_use]
+pub struct Robot {
+    path: PathBuf,
+    format: Option<SourceFormat>,
+    dir: Option<PathBuf>,
+    base: Option<String>,
+    tips: Vec<String>,
+    positions: bool,
+    f32: bool,
+    struct_name: Option<String>,
+    crate_path: String,
+}
+
+impl Robot {
+    fn new(path: PathBuf, format: Option<SourceFormat>) -> Self {
+        Robot {
+            path,
+            format,
+            dir: None,
+            base: None,
+            tips: Vec::new(),
+            positions: false,
+            f32: false,
+            struct_name: None,
+            crate_path: "::kinematics".to_owned(),
+        }
+    }
+
+    /// A URDF file, whatever its extension.
+    pub fn urdf(path: impl Into<PathBuf>) -> Self {
+        Self::new(path.into(), Some(SourceFormat::Urdf))
+    }
+
+    /// A DH table: JSON if the name ends in `.json`, TOML otherwise.
+    pub fn dh(path: impl Into<PathBuf>) -> Self {
+        let path = path.into();
+        let json = path.extension().is_some_and(|e| e.eq_ignore_ascii_case("json"));
+        Self::new(path, Some(if json { SourceFormat::DhJson } else { SourceFormat::DhToml }))
+    }
+
+    /// A description whose format the extension names (`.urdf`/`.xml`, `.toml`, `.json`); any
+    /// other extension is an error when generating.
+    pub fn file(path: impl Into<PathBuf>) -> Self {
+        Self::new(path.into(), None)
+    }
+
+    /// Read relative paths from `dir` instead of `CARGO_MANIFEST_DIR` (tools outside cargo).
+    pub fn manifest_dir(mut self, dir: impl Into<PathBuf>) -> Self {
+        self.dir = Some(dir.into());
+        self
+    }
+
+    /// The frame every pose is expressed in (default: the root link).
+    pub fn base(mut self, link: &str) -> Self {
+        self.base = Some(link.to_owned());
+        self
+    }
+
+    /// Adds a tip: one tip gives `tip_pose`, several give `tip_poses` (in the order added).
+    pub fn tip(mut self, link: &str) -> Self {
+        self.tips.push(link.to_owned());
+        self
+    }
+
+    /// Adds several tips.
+    pub fn tips<I, S>(mut self, links: I) -> Self
+    where
+        I: IntoIterator<Item = S>,
+        S: AsRef<str>,
+    {
+        self.tips.extend(links.into_iter().map(|l| l.as_ref().to_owned()));
+        self
+    }
+
+    /// Also generate position-only functions (`tip_position`, `link_positions`).
+    pub fn positions(mut self) -> Self {
+        self.positions = true;
+        self
+    }
+
+    /// Also generate `f32` functions (`tip_pose_f32`, ...).
+    pub fn f32(mut self) -> Self {
+        self.f32 = true;
+        self
+    }
+
+    /// The generated struct's name (a Rust identifier).
+    pub fn struct_name(mut self, name: &str) -> Self {
+        self.struct_name = Some(name.to_owned());
+        self
+    }
+
+    /// Where the `kinematics` crate is in the crate that includes the code (default
+    /// `::kinematics`), if the dependency was renamed.
+    pub fn crate_path(mut self, path: &str) -> Self {
+        self.crate_path = path.to_owned();
+        self
+    }
+
+    /// The description file as the caller wrote it (the name in messages).
+    pub fn label(&self) -> String {
+        self.path.display().to_string()
+    }
+
+    /// The absolute path the description is read from.
+    pub fn source_path(&self) -> PathBuf {
+        resolve(&self.path, self.dir.as_deref())
+    }
+
+    /// The formatted Rust source: a header comment, `pub struct Name;` and its impls.
+    ///
+    /// Reads and validates the description, checks base and tips (with "did you mean"), compiles
+    /// and formats. Prints nothing: [`Robot::write_to_out_dir`] adds cargo's directives.
+    pub fn generate(&self) -> Result<String, BuildError> {
+        let label = self.label();
+        let loaded = load(&label, self.source_path(), self.format)?;
+        if let Some(base) = &self.base {
+            find_link(&loaded.tree, &label, "base", base)?;
+        }
+        for tip in &self.tips {
+            find_link(&loaded.tree, &label, "tip", tip)?;
+        }
+        let name = self.struct_name.clone().unwrap_or_else(|| default_struct_name(loaded.tree.name()));
+        emit_source(&Emit {
+            loaded: &loaded,
+            name: &name,
+            base: self.base.clone(),
+            tips: self.tips.clone(),
+            positions: self.positions,
+            f32: self.f32,
+            crate_path: &self.crate_path,
+        })
+    }
+
+    /// Generates and writes the code to `path` atomically (nothing half-written is left behind on
+    /// an error). Prints nothing.
+    pub fn write_to(&self, path: impl AsRef<Path>) -> Result<(), BuildError> {
+        let source = self.generate()?;
+        let path = path.as_ref();
+        write_atomic(path, &source).map_err(|source| BuildError::Write {
+            file: self.label(),
+            path: path.display().to_string(),
+            source,
+        })
+    }
+
+    /// From a build script: prints `cargo:rerun-if-changed=<description>`, generates, and writes
+    /// the code to `$OUT_DIR/<file_name>` atomically. Returns the path written, for `include!`
+    /// write `include!(concat!(env!("OUT_DIR"), "/<file_name>"));`.
+    pub fn write_to_out_dir(&self, file_name: &str) -> Result<PathBuf, BuildError> {
+        println!("cargo:rerun-if-changed={}", self.source_path().display());
+        let out = std::env::var_os("OUT_DIR").ok_or(BuildError::NoOutDir)?;
+        let path = Path::new(&out).join(file_name);
+        self.write_to(&path)?;
+        Ok(path)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Robot;
+    use crate::error::BuildError;
+    use kinematics_model::LoadErrorKind;
+
+    /// A scratch directory holding `files`.
+    fn fixture(test: &str, files: &[(&str, &str)]) -> std::path::PathBuf {
+        let dir = std::env::temp_dir().join(format!("kinematics-build-{test}-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        for (name, text) in files {
+            std::fs::write(dir.join(name), text).unwrap();
+        }
+        dir
+    }
+
+    const ARM: &str = r#"<robot name="arm">
+      <link name="base_link"/> <link name="upper"/> <link name="tool0"/>
+      <joint name="shoulder" type="revolute"><parent link="base_link"/><child link="upper"/>
+        <axis xyz="0 0 1"/><limit lower="-1" upper="1" effort="1" velocity="1"/></joint>
+      <joint name="elbow" type="continuous"><parent link="upper"/><child link="tool0"/>
+        <origin xyz="1 0 0"/><axis xyz="0 1 0"/></joint>
+    </robot>"#;
+
+    /// The message `robot` fails with, after checking the variant with `is`.
+    fn fails(robot: &Robot, is: fn(&BuildError) -> bool) -> String {
+        match robot.generate() {
+            Ok(_) => panic!("{} should not generate", robot.label()),
+            Err(e) => {
+                assert!(is(&e), "unexpected variant: {e}");
+                e.to_string()
+            }
+        }
+    }
+
+    #[test]
+    fn a_missing_file_is_named() {
+        let dir = fixture("missing", &[]);
+        let message = fails(
+            &Robot::urdf("robots/none.urdf").manifest_dir(&dir),
+            |e| matches!(e, BuildError::Load(l) if matches!(l.kind, LoadErrorKind::Io(_))),
+        );
+        assert!(message.starts_with("robots/none.urdf: cannot read the file: "), "{message}");
+    }
+
+    #[test]
+    fn malformed_xml_is_a_syntax_error() {
+        let dir = fixture("malformed", &[("bad.urdf", "<robot name=\"x\"><link name=\"a\">")]);
+        let message = fails(
+            &Robot::urdf("bad.urdf").manifest_dir(&dir),
+            |e| matches!(e, BuildError::Load(l) if matches!(l.kind, LoadErrorKind::Syntax { .. })),
+        );
+        assert!(message.starts_with("bad.urdf: "), "{message}");
+    }
+
+    #[test]
+    fn a_cycle_is_named() {
+        let cycle = r#"<robot name="loop"><link name="root"/><link name="a"/><link name="b"/>
+          <joint name="j0" type="fixed"><parent link="root"/><child link="a"/></joint>
+          <joint name="j1" type="fixed"><parent link="a"/><child link="b"/></joint>
+          <joint name="j2" type="fixed"><parent link="b"/><child link="a"/></joint></robot>"#;
+        let dir = fixture("cycle", &[("loop.urdf", cycle)]);
+        let message = fails(
+            &Robot::urdf("loop.urdf").manifest_dir(&dir),
+            |e| matches!(e, BuildError::Load(l) if l.model_errors().is_some()),
+        );
+        assert!(message.starts_with("loop.urdf: "), "{message}");
+        assert!(message.contains("cycle") || message.contains("more than one parent"), "{message}");
+    }
+
+    #[test]
+    fn every_model_fault_is_listed() {
+        let faults = r#"<robot name="faults"><link name="root"/><link name="a"/>
+          <joint name="j0" type="revolute"><parent link="root"/><child link="a"/><axis xyz="0 0 0"/>
+            <limit lower="1" upper="-1" effort="1" velocity="1"/></joint>
+          <joint name="j1" type="fixed"><parent link="a"/><child link="c"/></joint></robot>"#;
+        let dir = fixture("faults", &[("faults.urdf", faults)]);
+        let message = fails(
+            &Robot::urdf("faults.urdf").manifest_dir(&dir),
+            |e| matches!(e, BuildError::Load(l) if l.model_errors().is_some_and(|m| m.errors().len() >= 2)),
+        );
+        assert!(message.contains("joint `j1`: child link `c` does not exist"), "{message}");
+        assert!(message.contains("joint `j0`: axis is zero"), "{message}");
+    }
+
+    #[test]
+    fn an_unknown_extension_is_refused() {
+        let dir = fixture("extension", &[("arm.xacro", ARM)]);
+        let message = fails(
+            &Robot::file("arm.xacro").manifest_dir(&dir),
+            |e| matches!(e, BuildError::Load(l) if matches!(l.kind, LoadErrorKind::UnknownFormat)),
+        );
+        assert_eq!(message, "arm.xacro: unknown description format (expected .urdf, .xml, .toml or .json)");
+        // Named as URDF explicitly, the same file is fine.
+        assert!(Robot::urdf("arm.xacro").manifest_dir(&dir).generate().is_ok());
+    }
+
+    #[test]
+    fn unknown_links_are_named_with_a_suggestion() {
+        let dir = fixture("links", &[("arm.urdf", ARM)]);
+        let robot = || Robot::urdf("arm.urdf").manifest_dir(&dir);
+        let is = |e: &BuildError| matches!(e, BuildError::UnknownLink { .. });
+        assert_eq!(
+            fails(&robot().tip("tool9"), is),
+            "arm.urdf: tip link `tool9` does not exist; did you mean `tool0`?"
+        );
+        assert_eq!(fails(&robot().base("gripper"), is), "arm.urdf: base link `gripper` does not exist");
+    }
+
+    #[test]
+    fn bad_names_are_refused() {
+        let dir = fixture("names", &[("arm.urdf", ARM)]);
+        let robot = || Robot::urdf("arm.urdf").manifest_dir(&dir);
+        assert_eq!(
+            fails(&robot().struct_name("my arm"), |e| matches!(e, BuildError::StructName { .. })),
+            "arm.urdf: struct name `my arm` is not a Rust identifier"
+        );
+        assert_eq!(
+            fails(&robot().crate_path("::kin ematics"), |e| matches!(e, BuildError::CratePath { .. })),
+            "arm.urdf: crate path `::kin ematics` is not a Rust path"
+        );
+    }
+
+    #[test]
+    fn write_errors_name_the_output_and_leave_nothing() {
+        let dir = fixture("write", &[("arm.urdf", ARM)]);
+        let robot = Robot::urdf("arm.urdf").manifest_dir(&dir).tip("tool9");
+        let out = dir.join("fk.rs");
+        assert!(matches!(robot.write_to(&out), Err(BuildError::UnknownLink { .. })));
+        assert!(!out.exists());
+        let missing = dir.join("no").join("fk.rs");
+        let e = Robot::urdf("arm.urdf").manifest_dir(&dir).write_to(&missing).unwrap_err();
+        assert!(matches!(e, BuildError::Write { .. }), "{e}");
+        assert!(e.to_string().starts_with(&format!("arm.urdf: cannot write `{}`: ", missing.display())), "{e}");
+        let mut left: Vec<_> = std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().file_name()).collect();
+        left.sort();
+        assert_eq!(left, ["arm.urdf"]);
+    }
+
+    #[test]
+    fn debug_is_the_message() {
+        let dir = fixture("debug", &[("arm.urdf", ARM)]);
+        let e = Robot::urdf("arm.urdf").manifest_dir(&dir).tip("tool9").generate().unwrap_err();
+        assert_eq!(format!("{e:?}"), e.to_string());
+    }
+
+    #[test]
+    fn generates_a_struct_with_the_derive_impls() {
+        let dir = fixture("generate", &[("arm.urdf", ARM)]);
+        let source = Robot::urdf("arm.urdf").manifest_dir(&dir).tip("tool0").positions().f32().generate().unwrap();
+        assert!(source.starts_with("// @generated by kinematics-build from `arm.urdf`"), "{source}");
+        for expected in [
+            "pub struct Arm;",
+            "impl Arm {",
+            "impl ::kinematics::Kinematics for Arm {",
+            "pub fn tip_pose(q: &[f64; 2]) -> ::kinematics::Pose<f64>",
+            "pub fn tip_position(q: &[f64; 2]) -> [f64; 3]",
+            "pub fn tip_pose_f32(q: &[f32; 2])",
+            "pub fn link_poses(q: &[f64; 2]) -> [::kinematics::Pose<f64>; 2]",
+            "::kinematics::model::parse_source(",
+        ] {
+            assert!(source.contains(expected), "missing `{expected}` in\n{source}");
+        }
+        let absolute = std::fs::canonicalize(dir.join("arm.urdf")).unwrap();
+        assert!(source.contains(&format!("include_str!({:?})", absolute.to_string_lossy())), "{source}");
+        // Deterministic, and renamed on request.
+        let again = Robot::urdf("arm.urdf").manifest_dir(&dir).tip("tool0").positions().f32().generate().unwrap();
+        assert_eq!(source, again);
+        let renamed =
+            Robot::urdf("arm.urdf").manifest_dir(&dir).struct_name("Two").crate_path("kin").generate().unwrap();
+        assert!(renamed.contains("pub struct Two;") && renamed.contains("impl kin::Kinematics for Two"), "{renamed}");
+    }
+
+    #[test]
+    fn a_dh_table_named_without_its_extension_is_parsed_as_one() {
+        let table = "convention = \"standard\"\nname = \"pendulum\"\n[[joints]]\nname = \"swing\"\na = 1.0\n";
+        let dir = fixture("dh", &[("pendulum.table", table)]);
+        let source = Robot::dh("pendulum.table").manifest_dir(&dir).generate().unwrap();
+        assert!(source.contains("pub struct Pendulum;"), "{source}");
+        assert!(source.contains("\"pendulum.table.toml\""), "{source}");
+    }
+}

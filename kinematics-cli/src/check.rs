@@ -1,0 +1,48 @@
+//! `kinematics check FILE`: the compiled expressions against the runtime reference.
+
+use std::io::Write;
+
+use crate::agreement::{TOLERANCE, check_graph, reach, verdict};
+use crate::error::CliError;
+
+/// Arguments of `check`.
+#[derive(clap::Args)]
+pub struct Args {
+    /// A URDF file (.urdf, .xml) or DH table (.toml, .json).
+    file: String,
+    /// How many configurations (the first five put every joint at 0, pi/2, -pi/2, pi, -pi).
+    #[arg(long, default_value_t = 10_000)]
+    samples: usize,
+}
+
+/// Prints the largest error of every link; fails past the tolerance.
+pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
+    let tree = crate::robot::load(&args.file)?;
+    let errors = check_graph(&tree, &args.file, args.samples)?;
+    writeln!(
+        out,
+        "robot `{}`: the compiled pose of every link in `{}` against the runtime reference",
+        tree.name(),
+        tree.link(tree.root()).name
+    )?;
+    writeln!(
+        out,
+        "{} configurations (fixed seed; 0, +-pi/2, +-pi and beyond the limits included), reach {:.3} m",
+        args.samples,
+        reach(&tree)
+    )?;
+    let width = errors.iter().map(|e| e.link.len()).max().unwrap_or(0).max(4);
+    writeln!(out, "{:<width$}  largest error (x reach)", "link")?;
+    for e in &errors {
+        writeln!(out, "{:<width$}  {:.2e}", e.link, e.error)?;
+    }
+    if let Some(worst) = errors.iter().max_by(|a, b| a.error.total_cmp(&b.error)) {
+        let ok = if worst.error <= TOLERANCE { "within" } else { "past" };
+        writeln!(
+            out,
+            "largest: {:.2e} x reach (link `{}`), {ok} the tolerance {TOLERANCE:e}",
+            worst.error, worst.link
+        )?;
+    }
+    verdict(&args.file, &errors)
+}

@@ -1,0 +1,163 @@
+//! `kinematics demo [FILE]`: the whole pipeline on one robot, in a few screens.
+
+use std::hint::black_box;
+use std::io::Write;
+use std::path::Path;
+use std::time::Instant;
+
+use kinematics::ReferenceFk;
+use kinematics::model::KinematicTree;
+use kinematics_compiler::{Request, compile};
+
+use crate::agreement::{Configurations, TOLERANCE, check_graph, distance, entries, reach};
+use crate::error::CliError;
+use crate::ur5::Ur5;
+
+/// The robot shown when no file is given.
+const DEFAULT_FILE: &str = "robots/ur5.urdf";
+
+/// Arguments of `demo`.
+#[derive(clap::Args)]
+pub struct Args {
+    /// A URDF file or DH table (default: `robots/ur5.urdf`, or the copy built into this binary).
+    file: Option<String>,
+    /// Configurations checked against the runtime reference.
+    #[arg(long, default_value_t = 10_000)]
+    samples: usize,
+    /// Evaluations timed per implementation.
+    #[arg(long, default_value_t = 1_000_000)]
+    evaluations: usize,
+}
+
+/// Runs the demo.
+pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
+    let (file, tree) = match &args.file {
+        Some(file) => (file.clone(), crate::robot::load(file)?),
+        None if Path::new(DEFAULT_FILE).exists() => (DEFAULT_FILE.to_owned(), crate::robot::load(DEFAULT_FILE)?),
+        None => ("ur5.urdf (the copy built into this binary)".to_owned(), Ur5::reference()?.tree().clone()),
+    };
+    let base = tree.link(tree.root()).name.clone();
+    let tip = tree.link(crate::robot::deepest_link(&tree)).name.clone();
+    // The generated code this binary holds is for the UR5 from the root to `tool0`.
+    let built_in = tip == "tool0" && Ur5::reference().is_ok_and(|r| r.tree() == &tree);
+
+    writeln!(out, "kinematics demo: {file}, the pose of `{tip}` (the deepest link) in `{base}`\n")?;
+    writeln!(out, "1. The description, validated into a kinematic tree (`kinematics inspect`)\n")?;
+    write!(out, "{}", crate::inspect::describe(&tree))?;
+
+    writeln!(out, "\n2. The pose, multiplied out symbolically and simplified (`kinematics expr`)\n")?;
+    write!(out, "{}", crate::expr::pose_text(&tree, &file, &base, &tip, false)?)?;
+
+    writeln!(out, "\n3. What the generated code computes, against the plain product of the chain's transforms\n")?;
+    let mut rows = crate::expr::op_counts(&tree, &file, &base, &tip)?;
+    let all =
+        compile(&tree, &Request::all_links()).map_err(|source| CliError::Compile { file: file.clone(), source })?;
+    rows.push((format!("every link's pose ({} links), generated", all.frames().len()), all.op_count()));
+    write!(out, "{}", crate::expr::op_table(&rows))?;
+
+    writeln!(
+        out,
+        "\n4. Agreement with the runtime reference (nalgebra), {} configurations (`kinematics check`)\n",
+        thousands(args.samples)
+    )?;
+    let errors = check_graph(&tree, &file, args.samples)?;
+    if let Some(worst) = errors.iter().max_by(|a, b| a.error.total_cmp(&b.error)) {
+        writeln!(
+            out,
+            "  compiled expressions, every link:        largest error {:.2e} x reach (link `{}`)",
+            worst.error, worst.link
+        )?;
+    }
+    if built_in {
+        let worst = generated_agreement(&tree, &file, args.samples)?;
+        writeln!(out, "  generated Rust in this binary (Ur5):     largest error {worst:.2e} x reach")?;
+    }
+    writeln!(out, "  (reach {:.3} m; tolerance {TOLERANCE:e})", reach(&tree))?;
+
+    writeln!(
+        out,
+        "\n5. Timing: {} evaluations of the pose of `{tip}`, inputs precomputed, results through black_box\n",
+        thousands(args.evaluations)
+    )?;
+    out.flush()?;
+    let fk = ReferenceFk::new(tree.clone());
+    let inputs: Vec<Vec<f64>> = Configurations::new(&tree).take(1024).collect();
+    let n = inputs.len();
+    let reference = per_call(args.evaluations, |i| {
+        let _ = black_box(fk.link_pose(black_box(&inputs[i % n]), &tip));
+    });
+    writeln!(out, "  runtime reference, ReferenceFk::link_pose:   {reference:>9.1} ns per pose")?;
+    if built_in {
+        let arrays: Vec<[f64; Ur5::DOF]> = inputs.iter().filter_map(|q| q.as_slice().try_into().ok()).collect();
+        let generated = per_call(args.evaluations, |i| {
+            black_box(Ur5::tip_pose(black_box(&arrays[i % n])));
+        });
+        writeln!(
+            out,
+            "  generated code, Ur5::tip_pose:               {generated:>9.1} ns per pose ({:.0}x faster)",
+            reference / generated.max(1e-3)
+        )?;
+        if cfg!(debug_assertions) {
+            writeln!(out, "  (a debug build: run with `cargo run --release` for representative numbers)")?;
+        }
+    } else {
+        writeln!(
+            out,
+            "  generated code: not timed. This binary cannot compile Rust at run time; it holds generated\n  \
+             code for the UR5 only (built by kinematics-cli/build.rs). For this robot, use\n  \
+             `kinematics generate {file}` or the build API in your crate, and time it there."
+        )?;
+    }
+    Ok(())
+}
+
+/// `1000000` as `1,000,000`.
+fn thousands(n: usize) -> String {
+    let digits = n.to_string();
+    let mut out = String::new();
+    for (i, c) in digits.chars().enumerate() {
+        if i > 0 && (digits.len() - i).is_multiple_of(3) {
+            out.push(',');
+        }
+        out.push(c);
+    }
+    out
+}
+
+/// Nanoseconds per call of `f(i)`, over `evaluations` calls.
+fn per_call(evaluations: usize, mut f: impl FnMut(usize)) -> f64 {
+    let start = Instant::now();
+    for i in 0..evaluations {
+        f(i);
+    }
+    start.elapsed().as_secs_f64() * 1e9 / evaluations.max(1) as f64
+}
+
+/// The largest error of the built-in generated UR5 code (tip pose and every link's pose) against
+/// the runtime reference.
+fn generated_agreement(tree: &KinematicTree, file: &str, samples: usize) -> Result<f64, CliError> {
+    let fk = ReferenceFk::new(tree.clone());
+    let reach = reach(tree);
+    let tool0 = crate::robot::link(tree, file, "tip", "tool0")?.0;
+    let ids = Ur5::LINK_NAMES.map(|name| tree.link_id(name).map_or(0, |id| id.0));
+    let mut worst: f64 = 0.0;
+    for q in Configurations::new(tree).take(samples) {
+        let Ok(q) = <[f64; Ur5::DOF]>::try_from(q.as_slice()) else { continue };
+        let reference = fk.link_poses(&q).map_err(|source| CliError::Runtime { file: file.to_owned(), source })?;
+        worst = worst.max(distance(&entries(&Ur5::tip_pose(&q)), &reference[tool0], reach));
+        for (pose, &id) in Ur5::link_poses(&q).iter().zip(&ids) {
+            worst = worst.max(distance(&entries(pose), &reference[id], reach));
+        }
+    }
+    Ok(worst)
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn thousands_are_separated() {
+        for (n, expected) in [(0, "0"), (999, "999"), (1000, "1,000"), (10_000, "10,000"), (1_000_000, "1,000,000")] {
+            assert_eq!(super::thousands(n), expected);
+        }
+    }
+}

@@ -1,0 +1,55 @@
+//! Everything a subcommand can fail with; each message names the file, the element and the fault.
+
+use kinematics::{LoadError, RuntimeError};
+use kinematics_build::BuildError;
+use kinematics_compiler::CompileError;
+
+/// A failed subcommand. `main` prints it as `error: <message>` and exits non-zero.
+#[derive(Debug, thiserror::Error)]
+pub enum CliError {
+    /// The description could not be read, parsed or validated.
+    #[error(transparent)]
+    Load(#[from] LoadError),
+    /// Generating or writing code failed, or a link name given on the command line is unknown.
+    #[error(transparent)]
+    Build(#[from] BuildError),
+    /// The runtime reference refused the query (a wrong number of joint values).
+    #[error("{file}: {source}")]
+    Runtime {
+        /// The description file.
+        file: String,
+        /// What the runtime said.
+        #[source]
+        source: RuntimeError,
+    },
+    /// The compiler refused the request.
+    #[error("{file}: {source}")]
+    Compile {
+        /// The description file.
+        file: String,
+        /// What the compiler said.
+        #[source]
+        source: CompileError,
+    },
+    /// `check`: the compiled expressions disagree with the runtime reference.
+    #[error("{file}: link `{link}`: the compiled pose is off by {error:.2e} x reach (tolerance {tolerance:e})")]
+    Disagrees {
+        /// The description file.
+        file: String,
+        /// The link with the largest error.
+        link: String,
+        /// Its error, relative to the robot's reach.
+        error: f64,
+        /// The tolerance.
+        tolerance: f64,
+    },
+    /// Standard output could not be written.
+    #[error("cannot write to standard output: {0}")]
+    Output(#[source] std::io::Error),
+}
+
+impl From<std::io::Error> for CliError {
+    fn from(error: std::io::Error) -> Self {
+        CliError::Output(error)
+    }
+}

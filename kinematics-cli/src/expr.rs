@@ -1,0 +1,123 @@
+//! `kinematics expr FILE`: the simplified symbolic pose of one link and what it costs.
+
+use std::io::Write;
+
+use kinematics::model::KinematicTree;
+use kinematics_compiler::{Compiled, OpCount, Request, compile, plain_product_count};
+
+use crate::error::CliError;
+
+/// Arguments of `expr`.
+#[derive(clap::Args)]
+pub struct Args {
+    /// A URDF file (.urdf, .xml) or DH table (.toml, .json).
+    file: String,
+    /// The frame the pose is expressed in (default: the root link).
+    #[arg(long)]
+    base: Option<String>,
+    /// The link whose pose is printed (default: the deepest link).
+    #[arg(long)]
+    tip: Option<String>,
+    /// Print LaTeX instead of text.
+    #[arg(long)]
+    latex: bool,
+}
+
+/// Prints the pose and its operation counts.
+pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
+    let tree = crate::robot::load(&args.file)?;
+    let (base, tip) = crate::robot::base_and_tip(&tree, &args.file, args.base.as_deref(), args.tip.as_deref())?;
+    write!(out, "{}", pose_text(&tree, &args.file, &base, &tip, args.latex)?)?;
+    writeln!(out, "\noperations:")?;
+    write!(out, "{}", op_table(&op_counts(&tree, &args.file, &base, &tip)?))?;
+    Ok(())
+}
+
+/// The 12 entries' names: the rotation row-major, then the translation.
+const ENTRIES: [(&str, &str); 12] = [
+    ("r11", "r_{11}"),
+    ("r12", "r_{12}"),
+    ("r13", "r_{13}"),
+    ("r21", "r_{21}"),
+    ("r22", "r_{22}"),
+    ("r23", "r_{23}"),
+    ("r31", "r_{31}"),
+    ("r32", "r_{32}"),
+    ("r33", "r_{33}"),
+    ("x", "x"),
+    ("y", "y"),
+    ("z", "z"),
+];
+
+/// Compiles the pose of `tip` in `base` and the position alone.
+pub fn compile_pose(tree: &KinematicTree, file: &str, base: &str, tip: &str) -> Result<(Compiled, Compiled), CliError> {
+    let request = Request::tip(tip).with_base(base);
+    let error = |source| CliError::Compile { file: file.to_owned(), source };
+    let pose = compile(tree, &request).map_err(error)?;
+    let position = compile(tree, &request.positions_only()).map_err(error)?;
+    Ok((pose, position))
+}
+
+/// The pose as text (or LaTeX) and the names it uses.
+pub fn pose_text(tree: &KinematicTree, file: &str, base: &str, tip: &str, latex: bool) -> Result<String, CliError> {
+    let (pose, _) = compile_pose(tree, file, base, tip)?;
+    let mut out = format!("robot `{}`: pose of `{tip}` in `{base}`\n", tree.name());
+    let joints: Vec<String> = pose.dof_names.iter().enumerate().map(|(i, n)| format!("q{} = {n}", i + 1)).collect();
+    if !joints.is_empty() {
+        out += &format!("joints: {}\n", joints.join(", "));
+    }
+    let legend = legend(&pose);
+    if !legend.is_empty() {
+        out += &format!("angles: {}\n", legend.join(", "));
+    }
+    out += "\n";
+    if latex {
+        out += "\\begin{aligned}\n";
+        let rows: Vec<String> =
+            ENTRIES.iter().zip(pose.frame_latex(0)).map(|((_, name), entry)| format!("  {name} &= {entry}")).collect();
+        out += &rows.join(" \\\\\n");
+        out += "\n\\end{aligned}\n";
+    } else {
+        for ((name, _), entry) in ENTRIES.iter().zip(pose.frame_text(0)) {
+            out += &format!("{name:>3} = {entry}\n");
+        }
+    }
+    Ok(out)
+}
+
+/// The operation counts of the generated pose and position of `tip` and of the plain product of
+/// the chain's transforms (zeros and ones folded, nothing else).
+pub fn op_counts(tree: &KinematicTree, file: &str, base: &str, tip: &str) -> Result<Vec<(String, OpCount)>, CliError> {
+    let (pose, position) = compile_pose(tree, file, base, tip)?;
+    let plain =
+        plain_product_count(tree, base, tip).map_err(|source| CliError::Compile { file: file.to_owned(), source })?;
+    Ok(vec![
+        (format!("pose of {tip}, generated"), pose.op_count()),
+        (format!("pose of {tip}, plain product"), plain),
+        (format!("position of {tip}, generated"), position.op_count()),
+    ])
+}
+
+/// Operation counts as aligned `sin_cos / mul / add` lines.
+pub fn op_table(rows: &[(String, OpCount)]) -> String {
+    let width = rows.iter().map(|(what, _)| what.len()).max().unwrap_or(0);
+    let mut out = format!("  {:<width$}  sin_cos / mul / add\n", "");
+    for (what, count) in rows {
+        out += &format!("  {what:<width$}  {:>7} / {:>3} / {:>3}\n", count.sin_cos, count.mul, count.add);
+    }
+    out
+}
+
+/// `c23 = cos(q2 + q3)` and the like: the names of angles other than a single joint variable.
+fn legend(compiled: &Compiled) -> Vec<String> {
+    let g = compiled.graph();
+    let names = kinematics_compiler::emit::Names::new(g, &compiled.outputs());
+    names
+        .angles()
+        .filter(|&angle| !matches!(g.node(angle), kinematics_compiler::symbolic::graph::Node::Var(_)))
+        .map(|angle| {
+            let suffix = names.suffix(angle);
+            format!("c{suffix}/s{suffix} = cos/sin({})", kinematics_compiler::emit::text(g, &names, angle))
+        })
+        .collect()
+}

@@ -1,0 +1,60 @@
+//! `kinematics generate FILE`: the Rust module the build API writes, to stdout or a file.
+
+use std::io::Write;
+
+use kinematics_build::Robot;
+
+use crate::error::CliError;
+
+/// Arguments of `generate`.
+#[derive(clap::Args)]
+pub struct Args {
+    /// A URDF file (.urdf, .xml) or DH table (.toml, .json).
+    file: String,
+    /// The frame poses are expressed in (default: the root link).
+    #[arg(long)]
+    base: Option<String>,
+    /// A tip link (repeat for several): `tip_pose` / `tip_poses` (default: none, only `link_poses`).
+    #[arg(long)]
+    tip: Vec<String>,
+    /// The struct's name (default: the robot's name in UpperCamelCase).
+    #[arg(long)]
+    name: Option<String>,
+    /// Also generate position-only functions.
+    #[arg(long)]
+    positions: bool,
+    /// Also generate `f32` functions.
+    #[arg(long)]
+    f32: bool,
+    /// Write to this file (atomically) instead of standard output.
+    #[arg(short, long)]
+    output: Option<std::path::PathBuf>,
+}
+
+/// The builder for these arguments: the file relative to the current directory.
+pub fn builder(args: &Args) -> Robot {
+    let mut robot = Robot::file(&args.file).manifest_dir(".").tips(&args.tip);
+    if let Some(base) = &args.base {
+        robot = robot.base(base);
+    }
+    if let Some(name) = &args.name {
+        robot = robot.struct_name(name);
+    }
+    if args.positions {
+        robot = robot.positions();
+    }
+    if args.f32 {
+        robot = robot.f32();
+    }
+    robot
+}
+
+/// Generates, then prints or writes.
+pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
+    let robot = builder(args);
+    match &args.output {
+        Some(path) => robot.write_to(path)?,
+        None => write!(out, "{}", robot.generate()?)?,
+    }
+    Ok(())
+}

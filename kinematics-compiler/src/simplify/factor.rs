@@ -1,0 +1,155 @@
+//! Rule `common-factor`: `k*a + k*b = k*(a + b)`, over the finished expressions.
+//!
+//! Sums are built two operands at a time as transforms multiply, so terms that share a factor
+//! (often a link length: `0.0825*t4 - 0.0825*t10`) end up apart. This pass flattens each sum
+//! through the sums and negations only it uses, groups the products that only it uses by a shared
+//! factor (greedily, the most frequent factor first, ties to the oldest node), and rebuilds
+//! `f * (sum of cofactors)`: one multiplication instead of one per term. Shared nodes are left
+//! whole, so no work is duplicated.
+
+use std::collections::BTreeMap;
+
+use crate::stats::reachable;
+use crate::symbolic::graph::{ExprGraph, ExprId, Node};
+
+/// Rewrites `outputs` (new ids in the same graph; the old nodes stay, unreachable).
+pub fn factor_common(g: &mut ExprGraph, outputs: &[ExprId]) -> Vec<ExprId> {
+    let nodes = reachable(g, outputs.iter().copied());
+    let mut uses = vec![0usize; g.len()];
+    for &id in &nodes {
+        match g.node(id) {
+            Node::Sin(a) | Node::Cos(a) | Node::Neg(a) => uses[a.index()] += 1,
+            Node::Add(a, b) | Node::Mul(a, b) => {
+                uses[a.index()] += 1;
+                uses[b.index()] += 1;
+            }
+            Node::Const(_) | Node::Var(_) => {}
+        }
+    }
+    for &o in outputs {
+        uses[o.index()] += 1;
+    }
+    let mut new: BTreeMap<ExprId, ExprId> = BTreeMap::new();
+    for &id in &nodes {
+        let rewritten = match g.node(id) {
+            Node::Const(_) | Node::Var(_) => id,
+            Node::Sin(a) => {
+                let a = new[&a];
+                g.sin(a)
+            }
+            Node::Cos(a) => {
+                let a = new[&a];
+                g.cos(a)
+            }
+            Node::Neg(a) => {
+                let a = new[&a];
+                g.neg(a)
+            }
+            Node::Mul(a, b) => {
+                let (a, b) = (new[&a], new[&b]);
+                g.mul(a, b)
+            }
+            Node::Add(..) => {
+                let mut terms = Vec::new();
+                flatten(g, id, false, &uses, &new, &mut terms, true);
+                rebuild(g, terms, &uses)
+            }
+        };
+        new.insert(id, rewritten);
+    }
+    outputs.iter().map(|o| new[o]).collect()
+}
+
+/// The signed terms of the sum at `id`, descending through sums and negations used only here.
+/// Terms are already-rewritten ids; a term is `(negated, id, original id)`.
+fn flatten(
+    g: &ExprGraph,
+    id: ExprId,
+    negated: bool,
+    uses: &[usize],
+    new: &BTreeMap<ExprId, ExprId>,
+    terms: &mut Vec<(bool, ExprId, ExprId)>,
+    top: bool,
+) {
+    let private = top || uses[id.index()] == 1;
+    match g.node(id) {
+        Node::Add(a, b) if private => {
+            flatten(g, a, negated, uses, new, terms, false);
+            flatten(g, b, negated, uses, new, terms, false);
+        }
+        Node::Neg(a) if private && matches!(g.node(a), Node::Add(..)) && uses[a.index()] == 1 => {
+            flatten(g, a, !negated, uses, new, terms, false);
+        }
+        Node::Neg(a) if private => terms.push((!negated, new[&a], a)),
+        _ => terms.push((negated, new[&id], id)),
+    }
+}
+
+/// Sums the terms, factoring out shared factors of products used only in this sum.
+fn rebuild(g: &mut ExprGraph, terms: Vec<(bool, ExprId, ExprId)>, uses: &[usize]) -> ExprId {
+    // Products eligible for factoring: used only here (in the original graph).
+    let factors = |g: &ExprGraph, (_, id, original): &(bool, ExprId, ExprId)| -> Option<(ExprId, ExprId)> {
+        match (g.node(*id), uses[original.index()]) {
+            (Node::Mul(a, b), 1) => Some((a, b)),
+            _ => None,
+        }
+    };
+    let mut remaining: Vec<Option<(bool, ExprId, ExprId)>> = terms.into_iter().map(Some).collect();
+    // Placed results: (position of the first term of the group, negated, id).
+    let mut placed: Vec<(usize, bool, ExprId)> = Vec::new();
+    loop {
+        let mut count: BTreeMap<ExprId, usize> = BTreeMap::new();
+        for term in remaining.iter().flatten() {
+            if let Some((a, b)) = factors(g, term) {
+                *count.entry(a).or_default() += 1;
+                if b != a {
+                    *count.entry(b).or_default() += 1;
+                }
+            }
+        }
+        let Some((&factor, _)) =
+            count.iter().filter(|(_, n)| **n >= 2).max_by_key(|&(id, n)| (*n, std::cmp::Reverse(*id)))
+        else {
+            break;
+        };
+        let mut first = None;
+        let mut cofactors: Option<ExprId> = None;
+        for (position, slot) in remaining.iter_mut().enumerate() {
+            let Some(term) = *slot else { continue };
+            let Some((a, b)) = factors(g, &term) else { continue };
+            let other = if a == factor {
+                b
+            } else if b == factor {
+                a
+            } else {
+                continue;
+            };
+            let signed = if term.0 { g.neg(other) } else { other };
+            cofactors = Some(match cofactors {
+                Some(sum) => g.add(sum, signed),
+                None => signed,
+            });
+            first.get_or_insert(position);
+            *slot = None;
+        }
+        if let (Some(position), Some(sum)) = (first, cofactors) {
+            let product = g.mul(factor, sum);
+            placed.push((position, false, product));
+        }
+    }
+    for (position, slot) in remaining.into_iter().enumerate() {
+        if let Some((negated, id, _)) = slot {
+            placed.push((position, negated, id));
+        }
+    }
+    placed.sort_by_key(|&(position, _, _)| position);
+    let mut sum: Option<ExprId> = None;
+    for (_, negated, id) in placed {
+        let term = if negated { g.neg(id) } else { id };
+        sum = Some(match sum {
+            Some(s) => g.add(s, term),
+            None => term,
+        });
+    }
+    sum.unwrap_or_else(|| g.constant(0.0))
+}
