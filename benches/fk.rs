@@ -1,0 +1,268 @@
+//! Forward kinematics speed, per robot, f64 and f32: the generated code (derive) against the
+//! runtime reference, the `k` crate (whole-tree `update_transforms` and a serial chain's
+//! `end_transform`), position only, a batch of 1,024 configurations, and the trigonometry floor
+//! (the robot's `sin_cos` calls alone, on the same inputs, with the same routine).
+//!
+//! `cargo bench --bench fk` measures (about 4 minutes on 2 cores); `cargo run -p bench-report`
+//! turns criterion's results into `benches/SUMMARY.md` and `benches/ratios.svg`. Under
+//! `cargo test` (no `--bench` argument) every benchmark body runs once and its result is checked
+//! against the runtime reference instead, so CI knows the suite builds and computes the right thing.
+
+#![allow(clippy::expect_used, clippy::panic)] // a benchmark fails loudly on a robot that does not load
+
+use std::hint::black_box;
+use std::time::Duration;
+
+use criterion::{BenchmarkGroup, Criterion, Throughput, measurement::WallTime};
+use kinematics::{Kinematics, Pose, ReferenceFk};
+
+/// Inputs cycled through in the timed loops (computed before timing).
+const INPUTS: usize = 256;
+/// The batch size of the throughput benchmark.
+const BATCH: usize = 1024;
+
+/// Configurations within the limits (or +-pi for continuous joints), from a fixed seed.
+fn inputs(limits: &[kinematics::JointLimits], count: usize) -> Vec<Vec<f64>> {
+    let mut state = 0x9E37_79B9_7F4A_7C15u64;
+    let mut uniform = move || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    };
+    (0..count)
+        .map(|_| {
+            limits
+                .iter()
+                .map(|l| {
+                    let (lo, hi) =
+                        if l.lower.is_finite() && l.upper.is_finite() { (l.lower, l.upper) } else { (-3.1, 3.1) };
+                    lo + (hi - lo) * uniform()
+                })
+                .collect()
+        })
+        .collect()
+}
+
+fn arrays<const N: usize>(qs: &[Vec<f64>]) -> Vec<[f64; N]> {
+    qs.iter().map(|q| std::array::from_fn(|i| q[i])).collect()
+}
+
+fn arrays_f32<const N: usize>(qs: &[Vec<f64>]) -> Vec<[f32; N]> {
+    qs.iter().map(|q| std::array::from_fn(|i| q[i] as f32)).collect()
+}
+
+/// The `n` sine-cosine pairs of a configuration, as the generated code computes them.
+#[inline(always)]
+fn trig_floor<T: kinematics::Real, const N: usize>(q: &[T; N], n: usize, out: &mut [(T, T); 64]) {
+    for (i, slot) in out.iter_mut().enumerate().take(n) {
+        *slot = q[i % N].sin_cos();
+    }
+}
+
+/// How one benchmark is run: measured by criterion, or once and checked (`cargo test`).
+enum Mode<'a, 'c> {
+    Measure(&'a mut BenchmarkGroup<'c, WallTime>),
+    Check,
+}
+
+impl Mode<'_, '_> {
+    fn run<R>(&mut self, name: &str, mut f: impl FnMut(usize) -> R) {
+        match self {
+            Mode::Measure(group) => {
+                let mut i = 0usize;
+                group.bench_function(name, |b| {
+                    b.iter(|| {
+                        i = (i + 1) % INPUTS;
+                        black_box(f(black_box(i)))
+                    })
+                });
+            }
+            Mode::Check => {
+                black_box(f(0));
+            }
+        }
+    }
+}
+
+fn close(a: &Pose<f64>, b: &nalgebra::Isometry3<f64>) -> bool {
+    let d = a.to_isometry().inverse() * b;
+    d.translation.vector.norm() < 1e-9 && d.rotation.angle() < 1e-9
+}
+
+macro_rules! robot {
+    ($mode:expr, $ty:ty, $n:literal, $file:literal, $tip:literal, $sin_cos:expr) => {{
+        let mode: &mut Mode = $mode;
+        let path = concat!(env!("CARGO_MANIFEST_DIR"), "/robots/", $file);
+        let qs = inputs(&<$ty>::JOINT_LIMITS, INPUTS);
+        let q64: Vec<[f64; $n]> = arrays(&qs);
+        let q32: Vec<[f32; $n]> = arrays_f32(&qs);
+        let reference = ReferenceFk::new(kinematics::load(path).expect("robot loads"));
+        if let Mode::Check = mode {
+            // The contenders compute the same pose.
+            let expected = reference.link_pose(&qs[0], $tip).expect("tip exists");
+            assert!(close(&<$ty>::tip_pose(&q64[0]), &expected), "{} generated", $file);
+        }
+        mode.run("generated_pose_f64", |i| <$ty>::tip_pose(&q64[i]));
+        mode.run("generated_pose_f32", |i| <$ty>::tip_pose_f32(&q32[i]));
+        mode.run("generated_position_f64", |i| <$ty>::tip_position(&q64[i]));
+        mode.run("generated_all_f64", |i| <$ty>::link_poses(&q64[i]));
+        mode.run("generated_all_f32", |i| <$ty>::link_poses_f32(&q32[i]));
+        mode.run("runtime_pose_f64", |i| reference.link_pose(&qs[i], $tip));
+        mode.run("runtime_all_f64", |i| reference.link_poses(&qs[i]));
+        let n = $sin_cos;
+        mode.run("floor_f64", |i| {
+            let mut out = [(0.0f64, 0.0f64); 64];
+            trig_floor(&q64[i], n, &mut out);
+            out
+        });
+        mode.run("floor_f32", |i| {
+            let mut out = [(0.0f32, 0.0f32); 64];
+            trig_floor(&q32[i], n, &mut out);
+            out
+        });
+        let batch = inputs(&<$ty>::JOINT_LIMITS, BATCH);
+        let batch: Vec<[f64; $n]> = arrays(&batch);
+        let mut out = vec![<$ty>::tip_pose(&batch[0]); BATCH];
+        if let Mode::Measure(group) = mode {
+            group.throughput(Throughput::Elements(BATCH as u64));
+        }
+        mode.run("generated_batch1024_f64", |_| {
+            for (o, q) in out.iter_mut().zip(&batch) {
+                *o = <$ty>::tip_pose(q);
+            }
+            out[BATCH - 1]
+        });
+        if let Mode::Measure(group) = mode {
+            group.throughput(Throughput::Elements(1));
+        }
+        if $file.ends_with(".urdf") {
+            k_crate(mode, path, $tip, &qs, &reference);
+        }
+    }};
+}
+
+/// The `k` crate on the same URDF: its whole-tree update and its serial chain to the tip.
+fn k_crate(mode: &mut Mode, path: &str, tip: &str, qs: &[Vec<f64>], reference: &ReferenceFk) {
+    let Ok(chain) = k::Chain::<f64>::from_urdf_file(path) else { return };
+    // k orders its degrees of freedom its own way; any values within range time the same work.
+    let dof = chain.dof();
+    let kq: Vec<Vec<f64>> = qs.iter().map(|q| (0..dof).map(|i| q[i % q.len()]).collect()).collect();
+    mode.run("k_all_f64", |i| {
+        chain.set_joint_positions_unchecked(&kq[i]);
+        chain.update_transforms().len()
+    });
+    let Some(end) = chain.find_link(tip) else { return };
+    let serial = k::SerialChain::from_end(end);
+    let sdof = serial.dof();
+    let sq: Vec<Vec<f64>> = qs.iter().map(|q| (0..sdof).map(|i| q[i % q.len()]).collect()).collect();
+    mode.run("k_pose_f64", |i| {
+        serial.set_joint_positions_unchecked(&sq[i]);
+        serial.end_transform()
+    });
+    let _ = reference;
+}
+
+#[derive(Kinematics)]
+#[kinematics(dh = "robots/puma560.toml", tip = "link6", positions, scalars(f64, f32))]
+struct Puma560;
+#[derive(Kinematics)]
+#[kinematics(dh = "robots/stanford_arm.toml", tip = "link6", positions, scalars(f64, f32))]
+struct Stanford;
+#[derive(Kinematics)]
+#[kinematics(dh = "robots/scara.toml", tip = "link4", positions, scalars(f64, f32))]
+struct Scara;
+#[derive(Kinematics)]
+#[kinematics(urdf = "robots/ur5.urdf", tip = "tool0", positions, scalars(f64, f32))]
+struct Ur5;
+#[derive(Kinematics)]
+#[kinematics(urdf = "robots/ur10e.urdf", tip = "tool0", positions, scalars(f64, f32))]
+struct Ur10e;
+#[derive(Kinematics)]
+#[kinematics(urdf = "robots/iiwa14.urdf", tip = "iiwa_link_ee", positions, scalars(f64, f32))]
+struct Iiwa14;
+#[derive(Kinematics)]
+#[kinematics(urdf = "robots/panda.urdf", tip = "panda_hand", positions, scalars(f64, f32))]
+struct Panda;
+#[derive(Kinematics)]
+#[kinematics(urdf = "robots/gen3.urdf", tip = "end_effector_link", positions, scalars(f64, f32))]
+struct Gen3;
+#[derive(Kinematics)]
+#[kinematics(urdf = "robots/irb120.urdf", tip = "tool0", positions, scalars(f64, f32))]
+struct Irb120;
+#[derive(Kinematics)]
+#[kinematics(urdf = "robots/dual_arm_torso.urdf", tip = "tool_l", positions, scalars(f64, f32))]
+struct DualArm;
+#[derive(Kinematics)]
+#[kinematics(urdf = "robots/quadruped.urdf", tip = "RL_foot", positions, scalars(f64, f32))]
+struct Quadruped;
+#[derive(Kinematics)]
+#[kinematics(urdf = "robots/humanoid.urdf", tip = "r_gripper", positions, scalars(f64, f32))]
+struct Humanoid;
+
+/// The `sin_cos` pairs of a robot's tip pose, as the compiler counts them.
+fn sin_cos(file: &str, tip: &str) -> usize {
+    let path = format!("{}/robots/{file}", env!("CARGO_MANIFEST_DIR"));
+    let tree = kinematics::load(path).expect("robot loads");
+    kinematics_compiler::compile(&tree, &kinematics_compiler::Request::tip(tip)).map_or(0, |c| c.op_count().sin_cos)
+}
+
+fn all(c: Option<&mut Criterion>) {
+    macro_rules! each {
+        ($(($name:literal, $ty:ty, $n:literal, $file:literal, $tip:literal)),* $(,)?) => {
+            let mut c = c;
+            if c.is_some() {
+                // The robot list, for `bench-report` to find the results by.
+                let manifest: String = [$(concat!($name, "\t", $file, "\t", $tip, "\n")),*].concat();
+                let dir = std::env::var("CARGO_TARGET_DIR")
+                    .map(std::path::PathBuf::from)
+                    .unwrap_or_else(|_| std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target"))
+                    .join("criterion");
+                let written = std::fs::create_dir_all(&dir).and_then(|()| std::fs::write(dir.join("kinematics-robots.tsv"), manifest));
+                if let Err(e) = written {
+                    eprintln!("cannot write the robot list for bench-report: {e}");
+                }
+            }
+            $({
+                let n = sin_cos($file, $tip);
+                match c.as_deref_mut() {
+                    Some(c) => {
+                        let mut group = c.benchmark_group($name);
+                        robot!(&mut Mode::Measure(&mut group), $ty, $n, $file, $tip, n);
+                        group.finish();
+                    }
+                    None => robot!(&mut Mode::Check, $ty, $n, $file, $tip, n),
+                }
+            })*
+        };
+    }
+    each!(
+        ("puma560", Puma560, 6, "puma560.toml", "link6"),
+        ("stanford", Stanford, 6, "stanford_arm.toml", "link6"),
+        ("scara", Scara, 4, "scara.toml", "link4"),
+        ("ur5", Ur5, 6, "ur5.urdf", "tool0"),
+        ("ur10e", Ur10e, 6, "ur10e.urdf", "tool0"),
+        ("iiwa14", Iiwa14, 7, "iiwa14.urdf", "iiwa_link_ee"),
+        ("panda", Panda, 8, "panda.urdf", "panda_hand"),
+        ("gen3", Gen3, 7, "gen3.urdf", "end_effector_link"),
+        ("irb120", Irb120, 6, "irb120.urdf", "tool0"),
+        ("dual_arm", DualArm, 17, "dual_arm_torso.urdf", "tool_l"),
+        ("quadruped", Quadruped, 12, "quadruped.urdf", "RL_foot"),
+        ("humanoid", Humanoid, 25, "humanoid.urdf", "r_gripper"),
+    );
+}
+
+fn main() {
+    if std::env::args().any(|a| a == "--bench") {
+        let mut c = Criterion::default()
+            .warm_up_time(Duration::from_millis(300))
+            .measurement_time(Duration::from_millis(1000))
+            .sample_size(30)
+            .configure_from_args();
+        all(Some(&mut c));
+        c.final_summary();
+    } else {
+        all(None);
+        println!("fk benchmarks: every body ran once and agreed with the runtime reference");
+    }
+}
