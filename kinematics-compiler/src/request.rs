@@ -172,6 +172,12 @@ fn fold_tips(
         };
         frames.push(transform);
     }
+    // One pose: a rotation column may be cheaper as the cross product of the other two.
+    if let [t] = &mut frames[..]
+        && !position_only
+    {
+        *t = cheapest_columns(&mut graph, *t);
+    }
     // Pull shared factors out of the sums of what will be computed.
     let per_frame = if position_only { 3 } else { 12 };
     let outputs: Vec<ExprId> = frames
@@ -188,6 +194,30 @@ fn fold_tips(
         }
     }
     (graph, frames)
+}
+
+/// The rotation with whichever column is cheapest to derive from the other two replaced by their
+/// cross product (rule `cross-column`: the columns of a rotation are orthonormal and right-handed,
+/// so `c0 = c1 x c2`, `c1 = c2 x c0`, `c2 = c0 x c1`), when that saves work.
+fn cheapest_columns(g: &mut ExprGraph, t: SymTransform) -> SymTransform {
+    let cost = |g: &ExprGraph, t: &SymTransform| OpCount::of(g, t.entries()).weighted();
+    let mut best = (cost(g, &t), t);
+    for replaced in 0..3 {
+        let (a, b) = ((replaced + 1) % 3, (replaced + 2) % 3);
+        let col = |j: usize| [t.r[0][j], t.r[1][j], t.r[2][j]];
+        let (u, v) = (col(a), col(b));
+        let mut candidate = t;
+        for i in 0..3 {
+            let (j, k) = ((i + 1) % 3, (i + 2) % 3);
+            let (x, y) = (g.mul(u[j], v[k]), g.mul(u[k], v[j]));
+            candidate.r[i][replaced] = g.sub(x, y);
+        }
+        let c = cost(g, &candidate);
+        if c < best.0 {
+            best = (c, candidate);
+        }
+    }
+    best.1
 }
 
 /// The steps of `T_base^tip`: up from `base` to the nearest common ancestor (inverted), then down

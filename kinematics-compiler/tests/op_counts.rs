@@ -53,33 +53,28 @@ fn table_of_every_robot() {
     }
 }
 
-fn pose_count(file: &str, tip: &str) -> Option<OpCount> {
-    let path = format!("{}/../robots/{file}", env!("CARGO_MANIFEST_DIR"));
-    std::path::Path::new(&path).exists().then(|| compile(&common::robot(file), &Request::tip(tip)).unwrap().op_count())
+fn pose_count(file: &str, tip: &str) -> OpCount {
+    compile(&common::robot(file), &Request::tip(tip)).unwrap().op_count()
 }
 
 #[test]
 fn ur5_end_effector() {
-    let count = pose_count("ur5.toml", "wrist_3_link").unwrap();
+    let count = pose_count("ur5.toml", "wrist_3_link");
     assert_eq!(count.sin_cos, 6);
     assert!(count.add <= 22, "{count}");
-    // The target is 37 multiplications; 39 is what the compiler reaches (see README).
-    assert!(count.mul <= 39, "{count}");
+    assert!(count.mul <= 37, "{count}");
 }
 
 #[test]
 fn puma560_end_effector() {
-    if let Some(count) = pose_count("puma560.toml", "link6") {
-        assert_eq!(count.sin_cos, 6, "{count}");
-        assert!(count.mul <= 46 && count.add <= 23, "{count}");
-    }
+    let count = pose_count("puma560.toml", "link6");
+    assert_eq!(count.sin_cos, 6, "{count}");
+    assert!(count.mul <= 46 && count.add <= 23, "{count}");
 }
 
 #[test]
 fn panda_flange() {
-    if let Some(count) = pose_count("panda.toml", "flange") {
-        assert_eq!(count.sin_cos, 7, "{count}");
-        // The target is 80 multiplications and 43 additions; the compiler reaches 77 and 44.
-        assert!(count.mul <= 80 && count.add <= 44, "{count}");
-    }
+    let count = pose_count("panda.toml", "flange");
+    assert_eq!(count.sin_cos, 7, "{count}");
+    assert!(count.mul <= 80 && count.add <= 43, "{count}");
 }
