@@ -16,12 +16,19 @@ use crate::symbolic::graph::{ExprGraph, ExprId, Node};
 pub fn factor_common(g: &mut ExprGraph, outputs: &[ExprId]) -> Vec<ExprId> {
     let nodes = reachable(g, outputs.iter().copied());
     let mut uses = vec![0usize; g.len()];
+    // The user of each node (meaningful for nodes used once).
+    let mut parent: Vec<Option<ExprId>> = vec![None; g.len()];
     for &id in &nodes {
         match g.node(id) {
-            Node::Sin(a) | Node::Cos(a) | Node::Neg(a) => uses[a.index()] += 1,
+            Node::Sin(a) | Node::Cos(a) | Node::Neg(a) => {
+                uses[a.index()] += 1;
+                parent[a.index()] = Some(id);
+            }
             Node::Add(a, b) | Node::Mul(a, b) => {
                 uses[a.index()] += 1;
                 uses[b.index()] += 1;
+                parent[a.index()] = Some(id);
+                parent[b.index()] = Some(id);
             }
             Node::Const(_) | Node::Var(_) => {}
         }
@@ -29,8 +36,30 @@ pub fn factor_common(g: &mut ExprGraph, outputs: &[ExprId]) -> Vec<ExprId> {
     for &o in outputs {
         uses[o.index()] += 1;
     }
+    // A sum or negation used once, inside a sum, is flattened into that sum and needs no rewriting
+    // of its own (rewriting every level would make long sums quadratic).
+    let is_add = |g: &ExprGraph, id: Option<ExprId>| id.is_some_and(|p| matches!(g.node(p), Node::Add(..)));
+    let absorbed = |g: &ExprGraph, id: ExprId| -> bool {
+        if uses[id.index()] != 1 || outputs.contains(&id) {
+            return false;
+        }
+        let p = parent[id.index()];
+        match g.node(id) {
+            Node::Add(..) => {
+                is_add(g, p)
+                    || p.is_some_and(|n| {
+                        matches!(g.node(n), Node::Neg(_)) && uses[n.index()] == 1 && is_add(g, parent[n.index()])
+                    })
+            }
+            Node::Neg(_) => is_add(g, p),
+            _ => false,
+        }
+    };
     let mut new: BTreeMap<ExprId, ExprId> = BTreeMap::new();
     for &id in &nodes {
+        if absorbed(g, id) {
+            continue;
+        }
         let rewritten = match g.node(id) {
             Node::Const(_) | Node::Var(_) => id,
             Node::Sin(a) => {
