@@ -84,7 +84,32 @@ fn iiwa14_dh_vs_urdf() -> Pair {
     related_at_zero(reference("iiwa14.toml"), "iiwa_link_0", reference("iiwa14.urdf"), "iiwa_link_0", &links)
 }
 
+/// Franka Panda: Franka's modified DH table (with the flange) against franka_description's URDF
+/// (arm, hand and mimic fingers). Each DH frame i is `panda_link<i>` itself and the flange is
+/// `panda_link8`; the URDF's extra degree of freedom (the finger) moves neither.
+struct PandaPair {
+    dh: ReferenceFk,
+    urdf: ReferenceFk,
+}
+
+impl PandaPair {
+    fn check(&self, q: &[f64], finger: f64) {
+        let mut q_urdf = q.to_vec();
+        q_urdf.push(finger);
+        let pairs = (1..=7)
+            .map(|i| (format!("panda_link{i}"), format!("panda_link{i}")))
+            .chain([("flange".to_owned(), "panda_link8".to_owned())]);
+        for (a, b) in pairs {
+            let pa = self.dh.relative_pose(q, "panda_link0", &a).unwrap();
+            let pb = self.urdf.relative_pose(&q_urdf, "panda_link0", &b).unwrap();
+            assert_pose_eq(&pa, &pb, POSE_TOLERANCE, &format!("{a} vs {b} at q = {q:?}"));
+        }
+    }
+}
+
 // Loaded once; the property tests run 1,000 cases each.
+static PANDA: LazyLock<PandaPair> =
+    LazyLock::new(|| PandaPair { dh: reference("panda.toml"), urdf: reference("panda.urdf") });
 static UR10E: LazyLock<Pair> = LazyLock::new(ur10e_dh_vs_urdf);
 static IIWA14: LazyLock<Pair> = LazyLock::new(iiwa14_dh_vs_urdf);
 static DUAL_ARM: LazyLock<ReferenceFk> = LazyLock::new(|| reference("dual_arm_torso.urdf"));
@@ -113,6 +138,11 @@ proptest! {
     #[test]
     fn iiwa14_modified_dh_matches_urdf(q in q(7)) {
         IIWA14.check(&q);
+    }
+
+    #[test]
+    fn panda_modified_dh_matches_urdf(q in q(7), finger in 0.0..0.04f64) {
+        PANDA.check(&q, finger);
     }
 
     /// The dual-arm robot's waist turns everything above it about the vertical axis through the root.

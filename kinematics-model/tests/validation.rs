@@ -269,3 +269,19 @@ fn dof_order_is_depth_first_in_description_order() {
     assert!(matches!(tree.chain("l1", "r2"), Err(ModelError::NotAChain { .. })));
     assert!(matches!(tree.chain("torso", "hand"), Err(ModelError::NoSuchLink(_))));
 }
+
+#[test]
+fn dh_json_reads_like_toml() {
+    let toml = "name = \"arm\"\nconvention = \"modified\"\nangle_unit = \"degrees\"\n[[joints]]\nname = \"j1\"\nd = 0.3\n[[joints]]\nname = \"j2\"\nalpha = -90\na = 0.1\nlower = -45\nupper = 45\n";
+    let json = r#"{"name": "arm", "convention": "modified", "angle_unit": "degrees",
+        "joints": [{"name": "j1", "d": 0.3}, {"name": "j2", "alpha": -90, "a": 0.1, "lower": -45, "upper": 45}]}"#;
+    let from_toml = parse_source("arm.toml", toml).unwrap();
+    let from_json = parse_source("arm.json", json).unwrap();
+    assert_eq!(from_toml, from_json);
+    // -90 degrees is exactly -pi/2; the limits are in radians in the model.
+    let j2 = from_json.joint_by_name("j2").unwrap();
+    assert!(
+        matches!(j2.origin.steps()[0], kinematics_model::Elementary::Rotation(_, a) if a.exact() == kinematics_model::PiRational::new(-1, 2))
+    );
+    assert!((j2.limits.unwrap().upper - std::f64::consts::FRAC_PI_4).abs() < 1e-15);
+}
