@@ -17,7 +17,7 @@ fn check_robot(robot: &GeneratedRobot) -> (f64, f64) {
     let tree = kinematics::load(robot_path(robot.file)).unwrap();
     assert_eq!(tree.dof(), robot.dof, "{}", robot.file);
     let fk = ReferenceFk::new(tree.clone());
-    let reach = reach(&tree);
+    let reach = tree.reach();
     let (worst, worst_f32) = (Cell::new(0.0f64), Cell::new(0.0f64));
     let mut runner = TestRunner::new(Config { cases: CASES, failure_persistence: None, ..Config::default() });
     runner

@@ -21,7 +21,7 @@ fn check(robot: &DerivedRobot) -> (f64, f64) {
     // The witness is built from the file by the runtime, not from anything the derive produced.
     let tree = kinematics::load(robot_path(robot.file)).unwrap();
     let fk = ReferenceFk::new(tree.clone());
-    let reach = reach(&tree);
+    let reach = tree.reach();
     let (worst, worst_f32) = (Cell::new(0.0f64), Cell::new(0.0f64));
     let mut runner = TestRunner::new(Config { cases: CASES, failure_persistence: None, ..Config::default() });
     runner

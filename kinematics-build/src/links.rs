@@ -14,42 +14,18 @@ pub fn find_link(tree: &KinematicTree, file: &str, role: &'static str, name: &st
         file: file.to_owned(),
         role,
         link: name.to_owned(),
-        suggestion: closest(name, tree.links().iter().map(|l| l.name.as_str())).map(str::to_owned),
+        suggestion: tree.suggest_link(name).map(str::to_owned),
     })
-}
-
-/// The name in `candidates` closest to `wrong`, if it is close enough to be a likely typo.
-fn closest<'a>(wrong: &str, candidates: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
-    candidates
-        .into_iter()
-        .map(|c| (distance(wrong, c), c))
-        .filter(|&(d, c)| d <= 2.max(c.len() / 4))
-        .min_by_key(|&(d, _)| d)
-        .map(|(_, c)| c)
-}
-
-/// Levenshtein distance.
-fn distance(a: &str, b: &str) -> usize {
-    let b: Vec<char> = b.chars().collect();
-    let mut row: Vec<usize> = (0..=b.len()).collect();
-    for (i, ca) in a.chars().enumerate() {
-        let mut prev = row[0];
-        row[0] = i + 1;
-        for (j, &cb) in b.iter().enumerate() {
-            let next = (prev + usize::from(ca != cb)).min(row[j] + 1).min(row[j + 1] + 1);
-            prev = row[j + 1];
-            row[j + 1] = next;
-        }
-    }
-    row[b.len()]
 }
 
 #[cfg(test)]
 mod tests {
-    use super::closest;
-
     fn check(wrong: &str, expected: Option<&str>) {
-        assert_eq!(closest(wrong, ["base_link", "tool0", "wrist_3_link"]), expected, "{wrong}");
+        let urdf = r#"<robot name="r"><link name="base_link"/><link name="wrist_3_link"/><link name="tool0"/>
+            <joint name="a" type="fixed"><parent link="base_link"/><child link="wrist_3_link"/></joint>
+            <joint name="b" type="fixed"><parent link="wrist_3_link"/><child link="tool0"/></joint></robot>"#;
+        let tree = kinematics_model::parse_source("r.urdf", urdf).unwrap();
+        assert_eq!(tree.suggest_link(wrong), expected, "{wrong}");
     }
 
     #[test]

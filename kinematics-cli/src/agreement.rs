@@ -2,7 +2,7 @@
 //! between two poses, and the compiled expressions of every link against the runtime reference.
 
 use kinematics::ReferenceFk;
-use kinematics::model::{Elementary, JointKind, KinematicTree};
+use kinematics::model::KinematicTree;
 use kinematics_compiler::{Request, compile};
 use nalgebra::Isometry3;
 
@@ -70,27 +70,6 @@ impl Iterator for Configurations {
     }
 }
 
-/// An upper bound on how far any link gets from the root: every fixed offset plus every
-/// prismatic stroke, laid end to end (at least 1 m, so small robots meet the absolute tolerance).
-pub fn reach(tree: &KinematicTree) -> f64 {
-    let offsets: f64 = tree
-        .joints()
-        .iter()
-        .flat_map(|j| j.origin.steps().iter().chain(j.after_motion.steps()))
-        .map(|s| match s {
-            Elementary::Translation(v) => v.iter().map(|x| x * x).sum::<f64>().sqrt(),
-            Elementary::Rotation(..) => 0.0,
-        })
-        .sum();
-    let strokes: f64 = tree
-        .joints()
-        .iter()
-        .filter(|j| j.kind == JointKind::Prismatic)
-        .map(|j| j.limits.map_or(1.0, |l| l.lower.abs().max(l.upper.abs()) + 1.0))
-        .sum();
-    (offsets + strokes).max(1.0)
-}
-
 /// The larger of the translation difference over `reach` and the largest rotation-entry
 /// difference, between 12 pose entries (rotation row-major, translation) and an isometry.
 pub fn distance(entries: &[f64; 12], reference: &Isometry3<f64>, reach: f64) -> f64 {
@@ -126,7 +105,7 @@ pub fn check_graph(tree: &KinematicTree, file: &str, samples: usize) -> Result<V
     let compiled =
         compile(tree, &Request::all_links()).map_err(|source| CliError::Compile { file: file.to_owned(), source })?;
     let fk = ReferenceFk::new(tree.clone());
-    let reach = reach(tree);
+    let reach = tree.reach();
     let ids: Vec<usize> = compiled.frames().iter().map(|f| tree.link_id(&f.link).map_or(0, |id| id.0)).collect();
     let mut worst = vec![0.0f64; ids.len()];
     for q in Configurations::new(tree).take(samples) {

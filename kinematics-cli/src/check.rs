@@ -2,7 +2,7 @@
 
 use std::io::Write;
 
-use crate::agreement::{TOLERANCE, check_graph, reach, verdict};
+use crate::agreement::{TOLERANCE, check_graph, verdict};
 use crate::error::CliError;
 
 /// Arguments of `check`.
@@ -29,7 +29,7 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
         out,
         "{} configurations (fixed seed; 0, +-pi/2, +-pi and beyond the limits included), reach {:.3} m",
         args.samples,
-        reach(&tree)
+        tree.reach()
     )?;
     let width = errors.iter().map(|e| e.link.len()).max().unwrap_or(0).max(4);
     writeln!(out, "{:<width$}  largest error (x reach)", "link")?;

@@ -9,7 +9,7 @@ use kinematics::ReferenceFk;
 use kinematics::model::KinematicTree;
 use kinematics_compiler::{Request, compile};
 
-use crate::agreement::{Configurations, TOLERANCE, check_graph, distance, entries, reach};
+use crate::agreement::{Configurations, TOLERANCE, check_graph, distance, entries};
 use crate::error::CliError;
 use crate::ur5::Ur5;
 
@@ -72,7 +72,7 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
         let worst = generated_agreement(&tree, &file, args.samples)?;
         writeln!(out, "  generated Rust in this binary (Ur5):     largest error {worst:.2e} x reach")?;
     }
-    writeln!(out, "  (reach {:.3} m; tolerance {TOLERANCE:e})", reach(&tree))?;
+    writeln!(out, "  (reach {:.3} m; tolerance {TOLERANCE:e})", tree.reach())?;
 
     writeln!(
         out,
@@ -137,7 +137,7 @@ fn per_call(evaluations: usize, mut f: impl FnMut(usize)) -> f64 {
 /// the runtime reference.
 fn generated_agreement(tree: &KinematicTree, file: &str, samples: usize) -> Result<f64, CliError> {
     let fk = ReferenceFk::new(tree.clone());
-    let reach = reach(tree);
+    let reach = tree.reach();
     let tool0 = crate::robot::link(tree, file, "tip", "tool0")?.0;
     let ids = Ur5::LINK_NAMES.map(|name| tree.link_id(name).map_or(0, |id| id.0));
     let mut worst: f64 = 0.0;

@@ -7,7 +7,6 @@
 mod inline_dh;
 pub mod options;
 mod source;
-mod suggest;
 
 use darling::FromDeriveInput;
 use proc_macro2::TokenStream;

@@ -9,7 +9,6 @@ use proc_macro2::{Span, TokenStream};
 use quote::quote;
 
 use crate::options::{DhSource, KinematicsInput};
-use crate::suggest::closest;
 
 /// A description, read and validated.
 pub struct Loaded {
@@ -52,8 +51,7 @@ pub fn load(options: &KinematicsInput) -> darling::Result<Loaded> {
     links.extend(options.tips().into_iter().map(|t| ("tip", t)));
     for (what, link) in &links {
         if loaded.tree.link_id(link).is_none() {
-            let names = loaded.tree.links().iter().map(|l| l.name.as_str());
-            let hint = closest(link, names).map(|c| format!("; did you mean `{c}`?")).unwrap_or_default();
+            let hint = loaded.tree.suggest_link(link).map(|c| format!("; did you mean `{c}`?")).unwrap_or_default();
             errors.push(
                 Error::custom(format!("{}: {what} link `{}` does not exist{hint}", loaded.label, link.as_ref()))
                     .with_span(&link.span()),

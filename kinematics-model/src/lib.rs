@@ -28,6 +28,7 @@ pub mod dh;
 mod error;
 mod joint;
 mod source;
+mod suggest;
 pub mod synthetic;
 mod transform;
 mod tree;

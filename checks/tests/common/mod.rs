@@ -2,7 +2,7 @@
 #![allow(dead_code)]
 
 use kinematics::Pose;
-use kinematics::model::{Elementary, JointKind, KinematicTree};
+use kinematics::model::KinematicTree;
 use nalgebra::{Isometry3, Matrix3};
 use proptest::prelude::*;
 
@@ -14,27 +14,6 @@ pub const CASES: u32 = 10_000;
 
 pub fn robot_path(file: &str) -> String {
     format!("{}/../robots/{file}", env!("CARGO_MANIFEST_DIR"))
-}
-
-/// An upper bound on how far any link gets from the base: every fixed offset plus every prismatic
-/// stroke, laid end to end (at least 1 m, so tiny robots are held to the absolute tolerance).
-pub fn reach(tree: &KinematicTree) -> f64 {
-    let offsets: f64 = tree
-        .joints()
-        .iter()
-        .flat_map(|j| j.origin.steps().iter().chain(j.after_motion.steps()))
-        .map(|s| match s {
-            Elementary::Translation(v) => (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt(),
-            Elementary::Rotation(..) => 0.0,
-        })
-        .sum();
-    let strokes: f64 = tree
-        .joints()
-        .iter()
-        .filter(|j| j.kind == JointKind::Prismatic)
-        .map(|j| j.limits.map_or(1.0, |l| l.lower.abs().max(l.upper.abs()) + 1.0))
-        .sum();
-    (offsets + strokes).max(1.0)
 }
 
 /// Per joint: a special angle, a value within the limits, or one up to 1 beyond them.

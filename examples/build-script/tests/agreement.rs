@@ -3,7 +3,6 @@
 //! structs of the same robots with the same options, which must give the very same numbers.
 #![allow(clippy::panic, clippy::unwrap_used, clippy::expect_used)] // test helpers fail loudly
 
-use kinematics::model::{Elementary, KinematicTree};
 use kinematics::{Kinematics, Pose, ReferenceFk};
 use kinematics_build_example::{Panda, Ur5};
 use nalgebra::Isometry3;
@@ -28,20 +27,6 @@ struct DerivedPanda;
 
 fn load(file: &str) -> ReferenceFk {
     ReferenceFk::new(kinematics::load(format!("{}/../../robots/{file}", env!("CARGO_MANIFEST_DIR"))).unwrap())
-}
-
-/// Every fixed offset laid end to end (at least 1 m): an upper bound on any link's distance.
-fn reach(tree: &KinematicTree) -> f64 {
-    let offsets: f64 = tree
-        .joints()
-        .iter()
-        .flat_map(|j| j.origin.steps().iter().chain(j.after_motion.steps()))
-        .map(|s| match s {
-            Elementary::Translation(v) => v.iter().map(|x| x * x).sum::<f64>().sqrt(),
-            Elementary::Rotation(..) => 0.0,
-        })
-        .sum();
-    offsets.max(1.0)
 }
 
 /// A deterministic stream of configurations (splitmix64): per joint, a special angle (0, +-pi/2,
@@ -105,7 +90,7 @@ fn assert_close(what: &str, generated: &Pose<f64>, reference: &Isometry3<f64>, r
 #[test]
 fn ur5_agrees_with_the_runtime_reference() {
     let fk = load("ur5.urdf");
-    let reach = reach(fk.tree());
+    let reach = fk.tree().reach();
     let base = fk.link_id(Ur5::BASE).unwrap().0;
     let mut configurations = Configurations::new(&Ur5::JOINT_LIMITS);
     let mut worst: f64 = 0.0;
@@ -128,7 +113,7 @@ fn ur5_agrees_with_the_runtime_reference() {
 #[test]
 fn panda_agrees_with_the_runtime_reference() {
     let fk = load("panda.urdf");
-    let reach = reach(fk.tree());
+    let reach = fk.tree().reach();
     let base = fk.link_id(Panda::BASE).unwrap().0;
     let mut configurations = Configurations::new(&Panda::JOINT_LIMITS);
     let mut worst: f64 = 0.0;

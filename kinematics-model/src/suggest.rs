@@ -1,0 +1,78 @@
+//! "Did you mean" for names a user typed, and the size of a robot: small helpers every front end
+//! (derive, build API, command line) needs to say the same thing.
+
+use crate::joint::JointKind;
+use crate::transform::Elementary;
+use crate::tree::KinematicTree;
+
+impl KinematicTree {
+    /// The link name closest to `wrong`, when it is close enough to be a likely typo.
+    ///
+    /// ```
+    /// let tree = kinematics_model::synthetic::dh_chain(3);
+    /// assert_eq!(tree.suggest_link("lnk2"), Some("link2"));
+    /// assert_eq!(tree.suggest_link("gripper"), None);
+    /// ```
+    pub fn suggest_link(&self, wrong: &str) -> Option<&str> {
+        closest(wrong, self.links().iter().map(|l| l.name.as_str()))
+    }
+
+    /// An upper bound on how far any link gets from any other, in metres: every fixed offset plus
+    /// every prismatic stroke, laid end to end (at least 1, so that tolerances scaled by it never
+    /// get tighter than absolute ones).
+    pub fn reach(&self) -> f64 {
+        let offsets: f64 = self
+            .joints()
+            .iter()
+            .flat_map(|j| j.origin.steps().iter().chain(j.after_motion.steps()))
+            .map(|s| match s {
+                Elementary::Translation(v) => v.iter().map(|x| x * x).sum::<f64>().sqrt(),
+                Elementary::Rotation(..) => 0.0,
+            })
+            .sum();
+        let strokes: f64 = self
+            .joints()
+            .iter()
+            .filter(|j| j.kind == JointKind::Prismatic)
+            .map(|j| j.limits.map_or(1.0, |l| l.lower.abs().max(l.upper.abs()) + 1.0))
+            .sum();
+        (offsets + strokes).max(1.0)
+    }
+}
+
+/// The name in `candidates` closest to `wrong`, if it is close enough to be a likely typo.
+fn closest<'a>(wrong: &str, candidates: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
+    candidates
+        .into_iter()
+        .map(|c| (distance(wrong, c), c))
+        .filter(|&(d, c)| d <= 2.max(c.len() / 4))
+        .min_by_key(|&(d, _)| d)
+        .map(|(_, c)| c)
+}
+
+/// Levenshtein distance.
+fn distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut row: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut prev = row[0];
+        row[0] = i + 1;
+        for (j, &cb) in b.iter().enumerate() {
+            let next = (prev + usize::from(ca != cb)).min(row[j] + 1).min(row[j + 1] + 1);
+            prev = row[j + 1];
+            row[j + 1] = next;
+        }
+    }
+    row[b.len()]
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn suggests_near_misses_only() {
+        let links = ["base_link", "tool0", "wrist_3_link"];
+        assert_eq!(super::closest("tool9", links), Some("tool0"));
+        assert_eq!(super::closest("wrist3_link", links), Some("wrist_3_link"));
+        assert_eq!(super::closest("gripper", links), None);
+    }
+}
