@@ -73,15 +73,7 @@ impl Iterator for Configurations {
 /// The larger of the translation difference over `reach` and the largest rotation-entry
 /// difference, between 12 pose entries (rotation row-major, translation) and an isometry.
 pub fn distance(entries: &[f64; 12], reference: &Isometry3<f64>, reach: f64) -> f64 {
-    let r = reference.rotation.to_rotation_matrix();
-    let mut worst: f64 = 0.0;
-    for i in 0..3 {
-        worst = worst.max((entries[9 + i] - reference.translation.vector[i]).abs() / reach);
-        for j in 0..3 {
-            worst = worst.max((entries[3 * i + j] - r[(i, j)]).abs());
-        }
-    }
-    worst
+    kinematics::Pose::from_entries(entries).deviation(reference, reach)
 }
 
 /// The 12 entries of a generated pose.

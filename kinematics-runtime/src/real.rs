@@ -97,6 +97,39 @@ impl<T: Real + RealField> Pose<T> {
     }
 }
 
+impl Pose<f64> {
+    /// A pose from its twelve entries: the rotation row-major, then the translation (the layout
+    /// of the compiler's evaluator).
+    pub fn from_entries(e: &[f64; 12]) -> Self {
+        Pose {
+            rotation: [[e[0], e[1], e[2]], [e[3], e[4], e[5]], [e[6], e[7], e[8]]],
+            translation: [e[9], e[10], e[11]],
+        }
+    }
+
+    /// How far this pose is from `reference`: the largest translation difference divided by
+    /// `reach` (the robot's size), or the largest difference of a rotation-matrix entry, whichever
+    /// is larger. Generated code is held to this against the runtime reference.
+    ///
+    /// ```
+    /// use kinematics_runtime::Pose;
+    /// let pose = Pose { rotation: [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]], translation: [2.0, 0.0, 0.0] };
+    /// let reference = nalgebra::Isometry3::translation(2.0, 0.0, 1e-9);
+    /// assert!((pose.deviation(&reference, 2.0) - 0.5e-9).abs() < 1e-18);
+    /// ```
+    pub fn deviation(&self, reference: &Isometry3<f64>, reach: f64) -> f64 {
+        let r = reference.rotation.to_rotation_matrix();
+        let mut worst: f64 = 0.0;
+        for i in 0..3 {
+            worst = worst.max((self.translation[i] - reference.translation.vector[i]).abs() / reach);
+            for j in 0..3 {
+                worst = worst.max((self.rotation[i][j] - r[(i, j)]).abs());
+            }
+        }
+        worst
+    }
+}
+
 impl<T: Real + RealField> From<Pose<T>> for Isometry3<T> {
     fn from(pose: Pose<T>) -> Self {
         pose.to_isometry()

@@ -39,15 +39,7 @@ pub fn configuration(tree: &KinematicTree) -> impl Strategy<Value = Vec<f64>> {
 
 /// Largest difference: translation relative to `reach`, rotation entries absolute.
 pub fn distance(generated: &Pose<f64>, reference: &Isometry3<f64>, reach: f64) -> f64 {
-    let r = reference.rotation.to_rotation_matrix();
-    let mut worst: f64 = 0.0;
-    for i in 0..3 {
-        worst = worst.max((generated.translation[i] - reference.translation.vector[i]).abs() / reach);
-        for j in 0..3 {
-            worst = worst.max((generated.rotation[i][j] - r[(i, j)]).abs());
-        }
-    }
-    worst
+    generated.deviation(reference, reach)
 }
 
 pub fn orthonormality_error(pose: &Pose<f64>) -> f64 {
