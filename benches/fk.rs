@@ -110,8 +110,18 @@ macro_rules! robot {
         mode.run("generated_pose_f64", |i| <$ty>::tip_pose(&q64[i]));
         mode.run("generated_pose_f32", |i| <$ty>::tip_pose_f32(&q32[i]));
         mode.run("generated_position_f64", |i| <$ty>::tip_position(&q64[i]));
-        mode.run("generated_all_f64", |i| <$ty>::link_poses(&q64[i]));
-        mode.run("generated_all_f32", |i| <$ty>::link_poses_f32(&q32[i]));
+        // Every link's pose into a fixed-size array the caller keeps (as a planner would, and as
+        // `k` and the reference keep theirs), black-boxed so no store can be skipped.
+        let mut all64 = <$ty>::link_poses(&q64[0]);
+        mode.run("generated_all_f64", |i| {
+            all64 = <$ty>::link_poses(&q64[i]);
+            black_box(&mut all64);
+        });
+        let mut all32 = <$ty>::link_poses_f32(&q32[0]);
+        mode.run("generated_all_f32", |i| {
+            all32 = <$ty>::link_poses_f32(&q32[i]);
+            black_box(&mut all32);
+        });
         mode.run("runtime_pose_f64", |i| reference.link_pose(&qs[i], $tip));
         mode.run("runtime_all_f64", |i| reference.link_poses(&qs[i]));
         let n = $sin_cos;
