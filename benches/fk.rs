@@ -1,7 +1,8 @@
 //! Forward kinematics speed, per robot, f64 and f32: the generated code (derive) against the
 //! runtime reference, the `k` crate (whole-tree `update_transforms` and a serial chain's
-//! `end_transform`), position only, a batch of 1,024 configurations, and the trigonometry floor
-//! (the robot's `sin_cos` calls alone, on the same inputs, with the same routine).
+//! `end_transform`), galaw's ahead-of-time generated code (all link poses; `benches/galaw/`),
+//! position only, a batch of 1,024 configurations, and the trigonometry floor (the robot's
+//! `sin_cos` calls alone, on the same inputs, with the same routine).
 //!
 //! `cargo bench --bench fk` measures (about 4 minutes on 2 cores); `cargo run -p bench-report`
 //! turns criterion's results into `benches/SUMMARY.md` and `benches/ratios.svg`. Under
@@ -87,6 +88,84 @@ impl Mode<'_, '_> {
             }
         }
     }
+}
+
+/// galaw 0.3.0's generated forward kinematics for our URDF robots, written by
+/// `benches/galaw/regenerate.sh` (its output is kept as generated: no lints apply).
+#[allow(clippy::all, clippy::pedantic, unused_imports, non_snake_case)]
+mod galaw {
+    pub mod ur5 {
+        include!("galaw/ur5.rs");
+    }
+    pub mod ur10e {
+        include!("galaw/ur10e.rs");
+    }
+    pub mod iiwa14 {
+        include!("galaw/iiwa14.rs");
+    }
+    pub mod panda {
+        include!("galaw/panda.rs");
+    }
+    pub mod gen3 {
+        include!("galaw/gen3.rs");
+    }
+    pub mod irb120 {
+        include!("galaw/irb120.rs");
+    }
+    pub mod dual_arm_torso {
+        include!("galaw/dual_arm_torso.rs");
+    }
+    pub mod quadruped {
+        include!("galaw/quadruped.rs");
+    }
+    pub mod humanoid {
+        include!("galaw/humanoid.rs");
+    }
+}
+
+/// galaw's all-link forward kinematics, f64 and f32, on the same configurations. galaw has one
+/// command per moving joint (it does not follow mimic joints), so each command gets the value
+/// our model gives that joint, mimic joints included: the poses then agree, which check mode
+/// asserts at the tip.
+#[allow(clippy::too_many_arguments)]
+fn galaw_contender<const N: usize, const M: usize>(
+    mode: &mut Mode,
+    reference: &ReferenceFk,
+    qs: &[Vec<f64>],
+    tip: &str,
+    children: [&str; N],
+    links: [&str; M],
+    fk_f64: impl Fn(&[f64; N], &mut [nalgebra::Isometry3<f64>; M]),
+    fk_f32: impl Fn(&[f32; N], &mut [nalgebra::Isometry3<f32>; M]),
+) {
+    let tree = reference.tree();
+    let motions: Vec<_> = children
+        .iter()
+        .map(|child| {
+            let link = tree.link_id(child).expect("galaw's link is ours");
+            tree.joints().iter().find(|j| j.child == link).expect("a joint moves it").motion
+        })
+        .collect();
+    let commands: Vec<[f64; N]> =
+        qs.iter().map(|q| std::array::from_fn(|i| motions[i].value(q).expect("a moving joint"))).collect();
+    let commands_f32: Vec<[f32; N]> = commands.iter().map(|c| c.map(|v| v as f32)).collect();
+    let mut poses = [nalgebra::Isometry3::identity(); M];
+    let mut poses_f32 = [nalgebra::Isometry3::identity(); M];
+    if let Mode::Check = mode {
+        let at = links.iter().position(|l| *l == tip).expect("galaw computes the tip");
+        fk_f64(&commands[0], &mut poses);
+        let expected = reference.link_pose(&qs[0], tip).expect("tip exists");
+        let d = poses[at].inverse() * expected;
+        assert!(d.translation.vector.norm() < 1e-9 && d.rotation.angle() < 1e-9, "galaw's {tip} disagrees");
+    }
+    mode.run("galaw_all_f64", |i| {
+        fk_f64(&commands[i], &mut poses);
+        black_box(&mut poses);
+    });
+    mode.run("galaw_all_f32", |i| {
+        fk_f32(&commands_f32[i], &mut poses_f32);
+        black_box(&mut poses_f32);
+    });
 }
 
 fn close(a: &Pose<f64>, b: &nalgebra::Isometry3<f64>) -> bool {
@@ -213,9 +292,20 @@ fn sin_cos(file: &str, tip: &str) -> usize {
     kinematics_compiler::compile(&tree, &kinematics_compiler::Request::tip(tip)).map_or(0, |c| c.op_count().sin_cos)
 }
 
+/// galaw's contender for one robot, from its module in `galaw`.
+macro_rules! galaw {
+    ($mode:expr, $module:ident, $ty:ty, $file:literal, $tip:literal) => {{
+        let path = concat!(env!("CARGO_MANIFEST_DIR"), "/robots/", $file);
+        let reference = ReferenceFk::new(kinematics::load(path).expect("robot loads"));
+        let qs = inputs(&<$ty>::JOINT_LIMITS, INPUTS);
+        use galaw::$module as g;
+        galaw_contender($mode, &reference, &qs, $tip, g::JOINT_CHILDREN, g::LINKS, g::fk_f64, g::fk_f32);
+    }};
+}
+
 fn all(c: Option<&mut Criterion>) {
     macro_rules! each {
-        ($(($name:literal, $ty:ty, $n:literal, $file:literal, $tip:literal)),* $(,)?) => {
+        ($(($name:literal, $ty:ty, $n:literal, $file:literal, $tip:literal $(, $galaw:ident)?)),* $(,)?) => {
             let mut c = c;
             if c.is_some() {
                 // The robot list, for `bench-report` to find the results by.
@@ -234,10 +324,15 @@ fn all(c: Option<&mut Criterion>) {
                 match c.as_deref_mut() {
                     Some(c) => {
                         let mut group = c.benchmark_group($name);
-                        robot!(&mut Mode::Measure(&mut group), $ty, $n, $file, $tip, n);
+                        let mode = &mut Mode::Measure(&mut group);
+                        robot!(mode, $ty, $n, $file, $tip, n);
+                        $(galaw!(mode, $galaw, $ty, $file, $tip);)?
                         group.finish();
                     }
-                    None => robot!(&mut Mode::Check, $ty, $n, $file, $tip, n),
+                    None => {
+                        robot!(&mut Mode::Check, $ty, $n, $file, $tip, n);
+                        $(galaw!(&mut Mode::Check, $galaw, $ty, $file, $tip);)?
+                    }
                 }
             })*
         };
@@ -246,15 +341,15 @@ fn all(c: Option<&mut Criterion>) {
         ("puma560", Puma560, 6, "puma560.toml", "link6"),
         ("stanford", Stanford, 6, "stanford_arm.toml", "link6"),
         ("scara", Scara, 4, "scara.toml", "link4"),
-        ("ur5", Ur5, 6, "ur5.urdf", "tool0"),
-        ("ur10e", Ur10e, 6, "ur10e.urdf", "tool0"),
-        ("iiwa14", Iiwa14, 7, "iiwa14.urdf", "iiwa_link_ee"),
-        ("panda", Panda, 8, "panda.urdf", "panda_hand"),
-        ("gen3", Gen3, 7, "gen3.urdf", "end_effector_link"),
-        ("irb120", Irb120, 6, "irb120.urdf", "tool0"),
-        ("dual_arm", DualArm, 17, "dual_arm_torso.urdf", "tool_l"),
-        ("quadruped", Quadruped, 12, "quadruped.urdf", "RL_foot"),
-        ("humanoid", Humanoid, 25, "humanoid.urdf", "r_gripper"),
+        ("ur5", Ur5, 6, "ur5.urdf", "tool0", ur5),
+        ("ur10e", Ur10e, 6, "ur10e.urdf", "tool0", ur10e),
+        ("iiwa14", Iiwa14, 7, "iiwa14.urdf", "iiwa_link_ee", iiwa14),
+        ("panda", Panda, 8, "panda.urdf", "panda_hand", panda),
+        ("gen3", Gen3, 7, "gen3.urdf", "end_effector_link", gen3),
+        ("irb120", Irb120, 6, "irb120.urdf", "tool0", irb120),
+        ("dual_arm", DualArm, 17, "dual_arm_torso.urdf", "tool_l", dual_arm_torso),
+        ("quadruped", Quadruped, 12, "quadruped.urdf", "RL_foot", quadruped),
+        ("humanoid", Humanoid, 25, "humanoid.urdf", "r_gripper", humanoid),
     );
 }
 

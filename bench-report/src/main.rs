@@ -39,8 +39,8 @@ const VARIANTS: [&str; 14] = [
     "k_pose_f64",
     "floor_f64",
     "floor_f32",
-    "generated_pose_f64",
-    "generated_all_f64",
+    "galaw_all_f64",
+    "galaw_all_f32",
 ];
 
 fn median_ns(criterion: &Path, group: &str, variant: &str) -> Option<f64> {
@@ -123,14 +123,14 @@ fn summary(rows: &[Row]) -> String {
     let _ = writeln!(s, "## Median ns per call (f64 unless marked)\n");
     let _ = writeln!(
         s,
-        "| robot | DoF | tip | ops (sin_cos/mul/add) | pose | pose f32 | position | all links | all f32 | batch, per config | runtime pose | runtime all | k all | k pose | floor | floor f32 |"
+        "| robot | DoF | tip | ops (sin_cos/mul/add) | pose | pose f32 | position | all links | all f32 | batch, per config | runtime pose | runtime all | k all | k pose | galaw all | galaw all f32 | floor | floor f32 |"
     );
-    let _ = writeln!(s, "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|");
+    let _ = writeln!(s, "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|");
     for r in rows {
         let g = |k: &str| fmt(r.ns.get(k).copied());
         let _ = writeln!(
             s,
-            "| {} (`{}`) | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |",
+            "| {} (`{}`) | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |",
             r.group,
             r.file,
             r.dof,
@@ -146,6 +146,8 @@ fn summary(rows: &[Row]) -> String {
             g("runtime_all_f64"),
             g("k_all_f64"),
             g("k_pose_f64"),
+            g("galaw_all_f64"),
+            g("galaw_all_f32"),
             g("floor_f64"),
             g("floor_f32"),
         );
@@ -155,27 +157,33 @@ fn summary(rows: &[Row]) -> String {
         s,
         "Speed-ups are the other contender's time over the generated code's (higher is better); `pose / floor` is the\n\
          generated pose's time over the trigonometry floor (1.0 would be nothing but the `sin_cos` calls); `trig share` is\n\
-         floor / pose, the part of the pose's time spent in `sin_cos`; `f64 / f32` is the pose's f64 time over its f32 time.\n"
+         floor / pose, the part of the pose's time spent in `sin_cos`, and `rest` the pose's time beyond the floor (ns);\n\
+         `f64 / f32` is the pose's f64 time over its f32 time; `k all / galaw all` places galaw against `k` as its\n\
+         authors compare them.\n"
     );
     let _ = writeln!(
         s,
-        "| robot | runtime all / generated all | k all / generated all | k pose / generated pose | pose / floor | position / pose | trig share | f64 / f32 |"
+        "| robot | runtime all / generated all | k all / generated all | galaw all / generated all | k all / galaw all | k pose / generated pose | pose / floor | position / pose | trig share | rest | f64 / f32 | all f64 / all f32 |"
     );
-    let _ = writeln!(s, "|---|---|---|---|---|---|---|---|");
+    let _ = writeln!(s, "|---|---|---|---|---|---|---|---|---|---|---|---|");
     for r in rows {
         let n = |k: &str| r.ns.get(k).copied();
         let x = |v: Option<f64>| v.map_or("n/a".to_owned(), |v| format!("{v:.2}"));
         let _ = writeln!(
             s,
-            "| {} | {} | {} | {} | {} | {} | {} | {} |",
+            "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |",
             r.group,
             x(ratio(n("runtime_all_f64"), n("generated_all_f64"))),
             x(ratio(n("k_all_f64"), n("generated_all_f64"))),
+            x(ratio(n("galaw_all_f64"), n("generated_all_f64"))),
+            x(ratio(n("k_all_f64"), n("galaw_all_f64"))),
             x(ratio(n("k_pose_f64"), n("generated_pose_f64"))),
             x(ratio(n("generated_pose_f64"), n("floor_f64"))),
             x(ratio(n("generated_position_f64"), n("generated_pose_f64"))),
             x(ratio(n("floor_f64"), n("generated_pose_f64"))),
+            fmt(n("generated_pose_f64").zip(n("floor_f64")).map(|(p, f)| p - f)),
             x(ratio(n("generated_pose_f64"), n("generated_pose_f32"))),
+            x(ratio(n("generated_all_f64"), n("generated_all_f32"))),
         );
     }
     let _ = writeln!(
@@ -183,16 +191,19 @@ fn summary(rows: &[Row]) -> String {
         "\nWhy f32 is not twice as fast: the generated code is scalar, and on x86-64 a scalar f32 multiply or add costs\n\
          the same as an f64 one; only `sin_cos` is cheaper in f32 (`sinf`/`cosf`), so the gain is at most the trig share.\n\
          Where the pose sits near the floor, the next gain is a faster `sin_cos`, not fewer multiplications.\n\
-         `k` reads URDF only: DH robots have no `k` figures. `k` orders its joints its own way; its inputs are the same\n\
-         values, so it does the same amount of work."
+         `k` and galaw read URDF only: DH robots have no figures for them. `k` orders its joints its own way; its inputs\n\
+         are the same values, so it does the same amount of work. galaw's code is its own generator's output for our\n\
+         URDFs (`benches/galaw/regenerate.sh`, galaw 0.3.0); galaw has no mimic joints, so it gets one command per moving\n\
+         joint, each set to the value our model gives that joint (the benchmark's check mode asserts the tip agrees)."
     );
     s
 }
 
 fn svg(rows: &[Row]) -> String {
-    let series: [(&str, &str, &str, &str); 3] = [
+    let series: [(&str, &str, &str, &str); 4] = [
         ("runtime all / generated all", "runtime_all_f64", "generated_all_f64", "#4e79a7"),
         ("k all / generated all", "k_all_f64", "generated_all_f64", "#f28e2b"),
+        ("galaw all / generated all", "galaw_all_f64", "generated_all_f64", "#b07aa1"),
         ("pose / trig floor", "generated_pose_f64", "floor_f64", "#59a14f"),
     ];
     let values: Vec<Vec<Option<f64>>> = rows
@@ -201,7 +212,7 @@ fn svg(rows: &[Row]) -> String {
         .collect();
     let max = values.iter().flatten().flatten().fold(1.0f64, |m, &v| m.max(v)).ceil();
     let (width, bar, gap, left, top, height) =
-        (900.0, 14.0, 14.0, 130.0, 40.0, rows.len() as f64 * (3.0 * 14.0 + 14.0));
+        (900.0, 14.0, 14.0, 130.0, 40.0, rows.len() as f64 * (series.len() as f64 * 14.0 + 14.0));
     let scale = (width - left - 40.0) / max;
     let mut s = format!(
         "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{width}\" height=\"{}\" font-family=\"sans-serif\" font-size=\"12\">\n\
@@ -209,9 +220,14 @@ fn svg(rows: &[Row]) -> String {
         top + height + 50.0
     );
     for (i, (r, vals)) in rows.iter().zip(&values).enumerate() {
-        let y0 = top + i as f64 * (3.0 * bar + gap);
-        let _ =
-            writeln!(s, "<text x=\"{}\" y=\"{}\" text-anchor=\"end\">{}</text>", left - 8.0, y0 + 1.8 * bar, r.group);
+        let y0 = top + i as f64 * (series.len() as f64 * bar + gap);
+        let _ = writeln!(
+            s,
+            "<text x=\"{}\" y=\"{}\" text-anchor=\"end\">{}</text>",
+            left - 8.0,
+            y0 + series.len() as f64 * bar / 2.0 + 4.0,
+            r.group
+        );
         for (j, v) in vals.iter().enumerate() {
             if let Some(v) = v {
                 let y = y0 + j as f64 * bar;
@@ -237,7 +253,7 @@ fn svg(rows: &[Row]) -> String {
         );
     }
     for (j, (label, _, _, color)) in series.iter().enumerate() {
-        let x = left + j as f64 * 230.0;
+        let x = left + j as f64 * 185.0;
         let y = axis_y + 28.0;
         let _ = writeln!(
             s,
