@@ -174,7 +174,7 @@ fn close(a: &Pose<f64>, b: &nalgebra::Isometry3<f64>) -> bool {
 }
 
 macro_rules! robot {
-    ($mode:expr, $ty:ty, $n:literal, $file:literal, $tip:literal, $sin_cos:expr) => {{
+    ($mode:expr, $ty:ty, $n:literal, $file:literal, $tip:literal, $sin_cos:expr $(, $galaw:ident)?) => {{
         let mode: &mut Mode = $mode;
         let path = concat!(env!("CARGO_MANIFEST_DIR"), "/robots/", $file);
         let qs = inputs(&<$ty>::JOINT_LIMITS, INPUTS);
@@ -186,8 +186,13 @@ macro_rules! robot {
             let expected = reference.link_pose(&qs[0], $tip).expect("tip exists");
             assert!(close(&<$ty>::tip_pose(&q64[0]), &expected), "{} generated", $file);
         }
+        // Each contender runs next to the one it is compared with (pose and floor, all links and
+        // galaw and the runtime): the machine is shared and its speed drifts over minutes.
+        let n = $sin_cos;
         mode.run("generated_pose_f64", |i| <$ty>::tip_pose(&q64[i]));
+        mode.run("floor_f64", |i| trig_floor(&q64[i], n));
         mode.run("generated_pose_f32", |i| <$ty>::tip_pose_f32(&q32[i]));
+        mode.run("floor_f32", |i| trig_floor(&q32[i], n));
         mode.run("generated_position_f64", |i| <$ty>::tip_position(&q64[i]));
         // Every link's pose into a fixed-size array the caller keeps (as a planner would, and as
         // `k` and the reference keep theirs), black-boxed so no store can be skipped.
@@ -201,11 +206,12 @@ macro_rules! robot {
             all32 = <$ty>::link_poses_f32(&q32[i]);
             black_box(&mut all32);
         });
-        mode.run("runtime_pose_f64", |i| reference.link_pose(&qs[i], $tip));
+        $({
+            use galaw::$galaw as g;
+            galaw_contender(mode, &reference, &qs, $tip, g::JOINT_CHILDREN, g::LINKS, g::fk_f64, g::fk_f32);
+        })?
         mode.run("runtime_all_f64", |i| reference.link_poses(&qs[i]));
-        let n = $sin_cos;
-        mode.run("floor_f64", |i| trig_floor(&q64[i], n));
-        mode.run("floor_f32", |i| trig_floor(&q32[i], n));
+        mode.run("runtime_pose_f64", |i| reference.link_pose(&qs[i], $tip));
         let batch = inputs(&<$ty>::JOINT_LIMITS, BATCH);
         let batch: Vec<[f64; $n]> = arrays(&batch);
         let mut out = vec![<$ty>::tip_pose(&batch[0]); BATCH];
@@ -292,17 +298,6 @@ fn sin_cos(file: &str, tip: &str) -> usize {
     kinematics_compiler::compile(&tree, &kinematics_compiler::Request::tip(tip)).map_or(0, |c| c.op_count().sin_cos)
 }
 
-/// galaw's contender for one robot, from its module in `galaw`.
-macro_rules! galaw {
-    ($mode:expr, $module:ident, $ty:ty, $file:literal, $tip:literal) => {{
-        let path = concat!(env!("CARGO_MANIFEST_DIR"), "/robots/", $file);
-        let reference = ReferenceFk::new(kinematics::load(path).expect("robot loads"));
-        let qs = inputs(&<$ty>::JOINT_LIMITS, INPUTS);
-        use galaw::$module as g;
-        galaw_contender($mode, &reference, &qs, $tip, g::JOINT_CHILDREN, g::LINKS, g::fk_f64, g::fk_f32);
-    }};
-}
-
 fn all(c: Option<&mut Criterion>) {
     macro_rules! each {
         ($(($name:literal, $ty:ty, $n:literal, $file:literal, $tip:literal $(, $galaw:ident)?)),* $(,)?) => {
@@ -324,15 +319,10 @@ fn all(c: Option<&mut Criterion>) {
                 match c.as_deref_mut() {
                     Some(c) => {
                         let mut group = c.benchmark_group($name);
-                        let mode = &mut Mode::Measure(&mut group);
-                        robot!(mode, $ty, $n, $file, $tip, n);
-                        $(galaw!(mode, $galaw, $ty, $file, $tip);)?
+                        robot!(&mut Mode::Measure(&mut group), $ty, $n, $file, $tip, n $(, $galaw)?);
                         group.finish();
                     }
-                    None => {
-                        robot!(&mut Mode::Check, $ty, $n, $file, $tip, n);
-                        $(galaw!(&mut Mode::Check, $galaw, $ty, $file, $tip);)?
-                    }
+                    None => robot!(&mut Mode::Check, $ty, $n, $file, $tip, n $(, $galaw)?),
                 }
             })*
         };
