@@ -2,7 +2,8 @@
 //! runtime reference, the `k` crate (whole-tree `update_transforms` and a serial chain's
 //! `end_transform`), galaw's ahead-of-time generated code (all link poses; `benches/galaw/`),
 //! position only, a batch of 1,024 configurations, and the trigonometry floor (the robot's
-//! `sin_cos` calls alone, on the same inputs, with the same routine).
+//! `sin_cos` calls alone, on the same inputs, with the same routine). Three comparisons are also
+//! timed in alternation (`Mode::pair`), which a drifting shared machine cannot skew.
 //!
 //! `cargo bench --bench fk` measures (about 4 minutes on 2 cores); `cargo run -p bench-report`
 //! turns criterion's results into `benches/SUMMARY.md` and `benches/ratios.svg`. Under
@@ -12,7 +13,7 @@
 #![allow(clippy::expect_used, clippy::panic)] // a benchmark fails loudly on a robot that does not load
 
 use std::hint::black_box;
-use std::time::Duration;
+use std::time::{Duration, Instant};
 
 use criterion::{BenchmarkGroup, Criterion, Throughput, measurement::WallTime};
 use kinematics::{Kinematics, Pose, ReferenceFk};
@@ -67,14 +68,15 @@ fn trig_floor<T: kinematics::Real, const N: usize>(q: &[T; N], n: usize) -> T {
 
 /// How one benchmark is run: measured by criterion, or once and checked (`cargo test`).
 enum Mode<'a, 'c> {
-    Measure(&'a mut BenchmarkGroup<'c, WallTime>),
+    /// Criterion's group, and the robot's name for the paired ratios.
+    Measure(&'a mut BenchmarkGroup<'c, WallTime>, &'static str),
     Check,
 }
 
 impl Mode<'_, '_> {
     fn run<R>(&mut self, name: &str, mut f: impl FnMut(usize) -> R) {
         match self {
-            Mode::Measure(group) => {
+            Mode::Measure(group, _) => {
                 let mut i = 0usize;
                 group.bench_function(name, |b| {
                     b.iter(|| {
@@ -88,7 +90,60 @@ impl Mode<'_, '_> {
             }
         }
     }
+
+    /// The time of `numerator` over the time of `denominator`, measured in alternation: 101 rounds,
+    /// each timing both on the same 2,000 inputs back to back (which goes first alternates), and
+    /// the median of the rounds' ratios. Criterion's medians come from different seconds of a
+    /// shared machine whose speed drifts; these ratios do not. Recorded for `bench-report`.
+    fn pair<A, B>(
+        &mut self,
+        name: &str,
+        mut numerator: impl FnMut(usize) -> A,
+        mut denominator: impl FnMut(usize) -> B,
+    ) {
+        let Mode::Measure(_, robot) = self else { return };
+        if *FILTERED {
+            return; // a filtered run times what criterion selects, not the pairs
+        }
+        const ROUNDS: usize = 101;
+        const CALLS: usize = 2000;
+        let time = |f: &mut dyn FnMut(usize)| {
+            let start = Instant::now();
+            for k in 0..CALLS {
+                f(black_box(k % INPUTS));
+            }
+            start.elapsed().as_secs_f64()
+        };
+        let mut ratios: Vec<f64> = (0..ROUNDS)
+            .map(|round| {
+                let mut num = |i: usize| {
+                    black_box(numerator(i));
+                };
+                let mut den = |i: usize| {
+                    black_box(denominator(i));
+                };
+                if round % 2 == 0 {
+                    let n = time(&mut num);
+                    n / time(&mut den)
+                } else {
+                    let d = time(&mut den);
+                    time(&mut num) / d
+                }
+            })
+            .collect();
+        ratios.sort_by(f64::total_cmp);
+        let median = ratios[ROUNDS / 2];
+        println!("{robot}/{name}: paired ratio {median:.3} (median of {ROUNDS} alternating rounds)");
+        PAIRED.lock().map(|mut p| p.push(format!("{robot}\t{name}\t{median}\n"))).ok();
+    }
 }
+
+/// Whether criterion was given a filter (any argument but flags): then no pairs are timed.
+static FILTERED: std::sync::LazyLock<bool> =
+    std::sync::LazyLock::new(|| std::env::args().skip(1).any(|a| !a.starts_with('-')));
+
+/// Paired ratios of this run, written next to criterion's results for `bench-report`.
+static PAIRED: std::sync::Mutex<Vec<String>> = std::sync::Mutex::new(Vec::new());
 
 /// galaw 0.3.0's generated forward kinematics for our URDF robots, written by
 /// `benches/galaw/regenerate.sh` (its output is kept as generated: no lints apply).
@@ -137,6 +192,7 @@ fn galaw_contender<const N: usize, const M: usize>(
     links: [&str; M],
     fk_f64: impl Fn(&[f64; N], &mut [nalgebra::Isometry3<f64>; M]),
     fk_f32: impl Fn(&[f32; N], &mut [nalgebra::Isometry3<f32>; M]),
+    generated: impl FnMut(usize),
 ) {
     let tree = reference.tree();
     let motions: Vec<_> = children
@@ -166,6 +222,14 @@ fn galaw_contender<const N: usize, const M: usize>(
         fk_f32(&commands_f32[i], &mut poses_f32);
         black_box(&mut poses_f32);
     });
+    mode.pair(
+        "galaw_all_f64/generated_all_f64",
+        |i| {
+            fk_f64(&commands[i], &mut poses);
+            black_box(&mut poses);
+        },
+        generated,
+    );
 }
 
 fn close(a: &Pose<f64>, b: &nalgebra::Isometry3<f64>) -> bool {
@@ -191,6 +255,7 @@ macro_rules! robot {
         let n = $sin_cos;
         mode.run("generated_pose_f64", |i| <$ty>::tip_pose(&q64[i]));
         mode.run("floor_f64", |i| trig_floor(&q64[i], n));
+        mode.pair("generated_pose_f64/floor_f64", |i| <$ty>::tip_pose(&q64[i]), |i| trig_floor(&q64[i], n));
         mode.run("generated_pose_f32", |i| <$ty>::tip_pose_f32(&q32[i]));
         mode.run("floor_f32", |i| trig_floor(&q32[i], n));
         mode.run("generated_position_f64", |i| <$ty>::tip_position(&q64[i]));
@@ -208,14 +273,22 @@ macro_rules! robot {
         });
         $({
             use galaw::$galaw as g;
-            galaw_contender(mode, &reference, &qs, $tip, g::JOINT_CHILDREN, g::LINKS, g::fk_f64, g::fk_f32);
+            let generated = |i: usize| {
+                all64 = <$ty>::link_poses(&q64[i]);
+                black_box(&mut all64);
+            };
+            galaw_contender(mode, &reference, &qs, $tip, g::JOINT_CHILDREN, g::LINKS, g::fk_f64, g::fk_f32, generated);
         })?
         mode.run("runtime_all_f64", |i| reference.link_poses(&qs[i]));
+        mode.pair("runtime_all_f64/generated_all_f64", |i| reference.link_poses(&qs[i]), |i| {
+            all64 = <$ty>::link_poses(&q64[i]);
+            black_box(&mut all64);
+        });
         mode.run("runtime_pose_f64", |i| reference.link_pose(&qs[i], $tip));
         let batch = inputs(&<$ty>::JOINT_LIMITS, BATCH);
         let batch: Vec<[f64; $n]> = arrays(&batch);
         let mut out = vec![<$ty>::tip_pose(&batch[0]); BATCH];
-        if let Mode::Measure(group) = mode {
+        if let Mode::Measure(group, _) = mode {
             group.throughput(Throughput::Elements(BATCH as u64));
         }
         mode.run("generated_batch1024_f64", |_| {
@@ -224,7 +297,7 @@ macro_rules! robot {
             }
             out[BATCH - 1]
         });
-        if let Mode::Measure(group) = mode {
+        if let Mode::Measure(group, _) = mode {
             group.throughput(Throughput::Elements(1));
         }
         if $file.ends_with(".urdf") {
@@ -319,7 +392,7 @@ fn all(c: Option<&mut Criterion>) {
                 match c.as_deref_mut() {
                     Some(c) => {
                         let mut group = c.benchmark_group($name);
-                        robot!(&mut Mode::Measure(&mut group), $ty, $n, $file, $tip, n $(, $galaw)?);
+                        robot!(&mut Mode::Measure(&mut group, $name), $ty, $n, $file, $tip, n $(, $galaw)?);
                         group.finish();
                     }
                     None => robot!(&mut Mode::Check, $ty, $n, $file, $tip, n $(, $galaw)?),
@@ -352,6 +425,16 @@ fn main() {
             .configure_from_args();
         all(Some(&mut c));
         c.final_summary();
+        let paired = PAIRED.lock().map(|p| p.concat()).unwrap_or_default();
+        let dir = std::env::var("CARGO_TARGET_DIR")
+            .map(std::path::PathBuf::from)
+            .unwrap_or_else(|_| std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target"))
+            .join("criterion");
+        if *FILTERED {
+            // keep the last full run's pairs
+        } else if let Err(e) = std::fs::write(dir.join("kinematics-paired.tsv"), paired) {
+            eprintln!("cannot write the paired ratios for bench-report: {e}");
+        }
     } else {
         all(None);
         println!("fk benchmarks: every body ran once and agreed with the runtime reference");

@@ -24,6 +24,8 @@ struct Row {
     dof: usize,
     ops: String,
     ns: std::collections::BTreeMap<&'static str, f64>,
+    /// Ratios timed in alternation by the benchmark (`kinematics-paired.tsv`), by pair name.
+    paired: std::collections::BTreeMap<String, f64>,
 }
 
 const VARIANTS: [&str; 14] = [
@@ -81,6 +83,8 @@ fn run() -> Result<()> {
     let manifest = std::fs::read_to_string(criterion.join("kinematics-robots.tsv")).map_err(|e| {
         format!("no benchmark results in {} ({e}): run `cargo bench --bench fk` first", criterion.display())
     })?;
+    // Absent when the run was filtered or predates the pairs: the tables then say n/a.
+    let paired_text = std::fs::read_to_string(criterion.join("kinematics-paired.tsv")).unwrap_or_default();
     let mut rows = Vec::new();
     for line in manifest.lines() {
         let [group, file, tip] = line.split('\t').collect::<Vec<_>>()[..] else { continue };
@@ -101,6 +105,13 @@ fn run() -> Result<()> {
             dof: tree.dof(),
             ops: format!("{}/{}/{}", ops.sin_cos, ops.mul, ops.add),
             ns,
+            paired: paired_text
+                .lines()
+                .filter_map(|l| match l.split('\t').collect::<Vec<_>>()[..] {
+                    [g, name, v] if g == group => Some((name.to_owned(), v.parse().ok()?)),
+                    _ => None,
+                })
+                .collect(),
         });
     }
     let md = summary(&rows);
@@ -186,6 +197,27 @@ fn summary(rows: &[Row]) -> String {
             x(ratio(n("generated_all_f64"), n("generated_all_f32"))),
         );
     }
+    let _ = writeln!(s, "\n## Paired ratios\n");
+    let _ = writeln!(
+        s,
+        "The medians above come from different seconds of a shared machine whose speed drifts, so ratios of them move\n\
+         by tens of percent between runs. These are timed in alternation instead: 101 rounds, each running both\n\
+         contenders 2,000 times back to back (which goes first alternates), and the median of the rounds' ratios.\n\
+         They are the figures to quote.\n"
+    );
+    let _ = writeln!(s, "| robot | runtime all / generated all | galaw all / generated all | pose / floor |");
+    let _ = writeln!(s, "|---|---|---|---|");
+    for r in rows {
+        let p = |k: &str| r.paired.get(k).map_or("n/a".to_owned(), |v| format!("{v:.2}"));
+        let _ = writeln!(
+            s,
+            "| {} | {} | {} | {} |",
+            r.group,
+            p("runtime_all_f64/generated_all_f64"),
+            p("galaw_all_f64/generated_all_f64"),
+            p("generated_pose_f64/floor_f64"),
+        );
+    }
     let _ = writeln!(
         s,
         "\nWhy f32 is not twice as fast: the generated code is scalar, and on x86-64 a scalar f32 multiply or add costs\n\
@@ -208,7 +240,18 @@ fn svg(rows: &[Row]) -> String {
     ];
     let values: Vec<Vec<Option<f64>>> = rows
         .iter()
-        .map(|r| series.iter().map(|(_, a, b, _)| ratio(r.ns.get(a).copied(), r.ns.get(b).copied())).collect())
+        .map(|r| {
+            series
+                .iter()
+                .map(|(_, a, b, _)| {
+                    // The paired ratio where the benchmark timed one, else the ratio of the medians.
+                    r.paired
+                        .get(&format!("{a}/{b}"))
+                        .copied()
+                        .or_else(|| ratio(r.ns.get(a).copied(), r.ns.get(b).copied()))
+                })
+                .collect()
+        })
         .collect();
     let max = values.iter().flatten().flatten().fold(1.0f64, |m, &v| m.max(v)).ceil();
     let (width, bar, gap, left, top, height) =
@@ -216,7 +259,7 @@ fn svg(rows: &[Row]) -> String {
     let scale = (width - left - 40.0) / max;
     let mut s = format!(
         "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{width}\" height=\"{}\" font-family=\"sans-serif\" font-size=\"12\">\n\
-         <rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n<text x=\"{left}\" y=\"20\" font-size=\"14\">Forward kinematics, f64: ratios (x) per robot, from benches/SUMMARY.md</text>\n",
+         <rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n<text x=\"{left}\" y=\"20\" font-size=\"14\">Forward kinematics, f64: ratios (x) per robot, from benches/SUMMARY.md (paired where timed so)</text>\n",
         top + height + 50.0
     );
     for (i, (r, vals)) in rows.iter().zip(&values).enumerate() {
