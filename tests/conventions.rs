@@ -4,33 +4,11 @@
 
 mod common;
 
+use common::pair::{Pair, related_at_zero};
 use common::{POSE_TOLERANCE, assert_pose_eq, reference};
-use kinematics::ReferenceFk;
 use nalgebra::{Isometry3, Translation3, UnitQuaternion, Vector3};
 use proptest::prelude::*;
 use std::f64::consts::PI;
-
-/// Two descriptions of one robot and the links whose frames are attached to the same body.
-struct Pair {
-    a: ReferenceFk,
-    a_base: &'static str,
-    b: ReferenceFk,
-    b_base: &'static str,
-    /// (link in a, link in b, the fixed transform X with pose_a * X = pose_b).
-    links: Vec<(&'static str, &'static str, Isometry3<f64>)>,
-}
-
-impl Pair {
-    /// Checks `pose_a(q) * X = pose_b(q)` for every linked pair, poses taken relative to each
-    /// description's base link.
-    fn check(&self, q: &[f64]) {
-        for (la, lb, x) in &self.links {
-            let pa = self.a.relative_pose(q, self.a_base, la).unwrap();
-            let pb = self.b.relative_pose(q, self.b_base, lb).unwrap();
-            assert_pose_eq(&(pa * x), &pb, POSE_TOLERANCE, &format!("{la} vs {lb} at q = {q:?}"));
-        }
-    }
-}
 
 fn tx(a: f64) -> Isometry3<f64> {
     Isometry3::translation(a, 0.0, 0.0)
@@ -65,27 +43,6 @@ fn planar_modified_vs_urdf() -> Pair {
 
 const UR5_LINKS: [&str; 6] =
     ["shoulder_link", "upper_arm_link", "forearm_link", "wrist_1_link", "wrist_2_link", "wrist_3_link"];
-
-/// The fixed transforms relating each link's frame in `a` to its frame in `b`, read off at q = 0;
-/// the property tests then show they stay fixed at every other configuration.
-fn related_at_zero(
-    a: ReferenceFk,
-    a_base: &'static str,
-    b: ReferenceFk,
-    b_base: &'static str,
-    links: &[(&'static str, &'static str)],
-) -> Pair {
-    let zero = vec![0.0; a.tree().dof()];
-    let links = links
-        .iter()
-        .map(|&(la, lb)| {
-            let pa = a.relative_pose(&zero, a_base, la).unwrap();
-            let pb = b.relative_pose(&zero, b_base, lb).unwrap();
-            (la, lb, pa.inverse() * pb)
-        })
-        .collect();
-    Pair { a, a_base, b, b_base, links }
-}
 
 fn ur5_std_vs_modified() -> Pair {
     let mut links: Vec<(&str, &str)> = UR5_LINKS.iter().map(|&l| (l, l)).collect();

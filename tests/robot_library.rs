@@ -5,6 +5,7 @@
 
 mod common;
 
+use common::pair::{Pair, related_at_zero};
 use common::{POSE_TOLERANCE, assert_pose_eq, load, reference, robot_path};
 use kinematics::ReferenceFk;
 use kinematics::model::{JointKind, JointMotion, KinematicTree, SourceFormat};
@@ -12,55 +13,6 @@ use nalgebra::{Isometry3, Matrix3, Rotation3, Translation3, UnitQuaternion, Vect
 use proptest::prelude::*;
 use std::f64::consts::PI;
 use std::sync::LazyLock;
-
-/// Two descriptions of one robot and the links whose frames are attached to the same body.
-struct Pair {
-    a: ReferenceFk,
-    a_base: &'static str,
-    b: ReferenceFk,
-    b_base: &'static str,
-    /// (link in a, link in b, the fixed transform X with pose_a * X = pose_b).
-    links: Vec<(&'static str, &'static str, Isometry3<f64>)>,
-}
-
-impl Pair {
-    /// Checks `pose_a(q) * X = pose_b(q)` for every linked pair, poses taken relative to each
-    /// description's base link.
-    fn check(&self, q: &[f64]) {
-        for (la, lb, x) in &self.links {
-            let pa = self.a.relative_pose(q, self.a_base, la).unwrap();
-            let pb = self.b.relative_pose(q, self.b_base, lb).unwrap();
-            assert_pose_eq(&(pa * x), &pb, POSE_TOLERANCE, &format!("{la} vs {lb} at q = {q:?}"));
-        }
-    }
-
-    /// The fixed transform found for the pair (`la`, `lb`).
-    fn relation(&self, la: &str, lb: &str) -> Isometry3<f64> {
-        self.links.iter().find(|(a, b, _)| *a == la && *b == lb).map(|(_, _, x)| *x).unwrap()
-    }
-}
-
-/// The fixed transforms relating each link's frame in `a` to its frame in `b`, read off at q = 0;
-/// the property tests then show they stay fixed at every other configuration.
-fn related_at_zero(
-    a: ReferenceFk,
-    a_base: &'static str,
-    b: ReferenceFk,
-    b_base: &'static str,
-    links: &[(&'static str, &'static str)],
-) -> Pair {
-    assert_eq!(a.tree().dof_names(), b.tree().dof_names(), "the two descriptions order their joints alike");
-    let zero = vec![0.0; a.tree().dof()];
-    let links = links
-        .iter()
-        .map(|&(la, lb)| {
-            let pa = a.relative_pose(&zero, a_base, la).unwrap();
-            let pb = b.relative_pose(&zero, b_base, lb).unwrap();
-            (la, lb, pa.inverse() * pb)
-        })
-        .collect();
-    Pair { a, a_base, b, b_base, links }
-}
 
 const UR_LINKS: [&str; 6] =
     ["shoulder_link", "upper_arm_link", "forearm_link", "wrist_1_link", "wrist_2_link", "wrist_3_link"];

@@ -4,6 +4,8 @@
 use kinematics::{KinematicTree, ReferenceFk};
 use nalgebra::Isometry3;
 
+pub mod pair;
+
 /// Poses computed two ways must agree this closely (metres and radians) on robots of about 1 m reach.
 pub const POSE_TOLERANCE: f64 = 1e-12;
 
