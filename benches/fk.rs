@@ -5,7 +5,7 @@
 //! `sin_cos` calls alone, on the same inputs, with the same routine). Three comparisons are also
 //! timed in alternation (`Mode::pair`), which a drifting shared machine cannot skew.
 //!
-//! `cargo bench --bench fk` measures (about 4 minutes on 2 cores); `cargo run -p bench-report`
+//! `cargo bench --bench fk` measures (about 6 minutes on 2 cores, build included); `cargo run -p bench-report`
 //! turns criterion's results into `benches/SUMMARY.md` and `benches/ratios.svg`. Under
 //! `cargo test` (no `--bench` argument) every benchmark body runs once and its result is checked
 //! against the runtime reference instead, so CI knows the suite builds and computes the right thing.
@@ -261,11 +261,13 @@ macro_rules! robot {
         mode.run("generated_position_f64", |i| <$ty>::tip_position(&q64[i]));
         // Every link's pose into a fixed-size array the caller keeps (as a planner would, and as
         // `k` and the reference keep theirs), black-boxed so no store can be skipped.
+        // One closure, lent to criterion and to both pairs, so all three time the same body.
         let mut all64 = <$ty>::link_poses(&q64[0]);
-        mode.run("generated_all_f64", |i| {
+        let mut generated_all = |i: usize| {
             all64 = <$ty>::link_poses(&q64[i]);
             black_box(&mut all64);
-        });
+        };
+        mode.run("generated_all_f64", &mut generated_all);
         let mut all32 = <$ty>::link_poses_f32(&q32[0]);
         mode.run("generated_all_f32", |i| {
             all32 = <$ty>::link_poses_f32(&q32[i]);
@@ -273,17 +275,10 @@ macro_rules! robot {
         });
         $({
             use galaw::$galaw as g;
-            let generated = |i: usize| {
-                all64 = <$ty>::link_poses(&q64[i]);
-                black_box(&mut all64);
-            };
-            galaw_contender(mode, &reference, &qs, $tip, g::JOINT_CHILDREN, g::LINKS, g::fk_f64, g::fk_f32, generated);
+            galaw_contender(mode, &reference, &qs, $tip, g::JOINT_CHILDREN, g::LINKS, g::fk_f64, g::fk_f32, &mut generated_all);
         })?
         mode.run("runtime_all_f64", |i| reference.link_poses(&qs[i]));
-        mode.pair("runtime_all_f64/generated_all_f64", |i| reference.link_poses(&qs[i]), |i| {
-            all64 = <$ty>::link_poses(&q64[i]);
-            black_box(&mut all64);
-        });
+        mode.pair("runtime_all_f64/generated_all_f64", |i| reference.link_poses(&qs[i]), &mut generated_all);
         mode.run("runtime_pose_f64", |i| reference.link_pose(&qs[i], $tip));
         let batch = inputs(&<$ty>::JOINT_LIMITS, BATCH);
         let batch: Vec<[f64; $n]> = arrays(&batch);
