@@ -102,8 +102,8 @@ impl Mode<'_, '_> {
         mut denominator: impl FnMut(usize) -> B,
     ) {
         let Mode::Measure(_, robot) = self else { return };
-        if *FILTERED {
-            return; // a filtered run times what criterion selects, not the pairs
+        if !selected(&format!("{robot}/{name}")) {
+            return; // a filtered run times the pairs of the robots it selects only
         }
         const ROUNDS: usize = 101;
         const CALLS: usize = 2000;
@@ -138,9 +138,44 @@ impl Mode<'_, '_> {
     }
 }
 
-/// Whether criterion was given a filter (any argument but flags): then no pairs are timed.
-static FILTERED: std::sync::LazyLock<bool> =
-    std::sync::LazyLock::new(|| std::env::args().skip(1).any(|a| !a.starts_with('-')));
+/// Criterion's filter, if it was given one: the first argument that is neither a flag nor the
+/// value of a flag that takes one.
+static FILTER: std::sync::LazyLock<Option<String>> = std::sync::LazyLock::new(|| {
+    const TAKES_VALUE: [&str; 16] = [
+        "--save-baseline",
+        "--baseline",
+        "--baseline-lenient",
+        "--load-baseline",
+        "--sample-size",
+        "--warm-up-time",
+        "--measurement-time",
+        "--nresamples",
+        "--noise-threshold",
+        "--confidence-level",
+        "--significance-level",
+        "--profile-time",
+        "--plotting-backend",
+        "--output-format",
+        "--color",
+        "--format",
+    ];
+    let mut args = std::env::args().skip(1);
+    while let Some(arg) = args.next() {
+        if TAKES_VALUE.contains(&arg.as_str()) {
+            args.next();
+        } else if !arg.starts_with('-') {
+            return Some(arg);
+        }
+    }
+    None
+});
+
+/// Whether a pair named `id` (`robot/numerator/denominator`) is timed in this run: always without
+/// a filter, else when the filter is part of its name (criterion's filters are regular
+/// expressions; a plain robot name such as `ur5` selects the same robots both ways).
+fn selected(id: &str) -> bool {
+    FILTER.as_deref().is_none_or(|filter| id.contains(filter))
+}
 
 /// Paired ratios of this run, written next to criterion's results for `bench-report`.
 static PAIRED: std::sync::Mutex<Vec<String>> = std::sync::Mutex::new(Vec::new());
@@ -252,7 +287,7 @@ macro_rules! robot {
         }
         // Each contender runs next to the one it is compared with (pose and floor, all links and
         // galaw and the runtime): the machine is shared and its speed drifts over minutes.
-        let n = $sin_cos;
+        let (n, n_all): (usize, usize) = $sin_cos;
         mode.run("generated_pose_f64", |i| <$ty>::tip_pose(&q64[i]));
         mode.run("floor_f64", |i| trig_floor(&q64[i], n));
         mode.pair("generated_pose_f64/floor_f64", |i| <$ty>::tip_pose(&q64[i]), |i| trig_floor(&q64[i], n));
@@ -268,6 +303,11 @@ macro_rules! robot {
             black_box(&mut all64);
         };
         mode.run("generated_all_f64", &mut generated_all);
+        // The floor of all link poses: the sin_cos pairs of every moving joint. No code that
+        // computes them with this routine can be faster, so runtime all / floor all bounds the
+        // speed-up over the runtime that any such code can show.
+        mode.run("floor_all_f64", |i| trig_floor(&q64[i], n_all));
+        mode.pair("generated_all_f64/floor_all_f64", &mut generated_all, |i| trig_floor(&q64[i], n_all));
         let mut all32 = <$ty>::link_poses_f32(&q32[0]);
         mode.run("generated_all_f32", |i| {
             all32 = <$ty>::link_poses_f32(&q32[i]);
@@ -279,6 +319,7 @@ macro_rules! robot {
         })?
         mode.run("runtime_all_f64", |i| reference.link_poses(&qs[i]));
         mode.pair("runtime_all_f64/generated_all_f64", |i| reference.link_poses(&qs[i]), &mut generated_all);
+        mode.pair("runtime_all_f64/floor_all_f64", |i| reference.link_poses(&qs[i]), |i| trig_floor(&q64[i], n_all));
         mode.run("runtime_pose_f64", |i| reference.link_pose(&qs[i], $tip));
         let batch = inputs(&<$ty>::JOINT_LIMITS, BATCH);
         let batch: Vec<[f64; $n]> = arrays(&batch);
@@ -359,11 +400,13 @@ struct Quadruped;
 #[kinematics(urdf = "robots/humanoid.urdf", tip = "r_gripper", positions, scalars(f64, f32))]
 struct Humanoid;
 
-/// The `sin_cos` pairs of a robot's tip pose, as the compiler counts them.
-fn sin_cos(file: &str, tip: &str) -> usize {
+/// The `sin_cos` pairs of a robot's tip pose and of all its link poses, as the compiler counts them.
+fn sin_cos(file: &str, tip: &str) -> (usize, usize) {
+    use kinematics_compiler::{Request, compile};
     let path = format!("{}/robots/{file}", env!("CARGO_MANIFEST_DIR"));
     let tree = kinematics::load(path).expect("robot loads");
-    kinematics_compiler::compile(&tree, &kinematics_compiler::Request::tip(tip)).map_or(0, |c| c.op_count().sin_cos)
+    let count = |request: &Request| compile(&tree, request).map_or(0, |c| c.op_count().sin_cos);
+    (count(&Request::tip(tip)), count(&Request::all_links()))
 }
 
 fn all(c: Option<&mut Criterion>) {
@@ -425,9 +468,19 @@ fn main() {
             .map(std::path::PathBuf::from)
             .unwrap_or_else(|_| std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target"))
             .join("criterion");
-        if *FILTERED {
-            // keep the last full run's pairs
-        } else if let Err(e) = std::fs::write(dir.join("kinematics-paired.tsv"), paired) {
+        // A filtered run replaces the pairs it timed and keeps the last run's others.
+        let path = dir.join("kinematics-paired.tsv");
+        let timed = |line: &str| line.rsplit_once('\t').is_some_and(|(id, _)| paired.contains(&format!("{id}\t")));
+        let kept: String = match FILTER.as_deref() {
+            Some(_) => std::fs::read_to_string(&path)
+                .unwrap_or_default()
+                .lines()
+                .filter(|l| !timed(l))
+                .map(|l| format!("{l}\n"))
+                .collect(),
+            None => String::new(),
+        };
+        if let Err(e) = std::fs::write(&path, kept + &paired) {
             eprintln!("cannot write the paired ratios for bench-report: {e}");
         }
     } else {

@@ -45,3 +45,31 @@ fn output_is_byte_identical_across_runs() {
         }
     }
 }
+
+/// Every `sin_cos` call comes before the arithmetic (a call loses every floating-point register, so
+/// a value computed before a later call would be spilled): the only bindings written before the
+/// last call are those an angle is computed from. Checked on every robot's link poses.
+#[test]
+fn sin_cos_calls_come_first() {
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../robots");
+    let mut checked = 0;
+    for entry in std::fs::read_dir(dir).unwrap() {
+        let file = entry.unwrap().file_name().into_string().unwrap();
+        if kinematics_model::SourceFormat::from_file_name(&file).is_none() {
+            continue;
+        }
+        let text = source(&file, &Request::all_links(), "all_links");
+        let lines: Vec<&str> = text.lines().map(str::trim).collect();
+        let calls: Vec<&str> = lines.iter().copied().filter(|l| l.contains(".sin_cos()")).collect();
+        let last_call = lines.iter().rposition(|l| l.contains(".sin_cos()")).unwrap();
+        for line in &lines[..last_call] {
+            let Some(name) = line.strip_prefix("let ").and_then(|l| l.split(" =").next()) else { continue };
+            if name.starts_with('t') {
+                let feeds_angle = calls.iter().any(|c| c.split(|ch: char| !ch.is_alphanumeric()).any(|w| w == name));
+                assert!(feeds_angle, "{file}: `{line}` is computed before a later sin_cos call");
+            }
+        }
+        checked += 1;
+    }
+    assert!(checked >= 12, "only {checked} robots found");
+}
