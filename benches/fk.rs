@@ -294,6 +294,7 @@ macro_rules! robot {
         mode.run("generated_pose_f32", |i| <$ty>::tip_pose_f32(&q32[i]));
         mode.run("floor_f32", |i| trig_floor(&q32[i], n));
         mode.run("generated_position_f64", |i| <$ty>::tip_position(&q64[i]));
+        mode.pair("generated_position_f64/generated_pose_f64", |i| <$ty>::tip_position(&q64[i]), |i| <$ty>::tip_pose(&q64[i]));
         // Every link's pose into a fixed-size array the caller keeps (as a planner would, and as
         // `k` and the reference keep theirs), black-boxed so no store can be skipped.
         // One closure, lent to criterion and to both pairs, so all three time the same body.

@@ -216,18 +216,19 @@ fn summary(rows: &[Row]) -> String {
     );
     let _ = writeln!(
         s,
-        "| robot | runtime all / generated all | galaw all / generated all | pose / floor | all / floor all | runtime all / floor all (bound) |"
+        "| robot | runtime all / generated all | galaw all / generated all | pose / floor | position / pose | all / floor all | runtime all / floor all (bound) |"
     );
-    let _ = writeln!(s, "|---|---|---|---|---|---|");
+    let _ = writeln!(s, "|---|---|---|---|---|---|---|");
     for r in rows {
         let p = |k: &str| r.paired.get(k).map_or("n/a".to_owned(), |v| format!("{v:.2}"));
         let _ = writeln!(
             s,
-            "| {} | {} | {} | {} | {} | {} |",
+            "| {} | {} | {} | {} | {} | {} | {} |",
             r.group,
             p("runtime_all_f64/generated_all_f64"),
             p("galaw_all_f64/generated_all_f64"),
             p("generated_pose_f64/floor_f64"),
+            p("generated_position_f64/generated_pose_f64"),
             p("generated_all_f64/floor_all_f64"),
             p("runtime_all_f64/floor_all_f64"),
         );
@@ -246,8 +247,9 @@ fn summary(rows: &[Row]) -> String {
 }
 
 fn svg(rows: &[Row]) -> String {
-    let series: [(&str, &str, &str, &str); 4] = [
+    let series: [(&str, &str, &str, &str); 5] = [
         ("runtime all / generated all", "runtime_all_f64", "generated_all_f64", "#4e79a7"),
+        ("runtime all / trig floor of all (bound)", "runtime_all_f64", "floor_all_f64", "#a0cbe8"),
         ("k all / generated all", "k_all_f64", "generated_all_f64", "#f28e2b"),
         ("galaw all / generated all", "galaw_all_f64", "generated_all_f64", "#b07aa1"),
         ("pose / trig floor", "generated_pose_f64", "floor_f64", "#59a14f"),
@@ -274,7 +276,7 @@ fn svg(rows: &[Row]) -> String {
     let mut s = format!(
         "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{width}\" height=\"{}\" font-family=\"sans-serif\" font-size=\"12\">\n\
          <rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n<text x=\"{left}\" y=\"20\" font-size=\"14\">Forward kinematics, f64: ratios (x) per robot, from benches/SUMMARY.md (paired where timed so)</text>\n",
-        top + height + 50.0
+        top + height + 70.0
     );
     for (i, (r, vals)) in rows.iter().zip(&values).enumerate() {
         let y0 = top + i as f64 * (series.len() as f64 * bar + gap);
@@ -310,8 +312,9 @@ fn svg(rows: &[Row]) -> String {
         );
     }
     for (j, (label, _, _, color)) in series.iter().enumerate() {
-        let x = left + j as f64 * 185.0;
-        let y = axis_y + 28.0;
+        // Three legend entries a row.
+        let x = left + (j % 3) as f64 * 250.0;
+        let y = axis_y + 28.0 + (j / 3) as f64 * 18.0;
         let _ = writeln!(
             s,
             "<rect x=\"{x}\" y=\"{}\" width=\"12\" height=\"12\" fill=\"{color}\"/><text x=\"{}\" y=\"{}\">{label}</text>",
