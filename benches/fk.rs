@@ -2,10 +2,11 @@
 //! runtime reference, the `k` crate (whole-tree `update_transforms` and a serial chain's
 //! `end_transform`), galaw's ahead-of-time generated code (all link poses; `benches/galaw/`),
 //! position only, a batch of 1,024 configurations, and the trigonometry floor (the robot's
-//! `sin_cos` calls alone, on the same inputs, with the same routine). Three comparisons are also
-//! timed in alternation (`Mode::pair`), which a drifting shared machine cannot skew.
+//! `sin_cos` calls alone, on the same inputs, with the same routine), of the pose and of all links.
+//! The comparisons that matter are also timed in alternation (`Mode::pair`), which a drifting
+//! shared machine cannot skew.
 //!
-//! `cargo bench --bench fk` measures (about 6 minutes on 2 cores, build included); `cargo run -p bench-report`
+//! `cargo bench --bench fk` measures (about 5 minutes on 2 cores, build excluded); `cargo run -p bench-report`
 //! turns criterion's results into `benches/SUMMARY.md` and `benches/ratios.svg`. Under
 //! `cargo test` (no `--bench` argument) every benchmark body runs once and its result is checked
 //! against the runtime reference instead, so CI knows the suite builds and computes the right thing.
@@ -91,7 +92,7 @@ impl Mode<'_, '_> {
         }
     }
 
-    /// The time of `numerator` over the time of `denominator`, measured in alternation: 101 rounds,
+    /// The time of `numerator` over the time of `denominator`, measured in alternation: 201 rounds,
     /// each timing both on the same 2,000 inputs back to back (which goes first alternates), and
     /// the median of the rounds' ratios. Criterion's medians come from different seconds of a
     /// shared machine whose speed drifts; these ratios do not. Recorded for `bench-report`.
@@ -105,7 +106,7 @@ impl Mode<'_, '_> {
         if !selected(&format!("{robot}/{name}")) {
             return; // a filtered run times the pairs of the robots it selects only
         }
-        const ROUNDS: usize = 101;
+        const ROUNDS: usize = 201;
         const CALLS: usize = 2000;
         let time = |f: &mut dyn FnMut(usize)| {
             let start = Instant::now();
@@ -338,21 +339,23 @@ macro_rules! robot {
             group.throughput(Throughput::Elements(1));
         }
         if $file.ends_with(".urdf") {
-            k_crate(mode, path, $tip, &qs, &reference);
+            k_crate(mode, path, $tip, &qs, &mut generated_all);
         }
     }};
 }
 
 /// The `k` crate on the same URDF: its whole-tree update and its serial chain to the tip.
-fn k_crate(mode: &mut Mode, path: &str, tip: &str, qs: &[Vec<f64>], reference: &ReferenceFk) {
+fn k_crate(mode: &mut Mode, path: &str, tip: &str, qs: &[Vec<f64>], generated_all: impl FnMut(usize)) {
     let Ok(chain) = k::Chain::<f64>::from_urdf_file(path) else { return };
     // k orders its degrees of freedom its own way; any values within range time the same work.
     let dof = chain.dof();
     let kq: Vec<Vec<f64>> = qs.iter().map(|q| (0..dof).map(|i| q[i % q.len()]).collect()).collect();
-    mode.run("k_all_f64", |i| {
+    let mut k_all = |i: usize| {
         chain.set_joint_positions_unchecked(&kq[i]);
         chain.update_transforms().len()
-    });
+    };
+    mode.run("k_all_f64", &mut k_all);
+    mode.pair("k_all_f64/generated_all_f64", &mut k_all, generated_all);
     let Some(end) = chain.find_link(tip) else { return };
     let serial = k::SerialChain::from_end(end);
     let sdof = serial.dof();
@@ -361,7 +364,6 @@ fn k_crate(mode: &mut Mode, path: &str, tip: &str, qs: &[Vec<f64>], reference: &
         serial.set_joint_positions_unchecked(&sq[i]);
         serial.end_transform()
     });
-    let _ = reference;
 }
 
 #[derive(Kinematics)]
@@ -458,8 +460,8 @@ fn all(c: Option<&mut Criterion>) {
 fn main() {
     if std::env::args().any(|a| a == "--bench") {
         let mut c = Criterion::default()
-            .warm_up_time(Duration::from_millis(300))
-            .measurement_time(Duration::from_millis(1000))
+            .warm_up_time(Duration::from_millis(200))
+            .measurement_time(Duration::from_millis(800))
             .sample_size(30)
             .configure_from_args();
         all(Some(&mut c));

@@ -208,7 +208,7 @@ fn summary(rows: &[Row]) -> String {
     let _ = writeln!(
         s,
         "The medians above come from different seconds of a shared machine whose speed drifts, so ratios of them move\n\
-         by tens of percent between runs. These are timed in alternation instead: 101 rounds, each running both\n\
+         by tens of percent between runs. These are timed in alternation instead: 201 rounds, each running both\n\
          contenders 2,000 times back to back (which goes first alternates), and the median of the rounds' ratios.\n\
          They are the figures to quote. `floor all` is the trigonometry floor of all link poses (every `sin_cos`\n\
          pair the all-links code calls); `runtime all / floor all` is therefore the largest speed-up over the runtime\n\
@@ -216,16 +216,17 @@ fn summary(rows: &[Row]) -> String {
     );
     let _ = writeln!(
         s,
-        "| robot | runtime all / generated all | galaw all / generated all | pose / floor | position / pose | all / floor all | runtime all / floor all (bound) |"
+        "| robot | runtime all / generated all | k all / generated all | galaw all / generated all | pose / floor | position / pose | all / floor all | runtime all / floor all (bound) |"
     );
-    let _ = writeln!(s, "|---|---|---|---|---|---|---|");
+    let _ = writeln!(s, "|---|---|---|---|---|---|---|---|");
     for r in rows {
         let p = |k: &str| r.paired.get(k).map_or("n/a".to_owned(), |v| format!("{v:.2}"));
         let _ = writeln!(
             s,
-            "| {} | {} | {} | {} | {} | {} | {} |",
+            "| {} | {} | {} | {} | {} | {} | {} | {} |",
             r.group,
             p("runtime_all_f64/generated_all_f64"),
+            p("k_all_f64/generated_all_f64"),
             p("galaw_all_f64/generated_all_f64"),
             p("generated_pose_f64/floor_f64"),
             p("generated_position_f64/generated_pose_f64"),
