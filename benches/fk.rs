@@ -339,13 +339,22 @@ macro_rules! robot {
             group.throughput(Throughput::Elements(1));
         }
         if $file.ends_with(".urdf") {
-            k_crate(mode, path, $tip, &qs, &mut generated_all);
+            k_crate(mode, path, $tip, &qs, &mut generated_all, |i| {
+                black_box(trig_floor(&q64[i], n_all));
+            });
         }
     }};
 }
 
 /// The `k` crate on the same URDF: its whole-tree update and its serial chain to the tip.
-fn k_crate(mode: &mut Mode, path: &str, tip: &str, qs: &[Vec<f64>], generated_all: impl FnMut(usize)) {
+fn k_crate(
+    mode: &mut Mode,
+    path: &str,
+    tip: &str,
+    qs: &[Vec<f64>],
+    generated_all: impl FnMut(usize),
+    floor_all: impl FnMut(usize),
+) {
     let Ok(chain) = k::Chain::<f64>::from_urdf_file(path) else { return };
     // k orders its degrees of freedom its own way; any values within range time the same work.
     let dof = chain.dof();
@@ -356,6 +365,7 @@ fn k_crate(mode: &mut Mode, path: &str, tip: &str, qs: &[Vec<f64>], generated_al
     };
     mode.run("k_all_f64", &mut k_all);
     mode.pair("k_all_f64/generated_all_f64", &mut k_all, generated_all);
+    mode.pair("k_all_f64/floor_all_f64", &mut k_all, floor_all);
     let Some(end) = chain.find_link(tip) else { return };
     let serial = k::SerialChain::from_end(end);
     let sdof = serial.dof();

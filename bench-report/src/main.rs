@@ -211,19 +211,20 @@ fn summary(rows: &[Row]) -> String {
          by tens of percent between runs. These are timed in alternation instead: 201 rounds, each running both\n\
          contenders 2,000 times back to back (which goes first alternates), and the median of the rounds' ratios.\n\
          They are the figures to quote. `floor all` is the trigonometry floor of all link poses (every `sin_cos`\n\
-         pair the all-links code calls); `runtime all / floor all` is therefore the largest speed-up over the runtime\n\
-         that any code calling this `sin_cos` could show, and `all / floor all` how far the generated code is from it.\n"
+         pair the all-links code calls); `runtime all / floor all` and `k all / floor all` are therefore the largest\n\
+         speed-ups over the runtime and over `k` that any code calling this `sin_cos` could show, and `all / floor all`\n\
+         how far the generated code is from them.\n"
     );
     let _ = writeln!(
         s,
-        "| robot | runtime all / generated all | k all / generated all | galaw all / generated all | pose / floor | position / pose | all / floor all | runtime all / floor all (bound) |"
+        "| robot | runtime all / generated all | k all / generated all | galaw all / generated all | pose / floor | position / pose | all / floor all | runtime all / floor all (bound) | k all / floor all (bound) |"
     );
-    let _ = writeln!(s, "|---|---|---|---|---|---|---|---|");
+    let _ = writeln!(s, "|---|---|---|---|---|---|---|---|---|");
     for r in rows {
         let p = |k: &str| r.paired.get(k).map_or("n/a".to_owned(), |v| format!("{v:.2}"));
         let _ = writeln!(
             s,
-            "| {} | {} | {} | {} | {} | {} | {} | {} |",
+            "| {} | {} | {} | {} | {} | {} | {} | {} | {} |",
             r.group,
             p("runtime_all_f64/generated_all_f64"),
             p("k_all_f64/generated_all_f64"),
@@ -232,6 +233,7 @@ fn summary(rows: &[Row]) -> String {
             p("generated_position_f64/generated_pose_f64"),
             p("generated_all_f64/floor_all_f64"),
             p("runtime_all_f64/floor_all_f64"),
+            p("k_all_f64/floor_all_f64"),
         );
     }
     let _ = writeln!(

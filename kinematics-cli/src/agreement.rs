@@ -1,6 +1,8 @@
-//! What agreement means: deterministic test configurations, the robot's reach, the distance
-//! between two poses, and the compiled expressions of every link against the runtime reference.
+//! What agreement means: deterministic test configurations (the runtime's `Configurations`), the
+//! robot's reach, the distance between two poses, and the compiled expressions of every link
+//! against the runtime reference.
 
+pub use kinematics::Configurations;
 use kinematics::ReferenceFk;
 use kinematics::model::KinematicTree;
 use kinematics_compiler::{Request, compile};
@@ -11,64 +13,6 @@ use crate::error::CliError;
 /// Agreement required of compiled code: translations within this times the reach, rotation
 /// entries within this.
 pub const TOLERANCE: f64 = 1e-12;
-
-/// The special angles every joint takes now and then (and all joints at once first).
-const SPECIAL: [f64; 5] =
-    [0.0, std::f64::consts::FRAC_PI_2, -std::f64::consts::FRAC_PI_2, std::f64::consts::PI, -std::f64::consts::PI];
-
-/// A deterministic stream of configurations (splitmix64, fixed seed): first every joint at each
-/// special angle in turn, then per joint a special angle a quarter of the time, a value up to 1
-/// beyond the limits a quarter of the time, and a value within them otherwise.
-pub struct Configurations {
-    state: u64,
-    ranges: Vec<(f64, f64)>,
-    count: usize,
-}
-
-impl Configurations {
-    /// The configurations of `tree`; continuous joints range over [-pi, pi].
-    pub fn new(tree: &KinematicTree) -> Self {
-        let pi = std::f64::consts::PI;
-        let ranges = tree.dof_limits().iter().map(|l| l.map_or((-pi, pi), |l| (l.lower, l.upper))).collect();
-        Configurations { state: 0x6b69_6e65_6d61_7469, ranges, count: 0 }
-    }
-
-    fn next_u64(&mut self) -> u64 {
-        self.state = self.state.wrapping_add(0x9e37_79b9_7f4a_7c15);
-        let mut z = self.state;
-        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-        z ^ (z >> 31)
-    }
-
-    /// Uniform in [0, 1).
-    fn unit(&mut self) -> f64 {
-        (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64
-    }
-}
-
-impl Iterator for Configurations {
-    type Item = Vec<f64>;
-
-    fn next(&mut self) -> Option<Vec<f64>> {
-        let n = self.count;
-        self.count += 1;
-        if let Some(&angle) = SPECIAL.get(n) {
-            return Some(vec![angle; self.ranges.len()]);
-        }
-        let mut q = Vec::with_capacity(self.ranges.len());
-        for i in 0..self.ranges.len() {
-            let (lo, hi) = self.ranges[i];
-            let value = match self.next_u64() % 4 {
-                0 => SPECIAL[(self.next_u64() % 5) as usize],
-                1 => lo - 1.0 + self.unit() * (hi - lo + 2.0),
-                _ => lo + self.unit() * (hi - lo),
-            };
-            q.push(value);
-        }
-        Some(q)
-    }
-}
 
 /// The larger of the translation difference over `reach` and the largest rotation-entry
 /// difference, between 12 pose entries (rotation row-major, translation) and an isometry.
@@ -127,20 +71,6 @@ pub fn verdict(file: &str, errors: &[FrameError]) -> Result<(), CliError> {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn configurations_start_with_the_special_angles_and_repeat() {
-        let tree = kinematics::model::parse_source(
-            "planar_2r.toml",
-            "convention = \"standard\"\n[[joints]]\nname = \"a\"\na = 1.0\nlower = -1.0\nupper = 1.0\n[[joints]]\nname = \"b\"\na = 1.0\n",
-        )
-        .unwrap();
-        let first: Vec<Vec<f64>> = Configurations::new(&tree).take(200).collect();
-        assert_eq!(first[..5].iter().map(|q| q[0]).collect::<Vec<_>>(), SPECIAL);
-        assert_eq!(first, Configurations::new(&tree).take(200).collect::<Vec<_>>());
-        assert!(first.iter().all(|q| q.len() == 2 && (-2.0..=2.0).contains(&q[0]) || SPECIAL.contains(&q[0])));
-        assert!(first[5..].iter().any(|q| q[0] > 1.0) && first[5..].iter().any(|q| q[0].abs() < 1.0 && q[0] != 0.0));
-    }
 
     #[test]
     fn errors_past_the_tolerance_fail_naming_the_worst_link() {

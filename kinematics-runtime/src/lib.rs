@@ -30,9 +30,11 @@ mod error;
 mod fk;
 mod jacobian;
 mod real;
+mod sample;
 
 pub use compiled::{JointLimits, Kinematics, check_output, q_array};
 pub use error::RuntimeError;
 pub use fk::{ReferenceFk, fixed_isometry};
 pub use kinematics_model;
 pub use real::{Pose, Real};
+pub use sample::{Configurations, SPECIAL_ANGLES};

@@ -3,7 +3,7 @@
 //! structs of the same robots with the same options, which must give the very same numbers.
 #![allow(clippy::panic, clippy::unwrap_used, clippy::expect_used)] // test helpers fail loudly
 
-use kinematics::{Kinematics, Pose, ReferenceFk};
+use kinematics::{Configurations, Kinematics, Pose, ReferenceFk};
 use kinematics_build_example::{Panda, Ur5};
 use nalgebra::Isometry3;
 
@@ -29,45 +29,6 @@ fn load(file: &str) -> ReferenceFk {
     ReferenceFk::new(kinematics::load(format!("{}/../../robots/{file}", env!("CARGO_MANIFEST_DIR"))).unwrap())
 }
 
-/// A deterministic stream of configurations (splitmix64): per joint, a special angle (0, +-pi/2,
-/// +-pi) a quarter of the time, else a value within the limits or up to 1 beyond them.
-struct Configurations {
-    state: u64,
-    limits: Vec<(f64, f64)>,
-}
-
-impl Configurations {
-    fn new(limits: &[kinematics::JointLimits]) -> Self {
-        let pi = std::f64::consts::PI;
-        let limits = limits.iter().map(|l| if l.lower.is_finite() { (l.lower, l.upper) } else { (-pi, pi) }).collect();
-        Configurations { state: 0x5eed, limits }
-    }
-
-    fn next_u64(&mut self) -> u64 {
-        self.state = self.state.wrapping_add(0x9e37_79b9_7f4a_7c15);
-        let mut z = self.state;
-        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-        z ^ (z >> 31)
-    }
-
-    fn unit(&mut self) -> f64 {
-        (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64
-    }
-
-    fn next<const N: usize>(&mut self) -> [f64; N] {
-        use std::f64::consts::{FRAC_PI_2, PI};
-        std::array::from_fn(|i| {
-            let (lo, hi) = self.limits[i];
-            match self.next_u64() % 4 {
-                0 => [0.0, FRAC_PI_2, -FRAC_PI_2, PI, -PI][(self.next_u64() % 5) as usize],
-                1 => lo - 1.0 + self.unit() * (hi - lo + 2.0),
-                _ => lo + self.unit() * (hi - lo),
-            }
-        })
-    }
-}
-
 /// Largest difference: translation relative to `reach`, rotation entries absolute.
 fn distance(generated: &Pose<f64>, reference: &Isometry3<f64>, reach: f64) -> f64 {
     generated.deviation(reference, reach)
@@ -84,10 +45,10 @@ fn ur5_agrees_with_the_runtime_reference() {
     let fk = load("ur5.urdf");
     let reach = fk.tree().reach();
     let base = fk.link_id(Ur5::BASE).unwrap().0;
-    let mut configurations = Configurations::new(&Ur5::JOINT_LIMITS);
+    let mut configurations = Configurations::within(&Ur5::JOINT_LIMITS);
     let mut worst: f64 = 0.0;
     for _ in 0..CASES {
-        let q = configurations.next::<6>();
+        let q = configurations.next_array::<6>().unwrap();
         let poses = fk.link_poses(&q).unwrap();
         let relative = |link: &str| poses[base].inverse() * poses[fk.link_id(link).unwrap().0];
         let tip = Ur5::tip_pose(&q);
@@ -107,10 +68,10 @@ fn panda_agrees_with_the_runtime_reference() {
     let fk = load("panda.urdf");
     let reach = fk.tree().reach();
     let base = fk.link_id(Panda::BASE).unwrap().0;
-    let mut configurations = Configurations::new(&Panda::JOINT_LIMITS);
+    let mut configurations = Configurations::within(&Panda::JOINT_LIMITS);
     let mut worst: f64 = 0.0;
     for _ in 0..CASES {
-        let q = configurations.next::<8>();
+        let q = configurations.next_array::<8>().unwrap();
         let poses = fk.link_poses(&q).unwrap();
         let relative = |link: &str| poses[base].inverse() * poses[fk.link_id(link).unwrap().0];
         for (pose, tip) in Panda::tip_poses(&q).iter().zip(Panda::TIPS) {
@@ -129,14 +90,14 @@ fn the_build_api_and_the_derive_give_the_same_numbers() {
     assert_eq!(Ur5::JOINT_NAMES, DerivedUr5::JOINT_NAMES);
     assert_eq!(Ur5::JOINT_LIMITS, DerivedUr5::JOINT_LIMITS);
     assert_eq!((Panda::TIPS, Panda::BASE, Panda::DOF), (DerivedPanda::TIPS, DerivedPanda::BASE, DerivedPanda::DOF));
-    let mut ur5 = Configurations::new(&Ur5::JOINT_LIMITS);
-    let mut panda = Configurations::new(&Panda::JOINT_LIMITS);
+    let mut ur5 = Configurations::within(&Ur5::JOINT_LIMITS);
+    let mut panda = Configurations::within(&Panda::JOINT_LIMITS);
     for _ in 0..CASES {
-        let q = ur5.next::<6>();
+        let q = ur5.next_array::<6>().unwrap();
         assert_eq!(Ur5::tip_pose(&q), DerivedUr5::tip_pose(&q), "q = {q:?}");
         assert_eq!(Ur5::tip_position(&q), DerivedUr5::tip_position(&q), "q = {q:?}");
         assert_eq!(Ur5::link_poses(&q), DerivedUr5::link_poses(&q), "q = {q:?}");
-        let q = panda.next::<8>();
+        let q = panda.next_array::<8>().unwrap();
         assert_eq!(Panda::tip_poses(&q), DerivedPanda::tip_poses(&q), "q = {q:?}");
         assert_eq!(Panda::link_positions(&q), DerivedPanda::link_positions(&q), "q = {q:?}");
         let q32 = q.map(|x| x as f32);

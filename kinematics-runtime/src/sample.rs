@@ -1,0 +1,136 @@
+//! Deterministic configurations for checking generated code against this reference.
+//!
+//! Agreement is worth most where code goes wrong: at the special angles (0, +-pi/2, +-pi, where a
+//! quarter-turn simplification or a sign shows) and beyond the limits (which generated code must
+//! not assume). The stream below mixes both with uniform values, from a fixed seed, so a failure
+//! reproduces and two runs compare the same numbers.
+
+use std::f64::consts::{FRAC_PI_2, PI};
+
+use kinematics_model::KinematicTree;
+
+use crate::compiled::JointLimits;
+
+/// The special angles every joint takes now and then (and all joints at once first).
+pub const SPECIAL_ANGLES: [f64; 5] = [0.0, FRAC_PI_2, -FRAC_PI_2, PI, -PI];
+
+/// A deterministic stream of configurations (splitmix64, fixed seed): first every joint at each
+/// of the [`SPECIAL_ANGLES`] in turn, then per joint a special angle a quarter of the time, a value
+/// up to 1 beyond the limits a quarter of the time, and a value within them otherwise. Continuous
+/// joints range over [-pi, pi].
+///
+/// ```
+/// use kinematics_runtime::{Configurations, JointLimits};
+/// let limits = [JointLimits { lower: -1.0, upper: 1.0 }, JointLimits { lower: f64::NEG_INFINITY, upper: f64::INFINITY }];
+/// let first: Vec<Vec<f64>> = Configurations::within(&limits).take(100).collect();
+/// assert_eq!(first[1], vec![std::f64::consts::FRAC_PI_2; 2]);
+/// assert!(first.iter().all(|q| (-2.0..=2.0).contains(&q[0]) || q[0].abs() == std::f64::consts::PI));
+/// assert_eq!(first, Configurations::within(&limits).take(100).collect::<Vec<_>>());
+/// ```
+#[derive(Debug, Clone)]
+pub struct Configurations {
+    state: u64,
+    ranges: Vec<(f64, f64)>,
+    count: usize,
+}
+
+impl Configurations {
+    /// The configurations of a robot's degrees of freedom, in the tree's order.
+    pub fn new(tree: &KinematicTree) -> Self {
+        Self::from_ranges(tree.dof_limits().iter().map(|l| l.map_or((-PI, PI), |l| (l.lower, l.upper))).collect())
+    }
+
+    /// The configurations of a compiled robot, from its `JOINT_LIMITS`.
+    pub fn within(limits: &[JointLimits]) -> Self {
+        Self::from_ranges(
+            limits
+                .iter()
+                .map(|l| if l.lower.is_finite() && l.upper.is_finite() { (l.lower, l.upper) } else { (-PI, PI) })
+                .collect(),
+        )
+    }
+
+    fn from_ranges(ranges: Vec<(f64, f64)>) -> Self {
+        Configurations { state: 0x6b69_6e65_6d61_7469, ranges, count: 0 }
+    }
+
+    /// The next configuration as an array (for the generated functions, which take `&[f64; N]`),
+    /// or `None` if `N` is not the number of degrees of freedom.
+    pub fn next_array<const N: usize>(&mut self) -> Option<[f64; N]> {
+        self.next()?.try_into().ok()
+    }
+
+    fn next_u64(&mut self) -> u64 {
+        self.state = self.state.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = self.state;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        z ^ (z >> 31)
+    }
+
+    /// Uniform in [0, 1).
+    fn unit(&mut self) -> f64 {
+        (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64
+    }
+}
+
+impl Iterator for Configurations {
+    type Item = Vec<f64>;
+
+    /// Never `None`: the stream is endless.
+    fn next(&mut self) -> Option<Vec<f64>> {
+        let n = self.count;
+        self.count += 1;
+        if let Some(&angle) = SPECIAL_ANGLES.get(n) {
+            return Some(vec![angle; self.ranges.len()]);
+        }
+        let mut q = Vec::with_capacity(self.ranges.len());
+        for i in 0..self.ranges.len() {
+            let (lo, hi) = self.ranges[i];
+            let value = match self.next_u64() % 4 {
+                0 => SPECIAL_ANGLES[(self.next_u64() % 5) as usize],
+                1 => lo - 1.0 + self.unit() * (hi - lo + 2.0),
+                _ => lo + self.unit() * (hi - lo),
+            };
+            q.push(value);
+        }
+        Some(q)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn configurations_start_with_the_special_angles_and_repeat() {
+        let tree = kinematics_model::parse_source(
+            "planar_2r.toml",
+            "convention = \"standard\"\n[[joints]]\nname = \"a\"\na = 1.0\nlower = -1.0\nupper = 1.0\n[[joints]]\nname = \"b\"\na = 1.0\n",
+        )
+        .unwrap();
+        let first: Vec<Vec<f64>> = Configurations::new(&tree).take(200).collect();
+        assert_eq!(first[..5].iter().map(|q| q[0]).collect::<Vec<_>>(), SPECIAL_ANGLES);
+        assert_eq!(first, Configurations::new(&tree).take(200).collect::<Vec<_>>());
+        assert!(first.iter().all(|q| q.len() == 2 && (-2.0..=2.0).contains(&q[0]) || SPECIAL_ANGLES.contains(&q[0])));
+        assert!(first[5..].iter().any(|q| q[0] > 1.0) && first[5..].iter().any(|q| q[0].abs() < 1.0 && q[0] != 0.0));
+        // A continuous joint ranges over [-pi, pi] (+-1 beyond).
+        assert!(first.iter().all(|q| q[1].abs() <= PI + 1.0));
+    }
+
+    #[test]
+    fn the_tree_and_its_compiled_limits_give_the_same_stream() {
+        let limits =
+            [JointLimits { lower: -1.0, upper: 1.0 }, JointLimits { lower: f64::NEG_INFINITY, upper: f64::INFINITY }];
+        let tree = kinematics_model::parse_source(
+            "planar_2r.toml",
+            "convention = \"standard\"\n[[joints]]\nname = \"a\"\na = 1.0\nlower = -1.0\nupper = 1.0\n[[joints]]\nname = \"b\"\na = 1.0\n",
+        )
+        .unwrap();
+        let mut within = Configurations::within(&limits);
+        for q in Configurations::new(&tree).take(100) {
+            assert_eq!(within.next_array::<2>(), Some([q[0], q[1]]));
+        }
+        assert_eq!(Configurations::within(&limits).next_array::<3>(), None);
+    }
+}
