@@ -308,8 +308,9 @@ macro_rules! robot {
         // The floor of all link poses: the sin_cos pairs of every moving joint. No code that
         // computes them with this routine can be faster, so runtime all / floor all bounds the
         // speed-up over the runtime that any such code can show.
-        mode.run("floor_all_f64", |i| trig_floor(&q64[i], n_all));
-        mode.pair("generated_all_f64/floor_all_f64", &mut generated_all, |i| trig_floor(&q64[i], n_all));
+        let floor_all = |i: usize| trig_floor(&q64[i], n_all);
+        mode.run("floor_all_f64", floor_all);
+        mode.pair("generated_all_f64/floor_all_f64", &mut generated_all, floor_all);
         let mut all32 = <$ty>::link_poses_f32(&q32[0]);
         mode.run("generated_all_f32", |i| {
             all32 = <$ty>::link_poses_f32(&q32[i]);
@@ -321,7 +322,7 @@ macro_rules! robot {
         })?
         mode.run("runtime_all_f64", |i| reference.link_poses(&qs[i]));
         mode.pair("runtime_all_f64/generated_all_f64", |i| reference.link_poses(&qs[i]), &mut generated_all);
-        mode.pair("runtime_all_f64/floor_all_f64", |i| reference.link_poses(&qs[i]), |i| trig_floor(&q64[i], n_all));
+        mode.pair("runtime_all_f64/floor_all_f64", |i| reference.link_poses(&qs[i]), floor_all);
         mode.run("runtime_pose_f64", |i| reference.link_pose(&qs[i], $tip));
         let batch = inputs(&<$ty>::JOINT_LIMITS, BATCH);
         let batch: Vec<[f64; $n]> = arrays(&batch);
@@ -339,9 +340,7 @@ macro_rules! robot {
             group.throughput(Throughput::Elements(1));
         }
         if $file.ends_with(".urdf") {
-            k_crate(mode, path, $tip, &qs, &mut generated_all, |i| {
-                black_box(trig_floor(&q64[i], n_all));
-            });
+            k_crate(mode, path, $tip, &qs, &mut generated_all, floor_all);
         }
     }};
 }
@@ -353,7 +352,7 @@ fn k_crate(
     tip: &str,
     qs: &[Vec<f64>],
     generated_all: impl FnMut(usize),
-    floor_all: impl FnMut(usize),
+    floor_all: impl FnMut(usize) -> f64,
 ) {
     let Ok(chain) = k::Chain::<f64>::from_urdf_file(path) else { return };
     // k orders its degrees of freedom its own way; any values within range time the same work.
@@ -483,12 +482,13 @@ fn main() {
             .join("criterion");
         // A filtered run replaces the pairs it timed and keeps the last run's others.
         let path = dir.join("kinematics-paired.tsv");
-        let timed = |line: &str| line.rsplit_once('\t').is_some_and(|(id, _)| paired.contains(&format!("{id}\t")));
+        let id = |line: &str| line.rsplit_once('\t').map(|(id, _)| id.to_owned());
+        let timed: std::collections::BTreeSet<String> = paired.lines().filter_map(id).collect();
         let kept: String = match FILTER.as_deref() {
             Some(_) => std::fs::read_to_string(&path)
                 .unwrap_or_default()
                 .lines()
-                .filter(|l| !timed(l))
+                .filter(|l| id(l).is_none_or(|id| !timed.contains(&id)))
                 .map(|l| format!("{l}\n"))
                 .collect(),
             None => String::new(),
