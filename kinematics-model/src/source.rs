@@ -2,6 +2,7 @@
 
 use crate::description::Description;
 use crate::error::{LoadError, LoadErrorKind};
+use crate::exactness::ExactAngles;
 use crate::tree::KinematicTree;
 
 /// The description formats this crate reads.
@@ -41,8 +42,13 @@ impl SourceFormat {
 ///
 /// The caller reads the file (this crate does no IO), so `file` is whatever the user should see.
 pub fn parse_source(file: &str, text: &str) -> Result<KinematicTree, LoadError> {
+    parse_source_with(file, text, ExactAngles::default())
+}
+
+/// [`parse_source`] with the exactness policy `exact_angles`.
+pub fn parse_source_with(file: &str, text: &str, exact_angles: ExactAngles) -> Result<KinematicTree, LoadError> {
     let error = |kind| LoadError::new(file, kind);
     let format = SourceFormat::from_file_name(file).ok_or_else(|| error(LoadErrorKind::UnknownFormat))?;
     let description = format.parse(text).map_err(error)?;
-    KinematicTree::from_description(&description).map_err(|e| error(LoadErrorKind::Model(e)))
+    KinematicTree::from_description_with(&description, exact_angles).map_err(|e| error(LoadErrorKind::Model(e)))
 }

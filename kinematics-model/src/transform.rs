@@ -76,6 +76,16 @@ impl FixedTransform {
         self.steps.is_empty()
     }
 
+    /// Replaces every rotation angle by `f(angle)`, dropping rotations that become exactly zero.
+    pub(crate) fn map_angles(&mut self, mut f: impl FnMut(Angle) -> Angle) {
+        for step in &mut self.steps {
+            if let Elementary::Rotation(_, angle) = step {
+                *angle = f(*angle);
+            }
+        }
+        self.steps.retain(|step| !matches!(step, Elementary::Rotation(_, angle) if angle.is_zero()));
+    }
+
     /// Every number in the transform, for finiteness checks.
     pub(crate) fn numbers(&self) -> impl Iterator<Item = f64> + '_ {
         self.steps.iter().flat_map(|step| match *step {

@@ -2,6 +2,7 @@
 
 use crate::description::Description;
 use crate::error::{ModelError, ModelErrors};
+use crate::exactness::{ExactAngles, RecognisedAngle};
 use crate::joint::{Joint, JointMotion, Limits, Link};
 
 /// Index of a link in [`KinematicTree::links`].
@@ -30,6 +31,8 @@ pub struct KinematicTree {
     pub(crate) links: Vec<Link>,
     pub(crate) joints: Vec<Joint>,
     pub(crate) dof_joints: Vec<JointId>,
+    pub(crate) exact_angles: ExactAngles,
+    pub(crate) recognised: Vec<RecognisedAngle>,
 }
 
 /// The joints on the path from a base link down to a tip link.
@@ -44,9 +47,32 @@ pub struct Chain {
 }
 
 impl KinematicTree {
-    /// Checks every rule against `description` and builds the tree, or returns every fault found.
+    /// Checks every rule against `description` and builds the tree, or returns every fault found;
+    /// decimal angles are read by the default exactness policy ([`ExactAngles::default`]).
     pub fn from_description(description: &Description) -> Result<Self, ModelErrors> {
-        crate::validate::build(description)
+        Self::from_description_with(description, ExactAngles::default())
+    }
+
+    /// [`KinematicTree::from_description`] with the exactness policy `exact_angles`: the angles it
+    /// recognises as exact multiples of pi/2 are that multiple in the tree, for the runtime and
+    /// the compiler alike ([`KinematicTree::recognised_angles`] lists them).
+    pub fn from_description_with(description: &Description, exact_angles: ExactAngles) -> Result<Self, ModelErrors> {
+        let mut description = description.clone();
+        let recognised = crate::exactness::recognise(&mut description, exact_angles);
+        let mut tree = crate::validate::build(&description)?;
+        tree.exact_angles = exact_angles;
+        tree.recognised = recognised;
+        Ok(tree)
+    }
+
+    /// The exactness policy the tree was built with.
+    pub fn exact_angles(&self) -> ExactAngles {
+        self.exact_angles
+    }
+
+    /// Every angle the exactness policy changed, in description order.
+    pub fn recognised_angles(&self) -> &[RecognisedAngle] {
+        &self.recognised
     }
 
     /// Robot name.

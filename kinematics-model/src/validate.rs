@@ -294,7 +294,14 @@ fn assemble(d: &Description) -> KinematicTree {
             }
         })
         .collect();
-    KinematicTree { name: d.name.clone(), links, joints, dof_joints }
+    KinematicTree {
+        name: d.name.clone(),
+        links,
+        joints,
+        dof_joints,
+        exact_angles: crate::exactness::ExactAngles::Off,
+        recognised: Vec::new(),
+    }
 }
 
 /// Follows a mimic chain to its independent source, composing `m * q + o` along the way.
