@@ -38,7 +38,10 @@ pub use kinematics_derive::Kinematics;
 pub use kinematics_model as model;
 pub use kinematics_model::{KinematicTree, LoadError, LoadErrorKind};
 pub use kinematics_runtime as runtime;
-pub use kinematics_runtime::{Configurations, JointLimits, Kinematics, Pose, Real, ReferenceFk, RuntimeError};
+pub use kinematics_runtime::{
+    AGREEMENT_TOLERANCE, AGREEMENT_TOLERANCE_F32, Configurations, JointLimits, Kinematics, Pose, Real, ReferenceFk,
+    RuntimeError,
+};
 
 /// Reads and validates a robot description file: `.urdf`/`.xml` (URDF), `.toml` or `.json` (DH table).
 ///

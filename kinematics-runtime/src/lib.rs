@@ -36,5 +36,5 @@ pub use compiled::{JointLimits, Kinematics, check_output, q_array};
 pub use error::RuntimeError;
 pub use fk::{ReferenceFk, fixed_isometry};
 pub use kinematics_model;
-pub use real::{Pose, Real};
+pub use real::{AGREEMENT_TOLERANCE, AGREEMENT_TOLERANCE_F32, Pose, Real};
 pub use sample::{Configurations, SPECIAL_ANGLES};

@@ -109,26 +109,53 @@ impl Pose<f64> {
 
     /// How far this pose is from `reference`: the largest translation difference divided by
     /// `reach` (the robot's size), or the largest difference of a rotation-matrix entry, whichever
-    /// is larger. Generated code is held to this against the runtime reference.
+    /// is larger. Generated code is held to this against the runtime reference
+    /// ([`AGREEMENT_TOLERANCE`]).
+    ///
+    /// A NaN or infinite entry on either side (or a reach that is not finite and positive) is
+    /// infinitely far: no check built on this can pass on a pose that is not a number.
     ///
     /// ```
     /// use kinematics_runtime::Pose;
     /// let pose = Pose { rotation: [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]], translation: [2.0, 0.0, 0.0] };
     /// let reference = nalgebra::Isometry3::translation(2.0, 0.0, 1e-9);
     /// assert!((pose.deviation(&reference, 2.0) - 0.5e-9).abs() < 1e-18);
+    /// let broken = Pose { translation: [f64::NAN, 0.0, 0.0], ..pose };
+    /// assert_eq!(broken.deviation(&reference, 2.0), f64::INFINITY);
     /// ```
     pub fn deviation(&self, reference: &Isometry3<f64>, reach: f64) -> f64 {
+        if !(reach.is_finite() && reach > 0.0) {
+            return f64::INFINITY;
+        }
         let r = reference.rotation.to_rotation_matrix();
         let mut worst: f64 = 0.0;
         for i in 0..3 {
-            worst = worst.max((self.translation[i] - reference.translation.vector[i]).abs() / reach);
+            let mut differences = [(self.translation[i] - reference.translation.vector[i]).abs() / reach; 4];
             for j in 0..3 {
-                worst = worst.max((self.rotation[i][j] - r[(i, j)]).abs());
+                differences[j + 1] = (self.rotation[i][j] - r[(i, j)]).abs();
+            }
+            for d in differences {
+                // `f64::max` would drop a NaN: a difference that is not a finite number is the
+                // largest there is.
+                if !d.is_finite() {
+                    return f64::INFINITY;
+                }
+                worst = worst.max(d);
             }
         }
         worst
     }
 }
+
+/// Agreement required of generated `f64` code against the runtime reference, as a
+/// [`Pose::deviation`]: translations within this times the reach, rotation entries within this.
+/// Every agreement check (tests, `kinematics check`, the examples, the benchmark's check mode)
+/// uses this one value.
+pub const AGREEMENT_TOLERANCE: f64 = 1e-12;
+
+/// Agreement required of generated `f32` code, as a [`Pose::deviation`] of its poses widened to
+/// `f64` (single precision carries about 7 significant digits, and errors grow along a chain).
+pub const AGREEMENT_TOLERANCE_F32: f64 = 1e-5;
 
 impl<T: Real + RealField> From<Pose<T>> for Isometry3<T> {
     fn from(pose: Pose<T>) -> Self {
