@@ -53,6 +53,11 @@ impl PiRational {
         self.num as f64 * std::f64::consts::PI / self.den as f64
     }
 
+    /// Exact negation, `None` on overflow.
+    pub fn checked_neg(self) -> Option<Self> {
+        Some(Self { num: self.num.checked_neg()?, den: self.den })
+    }
+
     /// Exact sum, `None` on overflow.
     pub fn checked_add(self, other: Self) -> Option<Self> {
         let num = self.num.checked_mul(other.den)?.checked_add(other.num.checked_mul(self.den)?)?;

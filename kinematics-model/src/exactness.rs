@@ -8,9 +8,11 @@
 //!
 //! **Policy** ([`ExactAngles::default`]): a constant rotation angle of a fixed transform (a URDF
 //! `<origin rpy>`, a DH `alpha`, `theta` or revolute `offset`) written as a number is read as the
-//! multiple of pi/2 nearest to it when it lies within [`DEFAULT_TOLERANCE`] (1e-9 rad) of it and
-//! within [`RANGE`] (64 pi) of zero. So `3.14159265359`, `1.57079632679` and `1.570796327` (2e-10
-//! off) become exact; `1.5708` (7e-6 off) and `1.5707963` (3e-8 off) stay as written. Angles
+//! multiple of pi/2 nearest to it when it lies within [`DEFAULT_TOLERANCE`] (1e-8 rad) of it and
+//! within [`RANGE`] (64 pi) of zero. So `3.14159265359` (xacro's output, 2e-13 off), `1.57079632679`
+//! (5e-12 off) and the truncated `3.14159265` of some expanded ROS files (4e-9 off) become exact;
+//! `1.5708` (7e-6 off), `1.570796` (3e-7 off) and `1.5707963` (3e-8 off) stay as written. At a
+//! metre from the axis, 1e-8 rad is 10 nm: below any calibration, far above rounding. Angles
 //! written exactly (`"pi/2"`, whole degrees) are exact under any policy. Mimic offsets, joint
 //! values and every length are used as written. [`ExactAngles::Off`] reads every angle as written.
 //! The tree keeps the list of angles it changed ([`crate::KinematicTree::recognised_angles`]).
@@ -19,7 +21,7 @@ use crate::angle::{Angle, PiRational};
 use crate::description::Description;
 
 /// Angles within this many radians of a multiple of pi/2 are that multiple (the default policy).
-pub const DEFAULT_TOLERANCE: f64 = 1e-9;
+pub const DEFAULT_TOLERANCE: f64 = 1e-8;
 
 /// Angles farther than this from zero are never recognised: past a few turns nobody means a
 /// quarter turn, and for huge values the nearest multiple of pi/2 is no longer computed exactly.
@@ -118,6 +120,8 @@ mod tests {
         assert_eq!(quarters(on, -3.14159265359), Some(-2));
         assert_eq!(quarters(on, 1.57079632679), Some(1));
         assert_eq!(quarters(on, 1.570796327), Some(1));
+        assert_eq!(quarters(on, 3.14159265), Some(2));
+        assert_eq!(quarters(on, 1.570796325), Some(1));
         assert_eq!(quarters(on, -1.5707963267948966), Some(-1));
         assert_eq!(quarters(on, 4.71238898038), Some(3));
         assert_eq!(quarters(on, 6.28318530718), Some(4));
@@ -128,7 +132,7 @@ mod tests {
     #[test]
     fn decimals_meant_as_numbers_stay() {
         let on = ExactAngles::default();
-        for x in [1.5708, 3.1416, 1.5707963, 3.14159, 0.5, 1e-6, -2.0, 0.785398163397] {
+        for x in [1.5708, 3.1416, 1.570796, 1.5707963, 3.1415927, 3.14159, 0.5, 1e-6, 2e-8, -2.0, 0.785398163397] {
             assert_eq!(on.recognise(x), None, "{x}");
         }
     }

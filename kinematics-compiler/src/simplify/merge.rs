@@ -1,7 +1,7 @@
 //! Rules `axis-sign`, `merge-rotations` and `combine-translations`.
 
 use crate::symbolic::angle::LinearAngle;
-use crate::symbolic::graph::{ExprGraph, ExprId, exact_sin_cos};
+use crate::symbolic::graph::{ExprGraph, ExprId};
 use crate::symbolic::step::{Step, axis_aligned, parallel};
 use crate::symbolic::transform::vec_add;
 
@@ -56,7 +56,7 @@ pub fn merge_rotations(g: &ExprGraph, steps: Vec<Step>, options: super::Options)
 
 /// One angle is a constant that is not a whole number of quarter turns, the other moves.
 fn mixes_numeric_constant(a: &LinearAngle, b: &LinearAngle) -> bool {
-    let numeric = |x: &LinearAngle| x.is_constant() && exact_sin_cos(x.constant_radians()).is_none();
+    let numeric = |x: &LinearAngle| x.is_constant() && !x.is_quarter_turns();
     (numeric(a) && !b.is_constant()) || (numeric(b) && !a.is_constant())
 }
 

@@ -1,12 +1,13 @@
 //! Rules `quarter-turn` and `push-quarter-turns`.
 
-use crate::symbolic::graph::{ExprGraph, exact_sin_cos};
+use crate::symbolic::angle::LinearAngle;
+use crate::symbolic::graph::ExprGraph;
 use crate::symbolic::step::{SignedPerm, Step};
 
 /// The numeric matrix of a constant rotation by `angle` about the unit `axis` (Rodrigues), with
-/// exact entries for quarter turns.
-pub(crate) fn constant_rotation(axis: [f64; 3], angle: f64) -> [[f64; 3]; 3] {
-    let (s, c) = exact_sin_cos(angle).unwrap_or((angle.sin(), angle.cos()));
+/// exact entries for exact quarter turns.
+pub(crate) fn constant_rotation(axis: [f64; 3], angle: &LinearAngle) -> [[f64; 3]; 3] {
+    let (s, c) = angle.constant_sin_cos();
     let u = axis;
     let omc = 1.0 - c;
     let skew = [[0.0, -u[2], u[1]], [u[2], 0.0, -u[0]], [-u[1], u[0], 0.0]];
@@ -27,7 +28,7 @@ pub fn quarter_turns(steps: Vec<Step>) -> Vec<Step> {
         .into_iter()
         .filter_map(|step| match step {
             Step::Rotate { axis, angle } if angle.is_constant() => {
-                let m = constant_rotation(axis, angle.constant_radians());
+                let m = constant_rotation(axis, &angle);
                 match SignedPerm::from_matrix(m) {
                     Some(p) if p == SignedPerm::IDENTITY => None,
                     Some(p) => Some(Step::Permute(p)),

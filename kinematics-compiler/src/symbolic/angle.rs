@@ -2,7 +2,7 @@
 
 use kinematics_model::PiRational;
 
-use super::graph::{ExprGraph, ExprId, exact_sin_cos};
+use super::graph::{ExprGraph, ExprId};
 
 /// An angle `sum(coefficient * q[dof]) + exact * pi + numeric`.
 ///
@@ -69,30 +69,54 @@ impl LinearAngle {
         LinearAngle { terms, exact, numeric }
     }
 
-    /// The negated angle.
+    /// The negated angle (exactly: a constant part whose negation would overflow moves to the
+    /// numeric part, which only happens past any angle a description can write).
     pub fn negated(&self) -> LinearAngle {
-        LinearAngle {
-            terms: self.terms.iter().map(|&(d, k)| (d, -k)).collect(),
-            exact: PiRational::new(-self.exact.num(), self.exact.den()).unwrap_or(self.exact),
-            numeric: -self.numeric,
+        let terms = self.terms.iter().map(|&(d, k)| (d, -k)).collect();
+        match self.exact.checked_neg() {
+            Some(exact) => LinearAngle { terms, exact, numeric: -self.numeric },
+            None => LinearAngle { terms, exact: PiRational::ZERO, numeric: -(self.numeric + self.exact.radians()) },
         }
     }
 
-    /// The number of quarter turns in the constant part, when it is (within the exactness
-    /// tolerance) a multiple of pi/2; the rest of the constant is then zero.
+    /// The number of quarter turns in the exact part, when it is a whole number of them.
+    ///
+    /// Only an exact part counts: the model's exactness policy decided which written angles are
+    /// exact, so the compiler never rounds a number (the runtime reference computes with the same
+    /// angles, and the two always describe the same robot).
     fn quarter_turns(&self) -> Option<i64> {
-        let c = self.constant_radians();
-        exact_sin_cos(c)?;
-        Some((c / std::f64::consts::FRAC_PI_2).round() as i64)
+        match self.exact.den() {
+            1 => self.exact.num().checked_mul(2),
+            2 => Some(self.exact.num()),
+            _ => None,
+        }
+    }
+
+    /// Whether the angle is a constant whole number of quarter turns (its rotation is a signed
+    /// permutation).
+    pub fn is_quarter_turns(&self) -> bool {
+        self.is_constant() && self.numeric == 0.0 && self.quarter_turns().is_some()
+    }
+
+    /// `(sin, cos)` of a constant angle: exact for whole quarter turns, and a quarter-turn
+    /// exact part is taken out exactly otherwise (`sin(pi/2 + x) = cos x`).
+    pub fn constant_sin_cos(&self) -> (f64, f64) {
+        match self.quarter_turns() {
+            Some(k) => rotate_quarters(k, self.numeric.sin(), self.numeric.cos()),
+            None => {
+                let x = self.constant_radians();
+                (x.sin(), x.cos())
+            }
+        }
     }
 
     /// `(sin, cos)` of the angle as graph nodes.
     ///
-    /// A constant part that is a whole number of quarter turns is taken out exactly
+    /// An exact part that is a whole number of quarter turns is taken out exactly
     /// (`sin(x + pi/2) = cos x`), so `q` and `q + pi/2` share one `sin_cos`.
     pub fn sin_cos(&self, g: &mut ExprGraph) -> (ExprId, ExprId) {
-        let quarters = if self.is_constant() { None } else { self.quarter_turns() };
-        let constant = if quarters.is_some() { 0.0 } else { self.constant_radians() };
+        let quarters = self.quarter_turns();
+        let constant = if quarters.is_some() { self.numeric } else { self.constant_radians() };
         let mut sum: Option<ExprId> = None;
         for &(dof, k) in &self.terms {
             let q = g.var(dof);
@@ -117,5 +141,78 @@ impl LinearAngle {
             Some(3) => (g.neg(c), s),
             _ => (s, c),
         }
+    }
+}
+
+/// `(sin, cos)` of `k` quarter turns plus an angle whose sine and cosine are `s` and `c`.
+fn rotate_quarters(k: i64, s: f64, c: f64) -> (f64, f64) {
+    match k.rem_euclid(4) {
+        0 => (s, c),
+        1 => (c, -s),
+        2 => (-s, -c),
+        _ => (-c, s),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use kinematics_model::Angle;
+    use std::f64::consts::{FRAC_PI_2, PI};
+
+    fn exact(num: i64, den: i64) -> LinearAngle {
+        LinearAngle::constant(Angle::Exact(PiRational::new(num, den).unwrap()))
+    }
+
+    #[test]
+    fn exact_quarter_turns_have_exact_sines() {
+        for (k, s, c) in [(0, 0.0, 1.0), (1, 1.0, 0.0), (2, 0.0, -1.0), (3, -1.0, 0.0), (-1, -1.0, 0.0), (5, 1.0, 0.0)]
+        {
+            let angle = exact(k, 2);
+            assert!(angle.is_quarter_turns());
+            assert_eq!(angle.constant_sin_cos(), (s, c), "{k} quarter turns");
+        }
+    }
+
+    #[test]
+    fn numbers_are_never_rounded() {
+        // The compiler takes numbers as written: the nearest f64 to pi/2 is not the quarter turn
+        // (the model's exactness policy is where a written angle becomes exact).
+        for x in [FRAC_PI_2, PI, 1.57079632679, 3.14159265359, 1.5708] {
+            let angle = LinearAngle::constant(Angle::Radians(x));
+            assert!(!angle.is_quarter_turns(), "{x}");
+            assert_eq!(angle.constant_sin_cos(), (x.sin(), x.cos()), "{x}");
+        }
+    }
+
+    #[test]
+    fn a_quarter_turn_part_is_taken_out_exactly() {
+        let angle = exact(1, 2).plus(&LinearAngle::constant(Angle::Radians(0.25)));
+        assert!(!angle.is_quarter_turns());
+        assert_eq!(angle.constant_sin_cos(), (0.25f64.cos(), -0.25f64.sin()));
+        let third = exact(1, 3);
+        assert_eq!(third.constant_sin_cos(), ((PI / 3.0).sin(), (PI / 3.0).cos()));
+    }
+
+    #[test]
+    fn negation_is_exact() {
+        let angle = exact(3, 2).plus(&LinearAngle::joint(0, 2.0, 0.5));
+        let negated = angle.negated();
+        assert_eq!(negated.terms(), &[(0, -2.0)]);
+        assert_eq!(negated.constant_radians(), -angle.constant_radians());
+        assert_eq!(negated.negated(), angle);
+    }
+
+    #[test]
+    fn joint_sin_cos_shares_the_joint_angle() {
+        let mut g = ExprGraph::new();
+        let plain = LinearAngle::joint(0, 1.0, 0.0).sin_cos(&mut g);
+        let shifted = LinearAngle::joint(0, 1.0, 0.0).plus(&exact(1, 2)).sin_cos(&mut g);
+        // sin(q + pi/2) = cos q, cos(q + pi/2) = -sin q
+        assert_eq!(shifted.0, plain.1);
+        assert_eq!(shifted.1, g.neg(plain.0));
+        // A decimal near pi/2 is a different angle.
+        let decimal = LinearAngle::joint(0, 1.0, 1.57079632679).sin_cos(&mut g);
+        assert_ne!(decimal.0, plain.1);
     }
 }

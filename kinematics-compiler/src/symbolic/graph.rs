@@ -53,23 +53,6 @@ pub enum Node {
     Neg(ExprId),
 }
 
-/// Exact sine and cosine for angles within this distance of a multiple of pi/2.
-pub const EXACT_ANGLE_TOLERANCE: f64 = 1e-12;
-
-/// The exact `(sin, cos)` of `angle` if it lies within [`EXACT_ANGLE_TOLERANCE`] of a multiple of pi/2.
-pub fn exact_sin_cos(angle: f64) -> Option<(f64, f64)> {
-    let quarter = (angle / std::f64::consts::FRAC_PI_2).round();
-    if (angle - quarter * std::f64::consts::FRAC_PI_2).abs() > EXACT_ANGLE_TOLERANCE || !quarter.is_finite() {
-        return None;
-    }
-    Some(match (quarter as i64).rem_euclid(4) {
-        0 => (0.0, 1.0),
-        1 => (1.0, 0.0),
-        2 => (0.0, -1.0),
-        _ => (-1.0, 0.0),
-    })
-}
-
 /// A hash-consed arena of expressions.
 #[derive(Debug, Clone, Default)]
 pub struct ExprGraph {
@@ -233,11 +216,12 @@ impl ExprGraph {
         self.intern(Node::Mul(x, y))
     }
 
-    /// `sin(a)` (rules `sin-exact`, `sin-neg`).
+    /// `sin(a)` (rules `sin-const`, `sin-neg`). A constant folds to its sine as `f64` computes
+    /// it, never rounded to a quarter turn's: exact angles are exact before they reach the graph
+    /// ([`crate::symbolic::angle::LinearAngle::sin_cos`]).
     pub fn sin(&mut self, a: ExprId) -> ExprId {
         if let Some(x) = self.as_const(a) {
-            let s = exact_sin_cos(x).map_or(x.sin(), |(s, _)| s);
-            return self.constant(s);
+            return self.constant(x.sin());
         }
         let (negated, inner) = self.unneg(a);
         if negated {
@@ -247,11 +231,10 @@ impl ExprGraph {
         self.intern(Node::Sin(a))
     }
 
-    /// `cos(a)` (rules `cos-exact`, `cos-neg`).
+    /// `cos(a)` (rules `cos-const`, `cos-neg`), constants folded as [`ExprGraph::sin`] does.
     pub fn cos(&mut self, a: ExprId) -> ExprId {
         if let Some(x) = self.as_const(a) {
-            let c = exact_sin_cos(x).map_or(x.cos(), |(_, c)| c);
-            return self.constant(c);
+            return self.constant(x.cos());
         }
         let (_, inner) = self.unneg(a);
         self.intern(Node::Cos(inner))
@@ -280,7 +263,6 @@ impl ExprGraph {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use std::f64::consts::FRAC_PI_2;
 
     #[test]
     fn folds_zero_one_and_constants() {
@@ -322,24 +304,16 @@ mod tests {
 
     #[test]
     #[allow(clippy::approx_constant)] // the point: near-pi/2 decimals as URDF files write them
-    fn exact_trig_of_quarter_turns() {
+    fn constant_trig_folds_as_f64_computes_it() {
         let mut g = ExprGraph::new();
-        for (angle, s, c) in [
-            (std::f64::consts::FRAC_PI_2, 1.0, 0.0),
-            (-std::f64::consts::PI, 0.0, -1.0),
-            (1.5707963267948966, 1.0, 0.0),
-            (FRAC_PI_2 + 0.9e-12, 1.0, 0.0),
-        ] {
+        for angle in [0.0, std::f64::consts::FRAC_PI_2, -std::f64::consts::PI, 1.57079632679, 1.5708] {
             let a = g.constant(angle);
             let (sa, ca) = (g.sin(a), g.cos(a));
-            assert!(g.is_const(sa, s) && g.is_const(ca, c), "{angle}");
+            assert!(g.is_const(sa, angle.sin()) && g.is_const(ca, angle.cos()), "{angle}");
         }
-        // 1.5708 is not pi/2, nor is anything more than 1e-12 away.
-        for angle in [1.5708, FRAC_PI_2 + 2e-12] {
-            let a = g.constant(angle);
-            let c = g.cos(a);
-            assert!(!g.is_const(c, 0.0), "{angle}");
-        }
+        let zero = g.constant(0.0);
+        let (s0, c0) = (g.sin(zero), g.cos(zero));
+        assert!(g.is_const(s0, 0.0) && g.is_const(c0, 1.0));
     }
 
     #[test]
