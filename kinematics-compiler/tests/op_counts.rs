@@ -30,9 +30,11 @@ fn short(c: OpCount) -> String {
     format!("{}/{}/{}", c.sin_cos, c.mul, c.add)
 }
 
-#[test]
-fn table_of_every_robot() {
-    println!("sin_cos/mul/add per robot (tip pose: generated | plain product; position only; all links)");
+/// The table the README prints: one markdown row per robot in `robots/`.
+fn table() -> String {
+    let mut rows = String::from(
+        "| robot | DoF | tip | generated | plain product | position only | all links |\n|---|---|---|---|---|---|---|\n",
+    );
     for file in robots() {
         let tree = common::robot(&file);
         let tip = end_effector(&tree);
@@ -40,16 +42,40 @@ fn table_of_every_robot() {
         let position = compile(&tree, &Request::tip(&tip).positions_only()).unwrap().op_count();
         let all = compile(&tree, &Request::all_links()).unwrap().op_count();
         let plain = plain_product_count(&tree, tree.link(tree.root()).name.as_str(), &tip).unwrap();
-        println!(
-            "| {file:<24} | {:>2} | {tip:<20} | {:>12} | {:>12} | {:>12} | {:>13} |",
+        rows.push_str(&format!(
+            "| {file} | {} | {tip} | {} | {} | {} | {} |\n",
             tree.dof(),
             short(pose),
             short(plain),
             short(position),
             short(all)
-        );
+        ));
         assert!(pose.mul <= plain.mul && pose.add <= plain.add + tree.dof(), "{file}: {pose} vs plain {plain}");
         assert!(position.mul <= pose.mul, "{file}");
+    }
+    rows
+}
+
+/// The op counts of every robot are pinned: a compiler change that moves any of them shows in
+/// the snapshot's diff (review with `cargo insta review`, or `INSTA_UPDATE=always` and `git diff`).
+#[test]
+fn table_of_every_robot() {
+    let table = table();
+    println!("sin_cos/mul/add per robot (tip pose: generated | plain product; position only; all links)\n{table}");
+    insta::assert_snapshot!("op_counts", table);
+}
+
+/// Every row of the README's op-count table is a row of the pinned table, so the README cannot
+/// quote counts the compiler no longer produces.
+#[test]
+fn the_readme_quotes_the_pinned_table() {
+    let table = table();
+    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../README.md")).unwrap();
+    let section = readme.split("| robot | DoF | tip | generated |").nth(1).expect("the README has the op-count table");
+    let rows: Vec<&str> = section.lines().skip(2).take_while(|l| l.starts_with('|')).collect();
+    assert!(rows.len() >= 10, "{rows:?}");
+    for row in rows {
+        assert!(table.lines().any(|l| l == row), "README row `{row}` is not what the compiler produces:\n{table}");
     }
 }
 
