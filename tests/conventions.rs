@@ -5,7 +5,7 @@
 mod common;
 
 use common::pair::{Pair, related_at_zero};
-use common::{POSE_TOLERANCE, assert_pose_eq, reference};
+use common::{AGREEMENT_TOLERANCE, assert_pose_eq, reference};
 use nalgebra::{Isometry3, Translation3, UnitQuaternion, Vector3};
 use proptest::prelude::*;
 use std::f64::consts::PI;
@@ -91,9 +91,9 @@ fn ur5_frames_relate_as_published() {
     // its `base` is DH frame 0, a half turn about z from `base_link`.
     let pair = ur5_std_vs_urdf();
     let (_, _, tool) = pair.links.last().unwrap();
-    assert_pose_eq(tool, &Isometry3::identity(), POSE_TOLERANCE, "DH frame 6 vs tool0");
+    assert_pose_eq(tool, &Isometry3::identity(), AGREEMENT_TOLERANCE, "DH frame 6 vs tool0");
     let base = pair.b.relative_pose(&[0.0; 6], "base_link", "base").unwrap();
     let half_turn =
         Isometry3::from_parts(Translation3::identity(), UnitQuaternion::from_axis_angle(&Vector3::z_axis(), PI));
-    assert_pose_eq(&base, &half_turn, POSE_TOLERANCE, "base vs base_link");
+    assert_pose_eq(&base, &half_turn, AGREEMENT_TOLERANCE, "base vs base_link");
 }

@@ -6,7 +6,7 @@
 mod common;
 
 use common::pair::{Pair, related_at_zero};
-use common::{POSE_TOLERANCE, assert_pose_eq, load, reference, robot_path};
+use common::{AGREEMENT_TOLERANCE, assert_pose_eq, load, reference, robot_path};
 use kinematics::ReferenceFk;
 use kinematics::model::{JointKind, JointMotion, KinematicTree, SourceFormat};
 use nalgebra::{Isometry3, Matrix3, Rotation3, Translation3, UnitQuaternion, Vector3};
@@ -54,7 +54,7 @@ impl PandaPair {
         for (a, b) in pairs {
             let pa = self.dh.relative_pose(q, "panda_link0", &a).unwrap();
             let pb = self.urdf.relative_pose(&q_urdf, "panda_link0", &b).unwrap();
-            assert_pose_eq(&pa, &pb, POSE_TOLERANCE, &format!("{a} vs {b} at q = {q:?}"));
+            assert_pose_eq(&pa, &pb, AGREEMENT_TOLERANCE, &format!("{a} vs {b} at q = {q:?}"));
         }
     }
 }
@@ -107,7 +107,7 @@ proptest! {
         for link in ["yumi_body", "yumi_link_4_r", "tool_r", "gripper_l_finger_l", "tool_l"] {
             let before = fk.link_pose(&q, link).unwrap();
             let after = fk.link_pose(&turned, link).unwrap();
-            assert_pose_eq(&(rz(turn) * before), &after, POSE_TOLERANCE, link);
+            assert_pose_eq(&(rz(turn) * before), &after, AGREEMENT_TOLERANCE, link);
         }
     }
 
@@ -125,7 +125,7 @@ proptest! {
             }
             let r = fk.link_pose(&q, &format!("{right}_foot")).unwrap().translation.vector;
             let l = fk.link_pose(&q, &format!("{left}_foot")).unwrap().translation.vector;
-            prop_assert!((Vector3::new(r.x, -r.y, r.z) - l).norm() < POSE_TOLERANCE, "{right} {r:?} vs {left} {l:?}");
+            prop_assert!((Vector3::new(r.x, -r.y, r.z) - l).norm() < AGREEMENT_TOLERANCE, "{right} {r:?} vs {left} {l:?}");
         }
     }
 }
@@ -135,13 +135,18 @@ fn ur10e_frames_relate_as_published() {
     // ROS-Industrial's `tool0` is the DH flange frame 6 itself, and `base` is a half turn about z
     // from the REP-103 `base_link`.
     let pair = ur10e_dh_vs_urdf();
-    assert_pose_eq(&pair.relation("wrist_3_link", "tool0"), &Isometry3::identity(), POSE_TOLERANCE, "DH 6 vs tool0");
+    assert_pose_eq(
+        &pair.relation("wrist_3_link", "tool0"),
+        &Isometry3::identity(),
+        AGREEMENT_TOLERANCE,
+        "DH 6 vs tool0",
+    );
     let base = pair.b.relative_pose(&[0.0; 6], "base_link", "base").unwrap();
-    assert_pose_eq(&base, &rz(PI), POSE_TOLERANCE, "base vs base_link");
+    assert_pose_eq(&base, &rz(PI), AGREEMENT_TOLERANCE, "base vs base_link");
     // At q = 0 the flange sits at (a2 + a3, -(d4 + d6), d1 - d5) in the Base frame.
     let tool = pair.a.relative_pose(&[0.0; 6], "base", "wrist_3_link").unwrap();
     let expected = Vector3::new(-0.6127 - 0.57155, -(0.17415 + 0.11655), 0.1807 - 0.11985);
-    assert!((tool.translation.vector - expected).norm() < POSE_TOLERANCE, "{tool}");
+    assert!((tool.translation.vector - expected).norm() < AGREEMENT_TOLERANCE, "{tool}");
 }
 
 #[test]
@@ -150,13 +155,13 @@ fn iiwa14_frames_relate_as_published() {
     // DH frame 1 sits on joint 1's axis 0.2025 m above the URDF's link 1 (0.36 - 0.1575).
     let pair = iiwa14_dh_vs_urdf();
     let id = Isometry3::identity();
-    assert_pose_eq(&pair.relation("iiwa_link_7", "iiwa_link_ee_kuka"), &id, POSE_TOLERANCE, "DH 7 vs flange");
-    assert_pose_eq(&pair.relation("iiwa_link_ee", "iiwa_link_ee"), &id, POSE_TOLERANCE, "tool frames");
+    assert_pose_eq(&pair.relation("iiwa_link_7", "iiwa_link_ee_kuka"), &id, AGREEMENT_TOLERANCE, "DH 7 vs flange");
+    assert_pose_eq(&pair.relation("iiwa_link_ee", "iiwa_link_ee"), &id, AGREEMENT_TOLERANCE, "tool frames");
     let link1 = Isometry3::translation(0.0, 0.0, -0.2025);
-    assert_pose_eq(&pair.relation("iiwa_link_1", "iiwa_link_1"), &link1, POSE_TOLERANCE, "link 1");
+    assert_pose_eq(&pair.relation("iiwa_link_1", "iiwa_link_1"), &link1, AGREEMENT_TOLERANCE, "link 1");
     // Upright at q = 0: the flange is 0.36 + 0.42 + 0.4 + 0.126 = 1.306 m above the base plate.
     let flange = pair.b.relative_pose(&[0.0; 7], "iiwa_link_0", "iiwa_link_ee_kuka").unwrap();
-    assert_pose_eq(&flange, &Isometry3::translation(0.0, 0.0, 1.306), POSE_TOLERANCE, "flange at q = 0");
+    assert_pose_eq(&flange, &Isometry3::translation(0.0, 0.0, 1.306), AGREEMENT_TOLERANCE, "flange at q = 0");
 }
 
 /// Every description file in `robots/`.
@@ -253,14 +258,14 @@ fn panda_hand_and_zero_pose() {
     let fk = ReferenceFk::new(tree);
     let q = [0.0; 8];
     let flange = fk.relative_pose(&q, "panda_link0", "panda_link8").unwrap();
-    assert!((flange.translation.vector - Vector3::new(0.088, 0.0, 0.926)).norm() < POSE_TOLERANCE, "{flange}");
+    assert!((flange.translation.vector - Vector3::new(0.088, 0.0, 0.926)).norm() < AGREEMENT_TOLERANCE, "{flange}");
     // Opening the hand moves the fingers apart symmetrically along the hand's y axis.
     let mut open = q;
     open[dof_index(fk.tree(), "panda_finger_joint1")] = 0.04;
     let left = fk.relative_pose(&open, "panda_hand", "panda_leftfinger").unwrap().translation.vector;
     let right = fk.relative_pose(&open, "panda_hand", "panda_rightfinger").unwrap().translation.vector;
-    assert!((left - Vector3::new(0.0, 0.04, 0.0584)).norm() < POSE_TOLERANCE, "{left:?}");
-    assert!((right - Vector3::new(0.0, -0.04, 0.0584)).norm() < POSE_TOLERANCE, "{right:?}");
+    assert!((left - Vector3::new(0.0, 0.04, 0.0584)).norm() < AGREEMENT_TOLERANCE, "{left:?}");
+    assert!((right - Vector3::new(0.0, -0.04, 0.0584)).norm() < AGREEMENT_TOLERANCE, "{right:?}");
 }
 
 #[test]
@@ -285,7 +290,7 @@ fn gen3_joint_types_and_zero_pose() {
     let fk = ReferenceFk::new(tree);
     let ee = fk.relative_pose(&[0.0; 7], "base_link", "end_effector_link").unwrap();
     let expected = Isometry3::translation(0.0, -0.0248501, 1.187385);
-    assert_pose_eq(&ee, &expected, POSE_TOLERANCE, "end effector at q = 0");
+    assert_pose_eq(&ee, &expected, AGREEMENT_TOLERANCE, "end effector at q = 0");
 }
 
 #[test]
@@ -296,7 +301,7 @@ fn irb120_zero_pose() {
     let tool0 = fk.relative_pose(&[0.0; 6], "base", "tool0").unwrap();
     let rotation = UnitQuaternion::from_axis_angle(&Vector3::y_axis(), PI / 2.0);
     let expected = Isometry3::from_parts(Translation3::new(0.374, 0.0, 0.63), rotation);
-    assert_pose_eq(&tool0, &expected, POSE_TOLERANCE, "tool0 at q = 0");
+    assert_pose_eq(&tool0, &expected, AGREEMENT_TOLERANCE, "tool0 at q = 0");
 }
 
 #[test]
@@ -311,7 +316,7 @@ fn stanford_arm_prismatic_joint() {
     for stroke in [0.3048, 0.5, 1.27] {
         let wrist = fk.link_pose(&[0.0, 0.0, stroke, 0.0, 0.0, 0.0], "link6").unwrap();
         let expected = Vector3::new(0.0, 0.154 - 0.0203, 0.412 + stroke);
-        assert!((wrist.translation.vector - expected).norm() < POSE_TOLERANCE, "{wrist}");
+        assert!((wrist.translation.vector - expected).norm() < AGREEMENT_TOLERANCE, "{wrist}");
     }
 }
 
@@ -329,7 +334,7 @@ fn scara_points_down_and_plunges() {
         // The arm turns the downward tool frame about the vertical by q1 + q2.
         let turn = UnitQuaternion::from_axis_angle(&Vector3::z_axis(), q[0] + q[1]);
         let expected = Isometry3::from_parts(at.into(), turn * UnitQuaternion::from_rotation_matrix(&down));
-        assert_pose_eq(&tip, &expected, POSE_TOLERANCE, &format!("link4 at {q:?}"));
+        assert_pose_eq(&tip, &expected, AGREEMENT_TOLERANCE, &format!("link4 at {q:?}"));
     }
 }
 
@@ -346,7 +351,7 @@ fn quadruped_legs() {
     // Legs straight down at q = 0: the front right foot is 0.4 m below its hip, 0.0838 m outboard.
     let fk = ReferenceFk::new(tree);
     let foot = fk.link_pose(&[0.0; 12], "FR_foot").unwrap();
-    assert!((foot.translation.vector - Vector3::new(0.1805, -0.1308, -0.4)).norm() < POSE_TOLERANCE, "{foot}");
+    assert!((foot.translation.vector - Vector3::new(0.1805, -0.1308, -0.4)).norm() < AGREEMENT_TOLERANCE, "{foot}");
 }
 
 #[test]
@@ -390,7 +395,7 @@ fn humanoid_tree() {
     let fk = ReferenceFk::new(tree);
     let sole = fk.link_pose(&[0.0; 25], "l_sole").unwrap();
     let expected = Vector3::new(0.0, 0.05, -0.085 - 0.1 - 0.1029 - 0.04511);
-    assert!((sole.translation.vector - expected).norm() < POSE_TOLERANCE, "{sole}");
+    assert!((sole.translation.vector - expected).norm() < AGREEMENT_TOLERANCE, "{sole}");
     // One motor drives both hip yaw-pitch joints: moving it moves both feet.
     let mut q = vec![0.0; 25];
     q[dof_index(fk.tree(), "LHipYawPitch")] = 0.5;

@@ -272,6 +272,10 @@ impl Compiled {
 
     /// Evaluates every frame at `q` with the simplified graph (no Rust compiled): per frame, the
     /// 12 pose entries (rotation row-major, translation), whatever `position_only` says.
+    ///
+    /// # Panics
+    ///
+    /// If `q` has fewer than [`Compiled::dof`] values.
     pub fn eval(&self, q: &[f64]) -> Vec<[f64; 12]> {
         let mut values = Vec::new();
         self.frames.iter().map(|f| f.transform.entries().map(|id| self.graph.eval(id, q, &mut values))).collect()

@@ -6,8 +6,9 @@ use nalgebra::Isometry3;
 
 pub mod pair;
 
-/// Poses computed two ways must agree this closely (metres and radians) on robots of about 1 m reach.
-pub const POSE_TOLERANCE: f64 = 1e-12;
+/// Poses computed two ways must agree this closely (metres and radians) on robots of about 1 m
+/// reach: the one agreement tolerance of the project.
+pub use kinematics::AGREEMENT_TOLERANCE;
 
 /// Absolute path of a file in `robots/`.
 pub fn robot_path(file: &str) -> String {
@@ -25,11 +26,12 @@ pub fn reference(file: &str) -> ReferenceFk {
 }
 
 /// Largest difference between two poses: translation distance, and the Frobenius norm of the
-/// rotation matrices' difference.
+/// rotation matrices' difference; infinite when either is not a number (`f64::max` would drop a
+/// NaN, and a check built on it would pass).
 pub fn pose_distance(a: &Isometry3<f64>, b: &Isometry3<f64>) -> f64 {
     let dt = (a.translation.vector - b.translation.vector).norm();
     let dr = (a.rotation.to_rotation_matrix().matrix() - b.rotation.to_rotation_matrix().matrix()).norm();
-    dt.max(dr)
+    if dt.is_finite() && dr.is_finite() { dt.max(dr) } else { f64::INFINITY }
 }
 
 /// Asserts two poses agree to `tol`, with a message naming what was compared.

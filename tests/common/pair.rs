@@ -1,7 +1,7 @@
 //! Two descriptions of one robot whose frames attach to the same bodies: the fixed transform
 //! relating each pair of same-body frames, and the check that it stays fixed.
 
-use super::{POSE_TOLERANCE, assert_pose_eq};
+use super::{AGREEMENT_TOLERANCE, assert_pose_eq};
 use kinematics::ReferenceFk;
 use nalgebra::Isometry3;
 
@@ -22,7 +22,7 @@ impl Pair {
         for (la, lb, x) in &self.links {
             let pa = self.a.relative_pose(q, self.a_base, la).unwrap();
             let pb = self.b.relative_pose(q, self.b_base, lb).unwrap();
-            assert_pose_eq(&(pa * x), &pb, POSE_TOLERANCE, &format!("{la} vs {lb} at q = {q:?}"));
+            assert_pose_eq(&(pa * x), &pb, AGREEMENT_TOLERANCE, &format!("{la} vs {lb} at q = {q:?}"));
         }
     }
 

@@ -66,9 +66,25 @@ impl ExprGraph {
         Self::default()
     }
 
-    /// The id of the node at arena index `index` (which must be below [`ExprGraph::len`]).
+    /// The id of the node at arena index `index`.
+    ///
+    /// # Panics
+    ///
+    /// If `index` is not below [`ExprGraph::len`] (a caller's bug: ids come from this graph).
+    #[allow(clippy::panic, reason = "an id outside the arena is a bug of the caller, named in the message")]
     pub fn id(&self, index: usize) -> ExprId {
-        ExprId(u32::try_from(index).unwrap_or(u32::MAX))
+        if index >= self.nodes.len() {
+            panic!("node index {index} is outside the graph ({} nodes)", self.nodes.len());
+        }
+        ExprId(Self::index_u32(index))
+    }
+
+    /// An arena index as the `u32` an id holds.
+    #[allow(clippy::expect_used, reason = "an invariant of the arena, named in the message")]
+    fn index_u32(index: usize) -> u32 {
+        // A node takes 16 bytes and its memo entry more: 2^32 of them would need over 100 GB, so
+        // no graph that fits in memory reaches this.
+        u32::try_from(index).expect("the expression graph holds fewer than 2^32 nodes")
     }
 
     /// The node with this id.
@@ -90,7 +106,7 @@ impl ExprGraph {
         if let Some(&id) = self.memo.get(&node) {
             return id;
         }
-        let id = ExprId(u32::try_from(self.nodes.len()).unwrap_or(u32::MAX));
+        let id = ExprId(Self::index_u32(self.nodes.len()));
         self.nodes.push(node);
         self.memo.insert(node, id);
         id
@@ -116,7 +132,8 @@ impl ExprGraph {
 
     /// The joint variable `q[index]`.
     pub fn var(&mut self, index: usize) -> ExprId {
-        self.intern(Node::Var(u32::try_from(index).unwrap_or(u32::MAX)))
+        // A degree of freedom is a joint of the model: fewer than 2^32 of them fit in memory.
+        self.intern(Node::Var(Self::index_u32(index)))
     }
 
     /// `-a` (rule `neg-neg`, `neg-const`).
@@ -241,6 +258,11 @@ impl ExprGraph {
     }
 
     /// Evaluates `id` at `q`, memoising every node below it in `values` (one slot per node).
+    ///
+    /// # Panics
+    ///
+    /// If `q` is shorter than a variable of the expression needs (a caller's bug: the caller
+    /// checks `q` against the robot's degrees of freedom).
     pub fn eval(&self, id: ExprId, q: &[f64], values: &mut Vec<Option<f64>>) -> f64 {
         values.resize(self.nodes.len(), None);
         if let Some(v) = values[id.index()] {
@@ -248,7 +270,7 @@ impl ExprGraph {
         }
         let v = match self.node(id) {
             Node::Const(c) => c.value(),
-            Node::Var(i) => q.get(i as usize).copied().unwrap_or(f64::NAN),
+            Node::Var(i) => q[i as usize],
             Node::Sin(a) => self.eval(a, q, values).sin(),
             Node::Cos(a) => self.eval(a, q, values).cos(),
             Node::Add(a, b) => self.eval(a, q, values) + self.eval(b, q, values),
