@@ -5,6 +5,11 @@ use crate::symbolic::graph::ExprGraph;
 use crate::symbolic::step::{Step, parallel};
 use crate::symbolic::transform::{mat_vec, rotation_matrix};
 
+use super::ChainPass;
+
+/// Pass `angle-sum` ([`angle_sums`]).
+pub const ANGLE_SUM: ChainPass = ChainPass { name: "angle-sum", run: angle_sums };
+
 /// Every joint variable of `b` already appears in `a`.
 fn adds_no_variable(a: &LinearAngle, b: &LinearAngle) -> bool {
     b.terms().iter().all(|(dof, _)| a.terms().iter().any(|(d, _)| d == dof))
@@ -12,7 +17,7 @@ fn adds_no_variable(a: &LinearAngle, b: &LinearAngle) -> bool {
 
 /// `R(u, a) T(v1) ... T(vk) R(+-u, b) = T(R(u, a) v1) ... T(R(u, a) vk) R(u, a +- b)`, applied left
 /// to right so runs of parallel joints collapse into one rotation by the total angle.
-pub fn angle_sums(g: &mut ExprGraph, steps: Vec<Step>, options: super::Options) -> Vec<Step> {
+fn angle_sums(g: &mut ExprGraph, steps: Vec<Step>, options: super::Options) -> Vec<Step> {
     let mut out: Vec<Step> = Vec::with_capacity(steps.len());
     for step in steps {
         if let Step::Rotate { axis, angle } = &step {

@@ -11,9 +11,31 @@ use std::collections::BTreeMap;
 
 use crate::stats::reachable;
 use crate::symbolic::graph::{ExprGraph, ExprId, Node};
+use crate::symbolic::transform::SymTransform;
+
+use super::ExprPass;
+
+/// Pass `common-factor` ([`factor_common`] over every output of the poses: the translations, and
+/// the rotations unless only positions are wanted).
+pub const COMMON_FACTOR: ExprPass = ExprPass { name: "common-factor", run: factor_frames };
+
+fn factor_frames(g: &mut ExprGraph, frames: &mut [SymTransform], position_only: bool) {
+    let per_frame = if position_only { 3 } else { 12 };
+    let outputs: Vec<ExprId> =
+        frames.iter().flat_map(|t| if position_only { t.p.to_vec() } else { t.entries().to_vec() }).collect();
+    let factored = factor_common(g, &outputs);
+    for (t, new) in frames.iter_mut().zip(factored.chunks(per_frame)) {
+        if position_only {
+            t.p = [new[0], new[1], new[2]];
+        } else {
+            t.r = [[new[0], new[1], new[2]], [new[3], new[4], new[5]], [new[6], new[7], new[8]]];
+            t.p = [new[9], new[10], new[11]];
+        }
+    }
+}
 
 /// Rewrites `outputs` (new ids in the same graph; the old nodes stay, unreachable).
-pub fn factor_common(g: &mut ExprGraph, outputs: &[ExprId]) -> Vec<ExprId> {
+fn factor_common(g: &mut ExprGraph, outputs: &[ExprId]) -> Vec<ExprId> {
     let nodes = reachable(g, outputs.iter().copied());
     let mut uses = vec![0usize; g.len()];
     // The user of each node (meaningful for nodes used once).

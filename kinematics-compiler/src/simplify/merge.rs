@@ -5,8 +5,20 @@ use crate::symbolic::graph::{ExprGraph, ExprId};
 use crate::symbolic::step::{Step, axis_aligned, parallel};
 use crate::symbolic::transform::vec_add;
 
+use super::ChainPass;
+
+/// Pass `axis-sign` ([`normalize_axes`]).
+pub const AXIS_SIGN: ChainPass = ChainPass { name: "axis-sign", run: |_, steps, _| normalize_axes(steps) };
+
+/// Pass `merge-rotations` ([`merge_rotations`]).
+pub const MERGE_ROTATIONS: ChainPass = ChainPass { name: "merge-rotations", run: |g, steps, options| merge_rotations(g, steps, options) };
+
+/// Pass `combine-translations` ([`combine_translations`]).
+pub const COMBINE_TRANSLATIONS: ChainPass =
+    ChainPass { name: "combine-translations", run: |g, steps, _| combine_translations(g, steps) };
+
 /// Rule `axis-sign`: `R(-e, a) = R(e, -a)` for a coordinate axis `e`.
-pub fn normalize_axes(steps: Vec<Step>) -> Vec<Step> {
+fn normalize_axes(steps: Vec<Step>) -> Vec<Step> {
     steps
         .into_iter()
         .map(|step| match step {
@@ -28,7 +40,7 @@ pub(crate) fn along(g: &ExprGraph, v: &[ExprId; 3], axis: [f64; 3]) -> bool {
 }
 
 /// Rule `merge-rotations`: `R(u, a) T(v along u)* R(+-u, b) = T(v)* R(u, a +- b)`.
-pub fn merge_rotations(g: &ExprGraph, steps: Vec<Step>, options: super::Options) -> Vec<Step> {
+fn merge_rotations(g: &ExprGraph, steps: Vec<Step>, options: super::Options) -> Vec<Step> {
     let mut out: Vec<Step> = Vec::with_capacity(steps.len());
     for step in steps {
         if let Step::Rotate { axis, angle } = &step {
@@ -61,7 +73,7 @@ fn mixes_numeric_constant(a: &LinearAngle, b: &LinearAngle) -> bool {
 }
 
 /// Rule `combine-translations`: `T(a) T(b) = T(a + b)`.
-pub fn combine_translations(g: &mut ExprGraph, steps: Vec<Step>) -> Vec<Step> {
+fn combine_translations(g: &mut ExprGraph, steps: Vec<Step>) -> Vec<Step> {
     let mut out: Vec<Step> = Vec::with_capacity(steps.len());
     for step in steps {
         if let Step::Translate(v) = &step

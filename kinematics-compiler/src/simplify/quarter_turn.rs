@@ -4,9 +4,18 @@ use crate::symbolic::angle::LinearAngle;
 use crate::symbolic::graph::ExprGraph;
 use crate::symbolic::step::{SignedPerm, Step};
 
+use super::ChainPass;
+
+/// Pass `quarter-turn` ([`quarter_turns`]).
+pub const QUARTER_TURN: ChainPass = ChainPass { name: "quarter-turn", run: |_, steps, _| quarter_turns(steps) };
+
+/// Pass `push-quarter-turns` ([`push_quarter_turns`]).
+pub const PUSH_QUARTER_TURNS: ChainPass =
+    ChainPass { name: "push-quarter-turns", run: |g, steps, _| push_quarter_turns(g, steps) };
+
 /// The numeric matrix of a constant rotation by `angle` about the unit `axis` (Rodrigues), with
 /// exact entries for exact quarter turns.
-pub(crate) fn constant_rotation(axis: [f64; 3], angle: &LinearAngle) -> [[f64; 3]; 3] {
+fn constant_rotation(axis: [f64; 3], angle: &LinearAngle) -> [[f64; 3]; 3] {
     let (s, c) = angle.constant_sin_cos();
     let u = axis;
     let omc = 1.0 - c;
@@ -23,7 +32,7 @@ pub(crate) fn constant_rotation(axis: [f64; 3], angle: &LinearAngle) -> [[f64; 3
 }
 
 /// Rule `quarter-turn`: constant rotations become signed permutations or numeric matrices.
-pub fn quarter_turns(steps: Vec<Step>) -> Vec<Step> {
+fn quarter_turns(steps: Vec<Step>) -> Vec<Step> {
     steps
         .into_iter()
         .filter_map(|step| match step {
@@ -46,7 +55,7 @@ fn mat_mul(a: [[f64; 3]; 3], b: [[f64; 3]; 3]) -> [[f64; 3]; 3] {
 
 /// Rule `push-quarter-turns`: moves every signed permutation to the end, conjugating the steps
 /// it passes: `P R(u, a) = R(P u, a) P`, `P T(v) = T(P v) P`, `P C = (P C P^T) P`.
-pub fn push_quarter_turns(g: &mut ExprGraph, steps: Vec<Step>) -> Vec<Step> {
+fn push_quarter_turns(g: &mut ExprGraph, steps: Vec<Step>) -> Vec<Step> {
     let mut carried = SignedPerm::IDENTITY;
     let mut out = Vec::with_capacity(steps.len());
     for step in steps {

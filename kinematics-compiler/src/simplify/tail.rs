@@ -3,12 +3,17 @@
 use crate::symbolic::graph::ExprGraph;
 use crate::symbolic::step::Step;
 
+use super::ChainPass;
 use super::merge::along;
+
+/// Pass `translation-to-tail` ([`translations_to_tail`]).
+pub const TRANSLATION_TO_TAIL: ChainPass =
+    ChainPass { name: "translation-to-tail", run: |g, steps, _| translations_to_tail(g, steps) };
 
 /// `T(v) R(u, a) = R(u, a) T(v)` when `v` lies along `u`: moves translations towards the tool, so
 /// that the tool's offset is added last as `R v`, reusing the entries of the pose's rotation
 /// instead of being carried through every joint.
-pub fn translations_to_tail(g: &ExprGraph, mut steps: Vec<Step>) -> Vec<Step> {
+fn translations_to_tail(g: &ExprGraph, mut steps: Vec<Step>) -> Vec<Step> {
     let mut changed = true;
     while changed {
         changed = false;
