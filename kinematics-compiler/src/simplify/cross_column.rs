@@ -6,7 +6,8 @@ use crate::symbolic::transform::SymTransform;
 
 use super::ExprPass;
 
-/// Pass `cross-column` ([`cheapest_columns`], for a single pose whose rotation is an output).
+/// Pass `cross-column`: for a single pose whose rotation is an output, the column cheapest to
+/// derive from the other two becomes their cross product, when that saves work.
 pub const CROSS_COLUMN: ExprPass = ExprPass { name: "cross-column", run: cross_column };
 
 fn cross_column(g: &mut ExprGraph, frames: &mut [SymTransform], position_only: bool) {
@@ -40,4 +41,37 @@ fn cheapest_columns(g: &mut ExprGraph, t: SymTransform) -> SymTransform {
         }
     }
     best.1
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::testing::check_frames;
+    use super::*;
+
+    /// Columns `(0, 0, sin(q3))`, `(q1, q4, 0)`, `(q2, q5, 0)`: the first costs a `sin_cos`, the
+    /// cross product of the other two `q1*q5 - q2*q4`.
+    const COSTLY_FIRST_COLUMN: &str = "[0, q1, q2, 0, q4, q5, sin(q3), 0, 0; q6, 0, 0]";
+
+    #[test]
+    fn cross_column() {
+        let check = |input: &[&str], expected: &[&str]| check_frames(&CROSS_COLUMN, false, input, expected);
+        check(&[COSTLY_FIRST_COLUMN], &["[0, q1, q2, 0, q4, q5, q1*q5 - q2*q4, 0, 0; q6, 0, 0]"]);
+        // c1 = c2 x c0 and c2 = c0 x c1: the same columns in other places.
+        check(
+            &["[q2, sin(q3), q1, q5, 0, q4, 0, 0, 0; 0, 0, 0]"],
+            &["[q2, 0, q1, q5, 0, q4, 0, q1*q5 - q2*q4, 0; 0, 0, 0]"],
+        );
+        check(
+            &["[q1, q2, sin(q3), q4, q5, 0, 0, 0, 0; 0, 0, 0]"],
+            &["[q1, q2, 0, q4, q5, 0, 0, 0, q1*q5 - q2*q4; 0, 0, 0]"],
+        );
+        // Cheaper as it is: stays.
+        let rz = "[cos(q1), -sin(q1), 0, sin(q1), cos(q1), 0, 0, 0, 1; q2, 0, 0]";
+        check(&[rz], &[rz]);
+        let rz_rx = "[cos(q1), -sin(q1)*cos(q2), sin(q1)*sin(q2), sin(q1), cos(q1)*cos(q2), -cos(q1)*sin(q2), 0, sin(q2), cos(q2); 0, 0, 0]";
+        check(&[rz_rx], &[rz_rx]);
+        // Only for one pose whose rotation is wanted.
+        check(&[COSTLY_FIRST_COLUMN, COSTLY_FIRST_COLUMN], &[COSTLY_FIRST_COLUMN, COSTLY_FIRST_COLUMN]);
+        check_frames(&CROSS_COLUMN, true, &[COSTLY_FIRST_COLUMN], &[COSTLY_FIRST_COLUMN]);
+    }
 }

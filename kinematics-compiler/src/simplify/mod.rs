@@ -237,7 +237,8 @@ mod tests {
     #[test]
     fn chain_passes_on_dh_rows_with_exact_twists() {
         let mut g = ExprGraph::new();
-        let steps = parse_steps(&mut g, "Rz(q1) T(0, 0, 0.089159) Rx(pi/2) Rz(q2) T(-0.425, 0, 0) Rz(q3) T(-0.39225, 0, 0)");
+        let steps =
+            parse_steps(&mut g, "Rz(q1) T(0, 0, 0.089159) Rx(pi/2) Rz(q2) T(-0.425, 0, 0) Rz(q3) T(-0.39225, 0, 0)");
         let steps = simplify(&mut g, steps);
         assert_eq!(
             steps_text(&g, &steps),

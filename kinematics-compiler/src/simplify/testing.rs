@@ -27,40 +27,41 @@ pub fn check_with(pass: &ChainPass, options: Options, input: &str, expected: &st
     assert_eq!(steps_text(&g, &output), expected, "`{}` on `{input}`", pass.name);
 }
 
-/// Runs the expression pass on the poses `input` (each written as `[r00, r01, ..., r22; p0, p1, p2]`,
-/// or `[p0, p1, p2]` for positions only) and compares their text in the same form.
+/// Runs the expression pass on the poses `input` and compares their text (see [`frame_text`]).
 #[track_caller]
 pub fn check_frames(pass: &ExprPass, position_only: bool, input: &[&str], expected: &[&str]) {
     let mut g = ExprGraph::new();
-    let mut frames: Vec<SymTransform> = input.iter().map(|text| parse_frame(&mut g, text, position_only)).collect();
+    let mut frames: Vec<SymTransform> = input.iter().map(|text| parse_frame(&mut g, text)).collect();
     (pass.run)(&mut g, &mut frames, position_only);
-    let output: Vec<String> = frames.iter().map(|t| frame_text(&g, t, position_only)).collect();
+    let output: Vec<String> = frames.iter().map(|t| frame_text(&g, t)).collect();
     assert_eq!(output, expected, "`{}` on {input:?}", pass.name);
 }
 
-/// A pose as `[r00, ..., r22; p0, p1, p2]`, or `[p0, p1, p2]` for positions only.
-pub fn frame_text(g: &ExprGraph, t: &SymTransform, position_only: bool) -> String {
+/// A pose as `[r00, r01, ..., r22; p0, p1, p2]` (rotation row-major), or `[p0, p1, p2]` when the
+/// rotation is the identity.
+pub fn frame_text(g: &ExprGraph, t: &SymTransform) -> String {
     let p = t.p.map(|x| expr_text(g, x)).join(", ");
-    if position_only {
+    let identity = (0..3).all(|i| (0..3).all(|j| g.is_const(t.r[i][j], if i == j { 1.0 } else { 0.0 })));
+    if identity {
         return format!("[{p}]");
     }
     let r: Vec<String> = t.r.iter().flatten().map(|&x| expr_text(g, x)).collect();
     format!("[{}; {p}]", r.join(", "))
 }
 
-fn parse_frame(g: &mut ExprGraph, text: &str, position_only: bool) -> SymTransform {
+fn parse_frame(g: &mut ExprGraph, text: &str) -> SymTransform {
     let inner = text.strip_prefix('[').and_then(|t| t.strip_suffix(']')).expect("a pose in brackets");
     let mut t = SymTransform::identity(g);
-    let p = if position_only {
-        inner
-    } else {
-        let (r, p) = inner.split_once("; ").expect("rotation; translation");
-        let r = split_top(r, ", ");
-        assert_eq!(r.len(), 9, "nine rotation entries in `{text}`");
-        for (k, entry) in r.iter().enumerate() {
-            t.r[k / 3][k % 3] = parse_expr(g, entry);
+    let p = match inner.split_once("; ") {
+        None => inner,
+        Some((r, p)) => {
+            let r = split_top(r, ", ");
+            assert_eq!(r.len(), 9, "nine rotation entries in `{text}`");
+            for (k, entry) in r.iter().enumerate() {
+                t.r[k / 3][k % 3] = parse_expr(g, entry);
+            }
+            p
         }
-        p
     };
     let p = split_top(p, ", ");
     assert_eq!(p.len(), 3, "three translation entries in `{text}`");
@@ -130,7 +131,8 @@ fn parse_step(g: &mut ExprGraph, text: &str) -> Step {
     if text.starts_with("C(") {
         let rows = split_top(inside(text, "C("), "; ");
         assert_eq!(rows.len(), 3, "`{text}`");
-        let rows: Vec<Vec<f64>> = rows.iter().map(|row| split_top(row, ", ").into_iter().map(number).collect()).collect();
+        let rows: Vec<Vec<f64>> =
+            rows.iter().map(|row| split_top(row, ", ").into_iter().map(number).collect()).collect();
         return Step::ConstRotate(std::array::from_fn(|i| std::array::from_fn(|j| rows[i][j])));
     }
     let rest = text.strip_prefix('R').unwrap_or_else(|| panic!("`{text}` is no step"));

@@ -219,6 +219,7 @@ mod tests {
     }
 
     #[test]
+    #[allow(clippy::approx_constant, reason = "the point: near-pi decimals as URDF files write them")]
     fn numbers_are_never_rounded() {
         // The compiler takes numbers as written: the nearest f64 to pi/2 is not the quarter turn
         // (the model's exactness policy is where a written angle becomes exact).
@@ -253,7 +254,10 @@ mod tests {
         let mimic = LinearAngle::joint(2, 2.0, 0.0);
         let cases = [
             (LinearAngle::joint(0, 1.0, 0.0), "q1"),
-            (LinearAngle::joint(0, 1.0, 0.0).plus(&mimic).plus(&exact(1, 2)).plus(&radians(0.3)), "q1 + 2*q3 + pi/2 + 0.3"),
+            (
+                LinearAngle::joint(0, 1.0, 0.0).plus(&mimic).plus(&exact(1, 2)).plus(&radians(0.3)),
+                "q1 + 2*q3 + pi/2 + 0.3",
+            ),
             (LinearAngle::joint(1, -1.0, 0.0).plus(&exact(-3, 2)).plus(&radians(-0.3)), "-q2 - 3*pi/2 - 0.3"),
             (LinearAngle::joint(0, -0.5, 0.0).plus(&LinearAngle::joint(1, 1.0, 0.0)), "-0.5*q1 + q2"),
             (exact(-1, 2), "-pi/2"),
@@ -280,6 +284,7 @@ mod tests {
     }
 
     #[test]
+    #[allow(clippy::approx_constant, reason = "the point: near-pi decimals as URDF files write them")]
     fn joint_sin_cos_shares_the_joint_angle() {
         let mut g = ExprGraph::new();
         let plain = LinearAngle::joint(0, 1.0, 0.0).sin_cos(&mut g);

@@ -162,7 +162,8 @@ pub fn expr_text(g: &ExprGraph, id: ExprId) -> String {
             (_, Some(b)) => format!("{} - {b}", expr_text(g, a)),
             (Some(a), None) => format!("{} - {a}", expr_text(g, b)),
             (None, None) => {
-                let b = if matches!(g.node(b), Node::Add(..)) { format!("({})", expr_text(g, b)) } else { expr_text(g, b) };
+                let b =
+                    if matches!(g.node(b), Node::Add(..)) { format!("({})", expr_text(g, b)) } else { expr_text(g, b) };
                 format!("{} + {b}", expr_text(g, a))
             }
         },
@@ -234,7 +235,10 @@ mod tests {
         let (q1, q2) = (g.var(0), g.var(1));
         let (half, zero) = (g.constant(0.5), g.constant(0.0));
         let quarter = LinearAngle::constant(Angle::Exact(PiRational::new(1, 2).unwrap()));
-        let rz = |dof, offset: LinearAngle| Step::Rotate { axis: [0.0, 0.0, 1.0], angle: LinearAngle::joint(dof, 1.0, 0.0).plus(&offset) };
+        let rz = |dof, offset: LinearAngle| Step::Rotate {
+            axis: [0.0, 0.0, 1.0],
+            angle: LinearAngle::joint(dof, 1.0, 0.0).plus(&offset),
+        };
         let rz_minus_quarter = SignedPerm::from_matrix([[0.0, 1.0, 0.0], [-1.0, 0.0, 0.0], [0.0, 0.0, 1.0]]).unwrap();
         let steps = [
             rz(0, LinearAngle::constant(Angle::ZERO)),
