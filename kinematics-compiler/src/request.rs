@@ -3,7 +3,9 @@
 use kinematics_model::{KinematicTree, LinkId};
 
 use crate::error::CompileError;
-use crate::simplify::{Options, factor_common, simplify_with, split_tail, translations_to_tail};
+use crate::simplify::{
+    EXPR_PASSES, Options, TOOL_FIRST_PASSES, run_chain_passes, run_expr_passes, simplify_with, split_tail,
+};
 use crate::stats::OpCount;
 use crate::symbolic::graph::{ExprGraph, ExprId};
 use crate::symbolic::lower::lower_path;
@@ -160,7 +162,7 @@ fn fold_tips(
         let steps = simplify_with(&mut graph, steps, options);
         let transform = match order {
             Order::FromTool => {
-                let steps = translations_to_tail(&graph, steps);
+                let steps = run_chain_passes(&mut graph, steps, TOOL_FIRST_PASSES, options);
                 let (main, tail) = split_tail(&steps);
                 let main = fold_from_tool(&mut graph, main);
                 fold_from_base(&mut graph, main, tail)
@@ -172,52 +174,9 @@ fn fold_tips(
         };
         frames.push(transform);
     }
-    // One pose: a rotation column may be cheaper as the cross product of the other two.
-    if let [t] = &mut frames[..]
-        && !position_only
-    {
-        *t = cheapest_columns(&mut graph, *t);
-    }
-    // Pull shared factors out of the sums of what will be computed.
-    let per_frame = if position_only { 3 } else { 12 };
-    let outputs: Vec<ExprId> = frames
-        .iter()
-        .flat_map(|t: &SymTransform| if position_only { t.p.to_vec() } else { t.entries().to_vec() })
-        .collect();
-    let factored = factor_common(&mut graph, &outputs);
-    for (t, new) in frames.iter_mut().zip(factored.chunks(per_frame)) {
-        if position_only {
-            t.p = [new[0], new[1], new[2]];
-        } else {
-            t.r = [[new[0], new[1], new[2]], [new[3], new[4], new[5]], [new[6], new[7], new[8]]];
-            t.p = [new[9], new[10], new[11]];
-        }
-    }
+    // A rotation column as a cross product, shared factors out of sums.
+    run_expr_passes(&mut graph, &mut frames, EXPR_PASSES, position_only);
     (graph, frames)
-}
-
-/// The rotation with whichever column is cheapest to derive from the other two replaced by their
-/// cross product (rule `cross-column`: the columns of a rotation are orthonormal and right-handed,
-/// so `c0 = c1 x c2`, `c1 = c2 x c0`, `c2 = c0 x c1`), when that saves work.
-fn cheapest_columns(g: &mut ExprGraph, t: SymTransform) -> SymTransform {
-    let cost = |g: &ExprGraph, t: &SymTransform| OpCount::of(g, t.entries()).weighted();
-    let mut best = (cost(g, &t), t);
-    for replaced in 0..3 {
-        let (a, b) = ((replaced + 1) % 3, (replaced + 2) % 3);
-        let col = |j: usize| [t.r[0][j], t.r[1][j], t.r[2][j]];
-        let (u, v) = (col(a), col(b));
-        let mut candidate = t;
-        for i in 0..3 {
-            let (j, k) = ((i + 1) % 3, (i + 2) % 3);
-            let (x, y) = (g.mul(u[j], v[k]), g.mul(u[k], v[j]));
-            candidate.r[i][replaced] = g.sub(x, y);
-        }
-        let c = cost(g, &candidate);
-        if c < best.0 {
-            best = (c, candidate);
-        }
-    }
-    best.1
 }
 
 /// The steps of `T_base^tip`: up from `base` to the nearest common ancestor (inverted), then down

@@ -11,9 +11,31 @@ use std::collections::BTreeMap;
 
 use crate::stats::reachable;
 use crate::symbolic::graph::{ExprGraph, ExprId, Node};
+use crate::symbolic::transform::SymTransform;
+
+use super::ExprPass;
+
+/// Pass `common-factor`: `k*a + k*b = k*(a + b)` over every output of the poses (the translations,
+/// and the rotations unless only positions are wanted).
+pub const COMMON_FACTOR: ExprPass = ExprPass { name: "common-factor", run: factor_frames };
+
+fn factor_frames(g: &mut ExprGraph, frames: &mut [SymTransform], position_only: bool) {
+    let per_frame = if position_only { 3 } else { 12 };
+    let outputs: Vec<ExprId> =
+        frames.iter().flat_map(|t| if position_only { t.p.to_vec() } else { t.entries().to_vec() }).collect();
+    let factored = factor_common(g, &outputs);
+    for (t, new) in frames.iter_mut().zip(factored.chunks(per_frame)) {
+        if position_only {
+            t.p = [new[0], new[1], new[2]];
+        } else {
+            t.r = [[new[0], new[1], new[2]], [new[3], new[4], new[5]], [new[6], new[7], new[8]]];
+            t.p = [new[9], new[10], new[11]];
+        }
+    }
+}
 
 /// Rewrites `outputs` (new ids in the same graph; the old nodes stay, unreachable).
-pub fn factor_common(g: &mut ExprGraph, outputs: &[ExprId]) -> Vec<ExprId> {
+fn factor_common(g: &mut ExprGraph, outputs: &[ExprId]) -> Vec<ExprId> {
     let nodes = reachable(g, outputs.iter().copied());
     let mut uses = vec![0usize; g.len()];
     // The user of each node (meaningful for nodes used once).
@@ -180,5 +202,60 @@ fn rebuild(g: &mut ExprGraph, terms: Vec<(bool, ExprId, ExprId)>, uses: &[usize]
             None => term,
         });
     }
-    sum.unwrap_or_else(|| g.constant(0.0))
+    #[allow(clippy::expect_used, reason = "an invariant of flatten, named in the message")]
+    let sum = sum.expect("invariant: a sum flattens into at least two terms, and every term is placed");
+    sum
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::testing::check_frames;
+    use super::*;
+
+    /// `common-factor` on the translation of one pose (rotation the identity), positions only.
+    #[track_caller]
+    fn check(input: &str, expected: &str) {
+        check_frames(&COMMON_FACTOR, true, &[&format!("[{input}, 0, 0]")], &[&format!("[{expected}, 0, 0]")]);
+    }
+
+    #[test]
+    fn common_factor() {
+        check("0.5*cos(q1) + 0.5*sin(q2)", "0.5*(cos(q1) + sin(q2))");
+        check("q1*q2 - q1*q3", "q1*(q2 - q3)");
+        check("-q1*q2 - q1*q3", "-q1*(q2 + q3)");
+        check("q1*q2 + q2*q3", "q2*(q1 + q3)");
+        check("q1*q1 + q1*q2", "q1*(q1 + q2)");
+        // Nothing shared.
+        check("cos(q1) + sin(q2)", "cos(q1) + sin(q2)");
+        check("q1*q2 + q3*q4", "q1*q2 + q3*q4");
+        check("q1*q2", "q1*q2");
+        // The most frequent factor first, then the next.
+        check("q1*q2 + q3*q4 + q3*q5 + q1*q6 + q3*q7", "q3*(q7 + (q4 + q5)) + q1*(q2 + q6)");
+        // Ties to the oldest node (here the first variable read); both cofactor sums are `q3 + q1`,
+        // one node.
+        check("q2*q3 + q1*q2 + q1*q4 + q3*q4", "q2*(q3 + q1) + q4*(q3 + q1)");
+        // Sums and negated sums used only here are flattened into the sum.
+        check("q1*q2 + (q3 + q1*q4)", "q3 + q1*(q2 + q4)");
+        check("q1*q2 - (q3 + q1*q4)", "q1*(q2 - q4) - q3");
+    }
+
+    #[test]
+    fn shared_nodes_stay_whole() {
+        // `q1*q2` is an output of its own: factoring it would compute it twice.
+        check_frames(&COMMON_FACTOR, true, &["[q1*q2 + q1*q3, q1*q2, 0]"], &["[q1*q2 + q1*q3, q1*q2, 0]"]);
+        // A sum two outputs share is rewritten once, for both.
+        check_frames(
+            &COMMON_FACTOR,
+            true,
+            &["[q1*q2 + q1*q3, q1*q2 + q1*q3, 0]"],
+            &["[q1*(q2 + q3), q1*(q2 + q3), 0]"],
+        );
+    }
+
+    #[test]
+    fn rotations_only_when_they_are_outputs() {
+        let pose = "[q1*q2 + q1*q3, 0, 0, 0, 1, 0, 0, 0, 1; q4*q5 + q4*q6, 0, 0]";
+        check_frames(&COMMON_FACTOR, false, &[pose], &["[q1*(q2 + q3), 0, 0, 0, 1, 0, 0, 0, 1; q4*(q5 + q6), 0, 0]"]);
+        check_frames(&COMMON_FACTOR, true, &[pose], &["[q1*q2 + q1*q3, 0, 0, 0, 1, 0, 0, 0, 1; q4*(q5 + q6), 0, 0]"]);
+    }
 }

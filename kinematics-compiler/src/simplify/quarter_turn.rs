@@ -4,9 +4,20 @@ use crate::symbolic::angle::LinearAngle;
 use crate::symbolic::graph::ExprGraph;
 use crate::symbolic::step::{SignedPerm, Step};
 
+use super::ChainPass;
+
+/// Pass `quarter-turn`: constant rotations become signed permutations (whole quarter turns of
+/// an exact angle) or numeric matrices (any other); the identity vanishes.
+pub const QUARTER_TURN: ChainPass = ChainPass { name: "quarter-turn", run: |_, steps, _| quarter_turns(steps) };
+
+/// Pass `push-quarter-turns`: `P R(u, a) = R(P u, a) P`, `P T(v) = T(P v) P`, `P C = (P C P^T) P`,
+/// so every signed permutation ends up at the end of the chain.
+pub const PUSH_QUARTER_TURNS: ChainPass =
+    ChainPass { name: "push-quarter-turns", run: |g, steps, _| push_quarter_turns(g, steps) };
+
 /// The numeric matrix of a constant rotation by `angle` about the unit `axis` (Rodrigues), with
 /// exact entries for exact quarter turns.
-pub(crate) fn constant_rotation(axis: [f64; 3], angle: &LinearAngle) -> [[f64; 3]; 3] {
+fn constant_rotation(axis: [f64; 3], angle: &LinearAngle) -> [[f64; 3]; 3] {
     let (s, c) = angle.constant_sin_cos();
     let u = axis;
     let omc = 1.0 - c;
@@ -23,7 +34,7 @@ pub(crate) fn constant_rotation(axis: [f64; 3], angle: &LinearAngle) -> [[f64; 3
 }
 
 /// Rule `quarter-turn`: constant rotations become signed permutations or numeric matrices.
-pub fn quarter_turns(steps: Vec<Step>) -> Vec<Step> {
+fn quarter_turns(steps: Vec<Step>) -> Vec<Step> {
     steps
         .into_iter()
         .filter_map(|step| match step {
@@ -46,7 +57,7 @@ fn mat_mul(a: [[f64; 3]; 3], b: [[f64; 3]; 3]) -> [[f64; 3]; 3] {
 
 /// Rule `push-quarter-turns`: moves every signed permutation to the end, conjugating the steps
 /// it passes: `P R(u, a) = R(P u, a) P`, `P T(v) = T(P v) P`, `P C = (P C P^T) P`.
-pub fn push_quarter_turns(g: &mut ExprGraph, steps: Vec<Step>) -> Vec<Step> {
+fn push_quarter_turns(g: &mut ExprGraph, steps: Vec<Step>) -> Vec<Step> {
     let mut carried = SignedPerm::IDENTITY;
     let mut out = Vec::with_capacity(steps.len());
     for step in steps {
@@ -65,4 +76,76 @@ pub fn push_quarter_turns(g: &mut ExprGraph, steps: Vec<Step>) -> Vec<Step> {
         out.push(Step::Permute(carried));
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::testing::check;
+    use super::*;
+
+    #[test]
+    fn quarter_turns_become_permutations() {
+        let check = |input, expected| check(&QUARTER_TURN, input, expected);
+        check("Rx(pi/2)", "P(x, -z, y)");
+        check("Rx(-pi/2)", "P(x, z, -y)");
+        check("Rx(3*pi/2)", "P(x, z, -y)");
+        check("Ry(pi/2)", "P(z, y, -x)");
+        check("Rz(pi)", "P(-x, -y, z)");
+        check("Rz(-pi/2)", "P(y, -x, z)");
+        // About a negative axis (before `axis-sign` has run).
+        check("R-z(pi/2)", "P(y, -x, z)");
+        // Whole turns and zero angles vanish.
+        check("Rx(2*pi)", "I");
+        check("Rz(q1) Rz(0) Rz(q2)", "Rz(q1) Rz(q2)");
+        check("Ry(-4*pi) T(1, 0, 0)", "T(1, 0, 0)");
+        // Joint rotations stay, whatever their constant part.
+        check("Rz(q1 + pi/2) T(1, 0, 0)", "Rz(q1 + pi/2) T(1, 0, 0)");
+    }
+
+    #[test]
+    fn other_constant_rotations_become_matrices() {
+        let check = |input, expected| check(&QUARTER_TURN, input, expected);
+        // The nearest f64 to pi/2, and pi/2 as URDF files spell it, are numbers: numeric rotations,
+        // never rounded to a permutation.
+        check("Rx(1.5707963267948966)", "C(1, 0, 0; 0, 6.123233995736766e-17, -1; 0, 1, 6.123233995736766e-17)");
+        check("Rx(1.57079632679)", "C(1, 0, 0; 0, 4.8965888601467475e-12, -1; 0, 1, 4.8965888601467475e-12)");
+        check(
+            "Rz(0.3)",
+            "C(0.955336489125606, -0.29552020666133955, 0; 0.29552020666133955, 0.955336489125606, 0; 0, 0, 1)",
+        );
+        // A quarter-turn exact part is taken out exactly: sin(pi/2 + x) = cos x, cos(pi/2 + x) = -sin x.
+        check(
+            "Rz(pi/2 + 0.3)",
+            "C(-0.29552020666133955, -0.955336489125606, 0; 0.955336489125606, -0.29552020666133955, 0; 0, 0, 1)",
+        );
+        // Exact, but not a quarter turn: the sine and cosine f64 computes.
+        check(
+            "Rz(pi/3)",
+            "C(0.5000000000000001, -0.8660254037844386, 0; 0.8660254037844386, 0.5000000000000001, 0; 0, 0, 1)",
+        );
+        // A half turn about an axis off the coordinate axes: `2 u u^T - I`, its zeros exact.
+        check("R[0.6, 0, 0.8](pi)", "C(-0.28, 0, 0.96; 0, -1, 0; 0.96, 0, 0.28000000000000025)");
+    }
+
+    #[test]
+    fn push_quarter_turns() {
+        let check = |input, expected| check(&PUSH_QUARTER_TURNS, input, expected);
+        // P R(u, a) = R(P u, a) P
+        check("P(x, -z, y) Rz(q1)", "R-y(q1) P(x, -z, y)");
+        check("P(-y, x, z) Rz(q1) P(-y, x, z) Rx(q2)", "Rz(q1) R-x(q2) P(-x, -y, z)");
+        // P T(v) = T(P v) P, for numbers and expressions (a negation is free).
+        check("P(x, -z, y) T(1, 2, 3)", "T(1, -3, 2) P(x, -z, y)");
+        check("P(-y, x, z) T(q1, 0, 0)", "T(0, q1, 0) P(-y, x, z)");
+        check("P(-y, x, z) T(0, q1 + 0.5, 0)", "T(-(q1 + 0.5), 0, 0) P(-y, x, z)");
+        // Permutations compose; inverse ones cancel.
+        check("P(x, -z, y) P(x, -z, y)", "P(x, -y, -z)");
+        check("P(x, -z, y) T(1, 0, 0) P(x, z, -y)", "T(1, 0, 0)");
+        // P C = (P C P^T) P: a rotation about x turned a quarter about z is one about y.
+        check("P(-y, x, z) C(1, 0, 0; 0, 0.8, -0.6; 0, 0.6, 0.8)", "C(0.8, 0, 0.6; 0, 1, 0; -0.6, 0, 0.8) P(-y, x, z)");
+        // An axis off the coordinate axes turns too.
+        check("P(-y, x, z) R[0.6, 0, 0.8](q1)", "R[-0, 0.6, 0.8](q1) P(-y, x, z)");
+        // Nothing to push.
+        check("Rz(q1) T(1, 0, 0) P(y, -x, z)", "Rz(q1) T(1, 0, 0) P(y, -x, z)");
+        check("Rz(q1) T(1, 0, 0)", "Rz(q1) T(1, 0, 0)");
+    }
 }

@@ -1,5 +1,7 @@
 //! Angles as linear forms over the joint variables: `sum(k_i * q_i) + exact + numeric`.
 
+use std::fmt;
+
 use kinematics_model::PiRational;
 
 use super::graph::{ExprGraph, ExprId};
@@ -144,6 +146,48 @@ impl LinearAngle {
     }
 }
 
+/// A number as text that reads back to the same `f64`: plain decimals (`0.5`, `1.5707963267948966`),
+/// with an exponent for very small or very large magnitudes (`6.123233995736766e-17`).
+pub(crate) fn number_text(x: f64) -> String {
+    if x != 0.0 && x.is_finite() && (x.abs() < 1e-4 || x.abs() >= 1e16) { format!("{x:e}") } else { format!("{x}") }
+}
+
+/// `q1 + 2*q3 - pi/2 + 0.3`: the joint terms in dof order (`q1` is dof 0), then the exact part,
+/// then the numeric part; `0` for the zero angle.
+impl fmt::Display for LinearAngle {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        // (negative, magnitude as text)
+        let mut parts: Vec<(bool, String)> = Vec::new();
+        for &(dof, k) in &self.terms {
+            let var = format!("q{}", dof + 1);
+            let magnitude = if k.abs() == 1.0 { var } else { format!("{}*{var}", number_text(k.abs())) };
+            parts.push((k < 0.0, magnitude));
+        }
+        if self.exact != PiRational::ZERO {
+            parts.push(match self.exact.checked_neg() {
+                Some(positive) if self.exact.num() < 0 => (true, positive.to_string()),
+                _ => (false, self.exact.to_string()),
+            });
+        }
+        if self.numeric != 0.0 {
+            parts.push((self.numeric < 0.0, number_text(self.numeric.abs())));
+        }
+        if parts.is_empty() {
+            return f.write_str("0");
+        }
+        for (i, (negative, magnitude)) in parts.iter().enumerate() {
+            let sign = match (i, negative) {
+                (0, false) => "",
+                (0, true) => "-",
+                (_, false) => " + ",
+                (_, true) => " - ",
+            };
+            write!(f, "{sign}{magnitude}")?;
+        }
+        Ok(())
+    }
+}
+
 /// `(sin, cos)` of `k` quarter turns plus an angle whose sine and cosine are `s` and `c`.
 fn rotate_quarters(k: i64, s: f64, c: f64) -> (f64, f64) {
     match k.rem_euclid(4) {
@@ -175,6 +219,7 @@ mod tests {
     }
 
     #[test]
+    #[allow(clippy::approx_constant, reason = "the point: near-pi decimals as URDF files write them")]
     fn numbers_are_never_rounded() {
         // The compiler takes numbers as written: the nearest f64 to pi/2 is not the quarter turn
         // (the model's exactness policy is where a written angle becomes exact).
@@ -204,6 +249,42 @@ mod tests {
     }
 
     #[test]
+    fn display_reads_like_the_formula() {
+        let radians = |x: f64| LinearAngle::constant(Angle::Radians(x));
+        let mimic = LinearAngle::joint(2, 2.0, 0.0);
+        let cases = [
+            (LinearAngle::joint(0, 1.0, 0.0), "q1"),
+            (
+                LinearAngle::joint(0, 1.0, 0.0).plus(&mimic).plus(&exact(1, 2)).plus(&radians(0.3)),
+                "q1 + 2*q3 + pi/2 + 0.3",
+            ),
+            (LinearAngle::joint(1, -1.0, 0.0).plus(&exact(-3, 2)).plus(&radians(-0.3)), "-q2 - 3*pi/2 - 0.3"),
+            (LinearAngle::joint(0, -0.5, 0.0).plus(&LinearAngle::joint(1, 1.0, 0.0)), "-0.5*q1 + q2"),
+            (exact(-1, 2), "-pi/2"),
+            (exact(1, 1), "pi"),
+            (exact(0, 1), "0"),
+            (LinearAngle::joint(0, 1.0, 0.0).plus(&LinearAngle::joint(0, -1.0, 0.0)), "0"),
+            (radians(-FRAC_PI_2), "-1.5707963267948966"),
+            (radians(1e-20), "1e-20"),
+            (LinearAngle::joint(9, 1e20, 0.0), "1e20*q10"),
+        ];
+        for (angle, text) in cases {
+            assert_eq!(angle.to_string(), text, "{angle:?}");
+        }
+    }
+
+    #[test]
+    fn numbers_read_back_exactly() {
+        for x in [0.5, FRAC_PI_2, 6.123233995736766e-17, 1e-4, 9.99e-5, 1e16, 1e300, -2.5e-300, 0.0, -0.0] {
+            let text = number_text(x);
+            assert_eq!(text.parse::<f64>().map(f64::to_bits), Ok(x.to_bits()), "{text}");
+        }
+        assert_eq!(number_text(1.0), "1");
+        assert_eq!(number_text(6.123233995736766e-17), "6.123233995736766e-17");
+    }
+
+    #[test]
+    #[allow(clippy::approx_constant, reason = "the point: near-pi decimals as URDF files write them")]
     fn joint_sin_cos_shares_the_joint_angle() {
         let mut g = ExprGraph::new();
         let plain = LinearAngle::joint(0, 1.0, 0.0).sin_cos(&mut g);
