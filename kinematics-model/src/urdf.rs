@@ -208,13 +208,18 @@ fn attribute_start(node: Node<'_, '_>, name: &str) -> Option<usize> {
 fn xml_error(text: &str, error: &roxmltree::Error) -> LoadErrorKind {
     let last_line = text.lines().count().max(1);
     let (line, message) = match error {
-        roxmltree::Error::NoRootNode => (None, "no root element: the file holds no XML element".to_owned()),
+        roxmltree::Error::NoRootNode if text.trim().is_empty() => (None, "the file is empty".to_owned()),
+        roxmltree::Error::NoRootNode => (Some(last_line), "no root element (truncated?)".to_owned()),
         roxmltree::Error::UnclosedRootNode => {
             (Some(last_line), "the file ends before the root element is closed (truncated?)".to_owned())
         }
         roxmltree::Error::UnexpectedEndOfStream => {
             (Some(last_line), "the file ends in the middle of a tag (truncated?)".to_owned())
         }
+        roxmltree::Error::UnknownToken(pos) if starts_element(text, *pos) => (
+            Some(usize::try_from(pos.row).unwrap_or(usize::MAX)),
+            "a second root element: a URDF file holds one <robot>".to_owned(),
+        ),
         other => {
             let pos = other.pos();
             let message = other.to_string().replacen(&format!(" at {pos}"), "", 1);
@@ -222,4 +227,14 @@ fn xml_error(text: &str, error: &roxmltree::Error) -> LoadErrorKind {
         }
     };
     LoadErrorKind::Syntax { line, message }
+}
+
+/// Whether an element's start tag (`<name`) begins at `pos`: where the parser finds no token
+/// there, it follows the root element, as a second root.
+fn starts_element(text: &str, pos: roxmltree::TextPos) -> bool {
+    let row = usize::try_from(pos.row).unwrap_or(usize::MAX).saturating_sub(1);
+    let col = usize::try_from(pos.col).unwrap_or(usize::MAX).saturating_sub(1);
+    let Some(line) = text.split('\n').nth(row) else { return false };
+    let mut rest = line.chars().skip(col);
+    rest.next() == Some('<') && rest.next().is_some_and(|c| c.is_alphabetic() || c == '_')
 }
