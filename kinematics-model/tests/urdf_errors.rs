@@ -2,6 +2,7 @@
 //! link), the line and the fault (issue 13: urdf-rs said `custom: Wrong vector element count,
 //! expected 3 found 0` with no joint and no line, "No elements found" for a truncated file, ignored
 //! a second `<robot>` and gave a revolute joint without `<limit>` the limits [0, 0]).
+#![allow(clippy::panic, clippy::unwrap_used, clippy::expect_used)] // test helpers fail loudly
 
 use kinematics_model::{Elementary, LoadErrorKind, parse_source};
 

@@ -1,5 +1,6 @@
 //! Numbers the URDF reader must read from the robots in `robots/` (it replaced a reader on
 //! urdf-rs, and gave every robot there the very same tree; these pins keep it so).
+#![allow(clippy::panic, clippy::unwrap_used, clippy::expect_used)] // test helpers fail loudly
 
 use kinematics_model::{Angle, Elementary, JointKind, JointMotion, KinematicTree, parse_source};
 
@@ -17,7 +18,7 @@ fn ur5_elbow() {
     assert_eq!(elbow.axis, [0.0, 1.0, 0.0]);
     assert_eq!(elbow.origin.steps(), [Elementary::Translation([0.0, -0.1197, 0.425])]);
     let limits = elbow.limits.unwrap();
-    assert_eq!((limits.lower, limits.upper), (-6.283185307179586, 6.283185307179586));
+    assert_eq!((limits.lower, limits.upper), (-std::f64::consts::TAU, std::f64::consts::TAU));
 }
 
 #[test]
