@@ -161,6 +161,19 @@ fn quoted(names: &[String]) -> String {
     names.iter().map(|n| format!("`{n}`")).collect::<Vec<_>>().join(", ")
 }
 
+/// A link name given by the user (a base, a tip, a link to print) that the robot does not have,
+/// with the closest existing name when it looks like a typo.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("{role} link `{link}` does not exist{}", .suggestion.as_ref().map(|s| format!("; did you mean `{s}`?")).unwrap_or_default())]
+pub struct UnknownLink {
+    /// What the link was asked for as (`base`, `tip`, ...).
+    pub role: &'static str,
+    /// The name given.
+    pub link: String,
+    /// The closest link name, when it looks like a typo.
+    pub suggestion: Option<String>,
+}
+
 /// Every rule a description broke (never empty).
 #[derive(Debug, Clone, PartialEq)]
 pub struct ModelErrors(Vec<ModelError>);
