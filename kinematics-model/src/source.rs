@@ -127,10 +127,13 @@ impl Source {
         }
     }
 
-    /// A source from a file's bytes, which must be UTF-8 (the line of the first stray byte is
-    /// reported otherwise).
-    pub fn from_bytes(format: SourceFormat, label: impl Into<String>, bytes: Vec<u8>) -> Result<Self, LoadError> {
+    /// A source from a file's bytes: the format as [`SourceFormat::choose`] picks it from `label`
+    /// and `kind`; the bytes must be UTF-8 (the line of the first stray byte is reported).
+    pub fn from_bytes(label: impl Into<String>, kind: SourceKind, bytes: Vec<u8>) -> Result<Self, LoadError> {
         let label = label.into();
+        let Some(format) = SourceFormat::choose(&label, kind) else {
+            return Err(LoadError::new(label, LoadErrorKind::UnknownFormat));
+        };
         match String::from_utf8(bytes) {
             Ok(text) => Ok(Source { format, label, text }),
             Err(e) => {
