@@ -340,7 +340,8 @@ impl InlineDh {
                 .map(|(c, field)| cells.angle(c, &element, field));
             // Left out, a coordinate or angle is zero, as in a DH file.
             Ok(DhFixed {
-                name: f.name.clone().unwrap_or_else(|| section.to_owned()),
+                // The file format's default name (a base's name is not used).
+                name: f.name.clone().unwrap_or_else(|| "tool".to_owned()),
                 xyz: [x?.unwrap_or_default(), y?.unwrap_or_default(), z?.unwrap_or_default()],
                 rpy: [roll?.unwrap_or_default(), pitch?.unwrap_or_default(), yaw?.unwrap_or_default()],
             })
@@ -363,5 +364,131 @@ impl InlineDh {
         errors
             .finish_with(table)?
             .ok_or_else(|| Error::custom(format!("{LABEL}: a cell was refused without a message; please report this")))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use darling::FromMeta;
+    use darling::ast::NestedMeta;
+    use kinematics_model::dh::{DhJointType, DhTable, Value, parse_dh_toml};
+    use quote::quote;
+
+    use super::InlineDh;
+
+    /// The table written inside `dh(...)`, converted.
+    fn table(tokens: proc_macro2::TokenStream) -> darling::Result<DhTable> {
+        let items = NestedMeta::parse_meta_list(tokens).unwrap();
+        InlineDh::from_list(&items)?.to_table()
+    }
+
+    /// Every message of a refused table, in order.
+    fn refused(tokens: proc_macro2::TokenStream) -> Vec<String> {
+        match table(tokens) {
+            Ok(t) => panic!("accepted: {t:?}"),
+            Err(e) => e.into_iter().map(|e| e.to_string()).collect(),
+        }
+    }
+
+    #[test]
+    fn strings_in_length_columns_are_refused_not_zero() {
+        // Issue 13: this row compiled into a robot with a = 0 and d = 0.
+        assert_eq!(
+            refused(quote!(convention = "standard", row("j", "1.0", 0.0, "0.5", 0.0))),
+            [
+                "inline DH table: DH row 1 (joint `j`): `a` = \"1.0\" must be a number, not text",
+                "inline DH table: DH row 1 (joint `j`): `d` = \"0.5\" must be a number, not text",
+            ]
+        );
+        assert_eq!(
+            refused(quote!(
+                convention = "standard",
+                joint(name = "s", a = 1.0),
+                joint(name = "e", velocity = "2", effort = "x")
+            )),
+            [
+                "inline DH table: DH row 2 (joint `e`): `velocity` = \"2\" must be a number, not text",
+                "inline DH table: DH row 2 (joint `e`): `effort` = \"x\" must be a number, not text",
+            ]
+        );
+        assert_eq!(
+            refused(quote!(convention = "standard", tool(xyz(0, "0", 0.1)), row("j", 0.0, 0.0, 0.0, 0.0))),
+            ["inline DH table: DH `tool` transform: `y` = \"0\" must be a number, not text"]
+        );
+    }
+
+    #[test]
+    fn angle_text_must_be_exact_and_prismatic_columns_are_lengths() {
+        assert_eq!(
+            refused(quote!(convention = "standard", row("j", 1.0, "pie/2", 0.0, "1.5708"))),
+            [
+                "inline DH table: DH row 1 (joint `j`): `alpha` = \"pie/2\" is neither a number nor an exact angle like \"pi/2\"",
+                "inline DH table: DH row 1 (joint `j`): `theta` = \"1.5708\" is neither a number nor an exact angle like \"pi/2\"",
+            ]
+        );
+        assert_eq!(
+            refused(quote!(convention = "standard", row("slide", "prismatic", 0.0, 0.0, 0.1, 0.0, "-pi", 0.5))),
+            ["inline DH table: DH row 1 (joint `slide`): `lower` = \"-pi\" must be a number, not text"]
+        );
+        assert_eq!(
+            refused(quote!(convention = "standard", joint(name = "slide", type = "prismatic", offset = "0.1"))),
+            ["inline DH table: DH row 1 (joint `slide`): `offset` = \"0.1\" must be a number, not text"]
+        );
+        assert_eq!(
+            refused(quote!(convention = "standard", base(rpy(0, 0, "half")), row("j", 0.0, 0.0, 0.0, 0.0))),
+            [
+                "inline DH table: DH `base` transform: `yaw` = \"half\" is neither a number nor an exact angle like \"pi/2\""
+            ]
+        );
+    }
+
+    /// Every column of the file format is reachable inline, and gives the row the file gives.
+    #[test]
+    fn the_inline_table_is_the_file_formats_table() {
+        let inline = table(quote!(
+            convention = "modified",
+            name = "arm",
+            angle_unit = "degrees",
+            base_link = "world",
+            base(xyz(0, 0, 0.1), rpy(0, 0, "pi")),
+            tool(name = "flange", xyz(0, 0, -0.107), rpy(90, 0, 0)),
+            joint(name = "j1", link = "l1", a = -0.425, alpha = "pi/2", d = 0.089, theta = 30, offset = -90,
+                  lower = -170, upper = 170, velocity = 2.5, effort = 150),
+            joint(name = "j2", type = "prismatic", offset = 0.1, lower = 0, upper = 0.5, velocity = 0.2, effort = 40)
+        ))
+        .unwrap();
+        let file = parse_dh_toml(
+            r#"convention = "modified"
+name = "arm"
+angle_unit = "degrees"
+base_link = "world"
+base = { xyz = [0, 0, 0.1], rpy = [0, 0, "pi"] }
+tool = { name = "flange", xyz = [0, 0, -0.107], rpy = [90, 0, 0] }
+[[joints]]
+name = "j1"
+link = "l1"
+a = -0.425
+alpha = "pi/2"
+d = 0.089
+theta = 30
+offset = -90
+lower = -170
+upper = 170
+velocity = 2.5
+effort = 150
+[[joints]]
+name = "j2"
+type = "prismatic"
+offset = 0.1
+lower = 0
+upper = 0.5
+velocity = 0.2
+effort = 40
+"#,
+        )
+        .unwrap();
+        assert_eq!(inline.to_toml().unwrap(), file.to_toml().unwrap());
+        assert_eq!(inline.joints[1].kind, DhJointType::Prismatic);
+        assert_eq!(inline.joints[0].alpha, Value::Text("pi/2".to_owned()));
     }
 }

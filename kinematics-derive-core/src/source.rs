@@ -19,6 +19,8 @@ pub struct Loaded {
     /// The name `reference()` parses the text under (the file as the user wrote it, with an
     /// extension naming the format when it has none).
     pub label: String,
+    /// The description as the user wrote it, for messages (the path, or `inline DH table`).
+    pub written: String,
     /// An expression of type `&'static str` with the text, which also makes the crate rebuild when
     /// the file changes (`include_str!` of its absolute path).
     pub text_expr: TokenStream,
@@ -51,7 +53,7 @@ pub fn load(options: &KinematicsInput) -> darling::Result<Loaded> {
     links.extend(options.tips().into_iter().map(|t| ("tip", t)));
     for (role, link) in &links {
         if let Err(e) = loaded.tree.find_link(role, link) {
-            errors.push(Error::custom(format!("{}: {e}", loaded.label)).with_span(&link.span()));
+            errors.push(Error::custom(format!("{}: {e}", loaded.written)).with_span(&link.span()));
         }
     }
     errors.finish_with(loaded)
@@ -67,7 +69,7 @@ fn from_file(path: &SpannedValue<String>, kind: SourceKind, exact_angles: ExactA
     let source = Source::from_bytes(label, kind, bytes).map_err(|e| spanned(&e, span))?;
     let tree = source.load(exact_angles).map_err(|e| spanned(&e, span))?;
     let absolute = absolute.to_string_lossy().into_owned();
-    Ok(Loaded { tree, label: source.file_name(), text_expr: quote!(include_str!(#absolute)) })
+    Ok(Loaded { tree, label: source.file_name(), written: source.label, text_expr: quote!(include_str!(#absolute)) })
 }
 
 fn from_inline(table: &InlineDh, span: Span, exact_angles: ExactAngles) -> darling::Result<Loaded> {
@@ -77,7 +79,7 @@ fn from_inline(table: &InlineDh, span: Span, exact_angles: ExactAngles) -> darli
     let text = table.to_toml().map_err(|e| spanned(&LoadError::new(LABEL, e), span))?;
     let tree =
         Source::new(SourceFormat::DhToml, LABEL, text.clone()).load(exact_angles).map_err(|e| spanned(&e, span))?;
-    Ok(Loaded { tree, label: "inline_dh.toml".to_owned(), text_expr: quote!(#text) })
+    Ok(Loaded { tree, label: "inline_dh.toml".to_owned(), written: LABEL.to_owned(), text_expr: quote!(#text) })
 }
 
 /// A load error as compile errors on `span`: one per broken model rule, so all are shown.
@@ -93,5 +95,76 @@ fn spanned(error: &LoadError, span: Span) -> Error {
 impl std::fmt::Debug for Loaded {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.debug_struct("Loaded").field("label", &self.label).finish_non_exhaustive()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use darling::FromDeriveInput;
+    use quote::quote;
+
+    use crate::options::KinematicsInput;
+
+    /// A fixed joint turned by pi as ROS spells it (2e-13 rad off), then a revolute joint.
+    const ROS_PI: &str = r#"<robot name="r"><link name="a"/><link name="b"/><link name="c"/>
+      <joint name="flip" type="fixed"><parent link="a"/><child link="b"/><origin rpy="3.14159265359 0 0"/></joint>
+      <joint name="turn" type="continuous"><parent link="b"/><child link="c"/><axis xyz="0 0 1"/></joint></robot>"#;
+
+    fn load(attribute: proc_macro2::TokenStream) -> darling::Result<super::Loaded> {
+        let input: syn::DeriveInput = syn::parse2(quote!(
+            #[kinematics(#attribute)]
+            struct Robot;
+        ))
+        .unwrap();
+        super::load(&KinematicsInput::from_derive_input(&input)?)
+    }
+
+    /// The number of angles the loaded tree recognised as exact.
+    fn recognised(attribute: proc_macro2::TokenStream) -> usize {
+        load(attribute).unwrap().tree.recognised_angles().len()
+    }
+
+    #[test]
+    fn exact_angles_key_sets_the_policy() {
+        let dir = std::env::temp_dir().join(format!("kinematics-derive-core-exact-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let file = dir.join("ros_pi.urdf");
+        std::fs::write(&file, ROS_PI).unwrap();
+        // An absolute path: joined to CARGO_MANIFEST_DIR, it stays itself.
+        let path = file.to_string_lossy().into_owned();
+        assert_eq!(recognised(quote!(urdf = #path)), 1);
+        assert_eq!(recognised(quote!(urdf = #path, exact_angles = true)), 1);
+        assert_eq!(recognised(quote!(urdf = #path, exact_angles = false)), 0);
+        // The inline table goes through the same loader.
+        let dh = quote!(dh(convention = "standard", row("j", 0.0, 1.57079632679, 0.0, 0.0)));
+        assert_eq!(recognised(quote!(#dh)), 1);
+        assert_eq!(recognised(quote!(#dh, exact_angles = false)), 0);
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn exact_angles_must_be_a_bool() {
+        for value in [quote!("no"), quote!(0), quote!(off)] {
+            let error = load(quote!(dh(convention = "standard", row("j", 0.0, 0.0, 0.0, 0.0)), exact_angles = #value));
+            assert!(error.is_err(), "{value}");
+        }
+    }
+
+    #[test]
+    fn base_and_tips_are_looked_up_by_the_model() {
+        let dh = quote!(dh(convention = "standard", row("j", 1.0, 0.0, 0.0, 0.0)));
+        let messages: Vec<String> = load(quote!(#dh, base = "bsae", tips("link1", "lnk1", "gripper")))
+            .unwrap_err()
+            .into_iter()
+            .map(|e| e.to_string())
+            .collect();
+        assert_eq!(
+            messages,
+            [
+                "inline DH table: base link `bsae` does not exist; did you mean `base`?",
+                "inline DH table: tip link `lnk1` does not exist; did you mean `link1`?",
+                "inline DH table: tip link `gripper` does not exist",
+            ]
+        );
     }
 }
