@@ -49,7 +49,7 @@ pub struct KinematicsInput {
     /// `exact_angles = false`: read every decimal angle as written (default `true`: angles within
     /// 1e-9 rad of a multiple of pi/2 are that multiple; see `kinematics_model::exactness`).
     #[darling(default)]
-    pub exact_angles: Option<bool>,
+    pub exact_angles: Option<Switch>,
     /// `crate = "path"` for a renamed dependency.
     #[darling(default, rename = "crate")]
     pub krate: Option<syn::Path>,
@@ -67,7 +67,10 @@ impl KinematicsInput {
 
     /// The exactness policy: `exact_angles = true` (the default) or `false`.
     pub fn exact_angles(&self) -> ExactAngles {
-        ExactAngles::on(self.exact_angles.unwrap_or(true))
+        match self.exact_angles {
+            Some(Switch(on)) => ExactAngles::on(on),
+            None => ExactAngles::default(),
+        }
     }
 
     /// The scalar types asked for (`f64` by default).
@@ -129,5 +132,30 @@ impl FromMeta for DhSource {
 
     fn from_list(items: &[NestedMeta]) -> darling::Result<Self> {
         InlineDh::from_list(items).map(|t| DhSource::Inline(Box::new(t)))
+    }
+}
+
+/// A key that is on or off: `key = true`, `key = false`, or the bare `key` (on).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Switch(pub bool);
+
+impl FromMeta for Switch {
+    fn from_word() -> darling::Result<Self> {
+        Ok(Switch(true))
+    }
+
+    fn from_value(value: &syn::Lit) -> darling::Result<Self> {
+        match value {
+            syn::Lit::Bool(b) => Ok(Switch(b.value)),
+            other => Err(Error::custom("expected `true` or `false`").with_span(other)),
+        }
+    }
+
+    fn from_expr(expr: &syn::Expr) -> darling::Result<Self> {
+        match expr {
+            syn::Expr::Lit(lit) => Self::from_value(&lit.lit),
+            syn::Expr::Group(group) => Self::from_expr(&group.expr),
+            other => Err(Error::custom("expected `true` or `false`").with_span(other)),
+        }
     }
 }

@@ -133,7 +133,7 @@ struct At<'d, 'input> {
 
 impl<'input> At<'_, 'input> {
     fn error(&self, byte: usize, message: String) -> LoadErrorKind {
-        let line = usize::try_from(self.doc.text_pos_at(byte).row).unwrap_or(usize::MAX);
+        let line = row(self.doc.text_pos_at(byte));
         LoadErrorKind::Located { element: self.element.clone(), line, message }
     }
 
@@ -216,14 +216,16 @@ fn xml_error(text: &str, error: &roxmltree::Error) -> LoadErrorKind {
         roxmltree::Error::UnexpectedEndOfStream => {
             (Some(last_line), "the file ends in the middle of a tag (truncated?)".to_owned())
         }
-        roxmltree::Error::UnknownToken(pos) if starts_element(text, *pos) => (
-            Some(usize::try_from(pos.row).unwrap_or(usize::MAX)),
-            "a second root element: a URDF file holds one <robot>".to_owned(),
-        ),
+        roxmltree::Error::UnexpectedCloseTag(expected, found, pos) => {
+            (Some(row(*pos)), format!("</{found}> where </{expected}> should close <{expected}>"))
+        }
+        roxmltree::Error::UnknownToken(pos) if starts_element(text, *pos) => {
+            (Some(row(*pos)), "a second root element: a URDF file holds one <robot>".to_owned())
+        }
         other => {
             let pos = other.pos();
             let message = other.to_string().replacen(&format!(" at {pos}"), "", 1);
-            (Some(usize::try_from(pos.row).unwrap_or(usize::MAX)), message)
+            (Some(row(pos)), message)
         }
     };
     LoadErrorKind::Syntax { line, message }
@@ -232,9 +234,14 @@ fn xml_error(text: &str, error: &roxmltree::Error) -> LoadErrorKind {
 /// Whether an element's start tag (`<name`) begins at `pos`: where the parser finds no token
 /// there, it follows the root element, as a second root.
 fn starts_element(text: &str, pos: roxmltree::TextPos) -> bool {
-    let row = usize::try_from(pos.row).unwrap_or(usize::MAX).saturating_sub(1);
-    let col = usize::try_from(pos.col).unwrap_or(usize::MAX).saturating_sub(1);
-    let Some(line) = text.split('\n').nth(row) else { return false };
+    let line_index = row(pos).saturating_sub(1);
+    let col = (pos.col as usize).saturating_sub(1);
+    let Some(line) = text.split('\n').nth(line_index) else { return false };
     let mut rest = line.chars().skip(col);
     rest.next() == Some('<') && rest.next().is_some_and(|c| c.is_alphabetic() || c == '_')
+}
+
+/// The 1-based line of a parser position (`u32` to `usize` loses nothing where `std` runs).
+fn row(pos: roxmltree::TextPos) -> usize {
+    pos.row as usize
 }

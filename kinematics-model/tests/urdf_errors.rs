@@ -234,7 +234,10 @@ fn malformed_xml_gives_the_line() {
     check("<robot name=\"r\"/>\ntext", "arm.urdf: line 2: unknown token");
     // A bad attribute, a mismatched close tag.
     check("<robot name=\"r\">\n<link name=a/>\n</robot>", "arm.urdf: line 2: expected a quote not 'a'");
-    check("<robot name=\"r\">\n<link name=\"a\">\n</robot>", "arm.urdf: line 3: expected 'link' tag, not 'robot'");
+    check(
+        "<robot name=\"r\">\n<link name=\"a\">\n</robot>",
+        "arm.urdf: line 3: </robot> where </link> should close <link>",
+    );
     check("<robot name=\"r\" name=\"s\"/>", "arm.urdf: line 1: attribute 'name' is already defined");
 }
 
