@@ -7,7 +7,7 @@ use kinematics_model::{ExactAngles, SourceKind};
 use crate::emit::{Emit, default_struct_name, emit_source};
 use crate::error::BuildError;
 use crate::links::find_link;
-use crate::source::{load, resolve};
+use crate::source::{Loaded, load, resolve};
 use crate::write::write_atomic;
 
 /// One robot to compile: the options of `#[derive(Kinematics)]` as builder calls.
@@ -150,7 +150,7 @@ impl Robot {
     /// and formats. Prints nothing: [`Robot::write_to_out_dir`] adds cargo's directives.
     pub fn generate(&self) -> Result<String, BuildError> {
         let label = self.label();
-        let loaded = load(&label, self.source_path(), self.kind, ExactAngles::on(self.exact_angles))?;
+        let loaded = self.load()?;
         if let Some(base) = &self.base {
             find_link(&loaded.tree, &label, "base", base)?;
         }
@@ -167,6 +167,11 @@ impl Robot {
             f32: self.f32,
             crate_path: &self.crate_path,
         })
+    }
+
+    /// Reads and validates the description with this builder's format and exactness policy.
+    pub(crate) fn load(&self) -> Result<Loaded, BuildError> {
+        Ok(load(&self.label(), self.source_path(), self.kind, ExactAngles::on(self.exact_angles))?)
     }
 
     /// Generates and writes the code to `path` atomically (nothing half-written is left behind on
@@ -277,6 +282,19 @@ mod tests {
         );
         assert!(message.contains("joint `j1`: child link `c` does not exist"), "{message}");
         assert!(message.contains("joint `j0`: axis is zero"), "{message}");
+    }
+
+    #[test]
+    fn exact_angles_sets_the_policy_of_the_loaded_tree() {
+        // A fixed joint turned by pi as ROS spells it (2e-13 rad off).
+        let ros_pi = ARM.replace("<origin xyz=\"1 0 0\"/>", "<origin xyz=\"1 0 0\" rpy=\"3.14159265359 0 0\"/>");
+        let dir = fixture("exact", &[("arm.urdf", &ros_pi)]);
+        let robot = || Robot::urdf("arm.urdf").manifest_dir(&dir);
+        let recognised = |r: Robot| r.load().unwrap().tree.recognised_angles().len();
+        assert_eq!(recognised(robot()), 1);
+        assert_eq!(recognised(robot().exact_angles(true)), 1);
+        assert_eq!(recognised(robot().exact_angles(false)), 0);
+        assert_eq!(recognised(robot().exact_angles(false).exact_angles(true)), 1);
     }
 
     #[test]
