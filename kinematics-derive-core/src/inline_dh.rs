@@ -332,7 +332,7 @@ impl InlineDh {
             let element = Element::DhSection(section);
             let mut cells = Cells { errors: &mut errors };
             let no_cells = [None, None, None];
-            let xyz = f.xyz.as_ref().map(|t| t.0.each_ref().map(Some)).unwrap_or(no_cells.clone());
+            let xyz = f.xyz.as_ref().map(|t| t.0.each_ref().map(Some)).unwrap_or(no_cells);
             let rpy = f.rpy.as_ref().map(|t| t.0.each_ref().map(Some)).unwrap_or(no_cells);
             let [x, y, z] =
                 [(xyz[0], "x"), (xyz[1], "y"), (xyz[2], "z")].map(|(c, field)| cells.number(c, &element, field));
