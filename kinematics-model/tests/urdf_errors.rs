@@ -277,3 +277,35 @@ fn what_urdf_allows_to_leave_out_takes_its_default() {
       <whatever/></robot>";
     assert_eq!(parse_source("arm.urdf", text).unwrap().links().len(), 2);
 }
+
+/// Cut anywhere, a real robot file loads or fails with a message whose line is inside the text
+/// that is there; never a panic.
+#[test]
+fn every_truncation_is_an_error_at_a_line_of_the_text() {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../robots/planar_3r.urdf");
+    let text = std::fs::read_to_string(path).unwrap();
+    let end = text.trim_end().len();
+    for cut in (0..end).filter(|&i| text.is_char_boundary(i)) {
+        let prefix = &text[..cut];
+        let lines = prefix.split('\n').count();
+        let Err(error) = parse_source("arm.urdf", prefix) else { panic!("a file cut at byte {cut} loaded") };
+        match error.kind {
+            LoadErrorKind::Syntax { line: Some(line), .. } | LoadErrorKind::Located { line, .. } => {
+                assert!((1..=lines).contains(&line), "cut at {cut}: line {line} of {lines}: {error}");
+            }
+            LoadErrorKind::Syntax { line: None, .. } => assert!(prefix.trim().is_empty(), "cut at {cut}: {error}"),
+            _ => panic!("cut at {cut}: {error}"),
+        }
+    }
+}
+
+proptest::proptest! {
+    /// Arbitrary text, and arbitrary bytes spliced into a valid file, never panic the reader.
+    #[test]
+    fn arbitrary_text_never_panics(text in "\\PC{0,200}", splice in "[<>/=\" a-z0-9.]{0,12}", at in 0usize..400) {
+        let _ = parse_source("arm.urdf", &text);
+        let good = joint_with("<origin xyz=\"1 2 3\" rpy=\"0 0 0.5\"/> <mimic joint=\"x\"/>");
+        let at = (0..=at.min(good.len())).rev().find(|&i| good.is_char_boundary(i)).unwrap_or(0);
+        let _ = parse_source("arm.urdf", &format!("{}{splice}{}", &good[..at], &good[at..]));
+    }
+}
