@@ -24,7 +24,7 @@
 //! This crate is the one dependency users add: it re-exports the derive and its trait
 //! ([`Kinematics`]), the model ([`model`]: descriptions and the validated [`KinematicTree`]) and
 //! the runtime reference ([`runtime`]: [`ReferenceFk`], poses and Jacobians on nalgebra), and adds
-//! [`load`], which reads a description file.
+//! [`load`] (and [`load_with`], with an exactness policy), which reads a description file.
 //!
 //! ```
 //! let fk = kinematics::ReferenceFk::new(kinematics::load(concat!(env!("CARGO_MANIFEST_DIR"), "/robots/planar_3r.toml"))?);
@@ -36,7 +36,7 @@
 
 pub use kinematics_derive::Kinematics;
 pub use kinematics_model as model;
-pub use kinematics_model::{KinematicTree, LoadError, LoadErrorKind};
+pub use kinematics_model::{ExactAngles, KinematicTree, LoadError, LoadErrorKind};
 pub use kinematics_runtime as runtime;
 pub use kinematics_runtime::{
     AGREEMENT_TOLERANCE, AGREEMENT_TOLERANCE_F32, Configurations, JointLimits, Kinematics, Pose, Real, ReferenceFk,
@@ -45,10 +45,28 @@ pub use kinematics_runtime::{
 
 /// Reads and validates a robot description file: `.urdf`/`.xml` (URDF), `.toml` or `.json` (DH table).
 ///
-/// Errors name the file as given, the element (joint, link, DH row) and the fault.
+/// Errors name the file as given, the element (joint, link, DH row) and the fault. Decimal angles
+/// are read by the default exactness policy ([`ExactAngles::default`]); [`load_with`] takes
+/// another.
 pub fn load(path: impl AsRef<std::path::Path>) -> Result<KinematicTree, LoadError> {
+    load_with(path, ExactAngles::default())
+}
+
+/// [`load`] with the exactness policy `exact_angles` (`ExactAngles::Off` reads every angle as
+/// written): the file's bytes through the model's one loader, [`model::Source::load`].
+///
+/// ```
+/// use kinematics::ExactAngles;
+/// let file = concat!(env!("CARGO_MANIFEST_DIR"), "/robots/ur5.urdf");
+/// let on = kinematics::load_with(file, ExactAngles::default())?;
+/// let off = kinematics::load_with(file, ExactAngles::Off)?;
+/// assert_eq!(on.dof(), off.dof());
+/// assert!(off.recognised_angles().is_empty());
+/// # Ok::<(), kinematics::LoadError>(())
+/// ```
+pub fn load_with(path: impl AsRef<std::path::Path>, exact_angles: ExactAngles) -> Result<KinematicTree, LoadError> {
     let path = path.as_ref();
     let label = path.display().to_string();
-    let text = std::fs::read_to_string(path).map_err(|e| LoadError::new(label.clone(), LoadErrorKind::Io(e)))?;
-    kinematics_model::parse_source(&label, &text)
+    let bytes = std::fs::read(path).map_err(|e| LoadError::new(label.clone(), LoadErrorKind::Io(e)))?;
+    kinematics_model::Source::from_bytes(label, kinematics_model::SourceKind::ByExtension, bytes)?.load(exact_angles)
 }

@@ -43,6 +43,7 @@ pub(crate) fn emit_source(emit: &Emit<'_>) -> Result<String, BuildError> {
         krate: quote!(#krate),
         source_label: loaded.reference_label.clone(),
         source_text: quote!(include_str!(#absolute)),
+        exact_angles: loaded.tree.exact_angles(),
     };
     let impls = emit_robot(&quote!(#ident), &spec).map_err(|source| BuildError::Compile { file: file(), source })?;
     let doc = format!(

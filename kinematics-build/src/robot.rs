@@ -2,12 +2,12 @@
 
 use std::path::{Path, PathBuf};
 
-use kinematics_model::SourceFormat;
+use kinematics_model::{ExactAngles, SourceKind};
 
 use crate::emit::{Emit, default_struct_name, emit_source};
 use crate::error::BuildError;
 use crate::links::find_link;
-use crate::source::{load, resolve};
+use crate::source::{Loaded, load, resolve};
 use crate::write::write_atomic;
 
 /// One robot to compile: the options of `#[derive(Kinematics)]` as builder calls.
@@ -21,6 +21,7 @@ use crate::write::write_atomic;
 /// | `positions` | [`Robot::positions`] |
 /// | `scalars(f64, f32)` | [`Robot::f32`] |
 /// | `crate = "path"` | [`Robot::crate_path`] |
+/// | `exact_angles = false` | [`Robot::exact_angles`] |
 ///
 /// plus [`Robot::struct_name`] (default: the robot's name in UpperCamelCase, see
 /// [`default_struct_name`]). Paths are relative to `CARGO_MANIFEST_DIR` (the directory of the
@@ -29,7 +30,7 @@ use crate::write::write_atomic;
 #[must_use]
 pub struct Robot {
     path: PathBuf,
-    format: Option<SourceFormat>,
+    kind: SourceKind,
     dir: Option<PathBuf>,
     base: Option<String>,
     tips: Vec<String>,
@@ -37,13 +38,14 @@ pub struct Robot {
     f32: bool,
     struct_name: Option<String>,
     crate_path: String,
+    exact_angles: bool,
 }
 
 impl Robot {
-    fn new(path: PathBuf, format: Option<SourceFormat>) -> Self {
+    fn new(path: PathBuf, kind: SourceKind) -> Self {
         Robot {
             path,
-            format,
+            kind,
             dir: None,
             base: None,
             tips: Vec::new(),
@@ -51,25 +53,24 @@ impl Robot {
             f32: false,
             struct_name: None,
             crate_path: "::kinematics".to_owned(),
+            exact_angles: true,
         }
     }
 
     /// A URDF file, whatever its extension.
     pub fn urdf(path: impl Into<PathBuf>) -> Self {
-        Self::new(path.into(), Some(SourceFormat::Urdf))
+        Self::new(path.into(), SourceKind::Urdf)
     }
 
     /// A DH table: JSON if the name ends in `.json`, TOML otherwise.
     pub fn dh(path: impl Into<PathBuf>) -> Self {
-        let path = path.into();
-        let json = path.extension().is_some_and(|e| e.eq_ignore_ascii_case("json"));
-        Self::new(path, Some(if json { SourceFormat::DhJson } else { SourceFormat::DhToml }))
+        Self::new(path.into(), SourceKind::Dh)
     }
 
     /// A description whose format the extension names (`.urdf`/`.xml`, `.toml`, `.json`); any
     /// other extension is an error when generating.
     pub fn file(path: impl Into<PathBuf>) -> Self {
-        Self::new(path.into(), None)
+        Self::new(path.into(), SourceKind::ByExtension)
     }
 
     /// Read relative paths from `dir` instead of `CARGO_MANIFEST_DIR` (tools outside cargo).
@@ -125,6 +126,14 @@ impl Robot {
         self
     }
 
+    /// Whether decimal angles within 1e-9 rad of a multiple of pi/2 are read as that multiple
+    /// (`true`, the default; see `kinematics_model::exactness`) or every angle as written
+    /// (`false`). The generated `reference()` loads the description with the same policy.
+    pub fn exact_angles(mut self, on: bool) -> Self {
+        self.exact_angles = on;
+        self
+    }
+
     /// The description file as the caller wrote it (the name in messages).
     pub fn label(&self) -> String {
         self.path.display().to_string()
@@ -141,7 +150,7 @@ impl Robot {
     /// and formats. Prints nothing: [`Robot::write_to_out_dir`] adds cargo's directives.
     pub fn generate(&self) -> Result<String, BuildError> {
         let label = self.label();
-        let loaded = load(&label, self.source_path(), self.format)?;
+        let loaded = self.load()?;
         if let Some(base) = &self.base {
             find_link(&loaded.tree, &label, "base", base)?;
         }
@@ -158,6 +167,11 @@ impl Robot {
             f32: self.f32,
             crate_path: &self.crate_path,
         })
+    }
+
+    /// Reads and validates the description with this builder's format and exactness policy.
+    pub(crate) fn load(&self) -> Result<Loaded, BuildError> {
+        Ok(load(&self.label(), self.source_path(), self.kind, ExactAngles::on(self.exact_angles))?)
     }
 
     /// Generates and writes the code to `path` atomically (nothing half-written is left behind on
@@ -268,6 +282,19 @@ mod tests {
         );
         assert!(message.contains("joint `j1`: child link `c` does not exist"), "{message}");
         assert!(message.contains("joint `j0`: axis is zero"), "{message}");
+    }
+
+    #[test]
+    fn exact_angles_sets_the_policy_of_the_loaded_tree() {
+        // A fixed joint turned by pi as ROS spells it (2e-13 rad off).
+        let ros_pi = ARM.replace("<origin xyz=\"1 0 0\"/>", "<origin xyz=\"1 0 0\" rpy=\"3.14159265359 0 0\"/>");
+        let dir = fixture("exact", &[("arm.urdf", &ros_pi)]);
+        let robot = || Robot::urdf("arm.urdf").manifest_dir(&dir);
+        let recognised = |r: Robot| r.load().unwrap().tree.recognised_angles().len();
+        assert_eq!(recognised(robot()), 1);
+        assert_eq!(recognised(robot().exact_angles(true)), 1);
+        assert_eq!(recognised(robot().exact_angles(false)), 0);
+        assert_eq!(recognised(robot().exact_angles(false).exact_angles(true)), 1);
     }
 
     #[test]

@@ -1,8 +1,9 @@
-//! Reading the description relative to the crate's `Cargo.toml`, and validating it.
+//! Reading the description relative to the crate's `Cargo.toml`, and loading it through the
+//! model's one loader (`kinematics_model::Source::load`).
 
 use std::path::{Path, PathBuf};
 
-use kinematics_model::{KinematicTree, LoadError, LoadErrorKind, SourceFormat};
+use kinematics_model::{ExactAngles, KinematicTree, LoadError, LoadErrorKind, Source, SourceKind};
 
 /// A description, read and validated.
 #[derive(Debug)]
@@ -30,27 +31,16 @@ pub(crate) fn resolve(path: &Path, dir: Option<&Path>) -> PathBuf {
     std::fs::canonicalize(&joined).unwrap_or_else(|_| std::path::absolute(&joined).unwrap_or(joined))
 }
 
-/// Reads and validates the description at `absolute`; `label` names it in errors. `format` is
-/// the front end (`None`: by the label's extension).
-pub(crate) fn load(label: &str, absolute: PathBuf, format: Option<SourceFormat>) -> Result<Loaded, LoadError> {
-    let error = |kind| LoadError::new(label, kind);
-    let format = match format {
-        Some(format) => format,
-        None => SourceFormat::from_file_name(label).ok_or_else(|| error(LoadErrorKind::UnknownFormat))?,
-    };
-    let text = std::fs::read_to_string(&absolute).map_err(|e| error(LoadErrorKind::Io(e)))?;
-    let description = format.parse(&text).map_err(error)?;
-    let tree = KinematicTree::from_description(&description).map_err(|e| error(LoadErrorKind::Model(e)))?;
-    let reference_label = match SourceFormat::from_file_name(label) {
-        Some(f) if f == format => label.to_owned(),
-        _ => format!(
-            "{label}.{}",
-            match format {
-                SourceFormat::Urdf => "urdf",
-                SourceFormat::DhJson => "json",
-                SourceFormat::DhToml => "toml",
-            }
-        ),
-    };
-    Ok(Loaded { tree, label: label.to_owned(), reference_label, absolute })
+/// Reads the description at `absolute` and loads it with `exact_angles`; `label` names it in
+/// errors and, with `kind`, picks the format.
+pub(crate) fn load(
+    label: &str,
+    absolute: PathBuf,
+    kind: SourceKind,
+    exact_angles: ExactAngles,
+) -> Result<Loaded, LoadError> {
+    let bytes = std::fs::read(&absolute).map_err(|e| LoadError::new(label, LoadErrorKind::Io(e)))?;
+    let source = Source::from_bytes(label, kind, bytes)?;
+    let tree = source.load(exact_angles)?;
+    Ok(Loaded { tree, label: label.to_owned(), reference_label: source.file_name(), absolute })
 }

@@ -33,7 +33,8 @@ pub struct Args {
 
 /// The builder for these arguments: the file relative to the current directory.
 pub fn builder(args: &Args) -> Robot {
-    let mut robot = Robot::file(&args.file).manifest_dir(".").tips(&args.tip);
+    let mut robot =
+        Robot::file(&args.file).manifest_dir(".").tips(&args.tip).exact_angles(crate::robot::exact_angles_on());
     if let Some(base) = &args.base {
         robot = robot.base(base);
     }

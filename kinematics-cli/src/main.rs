@@ -33,8 +33,19 @@ use crate::error::CliError;
 #[derive(Parser)]
 #[command(name = "kinematics", version, about)]
 struct Cli {
+    /// Read decimal angles within 1e-9 rad of a multiple of pi/2 (such as 3.14159265359) as that
+    /// exact multiple (`on`), or every angle as written (`off`).
+    #[arg(long, global = true, value_enum, value_name = "on|off", default_value = "on")]
+    exact_angles: Switch,
     #[command(subcommand)]
     command: Command,
+}
+
+/// A global on/off option.
+#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+enum Switch {
+    On,
+    Off,
 }
 
 #[derive(Subcommand)]
@@ -61,6 +72,7 @@ enum Command {
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
+    robot::set_exact_angles(cli.exact_angles == Switch::On);
     let stdout = std::io::stdout();
     let mut out = stdout.lock();
     let result = match cli.command {

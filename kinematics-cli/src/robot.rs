@@ -1,12 +1,30 @@
 //! Loading a description and choosing links: by name (checked, with "did you mean") or by depth.
 
+use std::sync::atomic::{AtomicBool, Ordering};
+
+use kinematics::ExactAngles;
 use kinematics::model::{KinematicTree, LinkId};
 
 use crate::error::CliError;
 
-/// Reads and validates the description `file` (the path as the user typed it names it in errors).
+/// The global `--exact-angles <on|off>` option (on unless `main` says otherwise), which every
+/// subcommand's loading honours.
+static EXACT_ANGLES: AtomicBool = AtomicBool::new(true);
+
+/// Sets the exactness policy of every description this run loads (`main`, from the options).
+pub fn set_exact_angles(on: bool) {
+    EXACT_ANGLES.store(on, Ordering::Relaxed);
+}
+
+/// Whether `--exact-angles` is on.
+pub fn exact_angles_on() -> bool {
+    EXACT_ANGLES.load(Ordering::Relaxed)
+}
+
+/// Reads and validates the description `file` (the path as the user typed it names it in errors),
+/// with the exactness policy of `--exact-angles`.
 pub fn load(file: &str) -> Result<KinematicTree, CliError> {
-    Ok(kinematics::load(file)?)
+    Ok(kinematics::load_with(file, ExactAngles::on(exact_angles_on()))?)
 }
 
 /// The link named by an option (`role` says which: `base`, `tip`, ...), or the error naming it.

@@ -44,6 +44,10 @@ pub struct RobotSpec<'a> {
     pub source_label: String,
     /// An expression of type `&'static str` holding the description's text (e.g. `include_str!`).
     pub source_text: TokenStream,
+    /// The exactness policy the tree was loaded with; `reference()` loads the description with it,
+    /// so the reference is the robot the code was compiled from. Must be the tree's own policy
+    /// ([`KinematicTree::exact_angles`]), else [`emit_robot`] fails.
+    pub exact_angles: kinematics_model::ExactAngles,
 }
 
 fn strs(names: &[String]) -> TokenStream {

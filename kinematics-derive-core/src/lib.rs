@@ -46,6 +46,7 @@ fn expand_input(input: &syn::DeriveInput) -> darling::Result<TokenStream> {
         krate: krate.clone(),
         source_label: loaded.label.clone(),
         source_text: loaded.text_expr.clone(),
+        exact_angles: loaded.tree.exact_angles(),
     };
     let robot = emit_robot(&self_ty, &spec).map_err(|e| darling::Error::custom(format!("{}: {e}", loaded.label)))?;
     // `emit_robot` writes `impl Type`; generic structs need their parameters on the impls.

@@ -3,6 +3,7 @@
 //! ```text
 //! #[kinematics(urdf = "robots/ur5.urdf", base = "base", tip = "tool0")]
 //! #[kinematics(dh = "robots/ur5.toml", tips("link3", "link6"), positions, scalars(f64, f32))]
+//! #[kinematics(urdf = "robots/ur5_ros.urdf", exact_angles = false)]
 //! #[kinematics(dh(convention = "standard",
 //!                 joint(name = "shoulder", a = 1.0),
 //!                 joint(name = "elbow", a = 1.0, alpha = "pi/2")))]
@@ -14,6 +15,7 @@ use darling::{Error, FromDeriveInput, FromMeta};
 
 use crate::inline_dh::InlineDh;
 use kinematics_compiler::robot::Scalars;
+use kinematics_model::ExactAngles;
 
 /// The options of one derive.
 #[derive(Debug, FromDeriveInput)]
@@ -44,6 +46,10 @@ pub struct KinematicsInput {
     /// `scalars(f64, f32)`.
     #[darling(default)]
     pub scalars: Option<SpannedValue<PathList>>,
+    /// `exact_angles = false`: read every decimal angle as written (default `true`: angles within
+    /// 1e-9 rad of a multiple of pi/2 are that multiple; see `kinematics_model::exactness`).
+    #[darling(default)]
+    pub exact_angles: Option<Switch>,
     /// `crate = "path"` for a renamed dependency.
     #[darling(default, rename = "crate")]
     pub krate: Option<syn::Path>,
@@ -57,6 +63,14 @@ impl KinematicsInput {
             tips.extend(list.0.iter().cloned());
         }
         tips
+    }
+
+    /// The exactness policy: `exact_angles = true` (the default) or `false`.
+    pub fn exact_angles(&self) -> ExactAngles {
+        match self.exact_angles {
+            Some(Switch(on)) => ExactAngles::on(on),
+            None => ExactAngles::default(),
+        }
     }
 
     /// The scalar types asked for (`f64` by default).
@@ -118,5 +132,30 @@ impl FromMeta for DhSource {
 
     fn from_list(items: &[NestedMeta]) -> darling::Result<Self> {
         InlineDh::from_list(items).map(|t| DhSource::Inline(Box::new(t)))
+    }
+}
+
+/// A key that is on or off: `key = true`, `key = false`, or the bare `key` (on).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Switch(pub bool);
+
+impl FromMeta for Switch {
+    fn from_word() -> darling::Result<Self> {
+        Ok(Switch(true))
+    }
+
+    fn from_value(value: &syn::Lit) -> darling::Result<Self> {
+        match value {
+            syn::Lit::Bool(b) => Ok(Switch(b.value)),
+            other => Err(Error::custom("expected `true` or `false`").with_span(other)),
+        }
+    }
+
+    fn from_expr(expr: &syn::Expr) -> darling::Result<Self> {
+        match expr {
+            syn::Expr::Lit(lit) => Self::from_value(&lit.lit),
+            syn::Expr::Group(group) => Self::from_expr(&group.expr),
+            other => Err(Error::custom("expected `true` or `false`").with_span(other)),
+        }
     }
 }

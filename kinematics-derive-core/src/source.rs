@@ -1,21 +1,26 @@
-//! Reading and validating the description the attribute names, with errors spanned on the key.
+//! Reading the description the attribute names and loading it through the model's one loader
+//! (`kinematics_model::Source::load`), with errors spanned on the key.
 
 use std::path::PathBuf;
 
 use darling::Error;
 use darling::util::SpannedValue;
-use kinematics_model::{KinematicTree, SourceFormat};
+use kinematics_model::{ExactAngles, KinematicTree, LoadError, LoadErrorKind, Source, SourceFormat, SourceKind};
 use proc_macro2::{Span, TokenStream};
 use quote::quote;
 
+use crate::inline_dh::{InlineDh, LABEL};
 use crate::options::{DhSource, KinematicsInput};
 
 /// A description, read and validated.
 pub struct Loaded {
     /// The validated tree.
     pub tree: KinematicTree,
-    /// The file as the user wrote it (for messages and for `reference()`).
+    /// The name `reference()` parses the text under (the file as the user wrote it, with an
+    /// extension naming the format when it has none).
     pub label: String,
+    /// The description as the user wrote it, for messages (the path, or `inline DH table`).
+    pub written: String,
     /// An expression of type `&'static str` with the text, which also makes the crate rebuild when
     /// the file changes (`include_str!` of its absolute path).
     pub text_expr: TokenStream,
@@ -23,18 +28,14 @@ pub struct Loaded {
 
 /// Reads the description, checks the tree, base and tips; all faults together.
 pub fn load(options: &KinematicsInput) -> darling::Result<Loaded> {
+    let exact_angles = options.exact_angles();
     let loaded = match (&options.urdf, &options.dh) {
-        (Some(path), None) => from_file(path, SourceFormat::Urdf)?,
+        (Some(path), None) => from_file(path, SourceKind::Urdf, exact_angles)?,
         (None, Some(dh)) => match dh.as_ref() {
             DhSource::File(path) => {
-                let format = if path.to_ascii_lowercase().ends_with(".json") {
-                    SourceFormat::DhJson
-                } else {
-                    SourceFormat::DhToml
-                };
-                from_file(&SpannedValue::new(path.clone(), dh.span()), format)?
+                from_file(&SpannedValue::new(path.clone(), dh.span()), SourceKind::Dh, exact_angles)?
             }
-            DhSource::Inline(table) => from_inline(table, dh.span())?,
+            DhSource::Inline(table) => from_inline(table, dh.span(), exact_angles)?,
         },
         (Some(_), Some(dh)) => {
             return Err(Error::custom("give one description: `urdf` or `dh`, not both").with_span(&dh.span()));
@@ -47,59 +48,123 @@ pub fn load(options: &KinematicsInput) -> darling::Result<Loaded> {
         }
     };
     let mut errors = Error::accumulator();
-    let mut links: Vec<(&str, SpannedValue<String>)> = options.base.iter().map(|b| ("base", b.clone())).collect();
+    let mut links: Vec<(&'static str, SpannedValue<String>)> =
+        options.base.iter().map(|b| ("base", b.clone())).collect();
     links.extend(options.tips().into_iter().map(|t| ("tip", t)));
-    for (what, link) in &links {
-        if loaded.tree.link_id(link).is_none() {
-            let hint = loaded.tree.suggest_link(link).map(|c| format!("; did you mean `{c}`?")).unwrap_or_default();
-            errors.push(
-                Error::custom(format!("{}: {what} link `{}` does not exist{hint}", loaded.label, link.as_ref()))
-                    .with_span(&link.span()),
-            );
+    for (role, link) in &links {
+        if let Err(e) = loaded.tree.find_link(role, link) {
+            errors.push(Error::custom(format!("{}: {e}", loaded.written)).with_span(&link.span()));
         }
     }
     errors.finish_with(loaded)
 }
 
-fn from_file(path: &SpannedValue<String>, format: SourceFormat) -> darling::Result<Loaded> {
+fn from_file(path: &SpannedValue<String>, kind: SourceKind, exact_angles: ExactAngles) -> darling::Result<Loaded> {
     let span = path.span();
     let label = path.as_ref().clone();
     let root = std::env::var("CARGO_MANIFEST_DIR").map(PathBuf::from).unwrap_or_default();
     let absolute = root.join(&label);
-    let text = std::fs::read_to_string(&absolute)
-        .map_err(|e| Error::custom(format!("cannot read `{label}`: {e}")).with_span(&span))?;
-    let tree = parse(&label, &text, format, span)?;
+    let bytes =
+        std::fs::read(&absolute).map_err(|e| spanned(&LoadError::new(label.clone(), LoadErrorKind::Io(e)), span))?;
+    let source = Source::from_bytes(label, kind, bytes).map_err(|e| spanned(&e, span))?;
+    let tree = source.load(exact_angles).map_err(|e| spanned(&e, span))?;
     let absolute = absolute.to_string_lossy().into_owned();
-    // `reference()` picks the format from the name: make sure the name says what this file is.
-    let reference_label = match SourceFormat::from_file_name(&label) {
-        Some(f) if f == format => label.clone(),
-        _ => format!("{label}.{}", if format == SourceFormat::Urdf { "urdf" } else { "toml" }),
-    };
-    Ok(Loaded { tree, label: reference_label, text_expr: quote!(include_str!(#absolute)) })
+    Ok(Loaded { tree, label: source.file_name(), written: source.label, text_expr: quote!(include_str!(#absolute)) })
 }
 
-fn from_inline(table: &crate::inline_dh::InlineDh, span: Span) -> darling::Result<Loaded> {
-    let label = "inline DH table";
+fn from_inline(table: &InlineDh, span: Span, exact_angles: ExactAngles) -> darling::Result<Loaded> {
     let table = table.to_table().map_err(|e| e.with_span(&span))?;
-    let description = table.to_description().map_err(|e| Error::custom(format!("{label}: {e}")).with_span(&span))?;
-    let tree = KinematicTree::from_description(&description).map_err(|errors| {
-        Error::multiple(
-            errors.errors().iter().map(|e| Error::custom(format!("{label}: {e}")).with_span(&span)).collect(),
-        )
-    })?;
-    let text = table.to_toml().map_err(|e| Error::custom(format!("{label}: {e}")).with_span(&span))?;
-    Ok(Loaded { tree, label: "inline_dh.toml".to_owned(), text_expr: quote!(#text) })
+    // The table as the DH file it stands for: loaded by the one loader, and the text
+    // `reference()` parses, so both read the very same robot.
+    let text = table.to_toml().map_err(|e| spanned(&LoadError::new(LABEL, e), span))?;
+    let tree =
+        Source::new(SourceFormat::DhToml, LABEL, text.clone()).load(exact_angles).map_err(|e| spanned(&e, span))?;
+    Ok(Loaded { tree, label: "inline_dh.toml".to_owned(), written: LABEL.to_owned(), text_expr: quote!(#text) })
 }
 
-fn parse(label: &str, text: &str, format: SourceFormat, span: Span) -> darling::Result<KinematicTree> {
-    let error = |message: String| Error::custom(format!("{label}: {message}")).with_span(&span);
-    let description = format.parse(text).map_err(|e| error(e.to_string()))?;
-    KinematicTree::from_description(&description)
-        .map_err(|errors| Error::multiple(errors.errors().iter().map(|e| error(e.to_string())).collect()))
+/// A load error as compile errors on `span`: one per broken model rule, so all are shown.
+fn spanned(error: &LoadError, span: Span) -> Error {
+    match error.model_errors() {
+        Some(errors) => Error::multiple(
+            errors.errors().iter().map(|e| Error::custom(format!("{}: {e}", error.file)).with_span(&span)).collect(),
+        ),
+        None => Error::custom(error.to_string()).with_span(&span),
+    }
 }
 
 impl std::fmt::Debug for Loaded {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.debug_struct("Loaded").field("label", &self.label).finish_non_exhaustive()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use darling::FromDeriveInput;
+    use quote::quote;
+
+    use crate::options::KinematicsInput;
+
+    /// A fixed joint turned by pi as ROS spells it (2e-13 rad off), then a revolute joint.
+    const ROS_PI: &str = r#"<robot name="r"><link name="a"/><link name="b"/><link name="c"/>
+      <joint name="flip" type="fixed"><parent link="a"/><child link="b"/><origin rpy="3.14159265359 0 0"/></joint>
+      <joint name="turn" type="continuous"><parent link="b"/><child link="c"/><axis xyz="0 0 1"/></joint></robot>"#;
+
+    fn load(attribute: proc_macro2::TokenStream) -> darling::Result<super::Loaded> {
+        let input: syn::DeriveInput = syn::parse2(quote!(
+            #[kinematics(#attribute)]
+            struct Robot;
+        ))
+        .unwrap();
+        super::load(&KinematicsInput::from_derive_input(&input)?)
+    }
+
+    /// The number of angles the loaded tree recognised as exact.
+    fn recognised(attribute: proc_macro2::TokenStream) -> usize {
+        load(attribute).unwrap().tree.recognised_angles().len()
+    }
+
+    #[test]
+    fn exact_angles_key_sets_the_policy() {
+        let dir = std::env::temp_dir().join(format!("kinematics-derive-core-exact-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let file = dir.join("ros_pi.urdf");
+        std::fs::write(&file, ROS_PI).unwrap();
+        // An absolute path: joined to CARGO_MANIFEST_DIR, it stays itself.
+        let path = file.to_string_lossy().into_owned();
+        assert_eq!(recognised(quote!(urdf = #path)), 1);
+        assert_eq!(recognised(quote!(urdf = #path, exact_angles = true)), 1);
+        assert_eq!(recognised(quote!(urdf = #path, exact_angles = false)), 0);
+        // The inline table goes through the same loader.
+        let dh = quote!(dh(convention = "standard", row("j", 0.0, 1.57079632679, 0.0, 0.0)));
+        assert_eq!(recognised(quote!(#dh)), 1);
+        assert_eq!(recognised(quote!(#dh, exact_angles = false)), 0);
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn exact_angles_must_be_a_bool() {
+        for value in [quote!("no"), quote!(0), quote!(off)] {
+            let error = load(quote!(dh(convention = "standard", row("j", 0.0, 0.0, 0.0, 0.0)), exact_angles = #value));
+            assert!(error.is_err(), "{value}");
+        }
+    }
+
+    #[test]
+    fn base_and_tips_are_looked_up_by_the_model() {
+        let dh = quote!(dh(convention = "standard", row("j", 1.0, 0.0, 0.0, 0.0)));
+        let messages: Vec<String> = load(quote!(#dh, base = "bsae", tips("link1", "lnk1", "gripper")))
+            .unwrap_err()
+            .into_iter()
+            .map(|e| e.to_string())
+            .collect();
+        assert_eq!(
+            messages,
+            [
+                "inline DH table: base link `bsae` does not exist; did you mean `base`?",
+                "inline DH table: tip link `lnk1` does not exist; did you mean `link1`?",
+                "inline DH table: tip link `gripper` does not exist",
+            ]
+        );
     }
 }

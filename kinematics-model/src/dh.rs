@@ -273,7 +273,7 @@ impl DhTable {
         let theta = self.angle(&row.theta, element, "theta")?;
         let (theta, d) = match row.kind {
             DhJointType::Revolute => (theta + self.angle(&row.offset, element, "offset")?, row.d),
-            DhJointType::Prismatic => (theta, row.d + length(&row.offset, element, "offset")?),
+            DhJointType::Prismatic => (theta, row.d + number(&row.offset, element, "offset")?),
         };
         let identity = FixedTransform::identity();
         Ok(match (self.convention, row.kind) {
@@ -302,7 +302,7 @@ impl DhTable {
     fn limits(&self, row: &DhRow, element: &Element) -> Result<Option<LimitsDescription>, LoadErrorKind> {
         let bound = |v: &Value, field| match row.kind {
             DhJointType::Revolute => self.angle(v, element, field).map(Angle::radians),
-            DhJointType::Prismatic => length(v, element, field),
+            DhJointType::Prismatic => number(v, element, field),
         };
         match (&row.lower, &row.upper) {
             (None, None) => Ok(None),
@@ -334,20 +334,57 @@ impl DhTable {
                 AngleUnit::Radians => Angle::Radians(*x),
                 AngleUnit::Degrees => Angle::from_degrees(*x),
             }),
-            Value::Text(t) => Angle::parse_exact(t).ok_or_else(|| LoadErrorKind::Value {
-                element: element.clone(),
-                message: format!("`{field}` = \"{t}\" is neither a number nor an exact angle like \"pi/2\""),
-            }),
+            Value::Text(t) => exact_angle(t, element, field),
         }
     }
 }
 
-fn length(v: &Value, element: &Element, field: &str) -> Result<f64, LoadErrorKind> {
-    match v {
+/// An angle written as text: it must be exact, like `"pi/2"`, `"-3pi/4"` or `"0"`.
+fn exact_angle(text: &str, element: &Element, field: &str) -> Result<Angle, LoadErrorKind> {
+    Angle::parse_exact(text).ok_or_else(|| LoadErrorKind::Value {
+        element: element.clone(),
+        message: format!("`{field}` = \"{text}\" is neither a number nor an exact angle like \"pi/2\""),
+    })
+}
+
+/// Checks a cell of an angle column (`alpha`, `theta`, a revolute joint's `offset`, `lower` and
+/// `upper`, a fixed transform's `rpy`) as [`DhTable::to_description`] will read it: a number, or
+/// text that is an exact angle. Front ends that build a [`DhTable`] from another syntax (the
+/// derive's inline table) check each cell with this, to point at the offending one.
+///
+/// ```
+/// use kinematics_model::Element;
+/// use kinematics_model::dh::{Value, check_angle};
+/// let row = Element::DhRow { row: 2, joint: "elbow".to_owned() };
+/// assert!(check_angle(&Value::Text("-pi/2".to_owned()), &row, "alpha").is_ok());
+/// let error = check_angle(&Value::Text("pie/2".to_owned()), &row, "alpha").unwrap_err();
+/// assert_eq!(error.to_string(), "DH row 2 (joint `elbow`): `alpha` = \"pie/2\" is neither a number nor an exact angle like \"pi/2\"");
+/// ```
+pub fn check_angle(value: &Value, element: &Element, field: &str) -> Result<(), LoadErrorKind> {
+    match value {
+        Value::Number(_) => Ok(()),
+        Value::Text(t) => exact_angle(t, element, field).map(|_| ()),
+    }
+}
+
+/// The number in a cell of a column that holds no angle (`a`, `d`, `velocity`, `effort`, a
+/// prismatic joint's `offset`, `lower` and `upper`, a fixed transform's `xyz`): text is refused,
+/// naming the element, the column and the value, as a DH file refuses it.
+///
+/// ```
+/// use kinematics_model::Element;
+/// use kinematics_model::dh::{Value, number};
+/// let row = Element::DhRow { row: 1, joint: "j".to_owned() };
+/// assert_eq!(number(&Value::Number(-0.5), &row, "a").ok(), Some(-0.5));
+/// let error = number(&Value::Text("1.0".to_owned()), &row, "a").unwrap_err();
+/// assert_eq!(error.to_string(), "DH row 1 (joint `j`): `a` = \"1.0\" must be a number, not text");
+/// ```
+pub fn number(value: &Value, element: &Element, field: &str) -> Result<f64, LoadErrorKind> {
+    match value {
         Value::Number(x) => Ok(*x),
         Value::Text(t) => Err(LoadErrorKind::Value {
             element: element.clone(),
-            message: format!("`{field}` = \"{t}\" must be a number (a length, for a prismatic joint)"),
+            message: format!("`{field}` = \"{t}\" must be a number, not text"),
         }),
     }
 }

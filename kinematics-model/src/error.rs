@@ -150,8 +150,28 @@ pub enum ModelError {
     },
 }
 
+fn located(element: Option<&Element>, line: usize) -> String {
+    match element {
+        Some(element) => format!("{element} (line {line}): "),
+        None => format!("line {line}: "),
+    }
+}
+
 fn quoted(names: &[String]) -> String {
     names.iter().map(|n| format!("`{n}`")).collect::<Vec<_>>().join(", ")
+}
+
+/// A link name given by the user (a base, a tip, a link to print) that the robot does not have,
+/// with the closest existing name when it looks like a typo.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("{role} link `{link}` does not exist{}", .suggestion.as_ref().map(|s| format!("; did you mean `{s}`?")).unwrap_or_default())]
+pub struct UnknownLink {
+    /// What the link was asked for as (`base`, `tip`, ...).
+    pub role: &'static str,
+    /// The name given.
+    pub link: String,
+    /// The closest link name, when it looks like a typo.
+    pub suggestion: Option<String>,
 }
 
 /// Every rule a description broke (never empty).
@@ -206,6 +226,19 @@ pub enum LoadErrorKind {
         /// 1-based line, where the parser gives one.
         line: Option<usize>,
         /// The parser's message.
+        message: String,
+    },
+    /// A URDF element that is well-formed XML but not what URDF allows: a missing attribute or
+    /// element, a wrong count of numbers, a word where a number belongs. Displayed as
+    /// ``joint `elbow` (line 42): <origin xyz="1 2"> needs 3 numbers, found 2``, or as
+    /// `line 7: <joint> needs a `name` attribute` when the element has no name to give.
+    #[error("{}{message}", located(.element.as_ref(), *.line))]
+    Located {
+        /// The joint or link, when it has a name.
+        element: Option<Element>,
+        /// 1-based line of the offending element or attribute.
+        line: usize,
+        /// What is wrong.
         message: String,
     },
     /// A value is well-formed but wrong (a bad angle, half a limit pair).

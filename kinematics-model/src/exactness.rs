@@ -106,6 +106,7 @@ pub(crate) fn recognise(description: &mut Description, policy: ExactAngles) -> V
 }
 
 #[cfg(test)]
+#[allow(clippy::approx_constant)] // the cases are decimals that merely resemble pi, on purpose
 mod tests {
     use super::*;
 

@@ -38,9 +38,9 @@ mod validate;
 
 pub use angle::{Angle, PiRational};
 pub use description::{Description, JointDescription, JointTypeDescription, LimitsDescription, MimicDescription};
-pub use error::{Element, LoadError, LoadErrorKind, ModelError, ModelErrors};
+pub use error::{Element, LoadError, LoadErrorKind, ModelError, ModelErrors, UnknownLink};
 pub use exactness::{ExactAngles, RecognisedAngle};
 pub use joint::{Joint, JointKind, JointMotion, Limits, Link};
-pub use source::{SourceFormat, parse_source, parse_source_with};
+pub use source::{Source, SourceFormat, SourceKind, parse_source, parse_source_with};
 pub use transform::{Axis, Elementary, FixedTransform};
 pub use tree::{Chain, JointId, KinematicTree, LinkId};

@@ -1,4 +1,10 @@
-//! Choosing the front end from a file name, and the one-call path from text to a tree.
+//! The one front end: a description's text with its format and the name the user knows it by
+//! ([`Source`]), and the one path from it to a validated tree ([`Source::load`]).
+//!
+//! Every entry point (the `kinematics::load` facade, the build API, the derive, the command line)
+//! reads the file's bytes, builds a [`Source`] and calls [`Source::load`] with its exactness
+//! policy; none of them picks a format or parses on its own. The format is chosen here, in
+//! [`SourceFormat::choose`]: from the file name's extension, or as the caller's kind says.
 
 use crate::description::Description;
 use crate::error::{LoadError, LoadErrorKind};
@@ -16,6 +22,18 @@ pub enum SourceFormat {
     DhJson,
 }
 
+/// What the caller knows of a file's format before looking at its name.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum SourceKind {
+    /// Nothing: the extension decides (`.urdf`/`.xml`, `.toml`, `.json`; anything else is refused).
+    #[default]
+    ByExtension,
+    /// A URDF document, whatever its name.
+    Urdf,
+    /// A DH table: JSON if the name ends in `.json`, TOML otherwise.
+    Dh,
+}
+
 impl SourceFormat {
     /// The format a file name's extension names: `.urdf`/`.xml`, `.toml`, `.json`.
     pub fn from_file_name(name: &str) -> Option<Self> {
@@ -25,6 +43,34 @@ impl SourceFormat {
             "toml" => Some(Self::DhToml),
             "json" => Some(Self::DhJson),
             _ => None,
+        }
+    }
+
+    /// The format of the file `name` of kind `kind` (the one place a format is chosen).
+    ///
+    /// ```
+    /// use kinematics_model::{SourceFormat, SourceKind};
+    /// assert_eq!(SourceFormat::choose("arm.xml", SourceKind::ByExtension), Some(SourceFormat::Urdf));
+    /// assert_eq!(SourceFormat::choose("arm.xacro", SourceKind::ByExtension), None);
+    /// assert_eq!(SourceFormat::choose("arm.xacro", SourceKind::Urdf), Some(SourceFormat::Urdf));
+    /// assert_eq!(SourceFormat::choose("arm.JSON", SourceKind::Dh), Some(SourceFormat::DhJson));
+    /// assert_eq!(SourceFormat::choose("arm.table", SourceKind::Dh), Some(SourceFormat::DhToml));
+    /// ```
+    pub fn choose(name: &str, kind: SourceKind) -> Option<Self> {
+        match kind {
+            SourceKind::ByExtension => Self::from_file_name(name),
+            SourceKind::Urdf => Some(Self::Urdf),
+            SourceKind::Dh if Self::from_file_name(name) == Some(Self::DhJson) => Some(Self::DhJson),
+            SourceKind::Dh => Some(Self::DhToml),
+        }
+    }
+
+    /// The extension naming this format (`urdf`, `toml`, `json`).
+    pub fn extension(self) -> &'static str {
+        match self {
+            Self::Urdf => "urdf",
+            Self::DhToml => "toml",
+            Self::DhJson => "json",
         }
     }
 
@@ -38,6 +84,86 @@ impl SourceFormat {
     }
 }
 
+/// A description to load: its format, the name the user knows it by, and its text.
+///
+/// ```
+/// use kinematics_model::{ExactAngles, Source, SourceKind};
+///
+/// let urdf = r#"<robot name="r"><link name="a"/><link name="b"/>
+///   <joint name="j" type="fixed"><parent link="a"/><child link="b"/>
+///     <origin rpy="3.14159265359 0 0"/></joint></robot>"#;
+/// let source = Source::from_file_name("robots/r.urdf", SourceKind::ByExtension, urdf)?;
+/// assert_eq!(source.load(ExactAngles::default())?.recognised_angles().len(), 1);
+/// assert!(source.load(ExactAngles::Off)?.recognised_angles().is_empty());
+/// # Ok::<(), kinematics_model::LoadError>(())
+/// ```
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Source {
+    /// The format the text is in.
+    pub format: SourceFormat,
+    /// The file as the user wrote it (names it in every error).
+    pub label: String,
+    /// The description.
+    pub text: String,
+}
+
+impl Source {
+    /// A source whose format is given.
+    pub fn new(format: SourceFormat, label: impl Into<String>, text: impl Into<String>) -> Self {
+        Source { format, label: label.into(), text: text.into() }
+    }
+
+    /// A source whose format [`SourceFormat::choose`] picks from `label` and `kind`; an
+    /// unknown extension is [`LoadErrorKind::UnknownFormat`].
+    pub fn from_file_name(
+        label: impl Into<String>,
+        kind: SourceKind,
+        text: impl Into<String>,
+    ) -> Result<Self, LoadError> {
+        let label = label.into();
+        match SourceFormat::choose(&label, kind) {
+            Some(format) => Ok(Source { format, label, text: text.into() }),
+            None => Err(LoadError::new(label, LoadErrorKind::UnknownFormat)),
+        }
+    }
+
+    /// A source from a file's bytes: the format as [`SourceFormat::choose`] picks it from `label`
+    /// and `kind`; the bytes must be UTF-8 (the line of the first stray byte is reported).
+    pub fn from_bytes(label: impl Into<String>, kind: SourceKind, bytes: Vec<u8>) -> Result<Self, LoadError> {
+        let label = label.into();
+        let Some(format) = SourceFormat::choose(&label, kind) else {
+            return Err(LoadError::new(label, LoadErrorKind::UnknownFormat));
+        };
+        match String::from_utf8(bytes) {
+            Ok(text) => Ok(Source { format, label, text }),
+            Err(e) => {
+                let valid = e.utf8_error().valid_up_to();
+                let line = e.as_bytes()[..valid].iter().filter(|&&b| b == b'\n').count() + 1;
+                let message = "the text is not UTF-8".to_owned();
+                Err(LoadError::new(label, LoadErrorKind::Syntax { line: Some(line), message }))
+            }
+        }
+    }
+
+    /// A name [`parse_source`] reads in this source's format: the label when its extension
+    /// already names the format, else the label with that extension appended (`arm.table` as a
+    /// DH table becomes `arm.table.toml`). Generated `reference()` functions parse under it.
+    pub fn file_name(&self) -> String {
+        match SourceFormat::from_file_name(&self.label) {
+            Some(format) if format == self.format => self.label.clone(),
+            _ => format!("{}.{}", self.label, self.format.extension()),
+        }
+    }
+
+    /// Parses and validates the description with the exactness policy `exact_angles`: the one
+    /// path from text to tree.
+    pub fn load(&self, exact_angles: ExactAngles) -> Result<KinematicTree, LoadError> {
+        let error = |kind| LoadError::new(self.label.clone(), kind);
+        let description = self.format.parse(&self.text).map_err(error)?;
+        KinematicTree::from_description_with(&description, exact_angles).map_err(|e| error(LoadErrorKind::Model(e)))
+    }
+}
+
 /// Parses and validates a description; `file` names it in errors and picks the format by extension.
 ///
 /// The caller reads the file (this crate does no IO), so `file` is whatever the user should see.
@@ -47,8 +173,5 @@ pub fn parse_source(file: &str, text: &str) -> Result<KinematicTree, LoadError> 
 
 /// [`parse_source`] with the exactness policy `exact_angles`.
 pub fn parse_source_with(file: &str, text: &str, exact_angles: ExactAngles) -> Result<KinematicTree, LoadError> {
-    let error = |kind| LoadError::new(file, kind);
-    let format = SourceFormat::from_file_name(file).ok_or_else(|| error(LoadErrorKind::UnknownFormat))?;
-    let description = format.parse(text).map_err(error)?;
-    KinematicTree::from_description_with(&description, exact_angles).map_err(|e| error(LoadErrorKind::Model(e)))
+    Source::from_file_name(file, SourceKind::ByExtension, text)?.load(exact_angles)
 }

@@ -1,11 +1,31 @@
 //! "Did you mean" for names a user typed, and the size of a robot: small helpers every front end
 //! (derive, build API, command line) needs to say the same thing.
 
+use crate::error::UnknownLink;
 use crate::joint::JointKind;
 use crate::transform::Elementary;
-use crate::tree::KinematicTree;
+use crate::tree::{KinematicTree, LinkId};
 
 impl KinematicTree {
+    /// The link named `name`, asked for as `role` (`base`, `tip`, ...); if there is none, the
+    /// error names the role and the closest existing link when the name looks like a typo. The
+    /// derive, the build API and the command line check the names users give with this.
+    ///
+    /// ```
+    /// let tree = kinematics_model::synthetic::dh_chain(3);
+    /// assert_eq!(tree.find_link("tip", "link2").map(|l| tree.link(l).name.as_str()), Ok("link2"));
+    /// let error = tree.find_link("tip", "lnk2").unwrap_err();
+    /// assert_eq!(error.to_string(), "tip link `lnk2` does not exist; did you mean `link2`?");
+    /// assert_eq!(tree.find_link("base", "gripper").unwrap_err().to_string(), "base link `gripper` does not exist");
+    /// ```
+    pub fn find_link(&self, role: &'static str, name: &str) -> Result<LinkId, UnknownLink> {
+        self.link_id(name).ok_or_else(|| UnknownLink {
+            role,
+            link: name.to_owned(),
+            suggestion: self.suggest_link(name).map(str::to_owned),
+        })
+    }
+
     /// The link name closest to `wrong`, when it is close enough to be a likely typo.
     ///
     /// ```

@@ -1,70 +1,247 @@
-//! URDF front end: a URDF document (via `urdf-rs`) into a [`Description`].
+//! URDF front end: the kinematic subset of a URDF document into a [`Description`].
 //!
-//! Only the kinematic part is read: links by name, and each joint's type, parent, child, origin,
-//! axis, limits and mimic. Meshes, materials, inertials, `<transmission>` and `<gazebo>` elements
-//! are ignored, so real-world files load.
+//! Read with `roxmltree`, following urdfdom (the ROS reference parser) where URDF leaves a choice:
+//!
+//! - the root element is `<robot name>`; its `<link name>` and `<joint>` children are read, every
+//!   other element (materials, `<transmission>`, `<gazebo>`, xacro leftovers) is ignored, as are a
+//!   link's meshes and inertials;
+//! - a joint needs `name`, `type` (`revolute`, `continuous`, `prismatic`, `fixed`, `floating`,
+//!   `planar`; the model refuses the last two), `<parent link>` and `<child link>`;
+//! - `<origin xyz rpy>` defaults to zeros, `<axis xyz>` to `1 0 0`;
+//! - revolute and prismatic joints need `<limit>`, and every `<limit>` needs `effort` and
+//!   `velocity`; `lower` and `upper` default to 0;
+//! - `<mimic joint multiplier offset>`: `multiplier` defaults to 1, `offset` to 0.
+//!
+//! A number is whatever `f64::from_str` accepts once surrounding spaces are trimmed (`inf` and
+//! `nan` included: validation rejects them naming the field); anything else is an error naming the
+//! attribute. An element given twice where URDF allows one (two `<origin>`s) is an error rather
+//! than a silent choice. Every error names the joint (or link) and the line.
+
+use roxmltree::{Document, Node};
 
 use crate::angle::Angle;
 use crate::description::{Description, JointDescription, JointTypeDescription, LimitsDescription, MimicDescription};
 use crate::error::{Element, LoadErrorKind};
 use crate::transform::FixedTransform;
 
-/// Parses URDF text into a description (no rule is checked yet).
+/// Parses URDF text into a description (no model rule is checked yet).
 pub fn parse_urdf(text: &str) -> Result<Description, LoadErrorKind> {
-    let robot = urdf_rs::read_from_string(text).map_err(|e| syntax_error(text, &e.to_string()))?;
-    Ok(Description {
-        name: robot.name.clone(),
-        links: robot.links.iter().map(|l| l.name.clone()).collect(),
-        joints: robot.joints.iter().map(joint).collect(),
+    let options = roxmltree::ParsingOptions { allow_dtd: true, ..roxmltree::ParsingOptions::default() };
+    let doc = Document::parse_with_options(text, options).map_err(|e| xml_error(text, &e))?;
+    let robot = doc.root_element();
+    let namespace = robot.tag_name().namespace();
+    let at = At { doc: &doc, element: None };
+    if robot.tag_name().name() != "robot" {
+        return Err(
+            at.error(robot.range().start, format!("the root element is <{}>, not <robot>", robot.tag_name().name()))
+        );
+    }
+    let name = at.required(robot, "name")?.to_owned();
+    let mut links = Vec::new();
+    let mut joints = Vec::new();
+    for child in robot.children().filter(|c| c.is_element() && c.tag_name().namespace() == namespace) {
+        match child.tag_name().name() {
+            "link" => links.push(at.required(child, "name")?.to_owned()),
+            "joint" => joints.push(joint(&doc, child)?),
+            _ => {}
+        }
+    }
+    Ok(Description { name, links, joints })
+}
+
+/// One `<joint>`.
+fn joint(doc: &Document<'_>, node: Node<'_, '_>) -> Result<JointDescription, LoadErrorKind> {
+    let name = At { doc, element: None }.required(node, "name")?.to_owned();
+    let at = At { doc, element: Some(Element::Joint(name.clone())) };
+    let start = node.range().start;
+    let kind = match at.required(node, "type")? {
+        "revolute" => JointTypeDescription::Revolute,
+        "continuous" => JointTypeDescription::Continuous,
+        "prismatic" => JointTypeDescription::Prismatic,
+        "fixed" => JointTypeDescription::Fixed,
+        "floating" => JointTypeDescription::Floating,
+        "planar" => JointTypeDescription::Planar,
+        "spherical" => JointTypeDescription::Spherical,
+        other => {
+            return Err(at.error(
+                attribute_start(node, "type").unwrap_or(start),
+                format!(
+                    "unknown joint type `{other}` (expected revolute, continuous, prismatic, fixed, floating or planar)"
+                ),
+            ));
+        }
+    };
+    let link = |tag: &str| -> Result<String, LoadErrorKind> {
+        match at.single(node, tag)? {
+            Some(element) => Ok(at.required(element, "link")?.to_owned()),
+            None => Err(at.error(start, format!("needs a <{tag} link=\"...\"> element"))),
+        }
+    };
+    let parent = link("parent")?;
+    let child = link("child")?;
+    let (xyz, rpy) = match at.single(node, "origin")? {
+        Some(origin) => (at.vector(origin, "xyz")?.unwrap_or([0.0; 3]), at.vector(origin, "rpy")?.unwrap_or([0.0; 3])),
+        None => ([0.0; 3], [0.0; 3]),
+    };
+    let axis = match at.single(node, "axis")? {
+        Some(axis) => at.vector(axis, "xyz")?.unwrap_or([1.0, 0.0, 0.0]),
+        None => [1.0, 0.0, 0.0],
+    };
+    let limit = match at.single(node, "limit")? {
+        Some(limit) => Some(LimitsDescription {
+            lower: at.number(limit, "lower")?.unwrap_or(0.0),
+            upper: at.number(limit, "upper")?.unwrap_or(0.0),
+            effort: Some(at.required_number(limit, "effort")?),
+            velocity: Some(at.required_number(limit, "velocity")?),
+        }),
+        None => None,
+    };
+    let limited = matches!(kind, JointTypeDescription::Revolute | JointTypeDescription::Prismatic);
+    if limited && limit.is_none() {
+        return Err(
+            at.error(start, format!("a {} joint needs a <limit> element (with `effort` and `velocity`)", kind.name()))
+        );
+    }
+    let mimic = match at.single(node, "mimic")? {
+        Some(mimic) => Some(MimicDescription {
+            joint: at.required(mimic, "joint")?.to_owned(),
+            multiplier: at.number(mimic, "multiplier")?.unwrap_or(1.0),
+            offset: at.number(mimic, "offset")?.unwrap_or(0.0),
+        }),
+        None => None,
+    };
+    Ok(JointDescription {
+        element: Element::Joint(name.clone()),
+        name,
+        kind,
+        parent,
+        child,
+        origin: FixedTransform::from_xyz_rpy(xyz, rpy.map(Angle::Radians)),
+        after_motion: FixedTransform::identity(),
+        axis,
+        // Continuous, fixed and the refused types have no position limits, whatever they write.
+        limits: if limited { limit } else { None },
+        mimic,
     })
 }
 
-fn joint(j: &urdf_rs::Joint) -> JointDescription {
-    let kind = match j.joint_type {
-        urdf_rs::JointType::Revolute => JointTypeDescription::Revolute,
-        urdf_rs::JointType::Continuous => JointTypeDescription::Continuous,
-        urdf_rs::JointType::Prismatic => JointTypeDescription::Prismatic,
-        urdf_rs::JointType::Fixed => JointTypeDescription::Fixed,
-        urdf_rs::JointType::Floating => JointTypeDescription::Floating,
-        urdf_rs::JointType::Planar => JointTypeDescription::Planar,
-        urdf_rs::JointType::Spherical => JointTypeDescription::Spherical,
+/// Where errors are reported: the document (for lines) and the element being read.
+struct At<'d, 'input> {
+    doc: &'d Document<'input>,
+    element: Option<Element>,
+}
+
+impl<'input> At<'_, 'input> {
+    fn error(&self, byte: usize, message: String) -> LoadErrorKind {
+        let line = row(self.doc.text_pos_at(byte));
+        LoadErrorKind::Located { element: self.element.clone(), line, message }
+    }
+
+    /// The one child element `<tag>` of `node`, if any; a second one is an error.
+    fn single<'a>(&self, node: Node<'a, 'input>, tag: &str) -> Result<Option<Node<'a, 'input>>, LoadErrorKind> {
+        let namespace = node.tag_name().namespace();
+        let mut found = node
+            .children()
+            .filter(|c| c.is_element() && c.tag_name().namespace() == namespace && c.tag_name().name() == tag);
+        let first = found.next();
+        match found.next() {
+            Some(second) => Err(self.error(second.range().start, format!("more than one <{tag}>"))),
+            None => Ok(first),
+        }
+    }
+
+    /// The attribute `name` of `node`, which URDF requires.
+    fn required<'a>(&self, node: Node<'a, 'input>, name: &str) -> Result<&'a str, LoadErrorKind> {
+        node.attribute(name).ok_or_else(|| self.missing(node, name))
+    }
+
+    fn missing(&self, node: Node<'_, '_>, name: &str) -> LoadErrorKind {
+        self.error(node.range().start, format!("<{}> needs a `{name}` attribute", node.tag_name().name()))
+    }
+
+    /// The number in attribute `name` of `node`, if the attribute is there.
+    fn number(&self, node: Node<'_, '_>, name: &str) -> Result<Option<f64>, LoadErrorKind> {
+        let Some(text) = node.attribute(name) else { return Ok(None) };
+        text.trim().parse().map(Some).map_err(|_| {
+            let tag = node.tag_name().name();
+            self.error(
+                attribute_start(node, name).unwrap_or(node.range().start),
+                format!("<{tag} {name}=\"{text}\"> is not a number"),
+            )
+        })
+    }
+
+    /// The number in attribute `name` of `node`, which URDF requires.
+    fn required_number(&self, node: Node<'_, 'input>, name: &str) -> Result<f64, LoadErrorKind> {
+        match self.number(node, name)? {
+            Some(number) => Ok(number),
+            None => Err(self.missing(node, name)),
+        }
+    }
+
+    /// The three numbers in attribute `name` of `node`, if the attribute is there.
+    fn vector(&self, node: Node<'_, '_>, name: &str) -> Result<Option<[f64; 3]>, LoadErrorKind> {
+        let Some(text) = node.attribute(name) else { return Ok(None) };
+        let tag = node.tag_name().name();
+        let byte = attribute_start(node, name).unwrap_or(node.range().start);
+        let words: Vec<&str> = text.split_whitespace().collect();
+        let [x, y, z] = words[..] else {
+            return Err(self.error(byte, format!("<{tag} {name}=\"{text}\"> needs 3 numbers, found {}", words.len())));
+        };
+        let mut numbers = [0.0; 3];
+        for (slot, word) in numbers.iter_mut().zip([x, y, z]) {
+            *slot = word
+                .parse()
+                .map_err(|_| self.error(byte, format!("<{tag} {name}=\"{text}\">: `{word}` is not a number")))?;
+        }
+        Ok(Some(numbers))
+    }
+}
+
+/// Where attribute `name` of `node` starts in the text.
+fn attribute_start(node: Node<'_, '_>, name: &str) -> Option<usize> {
+    node.attributes().find(|a| a.namespace().is_none() && a.name() == name).map(|a| a.range().start)
+}
+
+/// Malformed XML: the parser's message, at the parser's line (the last line when the text ends
+/// too early, where the parser has no position to give).
+fn xml_error(text: &str, error: &roxmltree::Error) -> LoadErrorKind {
+    let last_line = text.lines().count().max(1);
+    let (line, message) = match error {
+        roxmltree::Error::NoRootNode if text.trim().is_empty() => (None, "the file is empty".to_owned()),
+        roxmltree::Error::NoRootNode => (Some(last_line), "no root element (truncated?)".to_owned()),
+        roxmltree::Error::UnclosedRootNode => {
+            (Some(last_line), "the file ends before the root element is closed (truncated?)".to_owned())
+        }
+        roxmltree::Error::UnexpectedEndOfStream => {
+            (Some(last_line), "the file ends in the middle of a tag (truncated?)".to_owned())
+        }
+        roxmltree::Error::UnexpectedCloseTag(expected, found, pos) => {
+            (Some(row(*pos)), format!("</{found}> where </{expected}> should close <{expected}>"))
+        }
+        roxmltree::Error::UnknownToken(pos) if starts_element(text, *pos) => {
+            (Some(row(*pos)), "a second root element: a URDF file holds one <robot>".to_owned())
+        }
+        other => {
+            let pos = other.pos();
+            let message = other.to_string().replacen(&format!(" at {pos}"), "", 1);
+            (Some(row(pos)), message)
+        }
     };
-    let rpy = j.origin.rpy.0.map(Angle::Radians);
-    let limited = matches!(kind, JointTypeDescription::Revolute | JointTypeDescription::Prismatic);
-    JointDescription {
-        name: j.name.clone(),
-        element: Element::Joint(j.name.clone()),
-        kind,
-        parent: j.parent.link.clone(),
-        child: j.child.link.clone(),
-        origin: FixedTransform::from_xyz_rpy(j.origin.xyz.0, rpy),
-        after_motion: FixedTransform::identity(),
-        axis: j.axis.xyz.0,
-        limits: limited.then_some(LimitsDescription {
-            lower: j.limit.lower,
-            upper: j.limit.upper,
-            velocity: Some(j.limit.velocity),
-            effort: Some(j.limit.effort),
-        }),
-        mimic: j.mimic.as_ref().map(|m| MimicDescription {
-            joint: m.joint.clone(),
-            multiplier: m.multiplier.unwrap_or(1.0),
-            offset: m.offset.unwrap_or(0.0),
-        }),
-    }
+    LoadErrorKind::Syntax { line, message }
 }
 
-/// Turns a parser message into a syntax error, with the line when the message carries one.
-fn syntax_error(_text: &str, message: &str) -> LoadErrorKind {
-    LoadErrorKind::Syntax { line: line_in_message(message), message: message.trim().to_owned() }
+/// Whether an element's start tag (`<name`) begins at `pos`: where the parser finds no token
+/// there, it follows the root element, as a second root.
+fn starts_element(text: &str, pos: roxmltree::TextPos) -> bool {
+    let line_index = row(pos).saturating_sub(1);
+    let col = (pos.col as usize).saturating_sub(1);
+    let Some(line) = text.split('\n').nth(line_index) else { return false };
+    let mut rest = line.chars().skip(col);
+    rest.next() == Some('<') && rest.next().is_some_and(|c| c.is_alphabetic() || c == '_')
 }
 
-/// The XML parsers behind urdf-rs report positions as `line N` or `N:M`; take the first.
-fn line_in_message(message: &str) -> Option<usize> {
-    let lower = message.to_ascii_lowercase();
-    if let Some(at) = lower.find("line ") {
-        let digits: String = lower[at + 5..].chars().take_while(char::is_ascii_digit).collect();
-        return digits.parse().ok();
-    }
-    None
+/// The 1-based line of a parser position (`u32` to `usize` loses nothing where `std` runs).
+fn row(pos: roxmltree::TextPos) -> usize {
+    pos.row as usize
 }
