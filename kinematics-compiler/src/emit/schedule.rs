@@ -73,6 +73,14 @@ impl Schedule {
         for &o in outputs {
             uses[o.index()] += 1;
         }
+        // A negation is never bound: written out wherever it is used, it writes its operand each
+        // time. So an operand used once, by a negation used twice, is written twice unless bound.
+        // (Negations never nest, and their users are counted above.)
+        for &id in &nodes {
+            if let Node::Neg(a) = g.node(id) {
+                uses[a.index()] += uses[id.index()].saturating_sub(1);
+            }
+        }
         // Everything an angle is computed from: its bindings must precede the `sin_cos` calls.
         let angles: Vec<ExprId> = nodes
             .iter()
