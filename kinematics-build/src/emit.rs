@@ -79,8 +79,11 @@ pub(crate) fn emit_source(emit: &Emit<'_>) -> Result<String, BuildError> {
 
 /// `text` as a string literal: raw (`r#"..."#`, with enough `#`s), so the embedded description
 /// keeps its lines in the generated file, or an escaped literal where a raw one cannot hold the
-/// text (a carriage return not followed by a line feed).
+/// text exactly (any carriage return: rustc reads a file's CR LF as LF, and refuses a lone CR).
 fn text_literal(text: &str) -> Literal {
+    if text.contains('\r') {
+        return Literal::string(text);
+    }
     let hashes = (0..)
         .find(|&n| {
             let closing = format!("\"{}", "#".repeat(n));
