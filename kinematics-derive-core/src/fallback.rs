@@ -2,9 +2,10 @@
 //! fault does not cascade into "no function `tip_pose`" and "trait `Kinematics` not implemented"
 //! errors wherever the struct is used (as thiserror's `fallback.rs` and serde_derive do).
 //!
-//! The stub never runs: the `compile_error!`s beside it stop the build. Its functions are generic
-//! over the lengths the robot would have fixed (`q: &[f64; N]`, `[Pose<f64>; M]`, under names the user's generics cannot take), so calls type
-//! check whatever the robot was meant to be. The fallible ones return errors; the infallible ones
+//! The stub never runs: the `compile_error!`s beside it stop the build. Its functions take and
+//! return arrays of the robot's lengths when the description loaded; otherwise they are generic
+//! over them (`q: &[f64; N]`, `[Pose<f64>; M]`, under names the user's generics cannot take), so
+//! calls that fix the lengths type check whatever the robot was meant to be. The fallible ones return errors; the infallible ones
 //! (`tip_pose`) have nothing to return and are `unreachable!`.
 
 use proc_macro2::TokenStream;
@@ -26,11 +27,13 @@ struct Names {
     f64: bool,
     /// `_f32` functions.
     f32: bool,
+    /// How many tips, if they could be counted.
+    tips: Option<usize>,
 }
 
 impl Names {
     /// Every name the derive can emit: for an attribute that cannot be read at all.
-    const ALL: Names = Names { one_tip: true, several_tips: true, positions: true, f64: true, f32: true };
+    const ALL: Names = Names { one_tip: true, several_tips: true, positions: true, f64: true, f32: true, tips: None };
 
     /// From options darling parsed (the scalar list may still be wrong: then both scalar types).
     fn from_options(options: &KinematicsInput) -> Self {
@@ -39,14 +42,15 @@ impl Names {
             Ok(s) => (s.f64, s.f32),
             Err(_) => (true, true),
         };
-        Names { one_tip: tips == 1, several_tips: tips > 1, positions: options.positions, f64, f32 }
+        Names { one_tip: tips == 1, several_tips: tips > 1, positions: options.positions, f64, f32, tips: Some(tips) }
     }
 
     /// From the attribute's keys alone, when darling could not parse it: only which keys are
     /// there matters (`tip`, `tips(...)` and how many, `positions`, `scalars(...)`); whatever
     /// cannot be read counts as present.
     fn from_attributes(input: &syn::DeriveInput) -> Self {
-        let mut names = Names { one_tip: false, several_tips: false, positions: false, f64: true, f32: false };
+        let mut names =
+            Names { one_tip: false, several_tips: false, positions: false, f64: true, f32: false, tips: None };
         let mut tips = 0usize;
         for attr in input.attrs.iter().filter(|a| a.path().is_ident("kinematics")) {
             let Ok(items) = attr.parse_args_with(Punctuated::<syn::Meta, syn::Token![,]>::parse_terminated) else {
@@ -79,6 +83,9 @@ impl Names {
                 }
             }
         }
+        if !(names.one_tip || names.several_tips) {
+            names.tips = Some(tips);
+        }
         names.one_tip |= tips == 1;
         names.several_tips |= tips > 1;
         names
@@ -107,9 +114,21 @@ fn crate_path(input: &syn::DeriveInput, options: Option<&KinematicsInput>) -> To
     quote!(::kinematics)
 }
 
+/// What is known of the robot when its description loaded (the fault was elsewhere): the stub's
+/// functions then take and return arrays of the robot's own lengths.
+#[derive(Debug, Clone, Copy)]
+pub struct Known {
+    /// Degrees of freedom.
+    pub dof: usize,
+    /// Links but the base (whatever the base: every link but one).
+    pub links: usize,
+}
+
 /// The stub: `impl Type { ... }` with the constants, the functions the attribute implies and
-/// `reference()`, and `impl Kinematics for Type`, in an anonymous block.
-pub fn stub(input: &syn::DeriveInput, options: Option<&KinematicsInput>) -> TokenStream {
+/// `reference()`, and `impl Kinematics for Type`, in an anonymous block. Lengths not known (no
+/// description, or tips that could not be counted) are const parameters of the functions, which
+/// the call site infers.
+pub fn stub(input: &syn::DeriveInput, options: Option<&KinematicsInput>, known: Option<Known>) -> TokenStream {
     let names = options.map_or_else(|| Names::from_attributes(input), Names::from_options);
     let krate = crate_path(input, options);
     let ident = &input.ident;
@@ -120,42 +139,54 @@ pub fn stub(input: &syn::DeriveInput, options: Option<&KinematicsInput>) -> Toke
         .filter(|(on, _, _)| *on)
         .map(|(_, suffix, t)| (suffix, t))
         .collect();
+    let length = |known: Option<usize>, param: &TokenStream| match known {
+        Some(n) => {
+            let n = proc_macro2::Literal::usize_unsuffixed(n);
+            (quote!(#n), None)
+        }
+        None => (param.clone(), Some(quote!(const #param: usize))),
+    };
+    let (dof, dof_param) = length(known.map(|k| k.dof), &quote!(__KINEMATICS_DOF));
+    let (links, links_param) = length(known.map(|k| k.links), &quote!(__KINEMATICS_FRAMES));
+    let (tips, tips_param) = length(names.tips, &quote!(__KINEMATICS_FRAMES));
     let mut functions = Vec::new();
-    let mut function = |name: &str, ret: &dyn Fn(&TokenStream) -> TokenStream| {
+    let mut function = |name: &str, frames: Option<&Option<TokenStream>>, ret: &dyn Fn(&TokenStream) -> TokenStream| {
+        let params: Vec<&TokenStream> = dof_param.iter().chain(frames.into_iter().flatten()).collect();
         for (suffix, t) in &scalars {
             let f = format_ident!("{name}{suffix}");
             let r = ret(t);
             functions.push(quote! {
                 #[allow(missing_docs, unused_variables, clippy::missing_panics_doc)]
-                pub fn #f<const __KINEMATICS_DOF: usize, const __KINEMATICS_FRAMES: usize>(q: &[#t; __KINEMATICS_DOF]) -> #r {
+                pub fn #f<#(#params),*>(q: &[#t; #dof]) -> #r {
                     ::core::unreachable!(#message)
                 }
             });
         }
     };
     let pose = |t: &TokenStream| quote!(#krate::Pose<#t>);
-    function("link_poses", &|t| {
+    function("link_poses", Some(&links_param), &|t| {
         let p = pose(t);
-        quote!([#p; __KINEMATICS_FRAMES])
+        quote!([#p; #links])
     });
     if names.one_tip {
-        function("tip_pose", &pose);
+        function("tip_pose", None, &pose);
     }
     if names.several_tips {
-        function("tip_poses", &|t| {
+        function("tip_poses", Some(&tips_param), &|t| {
             let p = pose(t);
-            quote!([#p; __KINEMATICS_FRAMES])
+            quote!([#p; #tips])
         });
     }
     if names.positions {
-        function("link_positions", &|t| quote!([[#t; 3]; __KINEMATICS_FRAMES]));
+        function("link_positions", Some(&links_param), &|t| quote!([[#t; 3]; #links]));
         if names.one_tip {
-            function("tip_position", &|t| quote!([#t; 3]));
+            function("tip_position", None, &|t| quote!([#t; 3]));
         }
         if names.several_tips {
-            function("tip_positions", &|t| quote!([[#t; 3]; __KINEMATICS_FRAMES]));
+            function("tip_positions", Some(&tips_param), &|t| quote!([[#t; 3]; #tips]));
         }
     }
+    let dof_const = known.map_or(0, |k| k.dof);
     let load_error = quote! {
         ::core::result::Result::Err(#krate::LoadError::new(
             "",
@@ -175,7 +206,7 @@ pub fn stub(input: &syn::DeriveInput, options: Option<&KinematicsInput>) -> Toke
             impl #impl_generics #ident #ty_generics #where_clause {
                 pub const ROBOT: &'static str = "";
                 pub const BASE: &'static str = "";
-                pub const DOF: usize = 0;
+                pub const DOF: usize = #dof_const;
                 pub const JOINT_NAMES: &'static [&'static str] = &[];
                 pub const JOINT_LIMITS: &'static [#krate::JointLimits] = &[];
                 pub const LINK_NAMES: &'static [&'static str] = &[];

@@ -27,32 +27,40 @@ pub fn expand(input: TokenStream) -> TokenStream {
         Err(e) => return e.to_compile_error(),
     };
     let mut errors = darling::Error::accumulator();
-    let (options, robot) = match KinematicsInput::from_derive_input(&input) {
+    let (options, known, robot) = match KinematicsInput::from_derive_input(&input) {
         Ok(options) => {
-            let robot = expand_options(&options, &mut errors);
-            (Some(options), robot)
+            let (known, robot) = expand_options(&options, &mut errors);
+            (Some(options), known, robot)
         }
         Err(e) => {
             errors.push(e);
-            (None, None)
+            (None, None, None)
         }
     };
     match (errors.finish(), robot) {
         (Ok(()), Some(robot)) => robot,
         (result, _) => {
             let errors = result.err().map(darling::Error::write_errors).unwrap_or_default();
-            let stub = fallback::stub(&input, options.as_ref());
+            let stub = fallback::stub(&input, options.as_ref(), known);
             quote!(#errors #stub)
         }
     }
 }
 
 /// Loads the description, checks the options and emits the robot, gathering every fault in
-/// `errors` (the load errors and the option errors side by side): the robot if there was none.
-fn expand_options(options: &KinematicsInput, errors: &mut darling::error::Accumulator) -> Option<TokenStream> {
+/// `errors` (the load errors and the option errors side by side): the robot if there was none,
+/// and what is known of it for the stub otherwise.
+fn expand_options(
+    options: &KinematicsInput,
+    errors: &mut darling::error::Accumulator,
+) -> (Option<fallback::Known>, Option<TokenStream>) {
     let loaded = errors.handle(source::load(options));
     let scalars = errors.handle(options.scalars());
-    let (loaded, scalars) = (loaded?, scalars?);
+    let known = loaded.as_ref().map(|l| fallback::Known {
+        dof: l.tree.dof(),
+        links: l.tree.links().len().saturating_sub(1),
+    });
+    let (Some(loaded), Some(scalars)) = (loaded, scalars) else { return (known, None) };
     let krate = match &options.krate {
         Some(path) => quote!(#path),
         None => quote!(::kinematics),
@@ -74,5 +82,5 @@ fn expand_options(options: &KinematicsInput, errors: &mut darling::error::Accumu
     };
     let emitted = emit_robot(&quote!(#ident #ty_generics), &spec)
         .map_err(|e| darling::Error::custom(format!("{}: {e}", loaded.label)).with_span(ident));
-    errors.handle(emitted)
+    (known, errors.handle(emitted))
 }
