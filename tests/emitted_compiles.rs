@@ -90,10 +90,9 @@ mod crowded {
 fn agrees<R: Kinematics>(q: &[f64]) {
     let reference = R::reference().unwrap();
     let blank = Pose { rotation: [[f64::NAN; 3]; 3], translation: [f64::NAN; 3] };
-    for (names, compute) in [
-        (R::LINK_NAMES, R::link_poses_into as fn(&[f64], &mut [Pose<f64>]) -> _),
-        (R::TIPS, R::tip_poses_into),
-    ] {
+    for (names, compute) in
+        [(R::LINK_NAMES, R::link_poses_into as fn(&[f64], &mut [Pose<f64>]) -> _), (R::TIPS, R::tip_poses_into)]
+    {
         let mut out = vec![blank; names.len()];
         compute(q, &mut out).unwrap();
         for (name, pose) in names.iter().zip(&out) {

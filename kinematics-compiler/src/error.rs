@@ -30,7 +30,9 @@ pub enum CompileError {
     },
     /// [`crate::robot::RobotSpec::exact_angles`] is not the policy the tree was loaded with: the
     /// reference would be another robot than the code.
-    #[error("robot `{robot}`: the exactness policy asked for ({requested}) is not the one the robot was loaded with ({tree})")]
+    #[error(
+        "robot `{robot}`: the exactness policy asked for ({requested}) is not the one the robot was loaded with ({tree})"
+    )]
     ExactnessMismatch {
         /// Robot name.
         robot: String,

@@ -176,11 +176,7 @@ pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenSt
                 format!("Positions of {}", tips.join(", ")),
             );
         }
-        if one {
-            quote!(out[0] = generic_tip_poses(q);)
-        } else {
-            quote!(out.copy_from_slice(&generic_tip_poses(q));)
-        }
+        if one { quote!(out[0] = generic_tip_poses(q);) } else { quote!(out.copy_from_slice(&generic_tip_poses(q));) }
     };
     let robot = tree.name();
     let label = &spec.source_label;

@@ -56,10 +56,8 @@ fn expand_options(
 ) -> (Option<fallback::Known>, Option<TokenStream>) {
     let loaded = errors.handle(source::load(options));
     let scalars = errors.handle(options.scalars());
-    let known = loaded.as_ref().map(|l| fallback::Known {
-        dof: l.tree.dof(),
-        links: l.tree.links().len().saturating_sub(1),
-    });
+    let known =
+        loaded.as_ref().map(|l| fallback::Known { dof: l.tree.dof(), links: l.tree.links().len().saturating_sub(1) });
     let (Some(loaded), Some(scalars)) = (loaded, scalars) else { return (known, None) };
     let krate = match &options.krate {
         Some(path) => quote!(#path),

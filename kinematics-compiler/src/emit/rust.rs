@@ -184,8 +184,8 @@ impl Writer<'_> {
                 let (s, c) = (ident(&self.schedule.names.sin(*angle)), ident(&self.schedule.names.cos(*angle)));
                 let mut value = TokenStream::new();
                 // A method call binds tighter than any operator: parenthesise a written-out angle.
-                let composite = self.inline(*angle)
-                    && matches!(self.g.node(*angle), Node::Add(..) | Node::Mul(..) | Node::Neg(..));
+                let composite =
+                    self.inline(*angle) && matches!(self.g.node(*angle), Node::Add(..) | Node::Mul(..) | Node::Neg(..));
                 self.wrapped(*angle, composite, &mut value);
                 out.extend(quote!(let (#s, #c) = #value.sin_cos();));
             }
