@@ -5,4 +5,6 @@
 fn derive_errors() {
     let cases = trybuild::TestCases::new();
     cases.compile_fail("tests/ui/*.rs");
+    // A faulty derive with code using the struct: only the derive's errors, no cascade.
+    cases.compile_fail("tests/ui/cascade/*.rs");
 }

@@ -15,8 +15,8 @@ pub(crate) struct Loaded {
     /// The label `reference()` parses under: the caller's, with an extension naming the format
     /// appended when it does not already (`reference()` picks the format by extension).
     pub reference_label: String,
-    /// The absolute path, for `include_str!` and `cargo:rerun-if-changed`.
-    pub absolute: PathBuf,
+    /// The description's text, as read (the generated code embeds it for `reference()`).
+    pub text: String,
 }
 
 /// Where a relative path is read from: `dir` if given, else `CARGO_MANIFEST_DIR` (set for build
@@ -42,5 +42,5 @@ pub(crate) fn load(
     let bytes = std::fs::read(&absolute).map_err(|e| LoadError::new(label, LoadErrorKind::Io(e)))?;
     let source = Source::from_bytes(label, kind, bytes)?;
     let tree = source.load(exact_angles)?;
-    Ok(Loaded { tree, label: label.to_owned(), reference_label: source.file_name(), absolute })
+    Ok(Loaded { tree, label: label.to_owned(), reference_label: source.file_name(), text: source.text })
 }

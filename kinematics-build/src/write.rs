@@ -6,7 +6,9 @@ use std::path::Path;
 /// Writes `contents` to `path` atomically: into a temporary file in the same directory, flushed,
 /// then renamed over `path`. On any error the temporary file is removed, so `path` holds either its
 /// old contents or the new ones, never half of them. An existing file with the same contents is
-/// left untouched (its modification time too, so cargo does not rebuild for nothing).
+/// left untouched (its modification time too, so cargo does not rebuild for nothing). The file
+/// gets ordinary permissions, as any file the user creates (`0o666` less the umask: `0o644`
+/// usually), not the owner-only ones of a temporary file.
 ///
 /// ```
 /// let path = std::env::temp_dir().join(format!("kinematics-write-doc-{}.rs", std::process::id()));
@@ -25,7 +27,12 @@ pub fn write_atomic(path: &Path, contents: &str) -> std::io::Result<()> {
     };
     let prefix = format!(".{}.", path.file_name().map(|n| n.to_string_lossy()).unwrap_or_default());
     // Dropping the temporary file on an error path deletes it.
-    let mut file = tempfile::Builder::new().prefix(&prefix).suffix(".tmp").tempfile_in(dir)?;
+    let mut builder = tempfile::Builder::new();
+    builder.prefix(&prefix).suffix(".tmp");
+    // The mode is given to `open`, which takes the umask off, as for any new file.
+    #[cfg(unix)]
+    builder.permissions(std::os::unix::fs::PermissionsExt::from_mode(0o666));
+    let mut file = builder.tempfile_in(dir)?;
     file.write_all(contents.as_bytes())?;
     file.as_file().sync_all()?;
     file.persist(path).map_err(|e| e.error)?;

@@ -13,4 +13,32 @@ pub enum CompileError {
         #[source]
         source: kinematics_model::ModelError,
     },
+    /// A pose whose constants are not all finite: numbers of the description that are each finite
+    /// compose into an infinity or a NaN (two fixed offsets of 1e308 in a row, mimic multipliers of
+    /// 1e200 along a chain). The code would compute infinities, so none is emitted.
+    #[error(
+        "robot `{robot}`: link `{link}`: the constants of its pose are not all finite numbers (one is {value}): \
+         the description's numbers overflow when composed"
+    )]
+    NonFiniteConstant {
+        /// Robot name.
+        robot: String,
+        /// The first link (in request order) whose pose holds the constant.
+        link: String,
+        /// The constant (infinite or NaN).
+        value: f64,
+    },
+    /// [`crate::robot::RobotSpec::exact_angles`] is not the policy the tree was loaded with: the
+    /// reference would be another robot than the code.
+    #[error(
+        "robot `{robot}`: the exactness policy asked for ({requested}) is not the one the robot was loaded with ({tree})"
+    )]
+    ExactnessMismatch {
+        /// Robot name.
+        robot: String,
+        /// The policy in the request.
+        requested: String,
+        /// The tree's policy.
+        tree: String,
+    },
 }

@@ -68,6 +68,9 @@ pub struct Compiled {
     pub dof_names: Vec<String>,
     /// Whether only positions are outputs.
     pub position_only: bool,
+    /// Whether every link but the base was asked for (the emitted function then returns an array
+    /// of frames, however many links there are).
+    pub(crate) all_links: bool,
     pub(crate) graph: ExprGraph,
     pub(crate) frames: Vec<Frame>,
 }
@@ -113,15 +116,39 @@ pub fn compile(tree: &KinematicTree, request: &Request) -> Result<Compiled, Comp
         Some((_, result)) => result,
         None => (ExprGraph::new(), Vec::new()),
     };
-    let frames = tips.iter().zip(frames).map(|(link, transform)| Frame { link: link.clone(), transform }).collect();
+    let frames: Vec<Frame> =
+        tips.iter().zip(frames).map(|(link, transform)| Frame { link: link.clone(), transform }).collect();
+    check_finite(tree, &graph, &frames)?;
     Ok(Compiled {
         robot: tree.name().to_owned(),
         base: base_name,
         dof_names: tree.dof_names().into_iter().map(str::to_owned).collect(),
         position_only: request.position_only,
+        all_links: request.tips.is_empty(),
         graph,
         frames,
     })
+}
+
+/// Every constant a frame's pose is computed from is a finite number, or the error naming the first
+/// frame with one that is not. The model keeps every number of a description finite, but finite
+/// numbers can compose into infinity (`1e308 + 1e308`); emitted code would compute with it, and
+/// `proc_macro2` cannot even write it as a literal.
+fn check_finite(tree: &KinematicTree, graph: &ExprGraph, frames: &[Frame]) -> Result<(), CompileError> {
+    for frame in frames {
+        let non_finite = crate::stats::reachable(graph, frame.transform.entries())
+            .into_iter()
+            .filter_map(|id| graph.as_const(id))
+            .find(|value| !value.is_finite());
+        if let Some(value) = non_finite {
+            return Err(CompileError::NonFiniteConstant {
+                robot: tree.name().to_owned(),
+                link: frame.link.clone(),
+                value,
+            });
+        }
+    }
+    Ok(())
 }
 
 /// What the pose of `tip` in `base` costs as a plain sequential product of its transforms (zeros
@@ -200,6 +227,13 @@ impl Compiled {
     /// The compiled frames, in request order.
     pub fn frames(&self) -> &[Frame] {
         &self.frames
+    }
+
+    /// Whether the emitted function returns an array of frames (every link was asked for, or
+    /// several tips) rather than one frame (one tip). An all-links request returns an array even
+    /// when the robot has one link below the base, or none.
+    pub fn returns_array(&self) -> bool {
+        self.all_links || self.frames.len() != 1
     }
 
     /// Number of degrees of freedom.

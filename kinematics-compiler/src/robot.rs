@@ -1,8 +1,15 @@
 //! A whole compiled robot: constants, typed functions and the `Kinematics` trait impl for a type.
 //!
 //! The derive macro and the build API both emit through [`emit_robot`], so their output is the same.
+//!
+//! The output is one anonymous block, `const _: () = { ... };`, holding the generic functions (free
+//! functions, private to the block) and the impls that call them. Nothing in it can collide with
+//! the user's names: the generic functions' own scalar parameter `T` is declared where no other
+//! generics are in scope, the user's generics appear only on the impls (as given in
+//! [`RobotSpec::impl_generics`]), and everything else is reached by absolute paths (`::core`, the
+//! crate path).
 
-use kinematics_model::KinematicTree;
+use kinematics_model::{ExactAngles, KinematicTree};
 use proc_macro2::{Literal, TokenStream};
 use quote::{format_ident, quote};
 
@@ -47,17 +54,30 @@ pub struct RobotSpec<'a> {
     /// The exactness policy the tree was loaded with; `reference()` loads the description with it,
     /// so the reference is the robot the code was compiled from. Must be the tree's own policy
     /// ([`KinematicTree::exact_angles`]), else [`emit_robot`] fails.
-    pub exact_angles: kinematics_model::ExactAngles,
+    pub exact_angles: ExactAngles,
+    /// The generic parameters of the impls, with their bounds (`<'a, T: Clone, const N: usize>`,
+    /// syn's `impl_generics`); empty for a type without generics. `self_ty` carries the arguments.
+    pub impl_generics: TokenStream,
+    /// The where clause of the impls (`where T: Default`), or nothing.
+    pub where_clause: TokenStream,
 }
 
 fn strs(names: &[String]) -> TokenStream {
     quote!([#(#names),*])
 }
 
-/// `impl Type { ... }` with the robot's constants and functions, and `impl Kinematics for Type`.
+/// The robot's constants and functions on `self_ty` (the type with its generic arguments, such as
+/// `Arm<'a, T, N>`) and `impl Kinematics` for it, in an anonymous `const _: () = { ... };` block.
 pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenStream, CompileError> {
     let tree = spec.tree;
     let krate = &spec.krate;
+    if !same_policy(spec.exact_angles, tree.exact_angles()) {
+        return Err(CompileError::ExactnessMismatch {
+            robot: tree.name().to_owned(),
+            requested: format!("{:?}", spec.exact_angles),
+            tree: format!("{:?}", tree.exact_angles()),
+        });
+    }
     let base = spec.base.clone().unwrap_or_else(|| tree.link(tree.root()).name.clone());
     let all = compile(tree, &Request { base: Some(base.clone()), tips: Vec::new(), position_only: false })?;
     let n = tree.dof();
@@ -71,7 +91,7 @@ pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenSt
         .map(|l| {
             let (lo, hi) = match l {
                 Some(l) => (number(l.lower), number(l.upper)),
-                None => (quote!(f64::NEG_INFINITY), quote!(f64::INFINITY)),
+                None => (quote!(-::core::primitive::f64::INFINITY), quote!(::core::primitive::f64::INFINITY)),
             };
             quote!(#krate::JointLimits { lower: #lo, upper: #hi })
         })
@@ -95,7 +115,7 @@ pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenSt
             typed.push(quote! {
                 #[doc = #doc]
                 #[inline]
-                pub fn #f(q: &[#t; #n_lit]) -> #r { Self::#g(q) }
+                pub fn #f(q: &[#t; #n_lit]) -> #r { #g(q) }
             });
         }
     };
@@ -108,7 +128,7 @@ pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenSt
         },
         format!("Poses of every link but `{base}`, in `{base}` and in the order of `LINK_NAMES`"),
     );
-    if spec.positions {
+    if spec.positions && !scalars.is_empty() {
         let positions = compile(tree, &Request { base: Some(base.clone()), tips: Vec::new(), position_only: true })?;
         generic.push(emit_function(&positions, &private("generic_link_positions")));
         add(
@@ -145,7 +165,7 @@ pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenSt
             },
             what,
         );
-        if spec.positions {
+        if spec.positions && !scalars.is_empty() {
             let compiled = compile(tree, &Request { position_only: true, ..tip_request.clone() })?;
             generic.push(emit_function(&compiled, &private("generic_tip_positions")));
             let name = if one { "tip_position" } else { "tip_positions" };
@@ -156,19 +176,20 @@ pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenSt
                 format!("Positions of {}", tips.join(", ")),
             );
         }
-        if one {
-            quote!(out[0] = Self::generic_tip_poses(q);)
-        } else {
-            quote!(out.copy_from_slice(&Self::generic_tip_poses(q));)
-        }
+        if one { quote!(out[0] = generic_tip_poses(q);) } else { quote!(out.copy_from_slice(&generic_tip_poses(q));) }
     };
     let robot = tree.name();
     let label = &spec.source_label;
     let text = &spec.source_text;
     let (jn, ln, tn) = (strs(&joint_names), strs(&link_names), strs(&tips));
+    let policy = policy_tokens(krate, spec.exact_angles);
+    let (impl_generics, where_clause) = (&spec.impl_generics, &spec.where_clause);
     Ok(quote! {
+        const _: () = {
+        #(#generic)*
+
         #[allow(clippy::approx_constant)] // limits and offsets are kept exactly as the description gives them
-        impl #self_ty {
+        impl #impl_generics #self_ty #where_clause {
             /// Robot name.
             pub const ROBOT: &'static str = #robot;
             /// The link every pose is expressed in.
@@ -188,14 +209,12 @@ pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenSt
 
             /// The runtime reference model of this robot, built from the same description.
             pub fn reference() -> ::core::result::Result<#krate::ReferenceFk, #krate::LoadError> {
-                #krate::model::parse_source(#label, #text).map(#krate::ReferenceFk::new)
+                #krate::model::parse_source_with(#label, #text, #policy).map(#krate::ReferenceFk::new)
             }
-
-            #(#generic)*
         }
 
         #[allow(clippy::approx_constant)] // limits are kept exactly as the description gives them
-        impl #krate::Kinematics for #self_ty {
+        impl #impl_generics #krate::Kinematics for #self_ty #where_clause {
             const ROBOT: &'static str = #robot;
             const BASE: &'static str = #base;
             const DOF: usize = #n_lit;
@@ -208,39 +227,64 @@ pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenSt
                 let q = #krate::runtime::q_array::<#n_lit>(#robot, &#jn, q)?;
                 #krate::runtime::check_output(#robot, #k_lit, out.len())?;
                 #tip_poses_body
-                Ok(())
+                ::core::result::Result::Ok(())
             }
 
             fn link_poses_into(q: &[f64], out: &mut [#krate::Pose<f64>]) -> ::core::result::Result<(), #krate::RuntimeError> {
                 let q = #krate::runtime::q_array::<#n_lit>(#robot, &#jn, q)?;
                 #krate::runtime::check_output(#robot, #m_lit, out.len())?;
-                out.copy_from_slice(&Self::generic_link_poses(q));
-                Ok(())
+                out.copy_from_slice(&generic_link_poses(q));
+                ::core::result::Result::Ok(())
             }
 
             fn reference() -> ::core::result::Result<#krate::ReferenceFk, #krate::LoadError> {
                 Self::reference()
             }
         }
+        };
     })
 }
 
-/// A limit as a literal; values that are exactly a multiple of pi as an `f64` get the constant's name.
+/// Whether two policies are the same (a NaN tolerance equals itself: both read nothing as exact).
+fn same_policy(a: ExactAngles, b: ExactAngles) -> bool {
+    match (a, b) {
+        (ExactAngles::Off, ExactAngles::Off) => true,
+        (ExactAngles::Within(x), ExactAngles::Within(y)) => x.to_bits() == y.to_bits(),
+        _ => false,
+    }
+}
+
+/// The policy as an expression of type `ExactAngles`.
+fn policy_tokens(krate: &TokenStream, policy: ExactAngles) -> TokenStream {
+    match policy {
+        ExactAngles::Off => quote!(#krate::model::ExactAngles::Off),
+        ExactAngles::Within(tolerance) => {
+            let tolerance = number(tolerance);
+            quote!(#krate::model::ExactAngles::Within(#tolerance))
+        }
+    }
+}
+
+/// A number as an `f64` expression: a literal; values that are exactly a multiple of pi as an `f64`
+/// get the constant's name; infinities and NaN their `f64` constants (never a panic, never another
+/// number).
 fn number(x: f64) -> TokenStream {
     use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, PI, TAU};
     let named = [(PI, quote!(PI)), (TAU, quote!(TAU)), (FRAC_PI_2, quote!(FRAC_PI_2)), (FRAC_PI_4, quote!(FRAC_PI_4))]
         .into_iter()
         .find(|(v, _)| *v == x.abs())
         .map(|(_, name)| quote!(::core::f64::consts::#name));
-    if x.is_finite() {
+    if x.is_nan() {
+        quote!(::core::primitive::f64::NAN)
+    } else if x.is_finite() {
         let magnitude = named.unwrap_or_else(|| {
             let lit = Literal::f64_suffixed(x.abs());
             quote!(#lit)
         });
         if x < 0.0 { quote!(-#magnitude) } else { magnitude }
     } else if x > 0.0 {
-        quote!(f64::INFINITY)
+        quote!(::core::primitive::f64::INFINITY)
     } else {
-        quote!(f64::NEG_INFINITY)
+        quote!(-::core::primitive::f64::INFINITY)
     }
 }

@@ -11,5 +11,5 @@ mod text;
 
 pub use names::Names;
 pub use rust::{EmitOptions, emit_function, emit_module_source};
-pub use schedule::Schedule;
+pub use schedule::{INLINE_DEPTH_LIMIT, MAX_EXPRESSION_DEPTH, Schedule};
 pub use text::{latex, text};

@@ -1,9 +1,7 @@
 //! Rust tokens through `quote`: one function per compiled request.
 
-use std::fmt::Write as _;
-
-use proc_macro2::{Ident, Literal, Span, TokenStream};
-use quote::quote;
+use proc_macro2::{Delimiter, Group, Ident, Literal, Punct, Spacing, Span, TokenStream};
+use quote::{ToTokens as _, TokenStreamExt as _, format_ident, quote};
 
 use super::schedule::{Item, Schedule};
 use crate::request::Compiled;
@@ -27,42 +25,70 @@ impl EmitOptions {
     }
 }
 
-/// Writes expressions as Rust source text into one buffer (linear in the size of the code, however
-/// deeply the expressions nest); the text is parsed into tokens once at the end.
+/// Writes expressions as tokens into one stream (each token once: linear in the size of the code).
+/// The recursion follows expressions written inline, which the schedule keeps at most
+/// [`INLINE_DEPTH_LIMIT`](super::schedule::INLINE_DEPTH_LIMIT) levels deep.
 struct Writer<'a> {
     g: &'a ExprGraph,
     schedule: &'a Schedule,
-    krate: String,
+    krate: &'a TokenStream,
+}
+
+fn ident(name: &str) -> Ident {
+    Ident::new(name, Span::call_site())
+}
+
+fn punct(out: &mut TokenStream, op: char) {
+    out.append(Punct::new(op, Spacing::Alone));
+}
+
+fn group(out: &mut TokenStream, delimiter: Delimiter, inner: TokenStream) {
+    out.append(Group::new(delimiter, inner));
+}
+
+/// A number as tokens: a literal when finite. [`compile`](crate::compile) rejects poses with
+/// constants that are not finite, so the other arms are never taken; they write the value itself
+/// rather than panic (as `Literal::f64_unsuffixed` would) or write another number.
+fn magnitude(x: f64, out: &mut TokenStream) {
+    if x.is_finite() {
+        out.append(Literal::f64_unsuffixed(x.abs()));
+    } else if x.is_nan() {
+        out.extend(quote!(::core::primitive::f64::NAN));
+    } else {
+        out.extend(quote!(::core::primitive::f64::INFINITY));
+    }
 }
 
 impl Writer<'_> {
-    fn constant(x: f64, out: &mut String) {
-        let lit = Literal::f64_unsuffixed(x.abs()).to_string();
-        out.push_str(if x < 0.0 { "T::from_f64(-" } else { "T::from_f64(" });
-        out.push_str(&lit);
-        out.push(')');
+    /// `T::from_f64(x)`.
+    fn constant(x: f64, out: &mut TokenStream) {
+        out.extend(quote!(T::from_f64));
+        let mut arg = TokenStream::new();
+        if x < 0.0 {
+            punct(&mut arg, '-');
+        }
+        magnitude(x, &mut arg);
+        group(out, Delimiter::Parenthesis, arg);
     }
 
     /// The expression for `id`: its name if bound, else written out.
-    fn expr(&self, id: ExprId, out: &mut String) {
+    fn expr(&self, id: ExprId, out: &mut TokenStream) {
         match self.schedule.bound.get(&id) {
-            Some(name) => out.push_str(name),
+            Some(name) => out.append(ident(name)),
             None => self.define(id, out),
         }
     }
 
     /// The expression for `id` written out (the right-hand side of its binding).
-    fn define(&self, id: ExprId, out: &mut String) {
+    fn define(&self, id: ExprId, out: &mut TokenStream) {
         let g = self.g;
         match g.node(id) {
             Node::Const(c) => Self::constant(c.value(), out),
-            Node::Var(i) => {
-                let _ = write!(out, "q{}", i as usize + 1);
-            }
-            Node::Sin(a) => out.push_str(&self.schedule.names.sin(a)),
-            Node::Cos(a) => out.push_str(&self.schedule.names.cos(a)),
+            Node::Var(i) => out.append(format_ident!("q{}", i as usize + 1)),
+            Node::Sin(a) => out.append(ident(&self.schedule.names.sin(a))),
+            Node::Cos(a) => out.append(ident(&self.schedule.names.cos(a))),
             Node::Neg(a) => {
-                out.push('-');
+                punct(out, '-');
                 self.operand(a, out);
             }
             Node::Add(a, b) => {
@@ -71,17 +97,17 @@ impl Writer<'_> {
                 match (na, nb) {
                     (false, true) => {
                         self.expr(a, out);
-                        out.push_str(" - ");
+                        punct(out, '-');
                         self.operand_of_sub(ib, out);
                     }
                     (true, false) => {
                         self.expr(b, out);
-                        out.push_str(" - ");
+                        punct(out, '-');
                         self.operand_of_sub(ia, out);
                     }
                     _ => {
                         self.expr(a, out);
-                        out.push_str(" + ");
+                        punct(out, '+');
                         self.expr(b, out);
                     }
                 }
@@ -89,7 +115,7 @@ impl Writer<'_> {
             Node::Mul(a, b) => {
                 let (a, b) = if g.as_const(b).is_some() { (b, a) } else { (a, b) };
                 self.operand(a, out);
-                out.push_str(" * ");
+                punct(out, '*');
                 self.operand(b, out);
             }
         }
@@ -100,115 +126,128 @@ impl Writer<'_> {
     }
 
     /// An operand of `*` or unary `-`: inline sums and negations get parentheses.
-    fn operand(&self, id: ExprId, out: &mut String) {
+    fn operand(&self, id: ExprId, out: &mut TokenStream) {
         let wrap = self.inline(id) && matches!(self.g.node(id), Node::Add(..) | Node::Neg(..));
         self.wrapped(id, wrap, out);
     }
 
     /// The right operand of `-`: inline sums get parentheses.
-    fn operand_of_sub(&self, id: ExprId, out: &mut String) {
+    fn operand_of_sub(&self, id: ExprId, out: &mut TokenStream) {
         let wrap = self.inline(id) && matches!(self.g.node(id), Node::Add(..));
         self.wrapped(id, wrap, out);
     }
 
-    fn wrapped(&self, id: ExprId, wrap: bool, out: &mut String) {
+    fn wrapped(&self, id: ExprId, wrap: bool, out: &mut TokenStream) {
         if wrap {
-            out.push('(');
-        }
-        self.expr(id, out);
-        if wrap {
-            out.push(')');
-        }
-    }
-
-    fn list(&self, ids: &[ExprId], out: &mut String) {
-        out.push('[');
-        for (k, &id) in ids.iter().enumerate() {
-            if k > 0 {
-                out.push_str(", ");
-            }
+            let mut inner = TokenStream::new();
+            self.expr(id, &mut inner);
+            group(out, Delimiter::Parenthesis, inner);
+        } else {
             self.expr(id, out);
         }
-        out.push(']');
     }
 
-    fn pose(&self, outputs: &[ExprId], out: &mut String) {
+    /// `[a, b, c]`.
+    fn list(&self, ids: &[ExprId], out: &mut TokenStream) {
+        let mut inner = TokenStream::new();
+        for (k, &id) in ids.iter().enumerate() {
+            if k > 0 {
+                punct(&mut inner, ',');
+            }
+            self.expr(id, &mut inner);
+        }
+        group(out, Delimiter::Bracket, inner);
+    }
+
+    /// A frame's value: `[x, y, z]` for a position, else `krate::Pose { rotation, translation }`.
+    fn pose(&self, outputs: &[ExprId], out: &mut TokenStream) {
         if outputs.len() == 3 {
             return self.list(outputs, out);
         }
-        let _ = write!(out, "{}::Pose {{ rotation: [", self.krate);
+        let mut rows = TokenStream::new();
         for row in 0..3 {
             if row > 0 {
-                out.push_str(", ");
+                punct(&mut rows, ',');
             }
-            self.list(&outputs[3 * row..3 * row + 3], out);
+            self.list(&outputs[3 * row..3 * row + 3], &mut rows);
         }
-        out.push_str("], translation: ");
-        self.list(&outputs[9..12], out);
-        out.push_str(" }");
+        let mut translation = TokenStream::new();
+        self.list(&outputs[9..12], &mut translation);
+        let krate = self.krate;
+        out.extend(quote!(#krate::Pose { rotation: [#rows], translation: #translation }));
+    }
+
+    /// One statement of the body.
+    fn item(&self, item: &Item, out: &mut TokenStream) {
+        match item {
+            Item::SinCos(angle) => {
+                let (s, c) = (ident(&self.schedule.names.sin(*angle)), ident(&self.schedule.names.cos(*angle)));
+                let mut value = TokenStream::new();
+                // A method call binds tighter than any operator: parenthesise a written-out angle.
+                let composite =
+                    self.inline(*angle) && matches!(self.g.node(*angle), Node::Add(..) | Node::Mul(..) | Node::Neg(..));
+                self.wrapped(*angle, composite, &mut value);
+                out.extend(quote!(let (#s, #c) = #value.sin_cos();));
+            }
+            Item::Let(id, name) => {
+                let name = ident(name);
+                let mut value = TokenStream::new();
+                self.define(*id, &mut value);
+                out.extend(quote!(let #name = #value;));
+            }
+        }
     }
 }
 
 /// One function computing every frame of `compiled`, generic over `T: Real`.
 ///
-/// One frame returns a `Pose<T>` (or `[T; 3]` for positions only); several return an array of them,
-/// in request order.
+/// One tip returns a `Pose<T>` (or `[T; 3]` for positions only); several tips, or every link,
+/// return an array of them in request order (see [`Compiled::returns_array`]). The scalar type
+/// parameter is the function's own `T`, so the function may stand anywhere but inside a generic
+/// item whose own parameter is called `T` ([`crate::robot::emit_robot`] puts it in a block of its
+/// own).
 pub fn emit_function(compiled: &Compiled, options: &EmitOptions) -> TokenStream {
     let g = compiled.graph();
     let outputs = compiled.outputs();
     let schedule = Schedule::new(g, &outputs);
     let krate = &options.krate;
-    let w = Writer { g, schedule: &schedule, krate: krate.to_string() };
+    let w = Writer { g, schedule: &schedule, krate };
     let n = compiled.dof();
     let n_lit = Literal::usize_unsuffixed(n);
-    let mut code = String::new();
+    let mut body = TokenStream::new();
     if n == 0 {
-        code.push_str("let _ = q;");
+        body.extend(quote!(let _ = q;));
     } else {
-        let vars: Vec<String> = (0..n)
-            .map(|i| if schedule.used_vars.contains(&i) { format!("q{}", i + 1) } else { "_".to_owned() })
-            .collect();
-        let _ = write!(code, "let [{}] = *q;", vars.join(", "));
+        let vars = (0..n).map(|i| {
+            if schedule.used_vars.contains(&i) { format_ident!("q{}", i + 1).into_token_stream() } else { quote!(_) }
+        });
+        body.extend(quote!(let [#(#vars),*] = *q;));
     }
     for item in &schedule.items {
-        match item {
-            Item::SinCos(angle) => {
-                let _ = write!(code, "let ({}, {}) = ", schedule.names.sin(*angle), schedule.names.cos(*angle));
-                // A method call binds tighter than any operator: parenthesise a written-out angle.
-                let composite =
-                    w.inline(*angle) && matches!(g.node(*angle), Node::Add(..) | Node::Mul(..) | Node::Neg(..));
-                w.wrapped(*angle, composite, &mut code);
-                code.push_str(".sin_cos();");
-            }
-            Item::Let(id, name) => {
-                let _ = write!(code, "let {name} = ");
-                w.define(*id, &mut code);
-                code.push(';');
-            }
-        }
+        w.item(item, &mut body);
     }
     let per_frame = if compiled.position_only { 3 } else { 12 };
     let frames: Vec<&[ExprId]> = outputs.chunks(per_frame).collect();
-    if frames.len() != 1 {
-        code.push('[');
-    }
+    let array = compiled.returns_array();
+    let mut value = TokenStream::new();
     for (k, frame) in frames.iter().enumerate() {
         if k > 0 {
-            code.push_str(", ");
+            punct(&mut value, ',');
         }
-        w.pose(frame, &mut code);
+        w.pose(frame, &mut value);
     }
-    if frames.len() != 1 {
-        code.push(']');
+    if array {
+        let mut list = TokenStream::new();
+        group(&mut list, Delimiter::Bracket, value);
+        value = list;
     }
-    // The text is built from our own identifiers, operators and literals, so it always parses.
-    let body: TokenStream = code.parse().unwrap_or_default();
+    body.extend(value);
     let one = if compiled.position_only { quote!([T; 3]) } else { quote!(#krate::Pose<T>) };
-    let ret = if frames.len() == 1 {
-        one
-    } else {
+    let ret = if array {
         let m = Literal::usize_unsuffixed(frames.len());
         quote!([#one; #m])
+    } else {
+        one
     };
     let name = Ident::new(&options.name, Span::call_site());
     let docs = doc_lines(compiled);

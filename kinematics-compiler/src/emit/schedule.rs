@@ -15,10 +15,22 @@ pub enum Item {
     Let(ExprId, String),
 }
 
+/// How deeply an expression written out inline may nest (in the conservative measure of
+/// [`Schedule::new`]): a sum or product that would nest deeper is bound to a `tN` instead. Writing
+/// every single-use node inline makes expressions as deep as the chain is long, and rustc recurses
+/// over expressions: a 500-joint chain overflowed its stack. With this bound every emitted
+/// expression, including the pose and array literals around the outputs, nests at most
+/// [`MAX_EXPRESSION_DEPTH`] levels, whatever the robot; binding changes no operation count.
+pub const INLINE_DEPTH_LIMIT: usize = 24;
+
+/// The deepest any emitted expression nests (syntax-tree levels, counting parentheses, unary minus,
+/// calls and the literals holding the outputs): [`INLINE_DEPTH_LIMIT`] plus what surrounds it.
+pub const MAX_EXPRESSION_DEPTH: usize = 32;
+
 /// The bindings in evaluation order, and the name of every bound node.
 ///
 /// A sum or product used more than once is bound to a `tN`; one used once is written inline where
-/// it is used. Sines and cosines come in `sin_cos` pairs, all of them first (after the few bindings
+/// it is used, unless that would nest deeper than [`INLINE_DEPTH_LIMIT`]. Sines and cosines come in `sin_cos` pairs, all of them first (after the few bindings
 /// an angle itself needs), then the arithmetic. The order matters for speed, not for values: a
 /// `sin_cos` is a call into libm, and every floating-point register is lost across a call, so an
 /// intermediate computed before a later `sin_cos` has to be spilled to the stack and reloaded.
@@ -61,6 +73,14 @@ impl Schedule {
         for &o in outputs {
             uses[o.index()] += 1;
         }
+        // A negation is never bound: written out wherever it is used, it writes its operand each
+        // time. So an operand used once, by a negation used twice, is written twice unless bound.
+        // (Negations never nest, and their users are counted above.)
+        for &id in &nodes {
+            if let Node::Neg(a) = g.node(id) {
+                uses[a.index()] += uses[id.index()].saturating_sub(1);
+            }
+        }
         // Everything an angle is computed from: its bindings must precede the `sin_cos` calls.
         let angles: Vec<ExprId> = nodes
             .iter()
@@ -73,6 +93,7 @@ impl Schedule {
         for id in reachable(g, angles) {
             feeds_angle[id.index()] = true;
         }
+        let bind = bind_for_depth(g, &nodes, &uses);
         let mut bound = BTreeMap::new();
         let mut used_vars = BTreeSet::new();
         let mut emitted_angles = BTreeSet::new();
@@ -85,7 +106,7 @@ impl Schedule {
                 Node::Sin(a) | Node::Cos(a) if emitted_angles.insert(a) => {
                     calls.push(Item::SinCos(a));
                 }
-                Node::Add(..) | Node::Mul(..) if uses[id.index()] >= 2 => {
+                Node::Add(..) | Node::Mul(..) if bind[id.index()] => {
                     if feeds_angle[id.index()] { &mut before_calls } else { &mut after_calls }.push(id);
                 }
                 _ => {}
@@ -102,4 +123,33 @@ impl Schedule {
         let items = [before_calls, calls, after_calls].concat();
         Schedule { items, bound, names, used_vars }
     }
+}
+
+/// Which sums and products get a `let`: those used more than once, and those that written out
+/// inline would nest deeper than [`INLINE_DEPTH_LIMIT`].
+///
+/// The depth is measured conservatively in syntax-tree levels of the emitted Rust: a name is 1, a
+/// constant (`T::from_f64(-0.5)`) 3, a negation 2 more than its operand (unary minus, maybe
+/// parentheses), a sum or product 2 more than its deeper operand (the operator, maybe parentheses).
+/// Nodes are visited children first (`nodes` is in id order), so a node is bound as soon as its
+/// own depth passes the limit, and then counts as a name: every binding's right-hand side nests at
+/// most `INLINE_DEPTH_LIMIT + 4` levels (a sum of a negated deepest operand), every inline operand
+/// at most `INLINE_DEPTH_LIMIT + 2`.
+fn bind_for_depth(g: &ExprGraph, nodes: &[ExprId], uses: &[usize]) -> Vec<bool> {
+    let mut bind = vec![false; g.len()];
+    let mut depth = vec![1usize; g.len()];
+    for &id in nodes {
+        let i = id.index();
+        depth[i] = match g.node(id) {
+            Node::Const(_) => 3,
+            Node::Var(_) | Node::Sin(_) | Node::Cos(_) => 1,
+            Node::Neg(a) => 2 + depth[a.index()],
+            Node::Add(a, b) | Node::Mul(a, b) => {
+                let inline = 2 + depth[a.index()].max(depth[b.index()]);
+                bind[i] = uses[i] >= 2 || inline > INLINE_DEPTH_LIMIT;
+                if bind[i] { 1 } else { inline }
+            }
+        };
+    }
+    bind
 }

@@ -1,0 +1,109 @@
+//! Constants that are each finite can compose into infinity (issue 13: `generate` and the derive
+//! panicked in `Literal::f64_unsuffixed`). Compiling and emitting such a robot is an error naming
+//! the link whose pose holds the constant, never a panic and never code computing infinities.
+#![allow(clippy::panic, clippy::unwrap_used, clippy::expect_used)] // test helpers fail loudly
+
+use kinematics_compiler::robot::{RobotSpec, Scalars, emit_robot};
+use kinematics_compiler::{CompileError, Request, compile};
+use quote::quote;
+
+/// Two fixed offsets of 1e308 in a row: `link b` is at 2e308 = infinity.
+const FAR: &str = r#"<robot name="far">
+  <link name="base"/> <link name="a"/> <link name="b"/> <link name="c"/>
+  <joint name="ja" type="fixed"><parent link="base"/><child link="a"/><origin xyz="1e308 0 0"/></joint>
+  <joint name="jb" type="fixed"><parent link="a"/><child link="b"/><origin xyz="1e308 0 0"/></joint>
+  <joint name="jc" type="continuous"><parent link="b"/><child link="c"/><axis xyz="0 0 1"/></joint>
+</robot>"#;
+
+/// Mimic multipliers of 1e200 along a chain: `j3` turns 1e400 = infinity times `j1`.
+const MIMIC: &str = r#"<robot name="mimic">
+  <link name="base"/> <link name="l1"/> <link name="l2"/> <link name="l3"/>
+  <joint name="j1" type="continuous"><parent link="base"/><child link="l1"/><axis xyz="0 0 1"/></joint>
+  <joint name="j2" type="continuous"><parent link="l1"/><child link="l2"/><axis xyz="0 0 1"/>
+    <mimic joint="j1" multiplier="1e200"/></joint>
+  <joint name="j3" type="continuous"><parent link="l2"/><child link="l3"/><axis xyz="1 0 0"/>
+    <origin xyz="1 0 0"/><mimic joint="j2" multiplier="1e200"/></joint>
+</robot>"#;
+
+/// Largest finite offsets, which do not overflow alone: 1.7e308 twice, opposite signs.
+const LARGEST: &str = r#"<robot name="largest">
+  <link name="base"/> <link name="a"/> <link name="b"/>
+  <joint name="ja" type="fixed"><parent link="base"/><child link="a"/><origin xyz="1.7e308 0 0"/></joint>
+  <joint name="jb" type="continuous"><parent link="a"/><child link="b"/><origin xyz="-1.7e308 0 0"/>
+    <axis xyz="0 0 1"/></joint>
+</robot>"#;
+
+fn spec(tree: &kinematics_model::KinematicTree) -> RobotSpec<'_> {
+    RobotSpec {
+        tree,
+        base: None,
+        tips: vec![tree.links().last().unwrap().name.clone()],
+        positions: true,
+        scalars: Scalars { f64: true, f32: true },
+        krate: quote!(::kinematics),
+        source_label: "x.urdf".to_owned(),
+        source_text: quote!(""),
+        exact_angles: tree.exact_angles(),
+        impl_generics: quote!(),
+        where_clause: quote!(),
+    }
+}
+
+/// Compiles every link and emits the robot: the errors, which must name `link` if there are any.
+fn outcome(text: &str) -> Option<Vec<CompileError>> {
+    // The model may refuse such a description itself; then there is nothing to compile.
+    let tree = kinematics_model::parse_source("x.urdf", text).ok()?;
+    let mut errors = Vec::new();
+    for link in tree.links().iter().skip(1) {
+        for request in [Request::tip(&link.name), Request::tip(&link.name).positions_only()] {
+            errors.extend(compile(&tree, &request).err());
+        }
+    }
+    errors.extend(compile(&tree, &Request::all_links()).err());
+    errors.extend(emit_robot(&quote!(Robot), &spec(&tree)).err());
+    Some(errors)
+}
+
+fn assert_names(errors: &[CompileError], link: &str) {
+    assert!(!errors.is_empty(), "no error for a pose at infinity");
+    for e in errors {
+        match e {
+            CompileError::NonFiniteConstant { link: named, value, .. } => {
+                assert!(!value.is_finite(), "{e}");
+                assert!(named == link, "{e}: expected link `{link}`");
+            }
+            other => panic!("unexpected error: {other}"),
+        }
+    }
+}
+
+#[test]
+fn offsets_that_overflow_name_the_link() {
+    if let Some(errors) = outcome(FAR) {
+        // `b` is the first link at infinity; `c` hangs below it, and every request names the first.
+        assert_eq!(errors.len(), 6, "{errors:?}");
+        assert_names(&errors[..2], "b");
+        assert_names(&errors[2..4], "c");
+        assert_names(&errors[4..], "b");
+        assert_eq!(
+            errors[0].to_string(),
+            "robot `far`: link `b`: the constants of its pose are not all finite numbers (one is inf): \
+             the description's numbers overflow when composed"
+        );
+    }
+}
+
+#[test]
+fn mimic_multipliers_that_overflow_name_the_link() {
+    if let Some(errors) = outcome(MIMIC) {
+        assert_eq!(errors.len(), 4, "{errors:?}");
+        assert_names(&errors[..2], "l3");
+        assert_names(&errors[2..], "l3");
+    }
+}
+
+#[test]
+fn the_largest_finite_offsets_compile() {
+    let errors = outcome(LARGEST).expect("finite offsets are valid");
+    assert!(errors.is_empty(), "{errors:?}");
+}

@@ -1,0 +1,84 @@
+//! What `emit_robot` writes around the compiled functions: the reference parses the description
+//! with the tree's own exactness policy, and the user's generics go on the impls.
+#![allow(clippy::panic, clippy::unwrap_used, clippy::expect_used)] // test helpers fail loudly
+
+use kinematics_compiler::CompileError;
+use kinematics_compiler::robot::{RobotSpec, Scalars, emit_robot};
+use kinematics_model::{ExactAngles, KinematicTree};
+use quote::quote;
+
+const ARM: &str = r#"<robot name="arm">
+  <link name="base"/> <link name="upper"/> <link name="tool"/>
+  <joint name="shoulder" type="continuous"><parent link="base"/><child link="upper"/><axis xyz="0 0 1"/>
+    <origin rpy="3.14159265359 0 0"/></joint>
+  <joint name="elbow" type="continuous"><parent link="upper"/><child link="tool"/><axis xyz="0 1 0"/>
+    <origin xyz="1 0 0"/></joint>
+</robot>"#;
+
+fn spec(tree: &KinematicTree, exact_angles: ExactAngles) -> RobotSpec<'_> {
+    RobotSpec {
+        tree,
+        base: None,
+        tips: vec!["tool".to_owned()],
+        positions: false,
+        scalars: Scalars::default(),
+        krate: quote!(::kinematics),
+        source_label: "arm.urdf".to_owned(),
+        source_text: quote!("text"),
+        exact_angles,
+        impl_generics: quote!(),
+        where_clause: quote!(),
+    }
+}
+
+/// The tokens of `reference()`'s body.
+fn reference_call(tokens: &str) -> &str {
+    let start = tokens.find("parse_source_with").expect("reference() parses with a policy");
+    &tokens[start..start + tokens[start..].find(')').unwrap() + 1]
+}
+
+#[test]
+fn reference_loads_with_the_trees_policy() {
+    let off = kinematics_model::parse_source_with("arm.urdf", ARM, ExactAngles::Off).unwrap();
+    let tokens = emit_robot(&quote!(Arm), &spec(&off, ExactAngles::Off)).unwrap().to_string();
+    assert_eq!(
+        reference_call(&tokens),
+        "parse_source_with (\"arm.urdf\" , \"text\" , :: kinematics :: model :: ExactAngles :: Off)"
+    );
+    let on = kinematics_model::parse_source_with("arm.urdf", ARM, ExactAngles::Within(1e-9)).unwrap();
+    let tokens = emit_robot(&quote!(Arm), &spec(&on, ExactAngles::Within(1e-9))).unwrap().to_string();
+    assert_eq!(
+        reference_call(&tokens),
+        "parse_source_with (\"arm.urdf\" , \"text\" , :: kinematics :: model :: ExactAngles :: Within (0.000000001f64)"
+    );
+}
+
+#[test]
+fn a_policy_other_than_the_trees_is_refused() {
+    let off = kinematics_model::parse_source_with("arm.urdf", ARM, ExactAngles::Off).unwrap();
+    let e = emit_robot(&quote!(Arm), &spec(&off, ExactAngles::default())).unwrap_err();
+    assert!(matches!(e, CompileError::ExactnessMismatch { .. }), "{e}");
+    assert_eq!(
+        e.to_string(),
+        "robot `arm`: the exactness policy asked for (Within(1e-9)) is not the one the robot was loaded with (Off)"
+    );
+}
+
+#[test]
+fn generics_go_on_both_impls_and_nowhere_else() {
+    let tree = kinematics_model::parse_source("arm.urdf", ARM).unwrap();
+    let mut spec = spec(&tree, tree.exact_angles());
+    spec.impl_generics = quote!(<'a, T: Clone, const N: usize>);
+    spec.where_clause = quote!(where T: Default);
+    let tokens = emit_robot(&quote!(Arm<'a, T, N>), &spec).unwrap().to_string();
+    let generics = "impl < 'a , T : Clone , const N : usize >";
+    assert!(tokens.contains(&format!("{generics} Arm < 'a , T , N > where T : Default {{")), "{tokens}");
+    assert!(
+        tokens.contains(&format!("{generics} :: kinematics :: Kinematics for Arm < 'a , T , N > where T : Default {{")),
+        "{tokens}"
+    );
+    assert_eq!(tokens.matches("const N").count(), 2, "{tokens}");
+    // All of it in one anonymous block, the generic functions free in it.
+    assert!(tokens.starts_with("const _ : () = {"), "{tokens}");
+    assert!(tokens.contains("fn generic_tip_poses < T : :: kinematics :: Real >"), "{tokens}");
+}

@@ -1,0 +1,242 @@
+//! What the derive emits beside its errors: a stub with the names the attribute implies, so one
+//! fault does not cascade into "no function `tip_pose`" and "trait `Kinematics` not implemented"
+//! errors wherever the struct is used (as thiserror's `fallback.rs` and serde_derive do).
+//!
+//! The stub never runs: the `compile_error!`s beside it stop the build. Its functions take and
+//! return arrays of the robot's lengths when the description loaded; otherwise they are generic
+//! over them (`q: &[f64; N]`, `[Pose<f64>; M]`, under names the user's generics cannot take), so
+//! calls that fix the lengths type check whatever the robot was meant to be. The fallible ones return errors; the infallible ones
+//! (`tip_pose`) have nothing to return and are `unreachable!`.
+
+use proc_macro2::TokenStream;
+use quote::{format_ident, quote};
+use syn::punctuated::Punctuated;
+
+use crate::options::KinematicsInput;
+
+/// The function names the attribute implies.
+#[derive(Debug, Clone, Copy)]
+struct Names {
+    /// `tip_pose` (one tip).
+    one_tip: bool,
+    /// `tip_poses` (several tips).
+    several_tips: bool,
+    /// The position functions.
+    positions: bool,
+    /// `f64` functions (no suffix).
+    f64: bool,
+    /// `_f32` functions.
+    f32: bool,
+    /// How many tips, if they could be counted.
+    tips: Option<usize>,
+}
+
+impl Names {
+    /// Every name the derive can emit: for an attribute that cannot be read at all.
+    const ALL: Names = Names { one_tip: true, several_tips: true, positions: true, f64: true, f32: true, tips: None };
+
+    /// From options darling parsed (the scalar list may still be wrong: then both scalar types).
+    fn from_options(options: &KinematicsInput) -> Self {
+        let tips = options.tips().len();
+        let (f64, f32) = match options.scalars() {
+            Ok(s) => (s.f64, s.f32),
+            Err(_) => (true, true),
+        };
+        Names { one_tip: tips == 1, several_tips: tips > 1, positions: options.positions, f64, f32, tips: Some(tips) }
+    }
+
+    /// From the attribute's keys alone, when darling could not parse it: only which keys are
+    /// there matters (`tip`, `tips(...)` and how many, `positions`, `scalars(...)`); whatever
+    /// cannot be read counts as present.
+    fn from_attributes(input: &syn::DeriveInput) -> Self {
+        let mut names =
+            Names { one_tip: false, several_tips: false, positions: false, f64: true, f32: false, tips: None };
+        let mut tips = 0usize;
+        for attr in input.attrs.iter().filter(|a| a.path().is_ident("kinematics")) {
+            let Ok(items) = attr.parse_args_with(Punctuated::<syn::Meta, syn::Token![,]>::parse_terminated) else {
+                return Names::ALL;
+            };
+            for item in items {
+                let path = item.path();
+                if path.is_ident("tip") {
+                    tips += 1;
+                } else if path.is_ident("tips") {
+                    match &item {
+                        syn::Meta::List(list) => {
+                            match list.parse_args_with(Punctuated::<syn::Expr, syn::Token![,]>::parse_terminated) {
+                                Ok(list) => tips += list.len(),
+                                Err(_) => (names.one_tip, names.several_tips) = (true, true),
+                            }
+                        }
+                        _ => (names.one_tip, names.several_tips) = (true, true),
+                    }
+                } else if path.is_ident("positions") {
+                    names.positions = true;
+                } else if path.is_ident("scalars") {
+                    let text = match &item {
+                        syn::Meta::List(list) => list.tokens.to_string(),
+                        _ => String::new(),
+                    };
+                    let words: Vec<&str> = text.split(|c: char| !c.is_alphanumeric()).collect();
+                    names.f32 = words.contains(&"f32") || !words.contains(&"f64");
+                    names.f64 = words.contains(&"f64") || !words.contains(&"f32");
+                }
+            }
+        }
+        if !(names.one_tip || names.several_tips) {
+            names.tips = Some(tips);
+        }
+        names.one_tip |= tips == 1;
+        names.several_tips |= tips > 1;
+        names
+    }
+}
+
+/// The crate path from `crate = "..."`, read leniently, or `::kinematics`.
+fn crate_path(input: &syn::DeriveInput, options: Option<&KinematicsInput>) -> TokenStream {
+    if let Some(path) = options.and_then(|o| o.krate.as_ref()) {
+        return quote!(#path);
+    }
+    for attr in input.attrs.iter().filter(|a| a.path().is_ident("kinematics")) {
+        let Ok(items) = attr.parse_args_with(Punctuated::<syn::Meta, syn::Token![,]>::parse_terminated) else {
+            continue;
+        };
+        for item in items {
+            if let syn::Meta::NameValue(nv) = item
+                && nv.path.is_ident("crate")
+                && let syn::Expr::Lit(syn::ExprLit { lit: syn::Lit::Str(s), .. }) = &nv.value
+                && let Ok(path) = s.parse::<syn::Path>()
+            {
+                return quote!(#path);
+            }
+        }
+    }
+    quote!(::kinematics)
+}
+
+/// What is known of the robot when its description loaded (the fault was elsewhere): the stub's
+/// functions then take and return arrays of the robot's own lengths.
+#[derive(Debug, Clone, Copy)]
+pub struct Known {
+    /// Degrees of freedom.
+    pub dof: usize,
+    /// Links but the base (whatever the base: every link but one).
+    pub links: usize,
+}
+
+/// The stub: `impl Type { ... }` with the constants, the functions the attribute implies and
+/// `reference()`, and `impl Kinematics for Type`, in an anonymous block. Lengths not known (no
+/// description, or tips that could not be counted) are const parameters of the functions, which
+/// the call site infers.
+pub fn stub(input: &syn::DeriveInput, options: Option<&KinematicsInput>, known: Option<Known>) -> TokenStream {
+    let names = options.map_or_else(|| Names::from_attributes(input), Names::from_options);
+    let krate = crate_path(input, options);
+    let ident = &input.ident;
+    let (impl_generics, ty_generics, where_clause) = input.generics.split_for_impl();
+    let message = "the derive failed: its compile errors say why";
+    let scalars: Vec<(&str, TokenStream)> = [(names.f64, "", quote!(f64)), (names.f32, "_f32", quote!(f32))]
+        .into_iter()
+        .filter(|(on, _, _)| *on)
+        .map(|(_, suffix, t)| (suffix, t))
+        .collect();
+    let length = |known: Option<usize>, param: &TokenStream| match known {
+        Some(n) => {
+            let n = proc_macro2::Literal::usize_unsuffixed(n);
+            (quote!(#n), None)
+        }
+        None => (param.clone(), Some(quote!(const #param: usize))),
+    };
+    let (dof, dof_param) = length(known.map(|k| k.dof), &quote!(__KINEMATICS_DOF));
+    let (links, links_param) = length(known.map(|k| k.links), &quote!(__KINEMATICS_FRAMES));
+    let (tips, tips_param) = length(names.tips, &quote!(__KINEMATICS_FRAMES));
+    let mut functions = Vec::new();
+    let mut function = |name: &str, frames: Option<&Option<TokenStream>>, ret: &dyn Fn(&TokenStream) -> TokenStream| {
+        let params: Vec<&TokenStream> = dof_param.iter().chain(frames.into_iter().flatten()).collect();
+        for (suffix, t) in &scalars {
+            let f = format_ident!("{name}{suffix}");
+            let r = ret(t);
+            functions.push(quote! {
+                #[allow(missing_docs, unused_variables, clippy::missing_panics_doc)]
+                pub fn #f<#(#params),*>(q: &[#t; #dof]) -> #r {
+                    ::core::unreachable!(#message)
+                }
+            });
+        }
+    };
+    let pose = |t: &TokenStream| quote!(#krate::Pose<#t>);
+    function("link_poses", Some(&links_param), &|t| {
+        let p = pose(t);
+        quote!([#p; #links])
+    });
+    if names.one_tip {
+        function("tip_pose", None, &pose);
+    }
+    if names.several_tips {
+        function("tip_poses", Some(&tips_param), &|t| {
+            let p = pose(t);
+            quote!([#p; #tips])
+        });
+    }
+    if names.positions {
+        function("link_positions", Some(&links_param), &|t| quote!([[#t; 3]; #links]));
+        if names.one_tip {
+            function("tip_position", None, &|t| quote!([#t; 3]));
+        }
+        if names.several_tips {
+            function("tip_positions", Some(&tips_param), &|t| quote!([[#t; 3]; #tips]));
+        }
+    }
+    let dof_const = known.map_or(0, |k| k.dof);
+    let load_error = quote! {
+        ::core::result::Result::Err(#krate::LoadError::new(
+            "",
+            #krate::LoadErrorKind::Syntax { line: ::core::option::Option::None, message: ::std::string::String::from(#message) },
+        ))
+    };
+    let runtime_error = quote! {
+        ::core::result::Result::Err(#krate::RuntimeError::WrongOutputLength {
+            robot: ::std::string::String::from(#message),
+            expected: 0,
+            got: out.len(),
+        })
+    };
+    quote! {
+        const _: () = {
+            #[allow(dead_code, missing_docs)]
+            impl #impl_generics #ident #ty_generics #where_clause {
+                pub const ROBOT: &'static str = "";
+                pub const BASE: &'static str = "";
+                pub const DOF: usize = #dof_const;
+                pub const JOINT_NAMES: &'static [&'static str] = &[];
+                pub const JOINT_LIMITS: &'static [#krate::JointLimits] = &[];
+                pub const LINK_NAMES: &'static [&'static str] = &[];
+                pub const TIPS: &'static [&'static str] = &[];
+                #(#functions)*
+                pub fn reference() -> ::core::result::Result<#krate::ReferenceFk, #krate::LoadError> {
+                    #load_error
+                }
+            }
+
+            impl #impl_generics #krate::Kinematics for #ident #ty_generics #where_clause {
+                const ROBOT: &'static str = "";
+                const BASE: &'static str = "";
+                const DOF: usize = 0;
+                const JOINT_NAMES: &'static [&'static str] = &[];
+                const JOINT_LIMITS: &'static [#krate::JointLimits] = &[];
+                const LINK_NAMES: &'static [&'static str] = &[];
+                const TIPS: &'static [&'static str] = &[];
+                fn tip_poses_into(q: &[f64], out: &mut [#krate::Pose<f64>]) -> ::core::result::Result<(), #krate::RuntimeError> {
+                    let _ = q;
+                    #runtime_error
+                }
+                fn link_poses_into(q: &[f64], out: &mut [#krate::Pose<f64>]) -> ::core::result::Result<(), #krate::RuntimeError> {
+                    let _ = q;
+                    #runtime_error
+                }
+                fn reference() -> ::core::result::Result<#krate::ReferenceFk, #krate::LoadError> {
+                    #load_error
+                }
+            }
+        };
+    }
+}

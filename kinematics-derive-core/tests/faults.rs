@@ -1,0 +1,93 @@
+//! Every fault of one derive is reported, each once, and the output keeps a stub of the impls so
+//! no fault cascades (issue 13); the user's generics go on the impls as written.
+#![allow(clippy::panic, clippy::unwrap_used, clippy::expect_used)] // test helpers fail loudly
+
+use quote::quote;
+
+fn expand(input: proc_macro2::TokenStream) -> String {
+    kinematics_derive_core::expand(input).to_string()
+}
+
+/// The messages of the `compile_error!`s in an expansion.
+fn errors(out: &str) -> Vec<String> {
+    out.split("compile_error ! {")
+        .skip(1)
+        .map(|rest| {
+            let start = rest.find('"').unwrap() + 1;
+            let end = start + rest[start..].find("\" }").unwrap();
+            rest[start..end].to_owned()
+        })
+        .collect()
+}
+
+#[test]
+fn link_faults_and_option_faults_are_reported_together() {
+    let out = expand(quote! {
+        #[kinematics(dh = "../robots/planar_2r.toml", base = "bsae", tip = "link9", scalars(f16))]
+        struct Arm;
+    });
+    let errors = errors(&out);
+    assert_eq!(errors.len(), 4, "{errors:#?}");
+    assert!(errors[0].contains("base link `bsae` does not exist"), "{errors:#?}");
+    assert!(errors[1].contains("tip link `link9` does not exist"), "{errors:#?}");
+    assert_eq!(errors[2], "expected `f64` or `f32`");
+    assert!(errors[3].starts_with("name at least one scalar type"), "{errors:#?}");
+}
+
+#[test]
+fn a_fault_leaves_a_stub_with_the_names_the_attribute_implies() {
+    let out = expand(quote! {
+        #[kinematics(dh = "../robots/planar_2r.toml", tips("link1", "link9"), positions, scalars(f32))]
+        struct Arm;
+    });
+    assert_eq!(errors(&out).len(), 1, "{out}");
+    for expected in [
+        "impl :: kinematics :: Kinematics for Arm",
+        "pub fn tip_poses_f32",
+        "pub fn tip_positions_f32",
+        "pub fn link_poses_f32",
+        "pub fn reference",
+    ] {
+        assert!(out.contains(expected), "no `{expected}` in {out}");
+    }
+    for absent in ["fn tip_pose_f32", "fn tip_poses <", "fn tip_poses(", "fn tip_pose <", "fn tip_pose("] {
+        assert!(!out.contains(absent), "`{absent}` in {out}");
+    }
+}
+
+#[test]
+fn an_unreadable_attribute_still_leaves_a_stub() {
+    let out = expand(quote! {
+        #[kinematics(dh = "../robots/planar_2r.toml", tip = "link2", positions = "yes", crate = "kin")]
+        struct Arm<T>(T);
+    });
+    assert!(!errors(&out).is_empty(), "{out}");
+    assert!(out.contains("impl < T > kin :: Kinematics for Arm < T >"), "{out}");
+    assert!(out.contains("pub fn tip_pose <"), "{out}");
+    assert!(out.contains("pub fn tip_position <"), "{out}");
+}
+
+#[test]
+fn constants_that_overflow_are_an_error_on_the_struct_not_a_panic() {
+    let out = expand(quote! {
+        #[kinematics(urdf = "tests/fixtures/far.urdf", tip = "b")]
+        struct Far;
+    });
+    let errors = errors(&out);
+    // The model may come to refuse the file itself; either way it is an error, not a panic.
+    assert_eq!(errors.len(), 1, "{errors:#?}");
+    assert!(errors[0].starts_with("tests/fixtures/far.urdf: "), "{errors:#?}");
+    assert!(out.contains("impl :: kinematics :: Kinematics for Far"), "{out}");
+}
+
+#[test]
+fn generics_are_written_on_the_impls() {
+    let out = expand(quote! {
+        #[kinematics(dh = "../robots/planar_2r.toml", tip = "link2")]
+        struct Arm<'a, T: Clone, const N: usize> where T: Default { r: &'a [T; N] }
+    });
+    assert!(errors(&out).is_empty(), "{out}");
+    let generics = "impl < 'a , T : Clone , const N : usize >";
+    assert!(out.contains(&format!("{generics} Arm < 'a , T , N > where T : Default")), "{out}");
+    assert!(out.contains(&format!("{generics} :: kinematics :: Kinematics for Arm < 'a , T , N > where T : Default")));
+}
