@@ -138,7 +138,9 @@ pub enum ModelError {
         joints: Vec<String>,
     },
     /// A mimic chain whose composed multiplier or offset is not a finite number.
-    #[error("{element}: following its mimic chain to joint `{source_joint}`, the composed mimic {field} is not a finite number")]
+    #[error(
+        "{element}: following its mimic chain to joint `{source_joint}`, the composed mimic {field} is not a finite number"
+    )]
     MimicOverflow {
         /// The mimic joint at which the composition overflows.
         element: Element,
@@ -148,7 +150,9 @@ pub enum ModelError {
         field: &'static str,
     },
     /// The robot's reach (every fixed offset and prismatic stroke laid end to end) overflows.
-    #[error("{element}: the robot's reach (every fixed offset and prismatic stroke laid end to end) is not a finite number from this joint on")]
+    #[error(
+        "{element}: the robot's reach (every fixed offset and prismatic stroke laid end to end) is not a finite number from this joint on"
+    )]
     ReachOverflow {
         /// The joint at which the running sum overflows.
         element: Element,

@@ -267,7 +267,9 @@ fn check_mimics(d: &Description, errors: &mut Vec<ModelError>) {
             }
             Some(_) => {
                 if let Some(cycle) = loop_at.get(&i) {
-                    errors.push(ModelError::MimicLoop { joints: cycle.iter().map(|&k| d.joints[k].name.clone()).collect() });
+                    errors.push(ModelError::MimicLoop {
+                        joints: cycle.iter().map(|&k| d.joints[k].name.clone()).collect(),
+                    });
                 }
             }
         }
@@ -287,12 +289,10 @@ fn check_mimic_composition(d: &Description, tree: &KinematicTree, errors: &mut V
         // Reported once per chain: at the first joint whose own mimic source still composed to
         // finite numbers (or is the independent source itself).
         let written = d.joints[element[joint.name.as_str()]].mimic.as_ref();
-        let parent_finite = written
-            .and_then(|m| tree.joint_by_name(&m.joint))
-            .is_none_or(|p| match p.motion {
-                JointMotion::Mimic { multiplier, offset, .. } => multiplier.is_finite() && offset.is_finite(),
-                _ => true,
-            });
+        let parent_finite = written.and_then(|m| tree.joint_by_name(&m.joint)).is_none_or(|p| match p.motion {
+            JointMotion::Mimic { multiplier, offset, .. } => multiplier.is_finite() && offset.is_finite(),
+            _ => true,
+        });
         if parent_finite {
             errors.push(ModelError::MimicOverflow {
                 element: d.joints[element[joint.name.as_str()]].element.clone(),

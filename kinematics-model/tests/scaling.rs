@@ -41,11 +41,7 @@ fn joint(i: usize, parent: usize, mimic: Option<usize>) -> JointDescription {
 
 /// Links `0..=n`; joint `i` (1..=n) hangs link `i` below link `parent(i)`, mimicking `mimic(i)`.
 /// Joints are listed leaves first, so that no order of the description helps.
-fn description(
-    n: usize,
-    parent: impl Fn(usize) -> usize,
-    mimic: impl Fn(usize) -> Option<usize>,
-) -> Description {
+fn description(n: usize, parent: impl Fn(usize) -> usize, mimic: impl Fn(usize) -> Option<usize>) -> Description {
     Description {
         name: "big".to_owned(),
         links: (0..=n).rev().map(|i| name("link", i)).collect(),

@@ -148,10 +148,8 @@ mod tests {
         assert!(qs.iter().flatten().all(|v| v.is_finite()));
         assert!(qs.iter().all(|q| q[0].abs() <= PI + 1.0));
         assert!(qs.iter().any(|q| q[1].abs() > 1e300));
-        let limits = [
-            JointLimits { lower: f64::NEG_INFINITY, upper: 0.5 },
-            JointLimits { lower: -1e308, upper: 1e308 },
-        ];
+        let limits =
+            [JointLimits { lower: f64::NEG_INFINITY, upper: 0.5 }, JointLimits { lower: -1e308, upper: 1e308 }];
         assert_eq!(Configurations::within(&limits).take(2000).collect::<Vec<_>>(), qs);
     }
 
