@@ -100,10 +100,11 @@ pub fn op_counts(tree: &KinematicTree, file: &str, base: &str, tip: &str) -> Res
 
 /// Operation counts as aligned `sin_cos / mul / add` lines.
 pub fn op_table(rows: &[(String, OpCount)]) -> String {
-    let width = rows.iter().map(|(what, _)| what.len()).max().unwrap_or(0);
-    let mut out = format!("  {:<width$}  sin_cos / mul / add\n", "");
+    let width = crate::inspect::column_width(rows.iter().map(|(what, _)| what.as_str()));
+    let mut out = format!("  {}  sin_cos / mul / add\n", crate::inspect::pad("", width));
     for (what, count) in rows {
-        out += &format!("  {what:<width$}  {:>7} / {:>3} / {:>3}\n", count.sin_cos, count.mul, count.add);
+        let what = crate::inspect::pad(what, width);
+        out += &format!("  {what}  {:>7} / {:>3} / {:>3}\n", count.sin_cos, count.mul, count.add);
     }
     out
 }
