@@ -71,14 +71,31 @@ pub fn pose_text(tree: &KinematicTree, file: &str, base: &str, tip: &str, latex:
         out += &format!("angles: {}\n", legend.join(", "));
     }
     out += "\n";
+    // Shared subexpressions too long to repeat are printed once, as temporaries `t1, t2, ...`, so
+    // the text stays linear in the size of the expression graph.
+    let g = pose.graph();
+    let names = kinematics_compiler::emit::Names::new(g, &pose.outputs());
+    let outputs = pose.frame_outputs(0);
     if latex {
+        let listing = kinematics_compiler::emit::latex_listing(g, &names, &outputs);
         out += "\\begin{aligned}\n";
-        let rows: Vec<String> =
-            ENTRIES.iter().zip(pose.frame_latex(0)).map(|((_, name), entry)| format!("  {name} &= {entry}")).collect();
+        let rows: Vec<String> = listing
+            .temporaries
+            .iter()
+            .map(|(name, definition)| format!("  {name} &= {definition}"))
+            .chain(ENTRIES.iter().zip(listing.entries).map(|((_, name), entry)| format!("  {name} &= {entry}")))
+            .collect();
         out += &rows.join(" \\\\\n");
         out += "\n\\end{aligned}\n";
     } else {
-        for ((name, _), entry) in ENTRIES.iter().zip(pose.frame_text(0)) {
+        let listing = kinematics_compiler::emit::text_listing(g, &names, &outputs);
+        for (name, definition) in &listing.temporaries {
+            out += &format!("{name:>3} = {definition}\n");
+        }
+        if !listing.temporaries.is_empty() {
+            out += "\n";
+        }
+        for ((name, _), entry) in ENTRIES.iter().zip(listing.entries) {
             out += &format!("{name:>3} = {entry}\n");
         }
     }
