@@ -83,8 +83,8 @@ pub fn check_graph(tree: &KinematicTree, file: &str, samples: usize) -> Result<V
 /// not a number); a check of no frame at all fails too, since it checked nothing.
 pub fn verdict(file: &str, errors: &[FrameError]) -> Result<(), CliError> {
     match errors.iter().max_by(|a, b| a.error.total_cmp(&b.error)) {
-        // `!(e <= t)`: a NaN error fails as well.
-        Some(worst) if !(worst.error <= TOLERANCE) => Err(CliError::Disagrees {
+        // A NaN error fails as well.
+        Some(worst) if worst.error.is_nan() || worst.error > TOLERANCE => Err(CliError::Disagrees {
             file: file.to_owned(),
             link: worst.link.clone(),
             error: worst.error,

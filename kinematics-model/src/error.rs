@@ -139,15 +139,16 @@ pub enum ModelError {
     },
     /// A mimic chain whose composed multiplier or offset is not a finite number.
     #[error(
-        "{element}: following its mimic chain to joint `{source_joint}`, the composed mimic {field} is not a finite number"
+        "{element}: following its mimic chain to joint `{source_joint}`, the composed mimic {} is not a finite number",
+        if *.offset { "offset" } else { "multiplier" }
     )]
     MimicOverflow {
         /// The mimic joint at which the composition overflows.
         element: Element,
         /// The independent joint the chain ends at.
         source_joint: String,
-        /// `multiplier` or `offset`.
-        field: &'static str,
+        /// Whether it is the offset that overflows (the multiplier being finite).
+        offset: bool,
     },
     /// The robot's reach (every fixed offset and prismatic stroke laid end to end) overflows.
     #[error(

@@ -297,7 +297,7 @@ fn check_mimic_composition(d: &Description, tree: &KinematicTree, errors: &mut V
             errors.push(ModelError::MimicOverflow {
                 element: d.joints[element[joint.name.as_str()]].element.clone(),
                 source_joint: tree.joint(source).name.clone(),
-                field: if multiplier.is_finite() { "offset" } else { "multiplier" },
+                offset: multiplier.is_finite(),
             });
         }
     }

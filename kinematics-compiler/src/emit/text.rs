@@ -385,7 +385,7 @@ mod tests {
                 let used = definition.split(|c: char| !c.is_alphanumeric()).any(|w| w == format!("t{later}"));
                 assert!(!used, "{name} = {definition} uses t{later}");
             }
-            assert!(definition.len() > 0);
+            assert!(!definition.is_empty());
         }
         // Every temporary is used at least twice, counting its uses in later temporaries and entries.
         for (name, _) in &listing.temporaries {
