@@ -571,10 +571,6 @@ fn expr_of_a_1000_joint_chain_is_linear_in_size() {
     let out = ok(&["expr", &file]);
     assert!(out.len() < 100_000, "{} bytes", out.len());
     std::fs::remove_dir_all(&dir).unwrap();
-}
-
-#[test]
-fn the_readme_s_ur5_expression_is_unchanged() {
     // Small robots print without temporaries: the UR5 as the README quotes it.
     let out = ok(&["expr", "robots/ur5.urdf"]);
     assert!(!out.contains(" t1 = "), "{out}");

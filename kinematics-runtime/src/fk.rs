@@ -75,6 +75,7 @@ impl ReferenceFk {
     /// let err = fk.link_poses(&[f64::NAN]).unwrap_err();
     /// assert_eq!(err.to_string(), "robot `robot`: the value of joint `j1` (q[0]) is NaN, not a finite number");
     /// assert!(matches!(fk.jacobian(&[f64::INFINITY], "base", "link1"), Err(RuntimeError::NonFiniteValue { .. })));
+    /// assert!(matches!(fk.relative_pose(&[-f64::INFINITY], "link1", "base"), Err(RuntimeError::NonFiniteValue { .. })));
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     pub fn check_q(&self, q: &[f64]) -> Result<(), RuntimeError> {
