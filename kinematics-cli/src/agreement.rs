@@ -10,9 +10,30 @@ use nalgebra::Isometry3;
 
 use crate::error::CliError;
 
-/// Agreement required of compiled code: translations within this times the reach, rotation
-/// entries within this.
-pub const TOLERANCE: f64 = 1e-12;
+/// Agreement required of compiled code: the runtime's one tolerance of every agreement check
+/// (translations within this times the reach, rotation entries within this).
+pub const TOLERANCE: f64 = kinematics::AGREEMENT_TOLERANCE;
+
+/// A sample count from the command line: at least 1, since checking no configuration checks
+/// nothing (and passing such a check would be a silent wrong answer).
+pub fn sample_count(text: &str) -> Result<usize, String> {
+    match text.parse::<usize>() {
+        Ok(0) => Err("at least one configuration is needed: 0 checks nothing".to_owned()),
+        Ok(n) => Ok(n),
+        Err(e) => Err(e.to_string()),
+    }
+}
+
+/// Folds `d` into the largest so far; a NaN (which `f64::max` would drop) counts as infinitely far.
+pub fn worst_of(worst: f64, d: f64) -> f64 {
+    if d.is_nan() {
+        f64::INFINITY
+    } else if d > worst {
+        d
+    } else {
+        worst
+    }
+}
 
 /// The larger of the translation difference over `reach` and the largest rotation-entry
 /// difference, between 12 pose entries (rotation row-major, translation) and an isometry.
@@ -42,29 +63,35 @@ pub fn check_graph(tree: &KinematicTree, file: &str, samples: usize) -> Result<V
         compile(tree, &Request::all_links()).map_err(|source| CliError::Compile { file: file.to_owned(), source })?;
     let fk = ReferenceFk::new(tree.clone());
     let reach = tree.reach();
-    let ids: Vec<usize> = compiled.frames().iter().map(|f| tree.link_id(&f.link).map_or(0, |id| id.0)).collect();
+    let ids: Vec<usize> = compiled
+        .frames()
+        .iter()
+        .map(|f| fk.link_id(&f.link).map(|id| id.0))
+        .collect::<Result<_, _>>()
+        .map_err(|source| CliError::Runtime { file: file.to_owned(), source })?;
     let mut worst = vec![0.0f64; ids.len()];
     for q in Configurations::new(tree).take(samples) {
         let reference = fk.link_poses(&q).map_err(|source| CliError::Runtime { file: file.to_owned(), source })?;
         for ((frame, &id), worst) in compiled.eval(&q).iter().zip(&ids).zip(&mut worst) {
-            let d = distance(frame, &reference[id], reach);
-            // NaN counts as the largest error there is.
-            *worst = if d.is_nan() { f64::INFINITY } else { worst.max(d) };
+            *worst = worst_of(*worst, distance(frame, &reference[id], reach));
         }
     }
     Ok(compiled.frames().iter().zip(worst).map(|(f, error)| FrameError { link: f.link.clone(), error }).collect())
 }
 
-/// The frame with the largest error, as the error `check` fails with if it is past tolerance.
+/// The frame with the largest error, as the error `check` fails with if it is past tolerance (or
+/// not a number); a check of no frame at all fails too, since it checked nothing.
 pub fn verdict(file: &str, errors: &[FrameError]) -> Result<(), CliError> {
     match errors.iter().max_by(|a, b| a.error.total_cmp(&b.error)) {
-        Some(worst) if worst.error > TOLERANCE => Err(CliError::Disagrees {
+        // A NaN error fails as well.
+        Some(worst) if worst.error.is_nan() || worst.error > TOLERANCE => Err(CliError::Disagrees {
             file: file.to_owned(),
             link: worst.link.clone(),
             error: worst.error,
             tolerance: TOLERANCE,
         }),
-        _ => Ok(()),
+        Some(_) => Ok(()),
+        None => Err(CliError::NothingToCheck { file: file.to_owned() }),
     }
 }
 
@@ -81,5 +108,23 @@ mod tests {
             failed.map_err(|e| e.to_string()),
             Err("arm.urdf: link `b`: the compiled pose is off by inf x reach (tolerance 1e-12)".to_owned())
         );
+        let failed = verdict("arm.urdf", &[frame("a", 0.0), frame("b", f64::NAN)]);
+        assert!(failed.is_err_and(|e| e.to_string().contains("link `b`")));
+        assert!(verdict("arm.urdf", &[]).is_err_and(|e| e.to_string().contains("nothing to check")));
+    }
+
+    #[test]
+    fn nan_is_the_worst_error_and_stays_so() {
+        assert_eq!(worst_of(0.0, 1e-15), 1e-15);
+        assert_eq!(worst_of(1e-15, 0.0), 1e-15);
+        assert_eq!(worst_of(1e-15, f64::NAN), f64::INFINITY);
+        assert_eq!(worst_of(f64::INFINITY, 0.5), f64::INFINITY);
+    }
+
+    #[test]
+    fn zero_samples_are_refused() {
+        assert_eq!(sample_count("10"), Ok(10));
+        assert!(sample_count("0").is_err());
+        assert!(sample_count("-1").is_err());
     }
 }

@@ -11,7 +11,7 @@ pub struct Args {
     /// A URDF file (.urdf, .xml) or DH table (.toml, .json).
     file: String,
     /// How many configurations (the first five put every joint at 0, pi/2, -pi/2, pi, -pi).
-    #[arg(long, default_value_t = 10_000)]
+    #[arg(long, default_value_t = 10_000, value_parser = crate::agreement::sample_count)]
     samples: usize,
 }
 
@@ -31,13 +31,14 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
         args.samples,
         tree.reach()
     )?;
-    let width = errors.iter().map(|e| e.link.len()).max().unwrap_or(0).max(4);
-    writeln!(out, "{:<width$}  largest error (x reach)", "link")?;
+    let width = crate::inspect::column_width(errors.iter().map(|e| e.link.as_str())).max(4);
+    writeln!(out, "{}  largest error (x reach)", crate::inspect::pad("link", width))?;
     for e in &errors {
-        writeln!(out, "{:<width$}  {:.2e}", e.link, e.error)?;
+        writeln!(out, "{}  {:.2e}", crate::inspect::pad(&e.link, width), e.error)?;
     }
     if let Some(worst) = errors.iter().max_by(|a, b| a.error.total_cmp(&b.error)) {
         let ok = if worst.error <= TOLERANCE { "within" } else { "past" };
+        // (A NaN error cannot occur: `check_graph` counts it as infinite.)
         writeln!(
             out,
             "largest: {:.2e} x reach (link `{}`), {ok} the tolerance {TOLERANCE:e}",

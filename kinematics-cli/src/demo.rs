@@ -9,7 +9,7 @@ use kinematics::ReferenceFk;
 use kinematics::model::KinematicTree;
 use kinematics_compiler::{Request, compile};
 
-use crate::agreement::{Configurations, TOLERANCE, check_graph, distance, entries};
+use crate::agreement::{Configurations, TOLERANCE, check_graph, distance, entries, worst_of};
 use crate::error::CliError;
 use crate::ur5::Ur5;
 
@@ -21,8 +21,8 @@ const DEFAULT_FILE: &str = "robots/ur5.urdf";
 pub struct Args {
     /// A URDF file or DH table (default: `robots/ur5.urdf`, or the copy built into this binary).
     file: Option<String>,
-    /// Configurations checked against the runtime reference.
-    #[arg(long, default_value_t = 10_000)]
+    /// Configurations checked against the runtime reference (at least 1).
+    #[arg(long, default_value_t = 10_000, value_parser = crate::agreement::sample_count)]
     samples: usize,
     /// Evaluations timed per implementation.
     #[arg(long, default_value_t = 1_000_000)]
@@ -139,14 +139,20 @@ fn generated_agreement(tree: &KinematicTree, file: &str, samples: usize) -> Resu
     let fk = ReferenceFk::new(tree.clone());
     let reach = tree.reach();
     let tool0 = crate::robot::link(tree, file, "tip", "tool0")?.0;
-    let ids = Ur5::LINK_NAMES.map(|name| tree.link_id(name).map_or(0, |id| id.0));
+    let runtime = |source| CliError::Runtime { file: file.to_owned(), source };
+    let ids: Vec<usize> = Ur5::LINK_NAMES
+        .iter()
+        .map(|name| fk.link_id(name).map(|id| id.0))
+        .collect::<Result<_, _>>()
+        .map_err(runtime)?;
     let mut worst: f64 = 0.0;
     for q in Configurations::new(tree).take(samples) {
-        let Ok(q) = <[f64; Ur5::DOF]>::try_from(q.as_slice()) else { continue };
-        let reference = fk.link_poses(&q).map_err(|source| CliError::Runtime { file: file.to_owned(), source })?;
-        worst = worst.max(distance(&entries(&Ur5::tip_pose(&q)), &reference[tool0], reach));
+        #[allow(clippy::expect_used, reason = "invariant: the caller checked that `tree` is the built-in UR5")]
+        let q = <[f64; Ur5::DOF]>::try_from(q.as_slice()).expect("the built-in UR5's configurations have its DoF");
+        let reference = fk.link_poses(&q).map_err(runtime)?;
+        worst = worst_of(worst, distance(&entries(&Ur5::tip_pose(&q)), &reference[tool0], reach));
         for (pose, &id) in Ur5::link_poses(&q).iter().zip(&ids) {
-            worst = worst.max(distance(&entries(pose), &reference[id], reach));
+            worst = worst_of(worst, distance(&entries(pose), &reference[id], reach));
         }
     }
     Ok(worst)

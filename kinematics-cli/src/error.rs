@@ -43,6 +43,12 @@ pub enum CliError {
         /// The tolerance.
         tolerance: f64,
     },
+    /// `check`: the robot has no link besides the root, so no pose can be compared.
+    #[error("{file}: nothing to check: the robot has no link besides its root")]
+    NothingToCheck {
+        /// The description file.
+        file: String,
+    },
     /// Standard output could not be written.
     #[error("cannot write to standard output: {0}")]
     Output(#[source] std::io::Error),

@@ -71,14 +71,31 @@ pub fn pose_text(tree: &KinematicTree, file: &str, base: &str, tip: &str, latex:
         out += &format!("angles: {}\n", legend.join(", "));
     }
     out += "\n";
+    // Shared subexpressions too long to repeat are printed once, as temporaries `t1, t2, ...`, so
+    // the text stays linear in the size of the expression graph.
+    let g = pose.graph();
+    let names = kinematics_compiler::emit::Names::new(g, &pose.outputs());
+    let outputs = pose.frame_outputs(0);
     if latex {
+        let listing = kinematics_compiler::emit::latex_listing(g, &names, &outputs);
         out += "\\begin{aligned}\n";
-        let rows: Vec<String> =
-            ENTRIES.iter().zip(pose.frame_latex(0)).map(|((_, name), entry)| format!("  {name} &= {entry}")).collect();
+        let rows: Vec<String> = listing
+            .temporaries
+            .iter()
+            .map(|(name, definition)| format!("  {name} &= {definition}"))
+            .chain(ENTRIES.iter().zip(listing.entries).map(|((_, name), entry)| format!("  {name} &= {entry}")))
+            .collect();
         out += &rows.join(" \\\\\n");
         out += "\n\\end{aligned}\n";
     } else {
-        for ((name, _), entry) in ENTRIES.iter().zip(pose.frame_text(0)) {
+        let listing = kinematics_compiler::emit::text_listing(g, &names, &outputs);
+        for (name, definition) in &listing.temporaries {
+            out += &format!("{name:>3} = {definition}\n");
+        }
+        if !listing.temporaries.is_empty() {
+            out += "\n";
+        }
+        for ((name, _), entry) in ENTRIES.iter().zip(listing.entries) {
             out += &format!("{name:>3} = {entry}\n");
         }
     }
@@ -100,10 +117,11 @@ pub fn op_counts(tree: &KinematicTree, file: &str, base: &str, tip: &str) -> Res
 
 /// Operation counts as aligned `sin_cos / mul / add` lines.
 pub fn op_table(rows: &[(String, OpCount)]) -> String {
-    let width = rows.iter().map(|(what, _)| what.len()).max().unwrap_or(0);
-    let mut out = format!("  {:<width$}  sin_cos / mul / add\n", "");
+    let width = crate::inspect::column_width(rows.iter().map(|(what, _)| what.as_str()));
+    let mut out = format!("  {}  sin_cos / mul / add\n", crate::inspect::pad("", width));
     for (what, count) in rows {
-        out += &format!("  {what:<width$}  {:>7} / {:>3} / {:>3}\n", count.sin_cos, count.mul, count.add);
+        let what = crate::inspect::pad(what, width);
+        out += &format!("  {what}  {:>7} / {:>3} / {:>3}\n", count.sin_cos, count.mul, count.add);
     }
     out
 }

@@ -33,6 +33,7 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
     let file = &args.file;
     let fk = ReferenceFk::new(crate::robot::load(file)?);
     let tree = fk.tree();
+    // Documented default: zeros when `--q` is omitted.
     let mut q = args.q.clone().unwrap_or_else(|| vec![0.0; tree.dof()]);
     if args.degrees {
         for (value, &joint) in q.iter_mut().zip(tree.dof_joints()) {
@@ -64,16 +65,16 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
         return Ok(());
     }
     writeln!(out, "robot `{}` at q = {:?}", tree.name(), q)?;
-    let width = selected.iter().map(|&id| tree.link(id).name.len()).max().unwrap_or(0).max(24);
-    writeln!(out, "{:<width$} {:>34}   {:>30}", "link", "position (m)", "roll, pitch, yaw (rad)")?;
+    let width = crate::inspect::column_width(selected.iter().map(|&id| tree.link(id).name.as_str())).max(24);
+    writeln!(out, "{} {:>34}   {:>30}", crate::inspect::pad("link", width), "position (m)", "roll, pitch, yaw (rad)")?;
     for id in selected {
         let pose = poses[id.0];
         let p = pose.translation.vector;
         let (roll, pitch, yaw) = pose.rotation.euler_angles();
         writeln!(
             out,
-            "{:<width$} ({:>10.6}, {:>10.6}, {:>10.6})   ({:>8.5}, {:>8.5}, {:>8.5})",
-            tree.link(id).name,
+            "{} ({:>10.6}, {:>10.6}, {:>10.6})   ({:>8.5}, {:>8.5}, {:>8.5})",
+            crate::inspect::pad(&tree.link(id).name, width),
             p.x,
             p.y,
             p.z,

@@ -2,7 +2,7 @@
 
 use std::io::Write;
 
-use kinematics::model::{JointMotion, KinematicTree, LinkId};
+use kinematics::model::{Chain, ExactAngles, JointMotion, KinematicTree, LinkId};
 
 use crate::error::CliError;
 
@@ -27,6 +27,39 @@ pub fn short(x: f64) -> String {
     if s == "-0" { "0".to_owned() } else { s.to_owned() }
 }
 
+/// The widest a padded column gets, in characters: longer names overflow their column instead of
+/// widening every line (`format!` width arguments also stop at 65,535).
+pub const MAX_COLUMN: usize = 64;
+
+/// The width of a column holding texts of these lengths (in characters), at most [`MAX_COLUMN`].
+pub fn column_width<'a>(texts: impl IntoIterator<Item = &'a str>) -> usize {
+    // No texts: an empty column.
+    texts.into_iter().map(|t| t.chars().count()).max().unwrap_or(0).min(MAX_COLUMN)
+}
+
+/// `text` padded with spaces on the right to `width` characters (longer text is left as it is).
+pub fn pad(text: &str, width: usize) -> String {
+    let mut out = text.to_owned();
+    out.extend(std::iter::repeat_n(' ', width.saturating_sub(text.chars().count())));
+    out
+}
+
+/// The angles the exactness policy changed, one line each, or why there are none.
+pub fn recognised_angles(tree: &KinematicTree) -> String {
+    if tree.exact_angles() == ExactAngles::Off {
+        return "exact angles: off (every angle as written)\n".to_owned();
+    }
+    let angles = tree.recognised_angles();
+    if angles.is_empty() {
+        return "exact angles: none changed\n".to_owned();
+    }
+    let mut out = format!("exact angles: {} changed (written -> exact, change)\n", angles.len());
+    for a in angles {
+        out += &format!("  joint `{}`: {} -> {} ({:+.2e} rad)\n", a.joint, a.written, a.exact, a.change());
+    }
+    out
+}
+
 /// The tree: counts, links, one line per joint (type, parent -> child, axis, limits, where its
 /// value comes from), the DoF order, and the chain from the root to each leaf.
 pub fn describe(tree: &KinematicTree) -> String {
@@ -41,12 +74,13 @@ pub fn describe(tree: &KinematicTree) -> String {
     let links: Vec<&str> = tree.links().iter().map(|l| l.name.as_str()).collect();
     out += &format!("links (depth-first from the root): {}\n", links.join(", "));
     out += "joints (depth-first from the root):\n";
-    let name_width = tree.joints().iter().map(|j| j.name.len()).max().unwrap_or(0);
+    let name_width = column_width(tree.joints().iter().map(|j| j.name.as_str()));
     let edges: Vec<String> =
         tree.joints().iter().map(|j| format!("{} -> {}", tree.link(j.parent).name, tree.link(j.child).name)).collect();
-    let edge_width = edges.iter().map(String::len).max().unwrap_or(0);
+    let edge_width = column_width(edges.iter().map(String::as_str));
     for (joint, edge) in tree.joints().iter().zip(&edges) {
-        let mut line = format!("  {:<name_width$}  {:<10} {:<edge_width$}", joint.name, joint.kind.name(), edge);
+        let mut line =
+            format!("  {}  {} {}", pad(&joint.name, name_width), pad(joint.kind.name(), 10), pad(edge, edge_width));
         if joint.kind.name() != "fixed" {
             let [x, y, z] = joint.axis.map(short);
             line += &format!("  axis ({x}, {y}, {z})");
@@ -71,6 +105,7 @@ pub fn describe(tree: &KinematicTree) -> String {
     }
     let dofs: Vec<String> = tree.dof_names().iter().enumerate().map(|(i, n)| format!("q[{i}] {n}")).collect();
     out += &format!("DoF order: {}\n", if dofs.is_empty() { "none".to_owned() } else { dofs.join(", ") });
+    out += &recognised_angles(tree);
     out += "chains from the root to each leaf:\n";
     for (index, link) in tree.links().iter().enumerate() {
         if !link.child_joints.is_empty() || link.parent_joint.is_none() {
@@ -79,8 +114,8 @@ pub fn describe(tree: &KinematicTree) -> String {
         let path = tree.path_from_root(LinkId(index));
         let mut names = vec![tree.link(tree.root()).name.as_str()];
         names.extend(path.iter().map(|&j| tree.link(tree.joint(j).child).name.as_str()));
-        let root = &tree.link(tree.root()).name;
-        let dofs = tree.chain(root, &link.name).map(|c| tree.chain_dofs(&c)).unwrap_or_default();
+        let chain = Chain { base: tree.root(), tip: LinkId(index), joints: path.clone() };
+        let dofs = tree.chain_dofs(&chain);
         let dofs: Vec<String> = dofs.iter().map(|i| format!("q[{i}]")).collect();
         out += &format!(
             "  {}: {} joint{}, DoF {}: {}\n",
@@ -96,6 +131,17 @@ pub fn describe(tree: &KinematicTree) -> String {
 
 #[cfg(test)]
 mod tests {
+    #[test]
+    fn columns_are_padded_by_hand_and_capped() {
+        assert_eq!(super::pad("ab", 4), "ab  ");
+        assert_eq!(super::pad("abcdef", 4), "abcdef");
+        assert_eq!(super::pad("é", 2), "é ");
+        let long = "x".repeat(70_000);
+        assert_eq!(super::column_width([long.as_str(), "a"]), super::MAX_COLUMN);
+        assert_eq!(super::column_width(["abc", "a"]), 3);
+        assert_eq!(super::pad(&long, super::column_width([long.as_str()])), long);
+    }
+
     #[test]
     fn numbers_are_short() {
         for (x, expected) in

@@ -379,3 +379,204 @@ fn a_wrong_number_of_joint_values_is_refused() {
     assert_eq!(output.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&output.stderr).contains("invalid value 'x'"));
 }
+
+/// Writes `text` as `name` in `dir` and returns the path as a string.
+fn write_file(dir: &Path, name: &str, text: &str) -> String {
+    let path = dir.join(name);
+    std::fs::write(&path, text).unwrap();
+    path.to_str().unwrap().to_owned()
+}
+
+/// A run that must fail with exit status 1 and an error on stderr containing every fragment;
+/// stdout may hold what was printed before the fault (`check`'s table).
+fn fails_with(args: &[&str], fragments: &[&str]) -> String {
+    let output = run(args);
+    assert_eq!(output.status.code(), Some(1), "kinematics {args:?}: {}", String::from_utf8_lossy(&output.stderr));
+    let stderr = String::from_utf8(output.stderr).unwrap();
+    assert!(stderr.starts_with("error: "), "{stderr}");
+    for f in fragments {
+        assert!(stderr.contains(f), "kinematics {args:?}: `{stderr}` lacks `{f}`");
+    }
+    stderr
+}
+
+#[test]
+fn check_refuses_sample_counts_that_check_nothing() {
+    // issue 13: `check --samples 0` passed.
+    for command in ["check", "demo"] {
+        let output = run(&[command, "robots/planar_3r.toml", "--samples", "0"]);
+        assert_eq!(output.status.code(), Some(2), "{command}");
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        assert!(stderr.contains("0 checks nothing"), "{command}: {stderr}");
+        assert!(output.stdout.is_empty());
+    }
+    let one = ok(&["check", "robots/planar_3r.toml", "--samples", "1"]);
+    assert!(one.contains("1 configurations"), "{one}");
+    // A robot with no link besides its root: nothing to compare, so no pass.
+    let dir = scratch("nothing");
+    let lone = write_file(&dir, "lone.urdf", "<robot name=\"lone\"><link name=\"base\"/></robot>");
+    fails_with(&["check", &lone], &[&format!("{lone}: nothing to check")]);
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn descriptions_whose_poses_would_not_be_numbers_fail_check_naming_the_joint() {
+    // issue 13: an axis `0 0 1e200` gave NaN poses and `check` reported 0.00 and passed; constants
+    // that compose past f64::MAX did the same. The model now normalises that axis exactly and
+    // refuses the overflows, and `check` shows the model's error.
+    let dir = scratch("nan");
+    let joint = |name: &str, kind: &str, parent: &str, child: &str, xyz: &str, extra: &str| {
+        format!(
+            "<joint name=\"{name}\" type=\"{kind}\"><parent link=\"{parent}\"/><child link=\"{child}\"/>\
+             <origin xyz=\"{xyz}\"/><axis xyz=\"0 0 1\"/><limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/>{extra}</joint>"
+        )
+    };
+    let links = "<link name=\"a\"/><link name=\"b\"/><link name=\"c\"/><link name=\"d\"/>";
+    let far = write_file(
+        &dir,
+        "far.urdf",
+        &format!(
+            "<robot name=\"far\">{links}{}{}{}</robot>",
+            joint("f1", "fixed", "a", "b", "1e308 0 0", ""),
+            joint("f2", "fixed", "b", "c", "1e308 0 0", ""),
+            joint("j", "revolute", "c", "d", "0 0 0", "")
+        ),
+    );
+    let mimic = write_file(
+        &dir,
+        "mimic.urdf",
+        &format!(
+            "<robot name=\"mimic\">{links}{}{}{}</robot>",
+            joint("j1", "revolute", "a", "b", "0 0 1", ""),
+            joint("j2", "revolute", "b", "c", "0 0 1", "<mimic joint=\"j1\" multiplier=\"1e200\"/>"),
+            joint("j3", "revolute", "c", "d", "0 0 1", "<mimic joint=\"j2\" multiplier=\"1e200\"/>")
+        ),
+    );
+    for command in ["check", "fk", "expr", "generate", "inspect"] {
+        fails_with(&[command, &far], &[&format!("{far}: joint `f2`: the robot's reach"), "not a finite number"]);
+        fails_with(&[command, &mimic], &[&format!("{mimic}: joint `j3`: "), "mimic multiplier is not a finite number"]);
+    }
+    // The axis that used to overflow is a valid axis now, and the check passes.
+    let huge_axis =
+        std::fs::read_to_string(root().join("robots/ur5.urdf")).unwrap().replace("xyz=\"0 0 1\"", "xyz=\"0 0 1e200\"");
+    assert!(huge_axis.contains("1e200"));
+    let huge_axis = write_file(&dir, "huge_axis.urdf", &huge_axis);
+    let out = ok(&["check", &huge_axis, "--samples", "200"]);
+    assert!(out.contains("within the tolerance"), "{out}");
+    // A joint value that is not a number: the runtime reference refuses it, naming the joint.
+    for q in ["nan,0,0,0,0,0", "0,inf,0,0,0,0"] {
+        let joint = if q.starts_with("nan") { "shoulder_pan_joint" } else { "shoulder_lift_joint" };
+        fails_with(&["fk", "robots/ur5.urdf", "--q", q], &[&format!("joint `{joint}`"), "not a finite number"]);
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn names_of_70000_bytes_pass_through_every_subcommand() {
+    // issue 13: names of 65,536 bytes or more panicked `inspect`, `fk`, `expr` and `check` (a
+    // `format!` width argument).
+    let dir = scratch("long-names");
+    let link = format!("link_{}", "l".repeat(70_000));
+    let joint = format!("joint_{}", "j".repeat(70_000));
+    let file = write_file(
+        &dir,
+        "long.urdf",
+        &format!(
+            "<robot name=\"long\"><link name=\"base\"/><link name=\"{link}\"/><link name=\"tip\"/>\
+             <joint name=\"{joint}\" type=\"revolute\"><parent link=\"base\"/><child link=\"{link}\"/>\
+             <origin xyz=\"0 0 0.5\"/><axis xyz=\"0 1 0\"/><limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/></joint>\
+             <joint name=\"wrist\" type=\"continuous\"><parent link=\"{link}\"/><child link=\"tip\"/>\
+             <origin xyz=\"0.3 0 0\"/><axis xyz=\"0 0 1\"/></joint></robot>"
+        ),
+    );
+    let runs: [&[&str]; 9] = [
+        &["inspect", &file],
+        &["fk", &file],
+        &["fk", &file, "--json"],
+        &["fk", &file, "--link", &link],
+        &["expr", &file],
+        &["expr", &file, "--tip", &link, "--latex"],
+        &["check", &file, "--samples", "50"],
+        &["graph", &file],
+        &["demo", &file, "--samples", "50", "--evaluations", "10"],
+    ];
+    for args in runs {
+        let out = ok(args);
+        let has_link = out.contains(&link);
+        let has_joint = out.contains(&joint);
+        match args[0] {
+            "inspect" | "graph" => assert!(has_link && has_joint, "{}", args[0]),
+            "fk" | "check" => assert!(has_link, "{:?}", &args[..1]),
+            _ => assert!(has_link || has_joint || out.contains("q1"), "{}", args[0]),
+        }
+        // Padding stops at a cap: a line without the long names is not padded out to their width.
+        let longest = out.lines().filter(|l| !l.contains("lllll") && !l.contains("jjjjj")).map(str::len).max().unwrap();
+        assert!(longest < 1000, "{}: a line of {longest} bytes", args[0]);
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn inspect_lists_the_angles_the_exactness_policy_changed() {
+    let dir = scratch("exact-angles");
+    let urdf = write_file(
+        &dir,
+        "flip.urdf",
+        "<robot name=\"flip\"><link name=\"a\"/><link name=\"b\"/><link name=\"c\"/>\
+         <joint name=\"shoulder\" type=\"revolute\"><parent link=\"a\"/><child link=\"b\"/>\
+         <origin xyz=\"0 0 0.1\" rpy=\"3.14159265359 0 0\"/><axis xyz=\"0 0 1\"/>\
+         <limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/></joint>\
+         <joint name=\"elbow\" type=\"revolute\"><parent link=\"b\"/><child link=\"c\"/>\
+         <origin xyz=\"0 0 0.1\" rpy=\"0 -1.57079632679 1.5708\"/><axis xyz=\"0 0 1\"/>\
+         <limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/></joint></robot>",
+    );
+    let out = ok(&["inspect", &urdf]);
+    assert!(out.contains("exact angles: 2 changed"), "{out}");
+    // pi - 3.14159265359 = -2.07e-13: the change from the written value to the exact one.
+    assert!(out.contains("  joint `shoulder`: 3.14159265359 -> pi (-2.07e-13 rad)\n"), "{out}");
+    assert!(out.contains("  joint `elbow`: -1.57079632679 -> -pi/2 ("), "{out}");
+    // 1.5708 is a number, not a quarter turn.
+    assert!(!out.contains("1.5708 ->"), "{out}");
+    let exact = ok(&["inspect", "robots/planar_3r.toml"]);
+    assert!(exact.contains("exact angles: none changed\n"), "{exact}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn expr_of_a_1000_joint_chain_is_linear_in_size() {
+    // issue 13: `expr` printed each entry as a tree (30 joints: 8 s and 241 MB; 35: out of
+    // memory). Shared subexpressions are now temporaries, printed once.
+    let dir = scratch("long-chain");
+    let twists = ["\"pi/2\"", "0", "0", "\"pi/2\"", "\"-pi/2\"", "0"];
+    let mut toml = String::from("convention = \"standard\"\n");
+    for i in 0..1000 {
+        toml += &format!(
+            "[[joints]]\nname = \"j{}\"\na = {}\nd = 0.1\nalpha = {}\n",
+            i + 1,
+            0.3 + 0.001 * i as f64,
+            twists[i % 6]
+        );
+    }
+    let file = write_file(&dir, "chain.toml", &toml);
+    for latex in [false, true] {
+        let args: Vec<&str> = if latex { vec!["expr", &file, "--latex"] } else { vec!["expr", &file] };
+        let out = ok(&args);
+        assert!(out.len() < 4_000_000, "{} bytes", out.len());
+        assert!(out.contains(if latex { "t_{1} &= " } else { " t1 = " }), "{}", &out[..2000.min(out.len())]);
+        assert!(out.contains("  pose of link1000, generated"), "{}", &out[out.len().saturating_sub(2000)..]);
+    }
+    // The same chain of 30 joints: a few kilobytes, not hundreds of megabytes.
+    let short: String = toml.split("[[joints]]").take(31).collect::<Vec<_>>().join("[[joints]]");
+    let file = write_file(&dir, "chain30.toml", &short);
+    let out = ok(&["expr", &file]);
+    assert!(out.len() < 100_000, "{} bytes", out.len());
+    std::fs::remove_dir_all(&dir).unwrap();
+    // Small robots print without temporaries: the UR5 as the README quotes it.
+    let out = ok(&["expr", "robots/ur5.urdf"]);
+    assert!(!out.contains(" t1 = "), "{out}");
+    assert!(out.contains("r13 = s5*c234*c1 - c5*s1\n"), "{out}");
+    assert!(
+        out.contains("  x = (0.425*c2 + 0.39225*c23 - 0.09465*s234)*c1 - 0.10915*s1 + 0.0823*(s5*c234*c1 - c5*s1)\n"),
+        "{out}"
+    );
+}

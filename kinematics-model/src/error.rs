@@ -137,6 +137,27 @@ pub enum ModelError {
         /// The joints on the loop, in order.
         joints: Vec<String>,
     },
+    /// A mimic chain whose composed multiplier or offset is not a finite number.
+    #[error(
+        "{element}: following its mimic chain to joint `{source_joint}`, the composed mimic {} is not a finite number",
+        if *.offset { "offset" } else { "multiplier" }
+    )]
+    MimicOverflow {
+        /// The mimic joint at which the composition overflows.
+        element: Element,
+        /// The independent joint the chain ends at.
+        source_joint: String,
+        /// Whether it is the offset that overflows (the multiplier being finite).
+        offset: bool,
+    },
+    /// The robot's reach (every fixed offset and prismatic stroke laid end to end) overflows.
+    #[error(
+        "{element}: the robot's reach (every fixed offset and prismatic stroke laid end to end) is not a finite number from this joint on"
+    )]
+    ReachOverflow {
+        /// The joint at which the running sum overflows.
+        element: Element,
+    },
     /// A link name that is not in the tree (chain selection, lookups).
     #[error("link `{0}` does not exist")]
     NoSuchLink(String),

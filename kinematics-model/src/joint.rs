@@ -117,3 +117,96 @@ pub struct Joint {
     /// Where the joint's value comes from.
     pub motion: JointMotion,
 }
+
+/// The largest absolute component of `v` (0 for the zero vector).
+fn largest(v: [f64; 3]) -> f64 {
+    v.iter().fold(0.0, |m: f64, x| if x.abs() > m { x.abs() } else { m })
+}
+
+/// The Euclidean norm computed directly, when no square can overflow or lose precision to
+/// underflow (components between 1e-150 and 1e150, the ones real descriptions have); the scaled
+/// forms below give the same value to rounding, and this keeps the tree's numbers as they were.
+fn plain_norm(v: [f64; 3]) -> Option<f64> {
+    let scale = largest(v);
+    (1e-150..=1e150).contains(&scale).then(|| (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt())
+}
+
+/// The length of a finite vector, scaled by its largest component first so that it overflows
+/// only when the length itself is past `f64::MAX` (`[1e200, 1e200, 0]` is `1.41e200`, not
+/// infinity) and small vectors do not underflow to zero.
+pub(crate) fn length(v: [f64; 3]) -> f64 {
+    if let Some(n) = plain_norm(v) {
+        return n;
+    }
+    let scale = largest(v);
+    if scale == 0.0 || !scale.is_finite() {
+        return scale;
+    }
+    let [x, y, z] = v.map(|c| c / scale);
+    scale * (x * x + y * y + z * z).sqrt()
+}
+
+/// The unit vector along a finite axis, scaled by its largest component before it is squared, so
+/// that `0 0 1e200` is `0 0 1` and `1e-300 0 0` is `1 0 0`; `None` for the zero vector (or a
+/// vector that is not finite).
+pub(crate) fn unit_axis(v: [f64; 3]) -> Option<[f64; 3]> {
+    if let Some(n) = plain_norm(v) {
+        return Some(v.map(|c| c / n));
+    }
+    let scale = largest(v);
+    if scale == 0.0 || !scale.is_finite() {
+        return None;
+    }
+    let scaled = v.map(|c| c / scale);
+    // The largest scaled component is exactly +-1, so the norm is in [1, sqrt 3].
+    let n = (scaled[0] * scaled[0] + scaled[1] * scaled[1] + scaled[2] * scaled[2]).sqrt();
+    Some(scaled.map(|c| c / n))
+}
+
+/// How far a joint's value ranges in the configurations agreement is checked on
+/// (`kinematics_runtime::Configurations`): up to 1 beyond finite limits, and up to pi + 1 either
+/// way when a side is unlimited (the sampler draws unlimited joints from [-pi, pi], up to 1
+/// beyond).
+pub(crate) fn stroke(limits: Option<Limits>) -> f64 {
+    match limits {
+        Some(l) if l.lower.is_finite() && l.upper.is_finite() => l.lower.abs().max(l.upper.abs()) + 1.0,
+        _ => std::f64::consts::PI + 1.0,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn axes_are_normalised_without_overflow_or_underflow() {
+        let check = |v: [f64; 3], expected: Option<[f64; 3]>| assert_eq!(unit_axis(v), expected, "{v:?}");
+        check([0.0, 0.0, 1e200], Some([0.0, 0.0, 1.0]));
+        check([0.0, 0.0, -1e300], Some([0.0, 0.0, -1.0]));
+        check([1e-300, 0.0, 0.0], Some([1.0, 0.0, 0.0]));
+        check([5e-324, 0.0, 0.0], Some([1.0, 0.0, 0.0]));
+        check([0.0, 2.0, 0.0], Some([0.0, 1.0, 0.0]));
+        check([0.0, 0.0, 0.0], None);
+        check([0.0, f64::INFINITY, 0.0], None);
+        let diagonal = unit_axis([1e308, 1e308, 0.0]).unwrap();
+        assert!((diagonal[0] - std::f64::consts::FRAC_1_SQRT_2).abs() < 2e-16 && diagonal[0] == diagonal[1]);
+    }
+
+    #[test]
+    fn lengths_do_not_overflow_before_the_length_does() {
+        assert_eq!(length([3.0, 4.0, 0.0]), 5.0);
+        assert!((length([1e200, 1e200, 0.0]) / 1e200 - std::f64::consts::SQRT_2).abs() < 1e-15);
+        assert_eq!(length([1.5e308, 1.5e308, 0.0]), f64::INFINITY);
+        assert!(length([1e308, 1e308, 1e308]).is_finite());
+        assert_eq!(length([1e-300, 0.0, 0.0]), 1e-300);
+        assert_eq!(length([0.0; 3]), 0.0);
+    }
+
+    #[test]
+    fn strokes_follow_the_sampled_range() {
+        let limits = |lower, upper| Some(Limits { lower, upper });
+        assert_eq!(stroke(limits(-0.5, 2.0)), 3.0);
+        assert_eq!(stroke(None), std::f64::consts::PI + 1.0);
+        assert_eq!(stroke(limits(f64::NEG_INFINITY, 2.0)), std::f64::consts::PI + 1.0);
+    }
+}

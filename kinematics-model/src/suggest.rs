@@ -2,8 +2,6 @@
 //! (derive, build API, command line) needs to say the same thing.
 
 use crate::error::UnknownLink;
-use crate::joint::JointKind;
-use crate::transform::Elementary;
 use crate::tree::{KinematicTree, LinkId};
 
 impl KinematicTree {
@@ -41,22 +39,9 @@ impl KinematicTree {
     /// every prismatic stroke, laid end to end (at least 1, so that tolerances scaled by it never
     /// get tighter than absolute ones).
     pub fn reach(&self) -> f64 {
-        let offsets: f64 = self
-            .joints()
-            .iter()
-            .flat_map(|j| j.origin.steps().iter().chain(j.after_motion.steps()))
-            .map(|s| match s {
-                Elementary::Translation(v) => v.iter().map(|x| x * x).sum::<f64>().sqrt(),
-                Elementary::Rotation(..) => 0.0,
-            })
-            .sum();
-        let strokes: f64 = self
-            .joints()
-            .iter()
-            .filter(|j| j.kind == JointKind::Prismatic)
-            .map(|j| j.limits.map_or(1.0, |l| l.lower.abs().max(l.upper.abs()) + 1.0))
-            .sum();
-        (offsets + strokes).max(1.0)
+        // One joint at a time, in the tree's order: validation sums it the same way and names the
+        // joint at which it would overflow, so this is always finite.
+        (0..self.joints().len()).map(|i| self.joint_reach(crate::tree::JointId(i))).sum::<f64>().max(1.0)
     }
 }
 

@@ -1,9 +1,11 @@
 //! The validated kinematic tree: link and joint arenas in a fixed, documented order.
 
+use std::collections::BTreeMap;
+
 use crate::description::Description;
 use crate::error::{ModelError, ModelErrors};
 use crate::exactness::{ExactAngles, RecognisedAngle};
-use crate::joint::{Joint, JointMotion, Limits, Link};
+use crate::joint::{Joint, JointKind, JointMotion, Limits, Link, length, stroke};
 
 /// Index of a link in [`KinematicTree::links`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -33,6 +35,12 @@ pub struct KinematicTree {
     pub(crate) dof_joints: Vec<JointId>,
     pub(crate) exact_angles: ExactAngles,
     pub(crate) recognised: Vec<RecognisedAngle>,
+    /// Links by name, for lookups in O(log n).
+    link_index: BTreeMap<String, LinkId>,
+    /// Joints by name.
+    joint_index: BTreeMap<String, JointId>,
+    /// Number of joints from the root to each link.
+    depth: Vec<usize>,
 }
 
 /// The joints on the path from a base link down to a tip link.
@@ -47,6 +55,29 @@ pub struct Chain {
 }
 
 impl KinematicTree {
+    /// The tree of validated arenas (links and joints in depth-first pre-order, parents first),
+    /// with its name indices.
+    pub(crate) fn new(name: String, links: Vec<Link>, joints: Vec<Joint>, dof_joints: Vec<JointId>) -> Self {
+        let link_index = links.iter().enumerate().map(|(i, l)| (l.name.clone(), LinkId(i))).collect();
+        let joint_index = joints.iter().enumerate().map(|(i, j)| (j.name.clone(), JointId(i))).collect();
+        let mut depth = vec![0; links.len()];
+        // Pre-order: a joint's parent link comes before its child.
+        for j in &joints {
+            depth[j.child.0] = depth[j.parent.0] + 1;
+        }
+        KinematicTree {
+            name,
+            links,
+            joints,
+            dof_joints,
+            exact_angles: ExactAngles::Off,
+            recognised: Vec::new(),
+            link_index,
+            joint_index,
+            depth,
+        }
+    }
+
     /// Checks every rule against `description` and builds the tree, or returns every fault found;
     /// decimal angles are read by the default exactness policy ([`ExactAngles::default`]).
     pub fn from_description(description: &Description) -> Result<Self, ModelErrors> {
@@ -109,12 +140,12 @@ impl KinematicTree {
 
     /// The id of the link named `name`.
     pub fn link_id(&self, name: &str) -> Option<LinkId> {
-        self.links.iter().position(|l| l.name == name).map(LinkId)
+        self.link_index.get(name).copied()
     }
 
     /// The id of the joint named `name`.
     pub fn joint_id(&self, name: &str) -> Option<JointId> {
-        self.joints.iter().position(|j| j.name == name).map(JointId)
+        self.joint_index.get(name).copied()
     }
 
     /// The link named `name`.
@@ -147,9 +178,41 @@ impl KinematicTree {
         self.dof_joints.iter().map(|&j| self.joint(j).limits).collect()
     }
 
+    /// The number of joints from the root down to `link` (the length of
+    /// [`KinematicTree::path_from_root`], without building it).
+    pub fn depth(&self, link: LinkId) -> usize {
+        self.depth[link.0]
+    }
+
+    /// What one joint adds to the robot's [`KinematicTree::reach`]: the lengths of its fixed
+    /// translations, plus for a prismatic joint the farthest it slides in the configurations
+    /// agreement is checked on (up to 1 beyond finite limits, up to pi + 1 when a side is
+    /// unlimited; a mimic joint slides its multiplier times its source's range, plus its offset).
+    pub fn joint_reach(&self, id: JointId) -> f64 {
+        let joint = self.joint(id);
+        let offsets: f64 = joint
+            .origin
+            .steps()
+            .iter()
+            .chain(joint.after_motion.steps())
+            .map(|s| match s {
+                crate::transform::Elementary::Translation(v) => length(*v),
+                crate::transform::Elementary::Rotation(..) => 0.0,
+            })
+            .sum();
+        let slide = match (joint.kind, joint.motion) {
+            (JointKind::Prismatic, JointMotion::Mimic { source, multiplier, offset, .. }) => {
+                multiplier.abs() * stroke(self.joint(source).limits) + offset.abs()
+            }
+            (JointKind::Prismatic, _) => stroke(joint.limits),
+            _ => 0.0,
+        };
+        offsets + slide
+    }
+
     /// The joints from the root down to `link`, root first.
     pub fn path_from_root(&self, link: LinkId) -> Vec<JointId> {
-        let mut path = Vec::new();
+        let mut path = Vec::with_capacity(self.depth(link));
         let mut at = link;
         while let Some(joint) = self.link(at).parent_joint {
             path.push(joint);

@@ -1,13 +1,18 @@
 //! Validation: one function per rule, all of them run, every fault collected; then the tree is built.
 //!
 //! Rules that need a sound structure (the cycle and mimic checks) run only when the name checks
-//! passed, so one mistake is not reported three times.
+//! passed, so one mistake is not reported three times; the rules on composed numbers (mimic
+//! chains, the robot's reach) run on the assembled tree, once every other rule passed.
+//!
+//! **Cost.** Loading is O(n log n) in the number of links and joints: names are looked up in
+//! ordered maps built once, every walk (parent pointers, mimic chains) visits each element once,
+//! and nothing scans all joints per link.
 
 use std::collections::{BTreeMap, BTreeSet};
 
 use crate::description::{Description, JointDescription, JointTypeDescription};
 use crate::error::{ModelError, ModelErrors};
-use crate::joint::{Joint, JointKind, JointMotion, Limits, Link};
+use crate::joint::{Joint, JointKind, JointMotion, Limits, Link, unit_axis};
 use crate::tree::{JointId, KinematicTree, LinkId};
 
 /// Checks `d` and builds the tree.
@@ -23,14 +28,27 @@ pub(crate) fn build(d: &Description) -> Result<KinematicTree, ModelErrors> {
     }
     let names_ok = errors.is_empty();
     check_links_exist(d, &mut errors);
+    let mut root = None;
     if names_ok && errors.is_empty() {
-        check_structure(d, &mut errors);
+        root = check_structure(d, &mut errors);
         check_mimics(d, &mut errors);
     }
     if let Some(errors) = ModelErrors::from_vec(errors) {
         return Err(errors);
     }
-    Ok(assemble(d))
+    #[allow(clippy::expect_used, reason = "invariant: a description that passed every structural rule has one root")]
+    let root = root.expect("a description that passed the structural rules has exactly one root");
+    let tree = assemble(d, root);
+    let mut errors = Vec::new();
+    check_mimic_composition(d, &tree, &mut errors);
+    if errors.is_empty() {
+        // The reach sums every mimic stroke: only meaningful once the compositions are finite.
+        check_reach(d, &tree, &mut errors);
+    }
+    match ModelErrors::from_vec(errors) {
+        Some(errors) => Err(errors),
+        None => Ok(tree),
+    }
 }
 
 /// Rule: a robot has at least one link.
@@ -103,10 +121,12 @@ fn check_finite(j: &JointDescription, errors: &mut Vec<ModelError>) {
     }
 }
 
-/// Rule: a moving joint's axis is not zero (it is normalised when the tree is built).
+/// Rule: a moving joint's axis is not zero. It is normalised when the tree is built, scaled by
+/// its largest component first, so any finite non-zero axis (`0 0 1e200`, `1e-300 0 0`) has a
+/// unit direction.
 fn check_axis(j: &JointDescription, errors: &mut Vec<ModelError>) {
     let moving = !matches!(j.kind, JointTypeDescription::Fixed);
-    if moving && j.axis.iter().all(|v| v.is_finite()) && norm(j.axis) == 0.0 {
+    if moving && j.axis.iter().all(|v| v.is_finite()) && unit_axis(j.axis).is_none() {
         errors.push(ModelError::ZeroAxis { element: j.element.clone() });
     }
 }
@@ -135,141 +155,230 @@ fn check_links_exist(d: &Description, errors: &mut Vec<ModelError>) {
     }
 }
 
+/// Where a walk over parent (or mimic-source) pointers has been.
+#[derive(Clone, Copy, PartialEq)]
+enum Visit {
+    /// Not reached yet.
+    New,
+    /// On the current walk, at this position.
+    OnWalk(usize),
+    /// Reached by an earlier walk (which ended at a root or at a cycle already reported).
+    Done,
+}
+
+/// The cycles of a graph in which every node has at most one successor (`next`), each once,
+/// in the order a walk from each node in turn (in index order) first closes it: the nodes of a
+/// cycle in walk order, starting from the node at which the walk re-entered it. Every node is
+/// visited once, so this is linear.
+fn cycles(next: &[Option<usize>]) -> Vec<Vec<usize>> {
+    let mut state = vec![Visit::New; next.len()];
+    let mut found = Vec::new();
+    let mut walk: Vec<usize> = Vec::new();
+    for start in 0..next.len() {
+        walk.clear();
+        let mut at = start;
+        loop {
+            match state[at] {
+                Visit::Done => break,
+                Visit::OnWalk(pos) => {
+                    found.push(walk[pos..].to_vec());
+                    break;
+                }
+                Visit::New => {
+                    state[at] = Visit::OnWalk(walk.len());
+                    walk.push(at);
+                    match next[at] {
+                        Some(n) => at = n,
+                        None => break,
+                    }
+                }
+            }
+        }
+        for &n in &walk {
+            state[n] = Visit::Done;
+        }
+    }
+    found
+}
+
 /// Rules: each link has at most one parent joint, exactly one link has none (the root), and every
-/// link is reached from the root (otherwise the joints form a cycle).
-fn check_structure(d: &Description, errors: &mut Vec<ModelError>) {
+/// link is reached from the root (otherwise the joints form a cycle). Returns the root's index
+/// when every rule holds.
+fn check_structure(d: &Description, errors: &mut Vec<ModelError>) -> Option<usize> {
     let mut parents: BTreeMap<&str, Vec<&JointDescription>> = BTreeMap::new();
     for j in &d.joints {
         parents.entry(j.child.as_str()).or_default().push(j);
     }
-    let mut multiple = false;
+    let before = errors.len();
     for link in &d.links {
         if let Some(js) = parents.get(link.as_str()).filter(|js| js.len() > 1) {
-            multiple = true;
             errors.push(ModelError::MultipleParents {
                 link: link.clone(),
                 joints: js.iter().map(|j| j.name.clone()).collect(),
             });
         }
     }
-    let roots: Vec<&String> = d.links.iter().filter(|l| !parents.contains_key(l.as_str())).collect();
+    let multiple = errors.len() > before;
+    let roots: Vec<usize> = (0..d.links.len()).filter(|&i| !parents.contains_key(d.links[i].as_str())).collect();
     if roots.len() > 1 {
-        errors.push(ModelError::MultipleRoots { links: roots.into_iter().cloned().collect() });
-        return;
+        errors.push(ModelError::MultipleRoots { links: roots.iter().map(|&i| d.links[i].clone()).collect() });
+        return None;
     }
     if multiple {
-        return;
+        return None;
     }
-    // One parent per link: follow parent pointers from each link; a walk that revisits a link
-    // without reaching a root has found a cycle.
-    let parent_of = |link: &str| parents.get(link).map(|js| js[0].parent.as_str());
-    let mut reported: BTreeSet<&str> = BTreeSet::new();
-    for start in &d.links {
-        let mut seen: Vec<&str> = Vec::new();
-        let mut at = start.as_str();
-        while let Some(p) = parent_of(at) {
-            if let Some(pos) = seen.iter().position(|&s| s == at) {
-                let cycle = &seen[pos..];
-                if cycle.iter().all(|l| reported.insert(l)) {
-                    let mut links: Vec<String> = cycle.iter().map(|s| s.to_string()).collect();
-                    links.reverse();
-                    errors.push(ModelError::Cycle { links });
-                }
-                break;
-            }
-            seen.push(at);
-            at = p;
-        }
+    // One parent per link: follow parent pointers from each link; a walk that comes back to a
+    // link of its own has found a cycle (reported parent first).
+    let index: BTreeMap<&str, usize> = d.links.iter().enumerate().map(|(i, l)| (l.as_str(), i)).collect();
+    let parent_of: Vec<Option<usize>> = d
+        .links
+        .iter()
+        .map(|l| parents.get(l.as_str()).and_then(|js| index.get(js[0].parent.as_str()).copied()))
+        .collect();
+    let found = cycles(&parent_of);
+    for cycle in &found {
+        errors.push(ModelError::Cycle { links: cycle.iter().rev().map(|&i| d.links[i].clone()).collect() });
     }
+    if found.is_empty() { roots.first().copied() } else { None }
 }
 
 /// Rules: a mimic joint follows a joint that exists and moves, and mimic relations do not loop.
 fn check_mimics(d: &Description, errors: &mut Vec<ModelError>) {
-    let by_name: BTreeMap<&str, &JointDescription> = d.joints.iter().map(|j| (j.name.as_str(), j)).collect();
-    let mut in_loop: BTreeSet<&str> = BTreeSet::new();
-    for j in &d.joints {
+    let index: BTreeMap<&str, usize> = d.joints.iter().enumerate().map(|(i, j)| (j.name.as_str(), i)).collect();
+    let source: Vec<Option<usize>> =
+        d.joints.iter().map(|j| j.mimic.as_ref().and_then(|m| index.get(m.joint.as_str()).copied())).collect();
+    // Each loop is reported once, starting from its first joint in description order, at that
+    // joint's place among the other mimic faults.
+    let mut loop_at: BTreeMap<usize, Vec<usize>> = BTreeMap::new();
+    for mut cycle in cycles(&source) {
+        if let Some(first) = (0..cycle.len()).min_by_key(|&pos| cycle[pos]) {
+            cycle.rotate_left(first);
+        }
+        if let Some(&first) = cycle.first() {
+            loop_at.insert(first, cycle);
+        }
+    }
+    for (i, j) in d.joints.iter().enumerate() {
         let Some(m) = &j.mimic else { continue };
-        match by_name.get(m.joint.as_str()) {
+        match source[i].map(|s| &d.joints[s]) {
             None => errors.push(ModelError::MimicUnknown { element: j.element.clone(), source_joint: m.joint.clone() }),
             Some(source) if source.kind == JointTypeDescription::Fixed => {
                 errors.push(ModelError::MimicOfFixed { element: j.element.clone(), source_joint: m.joint.clone() })
             }
             Some(_) => {
-                let mut walk = vec![j.name.as_str()];
-                let mut at: &JointDescription = j;
-                while let Some(next) = at.mimic.as_ref().and_then(|m| by_name.get(m.joint.as_str())) {
-                    if let Some(pos) = walk.iter().position(|&n| n == next.name) {
-                        let joints = &walk[pos..];
-                        if pos == 0 && joints.iter().all(|n| in_loop.insert(n)) {
-                            errors
-                                .push(ModelError::MimicLoop { joints: joints.iter().map(|s| s.to_string()).collect() });
-                        }
-                        break;
-                    }
-                    walk.push(next.name.as_str());
-                    at = next;
+                if let Some(cycle) = loop_at.get(&i) {
+                    errors.push(ModelError::MimicLoop {
+                        joints: cycle.iter().map(|&k| d.joints[k].name.clone()).collect(),
+                    });
                 }
             }
         }
     }
 }
 
-fn norm(v: [f64; 3]) -> f64 {
-    (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt()
+/// Rule: the composed multiplier and offset of every mimic joint (`m * q + o` after following
+/// the chain of mimics to its independent source) are finite numbers. The fault is reported at
+/// the joint where the composition first overflows, not again at the joints that follow it.
+fn check_mimic_composition(d: &Description, tree: &KinematicTree, errors: &mut Vec<ModelError>) {
+    let element = description_elements(d);
+    for joint in tree.joints() {
+        let JointMotion::Mimic { source, multiplier, offset, .. } = joint.motion else { continue };
+        if multiplier.is_finite() && offset.is_finite() {
+            continue;
+        }
+        // Reported once per chain: at the first joint whose own mimic source still composed to
+        // finite numbers (or is the independent source itself).
+        let written = d.joints[element[joint.name.as_str()]].mimic.as_ref();
+        let parent_finite = written.and_then(|m| tree.joint_by_name(&m.joint)).is_none_or(|p| match p.motion {
+            JointMotion::Mimic { multiplier, offset, .. } => multiplier.is_finite() && offset.is_finite(),
+            _ => true,
+        });
+        if parent_finite {
+            errors.push(ModelError::MimicOverflow {
+                element: d.joints[element[joint.name.as_str()]].element.clone(),
+                source_joint: tree.joint(source).name.clone(),
+                offset: multiplier.is_finite(),
+            });
+        }
+    }
 }
 
-/// Builds the tree from a description that passed every rule.
-fn assemble(d: &Description) -> KinematicTree {
-    let root =
-        d.links.iter().find(|l| !d.joints.iter().any(|j| &j.child == *l)).map(String::as_str).unwrap_or_default();
+/// Rule: the robot's reach ([`KinematicTree::reach`]: every fixed offset and every prismatic
+/// stroke laid end to end, the scale agreement is measured against) is a finite number. The
+/// fault names the joint (in the tree's order, the order the reach is summed in) at which the
+/// running sum overflows.
+fn check_reach(d: &Description, tree: &KinematicTree, errors: &mut Vec<ModelError>) {
+    let element = description_elements(d);
+    let mut sum = 0.0;
+    for (i, joint) in tree.joints().iter().enumerate() {
+        sum += tree.joint_reach(JointId(i));
+        if !sum.is_finite() {
+            errors.push(ModelError::ReachOverflow { element: d.joints[element[joint.name.as_str()]].element.clone() });
+            return;
+        }
+    }
+}
+
+/// The index in the description of every joint, by name.
+fn description_elements(d: &Description) -> BTreeMap<&str, usize> {
+    d.joints.iter().enumerate().map(|(i, j)| (j.name.as_str(), i)).collect()
+}
+
+/// Builds the tree from a description that passed every rule, `root` being the root link's index.
+fn assemble(d: &Description, root: usize) -> KinematicTree {
+    // The joints below each link, in description order: one pass over the joints.
+    let mut below: BTreeMap<&str, Vec<&JointDescription>> = BTreeMap::new();
+    for j in &d.joints {
+        below.entry(j.parent.as_str()).or_default().push(j);
+    }
     // Depth-first pre-order from the root, children in description order; a joint takes its place
     // when its child link is visited, so joints follow the same pre-order as links.
     let mut links: Vec<Link> = Vec::new();
     let mut order: Vec<&JointDescription> = Vec::new();
-    let mut stack: Vec<(&str, Option<&JointDescription>)> = vec![(root, None)];
+    let mut stack: Vec<(&str, Option<&JointDescription>)> = vec![(d.links[root].as_str(), None)];
     while let Some((name, via)) = stack.pop() {
         links.push(Link { name: name.to_owned(), parent_joint: None, child_joints: Vec::new() });
         order.extend(via);
-        for j in d.joints.iter().filter(|j| j.parent == name).rev() {
+        for j in below.get(name).into_iter().flatten().rev() {
             stack.push((j.child.as_str(), Some(j)));
         }
     }
-    let link_index: BTreeMap<String, usize> = links.iter().enumerate().map(|(i, l)| (l.name.clone(), i)).collect();
-    let joint_index: BTreeMap<&str, usize> = order.iter().enumerate().map(|(i, j)| (j.name.as_str(), i)).collect();
+    let link_index: BTreeMap<&str, usize> =
+        order.iter().enumerate().map(|(i, j)| (j.child.as_str(), i + 1)).chain([(d.links[root].as_str(), 0)]).collect();
     for (i, j) in order.iter().enumerate() {
-        links[link_index[&j.child]].parent_joint = Some(JointId(i));
-        links[link_index[&j.parent]].child_joints.push(JointId(i));
+        links[link_index[j.child.as_str()]].parent_joint = Some(JointId(i));
+        links[link_index[j.parent.as_str()]].child_joints.push(JointId(i));
     }
+    let joint_index: BTreeMap<&str, usize> = order.iter().enumerate().map(|(i, j)| (j.name.as_str(), i)).collect();
     let mut dof_joints = Vec::new();
-    let mut dof_of: BTreeMap<&str, usize> = BTreeMap::new();
+    let mut dof_of: Vec<Option<usize>> = vec![None; order.len()];
     for (i, j) in order.iter().enumerate() {
         if j.kind != JointTypeDescription::Fixed && j.mimic.is_none() {
-            dof_of.insert(j.name.as_str(), dof_joints.len());
+            dof_of[i] = Some(dof_joints.len());
             dof_joints.push(JointId(i));
         }
     }
-    let by_name: BTreeMap<&str, &JointDescription> = d.joints.iter().map(|j| (j.name.as_str(), j)).collect();
+    let mimics = resolve_mimics(&order, &joint_index, &dof_of);
     let joints = order
         .iter()
-        .map(|j| {
-            let kind = match j.kind {
-                JointTypeDescription::Revolute => JointKind::Revolute,
-                JointTypeDescription::Continuous => JointKind::Continuous,
-                JointTypeDescription::Prismatic => JointKind::Prismatic,
-                _ => JointKind::Fixed,
+        .zip(mimics)
+        .enumerate()
+        .map(|(i, (j, mimic))| {
+            #[allow(clippy::expect_used, reason = "invariant: `check_joint_type` refused every other kind")]
+            let kind = joint_kind(j.kind).expect("only supported joint kinds are assembled");
+            let motion = match (kind, dof_of[i]) {
+                (JointKind::Fixed, _) => JointMotion::Fixed,
+                (_, Some(dof)) => JointMotion::Dof(dof),
+                #[allow(clippy::expect_used, reason = "invariant: a moving joint is a degree of freedom or a mimic")]
+                (_, None) => mimic.expect("a moving joint that is no degree of freedom is a resolved mimic"),
             };
-            let motion = if kind == JointKind::Fixed {
-                JointMotion::Fixed
-            } else if j.mimic.is_none() {
-                JointMotion::Dof(dof_of[j.name.as_str()])
-            } else {
-                resolve_mimic(j, &by_name, &dof_of, &joint_index)
-            };
-            let n = norm(j.axis);
-            let axis = if kind == JointKind::Fixed || n == 0.0 {
+            // A fixed joint keeps its axis as written (it is never used); a moving one passed
+            // `check_axis`, so its unit axis exists.
+            let axis = if kind == JointKind::Fixed {
                 j.axis
             } else {
-                [j.axis[0] / n, j.axis[1] / n, j.axis[2] / n]
+                #[allow(clippy::expect_used, reason = "invariant: `check_axis` refused zero axes of moving joints")]
+                unit_axis(j.axis).expect("a moving joint's axis is finite and not zero")
             };
             let limits = match (kind, j.limits) {
                 (JointKind::Continuous | JointKind::Fixed, _) | (_, None) => None,
@@ -282,8 +391,8 @@ fn assemble(d: &Description) -> KinematicTree {
             Joint {
                 name: j.name.clone(),
                 kind,
-                parent: LinkId(link_index[&j.parent]),
-                child: LinkId(link_index[&j.child]),
+                parent: LinkId(link_index[j.parent.as_str()]),
+                child: LinkId(link_index[j.child.as_str()]),
                 origin: j.origin.clone(),
                 after_motion: j.after_motion.clone(),
                 axis,
@@ -294,39 +403,62 @@ fn assemble(d: &Description) -> KinematicTree {
             }
         })
         .collect();
-    KinematicTree {
-        name: d.name.clone(),
-        links,
-        joints,
-        dof_joints,
-        exact_angles: crate::exactness::ExactAngles::Off,
-        recognised: Vec::new(),
+    KinematicTree::new(d.name.clone(), links, joints, dof_joints)
+}
+
+/// The model's kind of a supported joint type (`None` for the types validation refuses).
+fn joint_kind(kind: JointTypeDescription) -> Option<JointKind> {
+    match kind {
+        JointTypeDescription::Revolute => Some(JointKind::Revolute),
+        JointTypeDescription::Continuous => Some(JointKind::Continuous),
+        JointTypeDescription::Prismatic => Some(JointKind::Prismatic),
+        JointTypeDescription::Fixed => Some(JointKind::Fixed),
+        JointTypeDescription::Floating | JointTypeDescription::Planar | JointTypeDescription::Spherical => None,
     }
 }
 
-/// Follows a mimic chain to its independent source, composing `m * q + o` along the way.
-fn resolve_mimic(
-    j: &JointDescription,
-    by_name: &BTreeMap<&str, &JointDescription>,
-    dof_of: &BTreeMap<&str, usize>,
+/// Resolves every mimic joint (`order` in tree order) to its independent source, composing
+/// `m * q + o` along the chain: each joint's composition is computed once, from its source's.
+fn resolve_mimics(
+    order: &[&JointDescription],
     joint_index: &BTreeMap<&str, usize>,
-) -> JointMotion {
-    let (mut multiplier, mut offset) = (1.0, 0.0);
-    let mut at = j;
-    // Validation ruled out loops and unknown or fixed sources, so this ends at an independent joint.
-    while let Some(m) = &at.mimic {
-        // value(at) = m.multiplier * value(next) + m.offset, substituted into the running form.
-        offset += multiplier * m.offset;
-        multiplier *= m.multiplier;
-        match by_name.get(m.joint.as_str()) {
-            Some(next) => at = next,
-            None => break,
+    dof_of: &[Option<usize>],
+) -> Vec<Option<JointMotion>> {
+    let mut resolved: Vec<Option<JointMotion>> = vec![None; order.len()];
+    let mut pending: Vec<usize> = Vec::new();
+    for start in 0..order.len() {
+        // Walk towards the source until a joint already resolved (or independent), then resolve
+        // the walk backwards. Validation ruled out loops and unknown or fixed sources.
+        let mut at = start;
+        while resolved[at].is_none()
+            && let Some(m) = &order[at].mimic
+        {
+            pending.push(at);
+            #[allow(clippy::expect_used, reason = "invariant: `check_mimics` ruled out unknown sources")]
+            let next = *joint_index.get(m.joint.as_str()).expect("a mimic's source joint exists");
+            at = next;
+        }
+        while let Some(joint) = pending.pop() {
+            #[allow(clippy::expect_used, reason = "invariant: only mimic joints are pending")]
+            let m = order[joint].mimic.as_ref().expect("a pending joint mimics another");
+            let source = joint_index[m.joint.as_str()];
+            // value(joint) = m * value(source) + o, with value(source) = ms * q[dof] + os.
+            let motion = match (resolved[source], dof_of[source]) {
+                (Some(JointMotion::Mimic { source, dof, multiplier, offset }), _) => JointMotion::Mimic {
+                    source,
+                    dof,
+                    multiplier: m.multiplier * multiplier,
+                    offset: m.multiplier * offset + m.offset,
+                },
+                (_, Some(dof)) => {
+                    JointMotion::Mimic { source: JointId(source), dof, multiplier: m.multiplier, offset: m.offset }
+                }
+                // Unreachable: `check_mimics` ruled out fixed sources and loops, and the walk
+                // above resolves a source before the joints that follow it.
+                _ => continue,
+            };
+            resolved[joint] = Some(motion);
         }
     }
-    JointMotion::Mimic {
-        source: JointId(joint_index.get(at.name.as_str()).copied().unwrap_or_default()),
-        dof: dof_of.get(at.name.as_str()).copied().unwrap_or_default(),
-        multiplier,
-        offset,
-    }
+    resolved
 }

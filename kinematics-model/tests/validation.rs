@@ -285,3 +285,183 @@ fn dh_json_reads_like_toml() {
     );
     assert!((j2.limits.unwrap().upper - std::f64::consts::FRAC_PI_4).abs() < 1e-15);
 }
+
+/// A URDF joint with the given type, origin, axis, limits and extra elements.
+#[allow(clippy::too_many_arguments, reason = "one argument per URDF attribute the cases vary")]
+fn joint_with(
+    name: &str,
+    kind: &str,
+    parent: &str,
+    child: &str,
+    xyz: &str,
+    axis: &str,
+    limits: &str,
+    extra: &str,
+) -> String {
+    format!(
+        "<joint name=\"{name}\" type=\"{kind}\"><parent link=\"{parent}\"/><child link=\"{child}\"/>\
+         <origin xyz=\"{xyz}\"/><axis xyz=\"{axis}\"/><limit lower=\"{limits}\" effort=\"1\" velocity=\"1\"/>{extra}</joint>"
+    )
+    .replace("lower=\"\"", "")
+}
+
+#[test]
+fn huge_and_tiny_axes_are_normalised_without_overflow() {
+    // issue 13: the norm of `0 0 1e200` overflowed to infinity and the normalised axis was NaN;
+    // `1e-300 0 0` squared to zero and was refused as a zero axis.
+    for (axis, expected) in [
+        ("0 0 1e200", [0.0, 0.0, 1.0]),
+        ("0 -1e308 0", [0.0, -1.0, 0.0]),
+        ("1e-300 0 0", [1.0, 0.0, 0.0]),
+        ("0 0 -4.9e-324", [0.0, 0.0, -1.0]),
+        ("1e-200 1e-200 0", [std::f64::consts::FRAC_1_SQRT_2, std::f64::consts::FRAC_1_SQRT_2, 0.0]),
+        ("1e308 1e308 0", [std::f64::consts::FRAC_1_SQRT_2, std::f64::consts::FRAC_1_SQRT_2, 0.0]),
+    ] {
+        let text = urdf(&["a", "b"], &joint("spin", "continuous", "a", "b", "").replace("0 0 1", axis));
+        let tree = parse_source("ok.urdf", &text).unwrap_or_else(|e| panic!("{axis}: {e}"));
+        let got = tree.joint_by_name("spin").unwrap().axis;
+        for i in 0..3 {
+            assert!((got[i] - expected[i]).abs() <= 2e-16, "{axis}: {got:?}");
+        }
+        assert!((got.iter().map(|x| x * x).sum::<f64>() - 1.0).abs() < 1e-15, "{axis}: {got:?}");
+    }
+    // Zero stays zero, for each kind of moving joint.
+    for kind in ["revolute", "continuous", "prismatic"] {
+        let text = urdf(&["a", "b"], &joint("spin", kind, "a", "b", "").replace("0 0 1", "0 -0 0"));
+        check(&text, &[&["joint `spin`", "axis is zero"]]);
+    }
+}
+
+/// A chain of `multipliers.len() + 1` revolute joints, each after the first mimicking the one
+/// before it with the given multiplier and offset.
+fn mimic_chain(kind: &str, limits: &str, mimics: &[(&str, &str)]) -> String {
+    let links: Vec<String> = (0..=mimics.len() + 1).map(|i| format!("l{i}")).collect();
+    let links: Vec<&str> = links.iter().map(String::as_str).collect();
+    let mut joints = joint_with("j0", kind, "l0", "l1", "0 0 0", "0 0 1", limits, "");
+    for (i, (multiplier, offset)) in mimics.iter().enumerate() {
+        joints += &joint_with(
+            &format!("j{}", i + 1),
+            kind,
+            &format!("l{}", i + 1),
+            &format!("l{}", i + 2),
+            "0 0 0",
+            "0 0 1",
+            limits,
+            &format!("<mimic joint=\"j{i}\" multiplier=\"{multiplier}\" offset=\"{offset}\"/>"),
+        );
+    }
+    urdf(&links, &joints)
+}
+
+#[test]
+fn composed_mimic_multipliers_and_offsets_stay_finite() {
+    // issue 13: multipliers of 1e200 along a chain composed to 1e400.
+    let text = mimic_chain("revolute", "-1\" upper=\"1", &[("1e200", "0"), ("1e200", "0"), ("1e200", "0")]);
+    let errors = check(&text, &[&["joint `j2`", "joint `j0`", "mimic multiplier", "not a finite number"]]);
+    assert!(matches!(&errors[0], ModelError::MimicOverflow { offset: false, .. }));
+    // Offsets compose too: o2 + m2 * o1 = 1e308 + 10 * 1e308.
+    let text = mimic_chain("continuous", "", &[("1", "1e308"), ("10", "1e308")]);
+    check(&text, &[&["joint `j2`", "mimic offset", "not a finite number"]]);
+    // Large but finite compositions are fine: (-1e150)^2 = 1e300.
+    let text = mimic_chain("revolute", "-1\" upper=\"1", &[("-1e150", "0.5"), ("-1e150", "0")]);
+    let tree = parse_source("ok.urdf", &text).unwrap();
+    let j2 = tree.joint_by_name("j2").unwrap();
+    assert!(matches!(j2.motion, kinematics_model::JointMotion::Mimic { multiplier, offset, .. }
+        if (multiplier / 1e300 - 1.0).abs() < 1e-15 && offset == -0.5e150));
+    // Two chains overflowing from one source: each reported once, where it overflows.
+    let text = urdf(
+        &["a", "b", "c", "d", "e", "f"],
+        &[
+            joint_with("src", "continuous", "a", "b", "0 0 0", "0 0 1", "", ""),
+            joint_with(
+                "m1",
+                "continuous",
+                "b",
+                "c",
+                "0 0 0",
+                "0 0 1",
+                "",
+                "<mimic joint=\"src\" multiplier=\"1e300\"/>",
+            ),
+            joint_with(
+                "m2",
+                "continuous",
+                "c",
+                "d",
+                "0 0 0",
+                "0 0 1",
+                "",
+                "<mimic joint=\"m1\" multiplier=\"-1e300\"/>",
+            ),
+            joint_with("m3", "continuous", "d", "e", "0 0 0", "0 0 1", "", "<mimic joint=\"m2\" multiplier=\"1\"/>"),
+            joint_with("n1", "continuous", "b", "f", "0 0 0", "0 0 1", "", "<mimic joint=\"m1\" multiplier=\"1e10\"/>"),
+        ]
+        .concat(),
+    );
+    check(&text, &[&["joint `m2`", "`src`", "multiplier"], &["joint `n1`", "`src`", "multiplier"]]);
+}
+
+#[test]
+fn the_reach_stays_finite() {
+    // issue 13: two fixed joints at x = 1e308 put a link at 2e308.
+    let fixed = |name: &str, parent: &str, child: &str, xyz: &str| {
+        joint_with(name, "fixed", parent, child, xyz, "0 0 1", "", "")
+    };
+    let text =
+        urdf(&["a", "b", "c"], &[fixed("f1", "a", "b", "1e308 0 0"), fixed("f2", "b", "c", "1e308 0 0")].concat());
+    let errors = check(&text, &[&["joint `f2`", "reach", "not a finite number"]]);
+    assert!(matches!(&errors[0], ModelError::ReachOverflow { .. }));
+    // One offset whose length overflows although each coordinate is finite.
+    let text = urdf(&["a", "b"], &fixed("f", "a", "b", "1.5e308 -1.5e308 0"));
+    check(&text, &[&["joint `f`", "reach"]]);
+    // A prismatic stroke after a long offset.
+    let text = urdf(
+        &["a", "b", "c"],
+        &[
+            fixed("f", "a", "b", "0 0 1e308"),
+            joint_with("slide", "prismatic", "b", "c", "0 0 0", "1 0 0", "0\" upper=\"1e308", ""),
+        ]
+        .concat(),
+    );
+    check(&text, &[&["joint `slide`", "reach"]]);
+    // A prismatic mimic slides its multiplier times its source's stroke: 1e300 * (1e10 + 1).
+    let text = urdf(
+        &["a", "b", "c"],
+        &[
+            joint_with("slide", "prismatic", "a", "b", "0 0 0", "1 0 0", "0\" upper=\"1e10", ""),
+            joint_with(
+                "follow",
+                "prismatic",
+                "b",
+                "c",
+                "0 0 0",
+                "1 0 0",
+                "0\" upper=\"1",
+                "<mimic joint=\"slide\" multiplier=\"1e300\"/>",
+            ),
+        ]
+        .concat(),
+    );
+    check(&text, &[&["joint `follow`", "reach"]]);
+    // Large offsets that add up to a finite reach are fine (the lengths scale before squaring).
+    let text =
+        urdf(&["a", "b", "c"], &[fixed("f1", "a", "b", "1e200 1e200 0"), fixed("f2", "b", "c", "-1e307 0 0")].concat());
+    let tree = parse_source("ok.urdf", &text).unwrap();
+    assert!(tree.reach().is_finite() && tree.reach() >= 1e307);
+}
+
+#[test]
+fn a_prismatic_joint_with_an_unlimited_side_has_the_reach_of_an_unlimited_one() {
+    // The reach counts each prismatic joint's stroke as far as agreement checks slide it: up to
+    // 1 beyond finite limits, up to pi + 1 either way when a side is unlimited (it used to be
+    // infinite for a half-unlimited joint, and 1 for an unlimited one).
+    let slide = |limits: &str| {
+        let text = urdf(&["a", "b"], &joint_with("slide", "prismatic", "a", "b", "0 0 0", "1 0 0", limits, ""));
+        parse_source("ok.urdf", &text).unwrap().reach()
+    };
+    let unlimited = std::f64::consts::PI + 1.0;
+    assert_eq!(slide("-inf\" upper=\"0.5"), unlimited);
+    assert_eq!(slide("0\" upper=\"inf"), unlimited);
+    assert_eq!(slide("-inf\" upper=\"inf"), unlimited);
+    assert_eq!(slide("-0.5\" upper=\"2"), 3.0);
+}

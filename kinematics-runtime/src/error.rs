@@ -18,6 +18,18 @@ pub enum RuntimeError {
         /// The joint names in DoF order, for the message.
         joints: String,
     },
+    /// A joint value in `q` that is NaN or infinite.
+    #[error("robot `{robot}`: the value of joint `{joint}` (q[{index}]) is {value}, not a finite number")]
+    NonFiniteValue {
+        /// Robot name.
+        robot: String,
+        /// The joint the value drives.
+        joint: String,
+        /// Its index in `q`.
+        index: usize,
+        /// The value.
+        value: f64,
+    },
     /// An output slice of the wrong length.
     #[error("robot `{robot}`: the output holds {got} poses, but {expected} are computed")]
     WrongOutputLength {

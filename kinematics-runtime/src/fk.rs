@@ -1,6 +1,6 @@
 //! Forward kinematics over the tree: `T_world^child = T_world^parent * origin * M(q) * after`.
 
-use kinematics_model::{Elementary, FixedTransform, Joint, JointKind, KinematicTree, LinkId};
+use kinematics_model::{Elementary, FixedTransform, Joint, JointKind, JointMotion, KinematicTree, LinkId};
 use nalgebra::{Isometry3, Translation3, Unit, UnitQuaternion, Vector3};
 
 use crate::error::RuntimeError;
@@ -64,17 +64,38 @@ impl ReferenceFk {
         &self.tree
     }
 
-    /// Fails unless `q` has one value per degree of freedom.
+    /// Fails unless `q` has one value per degree of freedom, each a finite number (the error
+    /// names the first joint whose value is NaN or infinite).
+    ///
+    /// ```
+    /// use kinematics_runtime::{ReferenceFk, RuntimeError};
+    /// let dh = "convention = \"standard\"\n[[joints]]\nname = \"j1\"\na = 2.0\n";
+    /// let fk = ReferenceFk::new(kinematics_model::parse_source("arm.toml", dh)?);
+    /// assert!(fk.check_q(&[0.5]).is_ok());
+    /// let err = fk.link_poses(&[f64::NAN]).unwrap_err();
+    /// assert_eq!(err.to_string(), "robot `robot`: the value of joint `j1` (q[0]) is NaN, not a finite number");
+    /// assert!(matches!(fk.jacobian(&[f64::INFINITY], "base", "link1"), Err(RuntimeError::NonFiniteValue { .. })));
+    /// assert!(matches!(fk.relative_pose(&[-f64::INFINITY], "link1", "base"), Err(RuntimeError::NonFiniteValue { .. })));
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
     pub fn check_q(&self, q: &[f64]) -> Result<(), RuntimeError> {
-        if q.len() == self.tree.dof() {
-            return Ok(());
+        if q.len() != self.tree.dof() {
+            return Err(RuntimeError::WrongDof {
+                robot: self.tree.name().to_owned(),
+                expected: self.tree.dof(),
+                got: q.len(),
+                joints: self.tree.dof_names().join(", "),
+            });
         }
-        Err(RuntimeError::WrongDof {
-            robot: self.tree.name().to_owned(),
-            expected: self.tree.dof(),
-            got: q.len(),
-            joints: self.tree.dof_names().join(", "),
-        })
+        match q.iter().position(|v| !v.is_finite()) {
+            None => Ok(()),
+            Some(index) => Err(RuntimeError::NonFiniteValue {
+                robot: self.tree.name().to_owned(),
+                joint: self.tree.joint(self.tree.dof_joints()[index]).name.clone(),
+                index,
+                value: q[index],
+            }),
+        }
     }
 
     /// The id of a link, or an error naming it.
@@ -112,8 +133,15 @@ impl ReferenceFk {
         self.check_q(q)?;
         let mut poses = vec![Isometry3::identity(); self.tree.links().len()];
         for (i, joint) in self.tree.joints().iter().enumerate() {
-            let value = joint.motion.value(q).unwrap_or(0.0);
-            poses[joint.child.0] = self.joint_frame(&poses, i) * self.motion(i, joint, value) * self.afters[i];
+            // `check_q` gave `q` one value per degree of freedom, so every moving joint has one.
+            let motion = match joint.motion {
+                JointMotion::Fixed => Isometry3::identity(),
+                JointMotion::Dof(dof) => self.motion(i, joint, q[dof]),
+                JointMotion::Mimic { dof, multiplier, offset, .. } => {
+                    self.motion(i, joint, multiplier * q[dof] + offset)
+                }
+            };
+            poses[joint.child.0] = self.joint_frame(&poses, i) * motion * self.afters[i];
         }
         Ok(poses)
     }

@@ -34,20 +34,33 @@ pub struct Configurations {
     count: usize,
 }
 
+/// The range of a joint without limits (a continuous joint; documented above).
+const UNLIMITED: (f64, f64) = (-PI, PI);
+
+/// The range a joint's values are drawn from: its limits when both are finite, otherwise (a side
+/// unlimited) the range of a joint without limits, as the model's reach assumes.
+fn range((lower, upper): (f64, f64)) -> (f64, f64) {
+    if lower.is_finite() && upper.is_finite() { (lower, upper) } else { UNLIMITED }
+}
+
+/// The value a fraction `u` in [0, 1) of the way from `lo - margin` to `hi + margin`, without
+/// overflowing when the width does (limits near `f64::MAX`).
+fn between(lo: f64, hi: f64, margin: f64, u: f64) -> f64 {
+    let width = hi - lo + 2.0 * margin;
+    if width.is_finite() { lo - margin + u * width } else { (lo - margin) * (1.0 - u) + (hi + margin) * u }
+}
+
 impl Configurations {
     /// The configurations of a robot's degrees of freedom, in the tree's order.
     pub fn new(tree: &KinematicTree) -> Self {
-        Self::from_ranges(tree.dof_limits().iter().map(|l| l.map_or((-PI, PI), |l| (l.lower, l.upper))).collect())
+        Self::from_ranges(
+            tree.dof_limits().iter().map(|l| range(l.map(|l| (l.lower, l.upper)).unwrap_or(UNLIMITED))).collect(),
+        )
     }
 
     /// The configurations of a compiled robot, from its `JOINT_LIMITS`.
     pub fn within(limits: &[JointLimits]) -> Self {
-        Self::from_ranges(
-            limits
-                .iter()
-                .map(|l| if l.lower.is_finite() && l.upper.is_finite() { (l.lower, l.upper) } else { (-PI, PI) })
-                .collect(),
-        )
+        Self::from_ranges(limits.iter().map(|l| range((l.lower, l.upper))).collect())
     }
 
     fn from_ranges(ranges: Vec<(f64, f64)>) -> Self {
@@ -89,8 +102,8 @@ impl Iterator for Configurations {
             let (lo, hi) = self.ranges[i];
             let value = match self.next_u64() % 4 {
                 0 => SPECIAL_ANGLES[(self.next_u64() % 5) as usize],
-                1 => lo - 1.0 + self.unit() * (hi - lo + 2.0),
-                _ => lo + self.unit() * (hi - lo),
+                1 => between(lo, hi, 1.0, self.unit()),
+                _ => between(lo, hi, 0.0, self.unit()),
             };
             q.push(value);
         }
@@ -116,6 +129,28 @@ mod tests {
         assert!(first[5..].iter().any(|q| q[0] > 1.0) && first[5..].iter().any(|q| q[0].abs() < 1.0 && q[0] != 0.0));
         // A continuous joint ranges over [-pi, pi] (+-1 beyond).
         assert!(first.iter().all(|q| q[1].abs() <= PI + 1.0));
+    }
+
+    #[test]
+    fn half_unlimited_and_huge_limits_give_finite_values() {
+        // Prismatic joints: one side unlimited (the range of an unlimited joint), and limits whose
+        // width overflows.
+        let tree = kinematics_model::parse_source(
+            "slides.urdf",
+            "<robot name=\"slides\"><link name=\"a\"/><link name=\"b\"/><link name=\"c\"/>\
+             <joint name=\"half\" type=\"prismatic\"><parent link=\"a\"/><child link=\"b\"/><axis xyz=\"1 0 0\"/>\
+             <limit lower=\"-inf\" upper=\"0.5\" effort=\"1\" velocity=\"1\"/></joint>\
+             <joint name=\"huge\" type=\"revolute\"><parent link=\"b\"/><child link=\"c\"/><axis xyz=\"1 0 0\"/>\
+             <limit lower=\"-1e308\" upper=\"1e308\" effort=\"1\" velocity=\"1\"/></joint></robot>",
+        )
+        .unwrap();
+        let qs: Vec<Vec<f64>> = Configurations::new(&tree).take(2000).collect();
+        assert!(qs.iter().flatten().all(|v| v.is_finite()));
+        assert!(qs.iter().all(|q| q[0].abs() <= PI + 1.0));
+        assert!(qs.iter().any(|q| q[1].abs() > 1e300));
+        let limits =
+            [JointLimits { lower: f64::NEG_INFINITY, upper: 0.5 }, JointLimits { lower: -1e308, upper: 1e308 }];
+        assert_eq!(Configurations::within(&limits).take(2000).collect::<Vec<_>>(), qs);
     }
 
     #[test]

@@ -12,4 +12,4 @@ mod text;
 pub use names::Names;
 pub use rust::{EmitOptions, emit_function, emit_module_source};
 pub use schedule::{INLINE_DEPTH_LIMIT, MAX_EXPRESSION_DEPTH, Schedule};
-pub use text::{latex, text};
+pub use text::{INLINE_BUDGET, Listing, latex, latex_listing, text, text_listing};
