@@ -138,6 +138,10 @@ fn write_random_robots(out: &Path) -> Result<(), Box<dyn std::error::Error>> {
     use kinematics_compiler::robot::{RobotSpec, Scalars, emit_robot};
     use kinematics_model::ExactAngles;
     let dir = out.join("random");
+    // Start empty, so no file of an earlier set stays behind.
+    if dir.exists() {
+        std::fs::remove_dir_all(&dir)?;
+    }
     std::fs::create_dir_all(&dir)?;
     let mut code = String::new();
     let mut registry = String::new();
