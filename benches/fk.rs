@@ -291,8 +291,8 @@ fn verify(
     tolerance: f64,
 ) {
     let d = pose.deviation(expected, reach);
-    // `!(d <= tolerance)`: NaN fails too.
-    if !(d <= tolerance) {
+    // NaN fails too.
+    if d.is_nan() || d > tolerance {
         panic!("{what}: `{link}` off by {d:e} (tolerance {tolerance:e}) at configuration {i}");
     }
 }

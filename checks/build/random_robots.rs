@@ -490,7 +490,7 @@ fn len_number(rng: &mut SplitMix64) -> String {
 
 /// The fixed-seed set: about sixty robots, every shape several times.
 pub fn generate() -> Vec<RandomRobot> {
-    let mut rng = SplitMix64::new(0x6b69_6e65_5f31_33);
+    let mut rng = SplitMix64::new(0x006b_696e_655f_3133);
     let mut robots = Vec::new();
     let mut push = |rng: &mut SplitMix64,
                     shape: &'static str,

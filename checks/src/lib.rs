@@ -73,16 +73,21 @@ pub struct DerivedRobot {
     pub reference: fn() -> Result<kinematics::ReferenceFk, kinematics::LoadError>,
 }
 
+/// A generated pose function, through a slice.
+pub type PosesFn<T> = fn(&[T]) -> Vec<Pose<T>>;
+/// A generated position function, through a slice.
+pub type PositionsFn<T> = fn(&[T]) -> Vec<[T; 3]>;
+
 /// The typed functions one scalar type got, through slices (`None`: not generated).
 pub struct Typed<T: 'static> {
     /// `link_poses` (or `link_poses_f32`).
-    pub link_poses: fn(&[T]) -> Vec<Pose<T>>,
+    pub link_poses: PosesFn<T>,
     /// `link_positions`.
-    pub link_positions: Option<fn(&[T]) -> Vec<[T; 3]>>,
+    pub link_positions: Option<PositionsFn<T>>,
     /// `tip_pose` (as a one-element vector) or `tip_poses`.
-    pub tip_poses: Option<fn(&[T]) -> Vec<Pose<T>>>,
+    pub tip_poses: Option<PosesFn<T>>,
     /// `tip_position` or `tip_positions`.
-    pub tip_positions: Option<fn(&[T]) -> Vec<[T; 3]>>,
+    pub tip_positions: Option<PositionsFn<T>>,
 }
 
 /// The `Kinematics` trait's constants of one type, read through the trait.

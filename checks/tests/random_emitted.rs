@@ -73,8 +73,8 @@ struct Faults {
 
 impl Faults {
     fn check(&mut self, what: &str, link: &str, d: f64, tolerance: f64, q: &[f64]) {
-        // `!(d <= tolerance)`: a NaN deviation is a failure too.
-        if !(d <= tolerance) {
+        // A NaN deviation is a failure too.
+        if d.is_nan() || d > tolerance {
             if self.list.len() < 12 {
                 self.list.push(format!(
                     "{} {what} `{link}`: off by {d:e} (tolerance {tolerance:e}) at q = {q:?}",
