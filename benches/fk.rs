@@ -8,8 +8,10 @@
 //!
 //! `cargo bench --bench fk` measures (about 5 minutes on 2 cores, build excluded); `cargo run -p bench-report`
 //! turns criterion's results into `benches/SUMMARY.md` and `benches/ratios.svg`. Under
-//! `cargo test` (no `--bench` argument) every benchmark body runs once and its result is checked
-//! against the runtime reference instead, so CI knows the suite builds and computes the right thing.
+//! `cargo test` (no `--bench` argument) every benchmark body runs once and everything the bodies
+//! compute is checked against the runtime reference instead, on every configuration they are
+//! timed on (`Pose::deviation` within `AGREEMENT_TOLERANCE`, f32 within `AGREEMENT_TOLERANCE_F32`),
+//! so CI knows the suite builds and times code that computes the right thing.
 
 #![allow(clippy::expect_used, clippy::panic)] // a benchmark fails loudly on a robot that does not load
 
@@ -17,7 +19,7 @@ use std::hint::black_box;
 use std::time::{Duration, Instant};
 
 use criterion::{BenchmarkGroup, Criterion, Throughput, measurement::WallTime};
-use kinematics::{Kinematics, Pose, ReferenceFk};
+use kinematics::{AGREEMENT_TOLERANCE, AGREEMENT_TOLERANCE_F32, Kinematics, Pose, ReferenceFk};
 
 /// Inputs cycled through in the timed loops (computed before timing).
 const INPUTS: usize = 256;
@@ -244,11 +246,19 @@ fn galaw_contender<const N: usize, const M: usize>(
     let mut poses = [nalgebra::Isometry3::identity(); M];
     let mut poses_f32 = [nalgebra::Isometry3::identity(); M];
     if let Mode::Check = mode {
-        let at = links.iter().position(|l| *l == tip).expect("galaw computes the tip");
-        fk_f64(&commands[0], &mut poses);
-        let expected = reference.link_pose(&qs[0], tip).expect("tip exists");
-        let d = poses[at].inverse() * expected;
-        assert!(d.translation.vector.norm() < 1e-9 && d.rotation.angle() < 1e-9, "galaw's {tip} disagrees");
+        // Every link galaw computes, f64 and f32, on every configuration timed.
+        assert!(links.contains(&tip), "galaw computes the tip");
+        let reach = tree.reach();
+        for (i, q) in qs.iter().enumerate() {
+            let expected = reference_poses(reference, q);
+            fk_f64(&commands[i], &mut poses);
+            fk_f32(&commands_f32[i], &mut poses_f32);
+            for (k, link) in links.iter().enumerate() {
+                verify("galaw_all_f64", link, i, &pose_of(&poses[k]), &expected(link), reach, AGREEMENT_TOLERANCE);
+                let pose = pose_of(&widen_iso(&poses_f32[k]));
+                verify("galaw_all_f32", link, i, &pose, &expected(link), reach, AGREEMENT_TOLERANCE_F32);
+            }
+        }
     }
     mode.run("galaw_all_f64", |i| {
         fk_f64(&commands[i], &mut poses);
@@ -268,9 +278,69 @@ fn galaw_contender<const N: usize, const M: usize>(
     );
 }
 
-fn close(a: &Pose<f64>, b: &nalgebra::Isometry3<f64>) -> bool {
-    let d = a.to_isometry().inverse() * b;
-    d.translation.vector.norm() < 1e-9 && d.rotation.angle() < 1e-9
+/// Check mode: `pose` (computed by the body `what` at configuration `i`) against the reference's
+/// pose of `link`, by `Pose::deviation` within `tolerance` (`AGREEMENT_TOLERANCE`, or
+/// `AGREEMENT_TOLERANCE_F32` for single precision), the measure every agreement check uses.
+fn verify(
+    what: &str,
+    link: &str,
+    i: usize,
+    pose: &Pose<f64>,
+    expected: &nalgebra::Isometry3<f64>,
+    reach: f64,
+    tolerance: f64,
+) {
+    let d = pose.deviation(expected, reach);
+    // NaN fails too.
+    if d.is_nan() || d > tolerance {
+        panic!("{what}: `{link}` off by {d:e} (tolerance {tolerance:e}) at configuration {i}");
+    }
+}
+
+/// A position as a pose with the expected rotation, so the deviation measures the position alone.
+fn position_pose(position: [f64; 3], expected: &nalgebra::Isometry3<f64>) -> Pose<f64> {
+    Pose { translation: position, ..pose_of(expected) }
+}
+
+fn pose_of(iso: &nalgebra::Isometry3<f64>) -> Pose<f64> {
+    let r = iso.rotation.to_rotation_matrix();
+    let t = iso.translation.vector;
+    Pose { rotation: std::array::from_fn(|i| std::array::from_fn(|j| r[(i, j)])), translation: [t[0], t[1], t[2]] }
+}
+
+/// A pose computed by `k` (which links its own nalgebra).
+fn pose_of_k(iso: &k::nalgebra::Isometry3<f64>) -> Pose<f64> {
+    let m = iso.to_homogeneous();
+    Pose {
+        rotation: std::array::from_fn(|i| std::array::from_fn(|j| m[(i, j)])),
+        translation: [m[(0, 3)], m[(1, 3)], m[(2, 3)]],
+    }
+}
+
+fn widen(p: &Pose<f32>) -> Pose<f64> {
+    Pose { rotation: p.rotation.map(|row| row.map(f64::from)), translation: p.translation.map(f64::from) }
+}
+
+fn widen_iso(p: &nalgebra::Isometry3<f32>) -> nalgebra::Isometry3<f64> {
+    p.cast::<f64>()
+}
+
+/// The reference's pose of every link at `q`, by name.
+fn reference_poses(reference: &ReferenceFk, q: &[f64]) -> impl Fn(&str) -> nalgebra::Isometry3<f64> {
+    let poses = reference.link_poses(q).expect("q fits the robot");
+    let ids: std::collections::HashMap<String, usize> =
+        reference.tree().links().iter().enumerate().map(|(i, l)| (l.name.clone(), i)).collect();
+    move |link: &str| poses[*ids.get(link).unwrap_or_else(|| panic!("no link `{link}` in the reference"))]
+}
+
+/// Each of `joints` (names, in another implementation's order) gets the value our model gives it
+/// at each configuration (mimic joints included), so that implementation computes the same poses.
+fn joint_values(tree: &kinematics::KinematicTree, joints: &[String], qs: &[Vec<f64>]) -> Vec<Vec<f64>> {
+    let motions: Vec<_> = joints
+        .iter()
+        .map(|name| tree.joints().iter().find(|j| j.name == *name).expect("the joint is ours").motion)
+        .collect();
+    qs.iter().map(|q| motions.iter().map(|m| m.value(q).expect("a moving joint")).collect()).collect()
 }
 
 macro_rules! robot {
@@ -282,9 +352,26 @@ macro_rules! robot {
         let q32: Vec<[f32; $n]> = arrays_f32(&qs);
         let reference = ReferenceFk::new(kinematics::load(path).expect("robot loads"));
         if let Mode::Check = mode {
-            // The contenders compute the same pose.
-            let expected = reference.link_pose(&qs[0], $tip).expect("tip exists");
-            assert!(close(&<$ty>::tip_pose(&q64[0]), &expected), "{} generated", $file);
+            // Every body timed below that computes poses, on every configuration it is timed on:
+            // the f32 bodies at their own (rounded) configuration. The runtime bodies are the
+            // reference itself, and the floors compute no pose.
+            let reach = reference.tree().reach();
+            for (i, q) in qs.iter().enumerate() {
+                let expected = reference_poses(&reference, q);
+                let q32_64: Vec<f64> = q32[i].iter().map(|&x| f64::from(x)).collect();
+                let expected_f32 = reference_poses(&reference, &q32_64);
+                let (tip, f64_tol, f32_tol) = ($tip, AGREEMENT_TOLERANCE, AGREEMENT_TOLERANCE_F32);
+                verify("generated_pose_f64", tip, i, &<$ty>::tip_pose(&q64[i]), &expected(tip), reach, f64_tol);
+                verify("generated_pose_f32", tip, i, &widen(&<$ty>::tip_pose_f32(&q32[i])), &expected_f32(tip), reach, f32_tol);
+                let position = position_pose(<$ty>::tip_position(&q64[i]), &expected(tip));
+                verify("generated_position_f64", tip, i, &position, &expected(tip), reach, f64_tol);
+                for (pose, link) in <$ty>::link_poses(&q64[i]).iter().zip(<$ty>::LINK_NAMES) {
+                    verify("generated_all_f64", link, i, pose, &expected(link), reach, f64_tol);
+                }
+                for (pose, link) in <$ty>::link_poses_f32(&q32[i]).iter().zip(<$ty>::LINK_NAMES) {
+                    verify("generated_all_f32", link, i, &widen(pose), &expected_f32(link), reach, f32_tol);
+                }
+            }
         }
         // Each contender runs next to the one it is compared with (pose and floor, all links and
         // galaw and the runtime): the machine is shared and its speed drifts over minutes.
@@ -336,6 +423,13 @@ macro_rules! robot {
             }
             out[BATCH - 1]
         });
+        if let Mode::Check = mode {
+            let reach = reference.tree().reach();
+            for (i, (pose, q)) in out.iter().zip(&batch).enumerate() {
+                let expected = reference.link_pose(q, $tip).expect("tip exists");
+                verify("generated_batch1024_f64", $tip, i, pose, &expected, reach, AGREEMENT_TOLERANCE);
+            }
+        }
         if let Mode::Measure(group, _) = mode {
             group.throughput(Throughput::Elements(1));
         }
@@ -355,20 +449,54 @@ fn k_crate(
     floor_all: impl FnMut(usize) -> f64,
 ) {
     let Ok(chain) = k::Chain::<f64>::from_urdf_file(path) else { return };
-    // k orders its degrees of freedom its own way; any values within range time the same work.
-    let dof = chain.dof();
-    let kq: Vec<Vec<f64>> = qs.iter().map(|q| (0..dof).map(|i| q[i % q.len()]).collect()).collect();
+    // k orders its degrees of freedom its own way (and sets mimic joints like any other): each of
+    // its joints gets the value our model gives it.
+    let reference = ReferenceFk::new(kinematics::load(path).expect("robot loads"));
+    let tree = reference.tree();
+    let names: Vec<String> = chain.iter_joints().map(|j| j.name.clone()).collect();
+    let kq = joint_values(tree, &names, qs);
     let mut k_all = |i: usize| {
         chain.set_joint_positions_unchecked(&kq[i]);
         chain.update_transforms().len()
     };
+    if let Mode::Check = mode {
+        // Each k node's transform is the pose of its joint's child link; k's own root node
+        // (`k::urdf::ROOT_JOINT_NAME`) is the root link.
+        let children: Vec<String> = chain
+            .iter()
+            .map(|node| {
+                let name = node.joint().name.clone();
+                match tree.joints().iter().find(|j| j.name == name) {
+                    Some(joint) => tree.link(joint.child).name.clone(),
+                    None if name == k::urdf::ROOT_JOINT_NAME => tree.link(tree.root()).name.clone(),
+                    None => panic!("k's joint `{name}` is not ours"),
+                }
+            })
+            .collect();
+        let reach = tree.reach();
+        for (i, q) in qs.iter().enumerate() {
+            chain.set_joint_positions_unchecked(&kq[i]);
+            let expected = reference_poses(&reference, q);
+            for (pose, link) in chain.update_transforms().iter().zip(&children) {
+                verify("k_all_f64", link, i, &pose_of_k(pose), &expected(link), reach, AGREEMENT_TOLERANCE);
+            }
+        }
+    }
     mode.run("k_all_f64", &mut k_all);
     mode.pair("k_all_f64/generated_all_f64", &mut k_all, generated_all);
     mode.pair("k_all_f64/floor_all_f64", &mut k_all, floor_all);
     let Some(end) = chain.find_link(tip) else { return };
     let serial = k::SerialChain::from_end(end);
-    let sdof = serial.dof();
-    let sq: Vec<Vec<f64>> = qs.iter().map(|q| (0..sdof).map(|i| q[i % q.len()]).collect()).collect();
+    let names: Vec<String> = serial.iter_joints().map(|j| j.name.clone()).collect();
+    let sq = joint_values(tree, &names, qs);
+    if let Mode::Check = mode {
+        let reach = tree.reach();
+        for (i, q) in qs.iter().enumerate() {
+            serial.set_joint_positions_unchecked(&sq[i]);
+            let expected = reference.link_pose(q, tip).expect("tip exists");
+            verify("k_pose_f64", tip, i, &pose_of_k(&serial.end_transform()), &expected, reach, AGREEMENT_TOLERANCE);
+        }
+    }
     mode.run("k_pose_f64", |i| {
         serial.set_joint_positions_unchecked(&sq[i]);
         serial.end_transform()

@@ -1,5 +1,6 @@
 //! Every robot in `robots/`, compiled to Rust at build time by `kinematics-compiler`, and a registry
-//! of the generated functions for the agreement tests (`tests/`) to iterate over.
+//! of the generated functions for the agreement tests (`tests/`) to iterate over; and the same for
+//! a fixed-seed set of random robots ([`RANDOM`]), compiled through `emit_robot` as the derive does.
 //!
 //! Being a workspace member, this crate also puts the generated code through the workspace's
 //! `cargo clippy -D warnings`: the emitted code must be clippy-clean in a user's crate.
@@ -70,6 +71,100 @@ pub struct DerivedRobot {
     pub tip_poses_f32: fn(&[f32]) -> Vec<Pose<f32>>,
     /// `Kinematics::reference`.
     pub reference: fn() -> Result<kinematics::ReferenceFk, kinematics::LoadError>,
+}
+
+/// A generated pose function, through a slice.
+pub type PosesFn<T> = fn(&[T]) -> Vec<Pose<T>>;
+/// A generated position function, through a slice.
+pub type PositionsFn<T> = fn(&[T]) -> Vec<[T; 3]>;
+
+/// The typed functions one scalar type got, through slices (`None`: not generated).
+pub struct Typed<T: 'static> {
+    /// `link_poses` (or `link_poses_f32`).
+    pub link_poses: PosesFn<T>,
+    /// `link_positions`.
+    pub link_positions: Option<PositionsFn<T>>,
+    /// `tip_pose` (as a one-element vector) or `tip_poses`.
+    pub tip_poses: Option<PosesFn<T>>,
+    /// `tip_position` or `tip_positions`.
+    pub tip_positions: Option<PositionsFn<T>>,
+}
+
+/// The `Kinematics` trait's constants of one type, read through the trait.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TraitConsts {
+    /// `Kinematics::ROBOT`.
+    pub robot: &'static str,
+    /// `Kinematics::BASE`.
+    pub base: &'static str,
+    /// `Kinematics::DOF`.
+    pub dof: usize,
+    /// `Kinematics::JOINT_NAMES`.
+    pub joint_names: &'static [&'static str],
+    /// `Kinematics::JOINT_LIMITS`.
+    pub joint_limits: &'static [kinematics::JointLimits],
+    /// `Kinematics::LINK_NAMES`.
+    pub links: &'static [&'static str],
+    /// `Kinematics::TIPS`.
+    pub tips: &'static [&'static str],
+}
+
+/// The trait's constants of `K`.
+pub fn trait_consts<K: kinematics::Kinematics>() -> TraitConsts {
+    TraitConsts {
+        robot: K::ROBOT,
+        base: K::BASE,
+        dof: K::DOF,
+        joint_names: K::JOINT_NAMES,
+        joint_limits: K::JOINT_LIMITS,
+        links: K::LINK_NAMES,
+        tips: K::TIPS,
+    }
+}
+
+/// One random robot compiled through `emit_robot`: every function and constant it generated.
+pub struct RandomRobot {
+    /// Its name in the generated set (`random_07_mimic_chain`).
+    pub name: &'static str,
+    /// The description's file name (its label).
+    pub file: &'static str,
+    /// The description's text, as compiled.
+    pub text: &'static str,
+    /// The inherent constants `ROBOT`, `BASE`, `DOF`, `JOINT_NAMES`, `JOINT_LIMITS`, `LINK_NAMES`, `TIPS`.
+    pub robot: &'static str,
+    /// `BASE`.
+    pub base: &'static str,
+    /// `DOF`.
+    pub dof: usize,
+    /// `JOINT_NAMES`.
+    pub joint_names: &'static [&'static str],
+    /// `JOINT_LIMITS`.
+    pub joint_limits: &'static [kinematics::JointLimits],
+    /// `LINK_NAMES`.
+    pub links: &'static [&'static str],
+    /// `TIPS`.
+    pub tips: &'static [&'static str],
+    /// The `f64` functions.
+    pub f64: Option<Typed<f64>>,
+    /// The `f32` functions.
+    pub f32: Option<Typed<f32>>,
+    /// `Kinematics::tip_poses_into`.
+    pub tip_poses_into: PosesInto,
+    /// `Kinematics::link_poses_into`.
+    pub link_poses_into: PosesInto,
+    /// The inherent `reference()`.
+    pub reference: fn() -> Result<kinematics::ReferenceFk, kinematics::LoadError>,
+    /// `Kinematics::reference`.
+    pub trait_reference: fn() -> Result<kinematics::ReferenceFk, kinematics::LoadError>,
+    /// The trait's constants.
+    pub trait_consts: fn() -> TraitConsts,
+}
+
+/// The random robots, compiled (`build/random_robots.rs` generates them).
+pub mod random {
+    use super::{RandomRobot, Typed, arr, trait_consts};
+
+    include!(concat!(env!("OUT_DIR"), "/random_robots.rs"));
 }
 
 include!(concat!(env!("OUT_DIR"), "/robots.rs"));

@@ -1,0 +1,413 @@
+//! The emitted Rust of the fixed-seed random robots (`build/random_robots.rs`, compiled by the
+//! build script through `emit_robot`, the derive's own path) against the runtime reference built
+//! from the same text with the same exactness policy: every generated function (link poses and
+//! positions, tip poses and positions, their `_f32` twins, the `Kinematics` trait's methods through
+//! slices, both `reference()`s) and every constant, on many configurations, held to
+//! `kinematics::AGREEMENT_TOLERANCE` (f64) and `AGREEMENT_TOLERANCE_F32` (f32) by `Pose::deviation`.
+#![allow(clippy::panic, clippy::unwrap_used, clippy::expect_used)] // test helpers fail loudly
+
+#[allow(dead_code)] // the build script uses all of it; the tests the set and its options
+#[path = "../build/random_robots.rs"]
+mod random_robots;
+
+use kinematics::model::{ExactAngles, KinematicTree, SourceFormat, parse_source_with};
+use kinematics::{AGREEMENT_TOLERANCE, AGREEMENT_TOLERANCE_F32, Configurations, JointLimits, Pose, ReferenceFk};
+use kinematics_checks::RandomRobot;
+use kinematics_checks::random::{NOT_COMPILED_YET, RANDOM};
+use nalgebra::Isometry3;
+
+/// Configurations per robot (the first five put every joint at a special angle).
+const CASES: usize = 2000;
+
+fn policy(exact_angles: bool) -> ExactAngles {
+    ExactAngles::on(exact_angles)
+}
+
+/// The generated robot's options, by name.
+fn options(name: &str) -> random_robots::RandomRobot {
+    random_robots::generate().into_iter().find(|r| r.name == name).expect("every compiled robot is in the set")
+}
+
+/// The tree the test builds itself, from the compiled text, under the robot's policy.
+fn tree(robot: &RandomRobot, exact_angles: bool) -> KinematicTree {
+    parse_source_with(robot.file, robot.text, policy(exact_angles)).unwrap()
+}
+
+fn pose_of(iso: &Isometry3<f64>) -> Pose<f64> {
+    let r = iso.rotation.to_rotation_matrix();
+    let t = iso.translation.vector;
+    Pose {
+        rotation: [
+            [r[(0, 0)], r[(0, 1)], r[(0, 2)]],
+            [r[(1, 0)], r[(1, 1)], r[(1, 2)]],
+            [r[(2, 0)], r[(2, 1)], r[(2, 2)]],
+        ],
+        translation: [t[0], t[1], t[2]],
+    }
+}
+
+fn widen(p: &Pose<f32>) -> Pose<f64> {
+    Pose { rotation: p.rotation.map(|row| row.map(f64::from)), translation: p.translation.map(f64::from) }
+}
+
+/// A position as a pose with the reference's rotation, so the deviation measures the position alone.
+fn at(position: [f64; 3], reference: &Isometry3<f64>) -> Pose<f64> {
+    Pose { translation: position, ..pose_of(reference) }
+}
+
+/// Every link's pose in `base`, by the reference (`ReferenceFk::relative_pose`'s own composition,
+/// computed once per configuration).
+fn expected(fk: &ReferenceFk, q: &[f64], base: &str, links: &[&str]) -> Vec<Isometry3<f64>> {
+    let poses = fk.link_poses(q).unwrap();
+    let from = poses[fk.link_id(base).unwrap().0].inverse();
+    links.iter().map(|l| from * poses[fk.link_id(l).unwrap().0]).collect()
+}
+
+/// Collects the failures of one robot (all of them, up to a limit), so one run shows every fault.
+struct Faults {
+    robot: &'static str,
+    list: Vec<String>,
+    worst: f64,
+    worst_f32: f64,
+}
+
+impl Faults {
+    fn check(&mut self, what: &str, link: &str, d: f64, tolerance: f64, q: &[f64]) {
+        // A NaN deviation is a failure too.
+        if d.is_nan() || d > tolerance {
+            if self.list.len() < 12 {
+                self.list.push(format!(
+                    "{} {what} `{link}`: off by {d:e} (tolerance {tolerance:e}) at q = {q:?}",
+                    self.robot
+                ));
+            }
+        } else if tolerance == AGREEMENT_TOLERANCE {
+            self.worst = self.worst.max(d);
+        } else {
+            self.worst_f32 = self.worst_f32.max(d);
+        }
+    }
+
+    fn fail(&mut self, message: String) {
+        self.list.push(format!("{}: {message}", self.robot));
+    }
+}
+
+fn limits_of(tree: &KinematicTree) -> Vec<JointLimits> {
+    tree.dof_limits()
+        .iter()
+        .map(|l| match l {
+            Some(l) => JointLimits { lower: l.lower, upper: l.upper },
+            None => JointLimits { lower: f64::NEG_INFINITY, upper: f64::INFINITY },
+        })
+        .collect()
+}
+
+/// The constants, inherent and through the trait, against the tree and the options compiled.
+fn check_constants(robot: &RandomRobot, tree: &KinematicTree, faults: &mut Faults) {
+    let o = options(robot.name);
+    let base = o.base.clone().unwrap_or_else(|| tree.link(tree.root()).name.clone());
+    let links: Vec<&str> = tree.links().iter().map(|l| l.name.as_str()).filter(|l| *l != base).collect();
+    let tips: Vec<&str> = o.tips.iter().map(String::as_str).collect();
+    let checks = [
+        ("ROBOT", robot.robot == tree.name()),
+        ("BASE", robot.base == base),
+        ("DOF", robot.dof == tree.dof()),
+        ("JOINT_NAMES", robot.joint_names == tree.dof_names()),
+        ("JOINT_LIMITS", robot.joint_limits == limits_of(tree)),
+        ("LINK_NAMES", robot.links == links),
+        ("TIPS", robot.tips == tips),
+        ("the trait's constants", {
+            let t = (robot.trait_consts)();
+            (t.robot, t.base, t.dof, t.joint_names, t.joint_limits, t.links, t.tips)
+                == (robot.robot, robot.base, robot.dof, robot.joint_names, robot.joint_limits, robot.links, robot.tips)
+        }),
+    ];
+    for (name, ok) in checks {
+        if !ok {
+            faults.fail(format!("{name} differs from the description"));
+        }
+    }
+}
+
+/// Every generated function of one robot on `CASES` configurations (`reference()` too when
+/// `check_reference`).
+fn check_robot(robot: &RandomRobot, check_reference: bool) -> Faults {
+    let exact_angles = options(robot.name).exact_angles;
+    let tree = tree(robot, exact_angles);
+    let fk = ReferenceFk::new(tree.clone());
+    let reach = tree.reach();
+    let mut faults = Faults { robot: robot.name, list: Vec::new(), worst: 0.0, worst_f32: 0.0 };
+    check_constants(robot, &tree, &mut faults);
+    // Both `reference()`s must be the same robot as the test's own.
+    let references: Vec<(&str, ReferenceFk)> =
+        [("reference()", robot.reference), ("Kinematics::reference()", robot.trait_reference)]
+            .into_iter()
+            .filter_map(|(name, f)| match f() {
+                Ok(r) => Some((name, r)),
+                Err(e) => {
+                    faults.fail(format!("{name} fails: {e}"));
+                    None
+                }
+            })
+            .collect();
+    let zero = Pose { rotation: [[0.0; 3]; 3], translation: [0.0; 3] };
+    let (tol, tol32) = (AGREEMENT_TOLERANCE, AGREEMENT_TOLERANCE_F32);
+    for q in Configurations::new(&tree).take(CASES) {
+        let links = expected(&fk, &q, robot.base, robot.links);
+        let tips = expected(&fk, &q, robot.base, robot.tips);
+        if let Some(f) = &robot.f64 {
+            for ((p, e), l) in (f.link_poses)(&q).iter().zip(&links).zip(robot.links) {
+                faults.check("link_poses", l, p.deviation(e, reach), tol, &q);
+            }
+            if let Some(positions) = f.link_positions {
+                for ((p, e), l) in positions(&q).iter().zip(&links).zip(robot.links) {
+                    faults.check("link_positions", l, at(*p, e).deviation(e, reach), tol, &q);
+                }
+            }
+            if let Some(poses) = f.tip_poses {
+                for ((p, e), l) in poses(&q).iter().zip(&tips).zip(robot.tips) {
+                    faults.check("tip_pose(s)", l, p.deviation(e, reach), tol, &q);
+                }
+            }
+            if let Some(positions) = f.tip_positions {
+                for ((p, e), l) in positions(&q).iter().zip(&tips).zip(robot.tips) {
+                    faults.check("tip_position(s)", l, at(*p, e).deviation(e, reach), tol, &q);
+                }
+            }
+        }
+        if let Some(f) = &robot.f32 {
+            // The f32 code is held to its tolerance at the configuration it was given.
+            let q32: Vec<f32> = q.iter().map(|&x| x as f32).collect();
+            let q64: Vec<f64> = q32.iter().map(|&x| f64::from(x)).collect();
+            let links = expected(&fk, &q64, robot.base, robot.links);
+            let tips = expected(&fk, &q64, robot.base, robot.tips);
+            for ((p, e), l) in (f.link_poses)(&q32).iter().zip(&links).zip(robot.links) {
+                faults.check("link_poses_f32", l, widen(p).deviation(e, reach), tol32, &q64);
+            }
+            if let Some(positions) = f.link_positions {
+                for ((p, e), l) in positions(&q32).iter().zip(&links).zip(robot.links) {
+                    faults.check("link_positions_f32", l, at(p.map(f64::from), e).deviation(e, reach), tol32, &q64);
+                }
+            }
+            if let Some(poses) = f.tip_poses {
+                for ((p, e), l) in poses(&q32).iter().zip(&tips).zip(robot.tips) {
+                    faults.check("tip_pose(s)_f32", l, widen(p).deviation(e, reach), tol32, &q64);
+                }
+            }
+            if let Some(positions) = f.tip_positions {
+                for ((p, e), l) in positions(&q32).iter().zip(&tips).zip(robot.tips) {
+                    faults.check("tip_position(s)_f32", l, at(p.map(f64::from), e).deviation(e, reach), tol32, &q64);
+                }
+            }
+        }
+        // The trait's methods, through slices.
+        let mut out = vec![zero; robot.tips.len()];
+        match (robot.tip_poses_into)(&q, &mut out) {
+            Ok(()) => {
+                for ((p, e), l) in out.iter().zip(&tips).zip(robot.tips) {
+                    faults.check("Kinematics::tip_poses_into", l, p.deviation(e, reach), tol, &q);
+                }
+            }
+            Err(e) => faults.fail(format!("tip_poses_into fails: {e}")),
+        }
+        let mut out = vec![zero; robot.links.len()];
+        match (robot.link_poses_into)(&q, &mut out) {
+            Ok(()) => {
+                for ((p, e), l) in out.iter().zip(&links).zip(robot.links) {
+                    faults.check("Kinematics::link_poses_into", l, p.deviation(e, reach), tol, &q);
+                }
+            }
+            Err(e) => faults.fail(format!("link_poses_into fails: {e}")),
+        }
+        for (name, reference) in references.iter().filter(|_| check_reference) {
+            for ((p, e), l) in expected(reference, &q, robot.base, robot.links).iter().zip(&links).zip(robot.links) {
+                faults.check(name, l, pose_of(p).deviation(e, reach), tol, &q);
+            }
+        }
+        if faults.list.len() >= 12 {
+            break;
+        }
+    }
+    // Slices of the wrong length are errors, not panics.
+    let q = vec![0.0; robot.dof + 1];
+    let mut out = vec![zero; robot.links.len()];
+    if (robot.link_poses_into)(&q, &mut out).is_ok() {
+        faults.fail("link_poses_into accepts a q one too long".to_owned());
+    }
+    let mut out = vec![zero; robot.links.len() + 1];
+    if (robot.link_poses_into)(&q[..robot.dof], &mut out).is_ok() {
+        faults.fail("link_poses_into accepts an output one too long".to_owned());
+    }
+    let mut out = vec![zero; robot.tips.len() + 1];
+    if (robot.tip_poses_into)(&q[..robot.dof], &mut out).is_ok() {
+        faults.fail("tip_poses_into accepts an output one too long".to_owned());
+    }
+    faults
+}
+
+#[test]
+fn every_function_of_every_random_robot_agrees_with_the_runtime_reference() {
+    let mut all = Vec::new();
+    for robot in RANDOM {
+        if COMPILER_ROUNDS_LITERAL_ANGLES.contains(&robot.name) {
+            println!("{:<36} skipped: the compiler still rounds its literal angles", robot.file);
+            continue;
+        }
+        // Without recognition, `reference()` is a different robot today (the ignored test below).
+        let faults = check_robot(robot, options(robot.name).exact_angles);
+        println!(
+            "{:<36} {CASES} configurations: largest error {:.2e} (f64), {:.2e} (f32)",
+            robot.file, faults.worst, faults.worst_f32
+        );
+        all.extend(faults.list);
+    }
+    assert!(all.is_empty(), "{} disagreements:\n{}", all.len(), all.join("\n"));
+}
+
+/// Robots compiled with the exactness policy off whose generated code disagrees with the reference
+/// today: the compiler still reads angles within 1e-12 rad of a multiple of pi/2 as exact
+/// (`EXACT_ANGLE_TOLERANCE` in `kinematics-compiler/src/symbolic/graph.rs`), so `3.14159265359`
+/// (2e-13 off pi) is pi in the generated code and not in the reference; ten joints of it leave the
+/// poses 1.1e-12 apart (issue 13, defect 3). With that rounding gone (checked by setting the
+/// tolerance to 0), they agree: then empty this list and delete the ignored test below.
+const COMPILER_ROUNDS_LITERAL_ANGLES: &[&str] = &["random_33_quarter_turns_literal"];
+
+#[test]
+#[ignore = "fails today: the compiler rounds angles within 1e-12 rad of a quarter turn (symbolic/graph.rs EXACT_ANGLE_TOLERANCE) while the reference under ExactAngles::Off keeps them; fixed by the exactness-policy engineer"]
+fn robots_compiled_without_recognition_agree_although_their_angles_are_near_quarter_turns() {
+    let mut all = Vec::new();
+    for robot in RANDOM.iter().filter(|r| COMPILER_ROUNDS_LITERAL_ANGLES.contains(&r.name)) {
+        all.extend(check_robot(robot, false).list);
+    }
+    assert!(all.is_empty(), "{} disagreements:\n{}", all.len(), all.join("\n"));
+}
+
+/// `reference()` of a robot compiled with the exactness policy off is that robot. It fails today:
+/// `emit_robot` writes `reference()` as `parse_source` (the default policy) whatever policy the tree
+/// was built with, so with `3.14159265359` or `1.57079632679` in the text it is a robot 2e-13 to
+/// 5e-12 rad away per angle (off by up to 4e-10 here). Once `RobotSpec` carries the policy, delete
+/// the `ignore` and the `exact_angles` condition in the test above.
+#[test]
+#[ignore = "fails today: emit_robot's reference() ignores the exactness policy the tree was built with (RobotSpec has none); fixed by whoever adds the policy to RobotSpec/the derive"]
+fn reference_of_a_robot_compiled_without_recognition_is_that_robot() {
+    let mut all = Vec::new();
+    for robot in RANDOM.iter().filter(|r| !options(r.name).exact_angles) {
+        all.extend(check_robot(robot, true).list);
+    }
+    assert!(all.is_empty(), "{} disagreements:\n{}", all.len(), all.join("\n"));
+}
+
+/// The set compiled is the set the generator makes, byte for byte, run after run; the robots left
+/// out are named (`DOES_NOT_COMPILE_YET` in the build script).
+#[test]
+fn the_random_set_is_deterministic_and_compiled_whole() {
+    let set = random_robots::generate();
+    assert_eq!(set, random_robots::generate());
+    assert!(set.len() >= 60, "{} random robots", set.len());
+    let mut compiled = RANDOM.iter();
+    for robot in &set {
+        if NOT_COMPILED_YET.contains(&robot.name.as_str()) {
+            println!("not compiled yet (its generated code does not type-check): {}", robot.file);
+            continue;
+        }
+        let r = compiled.next().unwrap_or_else(|| panic!("{} is not compiled", robot.name));
+        assert_eq!((r.name, r.file, r.text), (robot.name.as_str(), robot.file.as_str(), robot.text.as_str()));
+    }
+    assert!(compiled.next().is_none());
+    for name in NOT_COMPILED_YET {
+        assert!(set.iter().any(|r| r.name == *name), "{name} is listed as not compiling but is not in the set");
+    }
+}
+
+/// The generated set hits every shape the emitter must get right (among the robots compiled and
+/// checked, except the one-link-below-the-base shape, listed as not compiling yet).
+#[test]
+fn the_random_set_covers_every_shape() {
+    let set = random_robots::generate();
+    let checked: Vec<(&random_robots::RandomRobot, KinematicTree)> = set
+        .iter()
+        .filter(|r| !NOT_COMPILED_YET.contains(&r.name.as_str()))
+        .map(|r| (r, parse_source_with(&r.file, &r.text, policy(r.exact_angles)).unwrap()))
+        .collect();
+    let any = |what: &str, f: &dyn Fn(&random_robots::RandomRobot, &KinematicTree) -> bool| {
+        assert!(checked.iter().any(|(r, t)| f(r, t)), "no checked random robot has {what}");
+    };
+    use kinematics::model::JointKind;
+    let kinds = |t: &KinematicTree, k: JointKind| t.joints().iter().filter(|j| j.kind == k).count();
+    any("a single link", &|_, t| t.links().len() == 1);
+    any("zero degrees of freedom and fixed joints", &|_, t| t.dof() == 0 && t.joints().len() >= 2);
+    any("three prismatic joints", &|_, t| kinds(t, JointKind::Prismatic) >= 3);
+    any("continuous joints", &|_, t| kinds(t, JointKind::Continuous) >= 2);
+    // Depth of a link: joints from the root.
+    let depth = |t: &KinematicTree| {
+        let mut d = vec![0usize; t.links().len()];
+        for j in t.joints() {
+            d[j.child.0] = d[j.parent.0] + 1;
+        }
+        d.into_iter().max().unwrap_or(0)
+    };
+    any("a chain 40 joints deep", &|_, t| depth(t) >= 40);
+    any("a DH chain 24 rows deep", &|r, t| r.file.ends_with(".toml") && depth(t) >= 24);
+    any("a root with 8 children", &|_, t| t.link(t.root()).child_joints.len() >= 8);
+    // Three fixed joints in a row along a path.
+    any("a run of three fixed joints", &|_, t| {
+        t.joints().iter().any(|j| {
+            let mut run = 0;
+            let mut at = Some(j);
+            while let Some(joint) = at.filter(|j| j.kind == JointKind::Fixed) {
+                run += 1;
+                at = t.link(joint.parent).parent_joint.map(|p| &t.joints()[p.0]);
+            }
+            run >= 3
+        })
+    });
+    // Mimic joints as written: a mimic of a mimic, negative and fractional multipliers, offsets.
+    let mimics = |r: &random_robots::RandomRobot| {
+        let d = SourceFormat::from_file_name(&r.file).unwrap().parse(&r.text).unwrap();
+        let mimics: Vec<_> = d.joints.iter().filter_map(|j| j.mimic.clone()).collect();
+        let of_mimic = d.joints.iter().filter(|j| {
+            j.mimic.as_ref().is_some_and(|m| d.joints.iter().any(|s| s.name == m.joint && s.mimic.is_some()))
+        });
+        (mimics.clone(), of_mimic.count())
+    };
+    any("a mimic of a mimic of a mimic", &|r, _| r.file.ends_with(".urdf") && mimics(r).1 >= 2);
+    any("a negative mimic multiplier", &|r, _| {
+        r.file.ends_with(".urdf") && mimics(r).0.iter().any(|m| m.multiplier < 0.0)
+    });
+    any("a fractional mimic multiplier", &|r, _| {
+        r.file.ends_with(".urdf") && mimics(r).0.iter().any(|m| m.multiplier.fract() != 0.0)
+    });
+    any("a mimic offset", &|r, _| r.file.ends_with(".urdf") && mimics(r).0.iter().any(|m| m.offset != 0.0));
+    any("a skewed axis", &|_, t| {
+        t.joints().iter().any(|j| j.kind != JointKind::Fixed && j.axis.iter().filter(|a| **a != 0.0).count() >= 2)
+    });
+    any("a ROS decimal quarter turn recognised", &|r, t| {
+        r.exact_angles && r.text.contains("3.14159265359") && !t.recognised_angles().is_empty()
+    });
+    any("a ROS decimal quarter turn kept as written", &|r, t| {
+        !r.exact_angles && r.text.contains("1.57079632679") && t.recognised_angles().is_empty()
+    });
+    any("a near miss kept as a number", &|r, _| r.text.contains("1.5708\""));
+    any("a standard DH table in TOML", &|r, _| r.file.ends_with(".toml") && r.text.contains("\"standard\""));
+    any("a modified DH table in TOML", &|r, _| r.file.ends_with(".toml") && r.text.contains("\"modified\""));
+    any("a standard DH table in JSON", &|r, _| r.file.ends_with(".json") && r.text.contains("\"standard\""));
+    any("a modified DH table in JSON", &|r, _| r.file.ends_with(".json") && r.text.contains("\"modified\""));
+    any("a DH table in degrees", &|r, _| r.text.contains("\"degrees\""));
+    any("a prismatic DH row", &|r, _| !r.file.ends_with(".urdf") && r.text.contains("\"prismatic\""));
+    any("a base that is not the root", &|r, t| r.base.as_ref().is_some_and(|b| *b != t.link(t.root()).name));
+    any("a base on a leaf", &|r, t| {
+        r.base.as_ref().is_some_and(|b| t.links()[t.link_id(b).unwrap().0].child_joints.is_empty())
+    });
+    any("several tips", &|r, _| r.tips.len() >= 3);
+    any("one tip", &|r, _| r.tips.len() == 1);
+    any("no tips", &|r, t| r.tips.is_empty() && t.links().len() > 2);
+    any("f32 functions only", &|r, _| r.f32 && !r.f64);
+    any("f64 functions only", &|r, _| r.f64 && !r.f32);
+    any("position functions", &|r, t| r.positions && t.dof() > 0);
+    // The shape the emitter does not compile yet stays in the set.
+    assert!(
+        set.iter().any(|r| parse_source_with(&r.file, &r.text, policy(r.exact_angles)).unwrap().links().len() == 2),
+        "no random robot with exactly one link below the root"
+    );
+}
