@@ -107,21 +107,6 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     Ok(())
 }
 
-/// Random robots whose generated code does not compile today, so they are left out of
-/// `random_robots.rs` (their emitted code is written beside it as `random/<name>.rs.txt`, and the
-/// tests list them). Bug: a robot with exactly one link below the base (one joint, or a one-row
-/// DH table) derives into code that fails to type-check (issue 13, defect 5; the emitter's fix).
-/// Once it lands, empty this list: every robot is then compiled and checked.
-const DOES_NOT_COMPILE_YET: &[&str] = &[
-    "random_01_one_joint",
-    "random_02_one_joint",
-    "random_03_one_joint",
-    "random_04_one_joint",
-    "random_05_one_joint",
-    "random_45_dh_standard",
-    "random_53_dh_modified",
-];
-
 /// `random_07_mimic_chain` as `Random07MimicChain`.
 fn type_name(name: &str) -> String {
     name.split('_')
@@ -160,14 +145,13 @@ fn write_random_robots(out: &Path) -> Result<(), Box<dyn std::error::Error>> {
             krate: "::kinematics".parse()?,
             source_label: robot.file.clone(),
             source_text: text_expr.parse()?,
+            exact_angles: tree.exact_angles(),
+            impl_generics: "".parse()?,
+            where_clause: "".parse()?,
         };
         let tokens = emit_robot(&ty.parse()?, &spec).map_err(|e| format!("random robot {}: {e}", robot.file))?;
         let item =
             format!("/// `random/{}` ({}).\n#[derive(Debug)]\npub struct {ty};\n{tokens}\n", robot.file, robot.shape);
-        if DOES_NOT_COMPILE_YET.contains(&robot.name.as_str()) {
-            std::fs::write(dir.join(format!("{}.rs.txt", robot.name)), item)?;
-            continue;
-        }
         code += &item;
         let tips = robot.tips.len();
         let typed = |on: bool, suffix: &str, t: &str| {
@@ -209,11 +193,7 @@ fn write_random_robots(out: &Path) -> Result<(), Box<dyn std::error::Error>> {
     }
     writeln!(
         code,
-        "/// The random robots that compile, in the order of the generated set.\npub const RANDOM: &[RandomRobot] = &[{registry}];"
-    )?;
-    writeln!(
-        code,
-        "/// The random robots left out because their generated code does not compile yet.\npub const NOT_COMPILED_YET: &[&str] = &{DOES_NOT_COMPILE_YET:?};"
+        "/// The random robots, in the order of the generated set.\npub const RANDOM: &[RandomRobot] = &[{registry}];"
     )?;
     std::fs::write(out.join("random_robots.rs"), code)?;
     Ok(())

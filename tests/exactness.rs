@@ -63,6 +63,7 @@ fn with_recognition_on_every_robot_agrees_with_its_reference() {
 }
 
 #[test]
+#[allow(clippy::approx_constant, reason = "the decimals ROS files write for pi/2 and pi, on purpose")]
 fn the_ros_spelled_ur5_costs_what_the_exact_ur5_costs() {
     let cost = |file: &str, policy| compile(&load_with(file, policy), &Request::tip("tool0")).unwrap().op_count();
     let exact = cost("ur5.urdf", ExactAngles::default());

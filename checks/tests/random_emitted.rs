@@ -13,7 +13,7 @@ mod random_robots;
 use kinematics::model::{ExactAngles, KinematicTree, SourceFormat, parse_source_with};
 use kinematics::{AGREEMENT_TOLERANCE, AGREEMENT_TOLERANCE_F32, Configurations, JointLimits, Pose, ReferenceFk};
 use kinematics_checks::RandomRobot;
-use kinematics_checks::random::{NOT_COMPILED_YET, RANDOM};
+use kinematics_checks::random::RANDOM;
 use nalgebra::Isometry3;
 
 /// Configurations per robot (the first five put every joint at a special angle).
@@ -130,9 +130,8 @@ fn check_constants(robot: &RandomRobot, tree: &KinematicTree, faults: &mut Fault
     }
 }
 
-/// Every generated function of one robot on `CASES` configurations (`reference()` too when
-/// `check_reference`).
-fn check_robot(robot: &RandomRobot, check_reference: bool) -> Faults {
+/// Every generated function of one robot, and both `reference()`s, on `CASES` configurations.
+fn check_robot(robot: &RandomRobot) -> Faults {
     let exact_angles = options(robot.name).exact_angles;
     let tree = tree(robot, exact_angles);
     let fk = ReferenceFk::new(tree.clone());
@@ -220,7 +219,7 @@ fn check_robot(robot: &RandomRobot, check_reference: bool) -> Faults {
             }
             Err(e) => faults.fail(format!("link_poses_into fails: {e}")),
         }
-        for (name, reference) in references.iter().filter(|_| check_reference) {
+        for (name, reference) in &references {
             for ((p, e), l) in expected(reference, &q, robot.base, robot.links).iter().zip(&links).zip(robot.links) {
                 faults.check(name, l, pose_of(p).deviation(e, reach), tol, &q);
             }
@@ -250,12 +249,7 @@ fn check_robot(robot: &RandomRobot, check_reference: bool) -> Faults {
 fn every_function_of_every_random_robot_agrees_with_the_runtime_reference() {
     let mut all = Vec::new();
     for robot in RANDOM {
-        if COMPILER_ROUNDS_LITERAL_ANGLES.contains(&robot.name) {
-            println!("{:<36} skipped: the compiler still rounds its literal angles", robot.file);
-            continue;
-        }
-        // Without recognition, `reference()` is a different robot today (the ignored test below).
-        let faults = check_robot(robot, options(robot.name).exact_angles);
+        let faults = check_robot(robot);
         println!(
             "{:<36} {CASES} configurations: largest error {:.2e} (f64), {:.2e} (f32)",
             robot.file, faults.worst, faults.worst_f32
@@ -265,41 +259,7 @@ fn every_function_of_every_random_robot_agrees_with_the_runtime_reference() {
     assert!(all.is_empty(), "{} disagreements:\n{}", all.len(), all.join("\n"));
 }
 
-/// Robots compiled with the exactness policy off whose generated code disagrees with the reference
-/// today: the compiler still reads angles within 1e-12 rad of a multiple of pi/2 as exact
-/// (`EXACT_ANGLE_TOLERANCE` in `kinematics-compiler/src/symbolic/graph.rs`), so `3.14159265359`
-/// (2e-13 off pi) is pi in the generated code and not in the reference; ten joints of it leave the
-/// poses 1.1e-12 apart (issue 13, defect 3). With that rounding gone (checked by setting the
-/// tolerance to 0), they agree: then empty this list and delete the ignored test below.
-const COMPILER_ROUNDS_LITERAL_ANGLES: &[&str] = &["random_33_quarter_turns_literal"];
-
-#[test]
-#[ignore = "fails today: the compiler rounds angles within 1e-12 rad of a quarter turn (symbolic/graph.rs EXACT_ANGLE_TOLERANCE) while the reference under ExactAngles::Off keeps them; fixed by the exactness-policy engineer"]
-fn robots_compiled_without_recognition_agree_although_their_angles_are_near_quarter_turns() {
-    let mut all = Vec::new();
-    for robot in RANDOM.iter().filter(|r| COMPILER_ROUNDS_LITERAL_ANGLES.contains(&r.name)) {
-        all.extend(check_robot(robot, false).list);
-    }
-    assert!(all.is_empty(), "{} disagreements:\n{}", all.len(), all.join("\n"));
-}
-
-/// `reference()` of a robot compiled with the exactness policy off is that robot. It fails today:
-/// `emit_robot` writes `reference()` as `parse_source` (the default policy) whatever policy the tree
-/// was built with, so with `3.14159265359` or `1.57079632679` in the text it is a robot 2e-13 to
-/// 5e-12 rad away per angle (off by up to 4e-10 here). Once `RobotSpec` carries the policy, delete
-/// the `ignore` and the `exact_angles` condition in the test above.
-#[test]
-#[ignore = "fails today: emit_robot's reference() ignores the exactness policy the tree was built with (RobotSpec has none); fixed by whoever adds the policy to RobotSpec/the derive"]
-fn reference_of_a_robot_compiled_without_recognition_is_that_robot() {
-    let mut all = Vec::new();
-    for robot in RANDOM.iter().filter(|r| !options(r.name).exact_angles) {
-        all.extend(check_robot(robot, true).list);
-    }
-    assert!(all.is_empty(), "{} disagreements:\n{}", all.len(), all.join("\n"));
-}
-
-/// The set compiled is the set the generator makes, byte for byte, run after run; the robots left
-/// out are named (`DOES_NOT_COMPILE_YET` in the build script).
+/// The set compiled is the set the generator makes, byte for byte, run after run, every robot of it.
 #[test]
 fn the_random_set_is_deterministic_and_compiled_whole() {
     let set = random_robots::generate();
@@ -307,29 +267,19 @@ fn the_random_set_is_deterministic_and_compiled_whole() {
     assert!(set.len() >= 60, "{} random robots", set.len());
     let mut compiled = RANDOM.iter();
     for robot in &set {
-        if NOT_COMPILED_YET.contains(&robot.name.as_str()) {
-            println!("not compiled yet (its generated code does not type-check): {}", robot.file);
-            continue;
-        }
         let r = compiled.next().unwrap_or_else(|| panic!("{} is not compiled", robot.name));
         assert_eq!((r.name, r.file, r.text), (robot.name.as_str(), robot.file.as_str(), robot.text.as_str()));
     }
     assert!(compiled.next().is_none());
-    for name in NOT_COMPILED_YET {
-        assert!(set.iter().any(|r| r.name == *name), "{name} is listed as not compiling but is not in the set");
-    }
 }
 
 /// The generated set hits every shape the emitter must get right (among the robots compiled and
-/// checked, except the one-link-below-the-base shape, listed as not compiling yet).
+/// checked).
 #[test]
 fn the_random_set_covers_every_shape() {
     let set = random_robots::generate();
-    let checked: Vec<(&random_robots::RandomRobot, KinematicTree)> = set
-        .iter()
-        .filter(|r| !NOT_COMPILED_YET.contains(&r.name.as_str()))
-        .map(|r| (r, parse_source_with(&r.file, &r.text, policy(r.exact_angles)).unwrap()))
-        .collect();
+    let checked: Vec<(&random_robots::RandomRobot, KinematicTree)> =
+        set.iter().map(|r| (r, parse_source_with(&r.file, &r.text, policy(r.exact_angles)).unwrap())).collect();
     let any = |what: &str, f: &dyn Fn(&random_robots::RandomRobot, &KinematicTree) -> bool| {
         assert!(checked.iter().any(|(r, t)| f(r, t)), "no checked random robot has {what}");
     };
