@@ -145,7 +145,6 @@ fn write_random_robots(out: &Path) -> Result<(), Box<dyn std::error::Error>> {
             krate: "::kinematics".parse()?,
             source_label: robot.file.clone(),
             source_text: text_expr.parse()?,
-            exact_angles: tree.exact_angles(),
             impl_generics: "".parse()?,
             where_clause: "".parse()?,
         };

@@ -50,7 +50,6 @@ pub(crate) fn emit_source(emit: &Emit<'_>) -> Result<String, BuildError> {
         krate: quote!(#krate),
         source_label: loaded.reference_label.clone(),
         source_text: quote!(#text),
-        exact_angles: loaded.tree.exact_angles(),
         impl_generics: TokenStream::new(),
         where_clause: TokenStream::new(),
     };

@@ -35,7 +35,8 @@ pub fn link(tree: &KinematicTree, file: &str, role: &'static str, name: &str) ->
 /// The end effector when none is named: the deepest link (most joints from the root), the last
 /// of equals in the tree's depth-first order.
 pub fn deepest_link(tree: &KinematicTree) -> LinkId {
-    (0..tree.links().len()).map(LinkId).max_by_key(|&l| (tree.path_from_root(l).len(), l)).unwrap_or(tree.root())
+    // Ties go to the last in depth-first order; the root is the answer for a robot of one link.
+    (0..tree.links().len()).map(LinkId).max_by_key(|&l| (tree.depth(l), l)).unwrap_or(tree.root())
 }
 
 /// The base and tip names from the options: the base defaults to the root, the tip to the

@@ -28,17 +28,4 @@ pub enum CompileError {
         /// The constant (infinite or NaN).
         value: f64,
     },
-    /// [`crate::robot::RobotSpec::exact_angles`] is not the policy the tree was loaded with: the
-    /// reference would be another robot than the code.
-    #[error(
-        "robot `{robot}`: the exactness policy asked for ({requested}) is not the one the robot was loaded with ({tree})"
-    )]
-    ExactnessMismatch {
-        /// Robot name.
-        robot: String,
-        /// The policy in the request.
-        requested: String,
-        /// The tree's policy.
-        tree: String,
-    },
 }

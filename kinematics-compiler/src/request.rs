@@ -112,10 +112,8 @@ pub fn compile(tree: &KinematicTree, request: &Request) -> Result<Compiled, Comp
             }
         }
     }
-    let (graph, frames) = match best {
-        Some((_, result)) => result,
-        None => (ExprGraph::new(), Vec::new()),
-    };
+    #[allow(clippy::expect_used, reason = "an invariant of the search, named in the message")]
+    let (_, (graph, frames)) = best.expect("the search tries at least one fold order with at least one option");
     let frames: Vec<Frame> =
         tips.iter().zip(frames).map(|(link, transform)| Frame { link: link.clone(), transform }).collect();
     check_finite(tree, &graph, &frames)?;
@@ -275,12 +273,17 @@ impl Compiled {
     }
 
     /// The 12 pose entries of frame `index` as text (`c1 + c12`), rotation row-major then translation.
+    ///
+    /// Each entry is written out in full, so shared subexpressions are repeated: the text of a long
+    /// chain grows exponentially with its length. For large robots use [`crate::emit::text_listing`],
+    /// which prints shared subexpressions once as temporaries (what `kinematics expr` prints).
     pub fn frame_text(&self, index: usize) -> Vec<String> {
         let names = crate::emit::Names::new(&self.graph, &self.outputs());
         self.frames[index].transform.entries().iter().map(|&id| crate::emit::text(&self.graph, &names, id)).collect()
     }
 
-    /// The 12 pose entries of frame `index` as LaTeX.
+    /// The 12 pose entries of frame `index` as LaTeX, written out in full as [`Compiled::frame_text`]
+    /// (see its cost; [`crate::emit::latex_listing`] is linear).
     pub fn frame_latex(&self, index: usize) -> Vec<String> {
         let names = crate::emit::Names::new(&self.graph, &self.outputs());
         self.frames[index].transform.entries().iter().map(|&id| crate::emit::latex(&self.graph, &names, id)).collect()

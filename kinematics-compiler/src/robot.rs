@@ -51,10 +51,6 @@ pub struct RobotSpec<'a> {
     pub source_label: String,
     /// An expression of type `&'static str` holding the description's text (e.g. `include_str!`).
     pub source_text: TokenStream,
-    /// The exactness policy the tree was loaded with; `reference()` loads the description with it,
-    /// so the reference is the robot the code was compiled from. Must be the tree's own policy
-    /// ([`KinematicTree::exact_angles`]), else [`emit_robot`] fails.
-    pub exact_angles: ExactAngles,
     /// The generic parameters of the impls, with their bounds (`<'a, T: Clone, const N: usize>`,
     /// syn's `impl_generics`); empty for a type without generics. `self_ty` carries the arguments.
     pub impl_generics: TokenStream,
@@ -71,13 +67,6 @@ fn strs(names: &[String]) -> TokenStream {
 pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenStream, CompileError> {
     let tree = spec.tree;
     let krate = &spec.krate;
-    if !same_policy(spec.exact_angles, tree.exact_angles()) {
-        return Err(CompileError::ExactnessMismatch {
-            robot: tree.name().to_owned(),
-            requested: format!("{:?}", spec.exact_angles),
-            tree: format!("{:?}", tree.exact_angles()),
-        });
-    }
     let base = spec.base.clone().unwrap_or_else(|| tree.link(tree.root()).name.clone());
     let all = compile(tree, &Request { base: Some(base.clone()), tips: Vec::new(), position_only: false })?;
     let n = tree.dof();
@@ -182,7 +171,9 @@ pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenSt
     let label = &spec.source_label;
     let text = &spec.source_text;
     let (jn, ln, tn) = (strs(&joint_names), strs(&link_names), strs(&tips));
-    let policy = policy_tokens(krate, spec.exact_angles);
+    // `reference()` loads the description with the tree's own exactness policy, so the reference
+    // is the robot the code was compiled from.
+    let policy = policy_tokens(krate, tree.exact_angles());
     let (impl_generics, where_clause) = (&spec.impl_generics, &spec.where_clause);
     Ok(quote! {
         const _: () = {
@@ -246,14 +237,6 @@ pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenSt
 }
 
 /// Whether two policies are the same (a NaN tolerance equals itself: both read nothing as exact).
-fn same_policy(a: ExactAngles, b: ExactAngles) -> bool {
-    match (a, b) {
-        (ExactAngles::Off, ExactAngles::Off) => true,
-        (ExactAngles::Within(x), ExactAngles::Within(y)) => x.to_bits() == y.to_bits(),
-        _ => false,
-    }
-}
-
 /// The policy as an expression of type `ExactAngles`.
 fn policy_tokens(krate: &TokenStream, policy: ExactAngles) -> TokenStream {
     match policy {

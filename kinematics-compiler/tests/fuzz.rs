@@ -59,7 +59,6 @@ fn compile_everything(label: &str, text: &str) -> Result<Vec<String>, String> {
         krate: quote!(::kinematics),
         source_label: label.to_owned(),
         source_text: quote!(""),
-        exact_angles: tree.exact_angles(),
         impl_generics: TokenStream::new(),
         where_clause: TokenStream::new(),
     };

@@ -25,11 +25,12 @@ const MIMIC: &str = r#"<robot name="mimic">
     <origin xyz="1 0 0"/><mimic joint="j2" multiplier="1e200"/></joint>
 </robot>"#;
 
-/// Largest finite offsets, which do not overflow alone: 1.7e308 twice, opposite signs.
+/// Offsets as large as the model accepts (their reach, 1.6e308, is finite), opposite signs: the
+/// compiler composes them without overflow.
 const LARGEST: &str = r#"<robot name="largest">
   <link name="base"/> <link name="a"/> <link name="b"/>
-  <joint name="ja" type="fixed"><parent link="base"/><child link="a"/><origin xyz="1.7e308 0 0"/></joint>
-  <joint name="jb" type="continuous"><parent link="a"/><child link="b"/><origin xyz="-1.7e308 0 0"/>
+  <joint name="ja" type="fixed"><parent link="base"/><child link="a"/><origin xyz="8e307 0 0"/></joint>
+  <joint name="jb" type="continuous"><parent link="a"/><child link="b"/><origin xyz="-8e307 0 0"/>
     <axis xyz="0 0 1"/></joint>
 </robot>"#;
 
@@ -43,16 +44,15 @@ fn spec(tree: &kinematics_model::KinematicTree) -> RobotSpec<'_> {
         krate: quote!(::kinematics),
         source_label: "x.urdf".to_owned(),
         source_text: quote!(""),
-        exact_angles: tree.exact_angles(),
         impl_generics: quote!(),
         where_clause: quote!(),
     }
 }
 
-/// Compiles every link and emits the robot: the errors, which must name `link` if there are any.
-fn outcome(text: &str) -> Option<Vec<CompileError>> {
-    // The model may refuse such a description itself; then there is nothing to compile.
-    let tree = kinematics_model::parse_source("x.urdf", text).ok()?;
+/// Loads `text` and, if the model accepts it, compiles every link and emits the robot: the model's
+/// refusal, or the compiler's errors (which must name the link if there are any).
+fn outcome(text: &str) -> Result<Vec<CompileError>, kinematics_model::LoadError> {
+    let tree = kinematics_model::parse_source("x.urdf", text)?;
     let mut errors = Vec::new();
     for link in tree.links().iter().skip(1) {
         for request in [Request::tip(&link.name), Request::tip(&link.name).positions_only()] {
@@ -61,7 +61,7 @@ fn outcome(text: &str) -> Option<Vec<CompileError>> {
     }
     errors.extend(compile(&tree, &Request::all_links()).err());
     errors.extend(emit_robot(&quote!(Robot), &spec(&tree)).err());
-    Some(errors)
+    Ok(errors)
 }
 
 fn assert_names(errors: &[CompileError], link: &str) {
@@ -77,33 +77,44 @@ fn assert_names(errors: &[CompileError], link: &str) {
     }
 }
 
+/// The model refuses these descriptions itself (the reach and mimic rules); the compiler's check is
+/// the backstop behind them. Either way the answer is an error naming where, never code.
 #[test]
 fn offsets_that_overflow_name_the_link() {
-    if let Some(errors) = outcome(FAR) {
-        // `b` is the first link at infinity; `c` hangs below it, and every request names the first.
-        assert_eq!(errors.len(), 6, "{errors:?}");
-        assert_names(&errors[..2], "b");
-        assert_names(&errors[2..4], "c");
-        assert_names(&errors[4..], "b");
-        assert_eq!(
-            errors[0].to_string(),
-            "robot `far`: link `b`: the constants of its pose are not all finite numbers (one is inf): \
+    match outcome(FAR) {
+        Err(refused) => assert_eq!(
+            refused.to_string(),
+            "x.urdf: joint `jb`: the robot's reach (every fixed offset and prismatic stroke laid end to end) is not a finite number from this joint on"
+        ),
+        Ok(errors) => {
+            // `b` is the first link at infinity; `c` hangs below it, and every request names the first.
+            assert_eq!(errors.len(), 6, "{errors:?}");
+            assert_names(&errors[..2], "b");
+            assert_names(&errors[2..4], "c");
+            assert_names(&errors[4..], "b");
+            assert_eq!(
+                errors[0].to_string(),
+                "robot `far`: link `b`: the constants of its pose are not all finite numbers (one is inf): \
              the description's numbers overflow when composed"
-        );
+            );
+        }
     }
 }
 
 #[test]
 fn mimic_multipliers_that_overflow_name_the_link() {
-    if let Some(errors) = outcome(MIMIC) {
-        assert_eq!(errors.len(), 4, "{errors:?}");
-        assert_names(&errors[..2], "l3");
-        assert_names(&errors[2..], "l3");
+    match outcome(MIMIC) {
+        Err(refused) => assert!(refused.to_string().starts_with("x.urdf: joint `j3`: "), "{refused}"),
+        Ok(errors) => {
+            assert_eq!(errors.len(), 4, "{errors:?}");
+            assert_names(&errors[..2], "l3");
+            assert_names(&errors[2..], "l3");
+        }
     }
 }
 
 #[test]
 fn the_largest_finite_offsets_compile() {
-    let errors = outcome(LARGEST).expect("finite offsets are valid");
+    let errors = outcome(LARGEST).unwrap();
     assert!(errors.is_empty(), "{errors:?}");
 }

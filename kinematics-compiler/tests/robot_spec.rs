@@ -2,7 +2,6 @@
 //! with the tree's own exactness policy, and the user's generics go on the impls.
 #![allow(clippy::panic, clippy::unwrap_used, clippy::expect_used)] // test helpers fail loudly
 
-use kinematics_compiler::CompileError;
 use kinematics_compiler::robot::{RobotSpec, Scalars, emit_robot};
 use kinematics_model::{ExactAngles, KinematicTree};
 use quote::quote;
@@ -15,7 +14,7 @@ const ARM: &str = r#"<robot name="arm">
     <origin xyz="1 0 0"/></joint>
 </robot>"#;
 
-fn spec(tree: &KinematicTree, exact_angles: ExactAngles) -> RobotSpec<'_> {
+fn spec(tree: &KinematicTree) -> RobotSpec<'_> {
     RobotSpec {
         tree,
         base: None,
@@ -25,7 +24,6 @@ fn spec(tree: &KinematicTree, exact_angles: ExactAngles) -> RobotSpec<'_> {
         krate: quote!(::kinematics),
         source_label: "arm.urdf".to_owned(),
         source_text: quote!("text"),
-        exact_angles,
         impl_generics: quote!(),
         where_clause: quote!(),
     }
@@ -40,13 +38,13 @@ fn reference_call(tokens: &str) -> &str {
 #[test]
 fn reference_loads_with_the_trees_policy() {
     let off = kinematics_model::parse_source_with("arm.urdf", ARM, ExactAngles::Off).unwrap();
-    let tokens = emit_robot(&quote!(Arm), &spec(&off, ExactAngles::Off)).unwrap().to_string();
+    let tokens = emit_robot(&quote!(Arm), &spec(&off)).unwrap().to_string();
     assert_eq!(
         reference_call(&tokens),
         "parse_source_with (\"arm.urdf\" , \"text\" , :: kinematics :: model :: ExactAngles :: Off)"
     );
     let on = kinematics_model::parse_source_with("arm.urdf", ARM, ExactAngles::Within(1e-9)).unwrap();
-    let tokens = emit_robot(&quote!(Arm), &spec(&on, ExactAngles::Within(1e-9))).unwrap().to_string();
+    let tokens = emit_robot(&quote!(Arm), &spec(&on)).unwrap().to_string();
     assert_eq!(
         reference_call(&tokens),
         "parse_source_with (\"arm.urdf\" , \"text\" , :: kinematics :: model :: ExactAngles :: Within (0.000000001f64)"
@@ -54,20 +52,9 @@ fn reference_loads_with_the_trees_policy() {
 }
 
 #[test]
-fn a_policy_other_than_the_trees_is_refused() {
-    let off = kinematics_model::parse_source_with("arm.urdf", ARM, ExactAngles::Off).unwrap();
-    let e = emit_robot(&quote!(Arm), &spec(&off, ExactAngles::default())).unwrap_err();
-    assert!(matches!(e, CompileError::ExactnessMismatch { .. }), "{e}");
-    assert_eq!(
-        e.to_string(),
-        "robot `arm`: the exactness policy asked for (Within(1e-9)) is not the one the robot was loaded with (Off)"
-    );
-}
-
-#[test]
 fn generics_go_on_both_impls_and_nowhere_else() {
     let tree = kinematics_model::parse_source("arm.urdf", ARM).unwrap();
-    let mut spec = spec(&tree, tree.exact_angles());
+    let mut spec = spec(&tree);
     spec.impl_generics = quote!(<'a, T: Clone, const N: usize>);
     spec.where_clause = quote!(where T: Default);
     let tokens = emit_robot(&quote!(Arm<'a, T, N>), &spec).unwrap().to_string();

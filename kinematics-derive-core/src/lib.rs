@@ -74,7 +74,6 @@ fn expand_options(
         krate,
         source_label: loaded.label.clone(),
         source_text: loaded.text_expr.clone(),
-        exact_angles: loaded.tree.exact_angles(),
         impl_generics: quote!(#impl_generics),
         where_clause: quote!(#where_clause),
     };

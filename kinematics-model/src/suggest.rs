@@ -45,12 +45,24 @@ impl KinematicTree {
     }
 }
 
+/// Names longer than this (in characters) get no suggestion: the edit distance costs the product of the two
+/// lengths, and a name this long is no typo of a link name.
+const LONGEST_SUGGESTED: usize = 256;
+
 /// The name in `candidates` closest to `wrong`, if it is close enough to be a likely typo.
 fn closest<'a>(wrong: &str, candidates: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
+    let chars = |s: &str| s.chars().count();
+    let wrong_chars = chars(wrong);
+    if wrong_chars > LONGEST_SUGGESTED {
+        return None;
+    }
+    let allowed = |c: &str| 2.max(c.len() / 4);
     candidates
         .into_iter()
+        // The distance is at least the difference of the lengths: skip what cannot be close.
+        .filter(|c| c.len() <= 4 * LONGEST_SUGGESTED && chars(c).abs_diff(wrong_chars) <= allowed(c))
         .map(|c| (distance(wrong, c), c))
-        .filter(|&(d, c)| d <= 2.max(c.len() / 4))
+        .filter(|&(d, c)| d <= allowed(c))
         .min_by_key(|&(d, _)| d)
         .map(|(_, c)| c)
 }
@@ -73,6 +85,14 @@ fn distance(a: &str, b: &str) -> usize {
 
 #[cfg(test)]
 mod tests {
+    #[test]
+    fn long_names_cost_nothing_and_get_no_suggestion() {
+        let long = "l".repeat(100_000);
+        let longer = format!("{long}x");
+        assert_eq!(super::closest(&longer, [long.as_str(), "link1"]), None);
+        assert_eq!(super::closest("link", [long.as_str(), "link1"]), Some("link1"));
+    }
+
     #[test]
     fn suggests_near_misses_only() {
         let links = ["base_link", "tool0", "wrist_3_link"];
