@@ -55,7 +55,12 @@ pub fn recognised_angles(tree: &KinematicTree) -> String {
     }
     let mut out = format!("exact angles: {} changed (written -> exact, change)\n", angles.len());
     for a in angles {
-        out += &format!("  joint `{}`: {} -> {} ({:+.2e} rad)\n", a.joint, a.written, a.exact, a.change());
+        // The f64 nearest to the exact angle differs from it by less than the change can show.
+        let change = match a.change() {
+            0.0 => "the nearest f64 to it".to_owned(),
+            change => format!("{change:+.2e} rad"),
+        };
+        out += &format!("  joint `{}`: {} -> {} ({change})\n", a.joint, a.written, a.exact);
     }
     out
 }

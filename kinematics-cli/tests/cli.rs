@@ -539,6 +539,14 @@ fn inspect_lists_the_angles_the_exactness_policy_changed() {
     assert!(!out.contains("1.5708 ->"), "{out}");
     let exact = ok(&["inspect", "robots/planar_3r.toml"]);
     assert!(exact.contains("exact angles: none changed\n"), "{exact}");
+    // The shortest decimal of the f64 nearest to pi/2 changes by less than an f64 can show.
+    let ur5 = ok(&["inspect", "robots/ur5.urdf"]);
+    assert!(
+        ur5.contains("  joint `shoulder_lift_joint`: 1.5707963267948966 -> pi/2 (the nearest f64 to it)\n"),
+        "{ur5}"
+    );
+    let off = ok(&["--exact-angles", "off", "inspect", "robots/ur5.urdf"]);
+    assert!(off.contains("exact angles: off (every angle as written)\n"), "{off}");
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
