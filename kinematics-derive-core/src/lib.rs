@@ -40,7 +40,14 @@ pub fn expand(input: TokenStream) -> TokenStream {
     match (errors.finish(), robot) {
         (Ok(()), Some(robot)) => robot,
         (result, _) => {
-            let errors = result.err().map(darling::Error::write_errors).unwrap_or_default();
+            // No robot means a fault was recorded; if none was, say so rather than emit a stub
+            // that compiles into functions that never return.
+            let errors = match result {
+                Err(errors) => errors.write_errors(),
+                Ok(()) => quote!(::core::compile_error!(
+                    "kinematics derive: internal error: no code and no fault (the derive's invariant broke; please report)"
+                );),
+            };
             let stub = fallback::stub(&input, options.as_ref(), known);
             quote!(#errors #stub)
         }

@@ -222,7 +222,8 @@ impl DhTable {
         for (i, row) in self.joints.iter().enumerate() {
             let element = Element::DhRow { row: i + 1, joint: row.name.clone() };
             let link = row.link.clone().unwrap_or_else(|| format!("link{}", i + 1));
-            let parent = links.last().cloned().unwrap_or_default();
+            // `links` starts with the base link and grows by one per row.
+            let parent = links[links.len() - 1].clone();
             let first = if i == 0 { base.clone() } else { FixedTransform::identity() };
             let (origin, after_motion) = self.row_transforms(row, &element, first)?;
             joints.push(JointDescription {
@@ -249,7 +250,7 @@ impl DhTable {
                 name: format!("{}_joint", tool.name),
                 element: Element::DhSection("tool"),
                 kind: JointTypeDescription::Fixed,
-                parent: links.last().cloned().unwrap_or_default(),
+                parent: links[links.len() - 1].clone(),
                 child: tool.name.clone(),
                 origin,
                 after_motion: FixedTransform::identity(),

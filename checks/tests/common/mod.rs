@@ -6,10 +6,11 @@ use kinematics::model::KinematicTree;
 use nalgebra::{Isometry3, Matrix3};
 use proptest::prelude::*;
 
-/// f64 agreement, relative to the robot's reach (metres) and absolute for rotation entries.
-pub const F64_TOLERANCE: f64 = 1e-12;
+/// f64 agreement, relative to the robot's reach (metres) and absolute for rotation entries: the
+/// project's one tolerance.
+pub use kinematics::AGREEMENT_TOLERANCE as F64_TOLERANCE;
 /// f32 agreement, the same way.
-pub const F32_TOLERANCE: f64 = 1e-5;
+pub use kinematics::AGREEMENT_TOLERANCE_F32 as F32_TOLERANCE;
 pub const CASES: u32 = 10_000;
 
 pub fn robot_path(file: &str) -> String {
