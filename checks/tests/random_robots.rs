@@ -8,8 +8,6 @@ use kinematics::{AGREEMENT_TOLERANCE, Pose, ReferenceFk};
 use kinematics_compiler::{Request, compile};
 use proptest::prelude::*;
 
-/// Agreement relative to the robot's size (metres); rotation entries absolute.
-
 fn exact_or_numeric_angle() -> impl Strategy<Value = Value> {
     prop_oneof![
         3 => prop::sample::select(vec!["0", "pi/2", "-pi/2", "pi", "-pi", "pi/4"]).prop_map(|s| Value::Text(s.to_owned())),
