@@ -34,7 +34,13 @@ pub fn expand(input: TokenStream) -> TokenStream {
         }
         Err(e) => {
             errors.push(e);
-            (None, None, None)
+            // A key darling cannot read fails the whole attribute; the description may still be
+            // readable, and its faults belong beside that key's (the stub gets its sizes too).
+            let loaded = match options::DescriptionKeys::from_derive_input(&input) {
+                Ok(keys) if keys.names_a_description() => errors.handle(source::load(&keys.source())),
+                _ => None,
+            };
+            (None, loaded.as_ref().map(known), None)
         }
     };
     match (errors.finish(), robot) {
@@ -54,6 +60,11 @@ pub fn expand(input: TokenStream) -> TokenStream {
     }
 }
 
+/// What the stub needs to know of a loaded robot.
+fn known(loaded: &source::Loaded) -> fallback::Known {
+    fallback::Known { dof: loaded.tree.dof(), links: loaded.tree.links().len().saturating_sub(1) }
+}
+
 /// Loads the description, checks the options and emits the robot, gathering every fault in
 /// `errors` (the load errors and the option errors side by side): the robot if there was none,
 /// and what is known of it for the stub otherwise.
@@ -61,10 +72,9 @@ fn expand_options(
     options: &KinematicsInput,
     errors: &mut darling::error::Accumulator,
 ) -> (Option<fallback::Known>, Option<TokenStream>) {
-    let loaded = errors.handle(source::load(options));
+    let loaded = errors.handle(source::load(&options.source()));
     let scalars = errors.handle(options.scalars());
-    let known =
-        loaded.as_ref().map(|l| fallback::Known { dof: l.tree.dof(), links: l.tree.links().len().saturating_sub(1) });
+    let known = loaded.as_ref().map(known);
     let (Some(loaded), Some(scalars)) = (loaded, scalars) else { return (known, None) };
     let krate = match &options.krate {
         Some(path) => quote!(#path),

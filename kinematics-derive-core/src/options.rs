@@ -47,7 +47,7 @@ pub struct KinematicsInput {
     #[darling(default)]
     pub scalars: Option<SpannedValue<PathList>>,
     /// `exact_angles = false`: read every decimal angle as written (default `true`: angles within
-    /// 1e-9 rad of a multiple of pi/2 are that multiple; see `kinematics_model::exactness`).
+    /// 1e-8 rad of a multiple of pi/2 are that multiple; see `kinematics_model::exactness`).
     #[darling(default)]
     pub exact_angles: Option<Switch>,
     /// `crate = "path"` for a renamed dependency.
@@ -55,21 +55,102 @@ pub struct KinematicsInput {
     pub krate: Option<syn::Path>,
 }
 
+/// What [`crate::source::load`] needs: the keys that name the description, its exactness policy
+/// and the links asked for.
+#[derive(Debug)]
+pub struct SourceOptions<'a> {
+    /// The struct (errors with no key of their own are spanned on it).
+    pub ident: &'a syn::Ident,
+    /// `urdf = "path"`.
+    pub urdf: Option<&'a SpannedValue<String>>,
+    /// `dh = ...`.
+    pub dh: Option<&'a SpannedValue<DhSource>>,
+    /// `base = "link"`.
+    pub base: Option<&'a SpannedValue<String>>,
+    /// `tip` and `tips`, in that order.
+    pub tips: Vec<SpannedValue<String>>,
+    /// `exact_angles`.
+    pub exact_angles: ExactAngles,
+}
+
+/// `tip` then the entries of `tips`.
+fn all_tips(tip: Option<&SpannedValue<String>>, tips: Option<&Tips>) -> Vec<SpannedValue<String>> {
+    let mut all: Vec<SpannedValue<String>> = tip.into_iter().cloned().collect();
+    if let Some(list) = tips {
+        all.extend(list.0.iter().cloned());
+    }
+    all
+}
+
+/// `exact_angles = true` (the default) or `false`.
+fn policy(switch: Option<Switch>) -> ExactAngles {
+    match switch {
+        Some(Switch(on)) => ExactAngles::on(on),
+        None => ExactAngles::default(),
+    }
+}
+
+/// The keys [`SourceOptions`] holds, read on their own with every other key skipped. When a key
+/// darling cannot read fails the whole attribute, the description is still read with these, so its
+/// faults are reported beside that key's instead of after it is fixed.
+#[derive(Debug, FromDeriveInput)]
+#[darling(attributes(kinematics), supports(struct_any), allow_unknown_fields)]
+pub struct DescriptionKeys {
+    ident: syn::Ident,
+    #[darling(default)]
+    urdf: Option<SpannedValue<String>>,
+    #[darling(default)]
+    dh: Option<SpannedValue<DhSource>>,
+    #[darling(default)]
+    base: Option<SpannedValue<String>>,
+    #[darling(default)]
+    tip: Option<SpannedValue<String>>,
+    #[darling(default)]
+    tips: Option<Tips>,
+    #[darling(default)]
+    exact_angles: Option<Switch>,
+}
+
+impl DescriptionKeys {
+    /// Whether a description is named at all (a misspelt `urdf` or `dh` is the other key's fault,
+    /// not a second one to report).
+    pub fn names_a_description(&self) -> bool {
+        self.urdf.is_some() || self.dh.is_some()
+    }
+
+    /// What loading needs.
+    pub fn source(&self) -> SourceOptions<'_> {
+        SourceOptions {
+            ident: &self.ident,
+            urdf: self.urdf.as_ref(),
+            dh: self.dh.as_ref(),
+            base: self.base.as_ref(),
+            tips: all_tips(self.tip.as_ref(), self.tips.as_ref()),
+            exact_angles: policy(self.exact_angles),
+        }
+    }
+}
+
 impl KinematicsInput {
     /// The tip links, from `tip` or `tips`.
     pub fn tips(&self) -> Vec<SpannedValue<String>> {
-        let mut tips: Vec<SpannedValue<String>> = self.tip.iter().cloned().collect();
-        if let Some(list) = &self.tips {
-            tips.extend(list.0.iter().cloned());
-        }
-        tips
+        all_tips(self.tip.as_ref(), self.tips.as_ref())
     }
 
     /// The exactness policy: `exact_angles = true` (the default) or `false`.
     pub fn exact_angles(&self) -> ExactAngles {
-        match self.exact_angles {
-            Some(Switch(on)) => ExactAngles::on(on),
-            None => ExactAngles::default(),
+        policy(self.exact_angles)
+    }
+
+    /// What loading needs.
+    pub fn source(&self) -> SourceOptions<'_> {
+        SourceOptions {
+            ident: &self.ident,
+            urdf: self.urdf.as_ref(),
+            dh: self.dh.as_ref(),
+            base: self.base.as_ref(),
+            tips: self.tips(),
+            exact_angles: self.exact_angles(),
         }
     }
 

@@ -10,7 +10,7 @@ use proc_macro2::{Span, TokenStream};
 use quote::quote;
 
 use crate::inline_dh::{InlineDh, LABEL};
-use crate::options::{DhSource, KinematicsInput};
+use crate::options::{DhSource, SourceOptions};
 
 /// A description, read and validated.
 pub struct Loaded {
@@ -27,9 +27,9 @@ pub struct Loaded {
 }
 
 /// Reads the description, checks the tree, base and tips; all faults together.
-pub fn load(options: &KinematicsInput) -> darling::Result<Loaded> {
-    let exact_angles = options.exact_angles();
-    let loaded = match (&options.urdf, &options.dh) {
+pub fn load(options: &SourceOptions<'_>) -> darling::Result<Loaded> {
+    let exact_angles = options.exact_angles;
+    let loaded = match (options.urdf, options.dh) {
         (Some(path), None) => from_file(path, SourceKind::Urdf, exact_angles)?,
         (None, Some(dh)) => match dh.as_ref() {
             DhSource::File(path) => {
@@ -44,13 +44,13 @@ pub fn load(options: &KinematicsInput) -> darling::Result<Loaded> {
             return Err(Error::custom(
                 "name the robot's description: `urdf = \"path\"`, `dh = \"path\"` or an inline `dh(...)` table",
             )
-            .with_span(&options.ident));
+            .with_span(options.ident));
         }
     };
     let mut errors = Error::accumulator();
     let mut links: Vec<(&'static str, SpannedValue<String>)> =
-        options.base.iter().map(|b| ("base", b.clone())).collect();
-    links.extend(options.tips().into_iter().map(|t| ("tip", t)));
+        options.base.iter().map(|&b| ("base", b.clone())).collect();
+    links.extend(options.tips.iter().map(|t| ("tip", t.clone())));
     for (role, link) in &links {
         if let Err(e) = loaded.tree.find_link(role, link) {
             errors.push(Error::custom(format!("{}: {e}", loaded.written)).with_span(&link.span()));

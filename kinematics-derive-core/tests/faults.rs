@@ -56,6 +56,31 @@ fn a_fault_leaves_a_stub_with_the_names_the_attribute_implies() {
 }
 
 #[test]
+fn a_key_darling_cannot_read_does_not_hide_the_descriptions_faults() {
+    // `positions = "yes"` fails the whole attribute; the file and the tip are still checked.
+    let out = expand(quote! {
+        #[kinematics(dh = "../robots/planar_2r.toml", tip = "link9", positions = "yes")]
+        struct Arm;
+    });
+    let found = errors(&out);
+    assert_eq!(found.len(), 2, "{found:#?}");
+    assert!(found.iter().any(|e| e.contains("tip link `link9` does not exist")), "{found:#?}");
+    let out = expand(quote! {
+        #[kinematics(urdf = "no_such_robot.urdf", scalars = "f64")]
+        struct Arm;
+    });
+    let found = errors(&out);
+    assert_eq!(found.len(), 2, "{found:#?}");
+    assert!(found.iter().any(|e| e.starts_with("no_such_robot.urdf: cannot read the file")), "{found:#?}");
+    // A misspelt description key is one fault, not two.
+    let out = expand(quote! {
+        #[kinematics(dhh = "../robots/planar_2r.toml")]
+        struct Arm;
+    });
+    assert_eq!(errors(&out).len(), 1, "{out}");
+}
+
+#[test]
 fn an_unreadable_attribute_still_leaves_a_stub() {
     let out = expand(quote! {
         #[kinematics(dh = "../robots/planar_2r.toml", tip = "link2", positions = "yes", crate = "kin")]
