@@ -116,7 +116,7 @@ mod tests {
             struct Robot;
         ))
         .unwrap();
-        super::load(&KinematicsInput::from_derive_input(&input)?)
+        super::load(&KinematicsInput::from_derive_input(&input)?.source())
     }
 
     /// The number of angles the loaded tree recognised as exact.
