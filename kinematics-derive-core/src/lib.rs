@@ -37,7 +37,7 @@ pub fn expand(input: TokenStream) -> TokenStream {
             // A key darling cannot read fails the whole attribute; the description may still be
             // readable, and its faults belong beside that key's (the stub gets its sizes too).
             let loaded = match options::DescriptionKeys::from_derive_input(&input) {
-                Ok(keys) if keys.names_a_description() => errors.handle(source::load(&keys.source())),
+                Ok(keys) if keys.names_a_description() => read_and_check(&keys.source(), &mut errors).0,
                 _ => None,
             };
             (None, loaded.as_ref().map(known), None)
@@ -60,6 +60,18 @@ pub fn expand(input: TokenStream) -> TokenStream {
     }
 }
 
+/// Reads the description and checks the links asked for, each fault into `errors`: the robot if
+/// it could be read (so the stub knows its sizes even when a link name is wrong), and whether the
+/// links are all there.
+fn read_and_check(
+    options: &options::SourceOptions<'_>,
+    errors: &mut darling::error::Accumulator,
+) -> (Option<source::Loaded>, bool) {
+    let loaded = errors.handle(source::read(options));
+    let links_ok = loaded.as_ref().is_some_and(|l| errors.handle(source::check_links(l, options)).is_some());
+    (loaded, links_ok)
+}
+
 /// What the stub needs to know of a loaded robot.
 fn known(loaded: &source::Loaded) -> fallback::Known {
     fallback::Known { dof: loaded.tree.dof(), links: loaded.tree.links().len().saturating_sub(1) }
@@ -72,10 +84,10 @@ fn expand_options(
     options: &KinematicsInput,
     errors: &mut darling::error::Accumulator,
 ) -> (Option<fallback::Known>, Option<TokenStream>) {
-    let loaded = errors.handle(source::load(&options.source()));
+    let (loaded, links_ok) = read_and_check(&options.source(), errors);
     let scalars = errors.handle(options.scalars());
     let known = loaded.as_ref().map(known);
-    let (Some(loaded), Some(scalars)) = (loaded, scalars) else { return (known, None) };
+    let (Some(loaded), Some(scalars), true) = (loaded, scalars, links_ok) else { return (known, None) };
     let krate = match &options.krate {
         Some(path) => quote!(#path),
         None => quote!(::kinematics),

@@ -26,8 +26,8 @@ pub struct Loaded {
     pub text_expr: TokenStream,
 }
 
-/// Reads the description, checks the tree, base and tips; all faults together.
-pub fn load(options: &SourceOptions<'_>) -> darling::Result<Loaded> {
+/// Reads the description and checks the tree (not yet the links asked for).
+pub fn read(options: &SourceOptions<'_>) -> darling::Result<Loaded> {
     let exact_angles = options.exact_angles;
     let loaded = match (options.urdf, options.dh) {
         (Some(path), None) => from_file(path, SourceKind::Urdf, exact_angles)?,
@@ -47,6 +47,11 @@ pub fn load(options: &SourceOptions<'_>) -> darling::Result<Loaded> {
             .with_span(options.ident));
         }
     };
+    Ok(loaded)
+}
+
+/// Checks that the base and tips are links of the loaded robot, each fault spanned on its name.
+pub fn check_links(loaded: &Loaded, options: &SourceOptions<'_>) -> darling::Result<()> {
     let mut errors = Error::accumulator();
     let mut links: Vec<(&'static str, SpannedValue<String>)> =
         options.base.iter().map(|&b| ("base", b.clone())).collect();
@@ -56,7 +61,7 @@ pub fn load(options: &SourceOptions<'_>) -> darling::Result<Loaded> {
             errors.push(Error::custom(format!("{}: {e}", loaded.written)).with_span(&link.span()));
         }
     }
-    errors.finish_with(loaded)
+    errors.finish()
 }
 
 fn from_file(path: &SpannedValue<String>, kind: SourceKind, exact_angles: ExactAngles) -> darling::Result<Loaded> {
@@ -116,7 +121,10 @@ mod tests {
             struct Robot;
         ))
         .unwrap();
-        super::load(&KinematicsInput::from_derive_input(&input)?.source())
+        let options = KinematicsInput::from_derive_input(&input)?;
+        let loaded = super::read(&options.source())?;
+        super::check_links(&loaded, &options.source())?;
+        Ok(loaded)
     }
 
     /// The number of angles the loaded tree recognised as exact.

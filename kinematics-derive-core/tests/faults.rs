@@ -81,6 +81,19 @@ fn a_key_darling_cannot_read_does_not_hide_the_descriptions_faults() {
 }
 
 #[test]
+fn a_wrong_link_name_leaves_a_stub_with_the_robots_sizes() {
+    // The description reads; only the tip is wrong: the stub knows the robot has 2 degrees of
+    // freedom and 2 links below the base, so `let [a, b] = Arm::link_poses(&q)` type-checks.
+    let out = expand(quote! {
+        #[kinematics(dh = "../robots/planar_2r.toml", tip = "link9")]
+        struct Arm;
+    });
+    assert_eq!(errors(&out).len(), 1, "{out}");
+    assert!(out.contains("pub const DOF : usize = 2usize"), "{out}");
+    assert!(out.contains("pub fn link_poses < > (q : & [f64 ; 2]) -> [:: kinematics :: Pose < f64 > ; 2]"), "{out}");
+}
+
+#[test]
 fn an_unreadable_attribute_still_leaves_a_stub() {
     let out = expand(quote! {
         #[kinematics(dh = "../robots/planar_2r.toml", tip = "link2", positions = "yes", crate = "kin")]
