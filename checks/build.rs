@@ -39,12 +39,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         let tree = kinematics_model::parse_source(&file, &std::fs::read_to_string(&path)?)?;
         let module = ident(&file);
         let n = tree.dof();
-        let leaves: Vec<String> = tree
-            .links()
-            .iter()
-            .filter(|l| l.child_joints.is_empty() && l.parent_joint.is_some())
-            .map(|l| l.name.clone())
-            .collect();
+        let leaves: Vec<String> = tree.leaves().map(|l| tree.link(l).name.clone()).collect();
         let mut functions = Vec::new();
         let mut tips = String::new();
         for leaf in &leaves {
@@ -183,7 +178,7 @@ fn write_random_robots(out: &Path) -> Result<(), Box<dyn std::error::Error>> {
         };
         writeln!(
             registry,
-            "RandomRobot {{ name: {:?}, file: {:?}, text: {text_expr}, robot: {ty}::ROBOT, base: {ty}::BASE, dof: {ty}::DOF, joint_names: &{ty}::JOINT_NAMES, joint_limits: &{ty}::JOINT_LIMITS, links: &{ty}::LINK_NAMES, tips: &{ty}::TIPS, f64: {}, f32: {}, tip_poses_into: <{ty} as ::kinematics::Kinematics>::tip_poses_into, link_poses_into: <{ty} as ::kinematics::Kinematics>::link_poses_into, reference: {ty}::reference, trait_reference: <{ty} as ::kinematics::Kinematics>::reference, trait_consts: trait_consts::<{ty}> }},",
+            "RandomRobot {{ name: {:?}, file: {:?}, text: {text_expr}, consts: TraitConsts {{ robot: {ty}::ROBOT, base: {ty}::BASE, dof: {ty}::DOF, joint_names: &{ty}::JOINT_NAMES, joint_limits: &{ty}::JOINT_LIMITS, links: &{ty}::LINK_NAMES, tips: &{ty}::TIPS }}, f64: {}, f32: {}, tip_poses_into: <{ty} as ::kinematics::Kinematics>::tip_poses_into, link_poses_into: <{ty} as ::kinematics::Kinematics>::link_poses_into, reference: {ty}::reference, trait_reference: <{ty} as ::kinematics::Kinematics>::reference, trait_consts: trait_consts::<{ty}> }},",
             robot.name,
             robot.file,
             typed(robot.f64, "", "f64"),

@@ -90,7 +90,7 @@ pub struct Typed<T: 'static> {
     pub tip_positions: Option<PositionsFn<T>>,
 }
 
-/// The `Kinematics` trait's constants of one type, read through the trait.
+/// The constants of one compiled type: read through the trait, or the inherent ones.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct TraitConsts {
     /// `Kinematics::ROBOT`.
@@ -130,20 +130,8 @@ pub struct RandomRobot {
     pub file: &'static str,
     /// The description's text, as compiled.
     pub text: &'static str,
-    /// The inherent constants `ROBOT`, `BASE`, `DOF`, `JOINT_NAMES`, `JOINT_LIMITS`, `LINK_NAMES`, `TIPS`.
-    pub robot: &'static str,
-    /// `BASE`.
-    pub base: &'static str,
-    /// `DOF`.
-    pub dof: usize,
-    /// `JOINT_NAMES`.
-    pub joint_names: &'static [&'static str],
-    /// `JOINT_LIMITS`.
-    pub joint_limits: &'static [kinematics::JointLimits],
-    /// `LINK_NAMES`.
-    pub links: &'static [&'static str],
-    /// `TIPS`.
-    pub tips: &'static [&'static str],
+    /// The inherent constants (`Robot::ROBOT`, ...), in the trait's shape.
+    pub consts: TraitConsts,
     /// The `f64` functions.
     pub f64: Option<Typed<f64>>,
     /// The `f32` functions.
@@ -162,7 +150,7 @@ pub struct RandomRobot {
 
 /// The random robots, compiled (`build/random_robots.rs` generates them).
 pub mod random {
-    use super::{RandomRobot, Typed, arr, trait_consts};
+    use super::{RandomRobot, TraitConsts, Typed, arr, trait_consts};
 
     include!(concat!(env!("OUT_DIR"), "/random_robots.rs"));
 }

@@ -110,18 +110,14 @@ fn check_constants(robot: &RandomRobot, tree: &KinematicTree, faults: &mut Fault
     let links: Vec<&str> = tree.links().iter().map(|l| l.name.as_str()).filter(|l| *l != base).collect();
     let tips: Vec<&str> = o.tips.iter().map(String::as_str).collect();
     let checks = [
-        ("ROBOT", robot.robot == tree.name()),
-        ("BASE", robot.base == base),
-        ("DOF", robot.dof == tree.dof()),
-        ("JOINT_NAMES", robot.joint_names == tree.dof_names()),
-        ("JOINT_LIMITS", robot.joint_limits == limits_of(tree)),
-        ("LINK_NAMES", robot.links == links),
-        ("TIPS", robot.tips == tips),
-        ("the trait's constants", {
-            let t = (robot.trait_consts)();
-            (t.robot, t.base, t.dof, t.joint_names, t.joint_limits, t.links, t.tips)
-                == (robot.robot, robot.base, robot.dof, robot.joint_names, robot.joint_limits, robot.links, robot.tips)
-        }),
+        ("ROBOT", robot.consts.robot == tree.name()),
+        ("BASE", robot.consts.base == base),
+        ("DOF", robot.consts.dof == tree.dof()),
+        ("JOINT_NAMES", robot.consts.joint_names == tree.dof_names()),
+        ("JOINT_LIMITS", robot.consts.joint_limits == limits_of(tree)),
+        ("LINK_NAMES", robot.consts.links == links),
+        ("TIPS", robot.consts.tips == tips),
+        ("the trait's constants", (robot.trait_consts)() == robot.consts),
     ];
     for (name, ok) in checks {
         if !ok {
@@ -153,24 +149,24 @@ fn check_robot(robot: &RandomRobot) -> Faults {
     let zero = Pose { rotation: [[0.0; 3]; 3], translation: [0.0; 3] };
     let (tol, tol32) = (AGREEMENT_TOLERANCE, AGREEMENT_TOLERANCE_F32);
     for q in Configurations::new(&tree).take(CASES) {
-        let links = expected(&fk, &q, robot.base, robot.links);
-        let tips = expected(&fk, &q, robot.base, robot.tips);
+        let links = expected(&fk, &q, robot.consts.base, robot.consts.links);
+        let tips = expected(&fk, &q, robot.consts.base, robot.consts.tips);
         if let Some(f) = &robot.f64 {
-            for ((p, e), l) in (f.link_poses)(&q).iter().zip(&links).zip(robot.links) {
+            for ((p, e), l) in (f.link_poses)(&q).iter().zip(&links).zip(robot.consts.links) {
                 faults.check("link_poses", l, p.deviation(e, reach), tol, &q);
             }
             if let Some(positions) = f.link_positions {
-                for ((p, e), l) in positions(&q).iter().zip(&links).zip(robot.links) {
+                for ((p, e), l) in positions(&q).iter().zip(&links).zip(robot.consts.links) {
                     faults.check("link_positions", l, at(*p, e).deviation(e, reach), tol, &q);
                 }
             }
             if let Some(poses) = f.tip_poses {
-                for ((p, e), l) in poses(&q).iter().zip(&tips).zip(robot.tips) {
+                for ((p, e), l) in poses(&q).iter().zip(&tips).zip(robot.consts.tips) {
                     faults.check("tip_pose(s)", l, p.deviation(e, reach), tol, &q);
                 }
             }
             if let Some(positions) = f.tip_positions {
-                for ((p, e), l) in positions(&q).iter().zip(&tips).zip(robot.tips) {
+                for ((p, e), l) in positions(&q).iter().zip(&tips).zip(robot.consts.tips) {
                     faults.check("tip_position(s)", l, at(*p, e).deviation(e, reach), tol, &q);
                 }
             }
@@ -179,48 +175,52 @@ fn check_robot(robot: &RandomRobot) -> Faults {
             // The f32 code is held to its tolerance at the configuration it was given.
             let q32: Vec<f32> = q.iter().map(|&x| x as f32).collect();
             let q64: Vec<f64> = q32.iter().map(|&x| f64::from(x)).collect();
-            let links = expected(&fk, &q64, robot.base, robot.links);
-            let tips = expected(&fk, &q64, robot.base, robot.tips);
-            for ((p, e), l) in (f.link_poses)(&q32).iter().zip(&links).zip(robot.links) {
+            let links = expected(&fk, &q64, robot.consts.base, robot.consts.links);
+            let tips = expected(&fk, &q64, robot.consts.base, robot.consts.tips);
+            for ((p, e), l) in (f.link_poses)(&q32).iter().zip(&links).zip(robot.consts.links) {
                 faults.check("link_poses_f32", l, widen(p).deviation(e, reach), tol32, &q64);
             }
             if let Some(positions) = f.link_positions {
-                for ((p, e), l) in positions(&q32).iter().zip(&links).zip(robot.links) {
+                for ((p, e), l) in positions(&q32).iter().zip(&links).zip(robot.consts.links) {
                     faults.check("link_positions_f32", l, at(p.map(f64::from), e).deviation(e, reach), tol32, &q64);
                 }
             }
             if let Some(poses) = f.tip_poses {
-                for ((p, e), l) in poses(&q32).iter().zip(&tips).zip(robot.tips) {
+                for ((p, e), l) in poses(&q32).iter().zip(&tips).zip(robot.consts.tips) {
                     faults.check("tip_pose(s)_f32", l, widen(p).deviation(e, reach), tol32, &q64);
                 }
             }
             if let Some(positions) = f.tip_positions {
-                for ((p, e), l) in positions(&q32).iter().zip(&tips).zip(robot.tips) {
+                for ((p, e), l) in positions(&q32).iter().zip(&tips).zip(robot.consts.tips) {
                     faults.check("tip_position(s)_f32", l, at(p.map(f64::from), e).deviation(e, reach), tol32, &q64);
                 }
             }
         }
         // The trait's methods, through slices.
-        let mut out = vec![zero; robot.tips.len()];
+        let mut out = vec![zero; robot.consts.tips.len()];
         match (robot.tip_poses_into)(&q, &mut out) {
             Ok(()) => {
-                for ((p, e), l) in out.iter().zip(&tips).zip(robot.tips) {
+                for ((p, e), l) in out.iter().zip(&tips).zip(robot.consts.tips) {
                     faults.check("Kinematics::tip_poses_into", l, p.deviation(e, reach), tol, &q);
                 }
             }
             Err(e) => faults.fail(format!("tip_poses_into fails: {e}")),
         }
-        let mut out = vec![zero; robot.links.len()];
+        let mut out = vec![zero; robot.consts.links.len()];
         match (robot.link_poses_into)(&q, &mut out) {
             Ok(()) => {
-                for ((p, e), l) in out.iter().zip(&links).zip(robot.links) {
+                for ((p, e), l) in out.iter().zip(&links).zip(robot.consts.links) {
                     faults.check("Kinematics::link_poses_into", l, p.deviation(e, reach), tol, &q);
                 }
             }
             Err(e) => faults.fail(format!("link_poses_into fails: {e}")),
         }
         for (name, reference) in &references {
-            for ((p, e), l) in expected(reference, &q, robot.base, robot.links).iter().zip(&links).zip(robot.links) {
+            for ((p, e), l) in expected(reference, &q, robot.consts.base, robot.consts.links)
+                .iter()
+                .zip(&links)
+                .zip(robot.consts.links)
+            {
                 faults.check(name, l, pose_of(p).deviation(e, reach), tol, &q);
             }
         }
@@ -229,17 +229,17 @@ fn check_robot(robot: &RandomRobot) -> Faults {
         }
     }
     // Slices of the wrong length are errors, not panics.
-    let q = vec![0.0; robot.dof + 1];
-    let mut out = vec![zero; robot.links.len()];
+    let q = vec![0.0; robot.consts.dof + 1];
+    let mut out = vec![zero; robot.consts.links.len()];
     if (robot.link_poses_into)(&q, &mut out).is_ok() {
         faults.fail("link_poses_into accepts a q one too long".to_owned());
     }
-    let mut out = vec![zero; robot.links.len() + 1];
-    if (robot.link_poses_into)(&q[..robot.dof], &mut out).is_ok() {
+    let mut out = vec![zero; robot.consts.links.len() + 1];
+    if (robot.link_poses_into)(&q[..robot.consts.dof], &mut out).is_ok() {
         faults.fail("link_poses_into accepts an output one too long".to_owned());
     }
-    let mut out = vec![zero; robot.tips.len() + 1];
-    if (robot.tip_poses_into)(&q[..robot.dof], &mut out).is_ok() {
+    let mut out = vec![zero; robot.consts.tips.len() + 1];
+    if (robot.tip_poses_into)(&q[..robot.consts.dof], &mut out).is_ok() {
         faults.fail("tip_poses_into accepts an output one too long".to_owned());
     }
     faults

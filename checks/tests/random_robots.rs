@@ -131,7 +131,7 @@ fn check(tree: &KinematicTree, q: &[f64]) -> Result<(), TestCaseError> {
     let reach = tree.reach();
     let mut requests = vec![Request::all_links()];
     let last = tree.links().last().map(|l| l.name.clone()).unwrap_or_default();
-    for link in tree.links().iter().filter(|l| l.child_joints.is_empty() && l.parent_joint.is_some()) {
+    for link in tree.leaves().map(|l| tree.link(l)) {
         requests.push(Request::tip(&link.name));
         // Relative to another link, usually on another branch: up to the common ancestor and down.
         requests.push(Request::tip(&link.name).with_base(&last));

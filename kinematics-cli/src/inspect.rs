@@ -2,7 +2,7 @@
 
 use std::io::Write;
 
-use kinematics::model::{Chain, ExactAngles, JointMotion, KinematicTree, LinkId};
+use kinematics::model::{Chain, ExactAngles, JointMotion, KinematicTree};
 
 use crate::error::CliError;
 
@@ -112,14 +112,12 @@ pub fn describe(tree: &KinematicTree) -> String {
     out += &format!("DoF order: {}\n", if dofs.is_empty() { "none".to_owned() } else { dofs.join(", ") });
     out += &recognised_angles(tree);
     out += "chains from the root to each leaf:\n";
-    for (index, link) in tree.links().iter().enumerate() {
-        if !link.child_joints.is_empty() || link.parent_joint.is_none() {
-            continue;
-        }
-        let path = tree.path_from_root(LinkId(index));
+    for leaf in tree.leaves() {
+        let link = tree.link(leaf);
+        let path = tree.path_from_root(leaf);
         let mut names = vec![tree.link(tree.root()).name.as_str()];
         names.extend(path.iter().map(|&j| tree.link(tree.joint(j).child).name.as_str()));
-        let chain = Chain { base: tree.root(), tip: LinkId(index), joints: path.clone() };
+        let chain = Chain { base: tree.root(), tip: leaf, joints: path.clone() };
         let dofs = tree.chain_dofs(&chain);
         let dofs: Vec<String> = dofs.iter().map(|i| format!("q[{i}]")).collect();
         out += &format!(

@@ -71,11 +71,7 @@ fn entries(dir: &Path) -> Vec<String> {
 }
 
 fn leaves(tree: &kinematics::KinematicTree) -> Vec<&str> {
-    tree.links()
-        .iter()
-        .filter(|l| l.child_joints.is_empty() && l.parent_joint.is_some())
-        .map(|l| l.name.as_str())
-        .collect()
+    tree.leaves().map(|l| tree.link(l).name.as_str()).collect()
 }
 
 #[test]

@@ -34,12 +34,7 @@ fn non_finite_token(code: &str, infinite_limits: bool) -> Option<String> {
 fn compile_everything(label: &str, text: &str) -> Result<Vec<String>, String> {
     let tree = parse_source(label, text).map_err(|e| e.to_string())?;
     let mut code = Vec::new();
-    let leaves: Vec<String> = tree
-        .links()
-        .iter()
-        .filter(|l| l.child_joints.is_empty() && l.parent_joint.is_some())
-        .map(|l| l.name.clone())
-        .collect();
+    let leaves: Vec<String> = tree.leaves().map(|l| tree.link(l).name.clone()).collect();
     let last = tree.links().last().map(|l| l.name.clone()).unwrap();
     let mut requests = vec![Request::all_links(), Request::all_links().positions_only()];
     if let Some(leaf) = leaves.first() {

@@ -178,6 +178,21 @@ impl KinematicTree {
         self.dof_joints.iter().map(|&j| self.joint(j).limits).collect()
     }
 
+    /// The leaves: links below the root with no child joint, in depth-first order (the ends of
+    /// the chains; a robot of one link has none).
+    ///
+    /// ```
+    /// let tree = kinematics_model::synthetic::tree(3, 2);
+    /// let leaves: Vec<&str> = tree.leaves().map(|l| tree.link(l).name.as_str()).collect();
+    /// assert_eq!(leaves.len(), 3, "{leaves:?}");
+    /// assert!(tree.leaves().all(|l| tree.link(l).child_joints.is_empty()));
+    /// ```
+    pub fn leaves(&self) -> impl Iterator<Item = LinkId> + '_ {
+        (0..self.links.len())
+            .map(LinkId)
+            .filter(|&l| self.links[l.0].child_joints.is_empty() && self.links[l.0].parent_joint.is_some())
+    }
+
     /// The number of joints from the root down to `link` (the length of
     /// [`KinematicTree::path_from_root`], without building it).
     pub fn depth(&self, link: LinkId) -> usize {
