@@ -76,7 +76,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             };
             writeln!(
                 derived_registry,
-                "DerivedRobot {{ file: {file:?}, how: {how:?}, tips: &{ty}::TIPS, links: &{ty}::LINK_NAMES, tip_poses_into: <{ty} as ::kinematics::Kinematics>::tip_poses_into, link_poses_into: <{ty} as ::kinematics::Kinematics>::link_poses_into, tip_poses_f32: {tips_f32}, reference: <{ty} as ::kinematics::Kinematics>::reference }},"
+                "DerivedRobot {{ file: {file:?}, how: {how:?}, tips: &{ty}::TIPS, links: &{ty}::LINK_NAMES, tip_poses_into: <{ty} as ::kinematics::Kinematics>::tip_poses_into, link_poses_into: <{ty} as ::kinematics::Kinematics>::link_poses_into, tip_poses_f32: {tips_f32}, reference: <{ty} as ::kinematics::ReferenceModel>::reference }},"
             )?;
         }
         let all = compile(&tree, &Request::all_links())?;
@@ -138,6 +138,7 @@ fn write_random_robots(out: &Path) -> Result<(), Box<dyn std::error::Error>> {
             positions: robot.positions,
             scalars: Scalars { f64: robot.f64, f32: robot.f32 },
             krate: "::kinematics".parse()?,
+            trig: kinematics_compiler::emit::Trig::Fast,
             source_label: robot.file.clone(),
             source_text: text_expr.parse()?,
             impl_generics: "".parse()?,
@@ -178,7 +179,7 @@ fn write_random_robots(out: &Path) -> Result<(), Box<dyn std::error::Error>> {
         };
         writeln!(
             registry,
-            "RandomRobot {{ name: {:?}, file: {:?}, text: {text_expr}, consts: TraitConsts {{ robot: {ty}::ROBOT, base: {ty}::BASE, dof: {ty}::DOF, joint_names: &{ty}::JOINT_NAMES, joint_limits: &{ty}::JOINT_LIMITS, links: &{ty}::LINK_NAMES, tips: &{ty}::TIPS }}, f64: {}, f32: {}, tip_poses_into: <{ty} as ::kinematics::Kinematics>::tip_poses_into, link_poses_into: <{ty} as ::kinematics::Kinematics>::link_poses_into, reference: {ty}::reference, trait_reference: <{ty} as ::kinematics::Kinematics>::reference, trait_consts: trait_consts::<{ty}> }},",
+            "RandomRobot {{ name: {:?}, file: {:?}, text: {text_expr}, consts: TraitConsts {{ robot: {ty}::ROBOT, base: {ty}::BASE, dof: {ty}::DOF, joint_names: &{ty}::JOINT_NAMES, joint_limits: &{ty}::JOINT_LIMITS, links: &{ty}::LINK_NAMES, tips: &{ty}::TIPS }}, f64: {}, f32: {}, tip_poses_into: <{ty} as ::kinematics::Kinematics>::tip_poses_into, link_poses_into: <{ty} as ::kinematics::Kinematics>::link_poses_into, reference: {ty}::reference, trait_reference: <{ty} as ::kinematics::ReferenceModel>::reference, trait_consts: trait_consts::<{ty}> }},",
             robot.name,
             robot.file,
             typed(robot.f64, "", "f64"),

@@ -33,16 +33,67 @@
 //! assert!((tip.translation.x - 2.224455).abs() < 1e-6 && (tip.translation.y + 0.086824).abs() < 1e-6);
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
+//!
+//! # Features
+//!
+//! - `std` (default): the runtime reference, the model, file loading, nalgebra conversions of
+//!   [`Pose`] and `trig = "std"`. Without it the crate is `#![no_std]` and a derived robot needs
+//!   nothing but [`kinematics_core`] (no allocation, no XML, TOML, JSON or nalgebra code).
+//! - `rayon`: [`parallel::batch`], batches split across cores.
+//!
+//! Generated code reaches what it needs through one path, `kinematics::__private` (hidden from
+//! the docs, not for users: it may change with the code generator).
+#![cfg_attr(not(feature = "std"), no_std)]
 
-pub use kinematics_derive::Kinematics;
-pub use kinematics_model as model;
-pub use kinematics_model::{ExactAngles, KinematicTree, LoadError, LoadErrorKind};
-pub use kinematics_runtime as runtime;
-pub use kinematics_runtime::{
-    AGREEMENT_TOLERANCE, AGREEMENT_TOLERANCE_F32, Configurations, JointLimits, Kinematics, Pose, Real, ReferenceFk,
-    RuntimeError,
+pub use kinematics_core::{
+    AGREEMENT_TOLERANCE, AGREEMENT_TOLERANCE_F32, F32x8, F64x4, JointLimits, Kinematics, KinematicsError, LaneValue,
+    Lanes, Pose, Real, trig,
 };
+pub use kinematics_derive::Kinematics;
 
+#[cfg(feature = "std")]
+pub use kinematics_core::StdTrig;
+#[cfg(feature = "std")]
+pub use kinematics_model as model;
+#[cfg(feature = "std")]
+pub use kinematics_model::{ExactAngles, KinematicTree, LoadError, LoadErrorKind};
+#[cfg(feature = "std")]
+pub use kinematics_runtime as runtime;
+#[cfg(feature = "std")]
+pub use kinematics_runtime::{Configurations, ReferenceFk, ReferenceModel, RuntimeError};
+
+#[cfg(feature = "rayon")]
+pub mod parallel;
+
+/// What generated code calls: the core crate, and with `std` the loader and the reference.
+/// Not for users; it changes with the code generator.
+#[doc(hidden)]
+pub mod __private {
+    pub use crate::__kinematics_with_std as with_std;
+    pub use kinematics_core::*;
+    #[cfg(feature = "std")]
+    pub use kinematics_model::{ExactAngles, LoadError, parse_source_with};
+    #[cfg(feature = "std")]
+    pub use kinematics_runtime::{ReferenceFk, ReferenceModel};
+}
+
+/// Its input with the `std` feature, nothing without: generated code wraps `reference()` in it.
+#[cfg(feature = "std")]
+#[doc(hidden)]
+#[macro_export]
+macro_rules! __kinematics_with_std {
+    ($($code:tt)*) => { $($code)* };
+}
+
+/// Its input with the `std` feature, nothing without: generated code wraps `reference()` in it.
+#[cfg(not(feature = "std"))]
+#[doc(hidden)]
+#[macro_export]
+macro_rules! __kinematics_with_std {
+    ($($code:tt)*) => {};
+}
+
+#[cfg(feature = "std")]
 /// Reads and validates a robot description file: `.urdf`/`.xml` (URDF), `.toml` or `.json` (DH table).
 ///
 /// Errors name the file as given, the element (joint, link, DH row) and the fault. Decimal angles
@@ -64,6 +115,7 @@ pub fn load(path: impl AsRef<std::path::Path>) -> Result<KinematicTree, LoadErro
 /// assert!(off.recognised_angles().is_empty());
 /// # Ok::<(), kinematics::LoadError>(())
 /// ```
+#[cfg(feature = "std")]
 pub fn load_with(path: impl AsRef<std::path::Path>, exact_angles: ExactAngles) -> Result<KinematicTree, LoadError> {
     let path = path.as_ref();
     let label = path.display().to_string();

@@ -51,7 +51,7 @@ fn unreachable_len(got: usize, expected: usize) -> ! {
 }
 
 /// `Kinematics::tip_poses_into` and `link_poses_into`.
-pub type PosesInto = fn(&[f64], &mut [Pose<f64>]) -> Result<(), kinematics::RuntimeError>;
+pub type PosesInto = fn(&[f64], &mut [Pose<f64>]) -> Result<(), kinematics::KinematicsError>;
 
 /// One robot compiled by `#[derive(Kinematics)]`, reached through the `Kinematics` trait.
 pub struct DerivedRobot {

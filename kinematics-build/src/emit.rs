@@ -7,6 +7,7 @@
 //! the file is self-contained. A build script asks cargo to rerun when the description changes
 //! (`cargo:rerun-if-changed`, printed by `Robot::write_to_out_dir`).
 
+use kinematics_compiler::emit::Trig;
 use kinematics_compiler::robot::{RobotSpec, Scalars, emit_robot};
 use proc_macro2::{Literal, TokenStream};
 use quote::quote;
@@ -30,6 +31,8 @@ pub(crate) struct Emit<'a> {
     pub f32: bool,
     /// Path of the `kinematics` crate.
     pub crate_path: &'a str,
+    /// Which sine and cosine the code calls.
+    pub trig: Trig,
 }
 
 /// The formatted Rust source: a header comment, then the struct and its impls.
@@ -48,6 +51,7 @@ pub(crate) fn emit_source(emit: &Emit<'_>) -> Result<String, BuildError> {
         positions: emit.positions,
         scalars: Scalars { f64: true, f32: emit.f32 },
         krate: quote!(#krate),
+        trig: emit.trig,
         source_label: loaded.reference_label.clone(),
         source_text: quote!(#text),
         impl_generics: TokenStream::new(),

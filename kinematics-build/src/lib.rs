@@ -49,6 +49,7 @@ mod source;
 mod write;
 
 pub use emit::default_struct_name;
+pub use kinematics_compiler::emit::Trig;
 pub use error::BuildError;
 pub use links::find_link;
 pub use robot::Robot;

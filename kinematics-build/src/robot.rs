@@ -2,6 +2,7 @@
 
 use std::path::{Path, PathBuf};
 
+use kinematics_compiler::emit::Trig;
 use kinematics_model::{ExactAngles, SourceKind};
 
 use crate::emit::{Emit, default_struct_name, emit_source};
@@ -22,6 +23,7 @@ use crate::write::write_atomic;
 /// | `scalars(f64, f32)` | [`Robot::f32`] |
 /// | `crate = "path"` | [`Robot::crate_path`] |
 /// | `exact_angles = false` | [`Robot::exact_angles`] |
+/// | `trig = "std"` | [`Robot::trig`] |
 ///
 /// plus [`Robot::struct_name`] (default: the robot's name in UpperCamelCase, see
 /// [`default_struct_name`]). Paths are relative to `CARGO_MANIFEST_DIR` (the directory of the
@@ -39,6 +41,7 @@ pub struct Robot {
     struct_name: Option<String>,
     crate_path: String,
     exact_angles: bool,
+    trig: Trig,
 }
 
 impl Robot {
@@ -54,6 +57,7 @@ impl Robot {
             struct_name: None,
             crate_path: "::kinematics".to_owned(),
             exact_angles: true,
+            trig: Trig::Fast,
         }
     }
 
@@ -126,7 +130,15 @@ impl Robot {
         self
     }
 
-    /// Whether decimal angles within 1e-9 rad of a multiple of pi/2 are read as that multiple
+    /// Which sine and cosine the code calls: ours ([`Trig::Fast`], the default: every angle of a
+    /// function in one call, side by side in SIMD lanes) or the platform's ([`Trig::Std`], one call
+    /// per angle; the user's crate then needs the `kinematics` crate's `std` feature).
+    pub fn trig(mut self, trig: Trig) -> Self {
+        self.trig = trig;
+        self
+    }
+
+    /// Whether decimal angles within 1e-8 rad of a multiple of pi/2 are read as that multiple
     /// (`true`, the default; see `kinematics_model::exactness`) or every angle as written
     /// (`false`). The generated `reference()` loads the description with the same policy.
     pub fn exact_angles(mut self, on: bool) -> Self {
@@ -166,6 +178,7 @@ impl Robot {
             positions: self.positions,
             f32: self.f32,
             crate_path: &self.crate_path,
+            trig: self.trig,
         })
     }
 

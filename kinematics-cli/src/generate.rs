@@ -2,7 +2,7 @@
 
 use std::io::Write;
 
-use kinematics_build::Robot;
+use kinematics_build::{Robot, Trig};
 
 use crate::error::CliError;
 
@@ -26,15 +26,33 @@ pub struct Args {
     /// Also generate `f32` functions.
     #[arg(long)]
     f32: bool,
+    /// Which sine and cosine the code calls: `fast` (ours, every angle in one call) or `std` (the
+    /// platform's, one call per angle).
+    #[arg(long, value_enum, default_value_t = TrigArg::Fast)]
+    trig: TrigArg,
     /// Write to this file (atomically) instead of standard output.
     #[arg(short, long)]
     output: Option<std::path::PathBuf>,
 }
 
+/// `--trig`.
+#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum TrigArg {
+    /// Ours (the default).
+    Fast,
+    /// The platform's.
+    Std,
+}
+
 /// The builder for these arguments: the file relative to the current directory.
 pub fn builder(args: &Args) -> Robot {
     let mut robot =
-        Robot::file(&args.file).manifest_dir(".").tips(&args.tip).exact_angles(crate::robot::exact_angles_on());
+        Robot::file(&args.file).manifest_dir(".").tips(&args.tip).exact_angles(crate::robot::exact_angles_on()).trig(
+            match args.trig {
+                TrigArg::Fast => Trig::Fast,
+                TrigArg::Std => Trig::Std,
+            },
+        );
     if let Some(base) = &args.base {
         robot = robot.base(base);
     }

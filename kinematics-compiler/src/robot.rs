@@ -13,7 +13,7 @@ use kinematics_model::{ExactAngles, KinematicTree};
 use proc_macro2::{Literal, TokenStream};
 use quote::{format_ident, quote};
 
-use crate::emit::{EmitOptions, emit_function};
+use crate::emit::{EmitOptions, Trig, emit_function};
 use crate::error::CompileError;
 use crate::request::{Request, compile};
 
@@ -45,8 +45,11 @@ pub struct RobotSpec<'a> {
     pub positions: bool,
     /// Scalar types.
     pub scalars: Scalars,
-    /// Path to the `kinematics` crate in the user's crate (usually `::kinematics`).
+    /// Path to the `kinematics` crate in the user's crate (usually `::kinematics`); generated code
+    /// reaches everything through its `__private` module.
     pub krate: TokenStream,
+    /// Which sine and cosine the code calls.
+    pub trig: Trig,
     /// The description's name in messages (the path as the user wrote it).
     pub source_label: String,
     /// An expression of type `&'static str` holding the description's text (e.g. `include_str!`).
@@ -64,9 +67,18 @@ fn strs(names: &[String]) -> TokenStream {
 
 /// The robot's constants and functions on `self_ty` (the type with its generic arguments, such as
 /// `Arm<'a, T, N>`) and `impl Kinematics` for it, in an anonymous `const _: () = { ... };` block.
+///
+/// Every computation (`tip_pose`, `link_poses`, ...) comes as one generic body (a free function
+/// in the block) and, on the type: a typed function per scalar (`tip_pose`, `tip_pose_f32`), the
+/// generic one for any `Real` type (`tip_pose_generic`: lanes,
+/// dual numbers), and a batch per scalar over slices of configurations, four (`f64`) or eight
+/// (`f32`) configurations per call in SIMD lanes (`tip_pose_batch`, `tip_pose_batch_f32`).
+/// `reference()` and `impl ReferenceModel` are wrapped in the facade's `with_std!`, so they exist
+/// only with its `std` feature.
 pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenStream, CompileError> {
     let tree = spec.tree;
     let krate = &spec.krate;
+    let p = quote!(#krate::__private);
     let base = spec.base.clone().unwrap_or_else(|| tree.link(tree.root()).name.clone());
     let all = compile(tree, &Request { base: Some(base.clone()), tips: Vec::new(), position_only: false })?;
     let n = tree.dof();
@@ -82,42 +94,73 @@ pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenSt
                 Some(l) => (number(l.lower), number(l.upper)),
                 None => (quote!(-::core::primitive::f64::INFINITY), quote!(::core::primitive::f64::INFINITY)),
             };
-            quote!(#krate::JointLimits { lower: #lo, upper: #hi })
+            quote!(#p::JointLimits { lower: #lo, upper: #hi })
         })
         .collect();
 
-    let private = |name: &str| EmitOptions { name: name.to_owned(), krate: krate.clone(), public: false };
+    let trig = spec.trig;
+    let bound = trig.bound(&p);
+    let private = |name: &str| EmitOptions { name: name.to_owned(), private: p.clone(), public: false, trig };
     let mut generic = vec![emit_function(&all, &private("generic_link_poses"))];
     let mut typed = Vec::new();
-    let scalars: Vec<(&str, TokenStream)> = [(spec.scalars.f64, ""), (spec.scalars.f32, "_f32")]
-        .into_iter()
-        .filter(|(on, _)| *on)
-        .map(|(_, suffix)| (suffix, if suffix.is_empty() { quote!(f64) } else { quote!(f32) }))
-        .collect();
-    let pose_ty = |t: &TokenStream| quote!(#krate::Pose<#t>);
+    // (suffix, scalar, lane type) per scalar asked for.
+    let scalars: Vec<(&str, TokenStream, TokenStream)> = [
+        (spec.scalars.f64, "", quote!(f64), quote!(#p::F64x4)),
+        (spec.scalars.f32, "_f32", quote!(f32), quote!(#p::F32x8)),
+    ]
+    .into_iter()
+    .filter(|(on, ..)| *on)
+    .map(|(_, suffix, t, lanes)| (suffix, t, lanes))
+    .collect();
+    let pose_ty = |t: &TokenStream| quote!(#p::Pose<#t>);
     let mut add = |name: &str, generic_name: &str, ret: &dyn Fn(&TokenStream) -> TokenStream, doc: String| {
-        for (suffix, t) in &scalars {
+        let g = format_ident!("{generic_name}");
+        for (suffix, t, lanes) in &scalars {
             let f = format_ident!("{name}{suffix}");
-            let g = format_ident!("{generic_name}");
             let r = ret(t);
-            let doc = format!("{doc} (`{t}`)");
+            let one = format!("{doc} (`{t}`).");
             typed.push(quote! {
-                #[doc = #doc]
+                #[doc = #one]
                 #[inline]
                 pub fn #f(q: &[#t; #n_lit]) -> #r { #g(q) }
             });
+            let batch = format_ident!("{name}_batch{suffix}");
+            let many = format!(
+                "[`Self::{f}`] for every configuration of `qs`, into `out` (one each), {} at a time in SIMD \
+                 lanes (`{}`). An `out` of another length than `qs` is an error, and nothing is written.",
+                if suffix.is_empty() { 4 } else { 8 },
+                lanes.to_string().replace(' ', ""),
+            );
+            typed.push(quote! {
+                #[doc = #many]
+                #[inline]
+                pub fn #batch(qs: &[[#t; #n_lit]], out: &mut [#r]) -> ::core::result::Result<(), #p::KinematicsError> {
+                    #p::batch::<#lanes, #n_lit, _>(Self::ROBOT, qs, out, #g)
+                }
+            });
         }
+        let f = format_ident!("{name}_generic");
+        let r = ret(&quote!(T));
+        let doc = format!(
+            "{doc}, for any scalar type: the lane types `F64x4` and `F32x8` (four or eight configurations per \
+             call), dual numbers, or a type of your own."
+        );
+        typed.push(quote! {
+            #[doc = #doc]
+            #[inline]
+            pub fn #f<T: #bound>(q: &[T; #n_lit]) -> #r { #g(q) }
+        });
     };
     add(
         "link_poses",
         "generic_link_poses",
         &|t| {
-            let p = pose_ty(t);
-            quote!([#p; #m_lit])
+            let pose = pose_ty(t);
+            quote!([#pose; #m_lit])
         },
         format!("Poses of every link but `{base}`, in `{base}` and in the order of `LINK_NAMES`"),
     );
-    if spec.positions && !scalars.is_empty() {
+    if spec.positions {
         let positions = compile(tree, &Request { base: Some(base.clone()), tips: Vec::new(), position_only: true })?;
         generic.push(emit_function(&positions, &private("generic_link_positions")));
         add(
@@ -148,13 +191,13 @@ pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenSt
                 if one {
                     pose_ty(t)
                 } else {
-                    let p = pose_ty(t);
-                    quote!([#p; #k_lit])
+                    let pose = pose_ty(t);
+                    quote!([#pose; #k_lit])
                 }
             },
             what,
         );
-        if spec.positions && !scalars.is_empty() {
+        if spec.positions {
             let compiled = compile(tree, &Request { position_only: true, ..tip_request.clone() })?;
             generic.push(emit_function(&compiled, &private("generic_tip_positions")));
             let name = if one { "tip_position" } else { "tip_positions" };
@@ -173,7 +216,7 @@ pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenSt
     let (jn, ln, tn) = (strs(&joint_names), strs(&link_names), strs(&tips));
     // `reference()` loads the description with the tree's own exactness policy, so the reference
     // is the robot the code was compiled from.
-    let policy = policy_tokens(krate, tree.exact_angles());
+    let policy = policy_tokens(&p, tree.exact_angles());
     let (impl_generics, where_clause) = (&spec.impl_generics, &spec.where_clause);
     Ok(quote! {
         const _: () = {
@@ -190,7 +233,7 @@ pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenSt
             /// Joint names, in the order of `q`.
             pub const JOINT_NAMES: [&'static str; #n_lit] = #jn;
             /// Position limits, in the order of `q` (infinite for continuous joints).
-            pub const JOINT_LIMITS: [#krate::JointLimits; #n_lit] = [#(#limits),*];
+            pub const JOINT_LIMITS: [#p::JointLimits; #n_lit] = [#(#limits),*];
             /// The links `link_poses` returns, in order.
             pub const LINK_NAMES: [&'static str; #m_lit] = #ln;
             /// The tip links.
@@ -198,52 +241,57 @@ pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenSt
 
             #(#typed)*
 
-            /// The runtime reference model of this robot, built from the same description.
-            pub fn reference() -> ::core::result::Result<#krate::ReferenceFk, #krate::LoadError> {
-                #krate::model::parse_source_with(#label, #text, #policy).map(#krate::ReferenceFk::new)
+            #p::with_std! {
+                /// The runtime reference model of this robot, built from the same description.
+                pub fn reference() -> ::core::result::Result<#p::ReferenceFk, #p::LoadError> {
+                    #p::parse_source_with(#label, #text, #policy).map(#p::ReferenceFk::new)
+                }
             }
         }
 
         #[allow(clippy::approx_constant)] // limits are kept exactly as the description gives them
-        impl #impl_generics #krate::Kinematics for #self_ty #where_clause {
+        impl #impl_generics #p::Kinematics for #self_ty #where_clause {
             const ROBOT: &'static str = #robot;
             const BASE: &'static str = #base;
             const DOF: usize = #n_lit;
             const JOINT_NAMES: &'static [&'static str] = &#jn;
-            const JOINT_LIMITS: &'static [#krate::JointLimits] = &[#(#limits),*];
+            const JOINT_LIMITS: &'static [#p::JointLimits] = &[#(#limits),*];
             const LINK_NAMES: &'static [&'static str] = &#ln;
             const TIPS: &'static [&'static str] = &#tn;
 
-            fn tip_poses_into(q: &[f64], out: &mut [#krate::Pose<f64>]) -> ::core::result::Result<(), #krate::RuntimeError> {
-                let q = #krate::runtime::q_array::<#n_lit>(#robot, &#jn, q)?;
-                #krate::runtime::check_output(#robot, #k_lit, out.len())?;
+            fn tip_poses_into(q: &[f64], out: &mut [#p::Pose<f64>]) -> ::core::result::Result<(), #p::KinematicsError> {
+                let q = #p::q_array::<#n_lit>(#robot, &#jn, q)?;
+                #p::check_output(#robot, #k_lit, out.len())?;
                 #tip_poses_body
                 ::core::result::Result::Ok(())
             }
 
-            fn link_poses_into(q: &[f64], out: &mut [#krate::Pose<f64>]) -> ::core::result::Result<(), #krate::RuntimeError> {
-                let q = #krate::runtime::q_array::<#n_lit>(#robot, &#jn, q)?;
-                #krate::runtime::check_output(#robot, #m_lit, out.len())?;
+            fn link_poses_into(q: &[f64], out: &mut [#p::Pose<f64>]) -> ::core::result::Result<(), #p::KinematicsError> {
+                let q = #p::q_array::<#n_lit>(#robot, &#jn, q)?;
+                #p::check_output(#robot, #m_lit, out.len())?;
                 out.copy_from_slice(&generic_link_poses(q));
                 ::core::result::Result::Ok(())
             }
+        }
 
-            fn reference() -> ::core::result::Result<#krate::ReferenceFk, #krate::LoadError> {
-                Self::reference()
+        #p::with_std! {
+            impl #impl_generics #p::ReferenceModel for #self_ty #where_clause {
+                fn reference() -> ::core::result::Result<#p::ReferenceFk, #p::LoadError> {
+                    Self::reference()
+                }
             }
         }
         };
     })
 }
 
-/// Whether two policies are the same (a NaN tolerance equals itself: both read nothing as exact).
 /// The policy as an expression of type `ExactAngles`.
-fn policy_tokens(krate: &TokenStream, policy: ExactAngles) -> TokenStream {
+fn policy_tokens(p: &TokenStream, policy: ExactAngles) -> TokenStream {
     match policy {
-        ExactAngles::Off => quote!(#krate::model::ExactAngles::Off),
+        ExactAngles::Off => quote!(#p::ExactAngles::Off),
         ExactAngles::Within(tolerance) => {
             let tolerance = number(tolerance);
-            quote!(#krate::model::ExactAngles::Within(#tolerance))
+            quote!(#p::ExactAngles::Within(#tolerance))
         }
     }
 }

@@ -52,6 +52,7 @@ fn compile_everything(label: &str, text: &str) -> Result<Vec<String>, String> {
         positions: true,
         scalars: Scalars { f64: true, f32: true },
         krate: quote!(::kinematics),
+        trig: kinematics_compiler::emit::Trig::Fast,
         source_label: label.to_owned(),
         source_text: quote!(""),
         impl_generics: TokenStream::new(),

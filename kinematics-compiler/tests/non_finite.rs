@@ -42,6 +42,7 @@ fn spec(tree: &kinematics_model::KinematicTree) -> RobotSpec<'_> {
         positions: true,
         scalars: Scalars { f64: true, f32: true },
         krate: quote!(::kinematics),
+        trig: kinematics_compiler::emit::Trig::Fast,
         source_label: "x.urdf".to_owned(),
         source_text: quote!(""),
         impl_generics: quote!(),

@@ -22,6 +22,7 @@ fn spec(tree: &KinematicTree) -> RobotSpec<'_> {
         positions: false,
         scalars: Scalars::default(),
         krate: quote!(::kinematics),
+        trig: kinematics_compiler::emit::Trig::Fast,
         source_label: "arm.urdf".to_owned(),
         source_text: quote!("text"),
         impl_generics: quote!(),

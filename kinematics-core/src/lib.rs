@@ -1,5 +1,36 @@
 //! What generated forward kinematics needs at run time, and nothing else: `#![no_std]`, no
-//! allocation.
+//! allocation, no dependency but `libm` (itself `no_std`, for arguments beyond our sin/cos's fast
+//! range).
+//!
+//! It holds the pose type ([`Pose`]), the scalar trait generated code is generic over ([`Real`]),
+//! the trait every compiled robot implements ([`Kinematics`]) with its error ([`KinematicsError`]),
+//! our own sin/cos ([`trig`]), the SIMD lane types ([`F64x4`], [`F32x8`]) and the batch driver
+//! ([`batch`]). Generated code reaches it through one path, `kinematics::__private` (the facade
+//! re-exports this crate there), so a user's crate needs only the `kinematics` dependency.
+//!
+//! Features: `std` adds [`StdTrig`] (the platform's `sin_cos`, for code generated with
+//! `trig = "std"`); `nalgebra` adds conversions of [`Pose`] to nalgebra's types and the pose
+//! distance the agreement checks use. The facade's default `std` feature turns both on.
 #![no_std]
 
+#[cfg(feature = "std")]
+extern crate std;
+
+mod batch;
+mod error;
+mod kinematics;
+mod lanes;
+#[cfg(feature = "nalgebra")]
+mod nalgebra;
+mod pose;
+mod real;
 pub mod trig;
+
+pub use batch::batch;
+pub use error::KinematicsError;
+pub use kinematics::{JointLimits, Kinematics, check_output, q_array};
+pub use lanes::{F32x8, F64x4, LaneValue, Lanes};
+pub use pose::{AGREEMENT_TOLERANCE, AGREEMENT_TOLERANCE_F32, Pose};
+#[cfg(feature = "std")]
+pub use real::StdTrig;
+pub use real::Real;

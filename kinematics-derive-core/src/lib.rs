@@ -86,8 +86,11 @@ fn expand_options(
 ) -> (Option<fallback::Known>, Option<TokenStream>) {
     let (loaded, links_ok) = read_and_check(&options.source(), errors);
     let scalars = errors.handle(options.scalars());
+    let trig = errors.handle(options.trig());
     let known = loaded.as_ref().map(known);
-    let (Some(loaded), Some(scalars), true) = (loaded, scalars, links_ok) else { return (known, None) };
+    let (Some(loaded), Some(scalars), Some(trig), true) = (loaded, scalars, trig, links_ok) else {
+        return (known, None);
+    };
     let krate = match &options.krate {
         Some(path) => quote!(#path),
         None => quote!(::kinematics),
@@ -101,6 +104,7 @@ fn expand_options(
         positions: options.positions,
         scalars,
         krate,
+        trig,
         source_label: loaded.label.clone(),
         source_text: loaded.text_expr.clone(),
         impl_generics: quote!(#impl_generics),

@@ -14,6 +14,7 @@ use darling::util::{PathList, SpannedValue};
 use darling::{Error, FromDeriveInput, FromMeta};
 
 use crate::inline_dh::InlineDh;
+use kinematics_compiler::emit::Trig;
 use kinematics_compiler::robot::Scalars;
 use kinematics_model::ExactAngles;
 
@@ -50,6 +51,10 @@ pub struct KinematicsInput {
     /// 1e-8 rad of a multiple of pi/2 are that multiple; see `kinematics_model::exactness`).
     #[darling(default)]
     pub exact_angles: Option<Switch>,
+    /// `trig = "std"`: call the platform's `sin_cos` (one call per angle) instead of ours (the
+    /// default, `trig = "fast"`: every angle of a function in one call, side by side in SIMD lanes).
+    #[darling(default)]
+    pub trig: Option<SpannedValue<String>>,
     /// `crate = "path"` for a renamed dependency.
     #[darling(default, rename = "crate")]
     pub krate: Option<syn::Path>,
@@ -151,6 +156,18 @@ impl KinematicsInput {
             base: self.base.as_ref(),
             tips: self.tips(),
             exact_angles: self.exact_angles(),
+        }
+    }
+
+    /// The sine and cosine asked for (ours by default).
+    pub fn trig(&self) -> darling::Result<Trig> {
+        match self.trig.as_ref().map(|t| (t.as_str(), t.span())) {
+            None | Some(("fast", _)) => Ok(Trig::Fast),
+            Some(("std", _)) => Ok(Trig::Std),
+            Some((other, span)) => Err(Error::custom(format!(
+                "unknown trig `{other}`: expected \"fast\" (our sin/cos, the default) or \"std\" (the platform's)"
+            ))
+            .with_span(&span)),
         }
     }
 

@@ -1,73 +1,24 @@
-//! The trait every compiled robot implements, so generic code can take any of them.
+//! The runtime side of a compiled robot: its reference model.
 
-use crate::error::RuntimeError;
 use crate::fk::ReferenceFk;
-use crate::real::Pose;
+use kinematics_core::Kinematics;
 
-/// Position limits of one degree of freedom; infinite for a continuous joint.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct JointLimits {
-    /// Lower bound (radians or metres).
-    pub lower: f64,
-    /// Upper bound (radians or metres).
-    pub upper: f64,
-}
-
-/// A robot whose forward kinematics was compiled (by `#[derive(Kinematics)]` or the build API).
-///
-/// The inherent functions the derive adds (`tip_pose`, `link_poses`, ...) take fixed-size arrays and
-/// are what hot loops call; this trait offers the same computations through slices, checked, for
-/// code that works with any robot.
+/// A compiled robot whose runtime reference model can be built: the same description, read the
+/// same way, evaluated by [`ReferenceFk`]. Generated code implements it (with the facade's `std`
+/// feature), beside the inherent `reference()` it calls.
 ///
 /// ```
-/// use kinematics_runtime::{Kinematics, Pose};
-/// /// The reach of any compiled robot at a configuration: the farthest link from the base.
-/// fn farthest<R: Kinematics>(q: &[f64]) -> Result<f64, kinematics_runtime::RuntimeError> {
-///     let mut poses = vec![Pose { rotation: [[0.0; 3]; 3], translation: [0.0; 3] }; R::LINK_NAMES.len()];
-///     R::link_poses_into(q, &mut poses)?;
-///     Ok(poses.iter().map(|p| p.translation.iter().map(|x| x * x).sum::<f64>().sqrt()).fold(0.0, f64::max))
+/// use kinematics_runtime::{Kinematics, ReferenceModel};
+/// /// How far the first tip of any compiled robot is from its reference at `q`.
+/// fn tip_error<R: ReferenceModel>(q: &[f64]) -> Result<f64, Box<dyn std::error::Error>> {
+///     let mut out = vec![kinematics_runtime::Pose { rotation: [[0.0; 3]; 3], translation: [0.0; 3] }; R::TIPS.len()];
+///     R::tip_poses_into(q, &mut out)?;
+///     let reference = R::reference()?;
+///     let expected = reference.relative_pose(q, R::BASE, R::TIPS[0])?;
+///     Ok(out[0].deviation(&expected, reference.tree().reach()))
 /// }
 /// ```
-pub trait Kinematics {
-    /// Robot name.
-    const ROBOT: &'static str;
-    /// The link all poses are expressed in.
-    const BASE: &'static str;
-    /// Degrees of freedom: the length of `q`.
-    const DOF: usize;
-    /// Joint names in degree-of-freedom order.
-    const JOINT_NAMES: &'static [&'static str];
-    /// Position limits in degree-of-freedom order.
-    const JOINT_LIMITS: &'static [JointLimits];
-    /// The links `link_poses_into` computes, in order (every link but the base).
-    const LINK_NAMES: &'static [&'static str];
-    /// The links `tip_poses_into` computes, in order.
-    const TIPS: &'static [&'static str];
-
-    /// Poses of [`Kinematics::TIPS`] at `q`, into `out` (one per tip).
-    fn tip_poses_into(q: &[f64], out: &mut [Pose<f64>]) -> Result<(), RuntimeError>;
-
-    /// Poses of [`Kinematics::LINK_NAMES`] at `q`, into `out` (one per link).
-    fn link_poses_into(q: &[f64], out: &mut [Pose<f64>]) -> Result<(), RuntimeError>;
-
+pub trait ReferenceModel: Kinematics {
     /// The runtime reference model of the same robot, for checking and for tools.
     fn reference() -> Result<ReferenceFk, kinematics_model::LoadError>;
-}
-
-/// `q` as an array of the robot's DoF, or the error naming the joints (used by generated code).
-pub fn q_array<'a, const N: usize>(robot: &str, joints: &[&str], q: &'a [f64]) -> Result<&'a [f64; N], RuntimeError> {
-    q.try_into().map_err(|_| RuntimeError::WrongDof {
-        robot: robot.to_owned(),
-        expected: N,
-        got: q.len(),
-        joints: joints.join(", "),
-    })
-}
-
-/// Checks that an output slice holds one pose per computed frame (used by generated code).
-pub fn check_output(robot: &str, expected: usize, got: usize) -> Result<(), RuntimeError> {
-    if expected == got {
-        return Ok(());
-    }
-    Err(RuntimeError::WrongOutputLength { robot: robot.to_owned(), expected, got })
 }

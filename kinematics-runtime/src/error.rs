@@ -30,16 +30,6 @@ pub enum RuntimeError {
         /// The value.
         value: f64,
     },
-    /// An output slice of the wrong length.
-    #[error("robot `{robot}`: the output holds {got} poses, but {expected} are computed")]
-    WrongOutputLength {
-        /// Robot name.
-        robot: String,
-        /// Poses computed.
-        expected: usize,
-        /// Length of the output slice.
-        got: usize,
-    },
     /// A link or chain that the tree does not have.
     #[error("robot `{robot}`: {source}")]
     Model {

@@ -29,12 +29,14 @@ mod compiled;
 mod error;
 mod fk;
 mod jacobian;
-mod real;
 mod sample;
 
-pub use compiled::{JointLimits, Kinematics, check_output, q_array};
+pub use compiled::ReferenceModel;
+pub use kinematics_core::{
+    AGREEMENT_TOLERANCE, AGREEMENT_TOLERANCE_F32, JointLimits, Kinematics, KinematicsError, Pose, Real, check_output,
+    q_array,
+};
 pub use error::RuntimeError;
 pub use fk::{ReferenceFk, fixed_isometry};
 pub use kinematics_model;
-pub use real::{AGREEMENT_TOLERANCE, AGREEMENT_TOLERANCE_F32, Pose, Real};
 pub use sample::{Configurations, SPECIAL_ANGLES};

@@ -9,7 +9,7 @@ use std::f64::consts::{FRAC_PI_2, PI};
 
 use kinematics_model::KinematicTree;
 
-use crate::compiled::JointLimits;
+use kinematics_core::JointLimits;
 
 /// The special angles every joint takes now and then (and all joints at once first).
 pub const SPECIAL_ANGLES: [f64; 5] = [0.0, FRAC_PI_2, -FRAC_PI_2, PI, -PI];

@@ -7,21 +7,48 @@ use super::schedule::{Item, Schedule};
 use crate::request::Compiled;
 use crate::symbolic::graph::{ExprGraph, ExprId, Node};
 
+/// Which sine and cosine generated code calls.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Trig {
+    /// Ours (`kinematics_core::trig`, through `Real`): every angle of a function in one
+    /// `sin_cos_many` call, computed side by side in SIMD lanes. The default.
+    #[default]
+    Fast,
+    /// The platform's (`StdTrig::sin_cos_std`, std's `sin_cos`), one call per angle. Needs the
+    /// facade's `std` feature.
+    Std,
+}
+
+impl Trig {
+    /// The bound on the generated functions' scalar type, `private` being the path of the
+    /// facade's private module.
+    pub fn bound(self, private: &TokenStream) -> TokenStream {
+        match self {
+            Trig::Fast => quote!(#private::Real),
+            Trig::Std => quote!(#private::Real + #private::StdTrig),
+        }
+    }
+}
+
 /// How to emit a function.
 #[derive(Debug, Clone)]
 pub struct EmitOptions {
     /// The function's name.
     pub name: String,
-    /// Path of the crate that provides `Real` and `Pose` (default `::kinematics`).
-    pub krate: TokenStream,
+    /// Path of the module generated code takes `Real`, `Pose` and the sine and cosine from:
+    /// the facade's private module (default `::kinematics::__private`), which re-exports
+    /// `kinematics_core`.
+    pub private: TokenStream,
     /// Whether the function is `pub`.
     pub public: bool,
+    /// Which sine and cosine the function calls.
+    pub trig: Trig,
 }
 
 impl EmitOptions {
-    /// A function `name` using `::kinematics`.
+    /// A public function `name` using `::kinematics::__private` and our sin/cos.
     pub fn named(name: &str) -> Self {
-        EmitOptions { name: name.to_owned(), krate: quote!(::kinematics), public: true }
+        EmitOptions { name: name.to_owned(), private: quote!(::kinematics::__private), public: true, trig: Trig::Fast }
     }
 }
 
@@ -31,7 +58,7 @@ impl EmitOptions {
 struct Writer<'a> {
     g: &'a ExprGraph,
     schedule: &'a Schedule,
-    krate: &'a TokenStream,
+    private: &'a TokenStream,
 }
 
 fn ident(name: &str) -> Ident {
@@ -173,27 +200,72 @@ impl Writer<'_> {
         }
         let mut translation = TokenStream::new();
         self.list(&outputs[9..12], &mut translation);
-        let krate = self.krate;
-        out.extend(quote!(#krate::Pose { rotation: [#rows], translation: #translation }));
+        let private = self.private;
+        out.extend(quote!(#private::Pose { rotation: [#rows], translation: #translation }));
     }
 
-    /// One statement of the body.
-    fn item(&self, item: &Item, out: &mut TokenStream) {
-        match item {
-            Item::SinCos(angle) => {
-                let (s, c) = (ident(&self.schedule.names.sin(*angle)), ident(&self.schedule.names.cos(*angle)));
-                let mut value = TokenStream::new();
-                // A method call binds tighter than any operator: parenthesise a written-out angle.
-                let composite =
-                    self.inline(*angle) && matches!(self.g.node(*angle), Node::Add(..) | Node::Mul(..) | Node::Neg(..));
-                self.wrapped(*angle, composite, &mut value);
-                out.extend(quote!(let (#s, #c) = #value.sin_cos();));
+    /// An angle as the argument of a call or an entry of an array (no parentheses needed).
+    fn angle(&self, angle: ExprId) -> TokenStream {
+        let mut value = TokenStream::new();
+        self.expr(angle, &mut value);
+        value
+    }
+
+    /// The names a call's results are bound to: `s1`, or `_` for a sine no output uses.
+    fn sin_cos_names(&self, angle: ExprId) -> (TokenStream, TokenStream) {
+        let name = |used: bool, name: String| if used { ident(&name).into_token_stream() } else { quote!(_) };
+        let names = &self.schedule.names;
+        (
+            name(self.schedule.sines.contains(&angle), names.sin(angle)),
+            name(self.schedule.cosines.contains(&angle), names.cos(angle)),
+        )
+    }
+
+    /// The sines and cosines of `angles` (consecutive in the schedule): with our trig one call for
+    /// all of them, `let ([s1, s2], [c1, c2]) = T::sin_cos_many([q1, q2]);`, so they are computed
+    /// side by side; with std trig one `sin_cos_std` call each.
+    fn sin_cos(&self, angles: &[ExprId], trig: Trig, out: &mut TokenStream) {
+        let private = self.private;
+        let (sines, cosines): (Vec<TokenStream>, Vec<TokenStream>) =
+            angles.iter().map(|&a| self.sin_cos_names(a)).unzip();
+        let values: Vec<TokenStream> = angles.iter().map(|&a| self.angle(a)).collect();
+        match (trig, angles) {
+            (Trig::Std, _) => {
+                for ((s, c), value) in sines.iter().zip(&cosines).zip(&values) {
+                    out.extend(quote!(let (#s, #c) = #private::StdTrig::sin_cos_std(#value);));
+                }
             }
-            Item::Let(id, name) => {
-                let name = ident(name);
-                let mut value = TokenStream::new();
-                self.define(*id, &mut value);
-                out.extend(quote!(let #name = #value;));
+            (Trig::Fast, [_]) => {
+                let (s, c, value) = (&sines[0], &cosines[0], &values[0]);
+                out.extend(quote!(let (#s, #c) = #private::Real::sin_cos(#value);));
+            }
+            (Trig::Fast, _) => {
+                out.extend(quote!(let ([#(#sines),*], [#(#cosines),*]) = T::sin_cos_many([#(#values),*]);));
+            }
+        }
+    }
+
+    /// The body's statements.
+    fn items(&self, trig: Trig, out: &mut TokenStream) {
+        let items = &self.schedule.items;
+        let mut k = 0;
+        while k < items.len() {
+            match &items[k] {
+                Item::SinCos(_) => {
+                    let mut angles = Vec::new();
+                    while let Some(Item::SinCos(angle)) = items.get(k) {
+                        angles.push(*angle);
+                        k += 1;
+                    }
+                    self.sin_cos(&angles, trig, out);
+                }
+                Item::Let(id, name) => {
+                    let name = ident(name);
+                    let mut value = TokenStream::new();
+                    self.define(*id, &mut value);
+                    out.extend(quote!(let #name = #value;));
+                    k += 1;
+                }
             }
         }
     }
@@ -210,8 +282,8 @@ pub fn emit_function(compiled: &Compiled, options: &EmitOptions) -> TokenStream 
     let g = compiled.graph();
     let outputs = compiled.outputs();
     let schedule = Schedule::new(g, &outputs);
-    let krate = &options.krate;
-    let w = Writer { g, schedule: &schedule, krate };
+    let private = &options.private;
+    let w = Writer { g, schedule: &schedule, private };
     let n = compiled.dof();
     let n_lit = Literal::usize_unsuffixed(n);
     let mut body = TokenStream::new();
@@ -223,9 +295,7 @@ pub fn emit_function(compiled: &Compiled, options: &EmitOptions) -> TokenStream 
         });
         body.extend(quote!(let [#(#vars),*] = *q;));
     }
-    for item in &schedule.items {
-        w.item(item, &mut body);
-    }
+    w.items(options.trig, &mut body);
     let per_frame = if compiled.position_only { 3 } else { 12 };
     let frames: Vec<&[ExprId]> = outputs.chunks(per_frame).collect();
     let array = compiled.returns_array();
@@ -242,7 +312,7 @@ pub fn emit_function(compiled: &Compiled, options: &EmitOptions) -> TokenStream 
         value = list;
     }
     body.extend(value);
-    let one = if compiled.position_only { quote!([T; 3]) } else { quote!(#krate::Pose<T>) };
+    let one = if compiled.position_only { quote!([T; 3]) } else { quote!(#private::Pose<T>) };
     let ret = if array {
         let m = Literal::usize_unsuffixed(frames.len());
         quote!([#one; #m])
@@ -252,6 +322,7 @@ pub fn emit_function(compiled: &Compiled, options: &EmitOptions) -> TokenStream 
     let name = Ident::new(&options.name, Span::call_site());
     let docs = doc_lines(compiled);
     let vis = if options.public { quote!(pub) } else { quote!() };
+    let bound = options.trig.bound(private);
     quote! {
         #(#[doc = #docs])*
         // Always inlined into its (small, `#[inline]`) typed callers: a function returning an array
@@ -261,7 +332,7 @@ pub fn emit_function(compiled: &Compiled, options: &EmitOptions) -> TokenStream 
         #[allow(clippy::inline_always)]
         #[inline(always)]
         #[allow(clippy::approx_constant)] // a robot's own decimals may resemble pi; they are kept as given
-        #vis fn #name<T: #krate::Real>(q: &[T; #n_lit]) -> #ret {
+        #vis fn #name<T: #bound>(q: &[T; #n_lit]) -> #ret {
             #body
         }
     }

@@ -9,7 +9,8 @@ use crate::symbolic::graph::{ExprGraph, ExprId, Node};
 /// One binding of the straight-line code.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub enum Item {
-    /// `let (s, c) = angle.sin_cos();`
+    /// The sine and cosine of an angle. The calls come one after another in the schedule, and
+    /// the emitter writes them as one call for all (`sin_cos_many`) or one each (std trig).
     SinCos(ExprId),
     /// `let tN = expr;`
     Let(ExprId, String),
@@ -46,6 +47,10 @@ pub struct Schedule {
     pub names: Names,
     /// Joint variables that are used.
     pub used_vars: BTreeSet<usize>,
+    /// Angles whose sine is used.
+    pub sines: BTreeSet<ExprId>,
+    /// Angles whose cosine is used.
+    pub cosines: BTreeSet<ExprId>,
 }
 
 impl Schedule {
@@ -97,14 +102,18 @@ impl Schedule {
         let mut bound = BTreeMap::new();
         let mut used_vars = BTreeSet::new();
         let mut emitted_angles = BTreeSet::new();
+        let (mut sines, mut cosines) = (BTreeSet::new(), BTreeSet::new());
         let (mut before_calls, mut calls, mut after_calls) = (Vec::new(), Vec::new(), Vec::new());
         for &id in &nodes {
             match g.node(id) {
                 Node::Var(i) => {
                     used_vars.insert(i as usize);
                 }
-                Node::Sin(a) | Node::Cos(a) if emitted_angles.insert(a) => {
-                    calls.push(Item::SinCos(a));
+                Node::Sin(a) | Node::Cos(a) => {
+                    if matches!(g.node(id), Node::Sin(_)) { &mut sines } else { &mut cosines }.insert(a);
+                    if emitted_angles.insert(a) {
+                        calls.push(Item::SinCos(a));
+                    }
                 }
                 Node::Add(..) | Node::Mul(..) if bind[id.index()] => {
                     if feeds_angle[id.index()] { &mut before_calls } else { &mut after_calls }.push(id);
@@ -121,7 +130,7 @@ impl Schedule {
         let before_calls: Vec<Item> = before_calls.into_iter().map(&mut bind).collect();
         let after_calls: Vec<Item> = after_calls.into_iter().map(&mut bind).collect();
         let items = [before_calls, calls, after_calls].concat();
-        Schedule { items, bound, names, used_vars }
+        Schedule { items, bound, names, used_vars, sines, cosines }
     }
 }
 

@@ -1,0 +1,52 @@
+//! What a compiled robot's checked entry points return when the caller's slices do not fit.
+
+use core::fmt;
+
+/// A call whose slices do not fit the robot. Every field is `'static` or a number: building one
+/// allocates nothing.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum KinematicsError {
+    /// `q` does not have one entry per degree of freedom.
+    WrongDof {
+        /// Robot name.
+        robot: &'static str,
+        /// Degrees of freedom.
+        expected: usize,
+        /// Length of `q`.
+        got: usize,
+        /// The joint names in degree-of-freedom order, for the message.
+        joints: &'static [&'static str],
+    },
+    /// An output slice of the wrong length.
+    WrongOutputLength {
+        /// Robot name.
+        robot: &'static str,
+        /// Values computed.
+        expected: usize,
+        /// Length of the output slice.
+        got: usize,
+    },
+}
+
+impl fmt::Display for KinematicsError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match *self {
+            KinematicsError::WrongDof { robot, expected, got, joints } => {
+                write!(f, "robot `{robot}` has {expected} degrees of freedom (")?;
+                for (i, joint) in joints.iter().enumerate() {
+                    if i > 0 {
+                        f.write_str(", ")?;
+                    }
+                    f.write_str(joint)?;
+                }
+                write!(f, "), but q has {got} values")
+            }
+            KinematicsError::WrongOutputLength { robot, expected, got } => {
+                write!(f, "robot `{robot}`: the output holds {got} values, but {expected} are computed")
+            }
+        }
+    }
+}
+
+impl core::error::Error for KinematicsError {}

@@ -1,0 +1,198 @@
+//! SIMD lane types: several configurations side by side in one value, on stable Rust.
+//!
+//! [`F64x4`] holds four `f64`, [`F32x8`] eight `f32`. They are plain arrays with lane-wise
+//! arithmetic written as loops over the lanes, which LLVM turns into packed instructions (AVX2
+//! `ymm` registers with `-C target-cpu=native` on a machine that has them, pairs of SSE2 `xmm`
+//! registers on baseline x86-64); their sines and cosines are [`crate::trig`]'s lane routines. They
+//! implement [`Real`], so the very code generated for `f64` evaluates four (or eight)
+//! configurations per call:
+//!
+//! ```
+//! use kinematics_core::{F64x4, Real};
+//! // Any function generic over `Real`, such as a derived robot's `tip_pose_generic`:
+//! fn planar_2r_x<T: Real>(q: &[T; 2]) -> T {
+//!     let (sines, cosines) = T::sin_cos_many([q[0], q[0] + q[1]]);
+//!     let _ = sines;
+//!     cosines[0] + cosines[1]
+//! }
+//! let q = [F64x4::new([0.0, 0.5, 1.0, 1.5]), F64x4::splat(0.25)];
+//! let x = planar_2r_x(&q);
+//! for lane in 0..4 {
+//!     assert_eq!(x.lane(lane), planar_2r_x(&[q[0].lane(lane), q[1].lane(lane)]));
+//! }
+//! ```
+
+use core::ops::{Add, Mul, Neg, Sub};
+
+use crate::pose::Pose;
+use crate::real::Real;
+use crate::trig;
+
+/// A type of several scalar lanes, each an independent value.
+pub trait Lanes: Real {
+    /// The type of one lane.
+    type Scalar: Copy;
+    /// How many lanes.
+    const LANES: usize;
+    /// The value whose lane `i` is `f(i)`.
+    fn from_fn(f: impl FnMut(usize) -> Self::Scalar) -> Self;
+    /// Lane `i` (`i < LANES`).
+    fn lane(self, i: usize) -> Self::Scalar;
+}
+
+/// A value made of lanes (a number, a pose, an array of them) from which one lane's value can be
+/// taken: the outputs of generated code evaluated on a lane type.
+pub trait LaneValue<L: Lanes> {
+    /// The same value for one lane (`Pose<f64>` for `Pose<F64x4>`).
+    type Scalar;
+    /// Lane `i`.
+    fn lane(&self, i: usize) -> Self::Scalar;
+}
+
+impl<L: Lanes> LaneValue<L> for Pose<L> {
+    type Scalar = Pose<L::Scalar>;
+    #[inline(always)]
+    fn lane(&self, i: usize) -> Self::Scalar {
+        Pose {
+            rotation: self.rotation.map(|row| row.map(|x| x.lane(i))),
+            translation: self.translation.map(|x| x.lane(i)),
+        }
+    }
+}
+
+impl<L: Lanes, V: LaneValue<L>, const M: usize> LaneValue<L> for [V; M] {
+    type Scalar = [V::Scalar; M];
+    #[inline(always)]
+    fn lane(&self, i: usize) -> Self::Scalar {
+        core::array::from_fn(|k| self[k].lane(i))
+    }
+}
+
+macro_rules! lane_type {
+    ($name:ident, $scalar:ident, $lanes:literal, $sin_cos:path, $doc:literal) => {
+        #[doc = $doc]
+        #[derive(Debug, Clone, Copy, PartialEq)]
+        #[repr(C, align(32))]
+        pub struct $name(pub [$scalar; $lanes]);
+
+        impl $name {
+            /// The lanes given.
+            #[inline(always)]
+            pub const fn new(lanes: [$scalar; $lanes]) -> Self {
+                $name(lanes)
+            }
+            /// Every lane `x`.
+            #[inline(always)]
+            pub const fn splat(x: $scalar) -> Self {
+                $name([x; $lanes])
+            }
+            /// Lane `i`.
+            #[inline(always)]
+            pub const fn lane(self, i: usize) -> $scalar {
+                self.0[i]
+            }
+            /// The lanes as an array.
+            #[inline(always)]
+            pub const fn to_array(self) -> [$scalar; $lanes] {
+                self.0
+            }
+        }
+
+        impl Add for $name {
+            type Output = Self;
+            #[inline(always)]
+            fn add(self, rhs: Self) -> Self {
+                let mut out = self.0;
+                for i in 0..$lanes {
+                    out[i] += rhs.0[i];
+                }
+                $name(out)
+            }
+        }
+
+        impl Sub for $name {
+            type Output = Self;
+            #[inline(always)]
+            fn sub(self, rhs: Self) -> Self {
+                let mut out = self.0;
+                for i in 0..$lanes {
+                    out[i] -= rhs.0[i];
+                }
+                $name(out)
+            }
+        }
+
+        impl Mul for $name {
+            type Output = Self;
+            #[inline(always)]
+            fn mul(self, rhs: Self) -> Self {
+                let mut out = self.0;
+                for i in 0..$lanes {
+                    out[i] *= rhs.0[i];
+                }
+                $name(out)
+            }
+        }
+
+        impl Neg for $name {
+            type Output = Self;
+            #[inline(always)]
+            fn neg(self) -> Self {
+                let mut out = self.0;
+                for x in &mut out {
+                    *x = -*x;
+                }
+                $name(out)
+            }
+        }
+
+        impl Real for $name {
+            #[inline(always)]
+            fn from_f64(x: f64) -> Self {
+                $name::splat(<$scalar as Real>::from_f64(x))
+            }
+            #[inline(always)]
+            fn sin_cos(self) -> (Self, Self) {
+                let (s, c) = $sin_cos(self.0);
+                ($name(s), $name(c))
+            }
+        }
+
+        impl Lanes for $name {
+            type Scalar = $scalar;
+            const LANES: usize = $lanes;
+            #[inline(always)]
+            fn from_fn(f: impl FnMut(usize) -> $scalar) -> Self {
+                $name(core::array::from_fn(f))
+            }
+            #[inline(always)]
+            fn lane(self, i: usize) -> $scalar {
+                self.0[i]
+            }
+        }
+
+        impl LaneValue<$name> for $name {
+            type Scalar = $scalar;
+            #[inline(always)]
+            fn lane(&self, i: usize) -> $scalar {
+                self.0[i]
+            }
+        }
+
+        #[cfg(feature = "std")]
+        impl crate::real::StdTrig for $name {
+            #[inline(always)]
+            fn sin_cos_std(self) -> (Self, Self) {
+                let mut s = self.0;
+                let mut c = self.0;
+                for i in 0..$lanes {
+                    (s[i], c[i]) = crate::real::StdTrig::sin_cos_std(self.0[i]);
+                }
+                ($name(s), $name(c))
+            }
+        }
+    };
+}
+
+lane_type!(F64x4, f64, 4, trig::sin_cos_f64_lanes, "Four `f64` lanes (one AVX2 register).");
+lane_type!(F32x8, f32, 8, trig::sin_cos_f32_lanes, "Eight `f32` lanes (one AVX2 register).");

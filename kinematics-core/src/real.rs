@@ -1,0 +1,101 @@
+//! The scalar trait generated code is written against.
+//!
+//! Generated functions are generic over [`Real`], so one body serves `f64`, `f32`, the SIMD lane
+//! types ([`F64x4`](crate::F64x4), [`F32x8`](crate::F32x8)) and any number type a user brings
+//! (dual numbers for derivatives, intervals). It asks only what the code uses: `+ - *`, negation,
+//! constants and sines and cosines. No ordering, no `'static`, no conversion back to `f64`: a
+//! packed lane type cannot honestly give those.
+
+use core::ops::{Add, Mul, Neg, Sub};
+
+use crate::trig;
+
+/// The arithmetic generated forward kinematics needs: `+ - *`, negation, constants and `sin_cos`.
+///
+/// ```
+/// use kinematics_core::Real;
+/// fn double<T: Real>(x: T) -> T { T::from_f64(2.0) * x }
+/// assert_eq!(double(1.5f32), 3.0);
+/// let (s, c) = Real::sin_cos(0.5f64);
+/// assert!((s - 0.479425538604203).abs() < 1e-15 && (c - 0.8775825618903728).abs() < 1e-15);
+/// let (sines, cosines) = f64::sin_cos_many([0.0, 0.5]);
+/// assert_eq!((sines[1], cosines[1]), (s, c));
+/// ```
+pub trait Real: Copy + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> + Neg<Output = Self> {
+    /// A constant of the robot (rounded to nearest for `f32`).
+    fn from_f64(x: f64) -> Self;
+
+    /// `(sin x, cos x)`.
+    fn sin_cos(self) -> (Self, Self);
+
+    /// The sines and the cosines of `N` angles, computed together.
+    ///
+    /// Generated code asks for every angle of a pose in one call, so a type can compute them side
+    /// by side (for `f64` and `f32`, packed into SIMD registers). The default calls
+    /// [`Real::sin_cos`] on each.
+    #[inline(always)]
+    fn sin_cos_many<const N: usize>(x: [Self; N]) -> ([Self; N], [Self; N]) {
+        let mut sines = x;
+        let mut cosines = x;
+        for i in 0..N {
+            (sines[i], cosines[i]) = x[i].sin_cos();
+        }
+        (sines, cosines)
+    }
+}
+
+impl Real for f64 {
+    #[inline(always)]
+    fn from_f64(x: f64) -> Self {
+        x
+    }
+    #[inline(always)]
+    fn sin_cos(self) -> (Self, Self) {
+        trig::sin_cos_f64(self)
+    }
+    #[inline(always)]
+    fn sin_cos_many<const N: usize>(x: [Self; N]) -> ([Self; N], [Self; N]) {
+        trig::sin_cos_f64_lanes(x)
+    }
+}
+
+impl Real for f32 {
+    #[inline(always)]
+    fn from_f64(x: f64) -> Self {
+        x as f32
+    }
+    #[inline(always)]
+    fn sin_cos(self) -> (Self, Self) {
+        trig::sin_cos_f32(self)
+    }
+    #[inline(always)]
+    fn sin_cos_many<const N: usize>(x: [Self; N]) -> ([Self; N], [Self; N]) {
+        trig::sin_cos_f32_lanes(x)
+    }
+}
+
+/// The platform's own `sin_cos` (std, on Linux glibc's), for code generated with `trig = "std"`.
+///
+/// Our routines ([`crate::trig`]) are the default; this is the choice for users who want the
+/// platform's library, e.g. to compare against it. Lane types call it lane by lane.
+#[cfg(feature = "std")]
+pub trait StdTrig: Real {
+    /// `(sin x, cos x)` by the standard library.
+    fn sin_cos_std(self) -> (Self, Self);
+}
+
+#[cfg(feature = "std")]
+impl StdTrig for f64 {
+    #[inline(always)]
+    fn sin_cos_std(self) -> (Self, Self) {
+        std::primitive::f64::sin_cos(self)
+    }
+}
+
+#[cfg(feature = "std")]
+impl StdTrig for f32 {
+    #[inline(always)]
+    fn sin_cos_std(self) -> (Self, Self) {
+        std::primitive::f32::sin_cos(self)
+    }
+}
