@@ -87,7 +87,7 @@ mod crowded {
 }
 
 /// The poses every compiled robot gives through the trait agree with its reference at `q`.
-fn agrees<R: Kinematics>(q: &[f64]) {
+fn agrees<R: kinematics::ReferenceModel>(q: &[f64]) {
     let reference = R::reference().unwrap();
     let blank = Pose { rotation: [[f64::NAN; 3]; 3], translation: [f64::NAN; 3] };
     for (names, compute) in

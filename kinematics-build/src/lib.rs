@@ -36,7 +36,7 @@
 //! std::fs::write(dir.join("pendulum.toml"), table)?;
 //! let source = kinematics_build::Robot::dh("pendulum.toml").manifest_dir(&dir).tip("link1").generate()?;
 //! assert!(source.contains("pub struct Pendulum;"));
-//! assert!(source.contains("pub fn tip_pose(q: &[f64; 1]) -> ::kinematics::Pose<f64>"));
+//! assert!(source.contains("pub fn tip_pose(q: &[f64; 1]) -> ::kinematics::__private::Pose<f64>"));
 //! # std::fs::remove_dir_all(&dir)?;
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
@@ -49,8 +49,8 @@ mod source;
 mod write;
 
 pub use emit::default_struct_name;
-pub use kinematics_compiler::emit::Trig;
 pub use error::BuildError;
+pub use kinematics_compiler::emit::Trig;
 pub use links::find_link;
 pub use robot::Robot;
 pub use write::write_atomic;

@@ -379,12 +379,15 @@ mod tests {
         for expected in [
             "pub struct Arm;",
             "impl Arm {",
-            "impl ::kinematics::Kinematics for Arm {",
-            "pub fn tip_pose(q: &[f64; 2]) -> ::kinematics::Pose<f64>",
+            "impl ::kinematics::__private::Kinematics for Arm {",
+            "pub fn tip_pose(q: &[f64; 2]) -> ::kinematics::__private::Pose<f64>",
             "pub fn tip_position(q: &[f64; 2]) -> [f64; 3]",
             "pub fn tip_pose_f32(q: &[f32; 2])",
-            "pub fn link_poses(q: &[f64; 2]) -> [::kinematics::Pose<f64>; 2]",
-            "::kinematics::model::parse_source_with(",
+            "pub fn tip_pose_batch(",
+            "pub fn tip_pose_batch_f32(",
+            "pub fn tip_pose_generic<T: ::kinematics::__private::Real>(",
+            "pub fn link_poses(q: &[f64; 2]) -> [::kinematics::__private::Pose<f64>; 2]",
+            "::kinematics::__private::parse_source_with(",
         ] {
             assert!(source.contains(expected), "missing `{expected}` in\n{source}");
         }
@@ -395,7 +398,10 @@ mod tests {
         assert_eq!(source, again);
         let renamed =
             Robot::urdf("arm.urdf").manifest_dir(&dir).struct_name("Two").crate_path("kin").generate().unwrap();
-        assert!(renamed.contains("pub struct Two;") && renamed.contains("impl kin::Kinematics for Two"), "{renamed}");
+        assert!(
+            renamed.contains("pub struct Two;") && renamed.contains("impl kin::__private::Kinematics for Two"),
+            "{renamed}"
+        );
     }
 
     #[test]

@@ -34,7 +34,9 @@ fn embedded_text(source: &str) -> String {
         block.block.stmts.iter().find_map(|stmt| {
             let syn::Stmt::Item(syn::Item::Impl(imp)) = stmt else { return None };
             imp.items.iter().find_map(|item| {
-                let syn::ImplItem::Fn(f) = item else { return None };
+                // `reference()` stands in the facade's `with_std! { ... }`.
+                let syn::ImplItem::Macro(m) = item else { return None };
+                let f: syn::ImplItemFn = syn::parse2(m.mac.tokens.clone()).ok()?;
                 if f.sig.ident != "reference" || imp.trait_.is_some() {
                     return None;
                 }

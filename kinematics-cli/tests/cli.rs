@@ -211,7 +211,7 @@ fn generate_prints_what_the_build_api_writes() {
     assert_eq!(out, expected);
     assert!(out.contains("pub struct Flange;") && out.contains("pub fn tip_position_f32(q: &[f32; 6]) -> [f32; 3]"));
     let tips = ok(&["generate", "robots/panda.urdf", "--tip", "panda_leftfinger", "--tip", "panda_rightfinger"]);
-    assert!(tips.contains("pub fn tip_poses(q: &[f64; 8]) -> [::kinematics::Pose<f64>; 2]"), "{tips}");
+    assert!(tips.contains("pub fn tip_poses(q: &[f64; 8]) -> [::kinematics::__private::Pose<f64>; 2]"), "{tips}");
 }
 
 #[test]

@@ -99,6 +99,7 @@ pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenSt
         .collect();
 
     let trig = spec.trig;
+    let scalar = scalar_parameter(&spec.impl_generics);
     let bound = trig.bound(&p);
     let private = |name: &str| EmitOptions { name: name.to_owned(), private: p.clone(), public: false, trig };
     let mut generic = vec![emit_function(&all, &private("generic_link_poses"))];
@@ -140,7 +141,7 @@ pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenSt
             });
         }
         let f = format_ident!("{name}_generic");
-        let r = ret(&quote!(T));
+        let r = ret(&scalar);
         let doc = format!(
             "{doc}, for any scalar type: the lane types `F64x4` and `F32x8` (four or eight configurations per \
              call), dual numbers, or a type of your own."
@@ -148,7 +149,7 @@ pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenSt
         typed.push(quote! {
             #[doc = #doc]
             #[inline]
-            pub fn #f<T: #bound>(q: &[T; #n_lit]) -> #r { #g(q) }
+            pub fn #f<#scalar: #bound>(q: &[#scalar; #n_lit]) -> #r { #g(q) }
         });
     };
     add(
@@ -283,6 +284,25 @@ pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenSt
         }
         };
     })
+}
+
+/// The name of the `*_generic` functions' scalar parameter: `T`, unless the user's impl generics
+/// use that name (then `S`, `R`, or a name nobody writes), since they are in scope there.
+fn scalar_parameter(impl_generics: &TokenStream) -> TokenStream {
+    fn idents(tokens: &TokenStream, out: &mut Vec<String>) {
+        for token in tokens.clone() {
+            match token {
+                proc_macro2::TokenTree::Ident(i) => out.push(i.to_string()),
+                proc_macro2::TokenTree::Group(g) => idents(&g.stream(), out),
+                _ => {}
+            }
+        }
+    }
+    let mut taken = Vec::new();
+    idents(impl_generics, &mut taken);
+    let name = ["T", "S", "R"].into_iter().find(|n| !taken.iter().any(|t| t == n)).unwrap_or("__KinematicsScalar");
+    let name = format_ident!("{name}");
+    quote!(#name)
 }
 
 /// The policy as an expression of type `ExactAngles`.

@@ -46,11 +46,11 @@ fn output_is_byte_identical_across_runs() {
     }
 }
 
-/// Every `sin_cos` call comes before the arithmetic (a call loses every floating-point register, so
-/// a value computed before a later call would be spilled): the only bindings written before the
-/// last call are those an angle is computed from. Checked on every robot's link poses.
+/// Every angle's sine and cosine come from one call (`T::sin_cos_many`, computed side by side in
+/// SIMD lanes), before the arithmetic: the only bindings written before it are those an angle is
+/// computed from. Checked on every robot's link poses.
 #[test]
-fn sin_cos_calls_come_first() {
+fn one_sin_cos_call_for_every_angle_comes_first() {
     let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../robots");
     let mut checked = 0;
     for entry in std::fs::read_dir(dir).unwrap() {
@@ -60,13 +60,18 @@ fn sin_cos_calls_come_first() {
         }
         let text = source(&file, &Request::all_links(), "all_links");
         let lines: Vec<&str> = text.lines().map(str::trim).collect();
-        let calls: Vec<&str> = lines.iter().copied().filter(|l| l.contains(".sin_cos()")).collect();
-        let last_call = lines.iter().rposition(|l| l.contains(".sin_cos()")).unwrap();
-        for line in &lines[..last_call] {
+        // Every angle in one call: `let ([s1, ..], [c1, ..]) = T::sin_cos_many([q1, ..]);`
+        // (one `Real::sin_cos` for a single angle), written over one or more lines.
+        let is_call = |l: &str| l.contains("T::sin_cos_many(") || l.contains("Real::sin_cos(");
+        assert_eq!(lines.iter().filter(|l| is_call(l)).count(), 1, "{file}: not one call for every angle\n{text}");
+        let start = lines.iter().position(|l| is_call(l)).unwrap();
+        let end = start + lines[start..].iter().position(|l| l.ends_with(");")).unwrap();
+        let call = lines[start..=end].join(" ");
+        for line in &lines[..start] {
             let Some(name) = line.strip_prefix("let ").and_then(|l| l.split(" =").next()) else { continue };
             if name.starts_with('t') {
-                let feeds_angle = calls.iter().any(|c| c.split(|ch: char| !ch.is_alphanumeric()).any(|w| w == name));
-                assert!(feeds_angle, "{file}: `{line}` is computed before a later sin_cos call");
+                let feeds_angle = call.split(|ch: char| !ch.is_alphanumeric()).any(|w| w == name);
+                assert!(feeds_angle, "{file}: `{line}` is computed before the sin_cos call and is no angle");
             }
         }
         checked += 1;

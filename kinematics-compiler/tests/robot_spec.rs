@@ -42,13 +42,13 @@ fn reference_loads_with_the_trees_policy() {
     let tokens = emit_robot(&quote!(Arm), &spec(&off)).unwrap().to_string();
     assert_eq!(
         reference_call(&tokens),
-        "parse_source_with (\"arm.urdf\" , \"text\" , :: kinematics :: model :: ExactAngles :: Off)"
+        "parse_source_with (\"arm.urdf\" , \"text\" , :: kinematics :: __private :: ExactAngles :: Off)"
     );
     let on = kinematics_model::parse_source_with("arm.urdf", ARM, ExactAngles::Within(1e-9)).unwrap();
     let tokens = emit_robot(&quote!(Arm), &spec(&on)).unwrap().to_string();
     assert_eq!(
         reference_call(&tokens),
-        "parse_source_with (\"arm.urdf\" , \"text\" , :: kinematics :: model :: ExactAngles :: Within (0.000000001f64)"
+        "parse_source_with (\"arm.urdf\" , \"text\" , :: kinematics :: __private :: ExactAngles :: Within (0.000000001f64)"
     );
 }
 
@@ -62,11 +62,21 @@ fn generics_go_on_both_impls_and_nowhere_else() {
     let generics = "impl < 'a , T : Clone , const N : usize >";
     assert!(tokens.contains(&format!("{generics} Arm < 'a , T , N > where T : Default {{")), "{tokens}");
     assert!(
-        tokens.contains(&format!("{generics} :: kinematics :: Kinematics for Arm < 'a , T , N > where T : Default {{")),
+        tokens.contains(&format!(
+            "{generics} :: kinematics :: __private :: Kinematics for Arm < 'a , T , N > where T : Default {{"
+        )),
         "{tokens}"
     );
-    assert_eq!(tokens.matches("const N").count(), 2, "{tokens}");
+    assert!(
+        tokens.contains(&format!(
+            "{generics} :: kinematics :: __private :: ReferenceModel for Arm < 'a , T , N > where T : Default {{"
+        )),
+        "{tokens}"
+    );
+    assert_eq!(tokens.matches("const N").count(), 3, "{tokens}");
+    // The user's `T` is in scope in the inherent impl: the `*_generic` functions take another name.
+    assert!(tokens.contains("pub fn tip_pose_generic < S : :: kinematics :: __private :: Real >"), "{tokens}");
     // All of it in one anonymous block, the generic functions free in it.
     assert!(tokens.starts_with("const _ : () = {"), "{tokens}");
-    assert!(tokens.contains("fn generic_tip_poses < T : :: kinematics :: Real >"), "{tokens}");
+    assert!(tokens.contains("fn generic_tip_poses < T : :: kinematics :: __private :: Real >"), "{tokens}");
 }

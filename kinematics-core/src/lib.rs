@@ -31,6 +31,6 @@ pub use error::KinematicsError;
 pub use kinematics::{JointLimits, Kinematics, check_output, q_array};
 pub use lanes::{F32x8, F64x4, LaneValue, Lanes};
 pub use pose::{AGREEMENT_TOLERANCE, AGREEMENT_TOLERANCE_F32, Pose};
+pub use real::Real;
 #[cfg(feature = "std")]
 pub use real::StdTrig;
-pub use real::Real;

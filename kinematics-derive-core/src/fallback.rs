@@ -131,6 +131,7 @@ pub struct Known {
 pub fn stub(input: &syn::DeriveInput, options: Option<&KinematicsInput>, known: Option<Known>) -> TokenStream {
     let names = options.map_or_else(|| Names::from_attributes(input), Names::from_options);
     let krate = crate_path(input, options);
+    let p = quote!(#krate::__private);
     let ident = &input.ident;
     let (impl_generics, ty_generics, where_clause) = input.generics.split_for_impl();
     let message = "the derive failed: its compile errors say why";
@@ -152,18 +153,33 @@ pub fn stub(input: &syn::DeriveInput, options: Option<&KinematicsInput>, known: 
     let mut functions = Vec::new();
     let mut function = |name: &str, frames: Option<&Option<TokenStream>>, ret: &dyn Fn(&TokenStream) -> TokenStream| {
         let params: Vec<&TokenStream> = dof_param.iter().chain(frames.into_iter().flatten()).collect();
+        let attrs = quote!(#[allow(missing_docs, unused_variables, clippy::missing_panics_doc)]);
         for (suffix, t) in &scalars {
             let f = format_ident!("{name}{suffix}");
+            let batch = format_ident!("{name}_batch{suffix}");
             let r = ret(t);
             functions.push(quote! {
-                #[allow(missing_docs, unused_variables, clippy::missing_panics_doc)]
+                #attrs
                 pub fn #f<#(#params),*>(q: &[#t; #dof]) -> #r {
+                    ::core::unreachable!(#message)
+                }
+                #attrs
+                pub fn #batch<#(#params),*>(qs: &[[#t; #dof]], out: &mut [#r]) -> ::core::result::Result<(), #p::KinematicsError> {
                     ::core::unreachable!(#message)
                 }
             });
         }
+        let f = format_ident!("{name}_generic");
+        let scalar = quote!(__KinematicsScalar);
+        let r = ret(&scalar);
+        functions.push(quote! {
+            #attrs
+            pub fn #f<#scalar: #p::Real, #(#params),*>(q: &[#scalar; #dof]) -> #r {
+                ::core::unreachable!(#message)
+            }
+        });
     };
-    let pose = |t: &TokenStream| quote!(#krate::Pose<#t>);
+    let pose = |t: &TokenStream| quote!(#p::Pose<#t>);
     function("link_poses", Some(&links_param), &|t| {
         let p = pose(t);
         quote!([#p; #links])
@@ -188,17 +204,13 @@ pub fn stub(input: &syn::DeriveInput, options: Option<&KinematicsInput>, known: 
     }
     let dof_const = known.map_or(0, |k| k.dof);
     let load_error = quote! {
-        ::core::result::Result::Err(#krate::LoadError::new(
+        ::core::result::Result::Err(#p::LoadError::new(
             "",
-            #krate::LoadErrorKind::Syntax { line: ::core::option::Option::None, message: ::std::string::String::from(#message) },
+            #p::LoadErrorKind::Syntax { line: ::core::option::Option::None, message: ::std::string::String::from(#message) },
         ))
     };
-    let runtime_error = quote! {
-        ::core::result::Result::Err(#krate::RuntimeError::WrongOutputLength {
-            robot: ::std::string::String::from(#message),
-            expected: 0,
-            got: out.len(),
-        })
+    let kinematics_error = quote! {
+        ::core::result::Result::Err(#p::KinematicsError::WrongOutputLength { robot: #message, expected: 0, got: out.len() })
     };
     quote! {
         const _: () = {
@@ -208,33 +220,40 @@ pub fn stub(input: &syn::DeriveInput, options: Option<&KinematicsInput>, known: 
                 pub const BASE: &'static str = "";
                 pub const DOF: usize = #dof_const;
                 pub const JOINT_NAMES: &'static [&'static str] = &[];
-                pub const JOINT_LIMITS: &'static [#krate::JointLimits] = &[];
+                pub const JOINT_LIMITS: &'static [#p::JointLimits] = &[];
                 pub const LINK_NAMES: &'static [&'static str] = &[];
                 pub const TIPS: &'static [&'static str] = &[];
                 #(#functions)*
-                pub fn reference() -> ::core::result::Result<#krate::ReferenceFk, #krate::LoadError> {
-                    #load_error
+                #p::with_std! {
+                    pub fn reference() -> ::core::result::Result<#p::ReferenceFk, #p::LoadError> {
+                        #load_error
+                    }
                 }
             }
 
-            impl #impl_generics #krate::Kinematics for #ident #ty_generics #where_clause {
+            impl #impl_generics #p::Kinematics for #ident #ty_generics #where_clause {
                 const ROBOT: &'static str = "";
                 const BASE: &'static str = "";
                 const DOF: usize = 0;
                 const JOINT_NAMES: &'static [&'static str] = &[];
-                const JOINT_LIMITS: &'static [#krate::JointLimits] = &[];
+                const JOINT_LIMITS: &'static [#p::JointLimits] = &[];
                 const LINK_NAMES: &'static [&'static str] = &[];
                 const TIPS: &'static [&'static str] = &[];
-                fn tip_poses_into(q: &[f64], out: &mut [#krate::Pose<f64>]) -> ::core::result::Result<(), #krate::RuntimeError> {
+                fn tip_poses_into(q: &[f64], out: &mut [#p::Pose<f64>]) -> ::core::result::Result<(), #p::KinematicsError> {
                     let _ = q;
-                    #runtime_error
+                    #kinematics_error
                 }
-                fn link_poses_into(q: &[f64], out: &mut [#krate::Pose<f64>]) -> ::core::result::Result<(), #krate::RuntimeError> {
+                fn link_poses_into(q: &[f64], out: &mut [#p::Pose<f64>]) -> ::core::result::Result<(), #p::KinematicsError> {
                     let _ = q;
-                    #runtime_error
+                    #kinematics_error
                 }
-                fn reference() -> ::core::result::Result<#krate::ReferenceFk, #krate::LoadError> {
-                    #load_error
+            }
+
+            #p::with_std! {
+                impl #impl_generics #p::ReferenceModel for #ident #ty_generics #where_clause {
+                    fn reference() -> ::core::result::Result<#p::ReferenceFk, #p::LoadError> {
+                        #load_error
+                    }
                 }
             }
         };

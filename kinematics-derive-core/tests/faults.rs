@@ -42,7 +42,7 @@ fn a_fault_leaves_a_stub_with_the_names_the_attribute_implies() {
     });
     assert_eq!(errors(&out).len(), 1, "{out}");
     for expected in [
-        "impl :: kinematics :: Kinematics for Arm",
+        "impl :: kinematics :: __private :: Kinematics for Arm",
         "pub fn tip_poses_f32",
         "pub fn tip_positions_f32",
         "pub fn link_poses_f32",
@@ -90,7 +90,10 @@ fn a_wrong_link_name_leaves_a_stub_with_the_robots_sizes() {
     });
     assert_eq!(errors(&out).len(), 1, "{out}");
     assert!(out.contains("pub const DOF : usize = 2usize"), "{out}");
-    assert!(out.contains("pub fn link_poses < > (q : & [f64 ; 2]) -> [:: kinematics :: Pose < f64 > ; 2]"), "{out}");
+    assert!(
+        out.contains("pub fn link_poses < > (q : & [f64 ; 2]) -> [:: kinematics :: __private :: Pose < f64 > ; 2]"),
+        "{out}"
+    );
 }
 
 #[test]
@@ -100,7 +103,7 @@ fn an_unreadable_attribute_still_leaves_a_stub() {
         struct Arm<T>(T);
     });
     assert!(!errors(&out).is_empty(), "{out}");
-    assert!(out.contains("impl < T > kin :: Kinematics for Arm < T >"), "{out}");
+    assert!(out.contains("impl < T > kin :: __private :: Kinematics for Arm < T >"), "{out}");
     assert!(out.contains("pub fn tip_pose <"), "{out}");
     assert!(out.contains("pub fn tip_position <"), "{out}");
 }
@@ -115,7 +118,7 @@ fn constants_that_overflow_are_an_error_on_the_struct_not_a_panic() {
     // The model may come to refuse the file itself; either way it is an error, not a panic.
     assert_eq!(errors.len(), 1, "{errors:#?}");
     assert!(errors[0].starts_with("tests/fixtures/far.urdf: "), "{errors:#?}");
-    assert!(out.contains("impl :: kinematics :: Kinematics for Far"), "{out}");
+    assert!(out.contains("impl :: kinematics :: __private :: Kinematics for Far"), "{out}");
 }
 
 #[test]
@@ -127,5 +130,7 @@ fn generics_are_written_on_the_impls() {
     assert!(errors(&out).is_empty(), "{out}");
     let generics = "impl < 'a , T : Clone , const N : usize >";
     assert!(out.contains(&format!("{generics} Arm < 'a , T , N > where T : Default")), "{out}");
-    assert!(out.contains(&format!("{generics} :: kinematics :: Kinematics for Arm < 'a , T , N > where T : Default")));
+    assert!(out.contains(&format!(
+        "{generics} :: kinematics :: __private :: Kinematics for Arm < 'a , T , N > where T : Default"
+    )));
 }

@@ -32,11 +32,11 @@ mod jacobian;
 mod sample;
 
 pub use compiled::ReferenceModel;
+pub use error::RuntimeError;
+pub use fk::{ReferenceFk, fixed_isometry};
 pub use kinematics_core::{
     AGREEMENT_TOLERANCE, AGREEMENT_TOLERANCE_F32, JointLimits, Kinematics, KinematicsError, Pose, Real, check_output,
     q_array,
 };
-pub use error::RuntimeError;
-pub use fk::{ReferenceFk, fixed_isometry};
 pub use kinematics_model;
 pub use sample::{Configurations, SPECIAL_ANGLES};
