@@ -24,6 +24,8 @@ What it derives:
   relative error and the error after rounding (the doc comments in coefficients.rs).
 """
 
+import struct
+
 import mpmath as mp
 
 mp.mp.dps = 50
@@ -179,8 +181,14 @@ def main():
     for p in (p1, p2, p3):
         assert mp.mpf(float(p)) == p
     tail = half_pi - p1 - p2 - p3 - p4
-    print("/// 2/pi rounded to f64: `x * FRAC_2_PI` picks the quadrant count k.")
-    print(f"pub const FRAC_2_PI: f64 = {rust_f64(2 / mp.pi)};")
+    two_over_pi = float(2 / mp.pi)
+    bits = struct.unpack("<Q", struct.pack("<d", two_over_pi))[0]
+    print(f"/// 2/pi rounded to f64 ({rust_f64(two_over_pi)}, bits {bits:#018x}: core's constant, which")
+    print("/// clippy wants by name); `x * FRAC_2_PI` picks the quadrant count k.")
+    print("pub const FRAC_2_PI: f64 = core::f64::consts::FRAC_2_PI;")
+    print(f"/// The bits of 2/pi rounded to f64, as computed here; a unit test holds core's constant to it.")
+    print(f"#[cfg(test)]")
+    print(f"pub const FRAC_2_PI_BITS: u64 = {bits:#018x};")
     print("/// pi/2 to 33 significant bits: `k * PIO2_1` is exact for |k| < 2^20.")
     print(f"pub const PIO2_1: f64 = {rust_f64(p1)};")
     print("/// The next 33 bits of pi/2.")

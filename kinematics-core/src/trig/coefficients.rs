@@ -3,8 +3,12 @@
 //! Regenerate with `python3 kinematics-core/src/trig/coefficients.py >
 //! kinematics-core/src/trig/coefficients.rs` (mpmath 1.3.0); see that script for the derivation.
 
-/// 2/pi rounded to f64: `x * FRAC_2_PI` picks the quadrant count k.
-pub const FRAC_2_PI: f64 = 0.6366197723675814;
+/// 2/pi rounded to f64 (0.6366197723675814, bits 0x3fe45f306dc9c883: core's constant, which
+/// clippy wants by name); `x * FRAC_2_PI` picks the quadrant count k.
+pub const FRAC_2_PI: f64 = core::f64::consts::FRAC_2_PI;
+/// The bits of 2/pi rounded to f64, as computed here; a unit test holds core's constant to it.
+#[cfg(test)]
+pub const FRAC_2_PI_BITS: u64 = 0x3fe45f306dc9c883;
 /// pi/2 to 33 significant bits: `k * PIO2_1` is exact for |k| < 2^20.
 pub const PIO2_1: f64 = 1.5707963267341256;
 /// The next 33 bits of pi/2.

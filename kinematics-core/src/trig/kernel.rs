@@ -37,10 +37,10 @@ fn reduce<const PARTS: usize>(x: f64) -> (f64, u64) {
     // the two are within a factor of two of each other once k != 0), so the only roundings are
     // those of the later subtractions, each below half an ulp of a value no larger than pi/4.
     let mut r = x - k * PIO2_1;
-    r = r - k * PIO2_2;
-    r = r - k * PIO2_3;
+    r -= k * PIO2_2;
+    r -= k * PIO2_3;
     if PARTS == 4 {
-        r = r - k * PIO2_4;
+        r -= k * PIO2_4;
     }
     (r, shifted.to_bits())
 }

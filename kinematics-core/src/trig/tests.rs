@@ -169,3 +169,8 @@ fn lanes_equal_scalar_bit_for_bit() {
     }
     check(values);
 }
+
+#[test]
+fn the_quadrant_factor_is_2_over_pi_as_the_script_computed_it() {
+    assert_eq!(super::coefficients::FRAC_2_PI.to_bits(), super::coefficients::FRAC_2_PI_BITS);
+}
