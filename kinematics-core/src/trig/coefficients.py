@@ -197,7 +197,6 @@ def main():
     print(f"pub const PIO2_3: f64 = {rust_f64(p3)};")
     print(f"/// The rest of pi/2 rounded to f64; pi/2 - (PIO2_1 + .. + PIO2_4) = {mp.nstr(tail, 3)}.")
     print(f"pub const PIO2_4: f64 = {rust_f64(p4)};")
-    print()
     sin_w = "error relative to sin(r)"
     cos_w = "error relative to cos(r)"
     for name, f, w, weighting, n, what in (
@@ -206,6 +205,7 @@ def main():
         ("SIN_F32", sin_tail, sin_weight, sin_w, 4, "sin(r) = r + r^3 * S(r^2), kernel of the f32 routines (evaluated in f64)"),
         ("COS_F32", cos_tail, cos_weight, cos_w, 4, "cos(r) = 1 - r^2/2 + r^4 * C(r^2), kernel of the f32 routines (evaluated in f64)"),
     ):
+        print()
         rounded, level = fit_rounded(f, w, ZLOW, ZMAX, n)
         after = max_error(f, w, rounded, ZLOW, ZMAX)
         print(f"/// Minimax coefficients of {what}, lowest power first, on r in [0, pi/4 (1 + 1e-6)],")
@@ -215,7 +215,6 @@ def main():
         for c in rounded:
             print(f"    {rust_f64(c)},")
         print("];")
-        print()
 
 
 if __name__ == "__main__":

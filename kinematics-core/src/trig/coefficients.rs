@@ -45,11 +45,19 @@ pub const COS_F64: [f64; 6] = [
 /// Minimax coefficients of sin(r) = r + r^3 * S(r^2), kernel of the f32 routines (evaluated in f64), lowest power first, on r in [0, pi/4 (1 + 1e-6)],
 /// error relative to sin(r). Error of the unrounded fit: 8.6e-12;
 /// with the coefficients rounded to f64 (one at a time, the rest refitted): 5.57e-12.
-pub const SIN_F32: [f64; 4] =
-    [-0.16666666644249678, 0.00833332958256502, -0.00019839380654148686, 2.7186500489622307e-06];
+pub const SIN_F32: [f64; 4] = [
+    -0.16666666644249678,
+    0.00833332958256502,
+    -0.00019839380654148686,
+    2.7186500489622307e-06,
+];
 
 /// Minimax coefficients of cos(r) = 1 - r^2/2 + r^4 * C(r^2), kernel of the f32 routines (evaluated in f64), lowest power first, on r in [0, pi/4 (1 + 1e-6)],
 /// error relative to cos(r). Error of the unrounded fit: 3.59e-13;
 /// with the coefficients rounded to f64 (one at a time, the rest refitted): 2.09e-13.
-pub const COS_F32: [f64; 4] =
-    [0.04166666664792151, -0.0013888885478561556, 2.479989849502061e-05, -2.7237002643676607e-07];
+pub const COS_F32: [f64; 4] = [
+    0.04166666664792151,
+    -0.0013888885478561556,
+    2.479989849502061e-05,
+    -2.7237002643676607e-07,
+];
