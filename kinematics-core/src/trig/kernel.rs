@@ -27,22 +27,41 @@ fn horner<const D: usize>(coefficients: &[f64; D], z: f64) -> f64 {
     acc
 }
 
-/// `x` reduced to `r` in about [-pi/4, pi/4] and the quadrant count's bits (k mod 4 in the low
-/// two), with `x = k * pi/2 + r`; `PARTS` of the split pi/2 are subtracted (3 or 4).
+/// The quadrant count k (as an f64 integer) and its bits (k mod 4 in the low two) for `x`.
 #[inline(always)]
-fn reduce<const PARTS: usize>(x: f64) -> (f64, u64) {
+fn quadrant(x: f64) -> (f64, u64) {
     let shifted = x * FRAC_2_PI + ROUNDING_MAGIC;
-    let k = shifted - ROUNDING_MAGIC;
-    // Each product is exact (33-bit parts, |k| < 2^20) and x - k * PIO2_1 is exact (Sterbenz:
-    // the two are within a factor of two of each other once k != 0), so the only roundings are
-    // those of the later subtractions, each below half an ulp of a value no larger than pi/4.
+    (shifted - ROUNDING_MAGIC, shifted.to_bits())
+}
+
+/// `x - k * pi/2` in a single f64, for the f32 routines (whose kernels need 2^-40 relative, far
+/// less than the 3-part split gives): each product is exact (33-bit parts, |k| < 2^20) and
+/// `x - k * PIO2_1` is exact (Sterbenz once k != 0).
+#[inline(always)]
+fn reduce_single(x: f64, k: f64) -> f64 {
     let mut r = x - k * PIO2_1;
     r -= k * PIO2_2;
-    r -= k * PIO2_3;
-    if PARTS == 4 {
-        r -= k * PIO2_4;
-    }
-    (r, shifted.to_bits())
+    r - k * PIO2_3
+}
+
+/// `x - k * pi/2` as an unevaluated sum `hi + lo` (|lo| <= half an ulp of hi, up to roundings
+/// of order 2^-100): the f64 kernels add `lo`'s first-order effect, which keeps them within one
+/// ulp where a single f64 with three roundings reached two (measured at |x| ~ 9e3).
+#[inline(always)]
+fn reduce_double(x: f64, k: f64) -> (f64, f64) {
+    let t = x - k * PIO2_1; // exact, as above
+    let w = k * PIO2_2; // exact
+    let r1 = t - w;
+    // Knuth's TwoSum: the exact rounding error of t - w, whatever their magnitudes.
+    let w_rounded = t - r1;
+    let t_rounded = r1 + w_rounded;
+    let e1 = (t - t_rounded) + (w_rounded - w);
+    // The rest is tiny (|k * PIO2_3| < 2.2e-15): its roundings are of order 2^-53 of it.
+    // Written as a negated difference (the same value) so that x = -0 gives lo = -0 and hi = -0:
+    // `e1 - (...)` would be +0 there and turn hi into +0.
+    let lo = -((k * PIO2_3 + k * PIO2_4) - e1);
+    let hi = r1 + lo;
+    (hi, lo - (hi - r1))
 }
 
 /// `(sin x, cos x)` from the kernels' `(sin r, cos r)`: sin(r + k pi/2) is sin r, cos r, -sin r,
@@ -70,14 +89,18 @@ fn with_sign_of(magnitude: f64, sign: f64) -> f64 {
 /// Branch-free f64 sin and cos, right for |x| <= [`FAST_BOUND`]; NaN or garbage beyond it.
 #[inline(always)]
 pub fn sin_cos_fast_f64(x: f64) -> (f64, f64) {
-    let (r, quadrant) = reduce::<4>(x);
+    let (k, quadrant) = quadrant(x);
+    let (r, r_lo) = reduce_double(x, k);
     let z = r * r;
-    let sin_r = with_sign_of(r + (r * z) * horner(&SIN_F64, z), r);
-    // 1 - z/2 loses up to half an ulp of a value near 0.7; the rounding error of that subtraction
-    // is recovered exactly by (1 - w) - z/2 (Sterbenz; z/2 <= 0.31) and added back with the tail.
     let half_z = 0.5 * z;
+    // sin(r + lo) = sin r + lo cos r + O(lo^2), and cos r ~ 1 - z/2 is all lo (<= 2^-53 r) needs.
+    let sin_tail = (r * z) * horner(&SIN_F64, z) + r_lo * (1.0 - half_z);
+    let sin_r = with_sign_of(r + sin_tail, r);
+    // 1 - z/2 loses up to half an ulp of a value near 0.7; the rounding error of that subtraction
+    // is recovered exactly by (1 - w) - z/2 (Sterbenz; z/2 <= 0.31) and added back with the tail,
+    // as is cos(r + lo) - cos r ~ -lo r.
     let w = 1.0 - half_z;
-    let cos_r = w + (((1.0 - w) - half_z) + (z * z) * horner(&COS_F64, z));
+    let cos_r = w + (((1.0 - w) - half_z) + ((z * z) * horner(&COS_F64, z) - r * r_lo));
     place_in_quadrant(quadrant, sin_r, cos_r)
 }
 
@@ -86,7 +109,9 @@ pub fn sin_cos_fast_f64(x: f64) -> (f64, f64) {
 /// rounding that shows is the final one to f32.
 #[inline(always)]
 pub fn sin_cos_fast_f32(x: f32) -> (f32, f32) {
-    let (r, quadrant) = reduce::<3>(f64::from(x));
+    let wide = f64::from(x);
+    let (k, quadrant) = quadrant(wide);
+    let r = reduce_single(wide, k);
     let z = r * r;
     let sin_r = with_sign_of(r + (r * z) * horner(&SIN_F32, z), r);
     let cos_r = (1.0 - 0.5 * z) + (z * z) * horner(&COS_F32, z);
