@@ -16,10 +16,11 @@ pub const FAST_BOUND: f64 = 1_048_576.0;
 const ROUNDING_MAGIC: f64 = 6_755_399_441_055_744.0;
 
 /// `c[0] + z * (c[1] + z * (...))`, Horner, no fused multiply-add (bit-identical on any target).
+/// Starts from the last coefficient: a start at 0.0 would cost a multiply LLVM may not drop.
 #[inline(always)]
 fn horner<const D: usize>(coefficients: &[f64; D], z: f64) -> f64 {
-    let mut acc = 0.0;
-    let mut i = D;
+    let mut acc = coefficients[D - 1];
+    let mut i = D - 1;
     while i > 0 {
         i -= 1;
         acc = acc * z + coefficients[i];
