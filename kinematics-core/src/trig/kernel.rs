@@ -7,7 +7,7 @@ use super::coefficients::{COS_F32, COS_F64, FRAC_2_PI, PIO2_1, PIO2_2, PIO2_3, P
 
 /// The fast path is exact in its range reduction for |x| <= 2^20 (about 1.05e6 rad): there the
 /// quadrant count |k| < 2^20 and every `k * PIO2_n` with a 33-bit part is exact. Beyond it (and for
-/// NaN and infinities) the values are recomputed by [`sin_cos_slow`].
+/// NaN and infinities) the values are recomputed by the slow path (`sin_cos_slow`).
 pub const FAST_BOUND: f64 = 1_048_576.0;
 
 /// 1.5 * 2^52: adding it to a value below 2^51 in magnitude rounds that value to the nearest
