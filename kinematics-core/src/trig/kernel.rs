@@ -1,0 +1,137 @@
+//! The per-value steps of our sin/cos: the branch-free fast path (Cody-Waite reduction, minimax
+//! kernels, quadrant by bit masks) for f64 and for f32 (which runs in f64), the fast-path bound,
+//! and the slow path (libm) for values beyond it. Every function here is written so that a loop
+//! over lanes of it has no branch and auto-vectorises.
+
+use super::coefficients::{COS_F32, COS_F64, FRAC_2_PI, PIO2_1, PIO2_2, PIO2_3, PIO2_4, SIN_F32, SIN_F64};
+
+/// The fast path is exact in its range reduction for |x| <= 2^20 (about 1.05e6 rad): there the
+/// quadrant count |k| < 2^20 and every `k * PIO2_n` with a 33-bit part is exact. Beyond it (and for
+/// NaN and infinities) the values are recomputed by the slow path (`sin_cos_slow`).
+pub const FAST_BOUND: f64 = 1_048_576.0;
+
+/// 1.5 * 2^52: adding it to a value below 2^51 in magnitude rounds that value to the nearest
+/// integer (ties to even), which then sits in the low bits of the sum's mantissa, in two's
+/// complement for negative values.
+const ROUNDING_MAGIC: f64 = 6_755_399_441_055_744.0;
+
+/// `c[0] + z * (c[1] + z * (...))`, Horner, no fused multiply-add (bit-identical on any target).
+/// Starts from the last coefficient: a start at 0.0 would cost a multiply LLVM may not drop.
+#[inline(always)]
+fn horner<const D: usize>(coefficients: &[f64; D], z: f64) -> f64 {
+    let mut acc = coefficients[D - 1];
+    let mut i = D - 1;
+    while i > 0 {
+        i -= 1;
+        acc = acc * z + coefficients[i];
+    }
+    acc
+}
+
+/// The quadrant count k (as an f64 integer) and its bits (k mod 4 in the low two) for `x`.
+#[inline(always)]
+fn quadrant(x: f64) -> (f64, u64) {
+    let shifted = x * FRAC_2_PI + ROUNDING_MAGIC;
+    (shifted - ROUNDING_MAGIC, shifted.to_bits())
+}
+
+/// `x - k * pi/2` in a single f64, for the f32 routines (whose kernels need 2^-40 relative, far
+/// less than the 3-part split gives): each product is exact (33-bit parts, |k| < 2^20) and
+/// `x - k * PIO2_1` is exact (Sterbenz once k != 0).
+#[inline(always)]
+fn reduce_single(x: f64, k: f64) -> f64 {
+    let mut r = x - k * PIO2_1;
+    r -= k * PIO2_2;
+    r - k * PIO2_3
+}
+
+/// `x - k * pi/2` as an unevaluated sum `hi + lo` (|lo| <= half an ulp of hi, up to roundings
+/// of order 2^-100): the f64 kernels add `lo`'s first-order effect, which keeps them within one
+/// ulp where a single f64 with three roundings reached two (measured at |x| ~ 9e3).
+#[inline(always)]
+fn reduce_double(x: f64, k: f64) -> (f64, f64) {
+    let t = x - k * PIO2_1; // exact, as above
+    let w = k * PIO2_2; // exact
+    let r1 = t - w;
+    // Knuth's TwoSum: the exact rounding error of t - w, whatever their magnitudes.
+    let w_rounded = t - r1;
+    let t_rounded = r1 + w_rounded;
+    let e1 = (t - t_rounded) + (w_rounded - w);
+    // The rest is tiny (|k * PIO2_3| < 2.2e-15): its roundings are of order 2^-53 of it.
+    // Written as a negated difference (the same value) so that x = -0 gives lo = -0 and hi = -0:
+    // `e1 - (...)` would be +0 there and turn hi into +0.
+    let lo = -((k * PIO2_3 + k * PIO2_4) - e1);
+    let hi = r1 + lo;
+    (hi, lo - (hi - r1))
+}
+
+/// `(sin x, cos x)` from the kernels' `(sin r, cos r)`: sin(r + k pi/2) is sin r, cos r, -sin r,
+/// -cos r for k mod 4 = 0..3, and cos(r + k pi/2) is cos r, -sin r, -cos r, sin r. Swaps and sign
+/// flips are bit masks, so lanes never branch.
+#[inline(always)]
+fn place_in_quadrant(quadrant: u64, sin_r: f64, cos_r: f64) -> (f64, f64) {
+    let swap = (quadrant & 1).wrapping_neg();
+    let (s, c) = (sin_r.to_bits(), cos_r.to_bits());
+    let sin_bits = (s & !swap) | (c & swap);
+    let cos_bits = (c & !swap) | (s & swap);
+    let sin_sign = (quadrant & 2) << 62;
+    let cos_sign = (quadrant.wrapping_add(1) & 2) << 62;
+    (f64::from_bits(sin_bits ^ sin_sign), f64::from_bits(cos_bits ^ cos_sign))
+}
+
+/// `magnitude` with the sign of `sign`. sin(r) has the sign of r on [-pi/4, pi/4], and this keeps
+/// sin(-0) = -0, which `r + (r * z) * S` alone would turn into +0 (the correction is +0 there).
+#[inline(always)]
+fn with_sign_of(magnitude: f64, sign: f64) -> f64 {
+    const SIGN: u64 = 1 << 63;
+    f64::from_bits((magnitude.to_bits() & !SIGN) | (sign.to_bits() & SIGN))
+}
+
+/// Branch-free f64 sin and cos, right for |x| <= [`FAST_BOUND`]; NaN or garbage beyond it.
+#[inline(always)]
+pub fn sin_cos_fast_f64(x: f64) -> (f64, f64) {
+    let (k, quadrant) = quadrant(x);
+    let (r, r_lo) = reduce_double(x, k);
+    let z = r * r;
+    let half_z = 0.5 * z;
+    // sin(r + lo) = sin r + lo cos r + O(lo^2), and cos r ~ 1 - z/2 is all lo (<= 2^-53 r) needs.
+    let sin_tail = (r * z) * horner(&SIN_F64, z) + r_lo * (1.0 - half_z);
+    let sin_r = with_sign_of(r + sin_tail, r);
+    // 1 - z/2 loses up to half an ulp of a value near 0.7; the rounding error of that subtraction
+    // is recovered exactly by (1 - w) - z/2 (Sterbenz; z/2 <= 0.31) and added back with the tail,
+    // as is cos(r + lo) - cos r ~ -lo r.
+    let w = 1.0 - half_z;
+    let cos_r = w + (((1.0 - w) - half_z) + ((z * z) * horner(&COS_F64, z) - r * r_lo));
+    place_in_quadrant(quadrant, sin_r, cos_r)
+}
+
+/// Branch-free f32 sin and cos, right for |x| <= [`FAST_BOUND`]. Computed in f64 with kernels of
+/// f32 accuracy: the reduction keeps all the bits an f32 result needs at any k, and the only
+/// rounding that shows is the final one to f32.
+#[inline(always)]
+pub fn sin_cos_fast_f32(x: f32) -> (f32, f32) {
+    let wide = f64::from(x);
+    let (k, quadrant) = quadrant(wide);
+    let r = reduce_single(wide, k);
+    let z = r * r;
+    let sin_r = with_sign_of(r + (r * z) * horner(&SIN_F32, z), r);
+    let cos_r = (1.0 - 0.5 * z) + (z * z) * horner(&COS_F32, z);
+    let (s, c) = place_in_quadrant(quadrant, sin_r, cos_r);
+    // Rounding to f32 is what `as` does here (to nearest); no truncation, no saturation.
+    (s as f32, c as f32)
+}
+
+/// Whether the fast path is right for `x`: false beyond the bound, for infinities and for NaN.
+#[inline(always)]
+pub fn in_fast_range(x: f64) -> bool {
+    x.abs() <= FAST_BOUND
+}
+
+/// The slow path for values outside the fast range: libm's `sincos` (Payne-Hanek reduction for
+/// large arguments, NaN for NaN and infinities). Kept out of line and cold so the fast path's
+/// code stays small.
+#[cold]
+#[inline(never)]
+pub fn sin_cos_slow(x: f64) -> (f64, f64) {
+    libm::sincos(x)
+}
