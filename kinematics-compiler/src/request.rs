@@ -256,6 +256,13 @@ impl Compiled {
         OpCount::of(&self.graph, self.outputs())
     }
 
+    /// What each frame adds to the frames before it, in frame order: the multiplications, additions
+    /// and `sin_cos` pairs its outputs need that no earlier frame's outputs already computed (see
+    /// [`crate::stats::marginal_counts`]). They add up to [`Compiled::op_count`].
+    pub fn marginal_op_counts(&self) -> Vec<OpCount> {
+        crate::stats::marginal_counts(&self.graph, (0..self.frames.len()).map(|i| self.frame_outputs(i)))
+    }
+
     /// Operation counts of one frame alone.
     pub fn frame_op_count(&self, index: usize) -> OpCount {
         OpCount::of(&self.graph, self.frame_outputs(index))

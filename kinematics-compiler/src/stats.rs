@@ -40,6 +40,48 @@ impl OpCount {
     }
 }
 
+/// What each group of outputs adds to the groups before it: the nodes reachable from a group that
+/// no earlier group reaches (a shared subexpression, or a `sin_cos` pair, counts for the first group
+/// that needs it). The counts add up to [`OpCount::of`] all the groups together, so they say where
+/// the cost of a set of poses goes (`kinematics expr --all` prints them per link).
+pub fn marginal_counts<I>(g: &ExprGraph, groups: impl IntoIterator<Item = I>) -> Vec<OpCount>
+where
+    I: IntoIterator<Item = ExprId>,
+{
+    let mut seen = vec![false; g.len()];
+    let mut angles = BTreeSet::new();
+    let mut counts = Vec::new();
+    for group in groups {
+        let mut count = OpCount::default();
+        let mut stack: Vec<ExprId> = group.into_iter().collect();
+        while let Some(id) = stack.pop() {
+            if std::mem::replace(&mut seen[id.index()], true) {
+                continue;
+            }
+            match g.node(id) {
+                Node::Mul(a, b) => {
+                    count.mul += 1;
+                    stack.extend([a, b]);
+                }
+                Node::Add(a, b) => {
+                    count.add += 1;
+                    stack.extend([a, b]);
+                }
+                Node::Sin(a) | Node::Cos(a) => {
+                    if angles.insert(a) {
+                        count.sin_cos += 1;
+                    }
+                    stack.push(a);
+                }
+                Node::Neg(a) => stack.push(a),
+                Node::Const(_) | Node::Var(_) => {}
+            }
+        }
+        counts.push(count);
+    }
+    counts
+}
+
 /// What one `sin_cos` costs in multiplications or additions, for choosing between forms: about
 /// 20 ns against well under a nanosecond for a multiply-add on the machines we measured.
 pub const SIN_COS_WEIGHT: usize = 40;
