@@ -166,3 +166,30 @@ pub fn reachable(g: &ExprGraph, outputs: impl IntoIterator<Item = ExprId>) -> Ve
     }
     seen.iter().enumerate().filter(|(_, s)| **s).map(|(i, _)| g.id(i)).collect()
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `a*b` for the first group, `a*b + c` and `sin(q1)` for the second: the shared product
+    /// counts once, for the first group; an angle counts once, for the first group needing it.
+    #[test]
+    fn marginal_counts_charge_shared_work_to_the_first_user() {
+        let mut g = ExprGraph::new();
+        let (a, b, c) = (g.var(0), g.var(1), g.var(2));
+        let ab = g.mul(a, b);
+        let sum = g.add(ab, c);
+        let (s, co) = (g.sin(a), g.cos(a));
+        let counts = marginal_counts(&g, [vec![ab, s], vec![sum, co], vec![ab]]);
+        let count = |sin_cos, mul, add| OpCount { sin_cos, mul, add };
+        assert_eq!(counts, vec![count(1, 1, 0), count(0, 0, 1), count(0, 0, 0)]);
+        assert_eq!(OpCount::of(&g, [ab, s, sum, co]), count(1, 1, 1));
+        // What a group would add is not recorded until it is added.
+        let mut reached = Reached::new();
+        reached.add(&g, [ab]);
+        let (would, angles) = reached.cost_of(&g, [sum, s]);
+        assert_eq!((would, angles.len()), (count(1, 0, 1), 1));
+        assert_eq!(reached.add(&g, [sum, s]), count(1, 0, 1));
+        assert_eq!(reached.add(&g, [sum, co]), count(0, 0, 0));
+    }
+}
