@@ -193,8 +193,8 @@ fn expr_prints_the_pose_and_its_cost_for_every_robot() {
 #[test]
 fn expr_all_prints_what_each_link_adds() {
     for file in ["robots/humanoid.urdf", "robots/dual_arm_torso.urdf", "robots/ur5.urdf", "robots/planar_3r.toml"] {
-        let out = ok(&["expr", &file, "--all"]);
-        let tree = load(&file);
+        let out = ok(&["expr", file, "--all"]);
+        let tree = load(file);
         let all = kinematics_compiler::compile(&tree, &kinematics_compiler::Request::all_links()).unwrap();
         let numbers = |line: &str| -> [usize; 3] {
             let fields: Vec<usize> = line.split_whitespace().filter_map(|w| w.parse().ok()).collect();
