@@ -1,4 +1,5 @@
-//! `kinematics expr FILE`: the simplified symbolic pose of one link and what it costs.
+//! `kinematics expr FILE`: the simplified symbolic pose of one link and what it costs, or with
+//! `--all` what every link's pose adds to the all-links code (where the cost of a tree goes).
 
 use std::io::Write;
 
@@ -16,16 +17,25 @@ pub struct Args {
     #[arg(long)]
     base: Option<String>,
     /// The link whose pose is printed (default: the deepest link).
-    #[arg(long)]
+    #[arg(long, conflicts_with = "all")]
     tip: Option<String>,
     /// Print LaTeX instead of text.
-    #[arg(long)]
+    #[arg(long, conflicts_with = "all")]
     latex: bool,
+    /// Compile the poses of every link (as the all-links function does) and print, per link, the
+    /// operations its pose adds to those of the links listed before it.
+    #[arg(long)]
+    all: bool,
 }
 
 /// Prints the pose and its operation counts.
 pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
     let tree = crate::robot::load(&args.file)?;
+    if args.all {
+        let (base, _) = crate::robot::base_and_tip(&tree, &args.file, args.base.as_deref(), None)?;
+        write!(out, "{}", all_links_table(&tree, &args.file, &base)?)?;
+        return Ok(());
+    }
     let (base, tip) = crate::robot::base_and_tip(&tree, &args.file, args.base.as_deref(), args.tip.as_deref())?;
     write!(out, "{}", pose_text(&tree, &args.file, &base, &tip, args.latex)?)?;
     writeln!(out, "\noperations:")?;
@@ -113,6 +123,54 @@ pub fn op_counts(tree: &KinematicTree, file: &str, base: &str, tip: &str) -> Res
         (format!("pose of {tip}, plain product"), plain),
         (format!("position of {tip}, generated"), position.op_count()),
     ])
+}
+
+/// The poses of every link but `base` compiled together (the all-links function's code), one row
+/// per link: the joint it hangs from and the operations its pose adds to the rows above it
+/// (a subexpression or `sin_cos` pair shared with an earlier link is counted there), then the
+/// total, which the rows add up to.
+pub fn all_links_table(tree: &KinematicTree, file: &str, base: &str) -> Result<String, CliError> {
+    let compiled = compile(tree, &Request::all_links().with_base(base))
+        .map_err(|source| CliError::Compile { file: file.to_owned(), source })?;
+    let counts = compiled.marginal_op_counts();
+    let joint_of = |link: &str| {
+        let joint = tree.link_by_name(link).and_then(|l| l.parent_joint).map(|j| tree.joint(j));
+        joint.map_or_else(String::new, |j| {
+            let how = match j.motion {
+                kinematics::model::JointMotion::Fixed => "fixed",
+                kinematics::model::JointMotion::Dof(_) => "moving",
+                kinematics::model::JointMotion::Mimic { .. } => "mimic",
+            };
+            format!("{} ({how})", j.name)
+        })
+    };
+    let rows: Vec<(String, String, OpCount)> = compiled
+        .frames()
+        .iter()
+        .zip(counts)
+        .map(|(frame, count)| (frame.link.clone(), joint_of(&frame.link), count))
+        .collect();
+    let mut out = format!(
+        "robot `{}`: poses of all {} links in `{base}`; what each adds to the links above it\n\n",
+        tree.name(),
+        rows.len()
+    );
+    let link_width = crate::inspect::column_width(rows.iter().map(|(l, _, _)| l.as_str()).chain(["link", "total"]));
+    let joint_width = crate::inspect::column_width(rows.iter().map(|(_, j, _)| j.as_str()).chain(["joint"]));
+    let line = |link: &str, joint: &str, count: &OpCount| {
+        let (link, joint) = (crate::inspect::pad(link, link_width), crate::inspect::pad(joint, joint_width));
+        format!("  {link}  {joint}  {:>7} / {:>3} / {:>3}\n", count.sin_cos, count.mul, count.add)
+    };
+    out += &format!(
+        "  {}  {}  sin_cos / mul / add\n",
+        crate::inspect::pad("link", link_width),
+        crate::inspect::pad("joint", joint_width)
+    );
+    for (link, joint, count) in &rows {
+        out += &line(link, joint, count);
+    }
+    out += &line("total", "", &compiled.op_count());
+    Ok(out)
 }
 
 /// Operation counts as aligned `sin_cos / mul / add` lines.

@@ -188,6 +188,40 @@ fn expr_prints_the_pose_and_its_cost_for_every_robot() {
     assert!(relative.starts_with("robot `ur5`: pose of `tool0` in `base`\n"), "{relative}");
 }
 
+/// `expr --all`: one row per link with the operations it adds to the links above it; the rows add
+/// up to the total, which is the all-links code's count.
+#[test]
+fn expr_all_prints_what_each_link_adds() {
+    for file in ["robots/humanoid.urdf", "robots/dual_arm_torso.urdf", "robots/ur5.urdf", "robots/planar_3r.toml"] {
+        let out = ok(&["expr", file, "--all"]);
+        let tree = load(file);
+        let all = kinematics_compiler::compile(&tree, &kinematics_compiler::Request::all_links()).unwrap();
+        let numbers = |line: &str| -> [usize; 3] {
+            let fields: Vec<usize> = line.split_whitespace().filter_map(|w| w.parse().ok()).collect();
+            let n = fields.len();
+            assert!(n >= 3, "{file}: `{line}`");
+            [fields[n - 3], fields[n - 2], fields[n - 1]]
+        };
+        let rows: Vec<&str> = out.lines().filter(|l| l.contains(" / ") && !l.contains("sin_cos")).collect();
+        let (total, links) = rows.split_last().unwrap();
+        assert!(total.trim_start().starts_with("total"), "{file}: {total}");
+        assert_eq!(links.len(), tree.links().len() - 1, "{file}: one row per link but the root\n{out}");
+        let whole = all.op_count();
+        assert_eq!(numbers(total), [whole.sin_cos, whole.mul, whole.add], "{file}");
+        let sum = links.iter().map(|l| numbers(l)).fold([0; 3], |acc, n| [acc[0] + n[0], acc[1] + n[1], acc[2] + n[2]]);
+        assert_eq!(sum, numbers(total), "{file}: the rows do not add up to the total\n{out}");
+        // Each row names its link and the joint it hangs from.
+        for (row, frame) in links.iter().zip(all.frames()) {
+            assert!(row.trim_start().starts_with(&format!("{} ", frame.link)), "{file}: `{row}`");
+        }
+    }
+    let humanoid = ok(&["expr", "robots/humanoid.urdf", "--all"]);
+    assert!(humanoid.lines().any(|l| l.contains("LFinger12_link") && l.contains("LFinger12 (mimic)")), "{humanoid}");
+    assert!(humanoid.lines().any(|l| l.contains("l_sole") && l.contains("(fixed)")), "{humanoid}");
+    // One link's pose and all links are different questions.
+    assert!(!run(&["expr", "robots/ur5.urdf", "--all", "--tip", "tool0"]).status.success());
+}
+
 #[test]
 fn generate_prints_what_the_build_api_writes() {
     for file in robots() {

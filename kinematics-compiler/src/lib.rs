@@ -28,4 +28,4 @@ pub mod symbolic;
 
 pub use error::CompileError;
 pub use request::{Compiled, Frame, Request, compile, plain_product_count};
-pub use stats::OpCount;
+pub use stats::{OpCount, marginal_counts};

@@ -1,12 +1,15 @@
 //! What to compile (base, tips, outputs) and the compiled result.
 
+use std::collections::BTreeSet;
+
 use kinematics_model::{KinematicTree, LinkId};
 
 use crate::error::CompileError;
 use crate::simplify::{
-    EXPR_PASSES, Options, TOOL_FIRST_PASSES, run_chain_passes, run_expr_passes, simplify_with, split_tail,
+    DERIVATION_COST, EXPR_PASSES, Options, TOOL_FIRST_PASSES, angle_terms, run_chain_passes, run_expr_passes,
+    simplify_with, split_tail,
 };
-use crate::stats::OpCount;
+use crate::stats::{OpCount, Reached, SIN_COS_WEIGHT};
 use crate::symbolic::graph::{ExprGraph, ExprId};
 use crate::symbolic::lower::lower_path;
 use crate::symbolic::step::{Step, invert};
@@ -99,18 +102,26 @@ pub fn compile(tree: &KinematicTree, request: &Request) -> Result<Compiled, Comp
     // prefixes from the base out. Every simplifier option is tried and the cheapest code kept (the
     // first of equals, so the choice is deterministic).
     let orders: &[Order] = if tip_ids.len() == 1 { &[Order::FromTool, Order::FromBase] } else { &[Order::FromBase] };
+    let cost = |(g, frames): &(ExprGraph, Vec<SymTransform>)| {
+        let outputs =
+            frames.iter().flat_map(|t| if request.position_only { t.p.to_vec() } else { t.entries().to_vec() });
+        OpCount::of(g, outputs).weighted()
+    };
     let mut best: Option<(usize, (ExprGraph, Vec<SymTransform>))> = None;
+    let mut consider = |candidate: (ExprGraph, Vec<SymTransform>)| {
+        let cost = cost(&candidate);
+
+        if best.as_ref().is_none_or(|(c, _)| cost < *c) {
+            best = Some((cost, candidate));
+        }
+    };
     for &order in orders {
         for options in Options::ALL {
-            let candidate = fold_tips(tree, base, &tip_ids, order, options, request.position_only);
-            let (g, frames) = &candidate;
-            let outputs =
-                frames.iter().flat_map(|t| if request.position_only { t.p.to_vec() } else { t.entries().to_vec() });
-            let cost = OpCount::of(g, outputs).weighted();
-            if best.as_ref().is_none_or(|(c, _)| cost < *c) {
-                best = Some((cost, candidate));
-            }
+            consider(fold_tips(tree, base, &tip_ids, order, options, request.position_only));
         }
+    }
+    if tip_ids.len() > 1 {
+        consider(extend_tips(tree, base, &tip_ids, request.position_only));
     }
     #[allow(clippy::expect_used, reason = "an invariant of the search, named in the message")]
     let (_, (graph, frames)) = best.expect("the search tries at least one fold order with at least one option");
@@ -204,6 +215,86 @@ fn fold_tips(
     (graph, frames)
 }
 
+/// How many joints up from a tip [`extend_tips`] looks for an ancestor whose pose to extend.
+/// Bounded, so that the search stays linear in the number of links; beyond a few joints the pose
+/// from the base is the other candidate.
+const EXTEND_REACH: usize = 3;
+
+/// Builds the pose of every tip, in order, as the cheapest of: its path from the base simplified
+/// and folded on its own, or the pose of an ancestor already built (up to [`EXTEND_REACH`] joints
+/// up) times the simplified steps from that ancestor, each with every [`Options`]. Cheapest means
+/// what the pose adds to the poses before it ([`Reached::cost_of`]), so a link extends its
+/// parent's pose where recomputing its path from the base would repeat work the parent already
+/// did (a constant rotation on a finger's base multiplied again for every finger link), and
+/// keeps its own path where that shares more (an angle sum such as `q2 + q3`).
+fn extend_tips(
+    tree: &KinematicTree,
+    base: LinkId,
+    tips: &[LinkId],
+    position_only: bool,
+) -> (ExprGraph, Vec<SymTransform>) {
+    let mut graph = ExprGraph::new();
+    let mut built: Vec<Option<SymTransform>> = vec![None; tree.links().len()];
+    let mut reached = Reached::new();
+    // The joint terms of the angles computed so far.
+    let mut known_terms: BTreeSet<Vec<(u32, u64)>> = BTreeSet::new();
+    let mut frames = Vec::with_capacity(tips.len());
+    let outputs = |t: &SymTransform| if position_only { t.p.to_vec() } else { t.entries().to_vec() };
+    for &tip in tips {
+        // The starting poses: the base (identity, the whole path), then each built ancestor within
+        // reach, with the joints from it down to the tip.
+        let mut starts: Vec<(Option<LinkId>, Vec<kinematics_model::JointId>)> = vec![(None, Vec::new())];
+        let mut joints = Vec::new();
+        let mut at = tip;
+        while joints.len() < EXTEND_REACH
+            && at != base
+            && let Some(joint) = tree.link(at).parent_joint
+        {
+            joints.insert(0, joint);
+            at = tree.joint(joint).parent;
+            if built[at.0].is_some() {
+                starts.push((Some(at), joints.clone()));
+            }
+        }
+        let mut best: Option<(usize, SymTransform)> = None;
+        for (start, joints) in &starts {
+            for options in Options::ALL {
+                let (origin, steps) = match start {
+                    None => (SymTransform::identity(&mut graph), path_steps(&mut graph, tree, base, tip)),
+                    Some(link) => (
+                        built[link.0].unwrap_or_else(|| SymTransform::identity(&mut graph)),
+                        lower_path(&mut graph, tree, joints),
+                    ),
+                };
+                let steps = simplify_with(&mut graph, steps, options);
+                let pose = fold_from_base(&mut graph, origin, &steps);
+                let (count, angles) = reached.cost_of(&graph, outputs(&pose));
+                // A new angle whose joint terms an angle already computed has (`m*q - m` beside
+                // `m*q`) comes from it by `derived-angles`, for a few multiplications.
+                let mut known = known_terms.clone();
+                let angle_cost: usize = angles
+                    .iter()
+                    .map(|&a| {
+                        let derivable = angle_terms(&graph, a).is_some_and(|terms| !known.insert(terms));
+                        if derivable { DERIVATION_COST } else { SIN_COS_WEIGHT }
+                    })
+                    .sum();
+                let cost = count.mul + count.add + angle_cost;
+                if best.as_ref().is_none_or(|(c, _)| cost < *c) {
+                    best = Some((cost, pose));
+                }
+            }
+        }
+        let pose = best.map_or_else(|| SymTransform::identity(&mut graph), |(_, pose)| pose);
+        reached.add(&graph, outputs(&pose));
+        known_terms = reached.angles().iter().filter_map(|&a| angle_terms(&graph, a)).collect();
+        built[tip.0] = Some(pose);
+        frames.push(pose);
+    }
+    run_expr_passes(&mut graph, &mut frames, EXPR_PASSES, position_only);
+    (graph, frames)
+}
+
 /// The steps of `T_base^tip`: up from `base` to the nearest common ancestor (inverted), then down
 /// to `tip`. When `base` is an ancestor of `tip`, only the downward part remains.
 fn path_steps(g: &mut ExprGraph, tree: &KinematicTree, base: LinkId, tip: LinkId) -> Vec<Step> {
@@ -254,6 +345,13 @@ impl Compiled {
     /// Operation counts of everything computed.
     pub fn op_count(&self) -> OpCount {
         OpCount::of(&self.graph, self.outputs())
+    }
+
+    /// What each frame adds to the frames before it, in frame order: the multiplications, additions
+    /// and `sin_cos` pairs its outputs need that no earlier frame's outputs already computed (see
+    /// [`crate::stats::marginal_counts`]). They add up to [`Compiled::op_count`].
+    pub fn marginal_op_counts(&self) -> Vec<OpCount> {
+        crate::stats::marginal_counts(&self.graph, (0..self.frames.len()).map(|i| self.frame_outputs(i)))
     }
 
     /// Operation counts of one frame alone.

@@ -40,6 +40,95 @@ impl OpCount {
     }
 }
 
+/// The nodes and `sin_cos` angles a set of outputs already computes, and what more outputs would
+/// add to them: the cost of one more pose given the poses before it.
+#[derive(Debug, Clone, Default)]
+pub struct Reached {
+    seen: Vec<bool>,
+    angles: BTreeSet<ExprId>,
+}
+
+impl Reached {
+    /// Nothing reached yet.
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// What `outputs` cost beyond the nodes already reached, and the angles they need that were
+    /// not reached (nothing is recorded).
+    pub fn cost_of(&self, g: &ExprGraph, outputs: impl IntoIterator<Item = ExprId>) -> (OpCount, BTreeSet<ExprId>) {
+        let mut visited = rustc_hash::FxHashSet::default();
+        let mut angles = BTreeSet::new();
+        let count = self.walk(g, outputs, |id| visited.insert(id), |a| angles.insert(a));
+        (count, angles)
+    }
+
+    /// The angles whose `sin_cos` the reached nodes need.
+    pub fn angles(&self) -> &BTreeSet<ExprId> {
+        &self.angles
+    }
+
+    /// Records `outputs` as reached and returns what they added.
+    pub fn add(&mut self, g: &ExprGraph, outputs: impl IntoIterator<Item = ExprId>) -> OpCount {
+        let mut seen = std::mem::take(&mut self.seen);
+        let mut angles = std::mem::take(&mut self.angles);
+        seen.resize(g.len(), false);
+        let count = self.walk(g, outputs, |id| !std::mem::replace(&mut seen[id.index()], true), |a| angles.insert(a));
+        (self.seen, self.angles) = (seen, angles);
+        count
+    }
+
+    /// Counts the nodes reachable from `outputs` through nodes not reached before, visiting each
+    /// once (`first_visit` says whether a node is new to this walk); an angle counts when neither
+    /// this set nor the walk (`new_angle`) had it.
+    fn walk(
+        &self,
+        g: &ExprGraph,
+        outputs: impl IntoIterator<Item = ExprId>,
+        mut first_visit: impl FnMut(ExprId) -> bool,
+        mut new_angle: impl FnMut(ExprId) -> bool,
+    ) -> OpCount {
+        let mut count = OpCount::default();
+        let mut stack: Vec<ExprId> = outputs.into_iter().collect();
+        while let Some(id) = stack.pop() {
+            if self.seen.get(id.index()).copied().unwrap_or(false) || !first_visit(id) {
+                continue;
+            }
+            match g.node(id) {
+                Node::Mul(a, b) => {
+                    count.mul += 1;
+                    stack.extend([a, b]);
+                }
+                Node::Add(a, b) => {
+                    count.add += 1;
+                    stack.extend([a, b]);
+                }
+                Node::Sin(a) | Node::Cos(a) => {
+                    if !self.angles.contains(&a) && new_angle(a) {
+                        count.sin_cos += 1;
+                    }
+                    stack.push(a);
+                }
+                Node::Neg(a) => stack.push(a),
+                Node::Const(_) | Node::Var(_) => {}
+            }
+        }
+        count
+    }
+}
+
+/// What each group of outputs adds to the groups before it: the nodes reachable from a group that
+/// no earlier group reaches (a shared subexpression, or a `sin_cos` pair, counts for the first group
+/// that needs it). The counts add up to [`OpCount::of`] all the groups together, so they say where
+/// the cost of a set of poses goes (`kinematics expr --all` prints them per link).
+pub fn marginal_counts<I>(g: &ExprGraph, groups: impl IntoIterator<Item = I>) -> Vec<OpCount>
+where
+    I: IntoIterator<Item = ExprId>,
+{
+    let mut reached = Reached::new();
+    groups.into_iter().map(|group| reached.add(g, group)).collect()
+}
+
 /// What one `sin_cos` costs in multiplications or additions, for choosing between forms: about
 /// 20 ns against well under a nanosecond for a multiply-add on the machines we measured.
 pub const SIN_COS_WEIGHT: usize = 40;
@@ -76,4 +165,31 @@ pub fn reachable(g: &ExprGraph, outputs: impl IntoIterator<Item = ExprId>) -> Ve
         }
     }
     seen.iter().enumerate().filter(|(_, s)| **s).map(|(i, _)| g.id(i)).collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `a*b` for the first group, `a*b + c` and `sin(q1)` for the second: the shared product
+    /// counts once, for the first group; an angle counts once, for the first group needing it.
+    #[test]
+    fn marginal_counts_charge_shared_work_to_the_first_user() {
+        let mut g = ExprGraph::new();
+        let (a, b, c) = (g.var(0), g.var(1), g.var(2));
+        let ab = g.mul(a, b);
+        let sum = g.add(ab, c);
+        let (s, co) = (g.sin(a), g.cos(a));
+        let counts = marginal_counts(&g, [vec![ab, s], vec![sum, co], vec![ab]]);
+        let count = |sin_cos, mul, add| OpCount { sin_cos, mul, add };
+        assert_eq!(counts, vec![count(1, 1, 0), count(0, 0, 1), count(0, 0, 0)]);
+        assert_eq!(OpCount::of(&g, [ab, s, sum, co]), count(1, 1, 1));
+        // What a group would add is not recorded until it is added.
+        let mut reached = Reached::new();
+        reached.add(&g, [ab]);
+        let (would, angles) = reached.cost_of(&g, [sum, s]);
+        assert_eq!((would, angles.len()), (count(1, 0, 1), 1));
+        assert_eq!(reached.add(&g, [sum, s]), count(1, 0, 1));
+        assert_eq!(reached.add(&g, [sum, co]), count(0, 0, 0));
+    }
 }

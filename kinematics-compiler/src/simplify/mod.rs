@@ -18,16 +18,20 @@
 //!    constant rotations into joint angles too (`Rz(0.3) Rz(q1)` is `Rz(q1 + 0.3)`).
 //! 3. `quarter-turn`: a constant rotation by a whole number of quarter turns of its exact part
 //!    (the model decided which angles are exact; the compiler never rounds a number) is a signed
-//!    permutation; any other constant rotation becomes a numeric matrix.
+//!    permutation; any other constant rotation stays a rotation for now.
 //! 4. `push-quarter-turns`: signed permutations move to the end of the chain, conjugating what they
 //!    pass (`P R(u, a) = R(P u, a) P`, `P T(v) = T(P v) P`); they cost nothing there.
 //! 5. `axis-sign` again, on the axes the permutations turned round.
-//! 6. `merge-rotations` again, on what the permutations exposed.
-//! 7. `combine-translations`: adjacent translations add up.
-//! 8. `angle-sum`: rotations about parallel axes separated only by translations merge into one
+//! 6. `merge-rotations` again, on what the permutations exposed (a constant rotation of an `rpy`
+//!    origin that the permutation turned parallel to the joint's axis).
+//! 7. `constant-rotations`: the constant rotations left become numeric matrices, and a run of
+//!    adjacent matrices their product when that is cheaper to multiply by (an `rpy` origin about
+//!    three axes: one full matrix).
+//! 8. `combine-translations`: adjacent translations add up.
+//! 9. `angle-sum`: rotations about parallel axes separated only by translations merge into one
 //!    rotation by the sum, the translations moving before it (`R(a) T(v) R(b) = T(R(a) v) R(a + b)`),
 //!    so the code needs `sin`/`cos` of `q2 + q3`, not of `q3` alone.
-//! 9. `combine-translations` again, on the translations `angle-sum` moved together.
+//! 10. `combine-translations` again, on the translations `angle-sum` moved together.
 //!
 //! # Tool-first passes ([`TOOL_FIRST_PASSES`])
 //!
@@ -40,9 +44,12 @@
 //!
 //! Over the folded poses, in order:
 //!
-//! 1. `cross-column`: for a single pose, a rotation column becomes the cross product of the other
+//! 1. `derived-angles`: the sine and cosine of an angle that is a computed angle plus a constant
+//!    (`m*q - m` beside `m*q`), or a sum of two computed angles, come from theirs by the sum
+//!    formulas (four multiplications) instead of a `sin_cos` call.
+//! 2. `cross-column`: for a single pose, a rotation column becomes the cross product of the other
 //!    two when that is cheaper.
-//! 2. `common-factor`: `k*a + k*b = k*(a + b)` for products used only in that sum.
+//! 3. `common-factor`: `k*a + k*b = k*(a + b)` for products used only in that sum.
 //!
 //! # Not passes
 //!
@@ -57,7 +64,9 @@
 //! [`expr_text`](crate::symbolic::step::expr_text).
 
 mod angle_sum;
+mod constant;
 mod cross_column;
+mod derived_angles;
 mod factor;
 mod merge;
 mod quarter_turn;
@@ -70,7 +79,10 @@ use crate::symbolic::step::Step;
 use crate::symbolic::transform::SymTransform;
 
 pub use angle_sum::ANGLE_SUM;
+pub use constant::CONSTANT_ROTATIONS;
 pub use cross_column::CROSS_COLUMN;
+pub use derived_angles::DERIVED_ANGLES;
+pub(crate) use derived_angles::{DERIVATION_COST, angle_terms};
 pub use factor::COMMON_FACTOR;
 pub use merge::{AXIS_SIGN, COMBINE_TRANSLATIONS, MERGE_ROTATIONS};
 pub use quarter_turn::{PUSH_QUARTER_TURNS, QUARTER_TURN};
@@ -103,6 +115,7 @@ pub const CHAIN_PASSES: &[ChainPass] = &[
     PUSH_QUARTER_TURNS,
     AXIS_SIGN,
     MERGE_ROTATIONS,
+    CONSTANT_ROTATIONS,
     COMBINE_TRANSLATIONS,
     ANGLE_SUM,
     COMBINE_TRANSLATIONS,
@@ -112,7 +125,7 @@ pub const CHAIN_PASSES: &[ChainPass] = &[
 pub const TOOL_FIRST_PASSES: &[ChainPass] = &[TRANSLATION_TO_TAIL];
 
 /// The passes over the folded poses, in the order they run.
-pub const EXPR_PASSES: &[ExprPass] = &[CROSS_COLUMN, COMMON_FACTOR];
+pub const EXPR_PASSES: &[ExprPass] = &[DERIVED_ANGLES, CROSS_COLUMN, COMMON_FACTOR];
 
 /// Choices the passes leave open, because which is cheaper depends on the robot: the compiler tries
 /// each and keeps the cheapest result.

@@ -6,8 +6,10 @@ use crate::symbolic::step::{SignedPerm, Step};
 
 use super::ChainPass;
 
-/// Pass `quarter-turn`: constant rotations become signed permutations (whole quarter turns of
-/// an exact angle) or numeric matrices (any other); the identity vanishes.
+/// Pass `quarter-turn`: constant rotations by whole quarter turns of an exact angle become signed
+/// permutations (the identity vanishes); any other constant rotation stays a rotation, so that
+/// `merge-rotations` can still fold it into a parallel joint once the permutations have turned
+/// the axes (`constant-rotations` makes it a matrix afterwards).
 pub const QUARTER_TURN: ChainPass = ChainPass { name: "quarter-turn", run: |_, steps, _| quarter_turns(steps) };
 
 /// Pass `push-quarter-turns`: `P R(u, a) = R(P u, a) P`, `P T(v) = T(P v) P`, `P C = (P C P^T) P`,
@@ -17,7 +19,7 @@ pub const PUSH_QUARTER_TURNS: ChainPass =
 
 /// The numeric matrix of a constant rotation by `angle` about the unit `axis` (Rodrigues), with
 /// exact entries for exact quarter turns.
-fn constant_rotation(axis: [f64; 3], angle: &LinearAngle) -> [[f64; 3]; 3] {
+pub(super) fn constant_rotation(axis: [f64; 3], angle: &LinearAngle) -> [[f64; 3]; 3] {
     let (s, c) = angle.constant_sin_cos();
     let u = axis;
     let omc = 1.0 - c;
@@ -33,17 +35,16 @@ fn constant_rotation(axis: [f64; 3], angle: &LinearAngle) -> [[f64; 3]; 3] {
     })
 }
 
-/// Rule `quarter-turn`: constant rotations become signed permutations or numeric matrices.
+/// Rule `quarter-turn`: constant rotations by whole quarter turns become signed permutations.
 fn quarter_turns(steps: Vec<Step>) -> Vec<Step> {
     steps
         .into_iter()
         .filter_map(|step| match step {
             Step::Rotate { axis, angle } if angle.is_constant() => {
-                let m = constant_rotation(axis, &angle);
-                match SignedPerm::from_matrix(m) {
+                match SignedPerm::from_matrix(constant_rotation(axis, &angle)) {
                     Some(p) if p == SignedPerm::IDENTITY => None,
                     Some(p) => Some(Step::Permute(p)),
-                    None => Some(Step::ConstRotate(m)),
+                    None => Some(Step::Rotate { axis, angle }),
                 }
             }
             other => Some(other),
@@ -51,7 +52,7 @@ fn quarter_turns(steps: Vec<Step>) -> Vec<Step> {
         .collect()
 }
 
-fn mat_mul(a: [[f64; 3]; 3], b: [[f64; 3]; 3]) -> [[f64; 3]; 3] {
+pub(super) fn mat_mul(a: [[f64; 3]; 3], b: [[f64; 3]; 3]) -> [[f64; 3]; 3] {
     std::array::from_fn(|i| std::array::from_fn(|j| (0..3).map(|k| a[i][k] * b[k][j]).sum()))
 }
 
@@ -103,28 +104,14 @@ mod tests {
     }
 
     #[test]
-    fn other_constant_rotations_become_matrices() {
+    fn other_constant_rotations_stay_rotations() {
         let check = |input, expected| check(&QUARTER_TURN, input, expected);
-        // The nearest f64 to pi/2, and pi/2 as URDF files spell it, are numbers: numeric rotations,
-        // never rounded to a permutation.
-        check("Rx(1.5707963267948966)", "C(1, 0, 0; 0, 6.123233995736766e-17, -1; 0, 1, 6.123233995736766e-17)");
-        check("Rx(1.57079632679)", "C(1, 0, 0; 0, 4.8965888601467475e-12, -1; 0, 1, 4.8965888601467475e-12)");
-        check(
-            "Rz(0.3)",
-            "C(0.955336489125606, -0.29552020666133955, 0; 0.29552020666133955, 0.955336489125606, 0; 0, 0, 1)",
-        );
-        // A quarter-turn exact part is taken out exactly: sin(pi/2 + x) = cos x, cos(pi/2 + x) = -sin x.
-        check(
-            "Rz(pi/2 + 0.3)",
-            "C(-0.29552020666133955, -0.955336489125606, 0; 0.955336489125606, -0.29552020666133955, 0; 0, 0, 1)",
-        );
-        // Exact, but not a quarter turn: the sine and cosine f64 computes.
-        check(
-            "Rz(pi/3)",
-            "C(0.5000000000000001, -0.8660254037844386, 0; 0.8660254037844386, 0.5000000000000001, 0; 0, 0, 1)",
-        );
-        // A half turn about an axis off the coordinate axes: `2 u u^T - I`, its zeros exact.
-        check("R[0.6, 0, 0.8](pi)", "C(-0.28, 0, 0.96; 0, -1, 0; 0.96, 0, 0.28000000000000025)");
+        // The nearest f64 to pi/2, and pi/2 as URDF files spell it, are numbers, never rounded to a
+        // permutation (`constant-rotations` makes them matrices).
+        check("Rx(1.5707963267948966)", "Rx(1.5707963267948966)");
+        check("Rz(0.3) Rx(pi/2)", "Rz(0.3) P(x, -z, y)");
+        check("Rz(pi/3)", "Rz(pi/3)");
+        check("R[0.6, 0, 0.8](pi)", "R[0.6, 0, 0.8](pi)");
     }
 
     #[test]
@@ -144,6 +131,8 @@ mod tests {
         check("P(-y, x, z) C(1, 0, 0; 0, 0.8, -0.6; 0, 0.6, 0.8)", "C(0.8, 0, 0.6; 0, 1, 0; -0.6, 0, 0.8) P(-y, x, z)");
         // An axis off the coordinate axes turns too.
         check("P(-y, x, z) R[0.6, 0, 0.8](q1)", "R[-0, 0.6, 0.8](q1) P(-y, x, z)");
+        // A numeric constant rotation turns as a joint's does.
+        check("P(x, -z, y) Rz(0.3)", "R-y(0.3) P(x, -z, y)");
         // Nothing to push.
         check("Rz(q1) T(1, 0, 0) P(y, -x, z)", "Rz(q1) T(1, 0, 0) P(y, -x, z)");
         check("Rz(q1) T(1, 0, 0)", "Rz(q1) T(1, 0, 0)");
