@@ -125,7 +125,9 @@ fn write_random_robots(out: &Path) -> Result<(), Box<dyn std::error::Error>> {
     std::fs::create_dir_all(&dir)?;
     let mut code = String::new();
     let mut registry = String::new();
-    for robot in random_robots::generate() {
+    for (index, robot) in random_robots::generate().into_iter().enumerate() {
+        // Every fourth robot calls std's sine and cosine (`trig = "std"`), the others ours.
+        let trig = if index % 4 == 3 { "Std" } else { "Fast" };
         std::fs::write(dir.join(&robot.file), &robot.text)?;
         let tree = kinematics_model::parse_source_with(&robot.file, &robot.text, ExactAngles::on(robot.exact_angles))
             .map_err(|e| format!("random robot {}: {e}\n{}", robot.file, robot.text))?;
@@ -138,7 +140,11 @@ fn write_random_robots(out: &Path) -> Result<(), Box<dyn std::error::Error>> {
             positions: robot.positions,
             scalars: Scalars { f64: robot.f64, f32: robot.f32 },
             krate: "::kinematics".parse()?,
-            trig: kinematics_compiler::emit::Trig::Fast,
+            trig: if trig == "Std" {
+                kinematics_compiler::emit::Trig::Std
+            } else {
+                kinematics_compiler::emit::Trig::Fast
+            },
             source_label: robot.file.clone(),
             source_text: text_expr.parse()?,
             impl_generics: "".parse()?,
@@ -149,10 +155,14 @@ fn write_random_robots(out: &Path) -> Result<(), Box<dyn std::error::Error>> {
             format!("/// `random/{}` ({}).\n#[derive(Debug)]\npub struct {ty};\n{tokens}\n", robot.file, robot.shape);
         code += &item;
         let tips = robot.tips.len();
+        // Every third robot also gets its batch and lane-type functions checked (all of them would
+        // take minutes to compile: each is the whole robot again, on a lane type).
+        let lanes_checked = index % 3 == 0;
         let typed = |on: bool, suffix: &str, t: &str| {
             if !on {
                 return "None".to_owned();
             }
+            let lanes = if t == "f64" { "::kinematics::F64x4" } else { "::kinematics::F32x8" };
             let position = |what: &str| {
                 if robot.positions {
                     format!("Some(|q| {ty}::{what}{suffix}(arr(q)).to_vec())")
@@ -172,14 +182,40 @@ fn write_random_robots(out: &Path) -> Result<(), Box<dyn std::error::Error>> {
                 ),
                 _ => (format!("Some(|q| {ty}::tip_poses{suffix}(arr(q)).to_vec())"), position("tip_positions")),
             };
+            let tip_batch = match tips {
+                _ if !lanes_checked => "None".to_owned(),
+                0 => "None".to_owned(),
+                1 => format!(
+                    "Some(|qs| batch(qs, |a, o| {ty}::tip_pose_batch{suffix}(a, o)).map(|v| v.into_iter().map(|p| vec![p]).collect()))"
+                ),
+                _ => format!(
+                    "Some(|qs| batch(qs, |a, o| {ty}::tip_poses_batch{suffix}(a, o)).map(|v| v.into_iter().map(|p| p.to_vec()).collect()))"
+                ),
+            };
+            let tip_lanes = match tips {
+                _ if !lanes_checked => "None".to_owned(),
+                0 => "None".to_owned(),
+                1 => format!("Some(|qs| lanes::<{lanes}, _, _>(qs, |q| [{ty}::tip_pose_generic(q)]))"),
+                _ => format!("Some(|qs| lanes::<{lanes}, _, _>(qs, |q| {ty}::tip_poses_generic(q)))"),
+            };
+            let (link_batch, link_lanes) = if lanes_checked {
+                (
+                    format!(
+                        "Some(|qs| batch(qs, |a, o| {ty}::link_poses_batch{suffix}(a, o)).map(|v| v.into_iter().map(|p| p.to_vec()).collect()))"
+                    ),
+                    format!("Some(|qs| lanes::<{lanes}, _, _>(qs, |q| {ty}::link_poses_generic(q)))"),
+                )
+            } else {
+                ("None".to_owned(), "None".to_owned())
+            };
             format!(
-                "Some(Typed::<{t}> {{ link_poses: |q| {ty}::link_poses{suffix}(arr(q)).to_vec(), link_positions: {}, tip_poses: {tip_poses}, tip_positions: {tip_positions} }})",
+                "Some(Typed::<{t}> {{ link_poses: |q| {ty}::link_poses{suffix}(arr(q)).to_vec(), link_positions: {}, tip_poses: {tip_poses}, tip_positions: {tip_positions}, link_poses_batch: {link_batch}, tip_poses_batch: {tip_batch}, link_poses_lanes: {link_lanes}, tip_poses_lanes: {tip_lanes} }})",
                 position("link_positions")
             )
         };
         writeln!(
             registry,
-            "RandomRobot {{ name: {:?}, file: {:?}, text: {text_expr}, consts: TraitConsts {{ robot: {ty}::ROBOT, base: {ty}::BASE, dof: {ty}::DOF, joint_names: &{ty}::JOINT_NAMES, joint_limits: &{ty}::JOINT_LIMITS, links: &{ty}::LINK_NAMES, tips: &{ty}::TIPS }}, f64: {}, f32: {}, tip_poses_into: <{ty} as ::kinematics::Kinematics>::tip_poses_into, link_poses_into: <{ty} as ::kinematics::Kinematics>::link_poses_into, reference: {ty}::reference, trait_reference: <{ty} as ::kinematics::ReferenceModel>::reference, trait_consts: trait_consts::<{ty}> }},",
+            "RandomRobot {{ name: {:?}, file: {:?}, trig: {trig:?}, text: {text_expr}, consts: TraitConsts {{ robot: {ty}::ROBOT, base: {ty}::BASE, dof: {ty}::DOF, joint_names: &{ty}::JOINT_NAMES, joint_limits: &{ty}::JOINT_LIMITS, links: &{ty}::LINK_NAMES, tips: &{ty}::TIPS }}, f64: {}, f32: {}, tip_poses_into: <{ty} as ::kinematics::Kinematics>::tip_poses_into, link_poses_into: <{ty} as ::kinematics::Kinematics>::link_poses_into, reference: {ty}::reference, trait_reference: <{ty} as ::kinematics::ReferenceModel>::reference, trait_consts: trait_consts::<{ty}> }},",
             robot.name,
             robot.file,
             typed(robot.f64, "", "f64"),

@@ -88,6 +88,68 @@ pub struct Typed<T: 'static> {
     pub tip_poses: Option<PosesFn<T>>,
     /// `tip_position` or `tip_positions`.
     pub tip_positions: Option<PositionsFn<T>>,
+    /// `link_poses_batch` over the configurations given (any number); on every third robot.
+    pub link_poses_batch: Option<BatchFn<T>>,
+    /// `tip_pose(s)_batch`.
+    pub tip_poses_batch: Option<BatchFn<T>>,
+    /// `link_poses_generic` on the lane type (`F64x4`, `F32x8`): exactly one lane's worth of
+    /// configurations; on every third robot.
+    pub link_poses_lanes: Option<LanesFn<T>>,
+    /// `tip_pose(s)_generic` on the lane type.
+    pub tip_poses_lanes: Option<LanesFn<T>>,
+}
+
+/// A batch function's results, per configuration.
+pub type BatchFn<T> = fn(&[Vec<T>]) -> Result<Vec<Vec<Pose<T>>>, kinematics::KinematicsError>;
+/// A generic function's results on one lane's worth of configurations, per configuration.
+pub type LanesFn<T> = fn(&[Vec<T>]) -> Vec<Vec<Pose<T>>>;
+
+/// A generated batch function run over configurations given as vectors.
+pub fn batch<T: Copy, O: Copy + Zero, const N: usize>(
+    qs: &[Vec<T>],
+    f: impl Fn(&[[T; N]], &mut [O]) -> Result<(), kinematics::KinematicsError>,
+) -> Result<Vec<O>, kinematics::KinematicsError> {
+    let arrays: Vec<[T; N]> = qs.iter().map(|q| *arr(q)).collect();
+    let mut out = vec![O::ZERO; qs.len()];
+    f(&arrays, &mut out)?;
+    Ok(out)
+}
+
+/// A value to fill an output slice with before a batch writes it.
+pub trait Zero {
+    /// The value.
+    const ZERO: Self;
+}
+
+impl<T: Zero + Copy> Zero for Pose<T> {
+    const ZERO: Self = Pose { rotation: [[T::ZERO; 3]; 3], translation: [T::ZERO; 3] };
+}
+
+impl<V: Zero + Copy, const M: usize> Zero for [V; M] {
+    const ZERO: Self = [V::ZERO; M];
+}
+
+impl Zero for f64 {
+    const ZERO: Self = 0.0;
+}
+
+impl Zero for f32 {
+    const ZERO: Self = 0.0;
+}
+
+/// A generic function run on one lane's worth of configurations (`L::LANES` of them), packed into
+/// the lane type, its poses unpacked per configuration.
+pub fn lanes<L, const N: usize, const M: usize>(
+    qs: &[Vec<L::Scalar>],
+    f: impl Fn(&[L; N]) -> [Pose<L>; M],
+) -> Vec<Vec<Pose<L::Scalar>>>
+where
+    L: kinematics::Lanes,
+{
+    assert_eq!(qs.len(), L::LANES, "one configuration per lane");
+    let packed: [L; N] = std::array::from_fn(|j| L::from_fn(|i| qs[i][j]));
+    let poses = f(&packed);
+    (0..L::LANES).map(|i| poses.iter().map(|p| kinematics::LaneValue::lane(p, i)).collect()).collect()
 }
 
 /// The constants of one compiled type: read through the trait, or the inherent ones.
@@ -126,6 +188,8 @@ pub fn trait_consts<K: kinematics::Kinematics>() -> TraitConsts {
 pub struct RandomRobot {
     /// Its name in the generated set (`random_07_mimic_chain`).
     pub name: &'static str,
+    /// `"Fast"` or `"Std"`: the sine and cosine it was generated with.
+    pub trig: &'static str,
     /// The description's file name (its label).
     pub file: &'static str,
     /// The description's text, as compiled.
@@ -150,7 +214,7 @@ pub struct RandomRobot {
 
 /// The random robots, compiled (`build/random_robots.rs` generates them).
 pub mod random {
-    use super::{RandomRobot, TraitConsts, Typed, arr, trait_consts};
+    use super::{RandomRobot, TraitConsts, Typed, arr, batch, lanes, trait_consts};
 
     include!(concat!(env!("OUT_DIR"), "/random_robots.rs"));
 }

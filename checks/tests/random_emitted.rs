@@ -12,8 +12,8 @@ mod random_robots;
 
 use kinematics::model::{ExactAngles, KinematicTree, SourceFormat, parse_source_with};
 use kinematics::{AGREEMENT_TOLERANCE, AGREEMENT_TOLERANCE_F32, Configurations, JointLimits, Pose, ReferenceFk};
-use kinematics_checks::RandomRobot;
 use kinematics_checks::random::RANDOM;
+use kinematics_checks::{PosesFn, RandomRobot, Typed};
 use nalgebra::Isometry3;
 
 /// Configurations per robot (the first five put every joint at a special angle).
@@ -69,6 +69,8 @@ struct Faults {
     list: Vec<String>,
     worst: f64,
     worst_f32: f64,
+    /// Scalar types whose batches and lane functions were compared with the typed functions.
+    lanes_checked: usize,
 }
 
 impl Faults {
@@ -132,7 +134,7 @@ fn check_robot(robot: &RandomRobot) -> Faults {
     let tree = tree(robot, exact_angles);
     let fk = ReferenceFk::new(tree.clone());
     let reach = tree.reach();
-    let mut faults = Faults { robot: robot.name, list: Vec::new(), worst: 0.0, worst_f32: 0.0 };
+    let mut faults = Faults { robot: robot.name, list: Vec::new(), worst: 0.0, worst_f32: 0.0, lanes_checked: 0 };
     check_constants(robot, &tree, &mut faults);
     // Both `reference()`s must be the same robot as the test's own.
     let references: Vec<(&str, ReferenceFk)> =
@@ -228,6 +230,7 @@ fn check_robot(robot: &RandomRobot) -> Faults {
             break;
         }
     }
+    faults.lanes_checked = check_batches_and_lanes(robot, &tree, &mut faults);
     // Slices of the wrong length are errors, not panics.
     let q = vec![0.0; robot.consts.dof + 1];
     let mut out = vec![zero; robot.consts.links.len()];
@@ -245,18 +248,89 @@ fn check_robot(robot: &RandomRobot) -> Faults {
     faults
 }
 
+/// How many configurations the batches are given: not a multiple of 4 or 8, so the last pack of
+/// lanes is partly filled.
+const BATCH: usize = 19;
+
+/// The batch functions and the generic functions on lane types compute, lane by lane, exactly what
+/// the typed functions compute (the same operations in the same order, and sines and cosines that
+/// are the same in every lane), so they are held to equality; the typed functions are held to the
+/// reference above.
+fn check_batches_and_lanes(robot: &RandomRobot, tree: &KinematicTree, faults: &mut Faults) -> usize {
+    fn compare<T: Copy + PartialEq + std::fmt::Debug>(
+        name: &str,
+        typed: PosesFn<T>,
+        qs: &[Vec<T>],
+        got: &[Vec<Pose<T>>],
+        faults: &mut Faults,
+    ) {
+        if got.len() != qs.len() {
+            return faults.fail(format!("{name}: {} results for {} configurations", got.len(), qs.len()));
+        }
+        for (q, poses) in qs.iter().zip(got) {
+            if typed(q) != *poses {
+                faults.fail(format!("{name} differs from the typed function at q = {q:?}"));
+            }
+        }
+    }
+    fn one<T: Copy + PartialEq + std::fmt::Debug>(
+        suffix: &str,
+        lanes: usize,
+        f: &Typed<T>,
+        qs: &[Vec<T>],
+        faults: &mut Faults,
+    ) {
+        if let (Some(batch), Some(lanes_fn)) = (f.link_poses_batch, f.link_poses_lanes) {
+            match batch(qs) {
+                Ok(got) => compare(&format!("link_poses_batch{suffix}"), f.link_poses, qs, &got, faults),
+                Err(e) => faults.fail(format!("link_poses_batch{suffix} fails: {e}")),
+            }
+            for chunk in qs.chunks_exact(lanes) {
+                let got = lanes_fn(chunk);
+                compare(&format!("link_poses_generic ({lanes} lanes)"), f.link_poses, chunk, &got, faults);
+            }
+        }
+        if let (Some(batch), Some(lanes_fn), Some(typed)) = (f.tip_poses_batch, f.tip_poses_lanes, f.tip_poses) {
+            match batch(qs) {
+                Ok(got) => compare(&format!("tip_pose(s)_batch{suffix}"), typed, qs, &got, faults),
+                Err(e) => faults.fail(format!("tip_pose(s)_batch{suffix} fails: {e}")),
+            }
+            for chunk in qs.chunks_exact(lanes) {
+                compare(&format!("tip_pose(s)_generic ({lanes} lanes)"), typed, chunk, &lanes_fn(chunk), faults);
+            }
+        }
+    }
+    let qs: Vec<Vec<f64>> = Configurations::new(tree).take(BATCH).collect();
+    let mut checked = 0;
+    if let Some(f) = &robot.f64 {
+        one("", 4, f, &qs, faults);
+        checked += usize::from(f.link_poses_batch.is_some());
+    }
+    if let Some(f) = &robot.f32 {
+        let q32: Vec<Vec<f32>> = qs.iter().map(|q| q.iter().map(|&x| x as f32).collect()).collect();
+        one("_f32", 8, f, &q32, faults);
+        checked += usize::from(f.link_poses_batch.is_some());
+    }
+    checked
+}
+
 #[test]
 fn every_function_of_every_random_robot_agrees_with_the_runtime_reference() {
     let mut all = Vec::new();
+    let (mut lanes_checked, mut std_trig) = (0, 0);
     for robot in RANDOM {
         let faults = check_robot(robot);
+        lanes_checked += faults.lanes_checked;
+        std_trig += usize::from(robot.trig == "Std");
         println!(
-            "{:<36} {CASES} configurations: largest error {:.2e} (f64), {:.2e} (f32)",
-            robot.file, faults.worst, faults.worst_f32
+            "{:<36} {:<4} trig, {CASES} configurations: largest error {:.2e} (f64), {:.2e} (f32)",
+            robot.file, robot.trig, faults.worst, faults.worst_f32
         );
         all.extend(faults.list);
     }
     assert!(all.is_empty(), "{} disagreements:\n{}", all.len(), all.join("\n"));
+    // The set covers both sines and cosines, and batches and lanes in both scalar types.
+    assert!(std_trig >= 10 && lanes_checked >= 20, "{std_trig} robots on std trig, {lanes_checked} lane checks");
 }
 
 /// The set compiled is the set the generator makes, byte for byte, run after run, every robot of it.
