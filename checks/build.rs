@@ -186,24 +186,24 @@ fn write_random_robots(out: &Path) -> Result<(), Box<dyn std::error::Error>> {
                 _ if !lanes_checked => "None".to_owned(),
                 0 => "None".to_owned(),
                 1 => format!(
-                    "Some(|qs| batch(qs, |a, o| {ty}::tip_pose_batch{suffix}(a, o)).map(|v| v.into_iter().map(|p| vec![p]).collect()))"
+                    "Some(|qs| batch(qs, {ty}::tip_pose_batch{suffix}).map(|v| v.into_iter().map(|p| vec![p]).collect()))"
                 ),
                 _ => format!(
-                    "Some(|qs| batch(qs, |a, o| {ty}::tip_poses_batch{suffix}(a, o)).map(|v| v.into_iter().map(|p| p.to_vec()).collect()))"
+                    "Some(|qs| batch(qs, {ty}::tip_poses_batch{suffix}).map(|v| v.into_iter().map(|p| p.to_vec()).collect()))"
                 ),
             };
             let tip_lanes = match tips {
                 _ if !lanes_checked => "None".to_owned(),
                 0 => "None".to_owned(),
                 1 => format!("Some(|qs| lanes::<{lanes}, _, _>(qs, |q| [{ty}::tip_pose_generic(q)]))"),
-                _ => format!("Some(|qs| lanes::<{lanes}, _, _>(qs, |q| {ty}::tip_poses_generic(q)))"),
+                _ => format!("Some(|qs| lanes::<{lanes}, _, _>(qs, {ty}::tip_poses_generic))"),
             };
             let (link_batch, link_lanes) = if lanes_checked {
                 (
                     format!(
-                        "Some(|qs| batch(qs, |a, o| {ty}::link_poses_batch{suffix}(a, o)).map(|v| v.into_iter().map(|p| p.to_vec()).collect()))"
+                        "Some(|qs| batch(qs, {ty}::link_poses_batch{suffix}).map(|v| v.into_iter().map(|p| p.to_vec()).collect()))"
                     ),
-                    format!("Some(|qs| lanes::<{lanes}, _, _>(qs, |q| {ty}::link_poses_generic(q)))"),
+                    format!("Some(|qs| lanes::<{lanes}, _, _>(qs, {ty}::link_poses_generic))"),
                 )
             } else {
                 ("None".to_owned(), "None".to_owned())
