@@ -34,6 +34,32 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 //!
+//! # Lanes and batches
+//!
+//! Every computation also comes as a batch over slices of configurations (four `f64` or eight
+//! `f32` configurations per call inside, in SIMD lanes) and as a generic function the lane types
+//! [`F64x4`] and [`F32x8`] run directly:
+//!
+//! ```
+//! use kinematics::{F64x4, Kinematics, Pose};
+//!
+//! #[derive(Kinematics)]
+//! #[kinematics(urdf = "robots/ur5.urdf", base = "base", tip = "tool0", scalars(f64, f32))]
+//! pub struct Ur5;
+//!
+//! // A batch: array of structs in, array of structs out, no allocation inside.
+//! let qs: Vec<[f64; 6]> = (0..1000).map(|i| [0.001 * i as f64, -1.2, 1.0, 0.4, -0.7, 2.0]).collect();
+//! let mut poses = vec![Pose { rotation: [[0.0; 3]; 3], translation: [0.0; 3] }; qs.len()];
+//! Ur5::tip_pose_batch(&qs, &mut poses)?;
+//! assert_eq!(poses[999], Ur5::tip_pose(&qs[999]));
+//!
+//! // Lanes: four configurations in one call of the same generated code.
+//! let q: [F64x4; 6] = std::array::from_fn(|j| F64x4::new([qs[0][j], qs[1][j], qs[2][j], qs[3][j]]));
+//! let four = Ur5::tip_pose_generic(&q);
+//! assert_eq!(four.translation[0].lane(2), Ur5::tip_pose(&qs[2]).translation[0]);
+//! # Ok::<(), kinematics::KinematicsError>(())
+//! ```
+//!
 //! # Features
 //!
 //! - `std` (default): the runtime reference, the model, file loading, nalgebra conversions of
