@@ -213,7 +213,7 @@ impl Robot {
 
 #[cfg(test)]
 mod tests {
-    use super::Robot;
+    use super::{Robot, Trig};
     use crate::error::BuildError;
     use kinematics_model::LoadErrorKind;
 
@@ -295,6 +295,19 @@ mod tests {
         );
         assert!(message.contains("joint `j1`: child link `c` does not exist"), "{message}");
         assert!(message.contains("joint `j0`: axis is zero"), "{message}");
+    }
+
+    #[test]
+    fn trig_chooses_the_sine_and_cosine_the_code_calls() {
+        let dir = fixture("trig", &[("arm.urdf", ARM)]);
+        let robot = || Robot::urdf("arm.urdf").manifest_dir(&dir).tip("tool0");
+        let fast = robot().generate().unwrap();
+        let std = robot().trig(Trig::Std).generate().unwrap();
+        assert_eq!(fast, robot().trig(Trig::Fast).generate().unwrap());
+        assert!(fast.contains("T::sin_cos_many([") && !fast.contains("StdTrig"), "{fast}");
+        assert!(std.contains("::kinematics::__private::StdTrig::sin_cos_std(q1)"), "{std}");
+        assert!(std.contains("T: ::kinematics::__private::Real + ::kinematics::__private::StdTrig"), "{std}");
+        assert!(!std.contains("sin_cos_many"), "{std}");
     }
 
     #[test]

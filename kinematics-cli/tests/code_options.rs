@@ -1,4 +1,5 @@
-//! The global `--exact-angles <on|off>` option: every subcommand loads with it (issue 13).
+//! Options that change what is loaded or emitted: the global `--exact-angles <on|off>` (every
+//! subcommand loads with it) and `generate --trig <fast|std>`.
 #![allow(clippy::panic, clippy::unwrap_used, clippy::expect_used)] // test helpers fail loudly
 
 use std::path::PathBuf;
@@ -50,6 +51,19 @@ fn generate_honours_the_option() {
     let off = stdout(&dir, &["--exact-angles", "off", "generate", "quarter.urdf"]);
     assert!(on.contains("pub struct R;") && off.contains("pub struct R;"));
     assert_ne!(on, off);
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn generate_takes_the_trig_option() {
+    let dir = scratch("trig");
+    let fast = stdout(&dir, &["generate", "ros_pi.urdf"]);
+    let std = stdout(&dir, &["generate", "ros_pi.urdf", "--trig", "std"]);
+    assert_eq!(fast, stdout(&dir, &["generate", "ros_pi.urdf", "--trig", "fast"]));
+    assert!(fast.contains("sin_cos") && !fast.contains("StdTrig"), "{fast}");
+    assert!(std.contains("StdTrig::sin_cos_std("), "{std}");
+    let output = run(&dir, &["generate", "ros_pi.urdf", "--trig", "libm"]);
+    assert_eq!(output.status.code(), Some(2));
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
