@@ -1,30 +1,44 @@
-//! Forward kinematics speed, per robot, f64 and f32: the generated code (derive) against the
-//! runtime reference, the `k` crate (whole-tree `update_transforms` and a serial chain's
-//! `end_transform`), galaw's ahead-of-time generated code (all link poses; `benches/galaw/`),
-//! position only, a batch of 1,024 configurations, and the trigonometry floor (the robot's
-//! `sin_cos` calls alone, on the same inputs, with the same routine), of the pose and of all links.
-//! The comparisons that matter are also timed in alternation (`Mode::pair`), which a drifting
-//! shared machine cannot skew.
+//! Forward kinematics speed, per robot, f64 and f32: the generated code (derive, our own sin/cos,
+//! every angle of a function in one `sin_cos_many` call) against the same robot derived with
+//! `trig = "std"` (std's `sin_cos`, one call per angle), the runtime reference, the `k` crate
+//! (whole-tree `update_transforms` and a serial chain's `end_transform`), galaw's ahead-of-time
+//! generated code (all link poses; `benches/galaw/`), position only; SIMD lanes (`tip_pose_generic`
+//! on `F64x4` and `F32x8`) against as many scalar calls; batches of 1,024 configurations
+//! (`tip_pose_batch`, `tip_pose_batch_f32`) against the scalar loop; `parallel::batch` (rayon)
+//! against one thread on 16,384 configurations; and the trigonometry floors: our sin/cos alone
+//! (`sin_cos_many` over as many angles as the generated function has) and std's (`sin_cos` once per
+//! angle), of the pose and of all links. The comparisons that matter are also timed in alternation
+//! (`Mode::pair`), which a drifting shared machine cannot skew.
 //!
-//! `cargo bench --bench fk` measures (about 5 minutes on 2 cores, build excluded); `cargo run -p bench-report`
-//! turns criterion's results into `benches/SUMMARY.md` and `benches/ratios.svg`. Under
-//! `cargo test` (no `--bench` argument) every benchmark body runs once and everything the bodies
-//! compute is checked against the runtime reference instead, on every configuration they are
-//! timed on (`Pose::deviation` within `AGREEMENT_TOLERANCE`, f32 within `AGREEMENT_TOLERANCE_F32`),
-//! so CI knows the suite builds and times code that computes the right thing.
+//! `cargo bench --bench fk` measures (plain x86-64 build; about 10 minutes on 2 cores, build
+//! excluded); the same with `RUSTFLAGS="-C target-cpu=native" CARGO_TARGET_DIR=target/native` is the
+//! native run, kept apart. `cargo run -p bench-report` turns both runs' results into
+//! `benches/SUMMARY.md` and `benches/ratios.svg`. Under `cargo test` (no `--bench` argument) every
+//! benchmark body runs once and everything the bodies compute is checked against the runtime
+//! reference instead, on every configuration they are timed on (`Pose::deviation` within
+//! `AGREEMENT_TOLERANCE`, f32 within `AGREEMENT_TOLERANCE_F32`): every lane of the lane bodies and
+//! every configuration of the batches, also on batches whose length is no multiple of 4 or 8 (the
+//! tail), so CI knows the suite builds and times code that computes the right thing.
 
 #![allow(clippy::expect_used, clippy::panic)] // a benchmark fails loudly on a robot that does not load
 
 use std::hint::black_box;
 use std::time::{Duration, Instant};
 
-use criterion::{BenchmarkGroup, Criterion, Throughput, measurement::WallTime};
-use kinematics::{AGREEMENT_TOLERANCE, AGREEMENT_TOLERANCE_F32, Kinematics, Pose, ReferenceFk};
+use criterion::{BenchmarkGroup, Criterion, measurement::WallTime};
+use kinematics::{
+    AGREEMENT_TOLERANCE, AGREEMENT_TOLERANCE_F32, F32x8, F64x4, Kinematics, LaneValue, Pose, Real, ReferenceFk, StdTrig,
+};
 
 /// Inputs cycled through in the timed loops (computed before timing).
 const INPUTS: usize = 256;
-/// The batch size of the throughput benchmark.
+/// The batch size of the batch benchmarks.
 const BATCH: usize = 1024;
+/// The batch size of the rayon benchmark: well above `parallel::PARALLEL_THRESHOLD` (4,096).
+const LARGE_BATCH: usize = 16_384;
+/// Check mode also runs each batch on its first `len - TAIL_CUT` configurations, a length that is
+/// no multiple of 4 or 8, so the last, partly filled pack of lanes is checked too.
+const TAIL_CUT: usize = 3;
 
 /// Configurations within the limits (or +-pi for continuous joints), from a fixed seed.
 fn inputs(limits: &[kinematics::JointLimits], count: usize) -> Vec<Vec<f64>> {
@@ -57,16 +71,49 @@ fn arrays_f32<const N: usize>(qs: &[Vec<f64>]) -> Vec<[f32; N]> {
     qs.iter().map(|q| std::array::from_fn(|i| q[i] as f32)).collect()
 }
 
-/// The `n` sine-cosine pairs of a configuration, as the generated code computes them (each pair
-/// folded into one sum so none is optimised away; that costs a multiply-add per pair).
+/// The trigonometry floor with std's `sin_cos`: `n` calls, one per angle, as code derived with
+/// `trig = "std"` makes them (each pair folded into one sum so none is optimised away; that costs a
+/// multiply-add per pair). The angles are the joint values, cycled: the routine's time does not
+/// depend on which angles they are.
 #[inline(always)]
-fn trig_floor<T: kinematics::Real, const N: usize>(q: &[T; N], n: usize) -> T {
+fn floor_std<T: StdTrig, const N: usize>(q: &[T; N], n: usize) -> T {
     let mut acc = T::from_f64(0.0);
     for i in 0..n {
-        let (s, c) = q[i % N].sin_cos();
+        let (s, c) = q[i % N].sin_cos_std();
         acc = acc + s * c;
     }
     acc
+}
+
+/// The trigonometry floor with our sin/cos, as the generated code calls it: all `n` angles of the
+/// function in one `T::sin_cos_many` call (folded like [`floor_std`]). `n` is a run-time count
+/// (the compiler's), `sin_cos_many` takes it as a constant: one arm per count, chosen by a branch
+/// that always goes the same way.
+#[inline(always)]
+fn floor_fast<T: Real, const N: usize>(q: &[T; N], n: usize) -> T {
+    #[inline(always)]
+    fn many<T: Real, const N: usize, const K: usize>(q: &[T; N]) -> T {
+        let (s, c) = T::sin_cos_many::<K>(std::array::from_fn(|i| q[i % N]));
+        let mut acc = T::from_f64(0.0);
+        for i in 0..K {
+            acc = acc + s[i] * c[i];
+        }
+        acc
+    }
+    macro_rules! by_count {
+        ($($k:literal)*) => {
+            match n {
+                $($k => many::<T, N, $k>(q),)*
+                _ => panic!("no floor for {n} angles: add the count to `floor_fast`"),
+            }
+        };
+    }
+    by_count!(0 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19 20 21 22 23 24 25 26 27 28 29 30 31 32)
+}
+
+/// `count` packs of lanes from `qs` (cycled): pack `i` holds configurations `(L * i + l) % len`.
+fn packs<T: Copy, L: kinematics::Lanes<Scalar = T>, const N: usize>(qs: &[[T; N]], count: usize) -> Vec<[L; N]> {
+    (0..count).map(|i| std::array::from_fn(|j| L::from_fn(|l| qs[(L::LANES * i + l) % qs.len()][j]))).collect()
 }
 
 /// How one benchmark is run: measured by criterion, or once and checked (`cargo test`).
@@ -98,9 +145,16 @@ impl Mode<'_, '_> {
     /// each timing both on the same 2,000 inputs back to back (which goes first alternates), and
     /// the median of the rounds' ratios. Criterion's medians come from different seconds of a
     /// shared machine whose speed drifts; these ratios do not. Recorded for `bench-report`.
-    fn pair<A, B>(
+    fn pair<A, B>(&mut self, name: &str, numerator: impl FnMut(usize) -> A, denominator: impl FnMut(usize) -> B) {
+        self.pair_calls(name, 2000, numerator, denominator);
+    }
+
+    /// [`Mode::pair`] with `calls` calls of each per round: fewer for bodies that take a batch per
+    /// call, so a round stays about a millisecond.
+    fn pair_calls<A, B>(
         &mut self,
         name: &str,
+        calls: usize,
         mut numerator: impl FnMut(usize) -> A,
         mut denominator: impl FnMut(usize) -> B,
     ) {
@@ -109,10 +163,9 @@ impl Mode<'_, '_> {
             return; // a filtered run times the pairs of the robots it selects only
         }
         const ROUNDS: usize = 201;
-        const CALLS: usize = 2000;
         let time = |f: &mut dyn FnMut(usize)| {
             let start = Instant::now();
-            for k in 0..CALLS {
+            for k in 0..calls {
                 f(black_box(k % INPUTS));
             }
             start.elapsed().as_secs_f64()
@@ -344,45 +397,101 @@ fn joint_values(tree: &kinematics::KinematicTree, joints: &[String], qs: &[Vec<f
 }
 
 macro_rules! robot {
-    ($mode:expr, $ty:ty, $n:literal, $file:literal, $tip:literal, $sin_cos:expr $(, $galaw:ident)?) => {{
+    ($mode:expr, $ty:ty, $std:ty, $n:literal, $file:literal, $tip:literal, $sin_cos:expr $(, $galaw:ident)?) => {{
         let mode: &mut Mode = $mode;
         let path = concat!(env!("CARGO_MANIFEST_DIR"), "/robots/", $file);
         let qs = inputs(&<$ty>::JOINT_LIMITS, INPUTS);
         let q64: Vec<[f64; $n]> = arrays(&qs);
         let q32: Vec<[f32; $n]> = arrays_f32(&qs);
+        // Four (eight) configurations per pack, INPUTS packs: every configuration in four of them.
+        let pack64: Vec<[F64x4; $n]> = packs(&q64, INPUTS);
+        let pack32: Vec<[F32x8; $n]> = packs(&q32, INPUTS);
         let reference = ReferenceFk::new(kinematics::load(path).expect("robot loads"));
+        let reach = reference.tree().reach();
         if let Mode::Check = mode {
             // Every body timed below that computes poses, on every configuration it is timed on:
             // the f32 bodies at their own (rounded) configuration. The runtime bodies are the
             // reference itself, and the floors compute no pose.
-            let reach = reference.tree().reach();
+            let (tip, f64_tol, f32_tol) = ($tip, AGREEMENT_TOLERANCE, AGREEMENT_TOLERANCE_F32);
+            let mut tips = Vec::new();
+            let mut tips_f32 = Vec::new();
             for (i, q) in qs.iter().enumerate() {
                 let expected = reference_poses(&reference, q);
                 let q32_64: Vec<f64> = q32[i].iter().map(|&x| f64::from(x)).collect();
                 let expected_f32 = reference_poses(&reference, &q32_64);
-                let (tip, f64_tol, f32_tol) = ($tip, AGREEMENT_TOLERANCE, AGREEMENT_TOLERANCE_F32);
                 verify("generated_pose_f64", tip, i, &<$ty>::tip_pose(&q64[i]), &expected(tip), reach, f64_tol);
+                verify("std_pose_f64", tip, i, &<$std>::tip_pose(&q64[i]), &expected(tip), reach, f64_tol);
                 verify("generated_pose_f32", tip, i, &widen(&<$ty>::tip_pose_f32(&q32[i])), &expected_f32(tip), reach, f32_tol);
                 let position = position_pose(<$ty>::tip_position(&q64[i]), &expected(tip));
                 verify("generated_position_f64", tip, i, &position, &expected(tip), reach, f64_tol);
                 for (pose, link) in <$ty>::link_poses(&q64[i]).iter().zip(<$ty>::LINK_NAMES) {
                     verify("generated_all_f64", link, i, pose, &expected(link), reach, f64_tol);
                 }
+                for (pose, link) in <$std>::link_poses(&q64[i]).iter().zip(<$std>::LINK_NAMES) {
+                    verify("std_all_f64", link, i, pose, &expected(link), reach, f64_tol);
+                }
                 for (pose, link) in <$ty>::link_poses_f32(&q32[i]).iter().zip(<$ty>::LINK_NAMES) {
                     verify("generated_all_f32", link, i, &widen(pose), &expected_f32(link), reach, f32_tol);
+                }
+                tips.push(expected(tip));
+                tips_f32.push(expected_f32(tip));
+            }
+            // Every lane of every pack, against its own configuration.
+            for i in 0..INPUTS {
+                let pose64 = <$ty>::tip_pose_generic::<F64x4>(&pack64[i]);
+                for l in 0..4 {
+                    let j = (4 * i + l) % INPUTS;
+                    verify("lanes_pose_f64x4", tip, j, &LaneValue::<F64x4>::lane(&pose64, l), &tips[j], reach, f64_tol);
+                }
+                let pose32 = <$ty>::tip_pose_generic::<F32x8>(&pack32[i]);
+                for l in 0..8 {
+                    let j = (8 * i + l) % INPUTS;
+                    let pose = widen(&LaneValue::<F32x8>::lane(&pose32, l));
+                    verify("lanes_pose_f32x8", tip, j, &pose, &tips_f32[j], reach, f32_tol);
                 }
             }
         }
         // Each contender runs next to the one it is compared with (pose and floor, all links and
         // galaw and the runtime): the machine is shared and its speed drifts over minutes.
         let (n, n_all): (usize, usize) = $sin_cos;
-        mode.run("generated_pose_f64", |i| <$ty>::tip_pose(&q64[i]));
-        mode.run("floor_f64", |i| trig_floor(&q64[i], n));
-        mode.pair("generated_pose_f64/floor_f64", |i| <$ty>::tip_pose(&q64[i]), |i| trig_floor(&q64[i], n));
+        let mut generated_pose = |i: usize| <$ty>::tip_pose(&q64[i]);
+        mode.run("generated_pose_f64", &mut generated_pose);
+        // The new floor (our sin/cos, one call for the function's angles) and the old one (std's).
+        mode.run("floor_f64", |i| floor_fast(&q64[i], n));
+        mode.pair("generated_pose_f64/floor_f64", &mut generated_pose, |i| floor_fast(&q64[i], n));
+        mode.run("floor_std_f64", |i| floor_std(&q64[i], n));
+        mode.pair("floor_std_f64/floor_f64", |i| floor_std(&q64[i], n), |i| floor_fast(&q64[i], n));
+        // The same robot with std's sin_cos, one call per angle.
+        mode.run("std_pose_f64", |i| <$std>::tip_pose(&q64[i]));
+        mode.pair("std_pose_f64/generated_pose_f64", |i| <$std>::tip_pose(&q64[i]), &mut generated_pose);
+        mode.pair("std_pose_f64/floor_std_f64", |i| <$std>::tip_pose(&q64[i]), |i| floor_std(&q64[i], n));
         mode.run("generated_pose_f32", |i| <$ty>::tip_pose_f32(&q32[i]));
-        mode.run("floor_f32", |i| trig_floor(&q32[i], n));
+        mode.run("floor_f32", |i| floor_fast(&q32[i], n));
+        mode.pair("generated_pose_f32/floor_f32", |i| <$ty>::tip_pose_f32(&q32[i]), |i| floor_fast(&q32[i], n));
         mode.run("generated_position_f64", |i| <$ty>::tip_position(&q64[i]));
-        mode.pair("generated_position_f64/generated_pose_f64", |i| <$ty>::tip_position(&q64[i]), |i| <$ty>::tip_pose(&q64[i]));
+        mode.pair("generated_position_f64/generated_pose_f64", |i| <$ty>::tip_position(&q64[i]), &mut generated_pose);
+        // Lanes: four configurations per call against four calls on the same configurations (and
+        // eight for f32); the pack's own floor is our sin/cos on the lane type.
+        let mut scalar4 = |i: usize| -> [Pose<f64>; 4] { std::array::from_fn(|l| <$ty>::tip_pose(&q64[(4 * i + l) % INPUTS])) };
+        let mut lanes4 = |i: usize| <$ty>::tip_pose_generic::<F64x4>(&pack64[i]);
+        mode.run("lanes_pose_f64x4", &mut lanes4);
+        mode.run("scalar4_pose_f64", &mut scalar4);
+        mode.pair("scalar4_pose_f64/lanes_pose_f64x4", &mut scalar4, &mut lanes4);
+        mode.run("floor_f64x4", |i| floor_fast(&pack64[i], n));
+        mode.pair("lanes_pose_f64x4/floor_f64x4", &mut lanes4, |i| floor_fast(&pack64[i], n));
+        let mut scalar8 = |i: usize| -> [Pose<f32>; 8] { std::array::from_fn(|l| <$ty>::tip_pose_f32(&q32[(8 * i + l) % INPUTS])) };
+        let mut lanes8 = |i: usize| <$ty>::tip_pose_generic::<F32x8>(&pack32[i]);
+        mode.run("lanes_pose_f32x8", &mut lanes8);
+        mode.run("scalar8_pose_f32", &mut scalar8);
+        mode.pair("scalar8_pose_f32/lanes_pose_f32x8", &mut scalar8, &mut lanes8);
+        mode.run("floor_f32x8", |i| floor_fast(&pack32[i], n));
+        mode.pair("lanes_pose_f32x8/floor_f32x8", &mut lanes8, |i| floor_fast(&pack32[i], n));
+        // Per configuration, f64 lanes against f32 lanes: two f64 packs, eight configurations.
+        mode.pair(
+            "lanes_pose_f64x4/lanes_pose_f32x8",
+            |i| (<$ty>::tip_pose_generic::<F64x4>(&pack64[i]), <$ty>::tip_pose_generic::<F64x4>(&pack64[(i + 1) % INPUTS])),
+            &mut lanes8,
+        );
         // Every link's pose into a fixed-size array the caller keeps (as a planner would, and as
         // `k` and the reference keep theirs), black-boxed so no store can be skipped.
         // One closure, lent to criterion and to both pairs, so all three time the same body.
@@ -395,9 +504,18 @@ macro_rules! robot {
         // The floor of all link poses: the sin_cos pairs of every moving joint. No code that
         // computes them with this routine can be faster, so runtime all / floor all bounds the
         // speed-up over the runtime that any such code can show.
-        let floor_all = |i: usize| trig_floor(&q64[i], n_all);
+        let floor_all = |i: usize| floor_fast(&q64[i], n_all);
         mode.run("floor_all_f64", floor_all);
         mode.pair("generated_all_f64/floor_all_f64", &mut generated_all, floor_all);
+        mode.run("floor_std_all_f64", |i| floor_std(&q64[i], n_all));
+        mode.pair("floor_std_all_f64/floor_all_f64", |i| floor_std(&q64[i], n_all), floor_all);
+        let mut std_all64 = <$std>::link_poses(&q64[0]);
+        let mut std_all = |i: usize| {
+            std_all64 = <$std>::link_poses(&q64[i]);
+            black_box(&mut std_all64);
+        };
+        mode.run("std_all_f64", &mut std_all);
+        mode.pair("std_all_f64/generated_all_f64", &mut std_all, &mut generated_all);
         let mut all32 = <$ty>::link_poses_f32(&q32[0]);
         mode.run("generated_all_f32", |i| {
             all32 = <$ty>::link_poses_f32(&q32[i]);
@@ -411,32 +529,109 @@ macro_rules! robot {
         mode.pair("runtime_all_f64/generated_all_f64", |i| reference.link_poses(&qs[i]), &mut generated_all);
         mode.pair("runtime_all_f64/floor_all_f64", |i| reference.link_poses(&qs[i]), floor_all);
         mode.run("runtime_pose_f64", |i| reference.link_pose(&qs[i], $tip));
+        // Batches: the generated `*_batch` (lanes inside) against the scalar loop over the same
+        // configurations; criterion's figures are per batch, bench-report divides them.
         let batch = inputs(&<$ty>::JOINT_LIMITS, BATCH);
-        let batch: Vec<[f64; $n]> = arrays(&batch);
-        let mut out = vec![<$ty>::tip_pose(&batch[0]); BATCH];
-        if let Mode::Measure(group, _) = mode {
-            group.throughput(Throughput::Elements(BATCH as u64));
+        let batch64: Vec<[f64; $n]> = arrays(&batch);
+        let batch32: Vec<[f32; $n]> = arrays_f32(&batch);
+        let mut out64 = vec![<$ty>::tip_pose(&batch64[0]); BATCH];
+        let mut out32 = vec![<$ty>::tip_pose_f32(&batch32[0]); BATCH];
+        if let Mode::Check = mode {
+            let expected: Vec<_> = batch.iter().map(|q| reference.link_pose(q, $tip).expect("tip exists")).collect();
+            let expected_f32: Vec<_> = batch32
+                .iter()
+                .map(|q| reference.link_pose(&q.map(f64::from), $tip).expect("tip exists"))
+                .collect();
+            for len in [BATCH, BATCH - TAIL_CUT] {
+                let mut out = vec![nan_pose(); len];
+                <$ty>::tip_pose_batch(&batch64[..len], &mut out).expect("one output per configuration");
+                for (i, pose) in out.iter().enumerate() {
+                    verify("batch1024_f64", $tip, i, pose, &expected[i], reach, AGREEMENT_TOLERANCE);
+                }
+                let mut out = vec![nan_pose::<f32>(); len];
+                <$ty>::tip_pose_batch_f32(&batch32[..len], &mut out).expect("one output per configuration");
+                for (i, pose) in out.iter().enumerate() {
+                    verify("batch1024_f32", $tip, i, &widen(pose), &expected_f32[i], reach, AGREEMENT_TOLERANCE_F32);
+                }
+            }
         }
-        mode.run("generated_batch1024_f64", |_| {
-            for (o, q) in out.iter_mut().zip(&batch) {
+        let mut scalar_batch64 = |_: usize| {
+            for (o, q) in out64.iter_mut().zip(&batch64) {
                 *o = <$ty>::tip_pose(q);
             }
-            out[BATCH - 1]
-        });
+            black_box(&mut out64);
+        };
+        let mut out_lanes64 = vec![<$ty>::tip_pose(&batch64[0]); BATCH];
+        let mut batch_f64 = |_: usize| {
+            <$ty>::tip_pose_batch(&batch64, &mut out_lanes64).expect("one output per configuration");
+            black_box(&mut out_lanes64);
+        };
+        mode.run("generated_batch1024_f64", &mut scalar_batch64);
+        mode.run("batch1024_f64", &mut batch_f64);
+        mode.pair_calls("generated_batch1024_f64/batch1024_f64", 8, &mut scalar_batch64, &mut batch_f64);
+        let mut scalar_batch32 = |_: usize| {
+            for (o, q) in out32.iter_mut().zip(&batch32) {
+                *o = <$ty>::tip_pose_f32(q);
+            }
+            black_box(&mut out32);
+        };
+        let mut out_lanes32 = vec![<$ty>::tip_pose_f32(&batch32[0]); BATCH];
+        let mut batch_f32 = |_: usize| {
+            <$ty>::tip_pose_batch_f32(&batch32, &mut out_lanes32).expect("one output per configuration");
+            black_box(&mut out_lanes32);
+        };
+        mode.run("generated_batch1024_f32", &mut scalar_batch32);
+        mode.run("batch1024_f32", &mut batch_f32);
+        mode.pair_calls("generated_batch1024_f32/batch1024_f32", 8, &mut scalar_batch32, &mut batch_f32);
+        mode.pair_calls("batch1024_f64/batch1024_f32", 8, &mut batch_f64, &mut batch_f32);
         if let Mode::Check = mode {
-            let reach = reference.tree().reach();
-            for (i, (pose, q)) in out.iter().zip(&batch).enumerate() {
+            for (i, (pose, q)) in out64.iter().zip(&batch).enumerate() {
                 let expected = reference.link_pose(q, $tip).expect("tip exists");
                 verify("generated_batch1024_f64", $tip, i, pose, &expected, reach, AGREEMENT_TOLERANCE);
             }
+            for (i, (pose, q)) in out32.iter().zip(&batch32).enumerate() {
+                let expected = reference.link_pose(&q.map(f64::from), $tip).expect("tip exists");
+                verify("generated_batch1024_f32", $tip, i, &widen(pose), &expected, reach, AGREEMENT_TOLERANCE_F32);
+            }
         }
-        if let Mode::Measure(group, _) = mode {
-            group.throughput(Throughput::Elements(1));
+        // Rayon: the same batch function split across the pool's threads, against one thread.
+        let large: Vec<[f64; $n]> = arrays(&inputs(&<$ty>::JOINT_LIMITS, LARGE_BATCH));
+        let mut out_large = vec![<$ty>::tip_pose(&large[0]); LARGE_BATCH];
+        if let Mode::Check = mode {
+            for len in [LARGE_BATCH, LARGE_BATCH - TAIL_CUT] {
+                let mut out = vec![nan_pose(); len];
+                kinematics::parallel::batch(&large[..len], &mut out, <$ty>::tip_pose_batch)
+                    .expect("one output per configuration");
+                for (i, (pose, q)) in out.iter().zip(&large).enumerate() {
+                    let expected = reference.link_pose(q, $tip).expect("tip exists");
+                    verify("parallel_batch16384_f64", $tip, i, pose, &expected, reach, AGREEMENT_TOLERANCE);
+                }
+            }
         }
+        let mut one_thread = |_: usize| {
+            <$ty>::tip_pose_batch(&large, &mut out_large).expect("one output per configuration");
+            black_box(&mut out_large);
+        };
+        mode.run("batch16384_f64", &mut one_thread);
+        let mut out_parallel = vec![<$ty>::tip_pose(&large[0]); LARGE_BATCH];
+        let mut parallel = |_: usize| {
+            kinematics::parallel::batch(&large, &mut out_parallel, <$ty>::tip_pose_batch)
+                .expect("one output per configuration");
+            black_box(&mut out_parallel);
+        };
+        mode.run("parallel_batch16384_f64", &mut parallel);
+        mode.pair_calls("batch16384_f64/parallel_batch16384_f64", 2, &mut one_thread, &mut parallel);
         if $file.ends_with(".urdf") {
             k_crate(mode, path, $tip, &qs, &mut generated_all, floor_all);
         }
     }};
+}
+
+/// A pose of NaNs: what a batch's output holds before the batch, so a slot it fails to write fails
+/// the check.
+fn nan_pose<T: Real>() -> Pose<T> {
+    let nan = T::from_f64(f64::NAN);
+    Pose { rotation: [[nan; 3]; 3], translation: [nan; 3] }
 }
 
 /// The `k` crate on the same URDF: its whole-tree update and its serial chain to the tip.
@@ -507,38 +702,91 @@ fn k_crate(
 #[kinematics(dh = "robots/puma560.toml", tip = "link6", positions, scalars(f64, f32))]
 struct Puma560;
 #[derive(Kinematics)]
+#[kinematics(dh = "robots/puma560.toml", tip = "link6", trig = "std")]
+struct Puma560Std;
+#[derive(Kinematics)]
 #[kinematics(dh = "robots/stanford_arm.toml", tip = "link6", positions, scalars(f64, f32))]
 struct Stanford;
+#[derive(Kinematics)]
+#[kinematics(dh = "robots/stanford_arm.toml", tip = "link6", trig = "std")]
+struct StanfordStd;
 #[derive(Kinematics)]
 #[kinematics(dh = "robots/scara.toml", tip = "link4", positions, scalars(f64, f32))]
 struct Scara;
 #[derive(Kinematics)]
+#[kinematics(dh = "robots/scara.toml", tip = "link4", trig = "std")]
+struct ScaraStd;
+#[derive(Kinematics)]
 #[kinematics(urdf = "robots/ur5.urdf", tip = "tool0", positions, scalars(f64, f32))]
 struct Ur5;
+#[derive(Kinematics)]
+#[kinematics(urdf = "robots/ur5.urdf", tip = "tool0", trig = "std")]
+struct Ur5Std;
 #[derive(Kinematics)]
 #[kinematics(urdf = "robots/ur10e.urdf", tip = "tool0", positions, scalars(f64, f32))]
 struct Ur10e;
 #[derive(Kinematics)]
+#[kinematics(urdf = "robots/ur10e.urdf", tip = "tool0", trig = "std")]
+struct Ur10eStd;
+#[derive(Kinematics)]
 #[kinematics(urdf = "robots/iiwa14.urdf", tip = "iiwa_link_ee", positions, scalars(f64, f32))]
 struct Iiwa14;
+#[derive(Kinematics)]
+#[kinematics(urdf = "robots/iiwa14.urdf", tip = "iiwa_link_ee", trig = "std")]
+struct Iiwa14Std;
 #[derive(Kinematics)]
 #[kinematics(urdf = "robots/panda.urdf", tip = "panda_hand", positions, scalars(f64, f32))]
 struct Panda;
 #[derive(Kinematics)]
+#[kinematics(urdf = "robots/panda.urdf", tip = "panda_hand", trig = "std")]
+struct PandaStd;
+#[derive(Kinematics)]
 #[kinematics(urdf = "robots/gen3.urdf", tip = "end_effector_link", positions, scalars(f64, f32))]
 struct Gen3;
+#[derive(Kinematics)]
+#[kinematics(urdf = "robots/gen3.urdf", tip = "end_effector_link", trig = "std")]
+struct Gen3Std;
 #[derive(Kinematics)]
 #[kinematics(urdf = "robots/irb120.urdf", tip = "tool0", positions, scalars(f64, f32))]
 struct Irb120;
 #[derive(Kinematics)]
+#[kinematics(urdf = "robots/irb120.urdf", tip = "tool0", trig = "std")]
+struct Irb120Std;
+#[derive(Kinematics)]
 #[kinematics(urdf = "robots/dual_arm_torso.urdf", tip = "tool_l", positions, scalars(f64, f32))]
 struct DualArm;
+#[derive(Kinematics)]
+#[kinematics(urdf = "robots/dual_arm_torso.urdf", tip = "tool_l", trig = "std")]
+struct DualArmStd;
 #[derive(Kinematics)]
 #[kinematics(urdf = "robots/quadruped.urdf", tip = "RL_foot", positions, scalars(f64, f32))]
 struct Quadruped;
 #[derive(Kinematics)]
+#[kinematics(urdf = "robots/quadruped.urdf", tip = "RL_foot", trig = "std")]
+struct QuadrupedStd;
+#[derive(Kinematics)]
 #[kinematics(urdf = "robots/humanoid.urdf", tip = "r_gripper", positions, scalars(f64, f32))]
 struct Humanoid;
+#[derive(Kinematics)]
+#[kinematics(urdf = "robots/humanoid.urdf", tip = "r_gripper", trig = "std")]
+struct HumanoidStd;
+
+/// How this benchmark was compiled, for `bench-report`: a label (`KINEMATICS_BENCH_BUILD` when the
+/// command sets it, `native` or `baseline`; else `native` when the code may use AVX2, which a plain
+/// x86-64 build may not) and the vector features the compiler was allowed to use.
+fn build_record() -> String {
+    let features = [
+        ("avx", cfg!(target_feature = "avx")),
+        ("avx2", cfg!(target_feature = "avx2")),
+        ("fma", cfg!(target_feature = "fma")),
+        ("avx512f", cfg!(target_feature = "avx512f")),
+    ];
+    let on: Vec<&str> = features.iter().filter(|(_, on)| *on).map(|(name, _)| *name).collect();
+    let inferred = if cfg!(target_feature = "avx2") { "native" } else { "baseline" };
+    let label = std::env::var("KINEMATICS_BENCH_BUILD").unwrap_or_else(|_| inferred.to_owned());
+    let on = if on.is_empty() { "sse2 only".to_owned() } else { on.join(",") };
+    format!("build\t{label}\nfeatures\t{on}\n")
+}
 
 /// The `sin_cos` pairs of a robot's tip pose and of all its link poses, as the compiler counts them.
 fn sin_cos(file: &str, tip: &str) -> (usize, usize) {
@@ -551,7 +799,7 @@ fn sin_cos(file: &str, tip: &str) -> (usize, usize) {
 
 fn all(c: Option<&mut Criterion>) {
     macro_rules! each {
-        ($(($name:literal, $ty:ty, $n:literal, $file:literal, $tip:literal $(, $galaw:ident)?)),* $(,)?) => {
+        ($(($name:literal, $ty:ty, $std:ty, $n:literal, $file:literal, $tip:literal $(, $galaw:ident)?)),* $(,)?) => {
             let mut c = c;
             if c.is_some() {
                 // The robot list, for `bench-report` to find the results by.
@@ -560,7 +808,9 @@ fn all(c: Option<&mut Criterion>) {
                     .map(std::path::PathBuf::from)
                     .unwrap_or_else(|_| std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target"))
                     .join("criterion");
-                let written = std::fs::create_dir_all(&dir).and_then(|()| std::fs::write(dir.join("kinematics-robots.tsv"), manifest));
+                let written = std::fs::create_dir_all(&dir)
+                    .and_then(|()| std::fs::write(dir.join("kinematics-robots.tsv"), manifest))
+                    .and_then(|()| std::fs::write(dir.join("kinematics-build.tsv"), build_record()));
                 if let Err(e) = written {
                     eprintln!("cannot write the robot list for bench-report: {e}");
                 }
@@ -570,27 +820,27 @@ fn all(c: Option<&mut Criterion>) {
                 match c.as_deref_mut() {
                     Some(c) => {
                         let mut group = c.benchmark_group($name);
-                        robot!(&mut Mode::Measure(&mut group, $name), $ty, $n, $file, $tip, n $(, $galaw)?);
+                        robot!(&mut Mode::Measure(&mut group, $name), $ty, $std, $n, $file, $tip, n $(, $galaw)?);
                         group.finish();
                     }
-                    None => robot!(&mut Mode::Check, $ty, $n, $file, $tip, n $(, $galaw)?),
+                    None => robot!(&mut Mode::Check, $ty, $std, $n, $file, $tip, n $(, $galaw)?),
                 }
             })*
         };
     }
     each!(
-        ("puma560", Puma560, 6, "puma560.toml", "link6"),
-        ("stanford", Stanford, 6, "stanford_arm.toml", "link6"),
-        ("scara", Scara, 4, "scara.toml", "link4"),
-        ("ur5", Ur5, 6, "ur5.urdf", "tool0", ur5),
-        ("ur10e", Ur10e, 6, "ur10e.urdf", "tool0", ur10e),
-        ("iiwa14", Iiwa14, 7, "iiwa14.urdf", "iiwa_link_ee", iiwa14),
-        ("panda", Panda, 8, "panda.urdf", "panda_hand", panda),
-        ("gen3", Gen3, 7, "gen3.urdf", "end_effector_link", gen3),
-        ("irb120", Irb120, 6, "irb120.urdf", "tool0", irb120),
-        ("dual_arm", DualArm, 17, "dual_arm_torso.urdf", "tool_l", dual_arm_torso),
-        ("quadruped", Quadruped, 12, "quadruped.urdf", "RL_foot", quadruped),
-        ("humanoid", Humanoid, 25, "humanoid.urdf", "r_gripper", humanoid),
+        ("puma560", Puma560, Puma560Std, 6, "puma560.toml", "link6"),
+        ("stanford", Stanford, StanfordStd, 6, "stanford_arm.toml", "link6"),
+        ("scara", Scara, ScaraStd, 4, "scara.toml", "link4"),
+        ("ur5", Ur5, Ur5Std, 6, "ur5.urdf", "tool0", ur5),
+        ("ur10e", Ur10e, Ur10eStd, 6, "ur10e.urdf", "tool0", ur10e),
+        ("iiwa14", Iiwa14, Iiwa14Std, 7, "iiwa14.urdf", "iiwa_link_ee", iiwa14),
+        ("panda", Panda, PandaStd, 8, "panda.urdf", "panda_hand", panda),
+        ("gen3", Gen3, Gen3Std, 7, "gen3.urdf", "end_effector_link", gen3),
+        ("irb120", Irb120, Irb120Std, 6, "irb120.urdf", "tool0", irb120),
+        ("dual_arm", DualArm, DualArmStd, 17, "dual_arm_torso.urdf", "tool_l", dual_arm_torso),
+        ("quadruped", Quadruped, QuadrupedStd, 12, "quadruped.urdf", "RL_foot", quadruped),
+        ("humanoid", Humanoid, HumanoidStd, 25, "humanoid.urdf", "r_gripper", humanoid),
     );
 }
 
