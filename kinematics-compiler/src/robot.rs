@@ -132,11 +132,15 @@ pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenSt
                 if suffix.is_empty() { 4 } else { 8 },
                 lanes.to_string().replace(' ', ""),
             );
+            // A closure, `#[inline(always)]`, rather than the function itself: a function item
+            // is called through a shim that is not inlined into the dispatched loop, which then
+            // runs without the instruction set it was compiled for (measured).
             typed.push(quote! {
                 #[doc = #many]
                 #[inline]
+                #[allow(clippy::redundant_closure)]
                 pub fn #batch(qs: &[[#t; #n_lit]], out: &mut [#r]) -> ::core::result::Result<(), #p::KinematicsError> {
-                    #p::batch::<#lanes, #n_lit, _>(Self::ROBOT, qs, out, #g)
+                    #p::batch::<#lanes, #n_lit, _>(Self::ROBOT, qs, out, #[inline(always)] |q| #g(q))
                 }
             });
         }
