@@ -245,7 +245,10 @@ fn table(s: &mut String, rows: &[Row], columns: &[&str], cell: impl Fn(&Row, usi
 
 fn run_sections(s: &mut String, run: &Run) {
     let title = if run.name == "plain" { "Plain build" } else { "Native build (`-C target-cpu=native`)" };
-    let _ = writeln!(s, "## {title}\n\nFrom `{}` ({}).\n", run.dir.display(), run.build);
+    // The directory relative to the workspace (`target/criterion`), never the machine's own path.
+    let dir = run.dir.components().rev().take_while(|c| c.as_os_str() != "..").collect::<Vec<_>>();
+    let dir: PathBuf = dir.into_iter().rev().collect();
+    let _ = writeln!(s, "## {title}\n\nFrom `{}` ({}).\n", dir.display(), run.build);
     let _ = writeln!(s, "### Median ns per call (f64 unless marked)\n");
     let columns = [
         "DoF",
