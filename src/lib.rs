@@ -63,7 +63,8 @@
 //! # Features
 //!
 //! - `std` (default): the runtime reference, the model, file loading, nalgebra conversions of
-//!   [`Pose`] and `trig = "std"`. Without it the crate is `#![no_std]` and a derived robot needs
+//!   [`Pose`], `trig = "std"`, and batches that choose AVX2 at run time when the CPU has it (a
+//!   plain build targets baseline x86-64). Without it the crate is `#![no_std]` and a derived robot needs
 //!   nothing but [`kinematics_core`] (no allocation, no XML, TOML, JSON or nalgebra code).
 //! - `rayon`: [`parallel::batch`], batches split across cores.
 //!
