@@ -70,7 +70,10 @@ fn packs<L: Lanes, const N: usize, O: LaneValue<L>>(
 ) {
     for (q, o) in qs.chunks(L::LANES).zip(out.chunks_mut(L::LANES)) {
         let last = q.len() - 1;
-        let packed: [L; N] = core::array::from_fn(|j| L::from_fn(|i| q[i.min(last)][j]));
+        let mut packed = [L::from_f64(0.0); N];
+        for (j, lanes) in packed.iter_mut().enumerate() {
+            *lanes = L::from_fn(|i| q[i.min(last)][j]);
+        }
         let value = (*f)(&packed);
         for (i, slot) in o.iter_mut().enumerate() {
             *slot = value.lane(i);

@@ -49,22 +49,43 @@ pub trait LaneValue<L: Lanes> {
     fn lane(&self, i: usize) -> Self::Scalar;
 }
 
+// No `array::map` or `array::from_fn` below, nor in anything a batch runs: they are calls LLVM
+// does not always inline, and a batch dispatched to AVX2 (`batch`) must be one function, or the
+// calls run without AVX2 (measured: batches slower than the scalar loop).
+
 impl<L: Lanes> LaneValue<L> for Pose<L> {
     type Scalar = Pose<L::Scalar>;
     #[inline(always)]
     fn lane(&self, i: usize) -> Self::Scalar {
+        let r = &self.rotation;
+        let t = &self.translation;
         Pose {
-            rotation: self.rotation.map(|row| row.map(|x| x.lane(i))),
-            translation: self.translation.map(|x| x.lane(i)),
+            rotation: [
+                [r[0][0].lane(i), r[0][1].lane(i), r[0][2].lane(i)],
+                [r[1][0].lane(i), r[1][1].lane(i), r[1][2].lane(i)],
+                [r[2][0].lane(i), r[2][1].lane(i), r[2][2].lane(i)],
+            ],
+            translation: [t[0].lane(i), t[1].lane(i), t[2].lane(i)],
         }
     }
 }
 
-impl<L: Lanes, V: LaneValue<L>, const M: usize> LaneValue<L> for [V; M] {
+impl<L: Lanes, V: LaneValue<L>, const M: usize> LaneValue<L> for [V; M]
+where
+    V::Scalar: Copy,
+{
     type Scalar = [V::Scalar; M];
     #[inline(always)]
     fn lane(&self, i: usize) -> Self::Scalar {
-        core::array::from_fn(|k| self[k].lane(i))
+        let Some(first) = self.first() else {
+            // M = 0 (a robot with no link but its base): nothing to take.
+            return core::array::from_fn(|k| self[k].lane(i));
+        };
+        let mut out = [first.lane(i); M];
+        for k in 1..M {
+            out[k] = self[k].lane(i);
+        }
+        out
     }
 }
 
@@ -162,8 +183,12 @@ macro_rules! lane_type {
             type Scalar = $scalar;
             const LANES: usize = $lanes;
             #[inline(always)]
-            fn from_fn(f: impl FnMut(usize) -> $scalar) -> Self {
-                $name(core::array::from_fn(f))
+            fn from_fn(mut f: impl FnMut(usize) -> $scalar) -> Self {
+                let mut lanes = [0.0; $lanes];
+                for (i, lane) in lanes.iter_mut().enumerate() {
+                    *lane = f(i);
+                }
+                $name(lanes)
             }
             #[inline(always)]
             fn lane(self, i: usize) -> $scalar {

@@ -85,7 +85,10 @@ pub fn sin_cos_f64_lanes<const N: usize>(x: [f64; N]) -> ([f64; N], [f64; N]) {
     let mut all_fast = true;
     let mut start = 0;
     while start < N {
-        let chunk: [f64; F64_CHUNK] = core::array::from_fn(|j| if start + j < N { x[start + j] } else { 0.0 });
+        let mut chunk = [0.0; F64_CHUNK];
+        for j in 0..F64_CHUNK.min(N - start) {
+            chunk[j] = x[start + j];
+        }
         let mut chunk_s = [0.0; F64_CHUNK];
         let mut chunk_c = [0.0; F64_CHUNK];
         for j in 0..F64_CHUNK {
@@ -125,7 +128,10 @@ pub fn sin_cos_f32_lanes<const N: usize>(x: [f32; N]) -> ([f32; N], [f32; N]) {
     let mut all_fast = true;
     let mut start = 0;
     while start < N {
-        let chunk: [f32; F32_CHUNK] = core::array::from_fn(|j| if start + j < N { x[start + j] } else { 0.0 });
+        let mut chunk = [0.0; F32_CHUNK];
+        for j in 0..F32_CHUNK.min(N - start) {
+            chunk[j] = x[start + j];
+        }
         let mut chunk_s = [0.0; F32_CHUNK];
         let mut chunk_c = [0.0; F32_CHUNK];
         for j in 0..F32_CHUNK {
