@@ -86,6 +86,8 @@ pub fn sin_cos_f64_lanes<const N: usize>(x: [f64; N]) -> ([f64; N], [f64; N]) {
     let mut start = 0;
     while start < N {
         let mut chunk = [0.0; F64_CHUNK];
+        // A loop, not `copy_from_slice`: no call to `memcpy` on this path (see `lanes.rs`).
+        #[allow(clippy::manual_memcpy)]
         for j in 0..F64_CHUNK.min(N - start) {
             chunk[j] = x[start + j];
         }
@@ -129,6 +131,8 @@ pub fn sin_cos_f32_lanes<const N: usize>(x: [f32; N]) -> ([f32; N], [f32; N]) {
     let mut start = 0;
     while start < N {
         let mut chunk = [0.0; F32_CHUNK];
+        // A loop, not `copy_from_slice`: no call to `memcpy` on this path (see `lanes.rs`).
+        #[allow(clippy::manual_memcpy)]
         for j in 0..F32_CHUNK.min(N - start) {
             chunk[j] = x[start + j];
         }
