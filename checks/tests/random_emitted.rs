@@ -330,7 +330,7 @@ fn every_function_of_every_random_robot_agrees_with_the_runtime_reference() {
     }
     assert!(all.is_empty(), "{} disagreements:\n{}", all.len(), all.join("\n"));
     // The set covers both sines and cosines, and batches and lanes in both scalar types.
-    assert!(std_trig >= 10 && lanes_checked >= 20, "{std_trig} robots on std trig, {lanes_checked} lane checks");
+    assert!(std_trig >= 10 && lanes_checked >= 10, "{std_trig} robots on std trig, {lanes_checked} lane checks");
 }
 
 /// The set compiled is the set the generator makes, byte for byte, run after run, every robot of it.
