@@ -27,5 +27,5 @@ mod stats;
 pub mod symbolic;
 
 pub use error::CompileError;
-pub use request::{Compiled, Frame, Request, compile, plain_product_count};
+pub use request::{Compiled, Frame, FrameVelocity, Request, Velocity, VelocityForm, compile, plain_product_count};
 pub use stats::{OpCount, marginal_counts};

@@ -2,7 +2,7 @@
 
 use std::collections::BTreeSet;
 
-use kinematics_model::{KinematicTree, LinkId};
+use kinematics_model::{JacobianFrame, KinematicTree, LinkId};
 
 use crate::error::CompileError;
 use crate::simplify::{
@@ -10,6 +10,7 @@ use crate::simplify::{
     simplify_with, split_tail,
 };
 use crate::stats::{OpCount, Reached, SIN_COS_WEIGHT};
+use crate::symbolic::differential::{Column, Differential};
 use crate::symbolic::graph::{ExprGraph, ExprId};
 use crate::symbolic::lower::lower_path;
 use crate::symbolic::step::{Step, invert};
@@ -22,8 +23,33 @@ pub struct Request {
     pub base: Option<String>,
     /// The links whose poses are wanted; empty means every link but the base.
     pub tips: Vec<String>,
-    /// Compute positions only (no rotations).
+    /// Compute positions only (no rotations); with `velocity`, the linear rows only.
     pub position_only: bool,
+    /// Velocities of the tips (a Jacobian or a twist), beside or instead of their poses.
+    pub velocity: Option<Velocity>,
+}
+
+/// Which velocity of the tips to compute.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Velocity {
+    /// The axes the velocities are written in.
+    pub frame: JacobianFrame,
+    /// The geometric Jacobian, or the twist `J * qdot`.
+    pub form: VelocityForm,
+    /// Whether the poses are outputs too (the Jacobian then shares their work).
+    pub with_pose: bool,
+}
+
+/// The geometric Jacobian, or the twist it maps joint rates to.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum VelocityForm {
+    /// The 6 x dof geometric Jacobian (3 x dof of linear rows for positions only), rows linear
+    /// then angular, one column per degree of freedom in `q` order.
+    #[default]
+    Jacobian,
+    /// The twist `J * qdot` (linear velocity, then angular velocity), built without forming `J`;
+    /// the joint rates are inputs beside the positions.
+    Twist,
 }
 
 impl Request {
@@ -48,6 +74,29 @@ impl Request {
         self.position_only = true;
         self
     }
+
+    /// The geometric Jacobian in `frame` instead of the pose.
+    pub fn jacobian(mut self, frame: JacobianFrame) -> Self {
+        self.velocity = Some(Velocity { frame, form: VelocityForm::Jacobian, with_pose: false });
+        self
+    }
+
+    /// The pose and the geometric Jacobian in `frame`.
+    pub fn pose_and_jacobian(mut self, frame: JacobianFrame) -> Self {
+        self.velocity = Some(Velocity { frame, form: VelocityForm::Jacobian, with_pose: true });
+        self
+    }
+
+    /// The twist `J * qdot` in `frame` instead of the pose.
+    pub fn twist(mut self, frame: JacobianFrame) -> Self {
+        self.velocity = Some(Velocity { frame, form: VelocityForm::Twist, with_pose: false });
+        self
+    }
+
+    /// Whether the poses (or positions) are outputs.
+    pub fn has_pose(&self) -> bool {
+        self.velocity.is_none_or(|v| v.with_pose)
+    }
 }
 
 /// One compiled frame: a link's pose in the base frame (any link: when the base is not an ancestor
@@ -56,8 +105,50 @@ impl Request {
 pub struct Frame {
     /// The link.
     pub link: String,
-    /// Its pose as expressions in the graph.
+    /// Its pose as expressions in the graph (computed whether or not it is an output: the
+    /// velocities are computed from it).
     pub transform: SymTransform,
+    /// Its velocity, when one was asked for.
+    pub velocity: Option<FrameVelocity>,
+}
+
+/// A frame's velocity as expressions in the graph, in the frame the request named.
+#[derive(Debug, Clone, PartialEq)]
+pub enum FrameVelocity {
+    /// The geometric Jacobian: one column (linear, then angular) per degree of freedom.
+    Jacobian(Vec<Column>),
+    /// The twist `J * qdot` (linear, then angular), the joint rates being the graph's variables
+    /// after the positions.
+    Twist(Column),
+}
+
+impl FrameVelocity {
+    /// The entries, row-major: the Jacobian's rows (all six, or the three linear ones) each over
+    /// the columns, or the twist's entries.
+    pub fn entries(&self, linear_only: bool) -> Vec<ExprId> {
+        let rows = if linear_only { 3 } else { 6 };
+        match self {
+            FrameVelocity::Jacobian(columns) => {
+                (0..rows).flat_map(|r| columns.iter().map(move |column| column[r])).collect()
+            }
+            FrameVelocity::Twist(twist) => twist[..rows].to_vec(),
+        }
+    }
+
+    /// Every entry, column by column (the order of [`FrameVelocity::entries_mut`]).
+    fn flat(&self) -> Vec<ExprId> {
+        match self {
+            FrameVelocity::Jacobian(columns) => columns.iter().flatten().copied().collect(),
+            FrameVelocity::Twist(twist) => twist.to_vec(),
+        }
+    }
+
+    fn entries_mut(&mut self) -> Vec<&mut ExprId> {
+        match self {
+            FrameVelocity::Jacobian(columns) => columns.iter_mut().flat_map(|c| c.iter_mut()).collect(),
+            FrameVelocity::Twist(twist) => twist.iter_mut().collect(),
+        }
+    }
 }
 
 /// The result of [`compile`]: the expression graph and the frames computed from it.
@@ -69,8 +160,10 @@ pub struct Compiled {
     pub base: String,
     /// Joint names in degree-of-freedom order (the entries of `q`).
     pub dof_names: Vec<String>,
-    /// Whether only positions are outputs.
+    /// Whether only positions are outputs (and, with a velocity, its linear rows).
     pub position_only: bool,
+    /// The velocity computed, if any.
+    pub velocity: Option<Velocity>,
     /// Whether every link but the base was asked for (the emitted function then returns an array
     /// of frames, however many links there are).
     pub(crate) all_links: bool,
@@ -102,50 +195,79 @@ pub fn compile(tree: &KinematicTree, request: &Request) -> Result<Compiled, Comp
     // prefixes from the base out. Every simplifier option is tried and the cheapest code kept (the
     // first of equals, so the choice is deterministic).
     let orders: &[Order] = if tip_ids.len() == 1 { &[Order::FromTool, Order::FromBase] } else { &[Order::FromBase] };
-    let cost = |(g, frames): &(ExprGraph, Vec<SymTransform>)| {
-        let outputs =
-            frames.iter().flat_map(|t| if request.position_only { t.p.to_vec() } else { t.entries().to_vec() });
+    let cost = |(g, frames): &(ExprGraph, Vec<Frame>)| {
+        let outputs = frames.iter().flat_map(|f| frame_outputs(f, request.position_only, request.has_pose()));
         OpCount::of(g, outputs).weighted()
     };
-    let mut best: Option<(usize, (ExprGraph, Vec<SymTransform>))> = None;
-    let mut consider = |candidate: (ExprGraph, Vec<SymTransform>)| {
+    let mut best: Option<(usize, (ExprGraph, Vec<Frame>))> = None;
+    let mut consider = |candidate: (ExprGraph, Vec<Frame>)| {
         let cost = cost(&candidate);
 
         if best.as_ref().is_none_or(|(c, _)| cost < *c) {
             best = Some((cost, candidate));
         }
     };
+    let name_frames = |(graph, poses): (ExprGraph, Vec<(SymTransform, Option<FrameVelocity>)>)| {
+        let frames = tips
+            .iter()
+            .zip(poses)
+            .map(|(link, (transform, velocity))| Frame { link: link.clone(), transform, velocity })
+            .collect();
+        (graph, frames)
+    };
     for &order in orders {
         for options in Options::ALL {
-            consider(fold_tips(tree, base, &tip_ids, order, options, request.position_only));
+            consider(name_frames(fold_tips(tree, base, &tip_ids, order, options, request)));
         }
     }
-    if tip_ids.len() > 1 {
-        consider(extend_tips(tree, base, &tip_ids, request.position_only));
+    // Building on an ancestor's pose leaves out the joints above it, which a velocity needs.
+    if tip_ids.len() > 1 && request.velocity.is_none() {
+        let (graph, poses) = extend_tips(tree, base, &tip_ids, request.position_only);
+        consider(name_frames((graph, poses.into_iter().map(|t| (t, None)).collect())));
     }
     #[allow(clippy::expect_used, reason = "an invariant of the search, named in the message")]
     let (_, (graph, frames)) = best.expect("the search tries at least one fold order with at least one option");
-    let frames: Vec<Frame> =
-        tips.iter().zip(frames).map(|(link, transform)| Frame { link: link.clone(), transform }).collect();
-    check_finite(tree, &graph, &frames)?;
+    check_finite(tree, &graph, &frames, request)?;
     Ok(Compiled {
         robot: tree.name().to_owned(),
         base: base_name,
         dof_names: tree.dof_names().into_iter().map(str::to_owned).collect(),
         position_only: request.position_only,
+        velocity: request.velocity,
         all_links: request.tips.is_empty(),
         graph,
         frames,
     })
 }
 
+/// A frame's outputs: its pose (12 entries, or the 3 of its translation) when the pose is an
+/// output, then its velocity's entries ([`FrameVelocity::entries`]).
+fn frame_outputs(frame: &Frame, position_only: bool, with_pose: bool) -> Vec<ExprId> {
+    let t = &frame.transform;
+    let mut outputs = match (with_pose, position_only) {
+        (false, _) => Vec::new(),
+        (true, true) => t.p.to_vec(),
+        (true, false) => t.entries().to_vec(),
+    };
+    if let Some(velocity) = &frame.velocity {
+        outputs.extend(velocity.entries(position_only));
+    }
+    outputs
+}
+
 /// Every constant a frame's pose is computed from is a finite number, or the error naming the first
 /// frame with one that is not. The model keeps every number of a description finite, but finite
 /// numbers can compose into infinity (`1e308 + 1e308`); emitted code would compute with it, and
 /// `proc_macro2` cannot even write it as a literal.
-fn check_finite(tree: &KinematicTree, graph: &ExprGraph, frames: &[Frame]) -> Result<(), CompileError> {
+fn check_finite(
+    tree: &KinematicTree,
+    graph: &ExprGraph,
+    frames: &[Frame],
+    request: &Request,
+) -> Result<(), CompileError> {
     for frame in frames {
-        let non_finite = crate::stats::reachable(graph, frame.transform.entries())
+        let outputs = frame_outputs(frame, request.position_only, request.has_pose());
+        let non_finite = crate::stats::reachable(graph, outputs.iter().copied().chain(frame.transform.entries()))
             .into_iter()
             .filter_map(|id| graph.as_const(id))
             .find(|value| !value.is_finite());
@@ -182,37 +304,80 @@ enum Order {
     FromBase,
 }
 
-/// Lowers, simplifies and folds the pose of every tip in one graph.
+/// Lowers, simplifies and folds the pose of every tip in one graph, and the velocity the request
+/// asks for: always from the base out over the same simplified steps (each joint's axis and
+/// origin are the partial products), to the tip's origin as the pose computes it.
 fn fold_tips(
     tree: &KinematicTree,
     base: LinkId,
     tips: &[LinkId],
     order: Order,
     options: Options,
-    position_only: bool,
-) -> (ExprGraph, Vec<SymTransform>) {
+    request: &Request,
+) -> (ExprGraph, Vec<(SymTransform, Option<FrameVelocity>)>) {
     let mut graph = ExprGraph::new();
+    let g = &mut graph;
     let mut frames = Vec::with_capacity(tips.len());
+    let mut velocities = Vec::with_capacity(tips.len());
+    let dof = tree.dof();
     for &tip in tips {
-        let steps = path_steps(&mut graph, tree, base, tip);
-        let steps = simplify_with(&mut graph, steps, options);
-        let transform = match order {
-            Order::FromTool => {
-                let steps = run_chain_passes(&mut graph, steps, TOOL_FIRST_PASSES, options);
-                let (main, tail) = split_tail(&steps);
-                let main = fold_from_tool(&mut graph, main);
-                fold_from_base(&mut graph, main, tail)
+        let steps = path_steps(g, tree, base, tip);
+        let steps = simplify_with(g, steps, options);
+        let identity = SymTransform::identity(g);
+        // Base axes: fold the chain from the base out. The tip's axes: fold the inverted chain
+        // from the tip, so each joint's axis and origin come out in the tip's axes.
+        let differential = request.velocity.map(|velocity| match velocity.frame {
+            JacobianFrame::LocalWorldAligned => Differential::fold(g, identity, &steps),
+            JacobianFrame::Local => {
+                let inverted = invert(g, &steps);
+                Differential::fold(g, identity, &inverted)
             }
-            Order::FromBase => {
-                let identity = SymTransform::identity(&mut graph);
-                fold_from_base(&mut graph, identity, &steps)
+        });
+        let transform = match (order, &differential) {
+            (Order::FromBase, Some(differential))
+                if request.velocity.is_some_and(|v| v.frame == JacobianFrame::LocalWorldAligned) =>
+            {
+                differential.pose
+            }
+            (Order::FromBase, _) => fold_from_base(g, identity, &steps),
+            (Order::FromTool, _) => {
+                let steps = run_chain_passes(g, steps, TOOL_FIRST_PASSES, options);
+                let (main, tail) = split_tail(&steps);
+                let main = fold_from_tool(g, main);
+                fold_from_base(g, main, tail)
             }
         };
+        let velocity =
+            request.velocity.zip(differential).map(|(velocity, differential)| match (velocity.form, velocity.frame) {
+                (VelocityForm::Jacobian, JacobianFrame::LocalWorldAligned) => {
+                    FrameVelocity::Jacobian(differential.jacobian(g, transform.p, dof))
+                }
+                (VelocityForm::Jacobian, JacobianFrame::Local) => {
+                    FrameVelocity::Jacobian(differential.local_jacobian(g, dof))
+                }
+                (VelocityForm::Twist, JacobianFrame::LocalWorldAligned) => {
+                    FrameVelocity::Twist(differential.twist(g, transform.p, dof))
+                }
+                (VelocityForm::Twist, JacobianFrame::Local) => FrameVelocity::Twist(differential.local_twist(g, dof)),
+            });
         frames.push(transform);
+        velocities.push(velocity);
     }
+    // The velocities' entries go through the expression passes with the poses, so both use the
+    // same rewritten sines and cosines.
+    let mut extra: Vec<ExprId> = velocities.iter().flatten().flat_map(FrameVelocity::flat).collect();
     // A rotation column as a cross product, shared factors out of sums.
-    run_expr_passes(&mut graph, &mut frames, EXPR_PASSES, position_only);
-    (graph, frames)
+    run_expr_passes(g, &mut frames, &mut extra, EXPR_PASSES, request.position_only || !request.has_pose());
+    let mut rewritten = extra.into_iter();
+    for velocity in velocities.iter_mut().flatten() {
+        for entry in velocity.entries_mut() {
+            #[allow(clippy::expect_used, reason = "an invariant: the passes return as many outputs as they get")]
+            {
+                *entry = rewritten.next().expect("one rewritten entry per velocity entry");
+            }
+        }
+    }
+    (graph, frames.into_iter().zip(velocities).collect())
 }
 
 /// How many joints up from a tip [`extend_tips`] looks for an ancestor whose pose to extend.
@@ -291,7 +456,7 @@ fn extend_tips(
         built[tip.0] = Some(pose);
         frames.push(pose);
     }
-    run_expr_passes(&mut graph, &mut frames, EXPR_PASSES, position_only);
+    run_expr_passes(&mut graph, &mut frames, &mut [], EXPR_PASSES, position_only);
     (graph, frames)
 }
 
@@ -330,11 +495,30 @@ impl Compiled {
         self.dof_names.len()
     }
 
+    /// Whether the poses (or positions) are outputs.
+    pub fn has_pose(&self) -> bool {
+        self.velocity.is_none_or(|v| v.with_pose)
+    }
+
     /// The output expressions of a frame: 12 for a pose (rotation row-major, then translation),
-    /// or the 3 of the translation for positions only.
+    /// or the 3 of the translation for positions only, when the pose is an output; then the
+    /// velocity's entries, if one was asked for ([`FrameVelocity::entries`]: a Jacobian row by
+    /// row, six rows or the three linear ones).
     pub fn frame_outputs(&self, index: usize) -> Vec<ExprId> {
-        let t = &self.frames[index].transform;
-        if self.position_only { t.p.to_vec() } else { t.entries().to_vec() }
+        frame_outputs(&self.frames[index], self.position_only, self.has_pose())
+    }
+
+    /// Evaluates every frame's outputs ([`Compiled::frame_outputs`]) with the simplified graph:
+    /// `q` holds the joint positions, then (for a twist) the joint rates.
+    ///
+    /// # Panics
+    ///
+    /// If `q` has fewer values than the outputs need.
+    pub fn eval_outputs(&self, q: &[f64]) -> Vec<Vec<f64>> {
+        let mut values = Vec::new();
+        (0..self.frames.len())
+            .map(|i| self.frame_outputs(i).into_iter().map(|id| self.graph.eval(id, q, &mut values)).collect())
+            .collect()
     }
 
     /// Every output expression, frame by frame.

@@ -80,7 +80,8 @@ pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenSt
     let krate = &spec.krate;
     let p = quote!(#krate::__private);
     let base = spec.base.clone().unwrap_or_else(|| tree.link(tree.root()).name.clone());
-    let all = compile(tree, &Request { base: Some(base.clone()), tips: Vec::new(), position_only: false })?;
+    let all =
+        compile(tree, &Request { base: Some(base.clone()), tips: Vec::new(), position_only: false, velocity: None })?;
     let n = tree.dof();
     let n_lit = Literal::usize_unsuffixed(n);
     let link_names: Vec<String> = all.frames().iter().map(|f| f.link.clone()).collect();
@@ -166,7 +167,10 @@ pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenSt
         format!("Poses of every link but `{base}`, in `{base}` and in the order of `LINK_NAMES`"),
     );
     if spec.positions {
-        let positions = compile(tree, &Request { base: Some(base.clone()), tips: Vec::new(), position_only: true })?;
+        let positions = compile(
+            tree,
+            &Request { base: Some(base.clone()), tips: Vec::new(), position_only: true, velocity: None },
+        )?;
         generic.push(emit_function(&positions, &private("generic_link_positions")));
         add(
             "link_positions",
@@ -177,7 +181,7 @@ pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenSt
     }
     let tips = spec.tips.clone();
     let k_lit = Literal::usize_unsuffixed(tips.len());
-    let tip_request = Request { base: Some(base.clone()), tips: tips.clone(), position_only: false };
+    let tip_request = Request { base: Some(base.clone()), tips: tips.clone(), position_only: false, velocity: None };
     let tip_poses_body = if tips.is_empty() {
         quote!(let _ = (q, out);)
     } else {

@@ -4,7 +4,7 @@ use proc_macro2::{Delimiter, Group, Ident, Literal, Punct, Spacing, Span, TokenS
 use quote::{ToTokens as _, TokenStreamExt as _, format_ident, quote};
 
 use super::schedule::{Item, Schedule};
-use crate::request::Compiled;
+use crate::request::{Compiled, VelocityForm};
 use crate::symbolic::graph::{ExprGraph, ExprId, Node};
 
 /// Which sine and cosine generated code calls.
@@ -59,6 +59,14 @@ struct Writer<'a> {
     g: &'a ExprGraph,
     schedule: &'a Schedule,
     private: &'a TokenStream,
+    /// Degrees of freedom: variables from here on are joint rates (`qd1`, ...).
+    dof: usize,
+}
+
+/// The name of the graph's variable `i`: a joint position `q1`, or past the degrees of freedom a
+/// joint rate `qd1`.
+fn var_ident(i: usize, dof: usize) -> Ident {
+    if i < dof { format_ident!("q{}", i + 1) } else { format_ident!("qd{}", i - dof + 1) }
 }
 
 fn ident(name: &str) -> Ident {
@@ -111,7 +119,7 @@ impl Writer<'_> {
         let g = self.g;
         match g.node(id) {
             Node::Const(c) => Self::constant(c.value(), out),
-            Node::Var(i) => out.append(format_ident!("q{}", i as usize + 1)),
+            Node::Var(i) => out.append(var_ident(i as usize, self.dof)),
             Node::Sin(a) => out.append(ident(&self.schedule.names.sin(a))),
             Node::Cos(a) => out.append(ident(&self.schedule.names.cos(a))),
             Node::Neg(a) => {
@@ -204,6 +212,24 @@ impl Writer<'_> {
         out.extend(quote!(#private::Pose { rotation: [#rows], translation: #translation }));
     }
 
+    /// A Jacobian's entries (`rows` rows of [`Writer::dof`] entries, row-major) as
+    /// `[[..; dof]; rows]`, or a twist's (`[..; rows]`).
+    fn velocity(&self, entries: &[ExprId], rows: usize, form: VelocityForm, out: &mut TokenStream) {
+        match form {
+            VelocityForm::Twist => self.list(entries, out),
+            VelocityForm::Jacobian => {
+                let mut inner = TokenStream::new();
+                for r in 0..rows {
+                    if r > 0 {
+                        punct(&mut inner, ',');
+                    }
+                    self.list(&entries[r * self.dof..(r + 1) * self.dof], &mut inner);
+                }
+                group(out, Delimiter::Bracket, inner);
+            }
+        }
+    }
+
     /// An angle as the argument of a call or an entry of an array (no parentheses needed).
     fn angle(&self, angle: ExprId) -> TokenStream {
         let mut value = TokenStream::new();
@@ -273,38 +299,46 @@ impl Writer<'_> {
 
 /// One function computing every frame of `compiled`, generic over `T: Real`.
 ///
-/// One tip returns a `Pose<T>` (or `[T; 3]` for positions only); several tips, or every link,
-/// return an array of them in request order (see [`Compiled::returns_array`]). The scalar type
-/// parameter is the function's own `T`, so the function may stand anywhere but inside a generic
-/// item whose own parameter is called `T` ([`crate::robot::emit_robot`] puts it in a block of its
-/// own).
+/// One tip returns a `Pose<T>` (or `[T; 3]` for positions only); with a velocity, its Jacobian
+/// `[[T; DOF]; 6]` (`[[T; DOF]; 3]` for positions) or its twist `[T; 6]` (`[T; 3]`), and with
+/// both the pair `(pose, jacobian)`. Several tips, or every link, return an array of them in
+/// request order (see [`Compiled::returns_array`]). A twist takes the joint rates `qd` beside `q`.
+/// The scalar type parameter is the function's own `T`, so the function may stand anywhere but
+/// inside a generic item whose own parameter is called `T` ([`crate::robot::emit_robot`] puts it
+/// in a block of its own).
 pub fn emit_function(compiled: &Compiled, options: &EmitOptions) -> TokenStream {
     let g = compiled.graph();
     let outputs = compiled.outputs();
     let schedule = Schedule::new(g, &outputs);
     let private = &options.private;
-    let w = Writer { g, schedule: &schedule, private };
     let n = compiled.dof();
+    let w = Writer { g, schedule: &schedule, private, dof: n };
     let n_lit = Literal::usize_unsuffixed(n);
+    let twist = compiled.velocity.is_some_and(|v| v.form == VelocityForm::Twist);
     let mut body = TokenStream::new();
-    if n == 0 {
-        body.extend(quote!(let _ = q;));
-    } else {
-        let vars = (0..n).map(|i| {
-            if schedule.used_vars.contains(&i) { format_ident!("q{}", i + 1).into_token_stream() } else { quote!(_) }
-        });
-        body.extend(quote!(let [#(#vars),*] = *q;));
+    let mut inputs = vec![(quote!(q), 0)];
+    if twist {
+        inputs.push((quote!(qd), n));
+    }
+    for &(ref input, first) in &inputs {
+        if n == 0 {
+            body.extend(quote!(let _ = #input;));
+        } else {
+            let vars = (first..first + n)
+                .map(|i| if schedule.used_vars.contains(&i) { var_ident(i, n).into_token_stream() } else { quote!(_) });
+            body.extend(quote!(let [#(#vars),*] = *#input;));
+        }
     }
     w.items(options.trig, &mut body);
-    let per_frame = if compiled.position_only { 3 } else { 12 };
-    let frames: Vec<&[ExprId]> = outputs.chunks(per_frame).collect();
+    let layout = Layout::of(compiled);
     let array = compiled.returns_array();
     let mut value = TokenStream::new();
-    for (k, frame) in frames.iter().enumerate() {
+    let per_frame = layout.per_frame();
+    for k in 0..compiled.frames().len() {
         if k > 0 {
             punct(&mut value, ',');
         }
-        w.pose(frame, &mut value);
+        layout.value(&w, &outputs[k * per_frame..(k + 1) * per_frame], &mut value);
     }
     if array {
         let mut list = TokenStream::new();
@@ -312,9 +346,9 @@ pub fn emit_function(compiled: &Compiled, options: &EmitOptions) -> TokenStream 
         value = list;
     }
     body.extend(value);
-    let one = if compiled.position_only { quote!([T; 3]) } else { quote!(#private::Pose<T>) };
+    let one = layout.ty(private, &n_lit);
     let ret = if array {
-        let m = Literal::usize_unsuffixed(frames.len());
+        let m = Literal::usize_unsuffixed(compiled.frames().len());
         quote!([#one; #m])
     } else {
         one
@@ -323,6 +357,7 @@ pub fn emit_function(compiled: &Compiled, options: &EmitOptions) -> TokenStream 
     let docs = doc_lines(compiled);
     let vis = if options.public { quote!(pub) } else { quote!() };
     let bound = options.trig.bound(private);
+    let params = if twist { quote!(q: &[T; #n_lit], qd: &[T; #n_lit]) } else { quote!(q: &[T; #n_lit]) };
     quote! {
         #(#[doc = #docs])*
         // Always inlined into its (small, `#[inline]`) typed callers: a function returning an array
@@ -332,14 +367,99 @@ pub fn emit_function(compiled: &Compiled, options: &EmitOptions) -> TokenStream 
         #[allow(clippy::inline_always)]
         #[inline(always)]
         #[allow(clippy::approx_constant)] // a robot's own decimals may resemble pi; they are kept as given
-        #vis fn #name<T: #bound>(q: &[T; #n_lit]) -> #ret {
+        #vis fn #name<T: #bound>(#params) -> #ret {
             #body
+        }
+    }
+}
+
+/// What one frame's value is made of: its pose (or position), its velocity, or both.
+struct Layout {
+    /// Entries of the pose part: 12, 3, or 0 when the pose is not an output.
+    pose: usize,
+    /// The velocity's form and rows (6, or 3 for positions only), if any.
+    velocity: Option<(VelocityForm, usize)>,
+    dof: usize,
+}
+
+impl Layout {
+    fn of(compiled: &Compiled) -> Self {
+        let rows = if compiled.position_only { 3 } else { 6 };
+        let pose = match (compiled.has_pose(), compiled.position_only) {
+            (false, _) => 0,
+            (true, true) => 3,
+            (true, false) => 12,
+        };
+        Layout { pose, velocity: compiled.velocity.map(|v| (v.form, rows)), dof: compiled.dof() }
+    }
+
+    fn velocity_len(&self) -> usize {
+        match self.velocity {
+            None => 0,
+            Some((VelocityForm::Jacobian, rows)) => rows * self.dof,
+            Some((VelocityForm::Twist, rows)) => rows,
+        }
+    }
+
+    fn per_frame(&self) -> usize {
+        self.pose + self.velocity_len()
+    }
+
+    /// The frame's value from its outputs.
+    fn value(&self, w: &Writer<'_>, frame: &[ExprId], out: &mut TokenStream) {
+        let mut pose = TokenStream::new();
+        if self.pose > 0 {
+            w.pose(&frame[..self.pose], &mut pose);
+        }
+        let Some((form, rows)) = self.velocity else {
+            out.extend(pose);
+            return;
+        };
+        let mut velocity = TokenStream::new();
+        w.velocity(&frame[self.pose..], rows, form, &mut velocity);
+        if self.pose > 0 {
+            out.extend(quote!((#pose, #velocity)));
+        } else {
+            out.extend(velocity);
+        }
+    }
+
+    /// The type of one frame's value.
+    fn ty(&self, private: &TokenStream, n: &Literal) -> TokenStream {
+        let pose = match self.pose {
+            3 => quote!([T; 3]),
+            _ => quote!(#private::Pose<T>),
+        };
+        let velocity = self.velocity.map(|(form, rows)| {
+            let rows = Literal::usize_unsuffixed(rows);
+            match form {
+                VelocityForm::Jacobian => quote!([[T; #n]; #rows]),
+                VelocityForm::Twist => quote!([T; #rows]),
+            }
+        });
+        match (self.pose, velocity) {
+            (_, None) => pose,
+            (0, Some(velocity)) => velocity,
+            (_, Some(velocity)) => quote!((#pose, #velocity)),
         }
     }
 }
 
 fn doc_lines(compiled: &Compiled) -> Vec<String> {
     let what = if compiled.position_only { "Position" } else { "Pose" };
+    let what = match compiled.velocity {
+        None => what.to_owned(),
+        Some(v) => {
+            let rows = if compiled.position_only { "linear rows of the " } else { "" };
+            let form = match v.form {
+                VelocityForm::Jacobian => {
+                    format!("{rows}geometric Jacobian ({}, rows linear then angular)", v.frame.name())
+                }
+                VelocityForm::Twist => format!("{rows}twist `J * qd` ({}, linear then angular)", v.frame.name()),
+            };
+            if v.with_pose { format!("{what} and {form}") } else { capitalise(&form) }
+        }
+    };
     let frames: Vec<String> = compiled.frames().iter().map(|f| format!("`{}`", f.link)).collect();
     let mut docs = vec![
         format!(" {what} of {} in frame `{}` of robot `{}`.", frames.join(", "), compiled.base, compiled.robot),
@@ -351,6 +471,11 @@ fn doc_lines(compiled: &Compiled) -> Vec<String> {
     docs.push(String::new());
     docs.push(format!(" Cost: {}.", compiled.op_count()));
     docs
+}
+
+fn capitalise(text: &str) -> String {
+    let mut chars = text.chars();
+    chars.next().map(|c| c.to_uppercase().chain(chars).collect()).unwrap_or_default()
 }
 
 /// A formatted Rust source file holding one function (`prettyplease`).

@@ -1,7 +1,7 @@
 //! Rule `cross-column`: a rotation column as the cross product of the other two.
 
 use crate::stats::OpCount;
-use crate::symbolic::graph::ExprGraph;
+use crate::symbolic::graph::{ExprGraph, ExprId};
 use crate::symbolic::transform::SymTransform;
 
 use super::ExprPass;
@@ -10,9 +10,10 @@ use super::ExprPass;
 /// derive from the other two becomes their cross product, when that saves work.
 pub const CROSS_COLUMN: ExprPass = ExprPass { name: "cross-column", run: cross_column };
 
-fn cross_column(g: &mut ExprGraph, frames: &mut [SymTransform], position_only: bool) {
-    // A single pose only: the cost below is measured on that pose alone.
+fn cross_column(g: &mut ExprGraph, frames: &mut [SymTransform], extra: &mut [ExprId], position_only: bool) {
+    // A single pose with no further outputs only: the cost below is measured on that pose alone.
     if let [t] = frames
+        && extra.is_empty()
         && !position_only
     {
         *t = cheapest_columns(g, *t);

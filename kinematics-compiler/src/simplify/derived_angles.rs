@@ -112,9 +112,12 @@ fn offset(g: &mut ExprGraph, x: (ExprId, ExprId), k: f64) -> (ExprId, ExprId) {
     sum_formula(g, x, (sk, ck))
 }
 
-fn derive_frames(g: &mut ExprGraph, frames: &mut [SymTransform], position_only: bool) {
-    let outputs: Vec<ExprId> =
-        frames.iter().flat_map(|t| if position_only { t.p.to_vec() } else { t.entries().to_vec() }).collect();
+fn derive_frames(g: &mut ExprGraph, frames: &mut [SymTransform], extra: &mut [ExprId], position_only: bool) {
+    let outputs: Vec<ExprId> = frames
+        .iter()
+        .flat_map(|t| if position_only { t.p.to_vec() } else { t.entries().to_vec() })
+        .chain(extra.iter().copied())
+        .collect();
     let nodes = reachable(g, outputs.iter().copied());
     // Every angle with its sine and cosine nodes (either may be absent: then it is made).
     let mut angles: BTreeMap<ExprId, Linear> = BTreeMap::new();
@@ -211,6 +214,9 @@ fn derive_frames(g: &mut ExprGraph, frames: &mut [SymTransform], position_only: 
             t.r = t.r.map(|row| row.map(|x| new[&x]));
         }
         t.p = t.p.map(|x| new[&x]);
+    }
+    for x in extra.iter_mut() {
+        *x = new[x];
     }
 }
 

@@ -19,12 +19,17 @@ use super::ExprPass;
 /// and the rotations unless only positions are wanted).
 pub const COMMON_FACTOR: ExprPass = ExprPass { name: "common-factor", run: factor_frames };
 
-fn factor_frames(g: &mut ExprGraph, frames: &mut [SymTransform], position_only: bool) {
+fn factor_frames(g: &mut ExprGraph, frames: &mut [SymTransform], extra: &mut [ExprId], position_only: bool) {
     let per_frame = if position_only { 3 } else { 12 };
-    let outputs: Vec<ExprId> =
-        frames.iter().flat_map(|t| if position_only { t.p.to_vec() } else { t.entries().to_vec() }).collect();
+    let outputs: Vec<ExprId> = frames
+        .iter()
+        .flat_map(|t| if position_only { t.p.to_vec() } else { t.entries().to_vec() })
+        .chain(extra.iter().copied())
+        .collect();
     let factored = factor_common(g, &outputs);
-    for (t, new) in frames.iter_mut().zip(factored.chunks(per_frame)) {
+    let (poses, rest) = factored.split_at(frames.len() * per_frame);
+    extra.copy_from_slice(rest);
+    for (t, new) in frames.iter_mut().zip(poses.chunks(per_frame)) {
         if position_only {
             t.p = [new[0], new[1], new[2]];
         } else {

@@ -74,7 +74,7 @@ mod tail;
 #[cfg(test)]
 mod testing;
 
-use crate::symbolic::graph::ExprGraph;
+use crate::symbolic::graph::{ExprGraph, ExprId};
 use crate::symbolic::step::Step;
 use crate::symbolic::transform::SymTransform;
 
@@ -102,9 +102,10 @@ pub struct ChainPass {
 pub struct ExprPass {
     /// The rule's stable kebab-case name (`common-factor`).
     pub name: &'static str,
-    /// Rewrites the poses in place (new nodes in the graph; the old ones stay, unreachable). The
-    /// flag says whether only the translations are outputs (then the rotations must not be used).
-    pub run: fn(&mut ExprGraph, &mut [SymTransform], bool),
+    /// Rewrites the poses, and the further outputs computed from them (Jacobian entries, twists),
+    /// in place (new nodes in the graph; the old ones stay, unreachable). The flag says whether
+    /// only the translations of the poses are outputs (then the rotations must not be used).
+    pub run: fn(&mut ExprGraph, &mut [SymTransform], &mut [ExprId], bool),
 }
 
 /// The chain passes, in the order they run (a pass listed twice runs twice).
@@ -165,10 +166,16 @@ pub fn run_chain_passes(g: &mut ExprGraph, steps: Vec<Step>, passes: &[ChainPass
     passes.iter().fold(steps, |steps, pass| (pass.run)(g, steps, options))
 }
 
-/// Runs `passes` over the folded poses, in order.
-pub fn run_expr_passes(g: &mut ExprGraph, frames: &mut [SymTransform], passes: &[ExprPass], position_only: bool) {
+/// Runs `passes` over the folded poses and the further outputs `extra`, in order.
+pub fn run_expr_passes(
+    g: &mut ExprGraph,
+    frames: &mut [SymTransform],
+    extra: &mut [ExprId],
+    passes: &[ExprPass],
+    position_only: bool,
+) {
     for pass in passes {
-        (pass.run)(g, frames, position_only);
+        (pass.run)(g, frames, extra, position_only);
     }
 }
 

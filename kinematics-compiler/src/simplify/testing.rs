@@ -32,7 +32,7 @@ pub fn check_with(pass: &ChainPass, options: Options, input: &str, expected: &st
 pub fn check_frames(pass: &ExprPass, position_only: bool, input: &[&str], expected: &[&str]) {
     let mut g = ExprGraph::new();
     let mut frames: Vec<SymTransform> = input.iter().map(|text| parse_frame(&mut g, text)).collect();
-    (pass.run)(&mut g, &mut frames, position_only);
+    (pass.run)(&mut g, &mut frames, &mut [], position_only);
     let output: Vec<String> = frames.iter().map(|t| frame_text(&g, t)).collect();
     assert_eq!(output, expected, "`{}` on {input:?}", pass.name);
 }

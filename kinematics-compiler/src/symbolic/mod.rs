@@ -2,6 +2,7 @@
 //! symbolic rigid transforms, and lowering from the model.
 
 pub mod angle;
+pub mod differential;
 pub mod graph;
 pub mod lower;
 pub mod step;

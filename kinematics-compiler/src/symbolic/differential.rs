@@ -1,0 +1,302 @@
+//! Differential kinematics over the chain IR: the geometric Jacobian of a chain of steps and its
+//! twist `J * qdot`, as expressions in the same graph as the pose, so they share its work.
+//!
+//! The chain `T = S1 S2 ... Sn` is folded from the base out. Each step that depends on the joint
+//! variables moves everything after it; by the product rule the Jacobian is the sum of what each
+//! step contributes with the others held still. With `A` the product of the steps before it (its
+//! rotation `R_A`, its origin `o = p_A`) and `p` the tip's origin, all in base axes:
+//!
+//! - a rotation by `a(q)` about the unit axis `u` turns everything after it about the axis
+//!   `z = R_A u` through `o`: column `i` gains `da/dq_i * [z x (p - o); z]`;
+//! - a translation by `v(q)` moves everything after it: column `i` gains `[R_A dv/dq_i; 0]`.
+//!
+//! Angles are linear forms in the joint variables, so `da/dq_i` is a constant (a mimic joint's
+//! multiplier; `1` and `1` for an angle sum `q2 + q3`; `-1` on an inverted step, where the base's
+//! side of the tree moves); translations are differentiated symbolically ([`derivative`]). The
+//! twist is built the same way with `a' = sum_i da/dq_i * qdot_i` per step, so a step contributes
+//! one cross product however many joints its angle sums (cheaper than forming `J` and
+//! multiplying). The joint rates are the graph's variables after the joint positions
+//! (`q[dof + i]` is `qdot[i]`).
+
+use rustc_hash::FxHashMap;
+
+use super::graph::{ExprGraph, ExprId, Node};
+use super::step::Step;
+use super::transform::{SymTransform, apply_right, const_vec, mat_vec};
+
+/// One column of a geometric Jacobian: the linear velocity of the tip's origin, then the angular
+/// velocity, per unit rate of one degree of freedom.
+pub type Column = [ExprId; 6];
+
+/// What a joint-dependent step contributes, recorded while folding.
+enum Contribution {
+    /// A rotation: the rates of its angle per degree of freedom, its axis and origin in base axes.
+    Rotation { rates: Vec<(usize, f64)>, axis: [ExprId; 3], origin: [ExprId; 3] },
+    /// A translation: per degree of freedom, the velocity it gives the tip, in base axes.
+    Translation { velocities: Vec<(usize, [ExprId; 3])> },
+}
+
+/// The chain's pose folded from the base out, and what each of its joint-dependent steps
+/// contributes to the velocity of the tip.
+pub struct Differential {
+    /// The pose of the chain (`start` times the steps).
+    pub pose: SymTransform,
+    contributions: Vec<Contribution>,
+}
+
+impl Differential {
+    /// Folds `steps` from `start` (the identity for a chain from the base), recording each
+    /// joint-dependent step's axis and origin (rotations) or velocity (translations).
+    pub fn fold(g: &mut ExprGraph, start: SymTransform, steps: &[Step]) -> Self {
+        let mut t = start;
+        let mut contributions = Vec::new();
+        for step in steps {
+            match step {
+                Step::Rotate { axis, angle } if !angle.is_constant() => {
+                    let u = const_vec(g, *axis);
+                    let z = mat_vec(g, &t.r, u);
+                    contributions.push(Contribution::Rotation { rates: angle.terms().to_vec(), axis: z, origin: t.p });
+                }
+                Step::Translate(v) => {
+                    let mut vars = Vec::new();
+                    for &x in v {
+                        collect_vars(g, x, &mut vars);
+                    }
+                    vars.sort_unstable();
+                    vars.dedup();
+                    let velocities = vars
+                        .into_iter()
+                        .map(|i| {
+                            let dv = v.map(|x| derivative(g, x, i));
+                            (i, mat_vec(g, &t.r, dv))
+                        })
+                        .collect::<Vec<_>>();
+                    if !velocities.is_empty() {
+                        contributions.push(Contribution::Translation { velocities });
+                    }
+                }
+                _ => {}
+            }
+            t = apply_right(g, &t, step);
+        }
+        Differential { pose: t, contributions }
+    }
+
+    /// The geometric Jacobian in base axes (Pinocchio's `LOCAL_WORLD_ALIGNED`): `dof` columns, of
+    /// the tip whose origin is `p` (the chain's own translation, or the same point as the
+    /// simplified pose computes it).
+    pub fn jacobian(&self, g: &mut ExprGraph, p: [ExprId; 3], dof: usize) -> Vec<Column> {
+        let zero = g.constant(0.0);
+        let mut columns = vec![[zero; 6]; dof];
+        for contribution in &self.contributions {
+            match contribution {
+                Contribution::Rotation { rates, axis, origin } => {
+                    let arm = sub3(g, p, *origin);
+                    let linear = cross(g, *axis, arm);
+                    for &(i, rate) in rates {
+                        let k = g.constant(rate);
+                        for r in 0..3 {
+                            let l = g.mul(k, linear[r]);
+                            columns[i][r] = g.add(columns[i][r], l);
+                            let a = g.mul(k, axis[r]);
+                            columns[i][r + 3] = g.add(columns[i][r + 3], a);
+                        }
+                    }
+                }
+                Contribution::Translation { velocities } => {
+                    for (i, v) in velocities {
+                        for r in 0..3 {
+                            columns[*i][r] = g.add(columns[*i][r], v[r]);
+                        }
+                    }
+                }
+            }
+        }
+        columns
+    }
+
+    /// The twist `J * qdot` in base axes (linear, then angular), with `qdot[i]` the graph's
+    /// variable `dof + i`: per rotation step one cross product of its axis scaled by its angle's
+    /// rate.
+    pub fn twist(&self, g: &mut ExprGraph, p: [ExprId; 3], dof: usize) -> [ExprId; 6] {
+        let zero = g.constant(0.0);
+        let mut twist = [zero; 6];
+        for contribution in &self.contributions {
+            match contribution {
+                Contribution::Rotation { rates, axis, origin } => {
+                    let mut rate = zero;
+                    for &(i, k) in rates {
+                        let (k, qd) = (g.constant(k), g.var(dof + i));
+                        let term = g.mul(k, qd);
+                        rate = g.add(rate, term);
+                    }
+                    let w = axis.map(|z| g.mul(rate, z));
+                    let arm = sub3(g, p, *origin);
+                    let linear = cross(g, w, arm);
+                    for r in 0..3 {
+                        twist[r] = g.add(twist[r], linear[r]);
+                        twist[r + 3] = g.add(twist[r + 3], w[r]);
+                    }
+                }
+                Contribution::Translation { velocities } => {
+                    for (i, v) in velocities {
+                        let qd = g.var(dof + i);
+                        for r in 0..3 {
+                            let term = g.mul(qd, v[r]);
+                            twist[r] = g.add(twist[r], term);
+                        }
+                    }
+                }
+            }
+        }
+        twist
+    }
+}
+
+/// The Jacobian and twist in the tip's own axes (Pinocchio's `LOCAL`), from a [`Differential`]
+/// folded over the *inverted* chain (tip to base): there each joint's axis `z'` and origin `o'`
+/// are already in the tip's axes, and a rotation whose (inverted) angle has rate `k'` gives the
+/// tip's origin the velocity `k' z' x o'` and the angular velocity `-k' z'` (a translation, minus
+/// its velocity). That is one cross product per step, where rotating a base-axes column into the
+/// tip's axes takes two matrix products.
+impl Differential {
+    /// The geometric Jacobian in the tip's axes; `self` folded over the inverted chain.
+    pub fn local_jacobian(&self, g: &mut ExprGraph, dof: usize) -> Vec<Column> {
+        let zero = g.constant(0.0);
+        let mut columns = vec![[zero; 6]; dof];
+        for contribution in &self.contributions {
+            match contribution {
+                Contribution::Rotation { rates, axis, origin } => {
+                    let linear = cross(g, *axis, *origin);
+                    for &(i, rate) in rates {
+                        let k = g.constant(rate);
+                        let nk = g.constant(-rate);
+                        for r in 0..3 {
+                            let l = g.mul(k, linear[r]);
+                            columns[i][r] = g.add(columns[i][r], l);
+                            let a = g.mul(nk, axis[r]);
+                            columns[i][r + 3] = g.add(columns[i][r + 3], a);
+                        }
+                    }
+                }
+                Contribution::Translation { velocities } => {
+                    for (i, v) in velocities {
+                        for r in 0..3 {
+                            columns[*i][r] = g.sub(columns[*i][r], v[r]);
+                        }
+                    }
+                }
+            }
+        }
+        columns
+    }
+
+    /// The twist `J * qdot` in the tip's axes; `self` folded over the inverted chain.
+    pub fn local_twist(&self, g: &mut ExprGraph, dof: usize) -> [ExprId; 6] {
+        let zero = g.constant(0.0);
+        let mut twist = [zero; 6];
+        for contribution in &self.contributions {
+            match contribution {
+                Contribution::Rotation { rates, axis, origin } => {
+                    let mut rate = zero;
+                    for &(i, k) in rates {
+                        let (k, qd) = (g.constant(k), g.var(dof + i));
+                        let term = g.mul(k, qd);
+                        rate = g.add(rate, term);
+                    }
+                    let w = axis.map(|z| g.mul(rate, z));
+                    let linear = cross(g, w, *origin);
+                    for r in 0..3 {
+                        twist[r] = g.add(twist[r], linear[r]);
+                        twist[r + 3] = g.sub(twist[r + 3], w[r]);
+                    }
+                }
+                Contribution::Translation { velocities } => {
+                    for (i, v) in velocities {
+                        let qd = g.var(dof + i);
+                        for r in 0..3 {
+                            let term = g.mul(qd, v[r]);
+                            twist[r] = g.sub(twist[r], term);
+                        }
+                    }
+                }
+            }
+        }
+        twist
+    }
+}
+
+fn sub3(g: &mut ExprGraph, a: [ExprId; 3], b: [ExprId; 3]) -> [ExprId; 3] {
+    std::array::from_fn(|i| g.sub(a[i], b[i]))
+}
+
+fn cross(g: &mut ExprGraph, a: [ExprId; 3], b: [ExprId; 3]) -> [ExprId; 3] {
+    std::array::from_fn(|i| {
+        let (j, k) = ((i + 1) % 3, (i + 2) % 3);
+        let x = g.mul(a[j], b[k]);
+        let y = g.mul(a[k], b[j]);
+        g.sub(x, y)
+    })
+}
+
+/// The joint variables `id` depends on, pushed onto `out` (unsorted, possibly repeated).
+fn collect_vars(g: &ExprGraph, id: ExprId, out: &mut Vec<usize>) {
+    let mut stack = vec![id];
+    let mut seen = rustc_hash::FxHashSet::default();
+    while let Some(id) = stack.pop() {
+        if !seen.insert(id) {
+            continue;
+        }
+        match g.node(id) {
+            Node::Var(i) => out.push(i as usize),
+            Node::Const(_) => {}
+            Node::Sin(a) | Node::Cos(a) | Node::Neg(a) => stack.push(a),
+            Node::Add(a, b) | Node::Mul(a, b) => {
+                stack.push(a);
+                stack.push(b);
+            }
+        }
+    }
+}
+
+/// `d id / d q[var]`, built with the graph's smart constructors (so zeros vanish as they appear).
+pub fn derivative(g: &mut ExprGraph, id: ExprId, var: usize) -> ExprId {
+    let mut memo = FxHashMap::default();
+    derivative_memo(g, id, var, &mut memo)
+}
+
+fn derivative_memo(g: &mut ExprGraph, id: ExprId, var: usize, memo: &mut FxHashMap<ExprId, ExprId>) -> ExprId {
+    if let Some(&d) = memo.get(&id) {
+        return d;
+    }
+    let d = match g.node(id) {
+        Node::Const(_) => g.constant(0.0),
+        Node::Var(i) => g.constant(if i as usize == var { 1.0 } else { 0.0 }),
+        Node::Sin(a) => {
+            let da = derivative_memo(g, a, var, memo);
+            let c = g.cos(a);
+            g.mul(c, da)
+        }
+        Node::Cos(a) => {
+            let da = derivative_memo(g, a, var, memo);
+            let s = g.sin(a);
+            let ds = g.mul(s, da);
+            g.neg(ds)
+        }
+        Node::Neg(a) => {
+            let da = derivative_memo(g, a, var, memo);
+            g.neg(da)
+        }
+        Node::Add(a, b) => {
+            let (da, db) = (derivative_memo(g, a, var, memo), derivative_memo(g, b, var, memo));
+            g.add(da, db)
+        }
+        Node::Mul(a, b) => {
+            let (da, db) = (derivative_memo(g, a, var, memo), derivative_memo(g, b, var, memo));
+            let (x, y) = (g.mul(da, b), g.mul(a, db));
+            g.add(x, y)
+        }
+    };
+    memo.insert(id, d);
+    d
+}
