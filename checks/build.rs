@@ -138,6 +138,7 @@ fn write_random_robots(out: &Path) -> Result<(), Box<dyn std::error::Error>> {
             base: robot.base.clone(),
             tips: robot.tips.clone(),
             positions: robot.positions,
+            jacobians: false,
             scalars: Scalars { f64: robot.f64, f32: robot.f32 },
             krate: "::kinematics".parse()?,
             trig: if trig == "Std" {

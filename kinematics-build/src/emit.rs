@@ -27,6 +27,8 @@ pub(crate) struct Emit<'a> {
     pub tips: Vec<String>,
     /// Position-only functions too.
     pub positions: bool,
+    /// Velocity functions of the tips.
+    pub jacobians: bool,
     /// `_f32` functions too.
     pub f32: bool,
     /// Path of the `kinematics` crate.
@@ -49,6 +51,7 @@ pub(crate) fn emit_source(emit: &Emit<'_>) -> Result<String, BuildError> {
         base: emit.base.clone(),
         tips: emit.tips.clone(),
         positions: emit.positions,
+        jacobians: emit.jacobians,
         scalars: Scalars { f64: true, f32: emit.f32 },
         krate: quote!(#krate),
         trig: emit.trig,

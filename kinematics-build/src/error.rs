@@ -27,6 +27,12 @@ pub enum BuildError {
         /// The closest link name, when it looks like a typo.
         suggestion: Option<String>,
     },
+    /// `jacobians` asked for with no tip.
+    #[error("{file}: `jacobians` needs a tip: the Jacobians are the tips' (call `.tip(\"link\")`)")]
+    JacobiansWithoutTip {
+        /// The description file.
+        file: String,
+    },
     /// A struct name that is not a Rust identifier.
     #[error("{file}: struct name `{name}` is not a Rust identifier")]
     StructName {

@@ -20,6 +20,7 @@ use crate::write::write_atomic;
 /// | `base = "link"` | [`Robot::base`] |
 /// | `tip = "link"` / `tips(..)` | [`Robot::tip`] (once per tip) / [`Robot::tips`] |
 /// | `positions` | [`Robot::positions`] |
+/// | `jacobians` | [`Robot::jacobians`] |
 /// | `scalars(f64, f32)` | [`Robot::f32`] |
 /// | `crate = "path"` | [`Robot::crate_path`] |
 /// | `exact_angles = false` | [`Robot::exact_angles`] |
@@ -37,6 +38,7 @@ pub struct Robot {
     base: Option<String>,
     tips: Vec<String>,
     positions: bool,
+    jacobians: bool,
     f32: bool,
     struct_name: Option<String>,
     crate_path: String,
@@ -53,6 +55,7 @@ impl Robot {
             base: None,
             tips: Vec::new(),
             positions: false,
+            jacobians: false,
             f32: false,
             struct_name: None,
             crate_path: "::kinematics".to_owned(),
@@ -108,6 +111,14 @@ impl Robot {
     /// Also generate position-only functions (`tip_position`, `link_positions`).
     pub fn positions(mut self) -> Self {
         self.positions = true;
+        self
+    }
+
+    /// Also generate the tips' velocities: `tip_jacobian` (`LOCAL_WORLD_ALIGNED`),
+    /// `tip_jacobian_local`, `tip_pose_and_jacobian`, `tip_twist`, `tip_twist_local` (and with
+    /// [`Robot::positions`] `tip_position_jacobian`). Needs a tip.
+    pub fn jacobians(mut self) -> Self {
+        self.jacobians = true;
         self
     }
 
@@ -169,6 +180,9 @@ impl Robot {
         for tip in &self.tips {
             find_link(&loaded.tree, &label, "tip", tip)?;
         }
+        if self.jacobians && self.tips.is_empty() {
+            return Err(BuildError::JacobiansWithoutTip { file: label });
+        }
         let name = self.struct_name.clone().unwrap_or_else(|| default_struct_name(loaded.tree.name()));
         emit_source(&Emit {
             loaded: &loaded,
@@ -176,6 +190,7 @@ impl Robot {
             base: self.base.clone(),
             tips: self.tips.clone(),
             positions: self.positions,
+            jacobians: self.jacobians,
             f32: self.f32,
             crate_path: &self.crate_path,
             trig: self.trig,

@@ -16,6 +16,7 @@ use quote::{format_ident, quote};
 use crate::emit::{EmitOptions, Trig, emit_function};
 use crate::error::CompileError;
 use crate::request::{Request, compile};
+use kinematics_model::JacobianFrame;
 
 /// Which scalar types get typed functions.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -43,6 +44,9 @@ pub struct RobotSpec<'a> {
     pub tips: Vec<String>,
     /// Also emit position-only functions.
     pub positions: bool,
+    /// Also emit the tips' velocities: geometric Jacobians in both frames, the pose with its
+    /// Jacobian, the twist `J * qd` (and, with `positions`, the position Jacobian).
+    pub jacobians: bool,
     /// Scalar types.
     pub scalars: Scalars,
     /// Path to the `kinematics` crate in the user's crate (usually `::kinematics`); generated code
@@ -216,6 +220,92 @@ pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenSt
                 &|t| if one { quote!([#t; 3]) } else { quote!([[#t; 3]; #k_lit]) },
                 format!("Positions of {}", tips.join(", ")),
             );
+        }
+        if spec.jacobians {
+            let (tips_word, of) = ("tip", if one { format!("`{}`", tips[0]) } else { tips.join(", ") });
+            let j_ty = |t: &TokenStream, rows: usize| {
+                let rows = Literal::usize_unsuffixed(rows);
+                if one { quote!([[#t; #n_lit]; #rows]) } else { quote!([[[#t; #n_lit]; #rows]; #k_lit]) }
+            };
+            let frames = [
+                (JacobianFrame::LocalWorldAligned, "", "in `{base}`'s axes"),
+                (JacobianFrame::Local, "_local", "in the tip's own axes"),
+            ];
+            for (frame, suffix, axes) in frames {
+                let axes = axes.replace("{base}", &base);
+                let name = format!("{tips_word}_{}{suffix}", if one { "jacobian" } else { "jacobians" });
+                let generic_name = format!("generic_{name}");
+                let compiled = compile(tree, &Request { velocity: None, ..tip_request.clone() }.jacobian(frame))?;
+                generic.push(emit_function(&compiled, &private(&generic_name)));
+                add(
+                    &name,
+                    &generic_name,
+                    &|t| j_ty(t, 6),
+                    format!(
+                        "Geometric Jacobian of {of} relative to `{base}` ({}: rows the linear velocity of the tip's origin, then \
+                         the angular velocity, {axes}; one column per entry of `q`)",
+                        frame.name()
+                    ),
+                );
+            }
+            let name = if one { "tip_pose_and_jacobian" } else { "tip_poses_and_jacobians" };
+            let compiled = compile(tree, &tip_request.clone().pose_and_jacobian(JacobianFrame::LocalWorldAligned))?;
+            generic.push(emit_function(&compiled, &private("generic_pose_and_jacobian")));
+            add(
+                name,
+                "generic_pose_and_jacobian",
+                &|t| {
+                    let pair = quote!((#p::Pose<#t>, [[#t; #n_lit]; 6]));
+                    if one { pair } else { quote!([#pair; #k_lit]) }
+                },
+                format!("Pose and geometric Jacobian (`LOCAL_WORLD_ALIGNED`) of {of} in `{base}`, computed together"),
+            );
+            if spec.positions {
+                let name = format!("{tips_word}_position_{}", if one { "jacobian" } else { "jacobians" });
+                let compiled =
+                    compile(tree, &tip_request.clone().positions_only().jacobian(JacobianFrame::LocalWorldAligned))?;
+                generic.push(emit_function(&compiled, &private("generic_position_jacobian")));
+                add(
+                    &name,
+                    "generic_position_jacobian",
+                    &|t| j_ty(t, 3),
+                    format!(
+                        "The linear rows of the geometric Jacobian of {of} in `{base}` (the derivative of its position)"
+                    ),
+                );
+            }
+            for (frame, suffix, axes) in frames {
+                let axes = axes.replace("{base}", &base);
+                let name = format!("{tips_word}_{}{suffix}", if one { "twist" } else { "twists" });
+                let generic_name = format!("generic_{name}");
+                let compiled = compile(tree, &tip_request.clone().twist(frame))?;
+                generic.push(emit_function(&compiled, &private(&generic_name)));
+                let g = format_ident!("{generic_name}");
+                let ret = |t: &TokenStream| if one { quote!([#t; 6]) } else { quote!([[#t; 6]; #k_lit]) };
+                let doc = format!(
+                    "Twist of {of} relative to `{base}` at joint rates `qd` ({}: the linear velocity of the tip's origin, then \
+                     the angular velocity, {axes}): the Jacobian times `qd`, computed without forming the Jacobian",
+                    frame.name()
+                );
+                for (suffix, t, _) in &scalars {
+                    let f = format_ident!("{name}{suffix}");
+                    let r = ret(t);
+                    let one_doc = format!("{doc} (`{t}`).");
+                    typed.push(quote! {
+                        #[doc = #one_doc]
+                        #[inline]
+                        pub fn #f(q: &[#t; #n_lit], qd: &[#t; #n_lit]) -> #r { #g(q, qd) }
+                    });
+                }
+                let f = format_ident!("{name}_generic");
+                let r = ret(&scalar);
+                let doc = format!("{doc}, for any scalar type.");
+                typed.push(quote! {
+                    #[doc = #doc]
+                    #[inline]
+                    pub fn #f<#scalar: #bound>(q: &[#scalar; #n_lit], qd: &[#scalar; #n_lit]) -> #r { #g(q, qd) }
+                });
+            }
         }
         if one { quote!(out[0] = generic_tip_poses(q);) } else { quote!(out.copy_from_slice(&generic_tip_poses(q));) }
     };

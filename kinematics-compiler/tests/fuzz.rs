@@ -50,6 +50,7 @@ fn compile_everything(label: &str, text: &str) -> Result<Vec<String>, String> {
         base: None,
         tips: leaves,
         positions: true,
+        jacobians: true,
         scalars: Scalars { f64: true, f32: true },
         krate: quote!(::kinematics),
         trig: kinematics_compiler::emit::Trig::Fast,

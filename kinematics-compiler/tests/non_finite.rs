@@ -40,6 +40,7 @@ fn spec(tree: &kinematics_model::KinematicTree) -> RobotSpec<'_> {
         base: None,
         tips: vec![tree.links().last().unwrap().name.clone()],
         positions: true,
+        jacobians: true,
         scalars: Scalars { f64: true, f32: true },
         krate: quote!(::kinematics),
         trig: kinematics_compiler::emit::Trig::Fast,

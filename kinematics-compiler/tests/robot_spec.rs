@@ -20,6 +20,7 @@ fn spec(tree: &KinematicTree) -> RobotSpec<'_> {
         base: None,
         tips: vec!["tool".to_owned()],
         positions: false,
+        jacobians: false,
         scalars: Scalars::default(),
         krate: quote!(::kinematics),
         trig: kinematics_compiler::emit::Trig::Fast,

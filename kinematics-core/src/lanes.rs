@@ -89,6 +89,15 @@ where
     }
 }
 
+/// A pose with its Jacobian (`tip_pose_and_jacobian`), or any pair of lane values.
+impl<L: Lanes, A: LaneValue<L>, B: LaneValue<L>> LaneValue<L> for (A, B) {
+    type Scalar = (A::Scalar, B::Scalar);
+    #[inline(always)]
+    fn lane(&self, i: usize) -> Self::Scalar {
+        (self.0.lane(i), self.1.lane(i))
+    }
+}
+
 macro_rules! lane_type {
     ($name:ident, $scalar:ident, $lanes:literal, $sin_cos:path, $doc:literal) => {
         #[doc = $doc]

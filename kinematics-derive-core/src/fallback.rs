@@ -23,6 +23,8 @@ struct Names {
     several_tips: bool,
     /// The position functions.
     positions: bool,
+    /// The velocity functions (`tip_jacobian`, ...).
+    jacobians: bool,
     /// `f64` functions (no suffix).
     f64: bool,
     /// `_f32` functions.
@@ -33,7 +35,8 @@ struct Names {
 
 impl Names {
     /// Every name the derive can emit: for an attribute that cannot be read at all.
-    const ALL: Names = Names { one_tip: true, several_tips: true, positions: true, f64: true, f32: true, tips: None };
+    const ALL: Names =
+        Names { one_tip: true, several_tips: true, positions: true, jacobians: true, f64: true, f32: true, tips: None };
 
     /// From options darling parsed (the scalar list may still be wrong: then both scalar types).
     fn from_options(options: &KinematicsInput) -> Self {
@@ -42,15 +45,30 @@ impl Names {
             Ok(s) => (s.f64, s.f32),
             Err(_) => (true, true),
         };
-        Names { one_tip: tips == 1, several_tips: tips > 1, positions: options.positions, f64, f32, tips: Some(tips) }
+        Names {
+            one_tip: tips == 1,
+            several_tips: tips > 1,
+            positions: options.positions,
+            jacobians: options.jacobians.is_present(),
+            f64,
+            f32,
+            tips: Some(tips),
+        }
     }
 
     /// From the attribute's keys alone, when darling could not parse it: only which keys are
     /// there matters (`tip`, `tips(...)` and how many, `positions`, `scalars(...)`); whatever
     /// cannot be read counts as present.
     fn from_attributes(input: &syn::DeriveInput) -> Self {
-        let mut names =
-            Names { one_tip: false, several_tips: false, positions: false, f64: true, f32: false, tips: None };
+        let mut names = Names {
+            one_tip: false,
+            several_tips: false,
+            positions: false,
+            jacobians: false,
+            f64: true,
+            f32: false,
+            tips: None,
+        };
         let mut tips = 0usize;
         for attr in input.attrs.iter().filter(|a| a.path().is_ident("kinematics")) {
             let Ok(items) = attr.parse_args_with(Punctuated::<syn::Meta, syn::Token![,]>::parse_terminated) else {
@@ -72,6 +90,8 @@ impl Names {
                     }
                 } else if path.is_ident("positions") {
                     names.positions = true;
+                } else if path.is_ident("jacobians") {
+                    names.jacobians = true;
                 } else if path.is_ident("scalars") {
                     let text = match &item {
                         syn::Meta::List(list) => list.tokens.to_string(),
@@ -200,6 +220,65 @@ pub fn stub(input: &syn::DeriveInput, options: Option<&KinematicsInput>, known: 
         }
         if names.several_tips {
             function("tip_positions", Some(&tips_param), &|t| quote!([[#t; 3]; #tips]));
+        }
+    }
+    if names.jacobians {
+        // (one tip, several tips, rows)
+        let mut velocity = vec![("tip_jacobian", "tip_jacobians", 6), ("tip_jacobian_local", "tip_jacobians_local", 6)];
+        if names.positions {
+            velocity.push(("tip_position_jacobian", "tip_position_jacobians", 3));
+        }
+        for (one, several, rows) in velocity {
+            if names.one_tip {
+                function(one, None, &|t| quote!([[#t; #dof]; #rows]));
+            }
+            if names.several_tips {
+                function(several, Some(&tips_param), &|t| quote!([[[#t; #dof]; #rows]; #tips]));
+            }
+        }
+        let pair = |t: &TokenStream| quote!((#p::Pose<#t>, [[#t; #dof]; 6]));
+        if names.one_tip {
+            function("tip_pose_and_jacobian", None, &pair);
+        }
+        if names.several_tips {
+            function("tip_poses_and_jacobians", Some(&tips_param), &|t| {
+                let pair = pair(t);
+                quote!([#pair; #tips])
+            });
+        }
+    }
+    drop(function);
+    if names.jacobians {
+        let attrs = quote!(#[allow(missing_docs, unused_variables, clippy::missing_panics_doc)]);
+        let mut twists = Vec::new();
+        if names.one_tip {
+            twists.extend([("tip_twist", None), ("tip_twist_local", None)]);
+        }
+        if names.several_tips {
+            twists.extend([("tip_twists", Some(&tips_param)), ("tip_twists_local", Some(&tips_param))]);
+        }
+        for (name, frames) in twists {
+            let params: Vec<&TokenStream> = dof_param.iter().chain(frames.into_iter().flatten()).collect();
+            let ret = |t: &TokenStream| if frames.is_some() { quote!([[#t; 6]; #tips]) } else { quote!([#t; 6]) };
+            for (suffix, t) in &scalars {
+                let f = format_ident!("{name}{suffix}");
+                let r = ret(t);
+                functions.push(quote! {
+                    #attrs
+                    pub fn #f<#(#params),*>(q: &[#t; #dof], qd: &[#t; #dof]) -> #r {
+                        ::core::unreachable!(#message)
+                    }
+                });
+            }
+            let f = format_ident!("{name}_generic");
+            let scalar = quote!(__KinematicsScalar);
+            let r = ret(&scalar);
+            functions.push(quote! {
+                #attrs
+                pub fn #f<#scalar: #p::Real, #(#params),*>(q: &[#scalar; #dof], qd: &[#scalar; #dof]) -> #r {
+                    ::core::unreachable!(#message)
+                }
+            });
         }
     }
     let dof_const = known.map_or(0, |k| k.dof);

@@ -86,6 +86,16 @@ fn expand_options(
 ) -> (Option<fallback::Known>, Option<TokenStream>) {
     let (loaded, links_ok) = read_and_check(&options.source(), errors);
     let scalars = errors.handle(options.scalars());
+    if options.jacobians.is_present() && options.tips().is_empty() {
+        errors.push(
+            darling::Error::custom(
+                "`jacobians` needs `tip = \"link\"` or `tips(...)`: the Jacobians are the tips' (add the link whose \
+                 velocity you want)",
+            )
+            .with_span(&options.jacobians.span()),
+        );
+        return (loaded.as_ref().map(known), None);
+    }
     let trig = errors.handle(options.trig());
     let known = loaded.as_ref().map(known);
     let (Some(loaded), Some(scalars), Some(trig), true) = (loaded, scalars, trig, links_ok) else {
@@ -102,6 +112,7 @@ fn expand_options(
         base: options.base.as_ref().map(|b| b.as_ref().clone()),
         tips: options.tips().into_iter().map(|t| t.as_ref().clone()).collect(),
         positions: options.positions,
+        jacobians: options.jacobians.is_present(),
         scalars,
         krate,
         trig,

@@ -44,6 +44,9 @@ pub struct KinematicsInput {
     /// `positions`: also emit position-only functions.
     #[darling(default)]
     pub positions: bool,
+    /// `jacobians`: also emit the tips' Jacobians and twists (needs `tip` or `tips`).
+    #[darling(default)]
+    pub jacobians: darling::util::Flag,
     /// `scalars(f64, f32)`.
     #[darling(default)]
     pub scalars: Option<SpannedValue<PathList>>,
