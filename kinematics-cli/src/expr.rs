@@ -1,8 +1,10 @@
-//! `kinematics expr FILE`: the simplified symbolic pose of one link and what it costs, or with
-//! `--all` what every link's pose adds to the all-links code (where the cost of a tree goes).
+//! `kinematics expr FILE`: the simplified symbolic pose of one link and what it costs, with
+//! `--jacobian` its geometric Jacobian and what the velocity functions cost, or with `--all` what
+//! every link's pose adds to the all-links code (where the cost of a tree goes).
 
 use std::io::Write;
 
+use kinematics::model::JacobianFrame;
 use kinematics::model::KinematicTree;
 use kinematics_compiler::{Compiled, OpCount, Request, compile, plain_product_count};
 
@@ -26,6 +28,30 @@ pub struct Args {
     /// operations its pose adds to those of the links listed before it.
     #[arg(long)]
     all: bool,
+    /// Print the geometric Jacobian of the link instead of its pose, and the operation counts of
+    /// every velocity function (Jacobian, pose and Jacobian, position Jacobian, twist).
+    #[arg(long, conflicts_with = "all")]
+    jacobian: bool,
+    /// The axes of the Jacobian: the base's (`local-world-aligned`, Pinocchio's
+    /// LOCAL_WORLD_ALIGNED) or the link's own (`local`).
+    #[arg(long, value_enum, default_value = "local-world-aligned", requires = "jacobian")]
+    frame: Frame,
+}
+
+/// `--frame`.
+#[derive(Clone, Copy, clap::ValueEnum)]
+enum Frame {
+    LocalWorldAligned,
+    Local,
+}
+
+impl Frame {
+    fn model(self) -> JacobianFrame {
+        match self {
+            Frame::LocalWorldAligned => JacobianFrame::LocalWorldAligned,
+            Frame::Local => JacobianFrame::Local,
+        }
+    }
 }
 
 /// Prints the pose and its operation counts.
@@ -37,6 +63,13 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
         return Ok(());
     }
     let (base, tip) = crate::robot::base_and_tip(&tree, &args.file, args.base.as_deref(), args.tip.as_deref())?;
+    if args.jacobian {
+        let frame = args.frame.model();
+        write!(out, "{}", jacobian_text(&tree, &args.file, &base, &tip, frame, args.latex)?)?;
+        writeln!(out, "\noperations:")?;
+        write!(out, "{}", op_table(&velocity_op_counts(&tree, &args.file, &base, &tip, frame)?))?;
+        return Ok(());
+    }
     write!(out, "{}", pose_text(&tree, &args.file, &base, &tip, args.latex)?)?;
     writeln!(out, "\noperations:")?;
     write!(out, "{}", op_table(&op_counts(&tree, &args.file, &base, &tip)?))?;
@@ -110,6 +143,98 @@ pub fn pose_text(tree: &KinematicTree, file: &str, base: &str, tip: &str, latex:
         }
     }
     Ok(out)
+}
+
+/// The Jacobian of `tip` in `base` as text (or LaTeX): entries `J[row][column]`, rows `vx vy vz`
+/// (the linear velocity of the tip's origin) then `wx wy wz` (the angular velocity), columns the
+/// entries of `q`.
+pub fn jacobian_text(
+    tree: &KinematicTree,
+    file: &str,
+    base: &str,
+    tip: &str,
+    frame: JacobianFrame,
+    latex: bool,
+) -> Result<String, CliError> {
+    let jacobian = compile(tree, &Request::tip(tip).with_base(base).jacobian(frame))
+        .map_err(|source| CliError::Compile { file: file.to_owned(), source })?;
+    let mut out = format!("robot `{}`: geometric Jacobian of `{tip}` in `{base}` ({})\n", tree.name(), frame.name());
+    let axes = match frame {
+        JacobianFrame::LocalWorldAligned => format!("`{base}`'s axes"),
+        JacobianFrame::Local => format!("`{tip}`'s own axes"),
+    };
+    out += &format!("rows: vx vy vz (velocity of the origin of `{tip}`), wx wy wz (angular velocity), in {axes}\n");
+    let joints: Vec<String> = jacobian.dof_names.iter().enumerate().map(|(i, n)| format!("q{} = {n}", i + 1)).collect();
+    if !joints.is_empty() {
+        out += &format!("columns: {}\n", joints.join(", "));
+    }
+    let legend = legend(&jacobian);
+    if !legend.is_empty() {
+        out += &format!("angles: {}\n", legend.join(", "));
+    }
+    out += "\n";
+    let g = jacobian.graph();
+    let names = kinematics_compiler::emit::Names::new(g, &jacobian.outputs());
+    let outputs = jacobian.frame_outputs(0);
+    let n = jacobian.dof();
+    let rows = ["vx", "vy", "vz", "wx", "wy", "wz"];
+    let entry_names: Vec<String> =
+        (0..outputs.len()).map(|k| format!("J[{}][q{}]", rows[k / n.max(1)], k % n.max(1) + 1)).collect();
+    if latex {
+        let listing = kinematics_compiler::emit::latex_listing(g, &names, &outputs);
+        out += "\\begin{aligned}\n";
+        let lines: Vec<String> = listing
+            .temporaries
+            .iter()
+            .map(|(name, definition)| format!("  {name} &= {definition}"))
+            .chain(entry_names.iter().zip(listing.entries).map(|(name, entry)| {
+                format!("  J_{{{}}} &= {entry}", name.trim_start_matches("J[").replace("][", ",").trim_end_matches(']'))
+            }))
+            .collect();
+        out += &lines.join(" \\\\\n");
+        out += "\n\\end{aligned}\n";
+    } else {
+        let listing = kinematics_compiler::emit::text_listing(g, &names, &outputs);
+        for (name, definition) in &listing.temporaries {
+            out += &format!("{name:>3} = {definition}\n");
+        }
+        if !listing.temporaries.is_empty() {
+            out += "\n";
+        }
+        for (name, entry) in entry_names.iter().zip(listing.entries) {
+            out += &format!("{name} = {entry}\n");
+        }
+    }
+    Ok(out)
+}
+
+/// The operation counts of the velocity functions of `tip` in `base`: the pose, the Jacobian in
+/// `frame`, both together, the position Jacobian, the twist, and the twist had it been computed
+/// as the Jacobian times the rates (`6n` multiplications and `6(n - 1)` additions more).
+pub fn velocity_op_counts(
+    tree: &KinematicTree,
+    file: &str,
+    base: &str,
+    tip: &str,
+    frame: JacobianFrame,
+) -> Result<Vec<(String, OpCount)>, CliError> {
+    let count = |request: Request| {
+        compile(tree, &request.with_base(base))
+            .map(|c| c.op_count())
+            .map_err(|source| CliError::Compile { file: file.to_owned(), source })
+    };
+    let n = tree.dof();
+    let jacobian = count(Request::tip(tip).jacobian(frame))?;
+    let formed = OpCount { mul: jacobian.mul + 6 * n, add: jacobian.add + 6 * n.saturating_sub(1), ..jacobian };
+    let name = frame.name();
+    Ok(vec![
+        (format!("pose of {tip}"), count(Request::tip(tip))?),
+        (format!("Jacobian of {tip} ({name})"), jacobian),
+        (format!("pose and Jacobian of {tip}"), count(Request::tip(tip).pose_and_jacobian(frame))?),
+        (format!("position Jacobian of {tip}"), count(Request::tip(tip).positions_only().jacobian(frame))?),
+        (format!("twist of {tip} (J * qd, J not formed)"), count(Request::tip(tip).twist(frame))?),
+        (format!("J * qd with J formed"), formed),
+    ])
 }
 
 /// The operation counts of the generated pose and position of `tip` and of the plain product of

@@ -23,6 +23,9 @@ pub struct Args {
     /// Also generate position-only functions.
     #[arg(long)]
     positions: bool,
+    /// Also generate the tips' velocity functions (Jacobians, pose and Jacobian, twists).
+    #[arg(long)]
+    jacobians: bool,
     /// Also generate `f32` functions.
     #[arg(long)]
     f32: bool,
@@ -61,6 +64,9 @@ pub fn builder(args: &Args) -> Robot {
     }
     if args.positions {
         robot = robot.positions();
+    }
+    if args.jacobians {
+        robot = robot.jacobians();
     }
     if args.f32 {
         robot = robot.f32();

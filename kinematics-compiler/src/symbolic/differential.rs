@@ -226,17 +226,85 @@ impl Differential {
     }
 }
 
+/// `a - b` for each entry, as [`difference`] builds it.
 fn sub3(g: &mut ExprGraph, a: [ExprId; 3], b: [ExprId; 3]) -> [ExprId; 3] {
-    std::array::from_fn(|i| g.sub(a[i], b[i]))
+    std::array::from_fn(|i| difference(g, a[i], b[i]))
 }
 
+/// The terms of a sum, with their signs: `a + b - (c + d)` is `+a, +b, -c, -d`.
+fn sum_terms(g: &ExprGraph, id: ExprId, negated: bool, out: &mut Vec<(bool, ExprId)>) {
+    match g.node(id) {
+        Node::Add(a, b) => {
+            sum_terms(g, a, negated, out);
+            sum_terms(g, b, negated, out);
+        }
+        Node::Neg(a) => sum_terms(g, a, !negated, out),
+        _ => out.push((negated, id)),
+    }
+}
+
+/// `a - b` with the terms the two sums share cancelled. The lever arm `p - o` from a joint's
+/// origin to the tip is the sum of the translations after the joint: `p` was accumulated from
+/// `o` onwards, so `o`'s terms are among `p`'s, and subtracting node by node would compute them
+/// twice and cancel them in floating point.
+pub fn difference(g: &mut ExprGraph, a: ExprId, b: ExprId) -> ExprId {
+    let (mut left, mut right) = (Vec::new(), Vec::new());
+    sum_terms(g, a, false, &mut left);
+    sum_terms(g, b, true, &mut right);
+    for term in right {
+        let opposite = (!term.0, term.1);
+        match left.iter().position(|&t| t == opposite) {
+            Some(k) => {
+                left.remove(k);
+            }
+            None => left.push(term),
+        }
+    }
+    let mut sum = g.constant(0.0);
+    for (negated, term) in left {
+        let term = if negated { g.neg(term) } else { term };
+        sum = g.add(sum, term);
+    }
+    sum
+}
+
+/// `a x b`. An entry whose two products have the same factors is zero, whatever their grouping:
+/// a lever arm along the joint's own axis (`z x k z`, a wrist's last joint with the tool on its
+/// axis) gives zeros, not `x*k*y - y*k*x` computed and rounded.
 fn cross(g: &mut ExprGraph, a: [ExprId; 3], b: [ExprId; 3]) -> [ExprId; 3] {
     std::array::from_fn(|i| {
         let (j, k) = ((i + 1) % 3, (i + 2) % 3);
+        if product_factors(g, &[a[j], b[k]]) == product_factors(g, &[a[k], b[j]]) {
+            return g.constant(0.0);
+        }
         let x = g.mul(a[j], b[k]);
         let y = g.mul(a[k], b[j]);
         g.sub(x, y)
     })
+}
+
+/// A product as its constant coefficient (sign included) and its other factors, sorted.
+fn product_factors(g: &ExprGraph, ids: &[ExprId]) -> (u64, Vec<ExprId>) {
+    fn walk(g: &ExprGraph, id: ExprId, coefficient: &mut f64, factors: &mut Vec<ExprId>) {
+        match g.node(id) {
+            Node::Mul(a, b) => {
+                walk(g, a, coefficient, factors);
+                walk(g, b, coefficient, factors);
+            }
+            Node::Neg(a) => {
+                *coefficient = -*coefficient;
+                walk(g, a, coefficient, factors);
+            }
+            Node::Const(c) => *coefficient *= c.value(),
+            _ => factors.push(id),
+        }
+    }
+    let (mut coefficient, mut factors) = (1.0, Vec::new());
+    for &id in ids {
+        walk(g, id, &mut coefficient, &mut factors);
+    }
+    factors.sort_unstable();
+    (coefficient.to_bits(), factors)
 }
 
 /// The joint variables `id` depends on, pushed onto `out` (unsorted, possibly repeated).
