@@ -5,6 +5,7 @@ mod common;
 
 use kinematics_compiler::emit::{EmitOptions, emit_module_source};
 use kinematics_compiler::{Request, compile};
+use kinematics_model::JacobianFrame;
 
 fn source(file: &str, request: &Request, name: &str) -> String {
     let compiled = compile(&common::robot(file), request).unwrap();
@@ -37,12 +38,44 @@ fn seed_tree_all_links() {
 }
 
 #[test]
+fn planar_3r_pose_and_jacobian() {
+    let request = Request::tip("link3").pose_and_jacobian(JacobianFrame::LocalWorldAligned);
+    insta::assert_snapshot!(source("planar_3r.toml", &request, "link3_pose_and_jacobian"));
+}
+
+#[test]
+fn planar_3r_jacobian_local() {
+    insta::assert_snapshot!(source(
+        "planar_3r.toml",
+        &Request::tip("link3").jacobian(JacobianFrame::Local),
+        "link3_jacobian_local"
+    ));
+}
+
+#[test]
+fn planar_3r_twist() {
+    let request = Request::tip("link3").twist(JacobianFrame::LocalWorldAligned);
+    insta::assert_snapshot!(source("planar_3r.toml", &request, "link3_twist"));
+}
+
+#[test]
+fn ur5_urdf_tool0_jacobian() {
+    let request = Request::tip("tool0").jacobian(JacobianFrame::LocalWorldAligned);
+    insta::assert_snapshot!(source("ur5.urdf", &request, "tool0_jacobian"));
+}
+
+#[test]
 fn output_is_byte_identical_across_runs() {
     for file in ["planar_3r.toml", "ur5.urdf", "seed_tree.urdf"] {
         let first = source(file, &Request::all_links(), "all_links");
         for _ in 0..3 {
             assert_eq!(source(file, &Request::all_links(), "all_links"), first, "{file}");
         }
+    }
+    let jacobian = |tip: &str| Request::tip(tip).pose_and_jacobian(JacobianFrame::Local);
+    let first = source("ur5.urdf", &jacobian("tool0"), "tool0");
+    for _ in 0..3 {
+        assert_eq!(source("ur5.urdf", &jacobian("tool0"), "tool0"), first, "ur5 Jacobian");
     }
 }
 
