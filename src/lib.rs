@@ -149,3 +149,9 @@ pub fn load_with(path: impl AsRef<std::path::Path>, exact_angles: ExactAngles) -
     let bytes = std::fs::read(path).map_err(|e| LoadError::new(label.clone(), LoadErrorKind::Io(e)))?;
     kinematics_model::Source::from_bytes(label, kinematics_model::SourceKind::ByExtension, bytes)?.load(exact_angles)
 }
+
+/// Every Rust example in the README, run as a doctest (`cargo test --doc`), so the README's code
+/// stays code that compiles and passes (examples that need a build script are marked `ignore`).
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;

@@ -7,7 +7,7 @@
 mod common;
 
 use kinematics_compiler::{OpCount, Request, compile, plain_product_count};
-use kinematics_model::KinematicTree;
+use kinematics_model::{JacobianFrame, KinematicTree};
 
 /// The end effector: the deepest link (the last leaf of the longest path from the root).
 fn end_effector(tree: &KinematicTree) -> String {
@@ -76,6 +76,58 @@ fn the_readme_quotes_the_pinned_table() {
     assert!(rows.len() >= 10, "{rows:?}");
     for row in rows {
         assert!(table.lines().any(|l| l == row), "README row `{row}` is not what the compiler produces:\n{table}");
+    }
+}
+
+/// The velocity functions of every robot's end effector: the Jacobian (`LOCAL_WORLD_ALIGNED` and
+/// `LOCAL`), the pose with the Jacobian, the twist, and the twist as `J * qd` with `J` formed.
+fn velocity_table() -> String {
+    let mut rows = String::from(
+        "| robot | DoF | tip | pose | Jacobian | LOCAL Jacobian | pose + Jacobian | twist | J formed, times qd |\n|---|---|---|---|---|---|---|---|---|\n",
+    );
+    for file in robots() {
+        let tree = common::robot(&file);
+        let tip = end_effector(&tree);
+        let n = tree.dof();
+        let count = |r: Request| compile(&tree, &r).unwrap().op_count();
+        let pose = count(Request::tip(&tip));
+        let jacobian = count(Request::tip(&tip).jacobian(JacobianFrame::LocalWorldAligned));
+        let local = count(Request::tip(&tip).jacobian(JacobianFrame::Local));
+        let both = count(Request::tip(&tip).pose_and_jacobian(JacobianFrame::LocalWorldAligned));
+        let twist = count(Request::tip(&tip).twist(JacobianFrame::LocalWorldAligned));
+        let formed = OpCount { mul: jacobian.mul + 6 * n, add: jacobian.add + 6 * n.saturating_sub(1), ..jacobian };
+        rows.push_str(&format!(
+            "| {file} | {n} | {tip} | {} | {} | {} | {} | {} | {} |\n",
+            short(pose),
+            short(jacobian),
+            short(local),
+            short(both),
+            short(twist),
+            short(formed)
+        ));
+        // The pair never calls sin_cos more than the pose, and costs less than the two apart.
+        assert!(both.sin_cos <= pose.sin_cos.max(jacobian.sin_cos) + 1, "{file}: {both} vs {pose}, {jacobian}");
+        assert!(both.mul <= pose.mul + jacobian.mul, "{file}: {both} vs {pose} + {jacobian}");
+        // The twist is cheaper than forming J and multiplying.
+        assert!(twist.mul + twist.add < formed.mul + formed.add, "{file}: twist {twist} vs formed {formed}");
+    }
+    rows
+}
+
+/// The velocity op counts are pinned as the pose counts are, and the README quotes them.
+#[test]
+fn velocity_table_of_every_robot() {
+    let table = velocity_table();
+    println!("sin_cos/mul/add of the end effector's velocity functions\n{table}");
+    insta::assert_snapshot!("velocity_op_counts", table);
+    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../README.md")).unwrap();
+    if let Some(section) = readme.split("| robot | DoF | tip | pose | Jacobian |").nth(1) {
+        let rows: Vec<&str> = section.lines().skip(2).take_while(|l| l.starts_with('|')).collect();
+        for row in rows {
+            assert!(table.lines().any(|l| l == row), "README row `{row}` is not what the compiler produces:\n{table}");
+        }
+    } else {
+        panic!("the README has the velocity op-count table");
     }
 }
 
