@@ -222,6 +222,34 @@ fn expr_all_prints_what_each_link_adds() {
     assert!(!run(&["expr", "robots/ur5.urdf", "--all", "--tip", "tool0"]).status.success());
 }
 
+/// `expr --jacobian`: the 6 x DoF entries, the rows and columns named, and the velocity
+/// functions' op counts, for every robot and both frames.
+#[test]
+fn expr_jacobian_prints_every_entry_and_the_velocity_costs() {
+    for file in robots() {
+        let tree = load(&file);
+        for frame in ["local-world-aligned", "local"] {
+            let out = ok(&["expr", &file, "--jacobian", "--frame", frame]);
+            let entries = out.lines().filter(|l| l.starts_with("J[")).count();
+            assert_eq!(entries, 6 * tree.dof(), "{file} {frame}:\n{out}");
+            for what in
+                ["Jacobian of", "pose and Jacobian of", "position Jacobian of", "twist of", "J * qd with J formed"]
+            {
+                assert!(out.contains(what), "{file}: no `{what}` row\n{out}");
+            }
+        }
+    }
+    let ur5 = ok(&["expr", "robots/ur5.urdf", "--tip", "tool0", "--jacobian"]);
+    assert!(ur5.contains("(LOCAL_WORLD_ALIGNED)") && ur5.contains("J[wz][q1] = 1"), "{ur5}");
+    // The last wrist joint turns the tool about its own origin's axis: no linear velocity.
+    assert!(ur5.contains("J[vx][q6] = 0"), "{ur5}");
+    let local = ok(&["expr", "robots/ur5.urdf", "--tip", "tool0", "--jacobian", "--frame", "local", "--latex"]);
+    assert!(local.contains("(LOCAL)") && local.contains("\\begin{aligned}"), "{local}");
+    // `--frame` belongs to `--jacobian`, and a Jacobian is one link's.
+    assert!(!run(&["expr", "robots/ur5.urdf", "--frame", "local"]).status.success());
+    assert!(!run(&["expr", "robots/ur5.urdf", "--all", "--jacobian"]).status.success());
+}
+
 #[test]
 fn generate_prints_what_the_build_api_writes() {
     for file in robots() {
@@ -244,6 +272,18 @@ fn generate_prints_what_the_build_api_writes() {
         .unwrap();
     assert_eq!(out, expected);
     assert!(out.contains("pub struct Flange;") && out.contains("pub fn tip_position_f32(q: &[f32; 6]) -> [f32; 3]"));
+    let velocities = ok(&["generate", "robots/ur5.urdf", "--tip", "tool0", "--jacobians"]);
+    let expected = kinematics_build::Robot::file("robots/ur5.urdf")
+        .manifest_dir(root())
+        .tip("tool0")
+        .jacobians()
+        .generate()
+        .unwrap();
+    assert_eq!(velocities, expected);
+    assert!(velocities.contains("pub fn tip_jacobian(q: &[f64; 6]) -> [[f64; 6]; 6]"), "{velocities}");
+    assert!(velocities.contains("pub fn tip_twist(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6]"), "{velocities}");
+    let no_tip = fails(&["generate", "robots/ur5.urdf", "--jacobians"]);
+    assert!(no_tip.contains("`jacobians` needs a tip"), "{no_tip}");
     let tips = ok(&["generate", "robots/panda.urdf", "--tip", "panda_leftfinger", "--tip", "panda_rightfinger"]);
     assert!(tips.contains("pub fn tip_poses(q: &[f64; 8]) -> [::kinematics::__private::Pose<f64>; 2]"), "{tips}");
 }

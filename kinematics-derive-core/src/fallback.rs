@@ -229,6 +229,7 @@ pub fn stub(input: &syn::DeriveInput, options: Option<&KinematicsInput>, known: 
             velocity.push(("tip_position_jacobian", "tip_position_jacobians", 3));
         }
         for (one, several, rows) in velocity {
+            let rows = proc_macro2::Literal::usize_unsuffixed(rows);
             if names.one_tip {
                 function(one, None, &|t| quote!([[#t; #dof]; #rows]));
             }
