@@ -108,6 +108,72 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
              `kinematics generate {file}` or the build API in your crate, and time it there."
         )?;
     }
+    velocities(args, out, &tree, &file, (&base, &tip), built_in, &inputs)
+}
+
+/// Step 6: the tip's geometric Jacobian, what its functions cost, and for the built-in UR5 its
+/// agreement with the runtime reference and a timing.
+fn velocities(
+    args: &Args,
+    out: &mut dyn Write,
+    tree: &KinematicTree,
+    file: &str,
+    (base, tip): (&str, &str),
+    built_in: bool,
+    inputs: &[Vec<f64>],
+) -> Result<(), CliError> {
+    let frame = kinematics::model::JacobianFrame::LocalWorldAligned;
+    writeln!(
+        out,
+        "\n6. Velocities: the geometric Jacobian of `{tip}` (`kinematics expr --jacobian`; {})\n",
+        frame.name()
+    )?;
+    write!(out, "{}", crate::expr::op_table(&crate::expr::velocity_op_counts(tree, file, base, tip, frame)?))?;
+    if !built_in {
+        return Ok(());
+    }
+    let fk = ReferenceFk::new(tree.clone());
+    let runtime = |source| CliError::Runtime { file: file.to_owned(), source };
+    let arrays: Vec<[f64; Ur5::DOF]> = inputs.iter().filter_map(|q| q.as_slice().try_into().ok()).collect();
+    let n = arrays.len();
+    // Linear rows relative to the reach, angular rows as they are: the agreement tests' measure.
+    let reach = tree.reach().max(f64::MIN_POSITIVE);
+    let mut worst = 0.0f64;
+    for q in arrays.iter().take(args.samples.max(1)) {
+        let generated = Ur5::tip_jacobian(q);
+        let reference = fk.jacobian(q, base, tip).map_err(runtime)?;
+        for (row, entries) in generated.iter().enumerate() {
+            for (col, &value) in entries.iter().enumerate() {
+                let scale = if row < 3 { reach } else { 1.0 };
+                let error = (value - reference[(row, col)]).abs() / scale;
+                // NaN counts as the largest error.
+                worst = if error.is_nan() { f64::INFINITY } else { worst.max(error) };
+            }
+        }
+    }
+    writeln!(
+        out,
+        "\n  Ur5::tip_jacobian against ReferenceFk::jacobian, {} configurations: largest error {worst:.2e}\n  \
+         (linear rows x reach, angular rows as they are)\n",
+        thousands(args.samples.max(1).min(n))
+    )?;
+    out.flush()?;
+    let reference = per_call(args.evaluations / 4, |i| {
+        let _ = black_box(fk.jacobian(black_box(&inputs[i % n]), base, tip));
+    });
+    let jacobian = per_call(args.evaluations, |i| {
+        black_box(Ur5::tip_jacobian(black_box(&arrays[i % n])));
+    });
+    let both = per_call(args.evaluations, |i| {
+        black_box(Ur5::tip_pose_and_jacobian(black_box(&arrays[i % n])));
+    });
+    writeln!(out, "  runtime reference, ReferenceFk::jacobian:    {reference:>9.1} ns per Jacobian")?;
+    writeln!(
+        out,
+        "  generated code, Ur5::tip_jacobian:           {jacobian:>9.1} ns per Jacobian ({:.0}x faster)",
+        reference / jacobian.max(1e-3)
+    )?;
+    writeln!(out, "  generated code, Ur5::tip_pose_and_jacobian:  {both:>9.1} ns per pose and Jacobian")?;
     Ok(())
 }
 

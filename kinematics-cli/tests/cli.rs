@@ -362,9 +362,14 @@ fn graph_draws_every_link_and_joint() {
 fn demo_walks_through_the_pipeline() {
     let out = ok(&["demo", "--samples", "300", "--evaluations", "300"]);
     assert!(out.starts_with("kinematics demo: robots/ur5.urdf, the pose of `tool0` (the deepest link) in `base_link`"));
-    for section in ["\n1. ", "\n2. ", "\n3. ", "\n4. ", "\n5. "] {
+    for section in ["\n1. ", "\n2. ", "\n3. ", "\n4. ", "\n5. ", "\n6. "] {
         assert!(out.contains(section), "no section `{section}` in\n{out}");
     }
+    // The generated Jacobian's agreement is measured, and within the agreement tolerance.
+    let jacobian = out.lines().find(|l| l.contains("Ur5::tip_jacobian against ReferenceFk::jacobian")).unwrap();
+    let error: f64 = jacobian.rsplit(' ').next().unwrap().parse().unwrap();
+    assert!(error <= 1e-12, "{jacobian}");
+    assert!(out.contains("generated code, Ur5::tip_jacobian:") && out.contains("J * qd with J formed"), "{out}");
     assert!(out.contains("pose of tool0, plain product"), "{out}");
     assert!(out.contains("generated Rust in this binary (Ur5):     largest error"), "{out}");
     assert!(out.contains("generated code, Ur5::tip_pose:") && out.contains("x faster"), "{out}");
@@ -372,6 +377,7 @@ fn demo_walks_through_the_pipeline() {
     assert!(other.contains("runtime reference, ReferenceFk::link_pose:"), "{other}");
     assert!(other.contains("generated code: not timed."), "{other}");
     assert!(!other.contains("generated Rust in this binary"), "{other}");
+    assert!(other.contains("\n6. ") && !other.contains("Ur5::tip_jacobian"), "{other}");
 }
 
 #[test]
