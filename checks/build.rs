@@ -139,6 +139,7 @@ fn write_random_robots(out: &Path) -> Result<(), Box<dyn std::error::Error>> {
             tips: robot.tips.clone(),
             positions: robot.positions,
             jacobians: false,
+            floating_base: None,
             scalars: Scalars { f64: robot.f64, f32: robot.f32 },
             krate: "::kinematics".parse()?,
             trig: if trig == "Std" {

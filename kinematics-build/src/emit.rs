@@ -29,6 +29,8 @@ pub(crate) struct Emit<'a> {
     pub positions: bool,
     /// Velocity functions of the tips.
     pub jacobians: bool,
+    /// The free-flying root's link, if any.
+    pub floating_base: Option<String>,
     /// `_f32` functions too.
     pub f32: bool,
     /// Path of the `kinematics` crate.
@@ -52,6 +54,7 @@ pub(crate) fn emit_source(emit: &Emit<'_>) -> Result<String, BuildError> {
         tips: emit.tips.clone(),
         positions: emit.positions,
         jacobians: emit.jacobians,
+        floating_base: emit.floating_base.clone(),
         scalars: Scalars { f64: true, f32: emit.f32 },
         krate: quote!(#krate),
         trig: emit.trig,

@@ -27,6 +27,18 @@ pub enum BuildError {
         /// The closest link name, when it looks like a typo.
         suggestion: Option<String>,
     },
+    /// A free-flying root whose link or joint name the description already has.
+    #[error(
+        "{file}: `floating_base` adds a root link `{link}` and a floating joint `root_joint`, but the description already has a {clash} (give the new root link another name)"
+    )]
+    FloatingBaseClash {
+        /// The description file.
+        file: String,
+        /// The new root link asked for.
+        link: String,
+        /// What clashes (`link `world``).
+        clash: String,
+    },
     /// `jacobians` asked for with no tip.
     #[error("{file}: `jacobians` needs a tip: the Jacobians are the tips' (call `.tip(\"link\")`)")]
     JacobiansWithoutTip {

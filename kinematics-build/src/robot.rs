@@ -3,7 +3,7 @@
 use std::path::{Path, PathBuf};
 
 use kinematics_compiler::emit::Trig;
-use kinematics_model::{ExactAngles, SourceKind};
+use kinematics_model::{ExactAngles, FLOATING_BASE_JOINT, SourceKind};
 
 use crate::emit::{Emit, default_struct_name, emit_source};
 use crate::error::BuildError;
@@ -21,6 +21,7 @@ use crate::write::write_atomic;
 /// | `tip = "link"` / `tips(..)` | [`Robot::tip`] (once per tip) / [`Robot::tips`] |
 /// | `positions` | [`Robot::positions`] |
 /// | `jacobians` | [`Robot::jacobians`] |
+/// | `floating_base` / `floating_base = "link"` | [`Robot::floating_base`] |
 /// | `scalars(f64, f32)` | [`Robot::f32`] |
 /// | `crate = "path"` | [`Robot::crate_path`] |
 /// | `exact_angles = false` | [`Robot::exact_angles`] |
@@ -39,6 +40,7 @@ pub struct Robot {
     tips: Vec<String>,
     positions: bool,
     jacobians: bool,
+    floating_base: Option<String>,
     f32: bool,
     struct_name: Option<String>,
     crate_path: String,
@@ -56,6 +58,7 @@ impl Robot {
             tips: Vec::new(),
             positions: false,
             jacobians: false,
+            floating_base: None,
             f32: false,
             struct_name: None,
             crate_path: "::kinematics".to_owned(),
@@ -119,6 +122,14 @@ impl Robot {
     /// [`Robot::positions`] `tip_position_jacobian`). Needs a tip.
     pub fn jacobians(mut self) -> Self {
         self.jacobians = true;
+        self
+    }
+
+    /// A free-flying root: the description's root joined to a new root link `link` (`"world"` for
+    /// the derive's bare `floating_base`) by a floating joint `root_joint`, whose seven entries
+    /// start `q` (position, then quaternion `qx, qy, qz, qw`), as legged robots are modelled.
+    pub fn floating_base(mut self, link: &str) -> Self {
+        self.floating_base = Some(link.to_owned());
         self
     }
 
@@ -191,6 +202,7 @@ impl Robot {
             tips: self.tips.clone(),
             positions: self.positions,
             jacobians: self.jacobians,
+            floating_base: self.floating_base.clone(),
             f32: self.f32,
             crate_path: &self.crate_path,
             trig: self.trig,
@@ -199,7 +211,19 @@ impl Robot {
 
     /// Reads and validates the description with this builder's format and exactness policy.
     pub(crate) fn load(&self) -> Result<Loaded, BuildError> {
-        Ok(load(&self.label(), self.source_path(), self.kind, ExactAngles::on(self.exact_angles))?)
+        let (label, path, policy) = (self.label(), self.source_path(), ExactAngles::on(self.exact_angles));
+        if let Some(link) = &self.floating_base {
+            // The new root link and joint must be new names.
+            let plain = load(&label, path.clone(), self.kind, policy, None)?;
+            let clash =
+                plain.tree.link_id(link).map(|_| format!("link `{link}`")).or_else(|| {
+                    plain.tree.joint_id(FLOATING_BASE_JOINT).map(|_| format!("joint `{FLOATING_BASE_JOINT}`"))
+                });
+            if let Some(clash) = clash {
+                return Err(BuildError::FloatingBaseClash { file: label, link: link.clone(), clash });
+            }
+        }
+        Ok(load(&label, path, self.kind, policy, self.floating_base.as_deref())?)
     }
 
     /// Generates and writes the code to `path` atomically (nothing half-written is left behind on

@@ -31,16 +31,18 @@ pub(crate) fn resolve(path: &Path, dir: Option<&Path>) -> PathBuf {
     std::fs::canonicalize(&joined).unwrap_or_else(|_| std::path::absolute(&joined).unwrap_or(joined))
 }
 
-/// Reads the description at `absolute` and loads it with `exact_angles`; `label` names it in
+/// Reads the description at `absolute` and loads it with `exact_angles` (and a free-flying root
+/// named `floating_base`, if given); `label` names it in
 /// errors and, with `kind`, picks the format.
 pub(crate) fn load(
     label: &str,
     absolute: PathBuf,
     kind: SourceKind,
     exact_angles: ExactAngles,
+    floating_base: Option<&str>,
 ) -> Result<Loaded, LoadError> {
     let bytes = std::fs::read(&absolute).map_err(|e| LoadError::new(label, LoadErrorKind::Io(e)))?;
     let source = Source::from_bytes(label, kind, bytes)?;
-    let tree = source.load(exact_angles)?;
+    let tree = source.load_with_floating_base(exact_angles, floating_base)?;
     Ok(Loaded { tree, label: label.to_owned(), reference_label: source.file_name(), text: source.text })
 }

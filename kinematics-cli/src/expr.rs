@@ -117,7 +117,7 @@ pub fn pose_text(tree: &KinematicTree, file: &str, base: &str, tip: &str, latex:
     // Shared subexpressions too long to repeat are printed once, as temporaries `t1, t2, ...`, so
     // the text stays linear in the size of the expression graph.
     let g = pose.graph();
-    let names = kinematics_compiler::emit::Names::new(g, &pose.outputs());
+    let names = kinematics_compiler::emit::Names::new(g, &pose.outputs()).with_sizes(pose.dof(), pose.velocity_dof());
     let outputs = pose.frame_outputs(0);
     if latex {
         let listing = kinematics_compiler::emit::latex_listing(g, &names, &outputs);
@@ -174,7 +174,8 @@ pub fn jacobian_text(
     }
     out += "\n";
     let g = jacobian.graph();
-    let names = kinematics_compiler::emit::Names::new(g, &jacobian.outputs());
+    let names = kinematics_compiler::emit::Names::new(g, &jacobian.outputs())
+        .with_sizes(jacobian.dof(), jacobian.velocity_dof());
     let outputs = jacobian.frame_outputs(0);
     let n = jacobian.dof();
     let rows = ["vx", "vy", "vz", "wx", "wy", "wz"];

@@ -160,6 +160,11 @@ pub struct Compiled {
     pub base: String,
     /// Joint names in degree-of-freedom order (the entries of `q`).
     pub dof_names: Vec<String>,
+    /// Velocity names (a Jacobian's columns, the entries of `qd`) in order.
+    pub velocity_names: Vec<String>,
+    /// Where each floating joint's quaternion starts in `q`, in tree order: the generated code
+    /// turns each into its rotation's nine variables (after `q` and `qd`) first.
+    pub floating_quaternions: Vec<usize>,
     /// Whether only positions are outputs (and, with a velocity, its linear rows).
     pub position_only: bool,
     /// The velocity computed, if any.
@@ -231,7 +236,15 @@ pub fn compile(tree: &KinematicTree, request: &Request) -> Result<Compiled, Comp
     Ok(Compiled {
         robot: tree.name().to_owned(),
         base: base_name,
-        dof_names: tree.dof_names().into_iter().map(str::to_owned).collect(),
+        dof_names: tree.dof_names(),
+        velocity_names: tree.velocity_names(),
+        floating_quaternions: tree
+            .floating_joints()
+            .filter_map(|j| match tree.joint(j).motion {
+                kinematics_model::JointMotion::Dof(start) => Some(start + 3),
+                _ => None,
+            })
+            .collect(),
         position_only: request.position_only,
         velocity: request.velocity,
         all_links: request.tips.is_empty(),
@@ -320,6 +333,8 @@ fn fold_tips(
     let mut frames = Vec::with_capacity(tips.len());
     let mut velocities = Vec::with_capacity(tips.len());
     let dof = tree.dof();
+    let columns = tree.velocity_of_entry();
+    let columns_count = tree.velocity_dof();
     for &tip in tips {
         let steps = path_steps(g, tree, base, tip);
         let steps = simplify_with(g, steps, options);
@@ -327,10 +342,10 @@ fn fold_tips(
         // Base axes: fold the chain from the base out. The tip's axes: fold the inverted chain
         // from the tip, so each joint's axis and origin come out in the tip's axes.
         let differential = request.velocity.map(|velocity| match velocity.frame {
-            JacobianFrame::LocalWorldAligned => Differential::fold(g, identity, &steps),
+            JacobianFrame::LocalWorldAligned => Differential::fold(g, identity, &steps, &columns),
             JacobianFrame::Local => {
                 let inverted = invert(g, &steps);
-                Differential::fold(g, identity, &inverted)
+                Differential::fold(g, identity, &inverted, &columns)
             }
         });
         let transform = match (order, &differential) {
@@ -350,10 +365,10 @@ fn fold_tips(
         let velocity =
             request.velocity.zip(differential).map(|(velocity, differential)| match (velocity.form, velocity.frame) {
                 (VelocityForm::Jacobian, JacobianFrame::LocalWorldAligned) => {
-                    FrameVelocity::Jacobian(differential.jacobian(g, transform.p, dof))
+                    FrameVelocity::Jacobian(differential.jacobian(g, transform.p, columns_count))
                 }
                 (VelocityForm::Jacobian, JacobianFrame::Local) => {
-                    FrameVelocity::Jacobian(differential.local_jacobian(g, dof))
+                    FrameVelocity::Jacobian(differential.local_jacobian(g, columns_count))
                 }
                 (VelocityForm::Twist, JacobianFrame::LocalWorldAligned) => {
                     FrameVelocity::Twist(differential.twist(g, transform.p, dof))
@@ -495,6 +510,40 @@ impl Compiled {
         self.dof_names.len()
     }
 
+    /// Number of velocities: a Jacobian's columns, the length of `qd`.
+    pub fn velocity_dof(&self) -> usize {
+        self.velocity_names.len()
+    }
+
+    /// Every variable of the graph from the joint positions and, when given, the rates after them:
+    /// `q`, `qd` (zeros when not given), and each floating joint's rotation (its quaternion
+    /// normalised, row-major), as the generated code computes them.
+    ///
+    /// # Panics
+    ///
+    /// If `values` has fewer than [`Compiled::dof`] values.
+    pub fn variables(&self, values: &[f64]) -> Vec<f64> {
+        let (n, nv) = (self.dof(), self.velocity_dof());
+        let mut vars: Vec<f64> = values[..n].to_vec();
+        vars.extend((0..nv).map(|i| values.get(n + i).copied().unwrap_or(0.0)));
+        for &start in &self.floating_quaternions {
+            let [x, y, z, w] = [values[start], values[start + 1], values[start + 2], values[start + 3]];
+            let s = 2.0 / (x * x + y * y + z * z + w * w);
+            vars.extend([
+                1.0 - s * (y * y + z * z),
+                s * (x * y - z * w),
+                s * (x * z + y * w),
+                s * (x * y + z * w),
+                1.0 - s * (x * x + z * z),
+                s * (y * z - x * w),
+                s * (x * z - y * w),
+                s * (y * z + x * w),
+                1.0 - s * (x * x + y * y),
+            ]);
+        }
+        vars
+    }
+
     /// Whether the poses (or positions) are outputs.
     pub fn has_pose(&self) -> bool {
         self.velocity.is_none_or(|v| v.with_pose)
@@ -515,6 +564,7 @@ impl Compiled {
     ///
     /// If `q` has fewer values than the outputs need.
     pub fn eval_outputs(&self, q: &[f64]) -> Vec<Vec<f64>> {
+        let q = &self.variables(q);
         let mut values = Vec::new();
         (0..self.frames.len())
             .map(|i| self.frame_outputs(i).into_iter().map(|id| self.graph.eval(id, q, &mut values)).collect())
@@ -550,6 +600,7 @@ impl Compiled {
     ///
     /// If `q` has fewer than [`Compiled::dof`] values.
     pub fn eval(&self, q: &[f64]) -> Vec<[f64; 12]> {
+        let q = &self.variables(q);
         let mut values = Vec::new();
         self.frames.iter().map(|f| f.transform.entries().map(|id| self.graph.eval(id, q, &mut values))).collect()
     }
@@ -560,14 +611,14 @@ impl Compiled {
     /// chain grows exponentially with its length. For large robots use [`crate::emit::text_listing`],
     /// which prints shared subexpressions once as temporaries (what `kinematics expr` prints).
     pub fn frame_text(&self, index: usize) -> Vec<String> {
-        let names = crate::emit::Names::new(&self.graph, &self.outputs());
+        let names = crate::emit::Names::new(&self.graph, &self.outputs()).with_sizes(self.dof(), self.velocity_dof());
         self.frames[index].transform.entries().iter().map(|&id| crate::emit::text(&self.graph, &names, id)).collect()
     }
 
     /// The 12 pose entries of frame `index` as LaTeX, written out in full as [`Compiled::frame_text`]
     /// (see its cost; [`crate::emit::latex_listing`] is linear).
     pub fn frame_latex(&self, index: usize) -> Vec<String> {
-        let names = crate::emit::Names::new(&self.graph, &self.outputs());
+        let names = crate::emit::Names::new(&self.graph, &self.outputs()).with_sizes(self.dof(), self.velocity_dof());
         self.frames[index].transform.entries().iter().map(|&id| crate::emit::latex(&self.graph, &names, id)).collect()
     }
 }

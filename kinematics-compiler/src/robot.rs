@@ -58,6 +58,9 @@ pub struct RobotSpec<'a> {
     pub source_label: String,
     /// An expression of type `&'static str` holding the description's text (e.g. `include_str!`).
     pub source_text: TokenStream,
+    /// The root link [`kinematics_model::Description::with_floating_base`] added, when the tree was
+    /// loaded with a free-flying root (`reference()` loads it the same way).
+    pub floating_base: Option<String>,
     /// The generic parameters of the impls, with their bounds (`<'a, T: Clone, const N: usize>`,
     /// syn's `impl_generics`); empty for a type without generics. `self_ty` carries the arguments.
     pub impl_generics: TokenStream,
@@ -88,9 +91,11 @@ pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenSt
         compile(tree, &Request { base: Some(base.clone()), tips: Vec::new(), position_only: false, velocity: None })?;
     let n = tree.dof();
     let n_lit = Literal::usize_unsuffixed(n);
+    let nv_lit = Literal::usize_unsuffixed(tree.velocity_dof());
+    let velocity_names = tree.velocity_names();
     let link_names: Vec<String> = all.frames().iter().map(|f| f.link.clone()).collect();
     let m_lit = Literal::usize_unsuffixed(link_names.len());
-    let joint_names: Vec<String> = tree.dof_names().into_iter().map(str::to_owned).collect();
+    let joint_names: Vec<String> = tree.dof_names();
     let limits: Vec<TokenStream> = tree
         .dof_limits()
         .iter()
@@ -225,7 +230,7 @@ pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenSt
             let (tips_word, of) = ("tip", if one { format!("`{}`", tips[0]) } else { tips.join(", ") });
             let j_ty = |t: &TokenStream, rows: usize| {
                 let rows = Literal::usize_unsuffixed(rows);
-                if one { quote!([[#t; #n_lit]; #rows]) } else { quote!([[[#t; #n_lit]; #rows]; #k_lit]) }
+                if one { quote!([[#t; #nv_lit]; #rows]) } else { quote!([[[#t; #nv_lit]; #rows]; #k_lit]) }
             };
             let frames = [
                 (JacobianFrame::LocalWorldAligned, "", "in `{base}`'s axes"),
@@ -255,7 +260,7 @@ pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenSt
                 name,
                 "generic_pose_and_jacobian",
                 &|t| {
-                    let pair = quote!((#p::Pose<#t>, [[#t; #n_lit]; 6]));
+                    let pair = quote!((#p::Pose<#t>, [[#t; #nv_lit]; 6]));
                     if one { pair } else { quote!([#pair; #k_lit]) }
                 },
                 format!("Pose and geometric Jacobian (`LOCAL_WORLD_ALIGNED`) of {of} in `{base}`, computed together"),
@@ -294,7 +299,7 @@ pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenSt
                     typed.push(quote! {
                         #[doc = #one_doc]
                         #[inline]
-                        pub fn #f(q: &[#t; #n_lit], qd: &[#t; #n_lit]) -> #r { #g(q, qd) }
+                        pub fn #f(q: &[#t; #n_lit], qd: &[#t; #nv_lit]) -> #r { #g(q, qd) }
                     });
                 }
                 let f = format_ident!("{name}_generic");
@@ -303,7 +308,7 @@ pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenSt
                 typed.push(quote! {
                     #[doc = #doc]
                     #[inline]
-                    pub fn #f<#scalar: #bound>(q: &[#scalar; #n_lit], qd: &[#scalar; #n_lit]) -> #r { #g(q, qd) }
+                    pub fn #f<#scalar: #bound>(q: &[#scalar; #n_lit], qd: &[#scalar; #nv_lit]) -> #r { #g(q, qd) }
                 });
             }
         }
@@ -313,9 +318,14 @@ pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenSt
     let label = &spec.source_label;
     let text = &spec.source_text;
     let (jn, ln, tn) = (strs(&joint_names), strs(&link_names), strs(&tips));
+    let vn = strs(&velocity_names);
     // `reference()` loads the description with the tree's own exactness policy, so the reference
     // is the robot the code was compiled from.
     let policy = policy_tokens(&p, tree.exact_angles());
+    let load = match &spec.floating_base {
+        None => quote!(#p::parse_source_with(#label, #text, #policy)),
+        Some(link) => quote!(#p::parse_source_floating(#label, #text, #policy, #link)),
+    };
     let (impl_generics, where_clause) = (&spec.impl_generics, &spec.where_clause);
     Ok(quote! {
         const _: () = {
@@ -329,8 +339,15 @@ pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenSt
             pub const BASE: &'static str = #base;
             /// Degrees of freedom: the length of `q`.
             pub const DOF: usize = #n_lit;
-            /// Joint names, in the order of `q`.
+            /// Joint names, in the order of `q` (a planar joint's three entries and a floating
+            /// joint's seven are named after it: `.x`, `.y`, `.theta`; `.x`, `.y`, `.z`, `.qx`,
+            /// `.qy`, `.qz`, `.qw`).
             pub const JOINT_NAMES: [&'static str; #n_lit] = #jn;
+            /// Velocities: a Jacobian's columns and the length of `qd` (`DOF` less one per
+            /// floating joint, whose six velocities are its child's in its own axes).
+            pub const VELOCITY_DOF: usize = #nv_lit;
+            /// Velocity names, in the order of a Jacobian's columns.
+            pub const VELOCITY_NAMES: [&'static str; #nv_lit] = #vn;
             /// Position limits, in the order of `q` (infinite for continuous joints).
             pub const JOINT_LIMITS: [#p::JointLimits; #n_lit] = [#(#limits),*];
             /// The links `link_poses` returns, in order.
@@ -343,7 +360,7 @@ pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenSt
             #p::with_std! {
                 /// The runtime reference model of this robot, built from the same description.
                 pub fn reference() -> ::core::result::Result<#p::ReferenceFk, #p::LoadError> {
-                    #p::parse_source_with(#label, #text, #policy).map(#p::ReferenceFk::new)
+                    #load.map(#p::ReferenceFk::new)
                 }
             }
         }

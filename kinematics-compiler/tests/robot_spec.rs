@@ -21,6 +21,7 @@ fn spec(tree: &KinematicTree) -> RobotSpec<'_> {
         tips: vec!["tool".to_owned()],
         positions: false,
         jacobians: false,
+        floating_base: None,
         scalars: Scalars::default(),
         krate: quote!(::kinematics),
         trig: kinematics_compiler::emit::Trig::Fast,

@@ -198,3 +198,140 @@ fn print_counts() {
         );
     }
 }
+
+/// A tree with a floating root (the quadruped's trunk made free-flying) and a planar joint, the
+/// Jacobian's columns checked by central differences along each velocity: a floating joint's
+/// linear velocities move its child along the child's own axes, its angular ones turn the child
+/// about them (the quaternion times `exp(h e_k / 2)` on the right); the others as before.
+#[test]
+fn floating_and_planar_joints_against_differences() {
+    let planar = r#"<robot name="planar_base">
+      <link name="ground"/><link name="cart"/><link name="arm"/><link name="hand"/>
+      <joint name="slide" type="planar"><parent link="ground"/><child link="cart"/>
+        <origin xyz="0.1 0.2 0.3" rpy="0.3 -0.2 0.1"/><axis xyz="0.2 0.3 0.9"/></joint>
+      <joint name="shoulder" type="revolute"><parent link="cart"/><child link="arm"/>
+        <origin xyz="0 0 0.5"/><axis xyz="0 1 0"/><limit lower="-2" upper="2" effort="1" velocity="1"/></joint>
+      <joint name="elbow" type="revolute"><parent link="arm"/><child link="hand"/>
+        <origin xyz="0.4 0 0"/><axis xyz="0 0 1"/><limit lower="-2" upper="2" effort="1" velocity="1"/><mimic joint="shoulder" multiplier="-1.5"/></joint>
+    </robot>"#;
+    let quadruped = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../robots/quadruped.urdf")).unwrap();
+    let floating = kinematics_model::urdf::parse_urdf(&quadruped).unwrap().with_floating_base("world");
+    let trees = [
+        kinematics_model::parse_source("planar_base.urdf", planar).unwrap(),
+        KinematicTree::from_description(&floating).unwrap(),
+    ];
+    assert_eq!((trees[0].dof(), trees[0].velocity_dof()), (4, 4));
+    assert_eq!((trees[1].dof(), trees[1].velocity_dof()), (19, 18));
+    let mut checked = 0;
+    for tree in &trees {
+        let (n, nv) = (tree.dof(), tree.velocity_dof());
+        let reach = tree.reach().max(1.0);
+        let leaves: Vec<LinkId> = tree.leaves().collect();
+        for &tip in &leaves {
+            let tip_name = tree.link(tip).name.clone();
+            for base in bases(tree, tip) {
+                for frame in JacobianFrame::ALL {
+                    let what = format!("{}: `{tip_name}` in `{base}` ({})", tree.name(), frame.name());
+                    let pose = compile(tree, &Request::tip(&tip_name).with_base(&base)).unwrap();
+                    let jacobian = compile(tree, &Request::tip(&tip_name).with_base(&base).jacobian(frame)).unwrap();
+                    let twist = compile(tree, &Request::tip(&tip_name).with_base(&base).twist(frame)).unwrap();
+                    for mut q in configurations(n, 3) {
+                        // A quaternion of any length: the rotation is its normalisation's.
+                        for j in tree.floating_joints() {
+                            if let kinematics_model::JointMotion::Dof(start) = tree.joint(j).motion {
+                                q[start + 6] += 2.5;
+                            }
+                        }
+                        let p = outputs(&pose, &q);
+                        let j = outputs(&jacobian, &q);
+                        assert_eq!(j.len(), 6 * nv, "{what}");
+                        let h = 1e-5;
+                        for v in 0..nv {
+                            let (pp, pm) =
+                                (outputs(&pose, &retract(tree, &q, v, h)), outputs(&pose, &retract(tree, &q, v, -h)));
+                            let d: Vec<f64> = (0..12).map(|k| (pp[k] - pm[k]) / (2.0 * h)).collect();
+                            let r = |a: usize, b: usize| p[3 * a + b];
+                            let m = |a: usize, b: usize| (0..3).map(|k| d[3 * a + k] * r(b, k)).sum::<f64>();
+                            let w = [(m(2, 1) - m(1, 2)) / 2.0, (m(0, 2) - m(2, 0)) / 2.0, (m(1, 0) - m(0, 1)) / 2.0];
+                            let mut expected = [d[9], d[10], d[11], w[0], w[1], w[2]];
+                            if frame == JacobianFrame::Local {
+                                // Both 3-vectors in the tip's axes.
+                                for block in [0, 3] {
+                                    let u = [expected[block], expected[block + 1], expected[block + 2]];
+                                    for a in 0..3 {
+                                        expected[block + a] = (0..3).map(|k| r(k, a) * u[k]).sum();
+                                    }
+                                }
+                            }
+                            for row in 0..6 {
+                                let got = j[row * nv + v];
+                                let scale = if row < 3 { reach * 10.0 } else { 1.0 };
+                                assert!(
+                                    (got - expected[row]).abs() < 1e-6 * scale,
+                                    "{what}: J[{row}][{v}] {got} vs {}",
+                                    expected[row]
+                                );
+                            }
+                        }
+                        let qd = configurations(nv, 7).pop().unwrap();
+                        let with_rates: Vec<f64> = q.iter().chain(&qd).copied().collect();
+                        let t = outputs(&twist, &with_rates);
+                        let jqd: Vec<f64> = (0..6).map(|row| (0..nv).map(|i| j[row * nv + i] * qd[i]).sum()).collect();
+                        assert!(max_diff(&t, &jqd) < 1e-10 * reach, "{what}: twist");
+                        checked += 1;
+                    }
+                }
+            }
+        }
+    }
+    assert!(checked > 100, "{checked}");
+}
+
+/// `q` moved by `h` along velocity `v`: a floating joint's linear velocities along its child's
+/// axes, its angular ones about them (right multiplication of the quaternion); any other velocity
+/// is its entry of `q`.
+fn retract(tree: &KinematicTree, q: &[f64], v: usize, h: f64) -> Vec<f64> {
+    let mut q = q.to_vec();
+    let of_entry = tree.velocity_of_entry();
+    if let Some(entry) = of_entry.iter().position(|&c| c == Some(v)) {
+        q[entry] += h;
+        return q;
+    }
+    for joint in tree.floating_joints() {
+        let (Some(start), kinematics_model::JointMotion::Dof(s)) =
+            (tree.velocity_start(joint), tree.joint(joint).motion)
+        else {
+            continue;
+        };
+        if !(start..start + 6).contains(&v) {
+            continue;
+        }
+        let [x, y, z, w] = [q[s + 3], q[s + 4], q[s + 5], q[s + 6]];
+        let norm = (x * x + y * y + z * z + w * w).sqrt();
+        let (x, y, z, w) = (x / norm, y / norm, z / norm, w / norm);
+        let k = v - start;
+        if k < 3 {
+            // The child's axis k in the parent frame: column k of the rotation.
+            let r = [
+                [1.0 - 2.0 * (y * y + z * z), 2.0 * (x * y - z * w), 2.0 * (x * z + y * w)],
+                [2.0 * (x * y + z * w), 1.0 - 2.0 * (x * x + z * z), 2.0 * (y * z - x * w)],
+                [2.0 * (x * z - y * w), 2.0 * (y * z + x * w), 1.0 - 2.0 * (x * x + y * y)],
+            ];
+            for a in 0..3 {
+                q[s + a] += h * r[a][k];
+            }
+        } else {
+            // quaternion * (cos(h/2), sin(h/2) e_k), Hamilton product, (x, y, z, w) order.
+            let (c, sn) = ((h / 2.0).cos(), (h / 2.0).sin());
+            let mut e = [0.0; 3];
+            e[k - 3] = sn;
+            let (bx, by, bz, bw) = (e[0], e[1], e[2], c);
+            q[s + 3] = w * bx + x * bw + y * bz - z * by;
+            q[s + 4] = w * by - x * bz + y * bw + z * bx;
+            q[s + 5] = w * bz + x * by - y * bx + z * bw;
+            q[s + 6] = w * bw - x * bx - y * by - z * bz;
+        }
+        return q;
+    }
+    unreachable!("velocity {v} belongs to no joint")
+}

@@ -22,7 +22,7 @@
 //! }
 //! ```
 
-use core::ops::{Add, Mul, Neg, Sub};
+use core::ops::{Add, Div, Mul, Neg, Sub};
 
 use crate::pose::Pose;
 use crate::real::Real;
@@ -159,6 +159,18 @@ macro_rules! lane_type {
                 let mut out = self.0;
                 for i in 0..$lanes {
                     out[i] *= rhs.0[i];
+                }
+                $name(out)
+            }
+        }
+
+        impl Div for $name {
+            type Output = Self;
+            #[inline(always)]
+            fn div(self, rhs: Self) -> Self {
+                let mut out = self.0;
+                for i in 0..$lanes {
+                    out[i] /= rhs.0[i];
                 }
                 $name(out)
             }

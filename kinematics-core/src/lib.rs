@@ -18,6 +18,7 @@ extern crate std;
 
 mod batch;
 mod error;
+mod floating;
 mod kinematics;
 mod lanes;
 #[cfg(feature = "nalgebra")]
@@ -28,6 +29,7 @@ pub mod trig;
 
 pub use batch::batch;
 pub use error::KinematicsError;
+pub use floating::quaternion_matrix;
 pub use kinematics::{JointLimits, Kinematics, check_output, q_array};
 pub use lanes::{F32x8, F64x4, LaneValue, Lanes};
 pub use pose::{AGREEMENT_TOLERANCE, AGREEMENT_TOLERANCE_F32, Pose};

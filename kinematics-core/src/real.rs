@@ -2,15 +2,16 @@
 //!
 //! Generated functions are generic over [`Real`], so one body serves `f64`, `f32`, the SIMD lane
 //! types ([`F64x4`](crate::F64x4), [`F32x8`](crate::F32x8)) and any number type a user brings
-//! (dual numbers for derivatives, intervals). It asks only what the code uses: `+ - *`, negation,
-//! constants and sines and cosines. No ordering, no `'static`, no conversion back to `f64`: a
+//! (dual numbers for derivatives, intervals). It asks only what the code uses: `+ - * /`,
+//! negation, constants and sines and cosines (division only normalises a floating joint's
+//! quaternion). No ordering, no `'static`, no conversion back to `f64`: a
 //! packed lane type cannot honestly give those.
 
-use core::ops::{Add, Mul, Neg, Sub};
+use core::ops::{Add, Div, Mul, Neg, Sub};
 
 use crate::trig;
 
-/// The arithmetic generated forward kinematics needs: `+ - *`, negation, constants and `sin_cos`.
+/// The arithmetic generated forward kinematics needs: `+ - * /`, negation, constants and `sin_cos`.
 ///
 /// ```
 /// use kinematics_core::Real;
@@ -21,7 +22,9 @@ use crate::trig;
 /// let (sines, cosines) = f64::sin_cos_many([0.0, 0.5]);
 /// assert_eq!((sines[1], cosines[1]), (s, c));
 /// ```
-pub trait Real: Copy + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> + Neg<Output = Self> {
+pub trait Real:
+    Copy + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> + Div<Output = Self> + Neg<Output = Self>
+{
     /// A constant of the robot (rounded to nearest for `f32`).
     fn from_f64(x: f64) -> Self;
 

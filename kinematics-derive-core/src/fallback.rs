@@ -140,6 +140,8 @@ fn crate_path(input: &syn::DeriveInput, options: Option<&KinematicsInput>) -> To
 pub struct Known {
     /// Degrees of freedom.
     pub dof: usize,
+    /// Velocities (a Jacobian's columns).
+    pub velocities: usize,
     /// Links but the base (whatever the base: every link but one).
     pub links: usize,
 }
@@ -168,6 +170,9 @@ pub fn stub(input: &syn::DeriveInput, options: Option<&KinematicsInput>, known: 
         None => (param.clone(), Some(quote!(const #param: usize))),
     };
     let (dof, dof_param) = length(known.map(|k| k.dof), &quote!(__KINEMATICS_DOF));
+    // Unknown, the velocities are taken to be as many as `q`'s entries (no floating joint), so a
+    // call fixes both.
+    let (nv, _) = length(known.map(|k| k.velocities), &dof);
     let (links, links_param) = length(known.map(|k| k.links), &quote!(__KINEMATICS_FRAMES));
     let (tips, tips_param) = length(names.tips, &quote!(__KINEMATICS_FRAMES));
     let mut functions = Vec::new();
@@ -231,13 +236,13 @@ pub fn stub(input: &syn::DeriveInput, options: Option<&KinematicsInput>, known: 
         for (one, several, rows) in velocity {
             let rows = proc_macro2::Literal::usize_unsuffixed(rows);
             if names.one_tip {
-                function(one, None, &|t| quote!([[#t; #dof]; #rows]));
+                function(one, None, &|t| quote!([[#t; #nv]; #rows]));
             }
             if names.several_tips {
-                function(several, Some(&tips_param), &|t| quote!([[[#t; #dof]; #rows]; #tips]));
+                function(several, Some(&tips_param), &|t| quote!([[[#t; #nv]; #rows]; #tips]));
             }
         }
-        let pair = |t: &TokenStream| quote!((#p::Pose<#t>, [[#t; #dof]; 6]));
+        let pair = |t: &TokenStream| quote!((#p::Pose<#t>, [[#t; #nv]; 6]));
         if names.one_tip {
             function("tip_pose_and_jacobian", None, &pair);
         }
@@ -266,7 +271,7 @@ pub fn stub(input: &syn::DeriveInput, options: Option<&KinematicsInput>, known: 
                 let r = ret(t);
                 functions.push(quote! {
                     #attrs
-                    pub fn #f<#(#params),*>(q: &[#t; #dof], qd: &[#t; #dof]) -> #r {
+                    pub fn #f<#(#params),*>(q: &[#t; #dof], qd: &[#t; #nv]) -> #r {
                         ::core::unreachable!(#message)
                     }
                 });
@@ -276,13 +281,14 @@ pub fn stub(input: &syn::DeriveInput, options: Option<&KinematicsInput>, known: 
             let r = ret(&scalar);
             functions.push(quote! {
                 #attrs
-                pub fn #f<#scalar: #p::Real, #(#params),*>(q: &[#scalar; #dof], qd: &[#scalar; #dof]) -> #r {
+                pub fn #f<#scalar: #p::Real, #(#params),*>(q: &[#scalar; #dof], qd: &[#scalar; #nv]) -> #r {
                     ::core::unreachable!(#message)
                 }
             });
         }
     }
     let dof_const = known.map_or(0, |k| k.dof);
+    let velocity_const = known.map_or(0, |k| k.velocities);
     let load_error = quote! {
         ::core::result::Result::Err(#p::LoadError::new(
             "",
@@ -299,6 +305,8 @@ pub fn stub(input: &syn::DeriveInput, options: Option<&KinematicsInput>, known: 
                 pub const ROBOT: &'static str = "";
                 pub const BASE: &'static str = "";
                 pub const DOF: usize = #dof_const;
+                pub const VELOCITY_DOF: usize = #velocity_const;
+                pub const VELOCITY_NAMES: &'static [&'static str] = &[];
                 pub const JOINT_NAMES: &'static [&'static str] = &[];
                 pub const JOINT_LIMITS: &'static [#p::JointLimits] = &[];
                 pub const LINK_NAMES: &'static [&'static str] = &[];

@@ -74,7 +74,11 @@ fn read_and_check(
 
 /// What the stub needs to know of a loaded robot.
 fn known(loaded: &source::Loaded) -> fallback::Known {
-    fallback::Known { dof: loaded.tree.dof(), links: loaded.tree.links().len().saturating_sub(1) }
+    fallback::Known {
+        dof: loaded.tree.dof(),
+        velocities: loaded.tree.velocity_dof(),
+        links: loaded.tree.links().len().saturating_sub(1),
+    }
 }
 
 /// Loads the description, checks the options and emits the robot, gathering every fault in
@@ -113,6 +117,7 @@ fn expand_options(
         tips: options.tips().into_iter().map(|t| t.as_ref().clone()).collect(),
         positions: options.positions,
         jacobians: options.jacobians.is_present(),
+        floating_base: options.source().floating_base.map(|f| f.as_ref().clone()),
         scalars,
         krate,
         trig,

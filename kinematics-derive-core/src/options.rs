@@ -10,7 +10,7 @@
 //! ```
 
 use darling::ast::NestedMeta;
-use darling::util::{PathList, SpannedValue};
+use darling::util::{Override, PathList, SpannedValue};
 use darling::{Error, FromDeriveInput, FromMeta};
 
 use crate::inline_dh::InlineDh;
@@ -58,9 +58,24 @@ pub struct KinematicsInput {
     /// default, `trig = "fast"`: every angle of a function in one call, side by side in SIMD lanes).
     #[darling(default)]
     pub trig: Option<SpannedValue<String>>,
+    /// `floating_base` (or `floating_base = "link"`): a free-flying root, the description's root
+    /// joined to a new root link (`world` by default) by a floating joint `root_joint`.
+    #[darling(default)]
+    pub floating_base: Option<SpannedValue<Override<String>>>,
     /// `crate = "path"` for a renamed dependency.
     #[darling(default, rename = "crate")]
     pub krate: Option<syn::Path>,
+}
+
+/// The new root link's name for `floating_base` (`world` unless named).
+fn floating_base(key: Option<&SpannedValue<Override<String>>>) -> Option<SpannedValue<String>> {
+    key.map(|k| {
+        let name = match k.as_ref() {
+            Override::Inherit => "world".to_owned(),
+            Override::Explicit(name) => name.clone(),
+        };
+        SpannedValue::new(name, k.span())
+    })
 }
 
 /// What [`crate::source::load`] needs: the keys that name the description, its exactness policy
@@ -79,6 +94,8 @@ pub struct SourceOptions<'a> {
     pub tips: Vec<SpannedValue<String>>,
     /// `exact_angles`.
     pub exact_angles: ExactAngles,
+    /// `floating_base`: the new root link's name, spanned on the key.
+    pub floating_base: Option<SpannedValue<String>>,
 }
 
 /// `tip` then the entries of `tips`.
@@ -117,6 +134,8 @@ pub struct DescriptionKeys {
     tips: Option<Tips>,
     #[darling(default)]
     exact_angles: Option<Switch>,
+    #[darling(default)]
+    floating_base: Option<SpannedValue<Override<String>>>,
 }
 
 impl DescriptionKeys {
@@ -135,6 +154,7 @@ impl DescriptionKeys {
             base: self.base.as_ref(),
             tips: all_tips(self.tip.as_ref(), self.tips.as_ref()),
             exact_angles: policy(self.exact_angles),
+            floating_base: floating_base(self.floating_base.as_ref()),
         }
     }
 }
@@ -159,6 +179,7 @@ impl KinematicsInput {
             base: self.base.as_ref(),
             tips: self.tips(),
             exact_angles: self.exact_angles(),
+            floating_base: floating_base(self.floating_base.as_ref()),
         }
     }
 

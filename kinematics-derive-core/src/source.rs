@@ -5,7 +5,9 @@ use std::path::PathBuf;
 
 use darling::Error;
 use darling::util::SpannedValue;
-use kinematics_model::{ExactAngles, KinematicTree, LoadError, LoadErrorKind, Source, SourceFormat, SourceKind};
+use kinematics_model::{
+    ExactAngles, FLOATING_BASE_JOINT, KinematicTree, LoadError, LoadErrorKind, Source, SourceFormat, SourceKind,
+};
 use proc_macro2::{Span, TokenStream};
 use quote::quote;
 
@@ -28,14 +30,12 @@ pub struct Loaded {
 
 /// Reads the description and checks the tree (not yet the links asked for).
 pub fn read(options: &SourceOptions<'_>) -> darling::Result<Loaded> {
-    let exact_angles = options.exact_angles;
+    let policy = (options.exact_angles, options.floating_base.as_ref());
     let loaded = match (options.urdf, options.dh) {
-        (Some(path), None) => from_file(path, SourceKind::Urdf, exact_angles)?,
+        (Some(path), None) => from_file(path, SourceKind::Urdf, policy)?,
         (None, Some(dh)) => match dh.as_ref() {
-            DhSource::File(path) => {
-                from_file(&SpannedValue::new(path.clone(), dh.span()), SourceKind::Dh, exact_angles)?
-            }
-            DhSource::Inline(table) => from_inline(table, dh.span(), exact_angles)?,
+            DhSource::File(path) => from_file(&SpannedValue::new(path.clone(), dh.span()), SourceKind::Dh, policy)?,
+            DhSource::Inline(table) => from_inline(table, dh.span(), policy)?,
         },
         (Some(_), Some(dh)) => {
             return Err(Error::custom("give one description: `urdf` or `dh`, not both").with_span(&dh.span()));
@@ -64,7 +64,32 @@ pub fn check_links(loaded: &Loaded, options: &SourceOptions<'_>) -> darling::Res
     errors.finish()
 }
 
-fn from_file(path: &SpannedValue<String>, kind: SourceKind, exact_angles: ExactAngles) -> darling::Result<Loaded> {
+/// The exactness policy, and the free-flying root's link name if `floating_base` was given.
+type Policy<'a> = (ExactAngles, Option<&'a SpannedValue<String>>);
+
+/// Loads `source`, with a free-flying root when asked: the new root link and its joint must not
+/// clash with the description's names (a clash is an error on the `floating_base` key).
+fn load(source: &Source, (exact_angles, floating): Policy<'_>, span: Span) -> darling::Result<KinematicTree> {
+    let tree = source.load(exact_angles).map_err(|e| spanned(&e, span))?;
+    let Some(link) = floating else { return Ok(tree) };
+    let clash = if tree.link_id(link).is_some() {
+        Some(format!("link `{}`", link.as_ref()))
+    } else {
+        tree.joint_id(FLOATING_BASE_JOINT).map(|_| format!("joint `{FLOATING_BASE_JOINT}`"))
+    };
+    if let Some(clash) = clash {
+        return Err(Error::custom(format!(
+            "{}: `floating_base` adds a root link `{}` and a floating joint `{FLOATING_BASE_JOINT}`, but the description \
+             already has a {clash} (name the new root link: `floating_base = \"...\"`)",
+            source.label,
+            link.as_ref()
+        ))
+        .with_span(&link.span()));
+    }
+    source.load_with_floating_base(exact_angles, Some(link.as_ref())).map_err(|e| spanned(&e, span))
+}
+
+fn from_file(path: &SpannedValue<String>, kind: SourceKind, policy: Policy<'_>) -> darling::Result<Loaded> {
     let span = path.span();
     let label = path.as_ref().clone();
     let root = std::env::var("CARGO_MANIFEST_DIR").map(PathBuf::from).unwrap_or_default();
@@ -72,18 +97,17 @@ fn from_file(path: &SpannedValue<String>, kind: SourceKind, exact_angles: ExactA
     let bytes =
         std::fs::read(&absolute).map_err(|e| spanned(&LoadError::new(label.clone(), LoadErrorKind::Io(e)), span))?;
     let source = Source::from_bytes(label, kind, bytes).map_err(|e| spanned(&e, span))?;
-    let tree = source.load(exact_angles).map_err(|e| spanned(&e, span))?;
+    let tree = load(&source, policy, span)?;
     let absolute = absolute.to_string_lossy().into_owned();
     Ok(Loaded { tree, label: source.file_name(), written: source.label, text_expr: quote!(include_str!(#absolute)) })
 }
 
-fn from_inline(table: &InlineDh, span: Span, exact_angles: ExactAngles) -> darling::Result<Loaded> {
+fn from_inline(table: &InlineDh, span: Span, policy: Policy<'_>) -> darling::Result<Loaded> {
     let table = table.to_table().map_err(|e| e.with_span(&span))?;
     // The table as the DH file it stands for: loaded by the one loader, and the text
     // `reference()` parses, so both read the very same robot.
     let text = table.to_toml().map_err(|e| spanned(&LoadError::new(LABEL, e), span))?;
-    let tree =
-        Source::new(SourceFormat::DhToml, LABEL, text.clone()).load(exact_angles).map_err(|e| spanned(&e, span))?;
+    let tree = load(&Source::new(SourceFormat::DhToml, LABEL, text.clone()), policy, span)?;
     Ok(Loaded { tree, label: "inline_dh.toml".to_owned(), written: LABEL.to_owned(), text_expr: quote!(#text) })
 }
 

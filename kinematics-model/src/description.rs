@@ -17,6 +17,56 @@ pub struct Description {
     pub joints: Vec<JointDescription>,
 }
 
+/// The name of the floating joint [`Description::with_floating_base`] adds (Pinocchio's name for
+/// a model's free-flyer).
+pub const FLOATING_BASE_JOINT: &str = "root_joint";
+
+impl Description {
+    /// The robot with a free-flying root: a new link `link` becomes the root, joined to the
+    /// description's root by a floating joint [`FLOATING_BASE_JOINT`], so the first seven entries
+    /// of `q` are the old root's pose in `link` (position, then quaternion `qx, qy, qz, qw`), as
+    /// legged robots and humanoids are modelled. A description with no single root is returned
+    /// with the link and no joint, for validation to report what is wrong with it; the caller
+    /// checks that `link` and the joint's name are new (validation reports a duplicate otherwise).
+    ///
+    /// ```
+    /// use kinematics_model::{Description, KinematicTree, urdf::parse_urdf};
+    /// let urdf = r#"<robot name="r"><link name="trunk"/><link name="leg"/>
+    ///   <joint name="hip" type="revolute"><parent link="trunk"/><child link="leg"/>
+    ///   <limit lower="-1" upper="1"/></joint></robot>"#;
+    /// let floating = parse_urdf(urdf)?.with_floating_base("world");
+    /// let tree = KinematicTree::from_description(&floating).unwrap();
+    /// assert_eq!(tree.link(tree.root()).name, "world");
+    /// assert_eq!((tree.dof(), tree.velocity_dof()), (8, 7));
+    /// assert_eq!(tree.dof_names()[6], "root_joint.qw");
+    /// # Ok::<(), kinematics_model::LoadErrorKind>(())
+    /// ```
+    pub fn with_floating_base(&self, link: &str) -> Description {
+        let mut d = self.clone();
+        let children: std::collections::BTreeSet<&str> = self.joints.iter().map(|j| j.child.as_str()).collect();
+        let roots: Vec<&String> = self.links.iter().filter(|l| !children.contains(l.as_str())).collect();
+        d.links.insert(0, link.to_owned());
+        if let [root] = roots[..] {
+            d.joints.insert(
+                0,
+                JointDescription {
+                    name: FLOATING_BASE_JOINT.to_owned(),
+                    element: Element::Joint(FLOATING_BASE_JOINT.to_owned()),
+                    kind: JointTypeDescription::Floating,
+                    parent: link.to_owned(),
+                    child: root.clone(),
+                    origin: FixedTransform::identity(),
+                    after_motion: FixedTransform::identity(),
+                    axis: [0.0, 0.0, 1.0],
+                    limits: None,
+                    mimic: None,
+                },
+            );
+        }
+        d
+    }
+}
+
 /// A joint type as written in the description, including the ones the model refuses.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum JointTypeDescription {
@@ -28,9 +78,9 @@ pub enum JointTypeDescription {
     Prismatic,
     /// No motion.
     Fixed,
-    /// Free 6-DoF motion (refused for now).
+    /// Free 6-DoF motion.
     Floating,
-    /// Planar 3-DoF motion (refused for now).
+    /// Planar 3-DoF motion.
     Planar,
     /// Ball joint (not part of the URDF specification; refused).
     Spherical,

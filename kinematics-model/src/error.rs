@@ -78,7 +78,9 @@ pub enum ModelError {
         links: Vec<String>,
     },
     /// A joint type the model does not support.
-    #[error("{element}: joint type `{kind}` is not supported (revolute, continuous, prismatic, fixed are)")]
+    #[error(
+        "{element}: joint type `{kind}` is not supported (revolute, continuous, prismatic, fixed, floating, planar are)"
+    )]
     UnsupportedJoint {
         /// The joint.
         element: Element,
@@ -124,6 +126,18 @@ pub enum ModelError {
         element: Element,
         /// The fixed source.
         source_joint: String,
+    },
+    /// A mimic of a planar or floating joint, or a planar or floating joint that mimics.
+    #[error(
+        "{element}: mimics joint `{source_joint}`, but a {kind} joint takes several values (a mimic follows one with one)"
+    )]
+    MimicOfSeveral {
+        /// The mimic joint.
+        element: Element,
+        /// The source.
+        source_joint: String,
+        /// The type that takes several values.
+        kind: &'static str,
     },
     /// A fixed joint that claims to mimic another.
     #[error("{element}: a fixed joint cannot mimic another joint")]

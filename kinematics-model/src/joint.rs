@@ -25,6 +25,15 @@ pub enum JointKind {
     Prismatic,
     /// No motion.
     Fixed,
+    /// Free motion (URDF `floating`): seven entries of `q`, the child's origin in the joint frame
+    /// (`x, y, z`) then its orientation as a quaternion `(qx, qy, qz, qw)` (Pinocchio's order),
+    /// whose rotation is that of the quaternion normalised; six velocities (the columns of a
+    /// Jacobian): the child's linear and angular velocity in its own axes (Pinocchio's free-flyer).
+    Floating,
+    /// Motion in the plane normal to the axis (URDF `planar`): three entries of `q`, the
+    /// translations along the plane's axes ([`Joint::plane_axes`]) then the rotation about the
+    /// normal; three velocities, their rates.
+    Planar,
 }
 
 impl JointKind {
@@ -40,6 +49,44 @@ impl JointKind {
             JointKind::Continuous => "continuous",
             JointKind::Prismatic => "prismatic",
             JointKind::Fixed => "fixed",
+            JointKind::Floating => "floating",
+            JointKind::Planar => "planar",
+        }
+    }
+
+    /// How many entries of `q` an independent joint of this kind takes (0 for a fixed joint).
+    pub fn positions(self) -> usize {
+        match self {
+            JointKind::Fixed => 0,
+            JointKind::Revolute | JointKind::Continuous | JointKind::Prismatic => 1,
+            JointKind::Planar => 3,
+            JointKind::Floating => 7,
+        }
+    }
+
+    /// How many velocities (columns of a Jacobian, entries of `qd`) it takes.
+    pub fn velocities(self) -> usize {
+        match self {
+            JointKind::Floating => 6,
+            other => other.positions(),
+        }
+    }
+
+    /// The names of its entries of `q`, after the joint's name (`.x`, ...); empty for a joint of
+    /// one entry, whose entry is the joint's name.
+    pub fn position_suffixes(self) -> &'static [&'static str] {
+        match self {
+            JointKind::Planar => &[".x", ".y", ".theta"],
+            JointKind::Floating => &[".x", ".y", ".z", ".qx", ".qy", ".qz", ".qw"],
+            _ => &[],
+        }
+    }
+
+    /// The names of its velocities, after the joint's name.
+    pub fn velocity_suffixes(self) -> &'static [&'static str] {
+        match self {
+            JointKind::Floating => &[".vx", ".vy", ".vz", ".wx", ".wy", ".wz"],
+            other => other.position_suffixes(),
         }
     }
 }
@@ -49,7 +96,8 @@ impl JointKind {
 pub enum JointMotion {
     /// A fixed joint: no value.
     Fixed,
-    /// An independent degree of freedom: the value is `q[index]`.
+    /// An independent joint: the value is `q[index]` (a planar joint's three values and a
+    /// floating joint's seven start there).
     Dof(usize),
     /// A mimic joint: the value is `multiplier * q[dof] + offset`, where `dof` is the index of the
     /// independent joint `source` (chains of mimics are resolved to the end).
@@ -149,6 +197,35 @@ pub(crate) fn length(v: [f64; 3]) -> f64 {
 /// The unit vector along a finite axis, scaled by its largest component before it is squared, so
 /// that `0 0 1e200` is `0 0 1` and `1e-300 0 0` is `1 0 0`; `None` for the zero vector (or a
 /// vector that is not finite).
+impl Joint {
+    /// The in-plane axes `(e1, e2)` of a planar joint, in the joint frame: `e1` is the coordinate
+    /// axis least aligned with the normal (`axis`; the first of equals) made orthogonal to it and
+    /// of unit length, `e2 = axis x e1`. For the normal `z` they are `x` and `y`, exactly; for `x`,
+    /// `y` and `z`; for `y`, `x` and `-z`. `q`'s first two entries of the joint move the child along
+    /// them.
+    ///
+    /// ```
+    /// use kinematics_model::parse_source;
+    /// let urdf = r#"<robot name="r"><link name="a"/><link name="b"/>
+    ///   <joint name="slide" type="planar"><parent link="a"/><child link="b"/><axis xyz="0 0 1"/></joint></robot>"#;
+    /// let tree = parse_source("r.urdf", urdf)?;
+    /// assert_eq!(tree.joint_by_name("slide").unwrap().plane_axes(), ([1.0, 0.0, 0.0], [0.0, 1.0, 0.0]));
+    /// # Ok::<(), kinematics_model::LoadError>(())
+    /// ```
+    pub fn plane_axes(&self) -> ([f64; 3], [f64; 3]) {
+        let n = self.axis;
+        let least = (0..3).fold(0, |best, i| if n[i].abs() < n[best].abs() { i } else { best });
+        let mut e1 = [0.0; 3];
+        e1[least] = 1.0;
+        let along = n[least];
+        let e1 = [e1[0] - along * n[0], e1[1] - along * n[1], e1[2] - along * n[2]];
+        let norm = (e1[0] * e1[0] + e1[1] * e1[1] + e1[2] * e1[2]).sqrt();
+        let e1 = if along == 0.0 { e1 } else { [e1[0] / norm, e1[1] / norm, e1[2] / norm] };
+        let e2 = [n[1] * e1[2] - n[2] * e1[1], n[2] * e1[0] - n[0] * e1[2], n[0] * e1[1] - n[1] * e1[0]];
+        (e1, e2)
+    }
+}
+
 pub(crate) fn unit_axis(v: [f64; 3]) -> Option<[f64; 3]> {
     if let Some(n) = plain_norm(v) {
         return Some(v.map(|c| c / n));

@@ -38,11 +38,13 @@ pub mod urdf;
 mod validate;
 
 pub use angle::{Angle, PiRational};
-pub use description::{Description, JointDescription, JointTypeDescription, LimitsDescription, MimicDescription};
+pub use description::{
+    Description, FLOATING_BASE_JOINT, JointDescription, JointTypeDescription, LimitsDescription, MimicDescription,
+};
 pub use error::{Element, LoadError, LoadErrorKind, ModelError, ModelErrors, UnknownLink};
 pub use exactness::{ExactAngles, RecognisedAngle};
 pub use frame::JacobianFrame;
 pub use joint::{Joint, JointKind, JointMotion, Limits, Link};
-pub use source::{Source, SourceFormat, SourceKind, parse_source, parse_source_with};
+pub use source::{Source, SourceFormat, SourceKind, parse_source, parse_source_floating, parse_source_with};
 pub use transform::{Axis, Elementary, FixedTransform};
 pub use tree::{Chain, JointId, KinematicTree, LinkId};

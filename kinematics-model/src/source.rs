@@ -158,8 +158,21 @@ impl Source {
     /// Parses and validates the description with the exactness policy `exact_angles`: the one
     /// path from text to tree.
     pub fn load(&self, exact_angles: ExactAngles) -> Result<KinematicTree, LoadError> {
+        self.load_with_floating_base(exact_angles, None)
+    }
+
+    /// [`Source::load`], with a free-flying root when `floating_base` names the new root link
+    /// ([`crate::Description::with_floating_base`]).
+    pub fn load_with_floating_base(
+        &self,
+        exact_angles: ExactAngles,
+        floating_base: Option<&str>,
+    ) -> Result<KinematicTree, LoadError> {
         let error = |kind| LoadError::new(self.label.clone(), kind);
-        let description = self.format.parse(&self.text).map_err(error)?;
+        let mut description = self.format.parse(&self.text).map_err(error)?;
+        if let Some(link) = floating_base {
+            description = description.with_floating_base(link);
+        }
         KinematicTree::from_description_with(&description, exact_angles).map_err(|e| error(LoadErrorKind::Model(e)))
     }
 }
@@ -169,6 +182,18 @@ impl Source {
 /// The caller reads the file (this crate does no IO), so `file` is whatever the user should see.
 pub fn parse_source(file: &str, text: &str) -> Result<KinematicTree, LoadError> {
     parse_source_with(file, text, ExactAngles::default())
+}
+
+/// [`parse_source_with`] with a free-flying root named `floating_base`
+/// ([`crate::Description::with_floating_base`]).
+pub fn parse_source_floating(
+    file: &str,
+    text: &str,
+    exact_angles: ExactAngles,
+    floating_base: &str,
+) -> Result<KinematicTree, LoadError> {
+    Source::from_file_name(file, SourceKind::ByExtension, text)?
+        .load_with_floating_base(exact_angles, Some(floating_base))
 }
 
 /// [`parse_source`] with the exactness policy `exact_angles`.

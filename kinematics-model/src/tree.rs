@@ -158,24 +158,90 @@ impl KinematicTree {
         self.joint_id(name).map(|id| self.joint(id))
     }
 
-    /// Number of degrees of freedom (the length of `q`).
+    /// The length of `q`: one entry per independent joint, three for a planar joint, seven for a
+    /// floating one ([`JointKind::positions`]).
     pub fn dof(&self) -> usize {
         self.dof_joints.len()
     }
 
-    /// The independent joints, in degree-of-freedom order: `q[i]` drives `dof_joints()[i]`.
+    /// The number of velocities: the columns of a Jacobian and the length of `qd` (a floating
+    /// joint has six, for its seven entries of `q`; every other joint as many as in `q`).
+    pub fn velocity_dof(&self) -> usize {
+        self.dof() - self.floating_joints().count()
+    }
+
+    /// The independent joints, per entry of `q`: `q[i]` drives `dof_joints()[i]` (a planar joint
+    /// is listed three times, a floating one seven times).
     pub fn dof_joints(&self) -> &[JointId] {
         &self.dof_joints
     }
 
-    /// Names of the independent joints, in degree-of-freedom order.
-    pub fn dof_names(&self) -> Vec<&str> {
-        self.dof_joints.iter().map(|&j| self.joint(j).name.as_str()).collect()
+    /// The name of each entry of `q`: the joint's name, with `.x`, `.y`, `.theta` for a planar
+    /// joint's and `.x`, `.y`, `.z`, `.qx`, `.qy`, `.qz`, `.qw` for a floating one's.
+    pub fn dof_names(&self) -> Vec<String> {
+        self.entry_names(JointKind::position_suffixes)
     }
 
-    /// Position limits of each degree of freedom, in order (`None` for continuous joints).
+    /// The name of each velocity (a Jacobian's columns, the entries of `qd`): as
+    /// [`KinematicTree::dof_names`], with `.vx, .vy, .vz, .wx, .wy, .wz` for a floating joint.
+    pub fn velocity_names(&self) -> Vec<String> {
+        self.entry_names(JointKind::velocity_suffixes)
+    }
+
+    fn entry_names(&self, suffixes: fn(JointKind) -> &'static [&'static str]) -> Vec<String> {
+        let mut names = Vec::with_capacity(self.dof());
+        let mut previous = None;
+        for &j in &self.dof_joints {
+            if previous == Some(j) {
+                continue;
+            }
+            previous = Some(j);
+            let joint = self.joint(j);
+            match suffixes(joint.kind) {
+                [] => names.push(joint.name.clone()),
+                list => names.extend(list.iter().map(|s| format!("{}{s}", joint.name))),
+            }
+        }
+        names
+    }
+
+    /// Position limits of each entry of `q`, in order (`None` for continuous, planar and floating
+    /// joints).
     pub fn dof_limits(&self) -> Vec<Option<Limits>> {
         self.dof_joints.iter().map(|&j| self.joint(j).limits).collect()
+    }
+
+    /// The floating joints, in tree order.
+    pub fn floating_joints(&self) -> impl Iterator<Item = JointId> + '_ {
+        (0..self.joints.len()).map(JointId).filter(|&j| self.joint(j).kind == JointKind::Floating)
+    }
+
+    /// The velocity index of each entry of `q`: the same index shifted down by one for each
+    /// floating joint before it, and `None` for a floating joint's own seven entries (its six
+    /// velocities start at [`KinematicTree::velocity_start`]).
+    pub fn velocity_of_entry(&self) -> Vec<Option<usize>> {
+        let mut out = Vec::with_capacity(self.dof());
+        let mut shift = 0;
+        for (i, &j) in self.dof_joints.iter().enumerate() {
+            let joint = self.joint(j);
+            if joint.kind == JointKind::Floating {
+                out.push(None);
+                if matches!(joint.motion, JointMotion::Dof(start) if i == start + 6) {
+                    shift += 1;
+                }
+            } else {
+                out.push(Some(i - shift));
+            }
+        }
+        out
+    }
+
+    /// Where an independent joint's velocities start (`None` for a fixed or mimic joint).
+    pub fn velocity_start(&self, joint: JointId) -> Option<usize> {
+        let JointMotion::Dof(start) = self.joint(joint).motion else { return None };
+        let floating_before =
+            self.dof_joints[..start].iter().filter(|&&j| self.joint(j).kind == JointKind::Floating).count() / 7;
+        Some(start - floating_before)
     }
 
     /// The leaves: links below the root with no child joint, in depth-first order (the ends of
@@ -258,15 +324,17 @@ impl KinematicTree {
         Ok(Chain { base: base_id, tip: tip_id, joints: path[start..].to_vec() })
     }
 
-    /// The degree-of-freedom indices that move the joints of `chain`, ascending and unique.
+    /// The entries of `q` that move the joints of `chain`, ascending and unique.
     pub fn chain_dofs(&self, chain: &Chain) -> Vec<usize> {
         let mut dofs: Vec<usize> = chain
             .joints
             .iter()
             .filter_map(|&j| match self.joint(j).motion {
                 JointMotion::Fixed => None,
-                JointMotion::Dof(i) | JointMotion::Mimic { dof: i, .. } => Some(i),
+                JointMotion::Dof(i) => Some(i..i + self.joint(j).kind.positions()),
+                JointMotion::Mimic { dof: i, .. } => Some(i..i + 1),
             })
+            .flatten()
             .collect();
         dofs.sort_unstable();
         dofs.dedup();

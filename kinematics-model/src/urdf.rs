@@ -6,7 +6,7 @@
 //!   other element (materials, `<transmission>`, `<gazebo>`, xacro leftovers) is ignored, as are a
 //!   link's meshes and inertials;
 //! - a joint needs `name`, `type` (`revolute`, `continuous`, `prismatic`, `fixed`, `floating`,
-//!   `planar`; the model refuses the last two), `<parent link>` and `<child link>`;
+//!   `planar`), `<parent link>` and `<child link>`;
 //! - `<origin xyz rpy>` defaults to zeros, `<axis xyz>` to `1 0 0`;
 //! - revolute and prismatic joints need `<limit>`, and every `<limit>` needs `effort` and
 //!   `velocity`; `lower` and `upper` default to 0;

@@ -80,10 +80,10 @@ fn duplicates<'a>(names: impl Iterator<Item = &'a String>) -> Vec<String> {
     out
 }
 
-/// Rule: only revolute, continuous, prismatic and fixed joints are supported (for now).
+/// Rule: the joint types of URDF are supported (revolute, continuous, prismatic, fixed, floating,
+/// planar); a ball joint, which URDF does not define, is not.
 fn check_joint_type(j: &JointDescription, errors: &mut Vec<ModelError>) {
-    if matches!(j.kind, JointTypeDescription::Floating | JointTypeDescription::Planar | JointTypeDescription::Spherical)
-    {
+    if matches!(j.kind, JointTypeDescription::Spherical) {
         errors.push(ModelError::UnsupportedJoint { element: j.element.clone(), kind: j.kind.name() });
     }
 }
@@ -125,7 +125,8 @@ fn check_finite(j: &JointDescription, errors: &mut Vec<ModelError>) {
 /// its largest component first, so any finite non-zero axis (`0 0 1e200`, `1e-300 0 0`) has a
 /// unit direction.
 fn check_axis(j: &JointDescription, errors: &mut Vec<ModelError>) {
-    let moving = !matches!(j.kind, JointTypeDescription::Fixed);
+    // A floating joint has no axis (URDF ignores it); a planar joint's is the plane's normal.
+    let moving = !matches!(j.kind, JointTypeDescription::Fixed | JointTypeDescription::Floating);
     if moving && j.axis.iter().all(|v| v.is_finite()) && unit_axis(j.axis).is_none() {
         errors.push(ModelError::ZeroAxis { element: j.element.clone() });
     }
@@ -265,6 +266,15 @@ fn check_mimics(d: &Description, errors: &mut Vec<ModelError>) {
             Some(source) if source.kind == JointTypeDescription::Fixed => {
                 errors.push(ModelError::MimicOfFixed { element: j.element.clone(), source_joint: m.joint.clone() })
             }
+            // A mimic follows one value with one value: not a planar or floating joint's several.
+            Some(source) if several_values(source.kind) || several_values(j.kind) => {
+                let kind = if several_values(j.kind) { j.kind } else { source.kind };
+                errors.push(ModelError::MimicOfSeveral {
+                    element: j.element.clone(),
+                    source_joint: m.joint.clone(),
+                    kind: kind.name(),
+                })
+            }
             Some(_) => {
                 if let Some(cycle) = loop_at.get(&i) {
                     errors.push(ModelError::MimicLoop {
@@ -274,6 +284,11 @@ fn check_mimics(d: &Description, errors: &mut Vec<ModelError>) {
             }
         }
     }
+}
+
+/// Whether a joint of this type takes several values (planar, floating).
+fn several_values(kind: JointTypeDescription) -> bool {
+    matches!(kind, JointTypeDescription::Planar | JointTypeDescription::Floating)
 }
 
 /// Rule: the composed multiplier and offset of every mimic joint (`m * q + o` after following
@@ -350,12 +365,15 @@ fn assemble(d: &Description, root: usize) -> KinematicTree {
         links[link_index[j.parent.as_str()]].child_joints.push(JointId(i));
     }
     let joint_index: BTreeMap<&str, usize> = order.iter().enumerate().map(|(i, j)| (j.name.as_str(), i)).collect();
+    // Every independent joint takes its entries of `q` in tree order: one, or a planar joint's
+    // three, or a floating joint's seven.
     let mut dof_joints = Vec::new();
     let mut dof_of: Vec<Option<usize>> = vec![None; order.len()];
     for (i, j) in order.iter().enumerate() {
         if j.kind != JointTypeDescription::Fixed && j.mimic.is_none() {
             dof_of[i] = Some(dof_joints.len());
-            dof_joints.push(JointId(i));
+            let entries = joint_kind(j.kind).map_or(1, JointKind::positions);
+            dof_joints.extend(std::iter::repeat_n(JointId(i), entries));
         }
     }
     let mimics = resolve_mimics(&order, &joint_index, &dof_of);
@@ -374,14 +392,17 @@ fn assemble(d: &Description, root: usize) -> KinematicTree {
             };
             // A fixed joint keeps its axis as written (it is never used); a moving one passed
             // `check_axis`, so its unit axis exists.
-            let axis = if kind == JointKind::Fixed {
+            let axis = if matches!(kind, JointKind::Fixed | JointKind::Floating) {
                 j.axis
             } else {
                 #[allow(clippy::expect_used, reason = "invariant: `check_axis` refused zero axes of moving joints")]
                 unit_axis(j.axis).expect("a moving joint's axis is finite and not zero")
             };
+            // URDF gives limits to revolute and prismatic joints only.
             let limits = match (kind, j.limits) {
-                (JointKind::Continuous | JointKind::Fixed, _) | (_, None) => None,
+                (JointKind::Continuous | JointKind::Fixed | JointKind::Floating | JointKind::Planar, _) | (_, None) => {
+                    None
+                }
                 (_, Some(l)) => {
                     let lower = l.lower;
                     let upper = l.upper;
@@ -413,7 +434,9 @@ fn joint_kind(kind: JointTypeDescription) -> Option<JointKind> {
         JointTypeDescription::Continuous => Some(JointKind::Continuous),
         JointTypeDescription::Prismatic => Some(JointKind::Prismatic),
         JointTypeDescription::Fixed => Some(JointKind::Fixed),
-        JointTypeDescription::Floating | JointTypeDescription::Planar | JointTypeDescription::Spherical => None,
+        JointTypeDescription::Floating => Some(JointKind::Floating),
+        JointTypeDescription::Planar => Some(JointKind::Planar),
+        JointTypeDescription::Spherical => None,
     }
 }
 

@@ -30,6 +30,17 @@ pub enum RuntimeError {
         /// The value.
         value: f64,
     },
+    /// A floating joint's quaternion whose squared length is zero, subnormal or overflows: it
+    /// cannot be normalised into a rotation.
+    #[error("robot `{robot}`: the quaternion of floating joint `{joint}` (q[{index}..{}]) has no length to normalise", .index + 4)]
+    DegenerateQuaternion {
+        /// Robot name.
+        robot: String,
+        /// The floating joint.
+        joint: String,
+        /// Where its quaternion starts in `q`.
+        index: usize,
+    },
     /// A link or chain that the tree does not have.
     #[error("robot `{robot}`: {source}")]
     Model {

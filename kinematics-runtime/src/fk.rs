@@ -1,7 +1,7 @@
 //! Forward kinematics over the tree: `T_world^child = T_world^parent * origin * M(q) * after`.
 
 use kinematics_model::{Elementary, FixedTransform, Joint, JointKind, JointMotion, KinematicTree, LinkId};
-use nalgebra::{Isometry3, Translation3, Unit, UnitQuaternion, Vector3};
+use nalgebra::{Isometry3, Quaternion, Translation3, Unit, UnitQuaternion, Vector3};
 
 use crate::error::RuntimeError;
 
@@ -87,15 +87,28 @@ impl ReferenceFk {
                 joints: self.tree.dof_names().join(", "),
             });
         }
-        match q.iter().position(|v| !v.is_finite()) {
-            None => Ok(()),
-            Some(index) => Err(RuntimeError::NonFiniteValue {
+        if let Some(index) = q.iter().position(|v| !v.is_finite()) {
+            return Err(RuntimeError::NonFiniteValue {
                 robot: self.tree.name().to_owned(),
                 joint: self.tree.joint(self.tree.dof_joints()[index]).name.clone(),
                 index,
                 value: q[index],
-            }),
+            });
         }
+        // A floating joint's quaternion is normalised, so it must have a length to normalise.
+        for joint in self.tree.floating_joints() {
+            if let JointMotion::Dof(start) = self.tree.joint(joint).motion {
+                let squared: f64 = q[start + 3..start + 7].iter().map(|v| v * v).sum();
+                if !(squared.is_normal()) {
+                    return Err(RuntimeError::DegenerateQuaternion {
+                        robot: self.tree.name().to_owned(),
+                        joint: self.tree.joint(joint).name.clone(),
+                        index: start + 3,
+                    });
+                }
+            }
+        }
+        Ok(())
     }
 
     /// The id of a link, or an error naming it.
@@ -109,10 +122,25 @@ impl ReferenceFk {
         RuntimeError::Model { robot: self.tree.name().to_owned(), source }
     }
 
-    /// The motion `M(value)` of a joint.
-    pub(crate) fn motion(&self, index: usize, joint: &Joint, value: f64) -> Isometry3<f64> {
+    /// The motion `M(values)` of a joint: its entries of `q` (one, or a planar joint's three, or a
+    /// floating joint's seven).
+    pub(crate) fn motion(&self, index: usize, joint: &Joint, values: &[f64]) -> Isometry3<f64> {
         let axis = self.axes[index];
+        let value = values[0];
         match joint.kind {
+            JointKind::Planar => {
+                let (e1, e2) = joint.plane_axes();
+                let along = |e: [f64; 3], v: f64| Vector3::new(e[0], e[1], e[2]) * v;
+                Isometry3::from_parts(
+                    Translation3::from(along(e1, values[0]) + along(e2, values[1])),
+                    UnitQuaternion::from_axis_angle(&axis, values[2]),
+                )
+            }
+            JointKind::Floating => Isometry3::from_parts(
+                Translation3::new(values[0], values[1], values[2]),
+                // Pinocchio's order in `q`: x, y, z, w; nalgebra's constructor takes w first.
+                UnitQuaternion::from_quaternion(Quaternion::new(values[6], values[3], values[4], values[5])),
+            ),
             JointKind::Revolute | JointKind::Continuous => {
                 Isometry3::from_parts(Translation3::identity(), UnitQuaternion::from_axis_angle(&axis, value))
             }
@@ -128,6 +156,12 @@ impl ReferenceFk {
         poses[self.tree.joints()[index].parent.0] * self.origins[index]
     }
 
+    /// The frame of joint `index` after its motion: `T_world^parent * origin * M(q)`, from the
+    /// child link's pose.
+    pub(crate) fn moved_frame(&self, poses: &[Isometry3<f64>], index: usize) -> Isometry3<f64> {
+        poses[self.tree.joints()[index].child.0] * self.afters[index].inverse()
+    }
+
     /// World pose of every link, indexed by [`LinkId`] (the tree's link order).
     pub fn link_poses(&self, q: &[f64]) -> Result<Vec<Isometry3<f64>>, RuntimeError> {
         self.check_q(q)?;
@@ -136,9 +170,9 @@ impl ReferenceFk {
             // `check_q` gave `q` one value per degree of freedom, so every moving joint has one.
             let motion = match joint.motion {
                 JointMotion::Fixed => Isometry3::identity(),
-                JointMotion::Dof(dof) => self.motion(i, joint, q[dof]),
+                JointMotion::Dof(dof) => self.motion(i, joint, &q[dof..dof + joint.kind.positions()]),
                 JointMotion::Mimic { dof, multiplier, offset, .. } => {
-                    self.motion(i, joint, multiplier * q[dof] + offset)
+                    self.motion(i, joint, &[multiplier * q[dof] + offset])
                 }
             };
             poses[joint.child.0] = self.joint_frame(&poses, i) * motion * self.afters[i];

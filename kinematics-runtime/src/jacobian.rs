@@ -29,27 +29,59 @@ impl ReferenceFk {
         let poses = self.link_poses(q)?;
         let base_rotation_inv = poses[chain.base.0].rotation.inverse();
         let p = poses[chain.tip.0].translation.vector;
-        let mut jac = Matrix6xX::zeros(self.tree().dof());
+        let tree = self.tree();
+        let velocity_of_entry = tree.velocity_of_entry();
+        let mut jac = Matrix6xX::zeros(tree.velocity_dof());
+        let mut add = |column: usize, linear: Vector3<f64>, angular: Vector3<f64>| {
+            let (linear, angular) = (base_rotation_inv * linear, base_rotation_inv * angular);
+            for r in 0..3 {
+                jac[(r, column)] += linear[r];
+                jac[(r + 3, column)] += angular[r];
+            }
+        };
         for &joint_id in &chain.joints {
-            let joint = self.tree().joint(joint_id);
-            let (dof, rate) = match joint.motion {
+            let joint = tree.joint(joint_id);
+            let (column, rate) = match joint.motion {
                 JointMotion::Fixed => continue,
-                JointMotion::Dof(i) => (i, 1.0),
-                JointMotion::Mimic { dof, multiplier, .. } => (dof, multiplier),
+                JointMotion::Dof(_) => match tree.velocity_start(joint_id) {
+                    Some(column) => (column, 1.0),
+                    None => continue,
+                },
+                JointMotion::Mimic { dof, multiplier, .. } => match velocity_of_entry[dof] {
+                    Some(column) => (column, multiplier),
+                    None => continue,
+                },
             };
             let frame = self.joint_frame(&poses, joint_id.0);
-            let z = frame.rotation * Vector3::new(joint.axis[0], joint.axis[1], joint.axis[2]);
-            let o = frame.translation.vector;
-            let (linear, angular) = match joint.kind {
-                JointKind::Prismatic => (z, Vector3::zeros()),
-                JointKind::Revolute | JointKind::Continuous => (z.cross(&(p - o)), z),
+            let moved = self.moved_frame(&poses, joint_id.0);
+            let vector = |v: [f64; 3]| Vector3::new(v[0], v[1], v[2]);
+            let z = frame.rotation * vector(joint.axis);
+            // Turning about `axis` through `origin` moves the tip origin by `axis x (p - origin)`.
+            let turn = |axis: Vector3<f64>, origin: Vector3<f64>| (axis.cross(&(p - origin)), axis);
+            match joint.kind {
                 JointKind::Fixed => continue,
-            };
-            let linear = base_rotation_inv * linear * rate;
-            let angular = base_rotation_inv * angular * rate;
-            for r in 0..3 {
-                jac[(r, dof)] += linear[r];
-                jac[(r + 3, dof)] += angular[r];
+                JointKind::Prismatic => add(column, z * rate, Vector3::zeros()),
+                JointKind::Revolute | JointKind::Continuous => {
+                    let (linear, angular) = turn(z, frame.translation.vector);
+                    add(column, linear * rate, angular * rate);
+                }
+                JointKind::Planar => {
+                    let (e1, e2) = joint.plane_axes();
+                    add(column, frame.rotation * vector(e1), Vector3::zeros());
+                    add(column + 1, frame.rotation * vector(e2), Vector3::zeros());
+                    // The rotation turns about the normal through the translated origin.
+                    let (linear, angular) = turn(z, moved.translation.vector);
+                    add(column + 2, linear, angular);
+                }
+                JointKind::Floating => {
+                    // Pinocchio's free-flyer: the velocities are the child's, in its own axes.
+                    for k in 0..3 {
+                        let e = moved.rotation * Vector3::ith(k, 1.0);
+                        add(column + k, e, Vector3::zeros());
+                        let (linear, angular) = turn(e, moved.translation.vector);
+                        add(column + 3 + k, linear, angular);
+                    }
+                }
             }
         }
         Ok(jac)

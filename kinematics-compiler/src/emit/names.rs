@@ -10,9 +10,31 @@ use crate::symbolic::graph::{ExprGraph, ExprId, Node};
 #[derive(Debug, Clone, Default)]
 pub struct Names {
     angle_suffix: BTreeMap<ExprId, String>,
+    /// The lengths of `q` and `qd`, when known: variables past `q` are rates and rotations.
+    sizes: Option<(usize, usize)>,
 }
 
 impl Names {
+    /// With the lengths of `q` and `qd`, so variables past `q` get their names (`qd1`, `rot1_12`:
+    /// row 1, column 2 of the first floating joint's rotation) rather than `q`'s.
+    pub fn with_sizes(mut self, dof: usize, velocities: usize) -> Self {
+        self.sizes = Some((dof, velocities));
+        self
+    }
+
+    /// The name of variable `i`: `q1`, or with [`Names::with_sizes`] `qd1` or `rot1_12` past `q`.
+    /// The parts after the letters are returned apart, for LaTeX subscripts.
+    pub fn var(&self, i: usize) -> (&'static str, String) {
+        match self.sizes {
+            Some((n, nv)) if i >= n + nv => {
+                let k = i - n - nv;
+                ("rot", format!("{}_{}{}", k / 9 + 1, k % 9 / 3 + 1, k % 3 + 1))
+            }
+            Some((n, _)) if i >= n => ("qd", (i - n + 1).to_string()),
+            _ => ("q", (i + 1).to_string()),
+        }
+    }
+
     /// Names the angles reachable from `outputs`.
     pub fn new(g: &ExprGraph, outputs: &[ExprId]) -> Self {
         let mut angle_suffix = BTreeMap::new();
@@ -39,7 +61,7 @@ impl Names {
             taken.insert(suffix.clone());
             angle_suffix.insert(angle, suffix);
         }
-        Names { angle_suffix }
+        Names { angle_suffix, sizes: None }
     }
 
     /// `s23` for the sine of angle `q2 + q3`.

@@ -59,14 +59,23 @@ struct Writer<'a> {
     g: &'a ExprGraph,
     schedule: &'a Schedule,
     private: &'a TokenStream,
-    /// Degrees of freedom: variables from here on are joint rates (`qd1`, ...).
-    dof: usize,
+    /// Entries of `q` and of `qd`: variables from `q.0` on are joint rates (`qd1`, ...), from
+    /// `q.0 + q.1` on floating joints' rotations (`rot1_11`, ...).
+    sizes: (usize, usize),
 }
 
-/// The name of the graph's variable `i`: a joint position `q1`, or past the degrees of freedom a
-/// joint rate `qd1`.
-fn var_ident(i: usize, dof: usize) -> Ident {
-    if i < dof { format_ident!("q{}", i + 1) } else { format_ident!("qd{}", i - dof + 1) }
+/// The name of the graph's variable `i` (`sizes`: the lengths of `q` and `qd`): a joint position
+/// `q1`, a joint rate `qd1`, or the entry (row 1, column 2) of the first floating joint's rotation,
+/// `rot1_12`.
+fn var_ident(i: usize, (dof, velocities): (usize, usize)) -> Ident {
+    if i < dof {
+        format_ident!("q{}", i + 1)
+    } else if i < dof + velocities {
+        format_ident!("qd{}", i - dof + 1)
+    } else {
+        let k = i - dof - velocities;
+        format_ident!("rot{}_{}{}", k / 9 + 1, k % 9 / 3 + 1, k % 3 + 1)
+    }
 }
 
 fn ident(name: &str) -> Ident {
@@ -119,7 +128,7 @@ impl Writer<'_> {
         let g = self.g;
         match g.node(id) {
             Node::Const(c) => Self::constant(c.value(), out),
-            Node::Var(i) => out.append(var_ident(i as usize, self.dof)),
+            Node::Var(i) => out.append(var_ident(i as usize, self.sizes)),
             Node::Sin(a) => out.append(ident(&self.schedule.names.sin(a))),
             Node::Cos(a) => out.append(ident(&self.schedule.names.cos(a))),
             Node::Neg(a) => {
@@ -219,11 +228,12 @@ impl Writer<'_> {
             VelocityForm::Twist => self.list(entries, out),
             VelocityForm::Jacobian => {
                 let mut inner = TokenStream::new();
+                let width = self.sizes.1;
                 for r in 0..rows {
                     if r > 0 {
                         punct(&mut inner, ',');
                     }
-                    self.list(&entries[r * self.dof..(r + 1) * self.dof], &mut inner);
+                    self.list(&entries[r * width..(r + 1) * width], &mut inner);
                 }
                 group(out, Delimiter::Bracket, inner);
             }
@@ -311,23 +321,38 @@ pub fn emit_function(compiled: &Compiled, options: &EmitOptions) -> TokenStream 
     let outputs = compiled.outputs();
     let schedule = Schedule::new(g, &outputs);
     let private = &options.private;
-    let n = compiled.dof();
-    let w = Writer { g, schedule: &schedule, private, dof: n };
+    let (n, nv) = (compiled.dof(), compiled.velocity_dof());
+    let w = Writer { g, schedule: &schedule, private, sizes: (n, nv) };
     let n_lit = Literal::usize_unsuffixed(n);
+    let nv_lit = Literal::usize_unsuffixed(nv);
     let twist = compiled.velocity.is_some_and(|v| v.form == VelocityForm::Twist);
     let mut body = TokenStream::new();
-    let mut inputs = vec![(quote!(q), 0)];
+    let mut inputs = vec![(quote!(q), 0, n)];
     if twist {
-        inputs.push((quote!(qd), n));
+        inputs.push((quote!(qd), n, nv));
     }
-    for &(ref input, first) in &inputs {
-        if n == 0 {
+    for &(ref input, first, len) in &inputs {
+        if len == 0 {
             body.extend(quote!(let _ = #input;));
         } else {
-            let vars = (first..first + n)
-                .map(|i| if schedule.used_vars.contains(&i) { var_ident(i, n).into_token_stream() } else { quote!(_) });
+            let vars = (first..first + len).map(|i| {
+                if schedule.used_vars.contains(&i) { var_ident(i, (n, nv)).into_token_stream() } else { quote!(_) }
+            });
             body.extend(quote!(let [#(#vars),*] = *#input;));
         }
+    }
+    // Each floating joint's rotation, from its quaternion in `q`, before anything uses it.
+    for (k, &start) in compiled.floating_quaternions.iter().enumerate() {
+        let first = n + nv + 9 * k;
+        if !(first..first + 9).any(|i| schedule.used_vars.contains(&i)) {
+            continue;
+        }
+        let rows = (0..3).map(|r| {
+            let entries = (0..3).map(|c| var_ident(first + 3 * r + c, (n, nv)));
+            quote!([#(#entries),*])
+        });
+        let [x, y, z, qw] = [start, start + 1, start + 2, start + 3].map(Literal::usize_unsuffixed);
+        body.extend(quote!(let [#(#rows),*] = #private::quaternion_matrix(q[#x], q[#y], q[#z], q[#qw]);));
     }
     w.items(options.trig, &mut body);
     let layout = Layout::of(compiled);
@@ -346,7 +371,7 @@ pub fn emit_function(compiled: &Compiled, options: &EmitOptions) -> TokenStream 
         value = list;
     }
     body.extend(value);
-    let one = layout.ty(private, &n_lit);
+    let one = layout.ty(private, &nv_lit);
     let ret = if array {
         let m = Literal::usize_unsuffixed(compiled.frames().len());
         quote!([#one; #m])
@@ -357,7 +382,7 @@ pub fn emit_function(compiled: &Compiled, options: &EmitOptions) -> TokenStream 
     let docs = doc_lines(compiled);
     let vis = if options.public { quote!(pub) } else { quote!() };
     let bound = options.trig.bound(private);
-    let params = if twist { quote!(q: &[T; #n_lit], qd: &[T; #n_lit]) } else { quote!(q: &[T; #n_lit]) };
+    let params = if twist { quote!(q: &[T; #n_lit], qd: &[T; #nv_lit]) } else { quote!(q: &[T; #n_lit]) };
     quote! {
         #(#[doc = #docs])*
         // Always inlined into its (small, `#[inline]`) typed callers: a function returning an array
@@ -379,7 +404,8 @@ struct Layout {
     pose: usize,
     /// The velocity's form and rows (6, or 3 for positions only), if any.
     velocity: Option<(VelocityForm, usize)>,
-    dof: usize,
+    /// Columns of a Jacobian.
+    velocities: usize,
 }
 
 impl Layout {
@@ -390,13 +416,13 @@ impl Layout {
             (true, true) => 3,
             (true, false) => 12,
         };
-        Layout { pose, velocity: compiled.velocity.map(|v| (v.form, rows)), dof: compiled.dof() }
+        Layout { pose, velocity: compiled.velocity.map(|v| (v.form, rows)), velocities: compiled.velocity_dof() }
     }
 
     fn velocity_len(&self) -> usize {
         match self.velocity {
             None => 0,
-            Some((VelocityForm::Jacobian, rows)) => rows * self.dof,
+            Some((VelocityForm::Jacobian, rows)) => rows * self.velocities,
             Some((VelocityForm::Twist, rows)) => rows,
         }
     }

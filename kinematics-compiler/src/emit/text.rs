@@ -167,10 +167,13 @@ impl<'a> Writer<'a> {
         let (g, names, style) = (self.g, self.names, self.style);
         match g.node(id) {
             Node::Const(c) => out.push_str(&number(c.value())),
-            Node::Var(i) => match style {
-                Style::Text => out.push_str(&format!("q{}", i + 1)),
-                Style::Latex => out.push_str(&format!("q_{{{}}}", i + 1)),
-            },
+            Node::Var(i) => {
+                let (letters, index) = names.var(i as usize);
+                match style {
+                    Style::Text => out.push_str(&format!("{letters}{index}")),
+                    Style::Latex => out.push_str(&format!("{letters}_{{{index}}}")),
+                }
+            }
             Node::Sin(a) => out.push_str(&trig(names.sin(a), style)),
             Node::Cos(a) => out.push_str(&trig(names.cos(a), style)),
             Node::Neg(a) => {

@@ -34,6 +34,9 @@ enum Contribution {
     Rotation { rates: Vec<(usize, f64)>, axis: [ExprId; 3], origin: [ExprId; 3] },
     /// A translation: per degree of freedom, the velocity it gives the tip, in base axes.
     Translation { velocities: Vec<(usize, [ExprId; 3])> },
+    /// A floating joint: the child's axes (the columns of its rotation) and origin in base axes,
+    /// its first column, and `-1` on the base's side of the tree.
+    Free { axes: [[ExprId; 3]; 3], origin: [ExprId; 3], column: usize, sign: f64 },
 }
 
 /// The chain's pose folded from the base out, and what each of its joint-dependent steps
@@ -47,7 +50,13 @@ pub struct Differential {
 impl Differential {
     /// Folds `steps` from `start` (the identity for a chain from the base), recording each
     /// joint-dependent step's axis and origin (rotations) or velocity (translations).
-    pub fn fold(g: &mut ExprGraph, start: SymTransform, steps: &[Step]) -> Self {
+    ///
+    /// `columns` maps each entry of `q` to its velocity (Jacobian column): the model's
+    /// `velocity_of_entry`, `None` for a floating joint's entries, whose six columns its
+    /// [`Step::Free`] gives instead (derivatives by those entries, and by the rotation variables
+    /// beyond `q`, are not velocities and are left out).
+    pub fn fold(g: &mut ExprGraph, start: SymTransform, steps: &[Step], columns: &[Option<usize>]) -> Self {
+        let column = |i: usize| columns.get(i).copied().flatten();
         let mut t = start;
         let mut contributions = Vec::new();
         for step in steps {
@@ -55,7 +64,8 @@ impl Differential {
                 Step::Rotate { axis, angle } if !angle.is_constant() => {
                     let u = const_vec(g, *axis);
                     let z = mat_vec(g, &t.r, u);
-                    contributions.push(Contribution::Rotation { rates: angle.terms().to_vec(), axis: z, origin: t.p });
+                    let rates = angle.terms().iter().filter_map(|&(i, k)| Some((column(i)?, k))).collect();
+                    contributions.push(Contribution::Rotation { rates, axis: z, origin: t.p });
                 }
                 Step::Translate(v) => {
                     let mut vars = Vec::new();
@@ -66,14 +76,26 @@ impl Differential {
                     vars.dedup();
                     let velocities = vars
                         .into_iter()
-                        .map(|i| {
+                        .filter_map(|i| {
+                            let c = column(i)?;
                             let dv = v.map(|x| derivative(g, x, i));
-                            (i, mat_vec(g, &t.r, dv))
+                            Some((c, mat_vec(g, &t.r, dv)))
                         })
                         .collect::<Vec<_>>();
                     if !velocities.is_empty() {
                         contributions.push(Contribution::Translation { velocities });
                     }
+                }
+                // The child's frame: after the rotation, or, inverted, before it (where the
+                // child's side of the tree is).
+                Step::Free { column, inverted: true, .. } => {
+                    let axes = columns_of(&t.r);
+                    contributions.push(Contribution::Free { axes, origin: t.p, column: *column, sign: -1.0 });
+                }
+                Step::Free { column, inverted: false, rotation } => {
+                    let r = crate::symbolic::transform::mat_mul(g, &t.r, rotation);
+                    let axes = columns_of(&r);
+                    contributions.push(Contribution::Free { axes, origin: t.p, column: *column, sign: 1.0 });
                 }
                 _ => {}
             }
@@ -82,12 +104,18 @@ impl Differential {
         Differential { pose: t, contributions }
     }
 
-    /// The geometric Jacobian in base axes (Pinocchio's `LOCAL_WORLD_ALIGNED`): `dof` columns, of
-    /// the tip whose origin is `p` (the chain's own translation, or the same point as the
-    /// simplified pose computes it).
-    pub fn jacobian(&self, g: &mut ExprGraph, p: [ExprId; 3], dof: usize) -> Vec<Column> {
+    /// Whether a floating joint is among the steps (the inverted chain's `LOCAL` formulas do
+    /// not cover it).
+    pub fn has_free(&self) -> bool {
+        self.contributions.iter().any(|c| matches!(c, Contribution::Free { .. }))
+    }
+
+    /// The geometric Jacobian in base axes (Pinocchio's `LOCAL_WORLD_ALIGNED`): `velocities`
+    /// columns, of the tip whose origin is `p` (the chain's own translation, or the same point as
+    /// the simplified pose computes it).
+    pub fn jacobian(&self, g: &mut ExprGraph, p: [ExprId; 3], velocities: usize) -> Vec<Column> {
         let zero = g.constant(0.0);
-        let mut columns = vec![[zero; 6]; dof];
+        let mut columns = vec![[zero; 6]; velocities];
         for contribution in &self.contributions {
             match contribution {
                 Contribution::Rotation { rates, axis, origin } => {
@@ -110,14 +138,27 @@ impl Differential {
                         }
                     }
                 }
+                Contribution::Free { axes, origin, column, sign } => {
+                    let arm = sub3(g, p, *origin);
+                    let k = g.constant(*sign);
+                    for (a, axis) in axes.iter().enumerate() {
+                        let linear = cross(g, *axis, arm);
+                        for r in 0..3 {
+                            let (v, l) = (g.mul(k, axis[r]), g.mul(k, linear[r]));
+                            columns[column + a][r] = g.add(columns[column + a][r], v);
+                            columns[column + 3 + a][r] = g.add(columns[column + 3 + a][r], l);
+                            columns[column + 3 + a][r + 3] = g.add(columns[column + 3 + a][r + 3], v);
+                        }
+                    }
+                }
             }
         }
         columns
     }
 
     /// The twist `J * qdot` in base axes (linear, then angular), with `qdot[i]` the graph's
-    /// variable `dof + i`: per rotation step one cross product of its axis scaled by its angle's
-    /// rate.
+    /// variable `dof + i` (`dof`: the length of `q`): per rotation step one cross product of its
+    /// axis scaled by its angle's rate.
     pub fn twist(&self, g: &mut ExprGraph, p: [ExprId; 3], dof: usize) -> [ExprId; 6] {
         let zero = g.constant(0.0);
         let mut twist = [zero; 6];
@@ -147,23 +188,60 @@ impl Differential {
                         }
                     }
                 }
+                Contribution::Free { axes, origin, column, sign } => {
+                    // The child's velocity and angular velocity, from its own axes to base axes.
+                    let k = g.constant(*sign);
+                    let rates: [[ExprId; 3]; 2] = std::array::from_fn(|part| {
+                        std::array::from_fn(|a| {
+                            let qd = g.var(dof + column + 3 * part + a);
+                            g.mul(k, qd)
+                        })
+                    });
+                    let along = |g: &mut ExprGraph, rates: [ExprId; 3]| -> [ExprId; 3] {
+                        std::array::from_fn(|r| {
+                            let mut sum = g.constant(0.0);
+                            for a in 0..3 {
+                                let term = g.mul(rates[a], axes[a][r]);
+                                sum = g.add(sum, term);
+                            }
+                            sum
+                        })
+                    };
+                    let v = along(g, rates[0]);
+                    let w = along(g, rates[1]);
+                    let arm = sub3(g, p, *origin);
+                    let turn = cross(g, w, arm);
+                    for r in 0..3 {
+                        let linear = g.add(v[r], turn[r]);
+                        twist[r] = g.add(twist[r], linear);
+                        twist[r + 3] = g.add(twist[r + 3], w[r]);
+                    }
+                }
             }
         }
         twist
     }
 }
 
+/// The columns of a rotation: the images of the three axes.
+fn columns_of(r: &[[ExprId; 3]; 3]) -> [[ExprId; 3]; 3] {
+    std::array::from_fn(|j| [r[0][j], r[1][j], r[2][j]])
+}
+
 /// The Jacobian and twist in the tip's own axes (Pinocchio's `LOCAL`), from a [`Differential`]
 /// folded over the *inverted* chain (tip to base): there each joint's axis `z'` and origin `o'`
 /// are already in the tip's axes, and a rotation whose (inverted) angle has rate `k'` gives the
 /// tip's origin the velocity `k' z' x o'` and the angular velocity `-k' z'` (a translation, minus
-/// its velocity). That is one cross product per step, where rotating a base-axes column into the
-/// tip's axes takes two matrix products.
+/// its velocity; a floating joint's child axes `a` through `o'`, with sign `s` (`-1` where the
+/// inverted chain meets the joint's own direction), give its linear columns `-s a` and its angular
+/// ones `[s a x o'; -s a]`). These are `LOCAL(T) = [-v + w x p'; -w]` of the inverted chain's own
+/// columns `[v; w]` and translation `p'`. That is one cross product per step, where rotating a
+/// base-axes column into the tip's axes takes two matrix products.
 impl Differential {
     /// The geometric Jacobian in the tip's axes; `self` folded over the inverted chain.
-    pub fn local_jacobian(&self, g: &mut ExprGraph, dof: usize) -> Vec<Column> {
+    pub fn local_jacobian(&self, g: &mut ExprGraph, velocities: usize) -> Vec<Column> {
         let zero = g.constant(0.0);
-        let mut columns = vec![[zero; 6]; dof];
+        let mut columns = vec![[zero; 6]; velocities];
         for contribution in &self.contributions {
             match contribution {
                 Contribution::Rotation { rates, axis, origin } => {
@@ -183,6 +261,18 @@ impl Differential {
                     for (i, v) in velocities {
                         for r in 0..3 {
                             columns[*i][r] = g.sub(columns[*i][r], v[r]);
+                        }
+                    }
+                }
+                Contribution::Free { axes, origin, column, sign } => {
+                    let (k, nk) = (g.constant(*sign), g.constant(-sign));
+                    for (a, axis) in axes.iter().enumerate() {
+                        let turn = cross(g, *axis, *origin);
+                        for r in 0..3 {
+                            let (v, l) = (g.mul(nk, axis[r]), g.mul(k, turn[r]));
+                            columns[column + a][r] = g.add(columns[column + a][r], v);
+                            columns[column + 3 + a][r] = g.add(columns[column + 3 + a][r], l);
+                            columns[column + 3 + a][r + 3] = g.add(columns[column + 3 + a][r + 3], v);
                         }
                     }
                 }
@@ -218,6 +308,35 @@ impl Differential {
                             let term = g.mul(qd, v[r]);
                             twist[r] = g.sub(twist[r], term);
                         }
+                    }
+                }
+                Contribution::Free { axes, origin, column, sign } => {
+                    // Linear rates along -s a, angular rates about -s a through o'.
+                    let nk = g.constant(-sign);
+                    let rates: [[ExprId; 3]; 2] = std::array::from_fn(|part| {
+                        std::array::from_fn(|a| {
+                            let qd = g.var(dof + column + 3 * part + a);
+                            g.mul(nk, qd)
+                        })
+                    });
+                    let along = |g: &mut ExprGraph, rates: [ExprId; 3]| -> [ExprId; 3] {
+                        std::array::from_fn(|r| {
+                            let mut sum = g.constant(0.0);
+                            for a in 0..3 {
+                                let term = g.mul(rates[a], axes[a][r]);
+                                sum = g.add(sum, term);
+                            }
+                            sum
+                        })
+                    };
+                    let v = along(g, rates[0]);
+                    let w = along(g, rates[1]);
+                    // [s a x o'] rate = -(w x o') with w = -s a rate.
+                    let turn = cross(g, *origin, w);
+                    for r in 0..3 {
+                        let linear = g.add(v[r], turn[r]);
+                        twist[r] = g.add(twist[r], linear);
+                        twist[r + 3] = g.add(twist[r + 3], w[r]);
                     }
                 }
             }

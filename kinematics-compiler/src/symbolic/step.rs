@@ -99,6 +99,18 @@ pub enum Step {
     Permute(SignedPerm),
     /// A constant rotation that is not a quarter turn.
     ConstRotate([[f64; 3]; 3]),
+    /// A floating joint's rotation: the matrix of its quaternion, whose nine entries are
+    /// variables the generated code computes first (`quaternion_matrix`). The passes leave it
+    /// where it is; the velocities read the joint's six columns (from `column` on) off the frame
+    /// after it, or for an inverted step (the base's side of the tree) before it.
+    Free {
+        /// The rotation's entries, row-major (variables of the graph).
+        rotation: [[ExprId; 3]; 3],
+        /// The joint's first velocity (Jacobian column).
+        column: usize,
+        /// Whether this is the inverse of the joint's rotation.
+        inverted: bool,
+    },
 }
 
 impl Step {
@@ -109,6 +121,11 @@ impl Step {
             Step::Translate(v) => Step::Translate(v.map(|x| g.neg(x))),
             Step::Permute(p) => Step::Permute(p.inverse()),
             Step::ConstRotate(m) => Step::ConstRotate(std::array::from_fn(|i| std::array::from_fn(|j| m[j][i]))),
+            Step::Free { rotation, column, inverted } => Step::Free {
+                rotation: std::array::from_fn(|i| std::array::from_fn(|j| rotation[j][i])),
+                column: *column,
+                inverted: !inverted,
+            },
         }
     }
 }
@@ -128,6 +145,10 @@ impl Step {
             Step::Permute(p) => p.to_string(),
             Step::ConstRotate(m) => {
                 format!("C({})", m.map(|row| row.map(number_text).join(", ")).join("; "))
+            }
+            Step::Free { rotation, inverted, .. } => {
+                let entries = rotation.map(|row| row.map(|x| expr_text(g, x)).join(", ")).join("; ");
+                format!("F{}({entries})", if *inverted { "'" } else { "" })
             }
         }
     }

@@ -130,6 +130,7 @@ pub fn apply_left(g: &mut ExprGraph, step: &Step, t: &SymTransform) -> SymTransf
             let m = const_mat(g, *m);
             SymTransform { r: mat_mul(g, &m, &t.r), p: mat_vec(g, &m, t.p) }
         }
+        Step::Free { rotation, .. } => SymTransform { r: mat_mul(g, rotation, &t.r), p: mat_vec(g, rotation, t.p) },
     }
 }
 
@@ -150,6 +151,7 @@ pub fn apply_right(g: &mut ExprGraph, t: &SymTransform, step: &Step) -> SymTrans
             let m = const_mat(g, *m);
             SymTransform { r: mat_mul(g, &t.r, &m), p: t.p }
         }
+        Step::Free { rotation, .. } => SymTransform { r: mat_mul(g, &t.r, rotation), p: t.p },
     }
 }
 
