@@ -143,12 +143,71 @@ fn mimic_loop() {
 }
 
 #[test]
-fn floating_and_planar_joints_are_refused_by_name() {
+fn floating_and_planar_joints_take_their_entries_of_q() {
     let text = urdf(
-        &["a", "b", "c"],
-        &[joint("free", "floating", "a", "b", ""), joint("slide", "planar", "a", "c", "")].concat(),
+        &["a", "b", "c", "d"],
+        &[
+            joint("slide", "planar", "a", "b", ""),
+            joint("free", "floating", "b", "c", ""),
+            joint("turn", "revolute", "c", "d", ""),
+        ]
+        .concat(),
     );
-    check(&text, &[&["joint `free`", "`floating` is not supported"], &["joint `slide`", "`planar` is not supported"]]);
+    let tree = parse_source("ok.urdf", &text).unwrap();
+    assert_eq!((tree.dof(), tree.velocity_dof()), (11, 10));
+    assert_eq!(
+        tree.dof_names(),
+        [
+            "slide.x",
+            "slide.y",
+            "slide.theta",
+            "free.x",
+            "free.y",
+            "free.z",
+            "free.qx",
+            "free.qy",
+            "free.qz",
+            "free.qw",
+            "turn"
+        ]
+    );
+    assert_eq!(
+        tree.velocity_names(),
+        ["slide.x", "slide.y", "slide.theta", "free.vx", "free.vy", "free.vz", "free.wx", "free.wy", "free.wz", "turn"]
+    );
+    let columns: Vec<Option<usize>> = tree.velocity_of_entry();
+    assert_eq!(columns[..3], [Some(0), Some(1), Some(2)]);
+    assert!(columns[3..10].iter().all(Option::is_none));
+    assert_eq!(columns[10], Some(9));
+    let id = |name: &str| tree.joint_id(name).unwrap();
+    assert_eq!(
+        [tree.velocity_start(id("slide")), tree.velocity_start(id("free")), tree.velocity_start(id("turn"))],
+        [Some(0), Some(3), Some(9)]
+    );
+    // URDF gives limits to revolute and prismatic joints only: the written ones are not used.
+    assert!(tree.dof_limits()[..10].iter().all(Option::is_none));
+    assert!(tree.dof_limits()[10].is_some());
+    assert_eq!(tree.chain_dofs(&tree.chain("a", "d").unwrap()), (0..11).collect::<Vec<_>>());
+}
+
+#[test]
+fn a_mimic_of_a_planar_or_floating_joint_is_refused_by_name() {
+    let text = urdf(
+        &["a", "b", "c", "d"],
+        &[
+            joint("slide", "planar", "a", "b", ""),
+            joint("follow", "revolute", "b", "c", "<mimic joint=\"slide\"/>"),
+            joint("free", "floating", "c", "d", "<mimic joint=\"follow\"/>"),
+        ]
+        .concat(),
+    );
+    check(
+        &text,
+        &[
+            &["joint `follow`", "mimics joint `slide`, but a planar joint takes several values"],
+            &["joint `free`", "mimics joint `follow`, but a floating joint takes several values"],
+        ],
+    );
 }
 
 #[test]
