@@ -76,7 +76,7 @@ fn rz(angle: f64) -> Isometry3<f64> {
 }
 
 fn dof_index(tree: &KinematicTree, joint: &str) -> usize {
-    tree.dof_names().iter().position(|&n| n == joint).unwrap_or_else(|| panic!("no degree of freedom {joint}"))
+    tree.dof_names().iter().position(|n| n == joint).unwrap_or_else(|| panic!("no degree of freedom {joint}"))
 }
 
 proptest! {

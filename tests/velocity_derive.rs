@@ -15,9 +15,9 @@ pub struct Ur5;
 #[kinematics(
     dh(
         convention = "standard",
-        joint(name = "shoulder", a = 1.0),
-        joint(name = "elbow", a = 1.0),
-        joint(name = "wrist", a = 0.5)
+        row("shoulder", 1.0, 0.0, 0.0, 0.0),
+        row("elbow", 1.0, 0.0, 0.0, 0.0),
+        row("wrist", 0.5, 0.0, 0.0, 0.0)
     ),
     tips("link2", "link3"),
     jacobians
@@ -25,7 +25,7 @@ pub struct Ur5;
 pub struct Planar;
 
 const CONFIGURATIONS: [[f64; 6]; 3] =
-    [[0.3, -1.2, 1.0, 0.4, -0.7, 2.0], [0.0; 6], [-2.9, 0.1, -0.4, 3.0, 1.5707963267948966, -1.0]];
+    [[0.3, -1.2, 1.0, 0.4, -0.7, 2.0], [0.0; 6], [-2.9, 0.1, -0.4, 3.0, std::f64::consts::FRAC_PI_2, -1.0]];
 
 fn reach() -> f64 {
     Ur5::reference().unwrap().tree().reach()

@@ -234,7 +234,7 @@ pub fn velocity_op_counts(
         (format!("pose and Jacobian of {tip}"), count(Request::tip(tip).pose_and_jacobian(frame))?),
         (format!("position Jacobian of {tip}"), count(Request::tip(tip).positions_only().jacobian(frame))?),
         (format!("twist of {tip} (J * qd, J not formed)"), count(Request::tip(tip).twist(frame))?),
-        (format!("J * qd with J formed"), formed),
+        ("J * qd with J formed".to_owned(), formed),
     ])
 }
 

@@ -253,7 +253,6 @@ pub fn stub(input: &syn::DeriveInput, options: Option<&KinematicsInput>, known: 
             });
         }
     }
-    drop(function);
     if names.jacobians {
         let attrs = quote!(#[allow(missing_docs, unused_variables, clippy::missing_panics_doc)]);
         let mut twists = Vec::new();

@@ -137,7 +137,7 @@ pub enum ModelError {
         /// The source.
         source_joint: String,
         /// The type that takes several values.
-        kind: &'static str,
+        kind: SeveralValues,
     },
     /// A fixed joint that claims to mimic another.
     #[error("{element}: a fixed joint cannot mimic another joint")]
@@ -312,5 +312,23 @@ impl LoadError {
             LoadErrorKind::Model(e) => Some(e),
             _ => None,
         }
+    }
+}
+
+/// A joint type that takes several values of `q` (named in [`ModelError::MimicOfSeveral`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SeveralValues {
+    /// A planar joint (three values).
+    Planar,
+    /// A floating joint (seven values).
+    Floating,
+}
+
+impl fmt::Display for SeveralValues {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            SeveralValues::Planar => "planar",
+            SeveralValues::Floating => "floating",
+        })
     }
 }

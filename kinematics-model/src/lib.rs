@@ -41,7 +41,7 @@ pub use angle::{Angle, PiRational};
 pub use description::{
     Description, FLOATING_BASE_JOINT, JointDescription, JointTypeDescription, LimitsDescription, MimicDescription,
 };
-pub use error::{Element, LoadError, LoadErrorKind, ModelError, ModelErrors, UnknownLink};
+pub use error::{Element, LoadError, LoadErrorKind, ModelError, ModelErrors, SeveralValues, UnknownLink};
 pub use exactness::{ExactAngles, RecognisedAngle};
 pub use frame::JacobianFrame;
 pub use joint::{Joint, JointKind, JointMotion, Limits, Link};

@@ -11,7 +11,7 @@
 use std::collections::{BTreeMap, BTreeSet};
 
 use crate::description::{Description, JointDescription, JointTypeDescription};
-use crate::error::{ModelError, ModelErrors};
+use crate::error::{ModelError, ModelErrors, SeveralValues};
 use crate::joint::{Joint, JointKind, JointMotion, Limits, Link, unit_axis};
 use crate::tree::{JointId, KinematicTree, LinkId};
 
@@ -269,10 +269,12 @@ fn check_mimics(d: &Description, errors: &mut Vec<ModelError>) {
             // A mimic follows one value with one value: not a planar or floating joint's several.
             Some(source) if several_values(source.kind) || several_values(j.kind) => {
                 let kind = if several_values(j.kind) { j.kind } else { source.kind };
+                let kind =
+                    if kind == JointTypeDescription::Planar { SeveralValues::Planar } else { SeveralValues::Floating };
                 errors.push(ModelError::MimicOfSeveral {
                     element: j.element.clone(),
                     source_joint: m.joint.clone(),
-                    kind: kind.name(),
+                    kind,
                 })
             }
             Some(_) => {
