@@ -37,7 +37,7 @@ pub fn dot(tree: &KinematicTree) -> String {
     for joint in tree.joints() {
         let value = match joint.motion {
             JointMotion::Fixed => String::new(),
-            JointMotion::Dof(i) => format!(" q[{i}]"),
+            JointMotion::Dof(i) => format!(" {}", crate::inspect::entries(i, joint.kind.positions()).trim_start()),
             JointMotion::Mimic { source, .. } => format!(" mimics {}", tree.joint(source).name),
         };
         let label = format!("{}\n{}{value}", joint.name, joint.kind.name());

@@ -68,12 +68,15 @@ pub fn recognised_angles(tree: &KinematicTree) -> String {
 /// The tree: counts, links, one line per joint (type, parent -> child, axis, limits, where its
 /// value comes from), the DoF order, and the chain from the root to each leaf.
 pub fn describe(tree: &KinematicTree) -> String {
+    // A floating joint's seven entries of `q` are six degrees of freedom.
+    let entries =
+        if tree.dof() == tree.velocity_dof() { String::new() } else { format!(" ({} entries of q)", tree.dof()) };
     let mut out = format!(
-        "robot `{}`: {} links, {} joints, {} degrees of freedom\n",
+        "robot `{}`: {} links, {} joints, {} degrees of freedom{entries}\n",
         tree.name(),
         tree.links().len(),
         tree.joints().len(),
-        tree.dof()
+        tree.velocity_dof()
     );
     out += &format!("root link: {}\n", tree.link(tree.root()).name);
     let links: Vec<&str> = tree.links().iter().map(|l| l.name.as_str()).collect();
@@ -95,7 +98,7 @@ pub fn describe(tree: &KinematicTree) -> String {
         }
         match joint.motion {
             JointMotion::Fixed => {}
-            JointMotion::Dof(i) => line += &format!("  q[{i}]"),
+            JointMotion::Dof(i) => line += &entries(i, joint.kind.positions()),
             JointMotion::Mimic { source, dof, multiplier, offset } => {
                 line += &format!(
                     "  mimics {} = {} * q[{dof}] + {}",
@@ -130,6 +133,11 @@ pub fn describe(tree: &KinematicTree) -> String {
         );
     }
     out
+}
+
+/// The entries of `q` a joint takes: `  q[3]`, or `  q[3..10]` for a floating joint's seven.
+pub fn entries(first: usize, count: usize) -> String {
+    if count == 1 { format!("  q[{first}]") } else { format!("  q[{first}..{}]", first + count) }
 }
 
 #[cfg(test)]
