@@ -33,7 +33,7 @@ impl Description {
     /// use kinematics_model::{Description, KinematicTree, urdf::parse_urdf};
     /// let urdf = r#"<robot name="r"><link name="trunk"/><link name="leg"/>
     ///   <joint name="hip" type="revolute"><parent link="trunk"/><child link="leg"/>
-    ///   <limit lower="-1" upper="1"/></joint></robot>"#;
+    ///   <limit lower="-1" upper="1" effort="1" velocity="1"/></joint></robot>"#;
     /// let floating = parse_urdf(urdf)?.with_floating_base("world");
     /// let tree = KinematicTree::from_description(&floating).unwrap();
     /// assert_eq!(tree.link(tree.root()).name, "world");
