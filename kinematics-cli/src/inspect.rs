@@ -69,10 +69,10 @@ pub fn recognised_angles(tree: &KinematicTree) -> String {
 /// value comes from), the DoF order, and the chain from the root to each leaf.
 pub fn describe(tree: &KinematicTree) -> String {
     // A floating joint's seven entries of `q` are six degrees of freedom.
-    let entries =
+    let q_entries =
         if tree.dof() == tree.velocity_dof() { String::new() } else { format!(" ({} entries of q)", tree.dof()) };
     let mut out = format!(
-        "robot `{}`: {} links, {} joints, {} degrees of freedom{entries}\n",
+        "robot `{}`: {} links, {} joints, {} degrees of freedom{q_entries}\n",
         tree.name(),
         tree.links().len(),
         tree.joints().len(),
