@@ -14,6 +14,7 @@ use std::path::Path;
 
 use kinematics_compiler::emit::{EmitOptions, emit_function};
 use kinematics_compiler::{Request, compile};
+use kinematics_model::JacobianFrame;
 
 fn ident(name: &str) -> String {
     let s: String =
@@ -42,15 +43,26 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         let leaves: Vec<String> = tree.leaves().map(|l| tree.link(l).name.clone()).collect();
         let mut functions = Vec::new();
         let mut tips = String::new();
+        let nv = tree.velocity_dof();
         for leaf in &leaves {
             let pose = compile(&tree, &Request::tip(leaf))?;
             let position = compile(&tree, &Request::tip(leaf).positions_only())?;
             let (pose_fn, position_fn) = (format!("{}_pose", ident(leaf)), format!("{}_position", ident(leaf)));
             functions.push(emit_function(&pose, &EmitOptions::named(&pose_fn)));
             functions.push(emit_function(&position, &EmitOptions::named(&position_fn)));
+            // The Jacobian in both frames, and the pose again on dual numbers: the generated
+            // pose's own derivatives, a witness that shares no Jacobian code.
+            let (jacobian_fn, local_fn) =
+                (format!("{}_jacobian", ident(leaf)), format!("{}_jacobian_local", ident(leaf)));
+            for (frame, name) in [(JacobianFrame::LocalWorldAligned, &jacobian_fn), (JacobianFrame::Local, &local_fn)] {
+                let jacobian = compile(&tree, &Request::tip(leaf).jacobian(frame))?;
+                functions.push(emit_function(&jacobian, &EmitOptions::named(name)));
+            }
             writeln!(
                 tips,
-                "Tip {{ link: {leaf:?}, pose: |q| {module}::{pose_fn}::<f64>(arr(q)), pose_f32: |q| {module}::{pose_fn}::<f32>(arr(q)), position: |q| {module}::{position_fn}::<f64>(arr(q)) }},"
+                "Tip {{ link: {leaf:?}, pose: |q| {module}::{pose_fn}::<f64>(arr(q)), pose_f32: |q| {module}::{pose_fn}::<f32>(arr(q)), position: |q| {module}::{position_fn}::<f64>(arr(q)), \
+                 jacobian: |q| columns({module}::{jacobian_fn}::<f64>(arr(q))), jacobian_local: |q| columns({module}::{local_fn}::<f64>(arr(q))), \
+                 jacobian_by_duals: |q, d| dual::jacobian::<{n}, {nv}>(|x| {module}::{pose_fn}::<dual::Dual<{nv}>>(x), q, d) }},"
             )?;
         }
         let key = if file.ends_with(".urdf") { "urdf" } else { "dh" };

@@ -5,6 +5,9 @@
 //! Being a workspace member, this crate also puts the generated code through the workspace's
 //! `cargo clippy -D warnings`: the emitted code must be clippy-clean in a user's crate.
 
+pub mod differences;
+pub mod dual;
+
 pub use kinematics::Pose;
 
 /// One generated leaf-link function set.
@@ -17,6 +20,18 @@ pub struct Tip {
     pub pose_f32: fn(&[f32]) -> Pose<f32>,
     /// Its position, `f64`.
     pub position: fn(&[f64]) -> [f64; 3],
+    /// Its generated geometric Jacobian (`LOCAL_WORLD_ALIGNED`), one column per velocity.
+    pub jacobian: fn(&[f64]) -> Vec<[f64; 6]>,
+    /// The same in the tip's axes (`LOCAL`).
+    pub jacobian_local: fn(&[f64]) -> Vec<[f64; 6]>,
+    /// The Jacobian of the generated pose run on dual numbers, seeded with the directions given
+    /// ([`dual::directions`]).
+    pub jacobian_by_duals: fn(&[f64], &[Vec<f64>]) -> Vec<[f64; 6]>,
+}
+
+/// A generated Jacobian's columns (`[row][column]` in, one `[linear; angular]` per column out).
+pub fn columns<const V: usize>(jacobian: [[f64; V]; 6]) -> Vec<[f64; 6]> {
+    (0..V).map(|c| std::array::from_fn(|r| jacobian[r][c])).collect()
 }
 
 /// The generated functions of one robot file.

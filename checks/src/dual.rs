@@ -1,0 +1,168 @@
+//! Forward-mode dual numbers, and the Jacobian they give when run through a generated pose.
+//!
+//! A [`Dual`] carries a value and its derivatives along `N` directions. Generated functions are
+//! generic over `kinematics::Real`, so a generated *pose* evaluated on duals yields the pose's
+//! derivatives with no Jacobian code at all: a witness independent of the compiler's Jacobian and
+//! of the runtime reference's. Written here from the definition: `(a + a' e)(b + b' e) = ab +
+//! (a'b + ab') e`, `sin(a + a' e) = sin a + a' cos a e`.
+
+use std::ops::{Add, Div, Mul, Neg, Sub};
+
+use kinematics::{Pose, Real};
+
+/// A number with its derivatives along `N` directions.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Dual<const N: usize> {
+    /// The value.
+    pub value: f64,
+    /// Its derivative along each direction.
+    pub grad: [f64; N],
+}
+
+impl<const N: usize> Dual<N> {
+    /// A constant: every derivative zero.
+    pub fn constant(value: f64) -> Self {
+        Dual { value, grad: [0.0; N] }
+    }
+}
+
+impl<const N: usize> Add for Dual<N> {
+    type Output = Self;
+    fn add(self, rhs: Self) -> Self {
+        Dual { value: self.value + rhs.value, grad: std::array::from_fn(|i| self.grad[i] + rhs.grad[i]) }
+    }
+}
+
+impl<const N: usize> Sub for Dual<N> {
+    type Output = Self;
+    fn sub(self, rhs: Self) -> Self {
+        Dual { value: self.value - rhs.value, grad: std::array::from_fn(|i| self.grad[i] - rhs.grad[i]) }
+    }
+}
+
+impl<const N: usize> Mul for Dual<N> {
+    type Output = Self;
+    fn mul(self, rhs: Self) -> Self {
+        Dual {
+            value: self.value * rhs.value,
+            grad: std::array::from_fn(|i| self.grad[i] * rhs.value + self.value * rhs.grad[i]),
+        }
+    }
+}
+
+impl<const N: usize> Div for Dual<N> {
+    type Output = Self;
+    fn div(self, rhs: Self) -> Self {
+        let value = self.value / rhs.value;
+        Dual { value, grad: std::array::from_fn(|i| (self.grad[i] - value * rhs.grad[i]) / rhs.value) }
+    }
+}
+
+impl<const N: usize> Neg for Dual<N> {
+    type Output = Self;
+    fn neg(self) -> Self {
+        Dual { value: -self.value, grad: self.grad.map(|g| -g) }
+    }
+}
+
+impl<const N: usize> Real for Dual<N> {
+    fn from_f64(x: f64) -> Self {
+        Dual::constant(x)
+    }
+
+    fn sin_cos(self) -> (Self, Self) {
+        // The platform's sine and cosine: the values are compared with tolerances, not bits.
+        let (s, c) = self.value.sin_cos();
+        (Dual { value: s, grad: self.grad.map(|g| g * c) }, Dual { value: c, grad: self.grad.map(|g| -g * s) })
+    }
+}
+
+/// The geometric Jacobian (`LOCAL_WORLD_ALIGNED`: rows the derivative of the translation, then the
+/// angular velocity `w` with `dR/dt = [w]x R`) of `pose` at `q` along each of the `V` directions
+/// in `directions` (each a vector of `N` entries: how `q` moves per unit of that velocity), one
+/// column each. The angular velocity is the skew part of `dR R^T`, averaged from both triangles.
+///
+/// ```
+/// use kinematics::{Pose, Real};
+/// use kinematics_checks::dual::{Dual, jacobian};
+/// // A planar 2R arm with unit links, written by hand.
+/// fn arm<T: Real>(q: &[T; 2]) -> Pose<T> {
+///     let (s1, c1) = q[0].sin_cos();
+///     let (s12, c12) = (q[0] + q[1]).sin_cos();
+///     let (zero, one) = (T::from_f64(0.0), T::from_f64(1.0));
+///     Pose { rotation: [[c12, -s12, zero], [s12, c12, zero], [zero, zero, one]], translation: [c1 + c12, s1 + s12, zero] }
+/// }
+/// let columns = jacobian::<2, 2>(|x| arm(x), &[0.0, std::f64::consts::FRAC_PI_2], &[vec![1.0, 0.0], vec![0.0, 1.0]]);
+/// assert!((columns[0][0] + 1.0).abs() < 1e-15 && (columns[0][1] - 1.0).abs() < 1e-15);
+/// assert!((columns[1][0] + 1.0).abs() < 1e-15 && (columns[1][5] - 1.0).abs() < 1e-15);
+/// ```
+///
+/// # Panics
+///
+/// If `q` has other than `N` values or `directions` other than `V` vectors of `N` (a test's bug).
+pub fn jacobian<const N: usize, const V: usize>(
+    pose: impl Fn(&[Dual<V>; N]) -> Pose<Dual<V>>,
+    q: &[f64],
+    directions: &[Vec<f64>],
+) -> Vec<[f64; 6]> {
+    assert!(q.len() == N && directions.len() == V && directions.iter().all(|d| d.len() == N), "shapes");
+    let x: [Dual<V>; N] =
+        std::array::from_fn(|i| Dual { value: q[i], grad: std::array::from_fn(|v| directions[v][i]) });
+    let p = pose(&x);
+    (0..V)
+        .map(|v| {
+            let r = |a: usize, b: usize| p.rotation[a][b].value;
+            let dr = |a: usize, b: usize| p.rotation[a][b].grad[v];
+            // M = dR R^T, skew for a rotation: w = (M21, M02, M10).
+            let m = |a: usize, b: usize| (0..3).map(|k| dr(a, k) * r(b, k)).sum::<f64>();
+            [
+                p.translation[0].grad[v],
+                p.translation[1].grad[v],
+                p.translation[2].grad[v],
+                (m(2, 1) - m(1, 2)) / 2.0,
+                (m(0, 2) - m(2, 0)) / 2.0,
+                (m(1, 0) - m(0, 1)) / 2.0,
+            ]
+        })
+        .collect()
+}
+
+/// How `q` moves per unit of each velocity of `tree` at `q`: a joint's own entry for a velocity
+/// of one entry; for a floating joint's linear velocities the child's axes (the columns of its
+/// rotation) in its position entries, for its angular ones `quaternion * (e_k / 2, 0)` in its
+/// quaternion entries (the derivative of `quaternion * exp(t e_k / 2)`, Pinocchio's free-flyer).
+pub fn directions(tree: &kinematics::KinematicTree, q: &[f64]) -> Vec<Vec<f64>> {
+    let n = tree.dof();
+    let mut out = vec![vec![0.0; n]; tree.velocity_dof()];
+    for (entry, column) in tree.velocity_of_entry().into_iter().enumerate() {
+        if let Some(c) = column {
+            out[c][entry] = 1.0;
+        }
+    }
+    for joint in tree.floating_joints() {
+        let (kinematics::model::JointMotion::Dof(s), Some(c)) = (tree.joint(joint).motion, tree.velocity_start(joint))
+        else {
+            continue;
+        };
+        let [x, y, z, w] = [q[s + 3], q[s + 4], q[s + 5], q[s + 6]];
+        let rotation = kinematics::quaternion_matrix(x, y, z, w);
+        for k in 0..3 {
+            for a in 0..3 {
+                out[c + k][s + a] = rotation[a][k];
+            }
+            // (x, y, z, w) * (e_k / 2, 0), Hamilton product, kept at the quaternion's length
+            // (the rotation depends on its direction only).
+            let mut e = [0.0; 3];
+            e[k] = 0.5;
+            let [bx, by, bz] = e;
+            let product = [
+                w * bx + y * bz - z * by,
+                w * by - x * bz + z * bx,
+                w * bz + x * by - y * bx,
+                -x * bx - y * by - z * bz,
+            ];
+            out[c + 3 + k][s + 3..s + 7].copy_from_slice(&product);
+        }
+    }
+    out
+}
