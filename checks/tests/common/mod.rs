@@ -1,5 +1,5 @@
 //! Helpers shared by the agreement tests: robot paths, reach, configurations, pose distances.
-#![allow(dead_code)]
+#![allow(dead_code, unused_imports)] // each test uses some of the helpers
 
 use kinematics::Pose;
 use kinematics::model::KinematicTree;
