@@ -145,12 +145,15 @@ fn write_random_robots(out: &Path) -> Result<(), Box<dyn std::error::Error>> {
             .map_err(|e| format!("random robot {}: {e}\n{}", robot.file, robot.text))?;
         let ty = type_name(&robot.name);
         let text_expr = format!("include_str!(concat!(env!(\"OUT_DIR\"), \"/random/{}\"))", robot.file);
+        // Every robot with tips and `f64` functions gets its tips' velocities, checked against the
+        // runtime reference and dual numbers through its generated pose.
+        let velocities = robot.f64 && !robot.tips.is_empty();
         let spec = RobotSpec {
             tree: &tree,
             base: robot.base.clone(),
             tips: robot.tips.clone(),
             positions: robot.positions,
-            jacobians: false,
+            jacobians: velocities,
             floating_base: None,
             scalars: Scalars { f64: robot.f64, f32: robot.f32 },
             krate: "::kinematics".parse()?,
@@ -230,11 +233,16 @@ fn write_random_robots(out: &Path) -> Result<(), Box<dyn std::error::Error>> {
         };
         writeln!(
             registry,
-            "RandomRobot {{ name: {:?}, file: {:?}, trig: {trig:?}, text: {text_expr}, consts: TraitConsts {{ robot: {ty}::ROBOT, base: {ty}::BASE, dof: {ty}::DOF, joint_names: &{ty}::JOINT_NAMES, joint_limits: &{ty}::JOINT_LIMITS, links: &{ty}::LINK_NAMES, tips: &{ty}::TIPS }}, f64: {}, f32: {}, tip_poses_into: <{ty} as ::kinematics::Kinematics>::tip_poses_into, link_poses_into: <{ty} as ::kinematics::Kinematics>::link_poses_into, reference: {ty}::reference, trait_reference: <{ty} as ::kinematics::ReferenceModel>::reference, trait_consts: trait_consts::<{ty}> }},",
+            "RandomRobot {{ name: {:?}, file: {:?}, trig: {trig:?}, text: {text_expr}, consts: TraitConsts {{ robot: {ty}::ROBOT, base: {ty}::BASE, dof: {ty}::DOF, joint_names: &{ty}::JOINT_NAMES, joint_limits: &{ty}::JOINT_LIMITS, links: &{ty}::LINK_NAMES, tips: &{ty}::TIPS }}, f64: {}, f32: {}, tip_poses_into: <{ty} as ::kinematics::Kinematics>::tip_poses_into, link_poses_into: <{ty} as ::kinematics::Kinematics>::link_poses_into, reference: {ty}::reference, trait_reference: <{ty} as ::kinematics::ReferenceModel>::reference, trait_consts: trait_consts::<{ty}>, velocities: {} }},",
             robot.name,
             robot.file,
             typed(robot.f64, "", "f64"),
             typed(robot.f32, "_f32", "f32"),
+            if velocities {
+                velocity_entry(&ty, robot.tips.len(), tree.dof(), tree.velocity_dof())
+            } else {
+                "None".to_owned()
+            },
         )?;
     }
     writeln!(
@@ -243,6 +251,27 @@ fn write_random_robots(out: &Path) -> Result<(), Box<dyn std::error::Error>> {
     )?;
     std::fs::write(out.join("random_robots.rs"), code)?;
     Ok(())
+}
+
+/// The registry entry of a random robot's velocity functions (`k` tips, `n` entries of `q`, `nv`
+/// velocities).
+fn velocity_entry(ty: &str, k: usize, n: usize, nv: usize) -> String {
+    let d = format!("dual::Dual<{nv}>");
+    if k == 1 {
+        format!(
+            "Some(Velocities {{ jacobians: |q| vec![columns({ty}::tip_jacobian(arr(q)))], jacobians_local: |q| vec![columns({ty}::tip_jacobian_local(arr(q)))], \
+             poses_and_jacobians: |q| {{ let (p, j) = {ty}::tip_pose_and_jacobian(arr(q)); vec![(p, columns(j))] }}, \
+             twists: |q, qd| vec![{ty}::tip_twist(arr(q), arr(qd))], twists_local: |q, qd| vec![{ty}::tip_twist_local(arr(q), arr(qd))], \
+             by_duals: |q, d| vec![dual::jacobian::<{n}, {nv}>(|x| {ty}::tip_pose_generic::<{d}>(x), q, d)] }})"
+        )
+    } else {
+        format!(
+            "Some(Velocities {{ jacobians: |q| {ty}::tip_jacobians(arr(q)).into_iter().map(columns).collect(), jacobians_local: |q| {ty}::tip_jacobians_local(arr(q)).into_iter().map(columns).collect(), \
+             poses_and_jacobians: |q| {ty}::tip_poses_and_jacobians(arr(q)).into_iter().map(|(p, j)| (p, columns(j))).collect(), \
+             twists: |q, qd| {ty}::tip_twists(arr(q), arr(qd)).to_vec(), twists_local: |q, qd| {ty}::tip_twists_local(arr(q), arr(qd)).to_vec(), \
+             by_duals: |q, d| dual::jacobians::<{n}, {nv}, {k}>(|x| {ty}::tip_poses_generic::<{d}>(x), q, d) }})"
+        )
+    }
 }
 
 /// A DH table as the inline `dh(...)` attribute form.

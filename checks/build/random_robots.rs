@@ -135,6 +135,8 @@ enum Kind {
     Continuous,
     Prismatic,
     Fixed,
+    Planar,
+    Floating,
 }
 
 impl Kind {
@@ -144,7 +146,14 @@ impl Kind {
             Kind::Continuous => "continuous",
             Kind::Prismatic => "prismatic",
             Kind::Fixed => "fixed",
+            Kind::Planar => "planar",
+            Kind::Floating => "floating",
         }
+    }
+
+    /// Whether the joint takes several values of `q` (no mimic follows or is one).
+    fn several(self) -> bool {
+        matches!(self, Kind::Planar | Kind::Floating)
     }
 }
 
@@ -289,7 +298,7 @@ fn urdf_text(name: &str, joints: &[Joint]) -> String {
             Kind::Prismatic => {
                 let _ = writeln!(text, "    <limit lower=\"-0.3\" upper=\"0.6\" effort=\"10\" velocity=\"2\"/>");
             }
-            Kind::Continuous | Kind::Fixed => {}
+            Kind::Continuous | Kind::Fixed | Kind::Planar | Kind::Floating => {}
         }
         if let Some((source, m, o)) = &j.mimic {
             let _ = writeln!(text, "    <mimic joint=\"j{source}\" multiplier=\"{m}\" offset=\"{o}\"/>");
@@ -639,5 +648,32 @@ pub fn generate() -> Vec<RandomRobot> {
     let off = |o: &mut Options| o.exact_angles = false;
     dh(&mut rng, "dh_standard_literal", 6, false, false, &off);
     dh(&mut rng, "dh_modified_literal", 6, true, false, &off);
+    // Floating and planar joints (drawn last, so the robots above stay as they were): a free-flying
+    // root under random trees, a floating joint mid-chain, planar joints with skewed normals.
+    let shapes: [(&'static str, usize, &[(usize, Kind)], bool); 7] = [
+        ("floating_root", 6, &[(0, Kind::Floating)], false),
+        ("floating_root", 9, &[(0, Kind::Floating)], false),
+        ("floating_root", 4, &[(0, Kind::Floating)], true),
+        ("floating_mid", 7, &[(3, Kind::Floating)], true),
+        ("planar", 5, &[(0, Kind::Planar)], true),
+        ("planar", 8, &[(1, Kind::Planar), (4, Kind::Planar)], false),
+        ("planar_and_floating", 9, &[(0, Kind::Floating), (2, Kind::Planar)], false),
+    ];
+    for (shape, n, at, chain) in shapes {
+        let parents = if chain { chain_parents(n) } else { random_parents(&mut rng, n) };
+        let mut j = tree_with_parents(&mut rng, &parents, &Style { mimic: 0.3, skewed: 0.4, ..PLAIN });
+        for &(k, kind) in at {
+            j[k].kind = kind;
+        }
+        // A mimic follows one value with one value.
+        for k in 0..j.len() {
+            let follows_several = j[k].mimic.as_ref().is_some_and(|(source, ..)| j[*source].kind.several());
+            if j[k].kind.several() || follows_several {
+                j[k].mimic = None;
+            }
+        }
+        let text = urdf_text(shape, &j);
+        push(&mut rng, shape, text, "urdf", urdf_links(&j), leaves(&j), &keep);
+    }
     robots
 }

@@ -77,6 +77,13 @@ impl<const N: usize> Real for Dual<N> {
     }
 }
 
+/// For code generated with `trig = "std"`: the same sine and cosine (the platform's).
+impl<const N: usize> kinematics::StdTrig for Dual<N> {
+    fn sin_cos_std(self) -> (Self, Self) {
+        self.sin_cos()
+    }
+}
+
 /// The geometric Jacobian (`LOCAL_WORLD_ALIGNED`: rows the derivative of the translation, then the
 /// angular velocity `w` with `dR/dt = [w]x R`) of `pose` at `q` along each of the `V` directions
 /// in `directions` (each a vector of `N` entries: how `q` moves per unit of that velocity), one
@@ -105,10 +112,28 @@ pub fn jacobian<const N: usize, const V: usize>(
     q: &[f64],
     directions: &[Vec<f64>],
 ) -> Vec<[f64; 6]> {
+    jacobians::<N, V, 1>(|x| [pose(x)], q, directions).remove(0)
+}
+
+/// [`jacobian`] for a function computing `K` poses at once (`tip_poses_generic`): one Jacobian
+/// per pose.
+///
+/// # Panics
+///
+/// As [`jacobian`].
+pub fn jacobians<const N: usize, const V: usize, const K: usize>(
+    poses: impl Fn(&[Dual<V>; N]) -> [Pose<Dual<V>>; K],
+    q: &[f64],
+    directions: &[Vec<f64>],
+) -> Vec<Vec<[f64; 6]>> {
     assert!(q.len() == N && directions.len() == V && directions.iter().all(|d| d.len() == N), "shapes");
     let x: [Dual<V>; N] =
         std::array::from_fn(|i| Dual { value: q[i], grad: std::array::from_fn(|v| directions[v][i]) });
-    let p = pose(&x);
+    poses(&x).iter().map(columns).collect()
+}
+
+/// One column per direction: the translation's derivative, and `w` from `dR R^T`.
+fn columns<const V: usize>(p: &Pose<Dual<V>>) -> Vec<[f64; 6]> {
     (0..V)
         .map(|v| {
             let r = |a: usize, b: usize| p.rotation[a][b].value;

@@ -225,11 +225,29 @@ pub struct RandomRobot {
     pub trait_reference: fn() -> Result<kinematics::ReferenceFk, kinematics::LoadError>,
     /// The trait's constants.
     pub trait_consts: fn() -> TraitConsts,
+    /// The tips' velocity functions (`f64`; robots with tips and `f64` functions).
+    pub velocities: Option<Velocities>,
+}
+
+/// A random robot's velocity functions, per tip, through slices; Jacobians as columns.
+pub struct Velocities {
+    /// `tip_jacobian(s)` (`LOCAL_WORLD_ALIGNED`).
+    pub jacobians: fn(&[f64]) -> Vec<Vec<[f64; 6]>>,
+    /// `tip_jacobian(s)_local`.
+    pub jacobians_local: fn(&[f64]) -> Vec<Vec<[f64; 6]>>,
+    /// `tip_pose(s)_and_jacobian(s)`.
+    pub poses_and_jacobians: fn(&[f64]) -> Vec<(Pose<f64>, Vec<[f64; 6]>)>,
+    /// `tip_twist(s)` at the rates given.
+    pub twists: fn(&[f64], &[f64]) -> Vec<[f64; 6]>,
+    /// `tip_twist(s)_local`.
+    pub twists_local: fn(&[f64], &[f64]) -> Vec<[f64; 6]>,
+    /// `tip_pose(s)_generic` on dual numbers seeded with the directions given.
+    pub by_duals: fn(&[f64], &[Vec<f64>]) -> Vec<Vec<[f64; 6]>>,
 }
 
 /// The random robots, compiled (`build/random_robots.rs` generates them).
 pub mod random {
-    use super::{RandomRobot, TraitConsts, Typed, arr, batch, lanes, trait_consts};
+    use super::{RandomRobot, TraitConsts, Typed, Velocities, arr, batch, columns, dual, lanes, trait_consts};
 
     include!(concat!(env!("OUT_DIR"), "/random_robots.rs"));
 }

@@ -3,7 +3,9 @@
 //! from the same text with the same exactness policy: every generated function (link poses and
 //! positions, tip poses and positions, their `_f32` twins, the `Kinematics` trait's methods through
 //! slices, both `reference()`s) and every constant, on many configurations, held to
-//! `kinematics::AGREEMENT_TOLERANCE` (f64) and `AGREEMENT_TOLERANCE_F32` (f32) by `Pose::deviation`.
+//! `kinematics::AGREEMENT_TOLERANCE` (f64) and `AGREEMENT_TOLERANCE_F32` (f32) by `Pose::deviation`;
+//! and the tips' velocities (Jacobians in both frames, pose and Jacobian, twists) against the
+//! runtime reference, the generated pose on dual numbers and extrapolated differences.
 #![allow(clippy::panic, clippy::unwrap_used, clippy::expect_used)] // test helpers fail loudly
 
 #[allow(dead_code)] // the build script uses all of it; the tests the set and its options
@@ -231,6 +233,9 @@ fn check_robot(robot: &RandomRobot) -> Faults {
         }
     }
     faults.lanes_checked = check_batches_and_lanes(robot, &tree, &mut faults);
+    if let Some(velocities) = &robot.velocities {
+        check_velocities(robot, velocities, &fk, &mut faults);
+    }
     // Slices of the wrong length are errors, not panics.
     let q = vec![0.0; robot.consts.dof + 1];
     let mut out = vec![zero; robot.consts.links.len()];
@@ -246,6 +251,96 @@ fn check_robot(robot: &RandomRobot) -> Faults {
         faults.fail("tip_poses_into accepts an output one too long".to_owned());
     }
     faults
+}
+
+/// Configurations the velocities are checked on (the first few also against differences).
+const VELOCITY_CASES: usize = 300;
+
+/// A runtime Jacobian as columns.
+fn columns(j: &nalgebra::Matrix6xX<f64>) -> Vec<[f64; 6]> {
+    (0..j.ncols()).map(|c| std::array::from_fn(|r| j[(r, c)])).collect()
+}
+
+/// The largest difference of two Jacobians (columns of `[linear; angular]`), linear rows divided
+/// by `reach`; infinite for a value that is not finite or a different number of columns.
+fn jacobian_deviation(a: &[[f64; 6]], b: &[[f64; 6]], reach: f64) -> f64 {
+    if a.len() != b.len() {
+        return f64::INFINITY;
+    }
+    let mut worst = 0.0f64;
+    for (x, y) in a.iter().zip(b) {
+        for r in 0..6 {
+            if !(x[r].is_finite() && y[r].is_finite()) {
+                return f64::INFINITY;
+            }
+            worst = worst.max((x[r] - y[r]).abs() / if r < 3 { reach } else { 1.0 });
+        }
+    }
+    worst
+}
+
+/// The tips' generated velocities against the runtime reference (relative to the robot's own
+/// base, wherever it is), the generated pose on dual numbers, extrapolated differences of the
+/// generated pose (a few configurations), and each other: the pose-and-Jacobian pair against the
+/// pose and the Jacobian, the twists against the Jacobians times the rates.
+fn check_velocities(robot: &RandomRobot, v: &kinematics_checks::Velocities, fk: &ReferenceFk, faults: &mut Faults) {
+    use kinematics::model::JacobianFrame;
+    let tree = fk.tree();
+    let reach = tree.reach();
+    let tol = AGREEMENT_TOLERANCE;
+    let base = robot.consts.base;
+    let tip_poses = robot.f64.as_ref().and_then(|f| f.tip_poses);
+    for (case, q) in Configurations::new(tree).take(VELOCITY_CASES).enumerate() {
+        let jacobians = (v.jacobians)(&q);
+        let locals = (v.jacobians_local)(&q);
+        let duals = (v.by_duals)(&q, &kinematics_checks::dual::directions(tree, &q));
+        let pairs = (v.poses_and_jacobians)(&q);
+        let qd: Vec<f64> = (0..tree.velocity_dof()).map(|i| ((i * 7 + case) % 11) as f64 / 5.0 - 1.0).collect();
+        let (twists, twists_local) = ((v.twists)(&q, &qd), (v.twists_local)(&q, &qd));
+        let poses = tip_poses.map(|f| f(&q));
+        for (k, tip) in robot.consts.tips.iter().enumerate() {
+            let runtime = columns(&fk.jacobian(&q, base, tip).unwrap());
+            faults.check("tip Jacobian vs runtime", tip, jacobian_deviation(&jacobians[k], &runtime, reach), tol, &q);
+            let local = columns(&fk.jacobian_in(&q, base, tip, JacobianFrame::Local).unwrap());
+            faults.check("LOCAL Jacobian vs runtime", tip, jacobian_deviation(&locals[k], &local, reach), tol, &q);
+            faults.check(
+                "tip Jacobian vs dual numbers",
+                tip,
+                jacobian_deviation(&jacobians[k], &duals[k], reach),
+                tol,
+                &q,
+            );
+            faults.check(
+                "pose-and-Jacobian's Jacobian",
+                tip,
+                jacobian_deviation(&pairs[k].1, &jacobians[k], reach),
+                tol,
+                &q,
+            );
+            if let Some(poses) = &poses {
+                let pose = poses[k].to_isometry();
+                faults.check("pose-and-Jacobian's pose", tip, pairs[k].0.deviation(&pose, reach), tol, &q);
+            }
+            for (twist, jacobian, what) in
+                [(&twists[k], &jacobians[k], "twist"), (&twists_local[k], &locals[k], "LOCAL twist")]
+            {
+                let product: [f64; 6] = std::array::from_fn(|r| jacobian.iter().zip(&qd).map(|(c, x)| c[r] * x).sum());
+                // The products of a Jacobian of `n` columns by rates up to 1 add `n` roundings.
+                let scale = (tree.velocity_dof().max(1)) as f64;
+                faults.check(what, tip, jacobian_deviation(&[*twist], &[product], reach) / scale, tol, &q);
+            }
+            if case < 3
+                && let Some(f) = tip_poses
+            {
+                let differences = kinematics_checks::differences::jacobian(tree, |x| f(x)[k], &q);
+                let d = jacobian_deviation(&jacobians[k], &differences, reach);
+                faults.check("tip Jacobian vs extrapolated differences", tip, d, tol, &q);
+            }
+        }
+        if faults.list.len() >= 12 {
+            break;
+        }
+    }
 }
 
 /// How many configurations the batches are given: not a multiple of 4 or 8, so the last pack of
@@ -429,6 +524,16 @@ fn the_random_set_covers_every_shape() {
     any("f32 functions only", &|r, _| r.f32 && !r.f64);
     any("f64 functions only", &|r, _| r.f64 && !r.f32);
     any("position functions", &|r, t| r.positions && t.dof() > 0);
+    any("a floating root with tips", &|r, t| {
+        t.joints().first().is_some_and(|j| j.kind == JointKind::Floating) && !r.tips.is_empty() && r.f64
+    });
+    any("a floating joint mid-chain", &|_, t| t.joints().iter().skip(1).any(|j| j.kind == JointKind::Floating));
+    any("a planar joint with a skewed normal", &|_, t| {
+        t.joints().iter().any(|j| j.kind == JointKind::Planar && j.axis.iter().filter(|a| **a != 0.0).count() >= 2)
+    });
+    any("velocities relative to a base that is not the root", &|r, t| {
+        r.f64 && !r.tips.is_empty() && r.base.as_ref().is_some_and(|b| *b != t.link(t.root()).name)
+    });
     // The shape the emitter does not compile yet stays in the set.
     assert!(
         set.iter().any(|r| parse_source_with(&r.file, &r.text, policy(r.exact_angles)).unwrap().links().len() == 2),

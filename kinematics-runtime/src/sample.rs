@@ -17,7 +17,9 @@ pub const SPECIAL_ANGLES: [f64; 5] = [0.0, FRAC_PI_2, -FRAC_PI_2, PI, -PI];
 /// A deterministic stream of configurations (splitmix64, fixed seed): first every joint at each
 /// of the [`SPECIAL_ANGLES`] in turn, then per joint a special angle a quarter of the time, a value
 /// up to 1 beyond the limits a quarter of the time, and a value within them otherwise. Continuous
-/// joints range over [-pi, pi].
+/// joints range over [-pi, pi], and so does every entry of a planar or floating joint; a floating
+/// joint's quaternion that has no length to normalise (all four entries zero, as in the first
+/// configuration) is the identity `(0, 0, 0, 1)` instead, since the reference refuses it.
 ///
 /// ```
 /// use kinematics_runtime::{Configurations, JointLimits};
@@ -32,6 +34,8 @@ pub struct Configurations {
     state: u64,
     ranges: Vec<(f64, f64)>,
     count: usize,
+    /// Where each floating joint's quaternion starts in `q`.
+    quaternions: Vec<usize>,
 }
 
 /// The range of a joint without limits (a continuous joint; documented above).
@@ -53,9 +57,17 @@ fn between(lo: f64, hi: f64, margin: f64, u: f64) -> f64 {
 impl Configurations {
     /// The configurations of a robot's degrees of freedom, in the tree's order.
     pub fn new(tree: &KinematicTree) -> Self {
-        Self::from_ranges(
+        let mut configurations = Self::from_ranges(
             tree.dof_limits().iter().map(|l| range(l.map(|l| (l.lower, l.upper)).unwrap_or(UNLIMITED))).collect(),
-        )
+        );
+        configurations.quaternions = tree
+            .floating_joints()
+            .filter_map(|j| match tree.joint(j).motion {
+                kinematics_model::JointMotion::Dof(start) => Some(start + 3),
+                _ => None,
+            })
+            .collect();
+        configurations
     }
 
     /// The configurations of a compiled robot, from its `JOINT_LIMITS`.
@@ -64,7 +76,7 @@ impl Configurations {
     }
 
     fn from_ranges(ranges: Vec<(f64, f64)>) -> Self {
-        Configurations { state: 0x6b69_6e65_6d61_7469, ranges, count: 0 }
+        Configurations { state: 0x6b69_6e65_6d61_7469, ranges, count: 0, quaternions: Vec::new() }
     }
 
     /// The next configuration as an array (for the generated functions, which take `&[f64; N]`),
@@ -94,18 +106,27 @@ impl Iterator for Configurations {
     fn next(&mut self) -> Option<Vec<f64>> {
         let n = self.count;
         self.count += 1;
-        if let Some(&angle) = SPECIAL_ANGLES.get(n) {
-            return Some(vec![angle; self.ranges.len()]);
-        }
-        let mut q = Vec::with_capacity(self.ranges.len());
-        for i in 0..self.ranges.len() {
-            let (lo, hi) = self.ranges[i];
-            let value = match self.next_u64() % 4 {
-                0 => SPECIAL_ANGLES[(self.next_u64() % 5) as usize],
-                1 => between(lo, hi, 1.0, self.unit()),
-                _ => between(lo, hi, 0.0, self.unit()),
-            };
-            q.push(value);
+        let mut q = match SPECIAL_ANGLES.get(n) {
+            Some(&angle) => vec![angle; self.ranges.len()],
+            None => {
+                let mut q = Vec::with_capacity(self.ranges.len());
+                for i in 0..self.ranges.len() {
+                    let (lo, hi) = self.ranges[i];
+                    let value = match self.next_u64() % 4 {
+                        0 => SPECIAL_ANGLES[(self.next_u64() % 5) as usize],
+                        1 => between(lo, hi, 1.0, self.unit()),
+                        _ => between(lo, hi, 0.0, self.unit()),
+                    };
+                    q.push(value);
+                }
+                q
+            }
+        };
+        for &start in &self.quaternions {
+            let quaternion = &mut q[start..start + 4];
+            if !quaternion.iter().map(|v| v * v).sum::<f64>().is_normal() {
+                quaternion.copy_from_slice(&[0.0, 0.0, 0.0, 1.0]);
+            }
         }
         Some(q)
     }

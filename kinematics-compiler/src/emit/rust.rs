@@ -348,7 +348,10 @@ pub fn emit_function(compiled: &Compiled, options: &EmitOptions) -> TokenStream 
             continue;
         }
         let rows = (0..3).map(|r| {
-            let entries = (0..3).map(|c| var_ident(first + 3 * r + c, (n, nv)));
+            let entries = (0..3).map(|c| {
+                let i = first + 3 * r + c;
+                if schedule.used_vars.contains(&i) { var_ident(i, (n, nv)).into_token_stream() } else { quote!(_) }
+            });
             quote!([#(#entries),*])
         });
         let [x, y, z, qw] = [start, start + 1, start + 2, start + 3].map(Literal::usize_unsuffixed);
