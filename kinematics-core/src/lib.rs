@@ -23,6 +23,7 @@ mod kinematics;
 mod lanes;
 #[cfg(feature = "nalgebra")]
 mod nalgebra;
+mod orientation;
 mod pose;
 mod real;
 pub mod trig;
@@ -32,6 +33,7 @@ pub use error::KinematicsError;
 pub use floating::quaternion_matrix;
 pub use kinematics::{JointLimits, Kinematics, check_output, q_array};
 pub use lanes::{F32x8, F64x4, LaneValue, Lanes};
+pub use orientation::OrientationError;
 pub use pose::{AGREEMENT_TOLERANCE, AGREEMENT_TOLERANCE_F32, Pose};
 pub use real::Real;
 #[cfg(feature = "std")]

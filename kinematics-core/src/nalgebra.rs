@@ -31,6 +31,24 @@ impl<T: RealField + Copy> Pose<T> {
         m
     }
 
+    /// The rotation as nalgebra's unit quaternion (re-orthonormalised).
+    ///
+    /// ```
+    /// use kinematics_core::Pose;
+    /// let pose = Pose::from_rpy([0.0, 0.0, std::f64::consts::FRAC_PI_2], [0.0; 3]);
+    /// let q = pose.unit_quaternion();
+    /// assert!((q.angle() - std::f64::consts::FRAC_PI_2).abs() < 1e-15);
+    /// assert!((pose.rotation3().matrix() - pose.rotation_matrix()).amax() < 1e-15);
+    /// ```
+    pub fn unit_quaternion(&self) -> UnitQuaternion<T> {
+        UnitQuaternion::from_rotation_matrix(&Rotation3::from_matrix_unchecked(self.rotation_matrix()))
+    }
+
+    /// The rotation as nalgebra's rotation matrix (the entries as they are).
+    pub fn rotation3(&self) -> Rotation3<T> {
+        Rotation3::from_matrix_unchecked(self.rotation_matrix())
+    }
+
     /// The isometry (the rotation is re-orthonormalised into a unit quaternion).
     pub fn to_isometry(&self) -> Isometry3<T> {
         let rotation = UnitQuaternion::from_rotation_matrix(&Rotation3::from_matrix_unchecked(self.rotation_matrix()));
@@ -89,5 +107,28 @@ impl<T: RealField + Copy> From<Pose<T>> for Isometry3<T> {
 impl<T: RealField + Copy> From<Pose<T>> for Matrix4<T> {
     fn from(pose: Pose<T>) -> Self {
         pose.to_matrix4()
+    }
+}
+
+/// A pose from an isometry: its rotation matrix and translation.
+///
+/// ```
+/// use kinematics_core::Pose;
+/// let iso = nalgebra::Isometry3::new(nalgebra::Vector3::new(1.0, 2.0, 3.0), nalgebra::Vector3::new(0.0, 0.0, 0.5f64));
+/// let pose = Pose::from(iso);
+/// assert!((pose.to_isometry().rotation.angle() - 0.5).abs() < 1e-15 && pose.translation == [1.0, 2.0, 3.0]);
+/// ```
+impl<T: RealField + Copy> From<Isometry3<T>> for Pose<T> {
+    fn from(iso: Isometry3<T>) -> Self {
+        let m = iso.rotation.to_rotation_matrix().into_inner();
+        let v = iso.translation.vector;
+        Pose {
+            rotation: [
+                [m[(0, 0)], m[(0, 1)], m[(0, 2)]],
+                [m[(1, 0)], m[(1, 1)], m[(1, 2)]],
+                [m[(2, 0)], m[(2, 1)], m[(2, 2)]],
+            ],
+            translation: [v[0], v[1], v[2]],
+        }
     }
 }
