@@ -22,6 +22,7 @@ fn main() {
 type Result<T> = std::result::Result<T, Box<dyn std::error::Error>>;
 
 /// One robot's row of one run.
+#[derive(Clone)]
 struct Row {
     group: String,
     file: String,
@@ -30,6 +31,9 @@ struct Row {
     ops: String,
     /// The same for all link poses.
     ops_all: String,
+    /// The same for the tip's Jacobian (`LOCAL_WORLD_ALIGNED`) and for the pose with it.
+    ops_jacobian: String,
+    ops_pose_and_jacobian: String,
     /// Median ns per configuration (per call for single-configuration bodies), by variant.
     ns: BTreeMap<&'static str, f64>,
     /// Ratios timed in alternation by the benchmark (`kinematics-paired.tsv`), by pair name.
@@ -48,7 +52,12 @@ struct Run {
 
 /// Every variant the benchmark times, and how many configurations one call computes (criterion's
 /// median is per call; the tables show it per configuration).
-const VARIANTS: [(&str, f64); 30] = [
+const VARIANTS: [(&str, f64); 35] = [
+    ("generated_jacobian_f64", 1.0),
+    ("generated_pose_and_jacobian_f64", 1.0),
+    ("runtime_jacobian_f64", 1.0),
+    ("k_jacobian_f64", 1.0),
+    ("generated_twist_f64", 1.0),
     ("generated_pose_f64", 1.0),
     ("generated_pose_f32", 1.0),
     ("generated_position_f64", 1.0),
@@ -132,6 +141,10 @@ fn read_run(root: &Path, name: &'static str, criterion: PathBuf) -> Result<Optio
         let tree = kinematics_model::parse_source(file, &text)?;
         let ops = kinematics_compiler::compile(&tree, &kinematics_compiler::Request::tip(tip))?.op_count();
         let ops_all = kinematics_compiler::compile(&tree, &kinematics_compiler::Request::all_links())?.op_count();
+        let frame = kinematics_model::JacobianFrame::LocalWorldAligned;
+        let ops_jacobian = kinematics_compiler::compile(&tree, &kinematics_compiler::Request::tip(tip).jacobian(frame))?.op_count();
+        let ops_pose_and_jacobian =
+            kinematics_compiler::compile(&tree, &kinematics_compiler::Request::tip(tip).pose_and_jacobian(frame))?.op_count();
         let mut ns = BTreeMap::new();
         for (variant, configurations) in VARIANTS {
             if let Some(v) = median_ns(&criterion, group, variant) {
@@ -145,6 +158,11 @@ fn read_run(root: &Path, name: &'static str, criterion: PathBuf) -> Result<Optio
             dof: tree.dof(),
             ops: format!("{}/{}/{}", ops.sin_cos, ops.mul, ops.add),
             ops_all: format!("{}/{}/{}", ops_all.sin_cos, ops_all.mul, ops_all.add),
+            ops_jacobian: format!("{}/{}/{}", ops_jacobian.sin_cos, ops_jacobian.mul, ops_jacobian.add),
+            ops_pose_and_jacobian: format!(
+                "{}/{}/{}",
+                ops_pose_and_jacobian.sin_cos, ops_pose_and_jacobian.mul, ops_pose_and_jacobian.add
+            ),
             ns,
             paired: paired_text
                 .lines()
@@ -416,8 +434,52 @@ fn run_sections(s: &mut String, run: &Run) {
     ];
     let columns: Vec<&str> = names.iter().map(|n| n.0).collect();
     table(s, &run.rows, &columns, |r, i| paired(r, names[i].1));
+    velocity_section(s, run);
     let _ = writeln!(s);
 }
+
+/// The tip velocities of the arms that have them: medians, and paired ratios.
+fn velocity_section(s: &mut String, run: &Run) {
+    let rows: Vec<Row> = run.rows.iter().filter(|r| r.paired.contains_key(VELOCITY_PAIRS[0].1)).cloned().collect();
+    if rows.is_empty() {
+        return;
+    }
+    let _ = writeln!(
+        s,
+        "
+Tip velocities, f64 (`J`: the generated geometric Jacobian, `LOCAL_WORLD_ALIGNED`; `pose + J`:
+         `tip_pose_and_jacobian`; `runtime J`: `ReferenceFk::jacobian`; `k J`: `k::jacobian` of its serial chain; `twist`:
+         `tip_twist`, against `tip_jacobian` and the product by the rates written by hand). Medians in ns, then
+         paired ratios:
+"
+    );
+    let _ = writeln!(s, "Op counts (`sin_cos` pairs / multiplications / additions):\n");
+    let columns = ["pose", "J", "pose + J"];
+    table(s, &rows, &columns, |r, i| [&r.ops, &r.ops_jacobian, &r.ops_pose_and_jacobian][i].clone());
+    let _ = writeln!(s);
+    let medians = [
+        ("J", "generated_jacobian_f64"),
+        ("pose + J", "generated_pose_and_jacobian_f64"),
+        ("runtime J", "runtime_jacobian_f64"),
+        ("k J", "k_jacobian_f64"),
+        ("twist", "generated_twist_f64"),
+    ];
+    let columns: Vec<&str> = medians.iter().map(|m| m.0).collect();
+    table(s, &rows, &columns, |r, i| fmt(r.ns.get(medians[i].1).copied()));
+    let _ = writeln!(s);
+    let columns: Vec<&str> = VELOCITY_PAIRS.iter().map(|p| p.0).collect();
+    table(s, &rows, &columns, |r, i| paired(r, VELOCITY_PAIRS[i].1));
+}
+
+/// The velocity pairs the summary prints: (column, pair name).
+const VELOCITY_PAIRS: [(&str, &str); 6] = [
+    ("pose + J / pose", "generated_pose_and_jacobian_f64/generated_pose_f64"),
+    ("J / pose", "generated_jacobian_f64/generated_pose_f64"),
+    ("runtime J / pose + J", "runtime_jacobian_f64/generated_pose_and_jacobian_f64"),
+    ("runtime J / J", "runtime_jacobian_f64/generated_jacobian_f64"),
+    ("k J / pose + J", "k_jacobian_f64/generated_pose_and_jacobian_f64"),
+    ("J then J*qd / twist", "jacobian_times_qd_f64/generated_twist_f64"),
+];
 
 /// One of the issue's targets, as a figure measured in one run.
 struct Target {
@@ -468,7 +530,22 @@ fn every_robot(rows: &[Row], name: &str, bound: f64, lowest: bool) -> Option<(St
     Some((format!("worst {v:.2} ({robot}; {count} robots, paired)"), met))
 }
 
-const TARGETS: [Target; 13] = [
+const TARGETS: [Target; 16] = [
+    Target {
+        what: "UR5, Panda, iiwa: pose + Jacobian of the tip at most 1.6x the pose alone (paired)",
+        build: "any",
+        measure: |rows| every_robot(rows, "generated_pose_and_jacobian_f64/generated_pose_f64", 1.6, false),
+    },
+    Target {
+        what: "UR5, Panda, iiwa: pose + Jacobian at least 8x faster than the runtime Jacobian (paired)",
+        build: "any",
+        measure: |rows| every_robot(rows, "runtime_jacobian_f64/generated_pose_and_jacobian_f64", 8.0, true),
+    },
+    Target {
+        what: "UR5, Panda, iiwa: the twist cheaper than forming J and multiplying (paired ratio > 1)",
+        build: "any",
+        measure: |rows| every_robot(rows, "jacobian_times_qd_f64/generated_twist_f64", 1.0, true),
+    },
     Target {
         what: "UR5 pose f64 scalar >= 2.5x faster than the std-trig pose (paired), native",
         build: "native",
