@@ -650,7 +650,9 @@ pub fn generate() -> Vec<RandomRobot> {
     dh(&mut rng, "dh_modified_literal", 6, true, false, &off);
     // Floating and planar joints (drawn last, so the robots above stay as they were): a free-flying
     // root under random trees, a floating joint mid-chain, planar joints with skewed normals.
-    let shapes: [(&'static str, usize, &[(usize, Kind)], bool); 7] = [
+    // (shape, joints, which joints become which kind, a chain rather than a random tree)
+    type Several = (&'static str, usize, &'static [(usize, Kind)], bool);
+    let shapes: [Several; 7] = [
         ("floating_root", 6, &[(0, Kind::Floating)], false),
         ("floating_root", 9, &[(0, Kind::Floating)], false),
         ("floating_root", 4, &[(0, Kind::Floating)], true),

@@ -42,6 +42,8 @@ impl<const N: usize> Sub for Dual<N> {
 
 impl<const N: usize> Mul for Dual<N> {
     type Output = Self;
+    // The product rule: the derivative of a product is a sum.
+    #[allow(clippy::suspicious_arithmetic_impl)]
     fn mul(self, rhs: Self) -> Self {
         Dual {
             value: self.value * rhs.value,
@@ -52,6 +54,8 @@ impl<const N: usize> Mul for Dual<N> {
 
 impl<const N: usize> Div for Dual<N> {
     type Output = Self;
+    // The quotient rule: `(a/b)' = (a' - (a/b) b') / b`.
+    #[allow(clippy::suspicious_arithmetic_impl)]
     fn div(self, rhs: Self) -> Self {
         let value = self.value / rhs.value;
         Dual { value, grad: std::array::from_fn(|i| (self.grad[i] - value * rhs.grad[i]) / rhs.value) }

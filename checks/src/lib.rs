@@ -26,8 +26,11 @@ pub struct Tip {
     pub jacobian_local: fn(&[f64]) -> Vec<[f64; 6]>,
     /// The Jacobian of the generated pose run on dual numbers, seeded with the directions given
     /// ([`dual::directions`]).
-    pub jacobian_by_duals: fn(&[f64], &[Vec<f64>]) -> Vec<[f64; 6]>,
+    pub jacobian_by_duals: DualJacobianFn,
 }
+
+/// A Jacobian by dual numbers at a configuration, along the directions given.
+pub type DualJacobianFn = fn(&[f64], &[Vec<f64>]) -> Vec<[f64; 6]>;
 
 /// A generated Jacobian's columns (`[row][column]` in, one `[linear; angular]` per column out).
 pub fn columns<const V: usize>(jacobian: [[f64; V]; 6]) -> Vec<[f64; 6]> {
@@ -229,6 +232,12 @@ pub struct RandomRobot {
     pub velocities: Option<Velocities>,
 }
 
+/// Jacobians by dual numbers, per tip.
+pub type DualJacobiansFn = fn(&[f64], &[Vec<f64>]) -> Vec<Vec<[f64; 6]>>;
+
+/// Poses with their Jacobians (as columns), per tip.
+pub type PosesAndJacobiansFn = fn(&[f64]) -> Vec<(Pose<f64>, Vec<[f64; 6]>)>;
+
 /// A random robot's velocity functions, per tip, through slices; Jacobians as columns.
 pub struct Velocities {
     /// `tip_jacobian(s)` (`LOCAL_WORLD_ALIGNED`).
@@ -236,13 +245,13 @@ pub struct Velocities {
     /// `tip_jacobian(s)_local`.
     pub jacobians_local: fn(&[f64]) -> Vec<Vec<[f64; 6]>>,
     /// `tip_pose(s)_and_jacobian(s)`.
-    pub poses_and_jacobians: fn(&[f64]) -> Vec<(Pose<f64>, Vec<[f64; 6]>)>,
+    pub poses_and_jacobians: PosesAndJacobiansFn,
     /// `tip_twist(s)` at the rates given.
     pub twists: fn(&[f64], &[f64]) -> Vec<[f64; 6]>,
     /// `tip_twist(s)_local`.
     pub twists_local: fn(&[f64], &[f64]) -> Vec<[f64; 6]>,
     /// `tip_pose(s)_generic` on dual numbers seeded with the directions given.
-    pub by_duals: fn(&[f64], &[Vec<f64>]) -> Vec<Vec<[f64; 6]>>,
+    pub by_duals: DualJacobiansFn,
 }
 
 /// The random robots, compiled (`build/random_robots.rs` generates them).

@@ -332,6 +332,7 @@ pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenSt
         #(#generic)*
 
         #[allow(clippy::approx_constant)] // limits and offsets are kept exactly as the description gives them
+        #[allow(clippy::type_complexity)] // several tips' poses and Jacobians, as arrays of pairs
         impl #impl_generics #self_ty #where_clause {
             /// Robot name.
             pub const ROBOT: &'static str = #robot;
