@@ -446,12 +446,10 @@ fn velocity_section(s: &mut String, run: &Run) {
     }
     let _ = writeln!(
         s,
-        "
-Tip velocities, f64 (`J`: the generated geometric Jacobian, `LOCAL_WORLD_ALIGNED`; `pose + J`:
-         `tip_pose_and_jacobian`; `runtime J`: `ReferenceFk::jacobian`; `k J`: `k::jacobian` of its serial chain; `twist`:
-         `tip_twist`, against `tip_jacobian` and the product by the rates written by hand). Medians in ns, then
-         paired ratios:
-"
+        "\nTip velocities, f64 (`J`: the generated geometric Jacobian, `LOCAL_WORLD_ALIGNED`; `pose + J`:\n\
+         `tip_pose_and_jacobian`; `runtime J`: `ReferenceFk::jacobian`; `k J`: `k::jacobian` of its serial chain;\n\
+         `twist`: `tip_twist`, against `tip_jacobian` and the product by the rates written by hand). Op counts,\n\
+         medians in ns, then paired ratios:\n"
     );
     let _ = writeln!(s, "Op counts (`sin_cos` pairs / multiplications / additions):\n");
     let columns = ["pose", "J", "pose + J"];
