@@ -771,11 +771,14 @@ struct Humanoid;
 #[kinematics(urdf = "robots/humanoid.urdf", tip = "r_gripper", trig = "std")]
 struct HumanoidStd;
 
+/// A pose and its geometric Jacobian.
+type PoseAndJacobian<const N: usize> = (Pose<f64>, [[f64; N]; 6]);
+
 /// The generated functions of one robot's tip velocity, for [`velocities`].
 struct Velocity<const N: usize> {
     pose: fn(&[f64; N]) -> Pose<f64>,
     jacobian: fn(&[f64; N]) -> [[f64; N]; 6],
-    pose_and_jacobian: fn(&[f64; N]) -> (Pose<f64>, [[f64; N]; 6]),
+    pose_and_jacobian: fn(&[f64; N]) -> PoseAndJacobian<N>,
     twist: fn(&[f64; N], &[f64; N]) -> [f64; 6],
 }
 

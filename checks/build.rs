@@ -62,7 +62,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 tips,
                 "Tip {{ link: {leaf:?}, pose: |q| {module}::{pose_fn}::<f64>(arr(q)), pose_f32: |q| {module}::{pose_fn}::<f32>(arr(q)), position: |q| {module}::{position_fn}::<f64>(arr(q)), \
                  jacobian: |q| columns({module}::{jacobian_fn}::<f64>(arr(q))), jacobian_local: |q| columns({module}::{local_fn}::<f64>(arr(q))), \
-                 jacobian_by_duals: |q, d| dual::jacobian::<{n}, {nv}>(|x| {module}::{pose_fn}::<dual::Dual<{nv}>>(x), q, d) }},"
+                 jacobian_by_duals: |q, d| dual::jacobian::<{n}, {nv}>({module}::{pose_fn}::<dual::Dual<{nv}>>, q, d) }},"
             )?;
         }
         let key = if file.ends_with(".urdf") { "urdf" } else { "dh" };
@@ -262,14 +262,14 @@ fn velocity_entry(ty: &str, k: usize, n: usize, nv: usize) -> String {
             "Some(Velocities {{ jacobians: |q| vec![columns({ty}::tip_jacobian(arr(q)))], jacobians_local: |q| vec![columns({ty}::tip_jacobian_local(arr(q)))], \
              poses_and_jacobians: |q| {{ let (p, j) = {ty}::tip_pose_and_jacobian(arr(q)); vec![(p, columns(j))] }}, \
              twists: |q, qd| vec![{ty}::tip_twist(arr(q), arr(qd))], twists_local: |q, qd| vec![{ty}::tip_twist_local(arr(q), arr(qd))], \
-             by_duals: |q, d| vec![dual::jacobian::<{n}, {nv}>(|x| {ty}::tip_pose_generic::<{d}>(x), q, d)] }})"
+             by_duals: |q, d| vec![dual::jacobian::<{n}, {nv}>({ty}::tip_pose_generic::<{d}>, q, d)] }})"
         )
     } else {
         format!(
             "Some(Velocities {{ jacobians: |q| {ty}::tip_jacobians(arr(q)).into_iter().map(columns).collect(), jacobians_local: |q| {ty}::tip_jacobians_local(arr(q)).into_iter().map(columns).collect(), \
              poses_and_jacobians: |q| {ty}::tip_poses_and_jacobians(arr(q)).into_iter().map(|(p, j)| (p, columns(j))).collect(), \
              twists: |q, qd| {ty}::tip_twists(arr(q), arr(qd)).to_vec(), twists_local: |q, qd| {ty}::tip_twists_local(arr(q), arr(qd)).to_vec(), \
-             by_duals: |q, d| dual::jacobians::<{n}, {nv}, {k}>(|x| {ty}::tip_poses_generic::<{d}>(x), q, d) }})"
+             by_duals: |q, d| dual::jacobians::<{n}, {nv}, {k}>({ty}::tip_poses_generic::<{d}>, q, d) }})"
         )
     }
 }

@@ -142,9 +142,11 @@ fn read_run(root: &Path, name: &'static str, criterion: PathBuf) -> Result<Optio
         let ops = kinematics_compiler::compile(&tree, &kinematics_compiler::Request::tip(tip))?.op_count();
         let ops_all = kinematics_compiler::compile(&tree, &kinematics_compiler::Request::all_links())?.op_count();
         let frame = kinematics_model::JacobianFrame::LocalWorldAligned;
-        let ops_jacobian = kinematics_compiler::compile(&tree, &kinematics_compiler::Request::tip(tip).jacobian(frame))?.op_count();
+        let ops_jacobian =
+            kinematics_compiler::compile(&tree, &kinematics_compiler::Request::tip(tip).jacobian(frame))?.op_count();
         let ops_pose_and_jacobian =
-            kinematics_compiler::compile(&tree, &kinematics_compiler::Request::tip(tip).pose_and_jacobian(frame))?.op_count();
+            kinematics_compiler::compile(&tree, &kinematics_compiler::Request::tip(tip).pose_and_jacobian(frame))?
+                .op_count();
         let mut ns = BTreeMap::new();
         for (variant, configurations) in VARIANTS {
             if let Some(v) = median_ns(&criterion, group, variant) {
