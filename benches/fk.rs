@@ -723,7 +723,7 @@ struct Ur5;
 #[kinematics(urdf = "robots/ur5.urdf", tip = "tool0", trig = "std")]
 struct Ur5Std;
 #[derive(Kinematics)]
-#[kinematics(urdf = "robots/ur10e.urdf", tip = "tool0", positions, scalars(f64, f32))]
+#[kinematics(urdf = "robots/ur10e.urdf", tip = "tool0", positions, scalars(f64, f32), jacobians)]
 struct Ur10e;
 #[derive(Kinematics)]
 #[kinematics(urdf = "robots/ur10e.urdf", tip = "tool0", trig = "std")]
@@ -741,31 +741,31 @@ struct Panda;
 #[kinematics(urdf = "robots/panda.urdf", tip = "panda_hand", trig = "std")]
 struct PandaStd;
 #[derive(Kinematics)]
-#[kinematics(urdf = "robots/gen3.urdf", tip = "end_effector_link", positions, scalars(f64, f32))]
+#[kinematics(urdf = "robots/gen3.urdf", tip = "end_effector_link", positions, scalars(f64, f32), jacobians)]
 struct Gen3;
 #[derive(Kinematics)]
 #[kinematics(urdf = "robots/gen3.urdf", tip = "end_effector_link", trig = "std")]
 struct Gen3Std;
 #[derive(Kinematics)]
-#[kinematics(urdf = "robots/irb120.urdf", tip = "tool0", positions, scalars(f64, f32))]
+#[kinematics(urdf = "robots/irb120.urdf", tip = "tool0", positions, scalars(f64, f32), jacobians)]
 struct Irb120;
 #[derive(Kinematics)]
 #[kinematics(urdf = "robots/irb120.urdf", tip = "tool0", trig = "std")]
 struct Irb120Std;
 #[derive(Kinematics)]
-#[kinematics(urdf = "robots/dual_arm_torso.urdf", tip = "tool_l", positions, scalars(f64, f32))]
+#[kinematics(urdf = "robots/dual_arm_torso.urdf", tip = "tool_l", positions, scalars(f64, f32), jacobians)]
 struct DualArm;
 #[derive(Kinematics)]
 #[kinematics(urdf = "robots/dual_arm_torso.urdf", tip = "tool_l", trig = "std")]
 struct DualArmStd;
 #[derive(Kinematics)]
-#[kinematics(urdf = "robots/quadruped.urdf", tip = "RL_foot", positions, scalars(f64, f32))]
+#[kinematics(urdf = "robots/quadruped.urdf", tip = "RL_foot", positions, scalars(f64, f32), jacobians)]
 struct Quadruped;
 #[derive(Kinematics)]
 #[kinematics(urdf = "robots/quadruped.urdf", tip = "RL_foot", trig = "std")]
 struct QuadrupedStd;
 #[derive(Kinematics)]
-#[kinematics(urdf = "robots/humanoid.urdf", tip = "r_gripper", positions, scalars(f64, f32))]
+#[kinematics(urdf = "robots/humanoid.urdf", tip = "r_gripper", positions, scalars(f64, f32), jacobians)]
 struct Humanoid;
 #[derive(Kinematics)]
 #[kinematics(urdf = "robots/humanoid.urdf", tip = "r_gripper", trig = "std")]
@@ -782,7 +782,7 @@ struct Velocity<const N: usize> {
     twist: fn(&[f64; N], &[f64; N]) -> [f64; 6],
 }
 
-/// The tip's velocity: the generated Jacobian alone and with the pose, against the runtime
+/// The tip's velocity (the URDF robots; the targets name the UR5, the iiwa 14 and the Panda): the generated Jacobian alone and with the pose, against the runtime
 /// reference's Jacobian and the `k` crate's (its serial chain to the tip), and the generated twist
 /// against the generated Jacobian times the rates. Check mode holds every Jacobian timed to the
 /// reference's within the agreement tolerance (linear rows times the reach).
@@ -948,7 +948,7 @@ fn all(c: Option<&mut Criterion>) {
         ("quadruped", Quadruped, QuadrupedStd, 12, "quadruped.urdf", "RL_foot", quadruped),
         ("humanoid", Humanoid, HumanoidStd, 25, "humanoid.urdf", "r_gripper", humanoid),
     );
-    // The tip velocities of the three arms the targets name (`jacobians` on their derives).
+    // The tip velocities of every URDF robot (`jacobians` on their derives): `k` reads URDF only.
     macro_rules! velocity {
         ($(($name:literal, $ty:ty, $file:literal, $tip:literal)),* $(,)?) => {
             $({
@@ -966,8 +966,14 @@ fn all(c: Option<&mut Criterion>) {
     }
     velocity!(
         ("ur5", Ur5, "ur5.urdf", "tool0"),
+        ("ur10e", Ur10e, "ur10e.urdf", "tool0"),
         ("iiwa14", Iiwa14, "iiwa14.urdf", "iiwa_link_ee"),
         ("panda", Panda, "panda.urdf", "panda_hand"),
+        ("gen3", Gen3, "gen3.urdf", "end_effector_link"),
+        ("irb120", Irb120, "irb120.urdf", "tool0"),
+        ("dual_arm", DualArm, "dual_arm_torso.urdf", "tool_l"),
+        ("quadruped", Quadruped, "quadruped.urdf", "RL_foot"),
+        ("humanoid", Humanoid, "humanoid.urdf", "r_gripper"),
     );
 }
 
