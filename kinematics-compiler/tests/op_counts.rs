@@ -6,6 +6,8 @@
 
 mod common;
 
+use common::robots;
+
 use kinematics_compiler::{OpCount, Request, compile, plain_product_count};
 use kinematics_model::{JacobianFrame, KinematicTree};
 
@@ -13,17 +15,6 @@ use kinematics_model::{JacobianFrame, KinematicTree};
 fn end_effector(tree: &KinematicTree) -> String {
     let deepest = (0..tree.links().len()).max_by_key(|&l| (tree.path_from_root(kinematics_model::LinkId(l)).len(), l));
     tree.link(kinematics_model::LinkId(deepest.unwrap_or(0))).name.clone()
-}
-
-fn robots() -> Vec<String> {
-    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../robots");
-    let mut files: Vec<String> = std::fs::read_dir(dir)
-        .unwrap()
-        .filter_map(|e| e.ok()?.file_name().into_string().ok())
-        .filter(|f| kinematics_model::SourceFormat::from_file_name(f).is_some())
-        .collect();
-    files.sort();
-    files
 }
 
 fn short(c: OpCount) -> String {

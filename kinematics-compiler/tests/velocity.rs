@@ -12,19 +12,10 @@
 
 mod common;
 
+use common::robots;
+
 use kinematics_compiler::{Compiled, Request, compile};
 use kinematics_model::{JacobianFrame, KinematicTree, LinkId};
-
-fn robots() -> Vec<String> {
-    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../robots");
-    let mut files: Vec<String> = std::fs::read_dir(dir)
-        .unwrap()
-        .filter_map(|e| e.ok()?.file_name().into_string().ok())
-        .filter(|f| kinematics_model::SourceFormat::from_file_name(f).is_some())
-        .collect();
-    files.sort();
-    files
-}
 
 /// Deterministic configurations in [-3, 3].
 fn configurations(dof: usize, count: usize) -> Vec<Vec<f64>> {
@@ -175,28 +166,6 @@ fn twist_is_cheaper_than_forming_the_jacobian() {
     let both = compile(&tree, &Request::tip("tool0").pose_and_jacobian(frame)).unwrap().op_count();
     assert!(both.mul < pose.mul + j.mul, "pose {pose} + J {j} vs both {both}");
     assert_eq!(both.sin_cos, pose.sin_cos, "the pair calls sin_cos no more than the pose");
-}
-
-#[test]
-#[ignore]
-fn print_counts() {
-    for (file, tip) in [("ur5.urdf", "tool0"), ("panda.urdf", "panda_hand"), ("iiwa14.urdf", "tool0")] {
-        let Ok(text) = std::fs::read_to_string(format!("{}/../robots/{file}", env!("CARGO_MANIFEST_DIR"))) else {
-            continue;
-        };
-        let tree = kinematics_model::parse_source(file, &text).unwrap();
-        let f = JacobianFrame::LocalWorldAligned;
-        let c = |r: Request| compile(&tree, &r).unwrap().op_count();
-        println!(
-            "{file}: pose {} | J {} | J local {} | pose+J {} | twist {} | posJ {}",
-            c(Request::tip(tip)),
-            c(Request::tip(tip).jacobian(f)),
-            c(Request::tip(tip).jacobian(JacobianFrame::Local)),
-            c(Request::tip(tip).pose_and_jacobian(f)),
-            c(Request::tip(tip).twist(f)),
-            c(Request::tip(tip).positions_only().jacobian(f))
-        );
-    }
 }
 
 /// A tree with a floating root (the quadruped's trunk made free-flying) and a planar joint, the
