@@ -191,24 +191,7 @@ impl Differential {
                 Contribution::Free { axes, origin, column, sign } => {
                     // The child's velocity and angular velocity, from its own axes to base axes.
                     let k = g.constant(*sign);
-                    let rates: [[ExprId; 3]; 2] = std::array::from_fn(|part| {
-                        std::array::from_fn(|a| {
-                            let qd = g.var(dof + column + 3 * part + a);
-                            g.mul(k, qd)
-                        })
-                    });
-                    let along = |g: &mut ExprGraph, rates: [ExprId; 3]| -> [ExprId; 3] {
-                        std::array::from_fn(|r| {
-                            let mut sum = g.constant(0.0);
-                            for a in 0..3 {
-                                let term = g.mul(rates[a], axes[a][r]);
-                                sum = g.add(sum, term);
-                            }
-                            sum
-                        })
-                    };
-                    let v = along(g, rates[0]);
-                    let w = along(g, rates[1]);
+                    let (v, w) = free_velocity(g, axes, dof + column, k);
                     let arm = sub3(g, p, *origin);
                     let turn = cross(g, w, arm);
                     for r in 0..3 {
@@ -221,6 +204,34 @@ impl Differential {
         }
         twist
     }
+}
+
+/// A floating joint's child velocity and angular velocity from its six rates (the graph's
+/// variables from `first_rate` on, each times `k`), from the child's axes to the fold's:
+/// `sum_a k qd_a axes[a]` for the three linear rates, then for the three angular ones.
+fn free_velocity(
+    g: &mut ExprGraph,
+    axes: &[[ExprId; 3]; 3],
+    first_rate: usize,
+    k: ExprId,
+) -> ([ExprId; 3], [ExprId; 3]) {
+    let mut part = |offset: usize| -> [ExprId; 3] {
+        let rates: [ExprId; 3] = std::array::from_fn(|a| {
+            let qd = g.var(first_rate + offset + a);
+            g.mul(k, qd)
+        });
+        std::array::from_fn(|r| {
+            let mut sum = g.constant(0.0);
+            for a in 0..3 {
+                let term = g.mul(rates[a], axes[a][r]);
+                sum = g.add(sum, term);
+            }
+            sum
+        })
+    };
+    let v = part(0);
+    let w = part(3);
+    (v, w)
 }
 
 /// The columns of a rotation: the images of the three axes.
@@ -313,24 +324,7 @@ impl Differential {
                 Contribution::Free { axes, origin, column, sign } => {
                     // Linear rates along -s a, angular rates about -s a through o'.
                     let nk = g.constant(-sign);
-                    let rates: [[ExprId; 3]; 2] = std::array::from_fn(|part| {
-                        std::array::from_fn(|a| {
-                            let qd = g.var(dof + column + 3 * part + a);
-                            g.mul(nk, qd)
-                        })
-                    });
-                    let along = |g: &mut ExprGraph, rates: [ExprId; 3]| -> [ExprId; 3] {
-                        std::array::from_fn(|r| {
-                            let mut sum = g.constant(0.0);
-                            for a in 0..3 {
-                                let term = g.mul(rates[a], axes[a][r]);
-                                sum = g.add(sum, term);
-                            }
-                            sum
-                        })
-                    };
-                    let v = along(g, rates[0]);
-                    let w = along(g, rates[1]);
+                    let (v, w) = free_velocity(g, axes, dof + column, nk);
                     // [s a x o'] rate = -(w x o') with w = -s a rate.
                     let turn = cross(g, *origin, w);
                     for r in 0..3 {
