@@ -19,6 +19,7 @@ extern crate std;
 mod batch;
 mod error;
 mod floating;
+pub mod ik;
 mod kinematics;
 mod lanes;
 #[cfg(feature = "nalgebra")]

@@ -1,0 +1,156 @@
+//! The closed-form families of six-joint revolute arms, each a fixed composition of the
+//! subproblems (IK-Geo's decompositions, arXiv 2211.05737, section V), for the geometry the
+//! compiler classified and wrote as constants. Every function returns all eight branches in a
+//! fixed order (first joint's branch outermost), exact or least-squares, flagged.
+//!
+//! The arm is written as IK-Geo writes it, a product of exponentials at the zero configuration:
+//! `R = rot(h1, q1) ... rot(h6, q6) R6T` and
+//! `p = p01 + R01 p12 + R02 p23 + R03 p34 + R04 p45 + R05 p56 + R06 p6T`, every vector in the base
+//! frame. Offsets along an axis can be moved freely, and the compiler moves them so that the
+//! axes a family needs to meet have a zero offset between them (`p45 = p56 = 0` for a spherical
+//! wrist).
+
+use super::solutions::{IkSolution, IkSolutions};
+use super::subproblem::{Quality, rotation_onto, rotation_to_distance, rotation_to_height, two_rotations};
+use super::vector::{M3, V3, add, cross, dot, mul, mul_by_transpose, norm_squared, rotate, scale, sub, wrap};
+use crate::pose::Pose;
+
+/// A six-joint revolute arm at its zero configuration (IK-Geo's form): unit axes `h1..h6`, the
+/// offsets `p01, p12, ..., p56, p6T` between points on consecutive axes, and the tool's rotation
+/// `R6T`, all in the base frame.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Arm6 {
+    /// `h1 .. h6`: unit joint axes.
+    pub axes: [V3; 6],
+    /// `p01, p12, p23, p34, p45, p56, p6T`.
+    pub offsets: [V3; 7],
+    /// `R6T`: the tool's rotation at the zero configuration.
+    pub tool_rotation: M3,
+}
+
+/// The wrist's position and rotation the first joints must reach: `R06 = R R6T^T` and the point
+/// `p - R06 p6T` less `p01`.
+#[inline(always)]
+fn wrist_target(arm: &Arm6, target: &Pose<f64>) -> (M3, V3) {
+    let r06 = mul_by_transpose(&target.rotation, &arm.tool_rotation);
+    let point = sub(sub(target.translation, mul(&r06, arm.offsets[6])), arm.offsets[0]);
+    (r06, point)
+}
+
+/// The spherical wrist's joints 4, 5, 6 for arm angles `q1, q2, q3`: `rot(h4, q4) rot(h5, q5)
+/// rot(h6, q6) = R03^T R06` by subproblem 2 (`q4`, `q5`) and subproblem 1 (`q6`), two branches.
+#[inline(always)]
+fn spherical_wrist(arm: &Arm6, r06: &M3, [q1, q2, q3]: [f64; 3], quality: Quality, out: &mut IkSolutions<6, 8>) {
+    let h = &arm.axes;
+    let back = |v: V3| rotate(h[2], -q3, rotate(h[1], -q2, rotate(h[0], -q1, v)));
+    let r36_h6 = back(mul(r06, h[5]));
+    let r36_h5 = back(mul(r06, h[4]));
+    let (pairs, wrist) = two_rotations(h[3], r36_h6, h[4], h[5]);
+    for (t4, q5) in pairs {
+        let q4 = -t4;
+        let (q6, last) = rotation_onto(h[5], h[4], rotate(h[4], -q5, rotate(h[3], -q4, r36_h5)));
+        let all = quality.and(wrist).and(last);
+        out.push(IkSolution::unmeasured([q1, q2, q3, q4, q5, q6].map(wrap), all.exact, all.singular));
+    }
+}
+
+/// Spherical wrist (axes 4, 5, 6 meet, `p45 = p56 = 0`) with axes 2 and 3 parallel (PUMA 560,
+/// IRB 120): `q1` by subproblem 4 (the wrist centre's height along `h2` is fixed), `q3` by
+/// subproblem 3 (its distance from axis 2), `q2` by subproblem 1, then the wrist. Needs `h1`
+/// not parallel to `h2`.
+#[inline(always)]
+pub fn spherical_two_parallel(arm: &Arm6, target: &Pose<f64>) -> IkSolutions<6, 8> {
+    let [h1, h2, h3, ..] = arm.axes;
+    let [_, p12, p23, p34, ..] = arm.offsets;
+    let (r06, v0) = wrist_target(arm, target);
+    let mut out = IkSolutions::new();
+    let (t1s, first) = rotation_to_height(h2, h1, v0, dot(h2, add(add(p12, p23), p34)));
+    for t1 in t1s {
+        let v1 = sub(rotate(h1, t1, v0), p12);
+        let (q3s, third) = rotation_to_distance(h3, p34, scale(p23, -1.0), norm_squared(v1));
+        for q3 in q3s {
+            let (q2, second) = rotation_onto(h2, add(p23, rotate(h3, q3, p34)), v1);
+            let quality = first.and(third).and(second);
+            spherical_wrist(arm, &r06, [-t1, q2, q3], quality, &mut out);
+        }
+    }
+    out
+}
+
+/// Spherical wrist with axes 1 and 2 meeting (`p12 = 0`): `q3` by subproblem 3 (the wrist
+/// centre's distance from the shoulder), `q1`, `q2` by subproblem 2, then the wrist. Needs `h1`
+/// not parallel to `h2`.
+#[inline(always)]
+pub fn spherical_first_two_intersecting(arm: &Arm6, target: &Pose<f64>) -> IkSolutions<6, 8> {
+    let [h1, h2, h3, ..] = arm.axes;
+    let [_, _, p23, p34, ..] = arm.offsets;
+    let (r06, v0) = wrist_target(arm, target);
+    let mut out = IkSolutions::new();
+    let (q3s, third) = rotation_to_distance(h3, p34, scale(p23, -1.0), norm_squared(v0));
+    for q3 in q3s {
+        let u = add(p23, rotate(h3, q3, p34));
+        let (pairs, shoulder) = two_rotations(h1, v0, h2, u);
+        for (t1, q2) in pairs {
+            spherical_wrist(arm, &r06, [-t1, q2, q3], third.and(shoulder), &mut out);
+        }
+    }
+    out
+}
+
+/// Spherical wrist with axes 2 and 3 meeting (`p23 = 0`): `q1` by subproblem 3 (the wrist
+/// centre seen from axis 1 lies at `|p34|` from the elbow), `q2`, `q3` by subproblem 2, then the
+/// wrist. Needs `h2` not parallel to `h3`.
+#[inline(always)]
+pub fn spherical_last_two_intersecting(arm: &Arm6, target: &Pose<f64>) -> IkSolutions<6, 8> {
+    let [h1, h2, h3, ..] = arm.axes;
+    let [_, p12, _, p34, ..] = arm.offsets;
+    let (r06, v0) = wrist_target(arm, target);
+    let mut out = IkSolutions::new();
+    let (t1s, first) = rotation_to_distance(h1, v0, p12, norm_squared(p34));
+    for t1 in t1s {
+        let v1 = sub(rotate(h1, t1, v0), p12);
+        let (pairs, elbow) = two_rotations(h2, v1, h3, p34);
+        for (t2, q3) in pairs {
+            spherical_wrist(arm, &r06, [-t1, -t2, q3], first.and(elbow), &mut out);
+        }
+    }
+    out
+}
+
+/// Axes 2, 3, 4 parallel (direction `h = h2`) and axes 5, 6 meeting (`p56 = 0`): the UR family.
+/// `q1` by subproblem 4 (the tool flange's height along `h` is fixed), `q5` by subproblem 4 (so
+/// is the angle between `h` and `h6`), `q6` by subproblem 1, the sum `q2 + q3 + q4` (with the
+/// axes' signs) by subproblem 1, then the planar elbow: `q3` by subproblem 3, `q2` by
+/// subproblem 1, `q4` from the sum. Needs `h1` and `h5` not parallel to `h`.
+#[inline(always)]
+pub fn three_parallel_two_intersecting(arm: &Arm6, target: &Pose<f64>) -> IkSolutions<6, 8> {
+    let [h1, h, h3, h4, h5, h6] = arm.axes;
+    let [_, p12, p23, p34, p45, ..] = arm.offsets;
+    let (sign3, sign4) = (dot(h, h3), dot(h, h4));
+    // A direction across `h`, rotated by the sum of the parallel joints' angles.
+    let across = cross(h, h5);
+    let (r06, v0) = wrist_target(arm, target);
+    let mut out = IkSolutions::new();
+    let (t1s, first) = rotation_to_height(h, h1, v0, dot(h, add(add(p12, p23), add(p34, p45))));
+    for t1 in t1s {
+        let q1 = -t1;
+        // `h` seen from the tool flange: R16^T h.
+        let w = super::vector::mul_transposed(&r06, rotate(h1, q1, h));
+        let (q5s, fifth) = rotation_to_height(h, h5, h6, dot(w, h6));
+        for q5 in q5s {
+            let (t6, sixth) = rotation_onto(h6, rotate(h5, -q5, h), w);
+            let q6 = -t6;
+            let turned = rotate(h1, t1, mul(&r06, rotate(h6, t6, rotate(h5, -q5, across))));
+            let (sum, summed) = rotation_onto(h, across, turned);
+            let v = sub(sub(rotate(h1, t1, v0), p12), rotate(h, sum, p45));
+            let (q3s, third) = rotation_to_distance(h3, p34, scale(p23, -1.0), norm_squared(v));
+            for q3 in q3s {
+                let (q2, second) = rotation_onto(h, add(p23, rotate(h3, q3, p34)), v);
+                let q4 = sign4 * (sum - q2 - sign3 * q3);
+                let all = first.and(fifth).and(sixth).and(summed).and(third).and(second);
+                out.push(IkSolution::unmeasured([q1, q2, q3, q4, q5, q6].map(wrap), all.exact, all.singular));
+            }
+        }
+    }
+    out
+}

@@ -1,0 +1,65 @@
+//! Inverse kinematics at run time, for code the compiler generates: the Paden-Kahan subproblems
+//! ([`subproblem`]), the closed-form families of six-joint arms they compose into ([`Arm6`] and
+//! the family functions), and what a call returns ([`IkSolutions`], [`IkError`]). No heap, no
+//! `std`: `libm` does the square roots and inverse trigonometry.
+//!
+//! The compiler classifies a robot's chain at compile time and emits a call of one family
+//! function with the chain's geometry as constants, so the optimiser folds them into the body;
+//! the generated `tip_ik` then measures every solution's pose errors with the robot's own
+//! generated forward kinematics ([`IkSolutions::measure`]).
+//!
+//! ```
+//! use kinematics_core::ik::{Arm6, three_parallel_two_intersecting};
+//! // The UR5 (Universal Robots' DH table) at its zero configuration, in IK-Geo's form.
+//! let (x, y, z) = ([1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]);
+//! let arm = Arm6 {
+//!     axes: [z, [0.0, -1.0, 0.0], [0.0, -1.0, 0.0], [0.0, -1.0, 0.0], [0.0, 0.0, -1.0], [0.0, -1.0, 0.0]],
+//!     offsets: [
+//!         [0.0, 0.0, 0.089159], [0.0; 3], [-0.425, 0.0, 0.0], [-0.39225, 0.0, 0.0],
+//!         [0.0, -0.10915, -0.09465], [0.0; 3], [0.0, -0.0823, 0.0],
+//!     ],
+//!     tool_rotation: [x, [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]],
+//! };
+//! let q = [0.3, -1.2, 1.0, 0.4, -0.7, 2.0];
+//! let target = arm.pose(&q);
+//! let mut solutions = three_parallel_two_intersecting(&arm, &target);
+//! solutions.measure(&target, |q| arm.pose(q));
+//! assert_eq!(solutions.exact().count(), 8);
+//! assert!(solutions.iter().all(|s| s.position_error < 1e-14 && s.rotation_error < 1e-14));
+//! assert!(solutions.iter().any(|s| s.q.iter().zip(&q).all(|(a, b)| (a - b).abs() < 1e-12)));
+//! ```
+
+mod family;
+mod solutions;
+pub mod subproblem;
+mod vector;
+
+pub use family::{
+    Arm6, spherical_first_two_intersecting, spherical_last_two_intersecting, spherical_two_parallel,
+    three_parallel_two_intersecting,
+};
+pub use solutions::{IkError, IkSolution, IkSolutions, ROTATION_TOLERANCE, check_target, pose_errors};
+
+use crate::pose::Pose;
+use vector::{add, rotate};
+
+impl Arm6 {
+    /// The pose the arm reaches at `q`: the product of exponentials the family functions invert,
+    /// `rot(h1, q1) ... rot(h6, q6) R6T` and `p01 + R01 p12 + ... + R06 p6T` (for tests and
+    /// tools; generated code measures with the robot's generated forward kinematics).
+    pub fn pose(&self, q: &[f64; 6]) -> Pose<f64> {
+        // Fold from the tool back: each joint rotates everything after it.
+        let mut rotation = self.tool_rotation;
+        let mut point = self.offsets[6];
+        for i in (0..6).rev() {
+            let columns =
+                [0, 1, 2].map(|j| rotate(self.axes[i], q[i], [rotation[0][j], rotation[1][j], rotation[2][j]]));
+            rotation = [0, 1, 2].map(|r| [columns[0][r], columns[1][r], columns[2][r]]);
+            point = add(self.offsets[i], rotate(self.axes[i], q[i], point));
+        }
+        Pose { rotation, translation: point }
+    }
+}
+
+#[cfg(test)]
+mod tests;

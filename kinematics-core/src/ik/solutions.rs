@@ -1,0 +1,300 @@
+//! What an inverse kinematics call returns: every branch's joint values with what is known of
+//! them, in a fixed-capacity list (no heap), and the error for a target that is no pose.
+
+use core::fmt;
+
+use super::vector::{dot, sub};
+use crate::kinematics::JointLimits;
+use crate::pose::Pose;
+
+/// How far a target's rotation may be from orthonormal (the largest entry of `R R^T - I`)
+/// before the solvers refuse it: loose enough for rotations rounded to a few more digits than
+/// `f32` carries, tight enough that a matrix that is no rotation is never answered.
+pub const ROTATION_TOLERANCE: f64 = 1e-6;
+
+/// A target the solvers refuse: it is no pose.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub enum IkError {
+    /// An entry of the rotation or the translation is NaN or infinite.
+    NonFinite,
+    /// The rotation is not orthonormal with determinant 1 (within [`ROTATION_TOLERANCE`]).
+    NotARotation {
+        /// The largest entry of `R R^T - I`, or how far the determinant is from 1 if larger.
+        deviation: f64,
+    },
+}
+
+impl fmt::Display for IkError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match *self {
+            IkError::NonFinite => f.write_str("the target pose has an entry that is not a finite number"),
+            IkError::NotARotation { deviation } => write!(
+                f,
+                "the target's rotation is not a rotation: it is {deviation:e} from orthonormal with determinant 1 \
+                 (tolerance {ROTATION_TOLERANCE:e})"
+            ),
+        }
+    }
+}
+
+impl core::error::Error for IkError {}
+
+/// The target as the solvers take it, or why not: every entry finite, the rotation orthonormal
+/// with determinant 1 within [`ROTATION_TOLERANCE`].
+pub fn check_target(target: &Pose<f64>) -> Result<(), IkError> {
+    let r = &target.rotation;
+    if !r.iter().flatten().chain(&target.translation).all(|x| x.is_finite()) {
+        return Err(IkError::NonFinite);
+    }
+    let mut deviation: f64 = 0.0;
+    for i in 0..3 {
+        for j in 0..3 {
+            let expected = if i == j { 1.0 } else { 0.0 };
+            deviation = deviation.max((dot(r[i], r[j]) - expected).abs());
+        }
+    }
+    let det = dot(r[0], super::vector::cross(r[1], r[2]));
+    deviation = deviation.max((det - 1.0).abs());
+    if deviation > ROTATION_TOLERANCE {
+        return Err(IkError::NotARotation { deviation });
+    }
+    Ok(())
+}
+
+/// One solution: joint values in degree-of-freedom order and what is known of them.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct IkSolution<const N: usize> {
+    /// Joint values; revolute angles in `(-pi, pi]` unless moved into limits
+    /// ([`IkSolutions::within_limits`]).
+    pub q: [f64; N],
+    /// Every equation of this branch had a real solution: the pose is reached (see the errors).
+    /// `false`: the target is out of this branch's reach and `q` is the least-squares best.
+    pub exact: bool,
+    /// Some joint was free (a singularity, such as a wrist with its fifth joint at zero): `q` is
+    /// one representative of a continuum of solutions.
+    pub singular: bool,
+    /// Distance from the target's translation to the pose `q` reaches (metres), measured with
+    /// the robot's generated forward kinematics.
+    pub position_error: f64,
+    /// Angle between the target's rotation and the one `q` reaches (radians), measured the same
+    /// way.
+    pub rotation_error: f64,
+}
+
+impl<const N: usize> IkSolution<N> {
+    /// A solution with its flags, errors not yet measured (infinite).
+    pub fn unmeasured(q: [f64; N], exact: bool, singular: bool) -> Self {
+        IkSolution { q, exact, singular, position_error: f64::INFINITY, rotation_error: f64::INFINITY }
+    }
+}
+
+/// Every solution of an inverse kinematics call, up to `M` (the family's maximum), without heap.
+///
+/// Closed-form solvers return every branch, in a fixed order, exact or not; [`Self::exact`]
+/// iterates the exact ones, [`Self::nearest`] picks the one closest to a configuration and
+/// [`Self::within_limits`] keeps those inside joint limits.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct IkSolutions<const N: usize, const M: usize> {
+    solutions: [IkSolution<N>; M],
+    len: usize,
+}
+
+impl<const N: usize, const M: usize> Default for IkSolutions<N, M> {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl<const N: usize, const M: usize> IkSolutions<N, M> {
+    /// No solutions.
+    pub fn new() -> Self {
+        IkSolutions { solutions: [IkSolution::unmeasured([0.0; N], false, false); M], len: 0 }
+    }
+
+    /// Adds a solution; one past the capacity is dropped (the solvers never produce more than
+    /// their family's maximum, which is the capacity they declare).
+    #[inline(always)]
+    pub fn push(&mut self, solution: IkSolution<N>) {
+        if self.len < M {
+            self.solutions[self.len] = solution;
+            self.len += 1;
+        }
+    }
+
+    /// The solutions, in the solver's branch order.
+    pub fn as_slice(&self) -> &[IkSolution<N>] {
+        &self.solutions[..self.len]
+    }
+
+    /// How many there are.
+    pub fn len(&self) -> usize {
+        self.len
+    }
+
+    /// Whether there are none.
+    pub fn is_empty(&self) -> bool {
+        self.len == 0
+    }
+
+    /// The solutions in branch order.
+    pub fn iter(&self) -> core::slice::Iter<'_, IkSolution<N>> {
+        self.as_slice().iter()
+    }
+
+    /// The exact solutions (every equation solvable), in branch order.
+    pub fn exact(&self) -> impl Iterator<Item = &IkSolution<N>> {
+        self.iter().filter(|s| s.exact)
+    }
+
+    /// Measures every solution's pose errors against `target` with `forward` (the robot's
+    /// generated forward kinematics). A pose with a non-finite entry counts as infinitely far.
+    #[inline(always)]
+    pub fn measure(&mut self, target: &Pose<f64>, forward: impl Fn(&[f64; N]) -> Pose<f64>) {
+        for solution in &mut self.solutions[..self.len] {
+            let reached = forward(&solution.q);
+            let (position, rotation) = pose_errors(&reached, target);
+            solution.position_error = position;
+            solution.rotation_error = rotation;
+        }
+    }
+
+    /// The solution nearest `seed` (Euclidean distance in joint space, each angle of a joint
+    /// marked in `revolute` first moved by a multiple of 2 pi to the seed's side), preferring
+    /// exact solutions to least-squares ones. `None` only when there are no solutions.
+    pub fn nearest(&self, seed: &[f64; N], revolute: &[bool; N]) -> Option<IkSolution<N>> {
+        let mut best: Option<(bool, f64, IkSolution<N>)> = None;
+        for solution in self.iter() {
+            let mut moved = *solution;
+            let mut distance = 0.0;
+            for i in 0..N {
+                if revolute[i] {
+                    moved.q[i] = seed[i] + super::vector::wrap(moved.q[i] - seed[i]);
+                }
+                let d = moved.q[i] - seed[i];
+                distance += d * d;
+            }
+            let better = match &best {
+                None => true,
+                Some((exact, d, _)) => (moved.exact && !exact) || (moved.exact == *exact && distance < *d),
+            };
+            if better {
+                best = Some((moved.exact, distance, moved));
+            }
+        }
+        best.map(|(_, _, s)| s)
+    }
+
+    /// The solutions inside `limits` (closed intervals), each angle of a joint marked in
+    /// `revolute` moved by a multiple of 2 pi into its interval where one fits; a solution with
+    /// any joint that fits no way is left out.
+    pub fn within_limits(&self, limits: &[JointLimits; N], revolute: &[bool; N]) -> Self {
+        let mut kept = Self::new();
+        'solutions: for solution in self.iter() {
+            let mut moved = *solution;
+            for i in 0..N {
+                let JointLimits { lower, upper } = limits[i];
+                let mut value = moved.q[i];
+                if revolute[i] && lower.is_finite() && !(lower <= value && value <= upper) {
+                    // The smallest value at or above `lower` that is `value` plus whole turns.
+                    let tau = core::f64::consts::TAU;
+                    value = lower + (value - lower).rem_euclid_tau(tau);
+                }
+                if !(lower <= value && value <= upper) {
+                    continue 'solutions;
+                }
+                moved.q[i] = value;
+            }
+            kept.push(moved);
+        }
+        kept
+    }
+}
+
+/// `rem_euclid` by 2 pi without `std` (libm's `fmod`, made non-negative).
+trait RemEuclidTau {
+    fn rem_euclid_tau(self, tau: f64) -> f64;
+}
+
+impl RemEuclidTau for f64 {
+    fn rem_euclid_tau(self, tau: f64) -> f64 {
+        let r = libm::fmod(self, tau);
+        if r < 0.0 { r + tau } else { r }
+    }
+}
+
+/// The distance between two poses' translations, and the angle between their rotations
+/// (`2 asin(|Ra - Rb|_F / sqrt 8)`, accurate for small angles, where the trace formula loses half
+/// the digits). Non-finite entries give infinity.
+pub fn pose_errors(a: &Pose<f64>, b: &Pose<f64>) -> (f64, f64) {
+    let d = sub(a.translation, b.translation);
+    let position = libm::sqrt(dot(d, d));
+    let mut frobenius2 = 0.0;
+    for i in 0..3 {
+        let row = sub(a.rotation[i], b.rotation[i]);
+        frobenius2 += dot(row, row);
+    }
+    let sine = libm::sqrt(frobenius2 / 8.0);
+    let rotation = 2.0 * libm::asin(if sine < 1.0 { sine } else { 1.0 });
+    let finite = |x: f64| if x.is_finite() { x } else { f64::INFINITY };
+    if !frobenius2.is_finite() {
+        return (finite(position), f64::INFINITY);
+    }
+    (finite(position), rotation)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn identity_at(t: [f64; 3]) -> Pose<f64> {
+        Pose { rotation: [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]], translation: t }
+    }
+
+    #[test]
+    fn targets_that_are_no_pose_are_refused() {
+        assert_eq!(check_target(&identity_at([0.0, 1.0, 2.0])), Ok(()));
+        assert_eq!(check_target(&identity_at([f64::NAN, 0.0, 0.0])), Err(IkError::NonFinite));
+        assert_eq!(check_target(&identity_at([f64::INFINITY, 0.0, 0.0])), Err(IkError::NonFinite));
+        let mut scaled = identity_at([0.0; 3]);
+        scaled.rotation[0][0] = 1.1;
+        assert!(matches!(check_target(&scaled), Err(IkError::NotARotation { .. })));
+        let mut mirrored = identity_at([0.0; 3]);
+        mirrored.rotation[2][2] = -1.0;
+        assert!(matches!(check_target(&mirrored), Err(IkError::NotARotation { deviation }) if deviation == 2.0));
+    }
+
+    #[test]
+    fn nearest_moves_angles_by_whole_turns_and_prefers_exact() {
+        let mut all = IkSolutions::<2, 4>::new();
+        all.push(IkSolution::unmeasured([3.0, 0.5], true, false));
+        all.push(IkSolution::unmeasured([0.1, 0.1], false, false));
+        all.push(IkSolution::unmeasured([-3.0, 0.4], true, false));
+        let nearest = all.nearest(&[3.2, 0.4], &[true, false]).map(|s| s.q);
+        // -3.0 is 3.2832 after a whole turn: 0.0832 from the seed, nearer than 3.0.
+        assert!(matches!(nearest, Some([a, b]) if (a - (-3.0 + core::f64::consts::TAU)).abs() < 1e-15 && b == 0.4));
+    }
+
+    #[test]
+    fn limits_move_angles_by_whole_turns_or_drop_the_solution() {
+        let mut all = IkSolutions::<2, 4>::new();
+        all.push(IkSolution::unmeasured([-3.0, 0.1], true, false));
+        all.push(IkSolution::unmeasured([1.0, 0.9], true, false));
+        let limits = [JointLimits { lower: 0.0, upper: 6.0 }, JointLimits { lower: 0.0, upper: 0.5 }];
+        let kept = all.within_limits(&limits, &[true, false]);
+        assert_eq!(kept.len(), 1);
+        assert!((kept.as_slice()[0].q[0] - (-3.0 + core::f64::consts::TAU)).abs() < 1e-15);
+    }
+
+    #[test]
+    fn pose_errors_of_a_small_rotation_are_its_angle() {
+        let a = identity_at([0.0; 3]);
+        let (s, c) = libm::sincos(1e-9);
+        let b = Pose { rotation: [[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]], translation: [3.0, 4.0, 0.0] };
+        let (position, rotation) = pose_errors(&a, &b);
+        assert_eq!(position, 5.0);
+        assert!((rotation - 1e-9).abs() < 1e-22, "{rotation}");
+        let nan = identity_at([f64::NAN; 3]);
+        assert_eq!(pose_errors(&nan, &a).0, f64::INFINITY);
+    }
+}

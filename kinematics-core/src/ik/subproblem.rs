@@ -1,0 +1,263 @@
+//! The Paden-Kahan subproblems the closed-form families are composed of, in the numbering of
+//! IK-Geo (Elias and Wen, "IK-Geo: Unified robot inverse kinematics using subproblem
+//! decomposition", arXiv 2211.05737): each finds the angles of one or two rotations about known
+//! unit axes, and says whether they are exact or the least-squares best (the target out of reach)
+//! and whether they are one representative of a continuum (a singularity).
+//!
+//! - subproblem 1, [`rotation_onto`]: `rot(k, t) p1 = p2`;
+//! - subproblem 2, [`two_rotations`]: `rot(k1, t1) p1 = rot(k2, t2) p2`;
+//! - subproblem 3, [`rotation_to_distance`]: `|rot(k, t) p1 - p2| = d`;
+//! - subproblem 4, [`rotation_to_height`]: `h . rot(k, t) p = d`.
+//!
+//! Subproblems 3 and 4 are both `a cos t + b sin t = c` ([`cos_sin_equation`]). No function here
+//! returns NaN for finite input: a degenerate case gives a representative angle and a flag.
+
+use super::vector::{V3, add, cross, dot, norm_squared, scale};
+
+/// Relative slack on a discriminant before an equation counts as out of reach: rounding alone
+/// takes a target exactly on the boundary of the workspace a few ulp past it.
+const REACH_SLACK: f64 = 1e-12;
+
+/// Within this of `+-1`, the ratio of `a cos t + b sin t = c` is taken as exactly `+-1`: a double
+/// root, the two solutions one. Targets built at a singularity (a UR's fifth joint at zero) land
+/// there with a few ulp of rounding, which `acos` would turn into an angle error of the order of
+/// the square root of it (1e-8 rad); the price is that targets within about `sqrt(2e-14)`,
+/// 1.4e-7 rad, of a double root are solved as if on it.
+const DOUBLE_ROOT: f64 = 1e-14;
+
+/// Below this (relative to the vectors' lengths) a component is taken as zero: the angle it
+/// would fix is free, a singularity.
+const DEGENERATE: f64 = 1e-9;
+
+/// What is known of a solved angle (or of a whole solution): whether every equation on its way had
+/// a real solution, and whether any had a continuum of them.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Quality {
+    /// Every equation had a real solution: the angles reach the target (to rounding).
+    pub exact: bool,
+    /// Some angle was free (a singularity): the value given is one representative.
+    pub singular: bool,
+}
+
+impl Quality {
+    /// An exact, regular solution.
+    pub const EXACT: Quality = Quality { exact: true, singular: false };
+
+    /// Both qualities together: exact if both are, singular if either is.
+    #[inline(always)]
+    #[must_use]
+    pub fn and(self, other: Quality) -> Quality {
+        Quality { exact: self.exact && other.exact, singular: self.singular || other.singular }
+    }
+}
+
+/// Subproblem 1: the angle `t` with `rot(k, t) p1 = p2` about the unit axis `k`, or the
+/// least-squares best when the two vectors differ in their component along `k` or in their
+/// distance from it. When `p1` lies on the axis every angle serves: `0`, flagged singular.
+#[inline(always)]
+pub fn rotation_onto(k: V3, p1: V3, p2: V3) -> (f64, Quality) {
+    let along1 = dot(k, p1);
+    let along2 = dot(k, p2);
+    let x = dot(p1, p2) - along1 * along2;
+    let y = dot(k, cross(p1, p2));
+    // The squared distances from the axis, as |k x p|^2: the difference |p|^2 - (k . p)^2 would
+    // cancel to rounding noise for a vector nearly along the axis.
+    let across1 = norm_squared(cross(k, p1));
+    let across2 = norm_squared(cross(k, p2));
+    let singular =
+        across1 <= DEGENERATE * DEGENERATE * norm_squared(p1) || across2 <= DEGENERATE * DEGENERATE * norm_squared(p2);
+    let angle = if singular { 0.0 } else { libm::atan2(y, x) };
+    (angle, Quality { exact: true, singular })
+}
+
+/// The two solutions of `a cos t + b sin t = c` in `(-pi, pi]`, the one with the larger angle
+/// from `atan2(b, a)` first. Out of reach (`|c| > hypot(a, b)`), both are the least-squares best
+/// (`t` at or opposite `atan2(b, a)`); when `a = b = 0`, both are `0`, exact (and singular) if
+/// `c = 0` too.
+#[inline(always)]
+pub fn cos_sin_equation(a: f64, b: f64, c: f64) -> ([f64; 2], Quality) {
+    let r2 = a * a + b * b;
+    let r = libm::sqrt(r2);
+    let scale = if r > c.abs() { r } else { c.abs() };
+    // The solvers take finite targets (`check_target`), so no operand here is NaN.
+    if r <= DEGENERATE * scale {
+        let exact = c.abs() <= DEGENERATE * scale;
+        return ([0.0, 0.0], Quality { exact, singular: true });
+    }
+    let phi = libm::atan2(b, a);
+    let ratio = c / r;
+    let exact = ratio.abs() <= 1.0 + REACH_SLACK;
+    let delta = if ratio.abs() >= 1.0 - DOUBLE_ROOT {
+        if ratio > 0.0 { 0.0 } else { core::f64::consts::PI }
+    } else {
+        libm::acos(ratio)
+    };
+    ([super::vector::wrap(phi + delta), super::vector::wrap(phi - delta)], Quality { exact, singular: false })
+}
+
+/// Subproblem 3: the angles `t` with `|rot(k, t) p1 - p2| = d`, given `d^2` (the callers know
+/// the square, so no root is taken).
+#[inline(always)]
+pub fn rotation_to_distance(k: V3, p1: V3, p2: V3, d_squared: f64) -> ([f64; 2], Quality) {
+    let along = dot(k, p1) * dot(k, p2);
+    let a = dot(p1, p2) - along;
+    let b = dot(k, cross(p1, p2));
+    let c = 0.5 * (norm_squared(p1) + norm_squared(p2) - d_squared) - along;
+    cos_sin_equation(a, b, c)
+}
+
+/// Subproblem 4: the angles `t` with `h . rot(k, t) p = d`.
+#[inline(always)]
+pub fn rotation_to_height(h: V3, k: V3, p: V3, d: f64) -> ([f64; 2], Quality) {
+    let hk_kp = dot(h, k) * dot(k, p);
+    let a = dot(h, p) - hk_kp;
+    let b = dot(h, cross(k, p));
+    cos_sin_equation(a, b, d - hk_kp)
+}
+
+/// Subproblem 2: the angle pairs `(t1, t2)` with `rot(k1, t1) p1 = rot(k2, t2) p2` about unit
+/// axes that are not parallel. The vectors are taken as directions (their lengths are equal
+/// when the target is reachable). Two pairs: the rotated vector `x` is where the two cones about
+/// `k1` and `k2` cross; when they do not, both pairs are the least-squares best.
+#[inline(always)]
+pub fn two_rotations(k1: V3, p1: V3, k2: V3, p2: V3) -> ([(f64, f64); 2], Quality) {
+    let n1 = libm::sqrt(norm_squared(p1));
+    let n2 = libm::sqrt(norm_squared(p2));
+    if n1 == 0.0 || n2 == 0.0 {
+        // A zero vector is rotated onto anything.
+        let exact = n1 == n2;
+        return ([(0.0, 0.0); 2], Quality { exact, singular: true });
+    }
+    let u1 = scale(p1, 1.0 / n1);
+    let u2 = scale(p2, 1.0 / n2);
+    let c = dot(k1, k2);
+    let s2 = 1.0 - c * c;
+    let a1 = dot(k1, u1);
+    let a2 = dot(k2, u2);
+    // x = alpha k1 + beta k2 + gamma (k1 x k2), with k1 . x = a1, k2 . x = a2, |x| = 1.
+    let alpha = (a1 - c * a2) / s2;
+    let beta = (a2 - c * a1) / s2;
+    let rest = 1.0 - alpha * alpha - beta * beta - 2.0 * alpha * beta * c;
+    let exact = rest >= -REACH_SLACK;
+    let gamma = if rest > 0.0 { libm::sqrt(rest / s2) } else { 0.0 };
+    let base = add(scale(k1, alpha), scale(k2, beta));
+    let normal = cross(k1, k2);
+    let mut quality = Quality { exact, singular: false };
+    let mut pairs = [(0.0, 0.0); 2];
+    for (pair, sign) in pairs.iter_mut().zip([1.0, -1.0]) {
+        let x = add(base, scale(normal, sign * gamma));
+        let (t1, q1) = rotation_onto(k1, u1, x);
+        let (t2, q2) = rotation_onto(k2, u2, x);
+        quality = quality.and(q1).and(q2);
+        *pair = (t1, t2);
+    }
+    (pairs, quality)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::vector::{norm_squared, rotate, sub};
+    use super::*;
+
+    fn unit(v: V3) -> V3 {
+        scale(v, 1.0 / libm::sqrt(norm_squared(v)))
+    }
+
+    fn close(a: V3, b: V3, tolerance: f64) -> bool {
+        norm_squared(sub(a, b)) <= tolerance * tolerance
+    }
+
+    #[test]
+    fn subproblem_1_recovers_the_angle() {
+        let k = unit([0.3, -0.5, 0.8]);
+        let p1 = [0.4, 1.2, -0.7];
+        for angle in [-3.0, -1.0, 0.0, 0.5, 2.9] {
+            let p2 = rotate(k, angle, p1);
+            let (t, quality) = rotation_onto(k, p1, p2);
+            assert!((t - angle).abs() < 1e-14, "{t} vs {angle}");
+            assert_eq!(quality, Quality::EXACT);
+        }
+    }
+
+    #[test]
+    fn subproblem_1_on_the_axis_is_singular_not_nan() {
+        let (t, quality) = rotation_onto([0.0, 0.0, 1.0], [0.0, 0.0, 2.0], [0.0, 0.0, 2.0]);
+        assert_eq!(t, 0.0);
+        assert!(quality.singular);
+    }
+
+    #[test]
+    fn subproblem_2_both_pairs_map_p1_and_p2_together() {
+        let k1 = unit([0.0, 0.2, 1.0]);
+        let k2 = unit([1.0, 0.1, -0.3]);
+        let p2 = [0.2, 0.9, 0.4];
+        let p1 = rotate(k1, -0.7, rotate(k2, 1.3, p2));
+        let (pairs, quality) = two_rotations(k1, p1, k2, p2);
+        assert!(quality.exact && !quality.singular);
+        let mut found = false;
+        for (t1, t2) in pairs {
+            assert!(close(rotate(k1, t1, p1), rotate(k2, t2, p2), 1e-14));
+            found |= (t1 - 0.7).abs() < 1e-12 && (t2 - 1.3).abs() < 1e-12;
+        }
+        assert!(found, "{pairs:?}");
+    }
+
+    #[test]
+    fn subproblem_2_out_of_reach_is_flagged() {
+        // Cones of half-angle 10 degrees about perpendicular axes do not meet.
+        let k1 = [0.0, 0.0, 1.0];
+        let k2 = [1.0, 0.0, 0.0];
+        let (pairs, quality) = two_rotations(k1, [0.1, 0.0, 1.0], k2, [1.0, 0.1, 0.0]);
+        assert!(!quality.exact);
+        assert!(pairs.iter().all(|(a, b)| a.is_finite() && b.is_finite()));
+    }
+
+    #[test]
+    fn subproblem_3_both_angles_give_the_distance() {
+        let k = unit([0.2, 1.0, 0.1]);
+        let (p1, p2) = ([0.5, 0.1, 0.3], [-0.2, 0.4, 0.9]);
+        let d2 = norm_squared(sub(rotate(k, 2.2, p1), p2));
+        let (angles, quality) = rotation_to_distance(k, p1, p2, d2);
+        assert_eq!(quality, Quality::EXACT);
+        assert!(angles.iter().any(|t| (t - 2.2).abs() < 1e-12), "{angles:?}");
+        for t in angles {
+            assert!((norm_squared(sub(rotate(k, t, p1), p2)) - d2).abs() < 1e-14);
+        }
+    }
+
+    #[test]
+    fn subproblem_3_out_of_reach_gives_the_closest_distance() {
+        let k = [0.0, 0.0, 1.0];
+        let (angles, quality) = rotation_to_distance(k, [1.0, 0.0, 0.0], [2.0, 0.0, 0.0], 100.0);
+        assert!(!quality.exact);
+        // The farthest the rotated point gets from p2 is 3 (at t = pi).
+        for t in angles {
+            assert!((norm_squared(sub(rotate(k, t, [1.0, 0.0, 0.0]), [2.0, 0.0, 0.0])) - 9.0).abs() < 1e-12);
+        }
+    }
+
+    #[test]
+    fn subproblem_4_both_angles_give_the_height() {
+        let h = unit([0.1, -0.3, 1.0]);
+        let k = unit([1.0, 0.5, 0.2]);
+        let p = [0.3, 0.7, -0.4];
+        let d = dot(h, rotate(k, -1.1, p));
+        let (angles, quality) = rotation_to_height(h, k, p, d);
+        assert_eq!(quality, Quality::EXACT);
+        assert!(angles.iter().any(|t| (t + 1.1).abs() < 1e-12), "{angles:?}");
+        for t in angles {
+            assert!((dot(h, rotate(k, t, p)) - d).abs() < 1e-14);
+        }
+    }
+
+    #[test]
+    fn degenerate_equations_are_flagged_not_nan() {
+        let (angles, quality) = cos_sin_equation(0.0, 0.0, 0.0);
+        assert_eq!((angles, quality), ([0.0, 0.0], Quality { exact: true, singular: true }));
+        let (angles, quality) = cos_sin_equation(0.0, 0.0, 1.0);
+        assert_eq!((angles, quality), ([0.0, 0.0], Quality { exact: false, singular: true }));
+        let (angles, quality) = cos_sin_equation(1.0, 0.0, 2.0);
+        assert_eq!(angles, [0.0, 0.0]);
+        assert!(!quality.exact);
+    }
+}

@@ -1,0 +1,167 @@
+//! Round trips of every family on random arms built to it: random axes (with the family's
+//! parallel and intersecting pairs), random offsets and tool rotations, random configurations.
+
+use super::vector::{V3, cross, norm_squared, scale, wrap};
+use super::*;
+
+/// A small deterministic generator (xorshift64*), so the core needs no dev-dependency for this.
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> f64 {
+        self.0 ^= self.0 >> 12;
+        self.0 ^= self.0 << 25;
+        self.0 ^= self.0 >> 27;
+        let bits = self.0.wrapping_mul(0x2545_f491_4f6c_dd1d) >> 11;
+        bits as f64 / (1u64 << 53) as f64
+    }
+
+    fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
+        lo + (hi - lo) * self.next()
+    }
+
+    fn vector(&mut self, size: f64) -> V3 {
+        [0, 1, 2].map(|_| self.uniform(-size, size))
+    }
+
+    fn unit(&mut self) -> V3 {
+        loop {
+            let v = self.vector(1.0);
+            let n = norm_squared(v);
+            if n > 0.01 && n <= 1.0 {
+                return scale(v, 1.0 / libm::sqrt(n));
+            }
+        }
+    }
+
+    fn sign(&mut self) -> f64 {
+        if self.next() < 0.5 { -1.0 } else { 1.0 }
+    }
+
+    fn rotation(&mut self) -> [[f64; 3]; 3] {
+        let x = self.unit();
+        let y = loop {
+            let v = self.unit();
+            let across = cross(x, v);
+            if norm_squared(across) > 0.1 {
+                break scale(across, 1.0 / libm::sqrt(norm_squared(across)));
+            }
+        };
+        let z = cross(x, y);
+        // Columns x, y, z.
+        [[x[0], y[0], z[0]], [x[1], y[1], z[1]], [x[2], y[2], z[2]]]
+    }
+}
+
+#[derive(Debug, Clone, Copy)]
+enum Family {
+    SphericalTwoParallel,
+    SphericalFirstTwoIntersecting,
+    SphericalLastTwoIntersecting,
+    ThreeParallelTwoIntersecting,
+}
+
+fn random_arm(rng: &mut Rng, family: Family) -> Arm6 {
+    let mut axes = [0; 6].map(|_| rng.unit());
+    let mut offsets = [0; 7].map(|_| rng.vector(0.5));
+    match family {
+        Family::SphericalTwoParallel => axes[2] = scale(axes[1], rng.sign()),
+        Family::SphericalFirstTwoIntersecting => offsets[1] = [0.0; 3],
+        Family::SphericalLastTwoIntersecting => offsets[2] = [0.0; 3],
+        Family::ThreeParallelTwoIntersecting => {
+            axes[2] = scale(axes[1], rng.sign());
+            axes[3] = scale(axes[1], rng.sign());
+            offsets[5] = [0.0; 3];
+        }
+    }
+    if !matches!(family, Family::ThreeParallelTwoIntersecting) {
+        offsets[4] = [0.0; 3];
+        offsets[5] = [0.0; 3];
+    }
+    Arm6 { axes, offsets, tool_rotation: rng.rotation() }
+}
+
+fn solve(family: Family, arm: &Arm6, target: &Pose<f64>) -> IkSolutions<6, 8> {
+    match family {
+        Family::SphericalTwoParallel => spherical_two_parallel(arm, target),
+        Family::SphericalFirstTwoIntersecting => spherical_first_two_intersecting(arm, target),
+        Family::SphericalLastTwoIntersecting => spherical_last_two_intersecting(arm, target),
+        Family::ThreeParallelTwoIntersecting => three_parallel_two_intersecting(arm, target),
+    }
+}
+
+/// The largest difference of two configurations' angles, modulo 2 pi.
+fn angle_distance(a: &[f64; 6], b: &[f64; 6]) -> f64 {
+    a.iter().zip(b).map(|(x, y)| wrap(x - y).abs()).fold(0.0, |m, d| if d > m { d } else { m })
+}
+
+#[test]
+fn every_family_round_trips_on_random_arms() {
+    let mut rng = Rng(0x9e37_79b9_7f4a_7c15);
+    for family in [
+        Family::SphericalTwoParallel,
+        Family::SphericalFirstTwoIntersecting,
+        Family::SphericalLastTwoIntersecting,
+        Family::ThreeParallelTwoIntersecting,
+    ] {
+        let mut worst_error: f64 = 0.0;
+        let mut worst_match: f64 = 0.0;
+        for _ in 0..40 {
+            let arm = random_arm(&mut rng, family);
+            for _ in 0..50 {
+                let q = [0; 6].map(|_| rng.uniform(-3.1, 3.1));
+                let target = arm.pose(&q);
+                let mut solutions = solve(family, &arm, &target);
+                solutions.measure(&target, |q| arm.pose(q));
+                assert_eq!(solutions.len(), 8);
+                let nearest = solutions.iter().map(|s| angle_distance(&s.q, &q)).fold(f64::INFINITY, f64::min);
+                let solution = solutions.iter().find(|s| angle_distance(&s.q, &q) == nearest);
+                assert!(solution.is_some_and(|s| s.exact), "{family:?}: q {q:?} not among {solutions:?}");
+                worst_match = worst_match.max(nearest);
+                for s in solutions.exact() {
+                    let error = s.position_error.max(s.rotation_error);
+                    assert!(error.is_finite(), "{family:?}: {s:?}");
+                    worst_error = worst_error.max(error);
+                }
+            }
+        }
+        assert!(worst_error < 1e-11, "{family:?}: worst pose error {worst_error:e}");
+        assert!(worst_match < 1e-6, "{family:?}: worst distance to q {worst_match:e}");
+    }
+}
+
+#[test]
+fn unreachable_targets_come_back_flagged_and_finite() {
+    let mut rng = Rng(7);
+    for family in [
+        Family::SphericalTwoParallel,
+        Family::SphericalFirstTwoIntersecting,
+        Family::SphericalLastTwoIntersecting,
+        Family::ThreeParallelTwoIntersecting,
+    ] {
+        let arm = random_arm(&mut rng, family);
+        let mut target = arm.pose(&[0.1; 6]);
+        target.translation = [100.0, -50.0, 20.0];
+        let solutions = solve(family, &arm, &target);
+        assert_eq!(solutions.len(), 8);
+        assert!(solutions.iter().all(|s| !s.exact && s.q.iter().all(|x| x.is_finite())), "{family:?}: {solutions:?}");
+    }
+}
+
+#[test]
+fn a_wrist_singularity_gives_a_representative_flagged_singular() {
+    let mut rng = Rng(11);
+    let mut arm = random_arm(&mut rng, Family::ThreeParallelTwoIntersecting);
+    // With h6 = rot(h5, 0.8) h, the fifth joint at -0.8 turns h6 onto h: joints 4 and 6 then
+    // turn about the same axis and only their sum is fixed.
+    let [_, h, _, _, h5, _] = arm.axes;
+    arm.axes[5] = super::vector::rotate(h5, 0.8, h);
+    let q = [0.2, -0.4, 0.9, 0.3, -0.8, -1.0];
+    let target = arm.pose(&q);
+    let mut solutions = three_parallel_two_intersecting(&arm, &target);
+    solutions.measure(&target, |q| arm.pose(q));
+    assert!(solutions.iter().any(|s| s.singular), "{solutions:?}");
+    for s in solutions.iter().filter(|s| s.exact) {
+        assert!(s.position_error < 1e-9 && s.rotation_error < 1e-9, "{s:?}");
+    }
+}

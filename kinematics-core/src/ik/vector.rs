@@ -1,0 +1,104 @@
+//! The few operations on 3-vectors and 3x3 rotations the solvers need, on plain arrays.
+
+pub(crate) type V3 = [f64; 3];
+pub(crate) type M3 = [[f64; 3]; 3];
+
+#[inline(always)]
+pub(crate) fn dot(a: V3, b: V3) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+#[inline(always)]
+pub(crate) fn cross(a: V3, b: V3) -> V3 {
+    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+}
+
+#[inline(always)]
+pub(crate) fn add(a: V3, b: V3) -> V3 {
+    [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
+}
+
+#[inline(always)]
+pub(crate) fn sub(a: V3, b: V3) -> V3 {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+
+#[inline(always)]
+pub(crate) fn scale(a: V3, s: f64) -> V3 {
+    [a[0] * s, a[1] * s, a[2] * s]
+}
+
+#[inline(always)]
+pub(crate) fn norm_squared(a: V3) -> f64 {
+    dot(a, a)
+}
+
+/// `m * v`.
+#[inline(always)]
+pub(crate) fn mul(m: &M3, v: V3) -> V3 {
+    [dot(m[0], v), dot(m[1], v), dot(m[2], v)]
+}
+
+/// `m^T * v`.
+#[inline(always)]
+pub(crate) fn mul_transposed(m: &M3, v: V3) -> V3 {
+    [
+        m[0][0] * v[0] + m[1][0] * v[1] + m[2][0] * v[2],
+        m[0][1] * v[0] + m[1][1] * v[1] + m[2][1] * v[2],
+        m[0][2] * v[0] + m[1][2] * v[1] + m[2][2] * v[2],
+    ]
+}
+
+/// `a * b^T`.
+#[inline(always)]
+pub(crate) fn mul_by_transpose(a: &M3, b: &M3) -> M3 {
+    let row = |r: V3| [dot(r, b[0]), dot(r, b[1]), dot(r, b[2])];
+    [row(a[0]), row(a[1]), row(a[2])]
+}
+
+/// `v` rotated by the angle whose cosine and sine are `c`, `s` about the unit axis `k`
+/// (Rodrigues: `c v + s (k x v) + (1 - c)(k . v) k`).
+#[inline(always)]
+pub(crate) fn rotate_cs(k: V3, c: f64, s: f64, v: V3) -> V3 {
+    let kv = dot(k, v) * (1.0 - c);
+    let kxv = cross(k, v);
+    [c * v[0] + s * kxv[0] + kv * k[0], c * v[1] + s * kxv[1] + kv * k[1], c * v[2] + s * kxv[2] + kv * k[2]]
+}
+
+/// `v` rotated by `angle` about the unit axis `k`.
+#[inline(always)]
+pub(crate) fn rotate(k: V3, angle: f64, v: V3) -> V3 {
+    let (s, c) = libm::sincos(angle);
+    rotate_cs(k, c, s, v)
+}
+
+/// `angle` moved by a multiple of 2 pi into `(-pi, pi]`.
+#[inline(always)]
+pub(crate) fn wrap(angle: f64) -> f64 {
+    const TAU: f64 = core::f64::consts::TAU;
+    let wrapped = angle - TAU * libm::round(angle / TAU);
+    if wrapped <= -core::f64::consts::PI { wrapped + TAU } else { wrapped }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rotation_about_z_by_a_quarter_turn() {
+        let v = rotate([0.0, 0.0, 1.0], core::f64::consts::FRAC_PI_2, [1.0, 2.0, 3.0]);
+        assert!((v[0] + 2.0).abs() < 1e-15 && (v[1] - 1.0).abs() < 1e-15 && (v[2] - 3.0).abs() < 1e-15);
+    }
+
+    #[test]
+    fn wrap_lands_in_the_half_open_interval() {
+        use core::f64::consts::PI;
+        for (angle, expected) in
+            [(0.0, 0.0), (PI, PI), (-PI, PI), (3.0 * PI, PI), (7.0, 7.0 - 2.0 * PI), (-7.0, 2.0 * PI - 7.0)]
+        {
+            let w = wrap(angle);
+            assert!((w - expected).abs() < 1e-12, "wrap({angle}) = {w}, expected {expected}");
+            assert!(w > -PI && w <= PI);
+        }
+    }
+}
