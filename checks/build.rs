@@ -154,6 +154,7 @@ fn write_random_robots(out: &Path) -> Result<(), Box<dyn std::error::Error>> {
             tips: robot.tips.clone(),
             positions: robot.positions,
             jacobians: velocities,
+            ik: kinematics_compiler::robot::IkMode::Off,
             floating_base: None,
             scalars: Scalars { f64: robot.f64, f32: robot.f32 },
             krate: "::kinematics".parse()?,

@@ -74,7 +74,7 @@
 
 pub use kinematics_core::{
     AGREEMENT_TOLERANCE, AGREEMENT_TOLERANCE_F32, F32x8, F64x4, JointLimits, Kinematics, KinematicsError, LaneValue,
-    Lanes, OrientationError, Pose, Real, quaternion_matrix, trig,
+    Lanes, OrientationError, Pose, Real, ik, quaternion_matrix, trig,
 };
 pub use kinematics_derive::Kinematics;
 

@@ -29,6 +29,8 @@ pub(crate) struct Emit<'a> {
     pub positions: bool,
     /// Velocity functions of the tips.
     pub jacobians: bool,
+    /// Closed-form inverse kinematics of the tip.
+    pub ik: bool,
     /// The free-flying root's link, if any.
     pub floating_base: Option<String>,
     /// `_f32` functions too.
@@ -54,6 +56,11 @@ pub(crate) fn emit_source(emit: &Emit<'_>) -> Result<String, BuildError> {
         tips: emit.tips.clone(),
         positions: emit.positions,
         jacobians: emit.jacobians,
+        ik: if emit.ik {
+            kinematics_compiler::robot::IkMode::ClosedForm
+        } else {
+            kinematics_compiler::robot::IkMode::Off
+        },
         floating_base: emit.floating_base.clone(),
         scalars: Scalars { f64: true, f32: emit.f32 },
         krate: quote!(#krate),

@@ -21,6 +21,7 @@ use crate::write::write_atomic;
 /// | `tip = "link"` / `tips(..)` | [`Robot::tip`] (once per tip) / [`Robot::tips`] |
 /// | `positions` | [`Robot::positions`] |
 /// | `jacobians` | [`Robot::jacobians`] |
+/// | `ik` | [`Robot::ik`] |
 /// | `floating_base` / `floating_base = "link"` | [`Robot::floating_base`] |
 /// | `scalars(f64, f32)` | [`Robot::f32`] |
 /// | `crate = "path"` | [`Robot::crate_path`] |
@@ -40,6 +41,7 @@ pub struct Robot {
     tips: Vec<String>,
     positions: bool,
     jacobians: bool,
+    ik: bool,
     floating_base: Option<String>,
     f32: bool,
     struct_name: Option<String>,
@@ -58,6 +60,7 @@ impl Robot {
             tips: Vec::new(),
             positions: false,
             jacobians: false,
+            ik: false,
             floating_base: None,
             f32: false,
             struct_name: None,
@@ -122,6 +125,14 @@ impl Robot {
     /// [`Robot::positions`] `tip_position_jacobian`). Needs a tip.
     pub fn jacobians(mut self) -> Self {
         self.jacobians = true;
+        self
+    }
+
+    /// Also generate the tip's inverse kinematics in closed form: `tip_ik`, `tip_ik_nearest`,
+    /// `tip_ik_within_limits` and `IK_FAMILY`. Needs exactly one tip whose chain a closed-form
+    /// family covers ([`Robot::generate`] says why not otherwise).
+    pub fn ik(mut self) -> Self {
+        self.ik = true;
         self
     }
 
@@ -202,6 +213,7 @@ impl Robot {
             tips: self.tips.clone(),
             positions: self.positions,
             jacobians: self.jacobians,
+            ik: self.ik,
             floating_base: self.floating_base.clone(),
             f32: self.f32,
             crate_path: &self.crate_path,

@@ -28,4 +28,24 @@ pub enum CompileError {
         /// The constant (infinite or NaN).
         value: f64,
     },
+    /// A chain no closed-form inverse kinematics family covers (every family's reason given).
+    #[error("robot `{robot}`: no closed-form inverse kinematics for `{base}` -> `{tip}`: {reason}")]
+    NoIkFamily {
+        /// Robot name.
+        robot: String,
+        /// The base link.
+        base: String,
+        /// The tip link.
+        tip: String,
+        /// Why each family does not apply.
+        reason: String,
+    },
+    /// Inverse kinematics asked of other than exactly one tip.
+    #[error("robot `{robot}`: inverse kinematics needs exactly one tip (`tip = \"...\"`), not {tips}")]
+    IkNeedsOneTip {
+        /// Robot name.
+        robot: String,
+        /// How many tips were asked for.
+        tips: usize,
+    },
 }

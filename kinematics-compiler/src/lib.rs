@@ -20,6 +20,7 @@
 
 pub mod emit;
 mod error;
+pub mod ik;
 mod request;
 pub mod robot;
 pub mod simplify;

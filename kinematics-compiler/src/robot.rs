@@ -33,6 +33,17 @@ impl Default for Scalars {
     }
 }
 
+/// Which inverse kinematics to emit.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum IkMode {
+    /// None.
+    #[default]
+    Off,
+    /// The closed form of the tip's family (`tip_ik`, `tip_ik_nearest`, `tip_ik_within_limits`);
+    /// a chain no family covers is an error naming why.
+    ClosedForm,
+}
+
 /// Everything [`emit_robot`] needs.
 #[derive(Debug, Clone)]
 pub struct RobotSpec<'a> {
@@ -47,6 +58,8 @@ pub struct RobotSpec<'a> {
     /// Also emit the tips' velocities: geometric Jacobians in both frames, the pose with its
     /// Jacobian, the twist `J * qd` (and, with `positions`, the position Jacobian).
     pub jacobians: bool,
+    /// Also emit inverse kinematics of the tip (needs exactly one tip).
+    pub ik: IkMode,
     /// Scalar types.
     pub scalars: Scalars,
     /// Path to the `kinematics` crate in the user's crate (usually `::kinematics`); generated code
@@ -314,6 +327,9 @@ pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenSt
         }
         if one { quote!(out[0] = generic_tip_poses(q);) } else { quote!(out.copy_from_slice(&generic_tip_poses(q));) }
     };
+    if spec.ik == IkMode::ClosedForm {
+        typed.push(emit_ik_functions(tree, &base, &tips, &p)?);
+    }
     let robot = tree.name();
     let label = &spec.source_label;
     let text = &spec.source_text;
@@ -402,6 +418,20 @@ pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenSt
     })
 }
 
+/// The inverse kinematics functions of the one tip, or the error saying why there are none.
+fn emit_ik_functions(
+    tree: &KinematicTree,
+    base: &str,
+    tips: &[String],
+    p: &TokenStream,
+) -> Result<TokenStream, CompileError> {
+    let [tip] = tips else {
+        return Err(CompileError::IkNeedsOneTip { robot: tree.name().to_owned(), tips: tips.len() });
+    };
+    let plan = crate::ik::classify(tree, base, tip)?;
+    Ok(crate::ik::emit::emit_ik(&plan, p, &quote!(generic_tip_poses)))
+}
+
 /// The name of the `*_generic` functions' scalar parameter: `T`, unless the user's impl generics
 /// use that name (then `S`, `R`, or a name nobody writes), since they are in scope there.
 fn scalar_parameter(impl_generics: &TokenStream) -> TokenStream {
@@ -435,7 +465,7 @@ fn policy_tokens(p: &TokenStream, policy: ExactAngles) -> TokenStream {
 /// A number as an `f64` expression: a literal; values that are exactly a multiple of pi as an `f64`
 /// get the constant's name; infinities and NaN their `f64` constants (never a panic, never another
 /// number).
-fn number(x: f64) -> TokenStream {
+pub(crate) fn number(x: f64) -> TokenStream {
     use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, PI, TAU};
     let named = [(PI, quote!(PI)), (TAU, quote!(TAU)), (FRAC_PI_2, quote!(FRAC_PI_2)), (FRAC_PI_4, quote!(FRAC_PI_4))]
         .into_iter()

@@ -51,6 +51,7 @@ fn compile_everything(label: &str, text: &str) -> Result<Vec<String>, String> {
         tips: leaves,
         positions: true,
         jacobians: true,
+        ik: kinematics_compiler::robot::IkMode::Off,
         floating_base: None,
         scalars: Scalars { f64: true, f32: true },
         krate: quote!(::kinematics),

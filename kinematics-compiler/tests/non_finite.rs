@@ -41,6 +41,7 @@ fn spec(tree: &kinematics_model::KinematicTree) -> RobotSpec<'_> {
         tips: vec![tree.links().last().unwrap().name.clone()],
         positions: true,
         jacobians: true,
+        ik: kinematics_compiler::robot::IkMode::Off,
         floating_base: None,
         scalars: Scalars { f64: true, f32: true },
         krate: quote!(::kinematics),

@@ -21,6 +21,7 @@ fn spec(tree: &KinematicTree) -> RobotSpec<'_> {
         tips: vec!["tool".to_owned()],
         positions: false,
         jacobians: false,
+        ik: kinematics_compiler::robot::IkMode::Off,
         floating_base: None,
         scalars: Scalars::default(),
         krate: quote!(::kinematics),

@@ -16,7 +16,7 @@ use darling::FromDeriveInput;
 use proc_macro2::TokenStream;
 use quote::quote;
 
-use kinematics_compiler::robot::{RobotSpec, emit_robot};
+use kinematics_compiler::robot::{IkMode, RobotSpec, emit_robot};
 use options::KinematicsInput;
 
 /// Expands `#[derive(Kinematics)]` on `input`: the impls, or the errors as `compile_error!`s
@@ -100,6 +100,28 @@ fn expand_options(
         );
         return (loaded.as_ref().map(known), None);
     }
+    if options.ik.is_present() && links_ok {
+        if let Some(loaded) = &loaded {
+            let tips = options.tips();
+            let base = options
+                .base
+                .as_ref()
+                .map_or_else(|| loaded.tree.link(loaded.tree.root()).name.clone(), |b| b.as_ref().clone());
+            let fault = match tips.as_slice() {
+                [tip] => {
+                    kinematics_compiler::ik::classify(&loaded.tree, &base, tip.as_ref()).err().map(|e| e.to_string())
+                }
+                _ => Some(format!(
+                    "`ik` needs exactly one `tip = \"link\"`: the inverse kinematics is the tip's ({} tips given)",
+                    tips.len()
+                )),
+            };
+            if let Some(fault) = fault {
+                errors.push(darling::Error::custom(format!("{}: {fault}", loaded.label)).with_span(&options.ik.span()));
+                return (Some(known(loaded)), None);
+            }
+        }
+    }
     let trig = errors.handle(options.trig());
     let known = loaded.as_ref().map(known);
     let (Some(loaded), Some(scalars), Some(trig), true) = (loaded, scalars, trig, links_ok) else {
@@ -117,6 +139,7 @@ fn expand_options(
         tips: options.tips().into_iter().map(|t| t.as_ref().clone()).collect(),
         positions: options.positions,
         jacobians: options.jacobians.is_present(),
+        ik: if options.ik.is_present() { IkMode::ClosedForm } else { IkMode::Off },
         floating_base: options.source().floating_base.map(|f| f.as_ref().clone()),
         scalars,
         krate,

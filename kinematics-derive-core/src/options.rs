@@ -47,6 +47,10 @@ pub struct KinematicsInput {
     /// `jacobians`: also emit the tips' Jacobians and twists (needs `tip` or `tips`).
     #[darling(default)]
     pub jacobians: darling::util::Flag,
+    /// `ik`: also emit the tip's inverse kinematics in closed form (needs `tip`; a chain no
+    /// family covers is an error naming why).
+    #[darling(default)]
+    pub ik: darling::util::Flag,
     /// `scalars(f64, f32)`.
     #[darling(default)]
     pub scalars: Option<SpannedValue<PathList>>,

@@ -1,0 +1,338 @@
+//! Which closed-form family solves a chain, decided at compile time from its zero-configuration
+//! geometry: which axes are parallel and which meet, exactly where the description is exact
+//! (quarter turns give exact zeros) or within [`PARALLEL_TOLERANCE`] and [`MEET_TOLERANCE`] times
+//! the chain's reach. A family's solver assumes its parallel axes are exactly parallel, so within
+//! tolerance the plan writes the later axis as the earlier one (with its sign); the pose errors
+//! every solution carries show what that costs.
+//!
+//! Offsets along an axis do not change the robot (a point may slide along its axis line), so the
+//! plan places the points of meeting axes at their common point: a spherical wrist's three points
+//! at the wrist centre (`p45 = p56 = 0`), a UR's last two at theirs (`p56 = 0`), and so on.
+
+use kinematics_model::{JointKind, KinematicTree};
+
+use super::geometry::{M3, V3, ZeroConfiguration, zero_configuration};
+use crate::error::CompileError;
+
+/// Axes whose directions differ by less than this (the sine of the angle between them) are
+/// parallel.
+pub const PARALLEL_TOLERANCE: f64 = 1e-12;
+
+/// Axes that pass closer than this times the chain's reach meet.
+pub const MEET_TOLERANCE: f64 = 1e-12;
+
+/// A closed-form family of six-joint revolute arms (IK-Geo's decompositions).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum IkFamily {
+    /// Axes 4, 5, 6 meet (a spherical wrist) and axes 2, 3 are parallel: PUMA 560, IRB 120.
+    SphericalTwoParallel,
+    /// A spherical wrist and axes 1, 2 meet.
+    SphericalFirstTwoIntersecting,
+    /// A spherical wrist and axes 2, 3 meet.
+    SphericalLastTwoIntersecting,
+    /// Axes 2, 3, 4 parallel and axes 5, 6 meet: the UR family.
+    ThreeParallelTwoIntersecting,
+}
+
+impl IkFamily {
+    /// Every family, in the order they are tried.
+    pub const ALL: [IkFamily; 4] = [
+        IkFamily::ThreeParallelTwoIntersecting,
+        IkFamily::SphericalTwoParallel,
+        IkFamily::SphericalFirstTwoIntersecting,
+        IkFamily::SphericalLastTwoIntersecting,
+    ];
+
+    /// A stable name (`kinematics inspect`, the generated `IK_FAMILY`).
+    pub fn name(self) -> &'static str {
+        match self {
+            IkFamily::SphericalTwoParallel => "spherical wrist, axes 2 and 3 parallel",
+            IkFamily::SphericalFirstTwoIntersecting => "spherical wrist, axes 1 and 2 meet",
+            IkFamily::SphericalLastTwoIntersecting => "spherical wrist, axes 2 and 3 meet",
+            IkFamily::ThreeParallelTwoIntersecting => "axes 2, 3, 4 parallel, axes 5 and 6 meet",
+        }
+    }
+
+    /// The core function that solves it (under `kinematics::__private::ik`).
+    pub fn solver(self) -> &'static str {
+        match self {
+            IkFamily::SphericalTwoParallel => "spherical_two_parallel",
+            IkFamily::SphericalFirstTwoIntersecting => "spherical_first_two_intersecting",
+            IkFamily::SphericalLastTwoIntersecting => "spherical_last_two_intersecting",
+            IkFamily::ThreeParallelTwoIntersecting => "three_parallel_two_intersecting",
+        }
+    }
+
+    /// The subproblems it is composed of, in order (IK-Geo's numbering: 1 a rotation onto a
+    /// vector, 2 two rotations, 3 a rotation to a distance, 4 a rotation to a height).
+    pub fn subproblems(self) -> &'static str {
+        match self {
+            IkFamily::SphericalTwoParallel => "q1 by SP4, q3 by SP3, q2 by SP1; wrist: q4, q5 by SP2, q6 by SP1",
+            IkFamily::SphericalFirstTwoIntersecting => "q3 by SP3, q1, q2 by SP2; wrist: q4, q5 by SP2, q6 by SP1",
+            IkFamily::SphericalLastTwoIntersecting => "q1 by SP3, q2, q3 by SP2; wrist: q4, q5 by SP2, q6 by SP1",
+            IkFamily::ThreeParallelTwoIntersecting => {
+                "q1 by SP4, q5 by SP4, q6 by SP1, q2+q3+q4 by SP1, q3 by SP3, q2 by SP1, q4 by difference"
+            }
+        }
+    }
+
+    /// The most solutions a target can have: the capacity of the returned list.
+    pub fn max_solutions(self) -> usize {
+        8
+    }
+}
+
+/// How to solve a chain in closed form: the family and the geometry its solver takes
+/// (`kinematics_core::ik::Arm6`'s fields).
+#[derive(Debug, Clone, PartialEq)]
+pub struct IkPlan {
+    /// The family.
+    pub family: IkFamily,
+    /// The base link.
+    pub base: String,
+    /// The tip link.
+    pub tip: String,
+    /// The moving joints, base first (their entries of `q` are `0..6`).
+    pub joints: Vec<String>,
+    /// Unit axes `h1..h6` in the base frame.
+    pub axes: [V3; 6],
+    /// `p01, p12, ..., p56, p6T` between the chosen points on the axes.
+    pub offsets: [V3; 7],
+    /// The tip's rotation at `q = 0`.
+    pub tool_rotation: M3,
+    /// The chain's reach (the scale of its distances).
+    pub reach: f64,
+    /// What the plan changed of the description's geometry (points moved along their axes,
+    /// axes within tolerance made parallel), for `kinematics inspect` and `expr --ik`.
+    pub notes: Vec<String>,
+}
+
+fn sub(a: V3, b: V3) -> V3 {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+fn dot(a: V3, b: V3) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+fn cross(a: V3, b: V3) -> V3 {
+    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+}
+fn norm(a: V3) -> f64 {
+    dot(a, a).sqrt()
+}
+
+/// The six axes as lines, with the tolerances of this chain.
+struct Lines<'a> {
+    zero: &'a ZeroConfiguration,
+    meet_tolerance: f64,
+}
+
+impl Lines<'_> {
+    fn axis(&self, i: usize) -> V3 {
+        self.zero.joints[i].axis
+    }
+
+    fn point(&self, i: usize) -> V3 {
+        self.zero.joints[i].point
+    }
+
+    /// The sine of the angle between axes `i` and `j` (0-based).
+    fn angle_sine(&self, i: usize, j: usize) -> f64 {
+        norm(cross(self.axis(i), self.axis(j)))
+    }
+
+    /// Axes `i` and `j` are parallel, or why not.
+    fn parallel(&self, i: usize, j: usize) -> Result<(), String> {
+        let sine = self.angle_sine(i, j);
+        if sine <= PARALLEL_TOLERANCE {
+            Ok(())
+        } else {
+            Err(format!("axes {} and {} are not parallel: {:.4} rad apart", i + 1, j + 1, sine.min(1.0).asin()))
+        }
+    }
+
+    /// Where axes `i` and `j` meet, or why they do not (parallel axes never meet here: either
+    /// they are apart or they are one line, and either way no point is fixed).
+    fn meet(&self, i: usize, j: usize) -> Result<V3, String> {
+        let (a, b) = (self.axis(i), self.axis(j));
+        let n = cross(a, b);
+        let n2 = dot(n, n);
+        if n2.sqrt() <= PARALLEL_TOLERANCE {
+            return Err(format!("axes {} and {} are parallel, so they do not meet in one point", i + 1, j + 1));
+        }
+        let d = sub(self.point(j), self.point(i));
+        let gap = dot(d, n).abs() / n2.sqrt();
+        if gap > self.meet_tolerance {
+            return Err(format!("axes {} and {} do not meet: closest distance {gap:.4} m", i + 1, j + 1));
+        }
+        // The closest points of the two lines, and their midpoint.
+        let ti = dot(cross(d, b), n) / n2;
+        let tj = dot(cross(d, a), n) / n2;
+        let pi = [0, 1, 2].map(|k| self.point(i)[k] + ti * a[k]);
+        let pj = [0, 1, 2].map(|k| self.point(j)[k] + tj * b[k]);
+        Ok([0, 1, 2].map(|k| 0.5 * (pi[k] + pj[k])))
+    }
+
+    /// The point where axes 4, 5, 6 meet, or why they do not.
+    fn wrist_centre(&self) -> Result<V3, String> {
+        let centre = self.meet(3, 4)?;
+        self.meet(4, 5)?;
+        let gap = norm(cross(sub(centre, self.point(5)), self.axis(5)));
+        if gap > self.meet_tolerance {
+            return Err(format!("axes 4, 5, 6 do not meet: axis 6 passes {gap:.4} m from where 4 and 5 meet"));
+        }
+        Ok(centre)
+    }
+}
+
+/// The closed-form plan for the chain from `base` to `tip`, or the error saying why no family
+/// covers it (every family's reason).
+pub fn classify(tree: &KinematicTree, base: &str, tip: &str) -> Result<IkPlan, CompileError> {
+    let robot = tree.name().to_owned();
+    let none = |reason: String| CompileError::NoIkFamily {
+        robot: robot.clone(),
+        base: base.to_owned(),
+        tip: tip.to_owned(),
+        reason,
+    };
+    let chain = tree.chain(base, tip).map_err(|source| CompileError::Model { robot: robot.clone(), source })?;
+    let zero = zero_configuration(tree, &chain).map_err(|joints| {
+        let what: Vec<String> = joints.iter().map(|j| format!("joint `{}` {}", j.joint, j.why)).collect();
+        none(format!("{}; the closed forms take revolute joints only", what.join(", ")))
+    })?;
+    let moving = zero.joints.len();
+    if let Some(j) = zero.joints.iter().find(|j| j.kind == JointKind::Prismatic) {
+        return Err(none(format!("joint `{}` is prismatic; the closed forms take six revolute joints", j.name)));
+    }
+    if moving != 6 {
+        return Err(none(format!("the chain has {moving} moving joints; the closed forms solve six")));
+    }
+    if tree.dof() != 6 {
+        return Err(none(format!(
+            "the robot has {} degrees of freedom and the chain moves 6 of them; the closed forms solve a robot's whole q",
+            tree.dof()
+        )));
+    }
+    let lines = Lines { zero: &zero, meet_tolerance: MEET_TOLERANCE * zero.reach };
+    let mut reasons = Vec::new();
+    for family in IkFamily::ALL {
+        match plan(&lines, family) {
+            Ok((points, parallel_to)) => {
+                return Ok(finish(base, tip, &zero, family, points, parallel_to));
+            }
+            Err(reason) => reasons.push(format!("{}: {reason}", family.name())),
+        }
+    }
+    Err(none(reasons.join("; ")))
+}
+
+/// The points on the axes a family needs (index by joint) and, for axes taken as parallel to an
+/// earlier one, which.
+type Placement = ([Option<V3>; 6], [Option<usize>; 6]);
+
+fn plan(lines: &Lines<'_>, family: IkFamily) -> Result<Placement, String> {
+    let mut points = [None; 6];
+    let mut parallel_to = [None; 6];
+    let not_parallel = |i: usize, j: usize| {
+        if lines.angle_sine(i, j) <= PARALLEL_TOLERANCE {
+            Err(format!("axes {} and {} are parallel", i + 1, j + 1))
+        } else {
+            Ok(())
+        }
+    };
+    match family {
+        IkFamily::ThreeParallelTwoIntersecting => {
+            lines.parallel(1, 2)?;
+            lines.parallel(1, 3)?;
+            not_parallel(0, 1)?;
+            not_parallel(4, 1)?;
+            let meet = lines.meet(4, 5)?;
+            points[4] = Some(meet);
+            points[5] = Some(meet);
+            parallel_to[2] = Some(1);
+            parallel_to[3] = Some(1);
+        }
+        IkFamily::SphericalTwoParallel
+        | IkFamily::SphericalFirstTwoIntersecting
+        | IkFamily::SphericalLastTwoIntersecting => {
+            let centre = lines.wrist_centre()?;
+            points[3] = Some(centre);
+            points[4] = Some(centre);
+            points[5] = Some(centre);
+            match family {
+                IkFamily::SphericalTwoParallel => {
+                    lines.parallel(1, 2)?;
+                    not_parallel(0, 1)?;
+                    parallel_to[2] = Some(1);
+                }
+                IkFamily::SphericalFirstTwoIntersecting => {
+                    let meet = lines.meet(0, 1)?;
+                    points[0] = Some(meet);
+                    points[1] = Some(meet);
+                }
+                _ => {
+                    let meet = lines.meet(1, 2)?;
+                    points[1] = Some(meet);
+                    points[2] = Some(meet);
+                }
+            }
+        }
+    }
+    Ok((points, parallel_to))
+}
+
+fn finish(
+    base: &str,
+    tip: &str,
+    zero: &ZeroConfiguration,
+    family: IkFamily,
+    points: [Option<V3>; 6],
+    parallel_to: [Option<usize>; 6],
+) -> IkPlan {
+    let mut notes = Vec::new();
+    let mut axes = [[0.0; 3]; 6];
+    for i in 0..6 {
+        axes[i] = zero.joints[i].axis;
+        if let Some(j) = parallel_to[i] {
+            let sign = if dot(zero.joints[i].axis, zero.joints[j].axis) < 0.0 { -1.0 } else { 1.0 };
+            let written = zero.joints[j].axis.map(|x| sign * x);
+            if written != axes[i] {
+                notes.push(format!(
+                    "axis {} taken as parallel to axis {} ({:.1e} rad apart)",
+                    i + 1,
+                    j + 1,
+                    norm(cross(axes[i], written)).min(1.0).asin()
+                ));
+            }
+            axes[i] = written;
+        }
+    }
+    let chosen: Vec<V3> = (0..6).map(|i| points[i].unwrap_or(zero.joints[i].point)).collect();
+    for i in 0..6 {
+        let moved = dot(sub(chosen[i], zero.joints[i].point), axes[i]);
+        if points[i].is_some() && moved != 0.0 {
+            notes.push(format!(
+                "point of axis {} (joint `{}`) moved {moved:+.6} m along it",
+                i + 1,
+                zero.joints[i].name
+            ));
+        }
+    }
+    let mut offsets = [[0.0; 3]; 7];
+    offsets[0] = chosen[0];
+    for i in 1..6 {
+        // Points placed at one meeting point subtract to exact zeros.
+        offsets[i] = sub(chosen[i], chosen[i - 1]);
+    }
+    offsets[6] = sub(zero.tip_point, chosen[5]);
+    IkPlan {
+        family,
+        base: base.to_owned(),
+        tip: tip.to_owned(),
+        joints: zero.joints.iter().map(|j| j.name.clone()).collect(),
+        axes,
+        offsets,
+        tool_rotation: zero.tip_rotation,
+        reach: zero.reach,
+        notes,
+    }
+}

@@ -1,0 +1,71 @@
+//! The inverse kinematics functions of a robot with a closed-form plan: the family's solver
+//! called with the plan's geometry as a constant (so the optimiser folds it into the body), every
+//! solution measured with the robot's generated forward kinematics, and the nearest and
+//! within-limits forms.
+
+use proc_macro2::{Literal, TokenStream};
+use quote::{format_ident, quote};
+
+use super::classify::IkPlan;
+use crate::robot::number;
+
+fn vector(v: &[f64; 3]) -> TokenStream {
+    let [x, y, z] = v.map(number);
+    quote!([#x, #y, #z])
+}
+
+/// The associated constant and functions (inside the robot's `impl`) for `plan`. `forward` names
+/// the generic function computing the tip's pose.
+pub fn emit_ik(plan: &IkPlan, private: &TokenStream, forward: &TokenStream) -> TokenStream {
+    let p = private;
+    let family = plan.family.name();
+    let solver = format_ident!("{}", plan.family.solver());
+    let capacity = Literal::usize_unsuffixed(plan.family.max_solutions());
+    let axes = plan.axes.iter().map(vector);
+    let offsets = plan.offsets.iter().map(vector);
+    let rows = plan.tool_rotation.iter().map(vector);
+    let (base, tip) = (&plan.base, &plan.tip);
+    let solutions = quote!(#p::ik::IkSolutions<6, #capacity>);
+    let result = |t: TokenStream| quote!(::core::result::Result<#t, #p::ik::IkError>);
+    let all = result(solutions.clone());
+    let one = result(quote!(::core::option::Option<#p::ik::IkSolution<6>>));
+    let doc_family = format!("The closed-form inverse kinematics family of `{tip}` in `{base}`: {family}.");
+    let doc_all = format!(
+        "Every closed-form inverse kinematics solution for a pose of `{tip}` in `{base}` ({family}): all \
+         {capacity} branches, each exact or the least-squares best where the target is out of its reach, flagged \
+         when singular, with its pose errors measured by this robot's forward kinematics. Angles are in \
+         `(-pi, pi]`. A target with a non-finite entry or a rotation that is not orthonormal is an error."
+    );
+    quote! {
+        #[doc = #doc_family]
+        pub const IK_FAMILY: &'static str = #family;
+
+        #[doc = #doc_all]
+        #[inline]
+        pub fn tip_ik(target: &#p::Pose<f64>) -> #all {
+            const ARM: #p::ik::Arm6 = #p::ik::Arm6 {
+                axes: [#(#axes),*],
+                offsets: [#(#offsets),*],
+                tool_rotation: [#(#rows),*],
+            };
+            #p::ik::check_target(target)?;
+            let mut solutions = #p::ik::#solver(&ARM, target);
+            solutions.measure(target, #[inline(always)] |q| #forward(q));
+            ::core::result::Result::Ok(solutions)
+        }
+
+        /// The solutions of [`Self::tip_ik`] inside `JOINT_LIMITS`, each angle moved by a whole
+        /// turn into its limits where that fits.
+        #[inline]
+        pub fn tip_ik_within_limits(target: &#p::Pose<f64>) -> #all {
+            ::core::result::Result::Ok(Self::tip_ik(target)?.within_limits(&Self::JOINT_LIMITS, &[true; 6]))
+        }
+
+        /// The solution of [`Self::tip_ik`] nearest `seed` (each angle moved by whole turns to the
+        /// seed's side), exact ones preferred to least-squares ones.
+        #[inline]
+        pub fn tip_ik_nearest(target: &#p::Pose<f64>, seed: &[f64; 6]) -> #one {
+            ::core::result::Result::Ok(Self::tip_ik(target)?.nearest(seed, &[true; 6]))
+        }
+    }
+}
