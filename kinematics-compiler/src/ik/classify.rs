@@ -197,7 +197,7 @@ pub fn classify(tree: &KinematicTree, base: &str, tip: &str) -> Result<IkPlan, C
     let chain = tree.chain(base, tip).map_err(|source| CompileError::Model { robot: robot.clone(), source })?;
     let zero = zero_configuration(tree, &chain).map_err(|joints| {
         let what: Vec<String> = joints.iter().map(|j| format!("joint `{}` {}", j.joint, j.why)).collect();
-        none(format!("{}; the closed forms take revolute joints only", what.join(", ")))
+        none(format!("{}; the closed forms take independent revolute joints only", what.join(", ")))
     })?;
     let moving = zero.joints.len();
     if let Some(j) = zero.joints.iter().find(|j| j.kind == JointKind::Prismatic) {
@@ -219,7 +219,14 @@ pub fn classify(tree: &KinematicTree, base: &str, tip: &str) -> Result<IkPlan, C
             Ok((points, parallel_to)) => {
                 return Ok(finish(base, tip, &zero, family, points, parallel_to));
             }
-            Err(reason) => reasons.push(format!("{}: {reason}", family.name())),
+            // The wrist is every spherical family's first test: its fault is told once.
+            Err(Fault::Wrist(reason)) => {
+                let told = format!("spherical wrist: {reason}");
+                if !reasons.contains(&told) {
+                    reasons.push(told);
+                }
+            }
+            Err(Fault::Arm(reason)) => reasons.push(format!("{}: {reason}", family.name())),
         }
     }
     Err(none(reasons.join("; ")))
@@ -229,7 +236,19 @@ pub fn classify(tree: &KinematicTree, base: &str, tip: &str) -> Result<IkPlan, C
 /// earlier one, which.
 type Placement = ([Option<V3>; 6], [Option<usize>; 6]);
 
-fn plan(lines: &Lines<'_>, family: IkFamily) -> Result<Placement, String> {
+/// Why a family does not apply: its wrist (shared by the spherical families) or the rest.
+enum Fault {
+    Wrist(String),
+    Arm(String),
+}
+
+impl From<String> for Fault {
+    fn from(reason: String) -> Self {
+        Fault::Arm(reason)
+    }
+}
+
+fn plan(lines: &Lines<'_>, family: IkFamily) -> Result<Placement, Fault> {
     let mut points = [None; 6];
     let mut parallel_to = [None; 6];
     let not_parallel = |i: usize, j: usize| {
@@ -254,7 +273,7 @@ fn plan(lines: &Lines<'_>, family: IkFamily) -> Result<Placement, String> {
         IkFamily::SphericalTwoParallel
         | IkFamily::SphericalFirstTwoIntersecting
         | IkFamily::SphericalLastTwoIntersecting => {
-            let centre = lines.wrist_centre()?;
+            let centre = lines.wrist_centre().map_err(Fault::Wrist)?;
             points[3] = Some(centre);
             points[4] = Some(centre);
             points[5] = Some(centre);

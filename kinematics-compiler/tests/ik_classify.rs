@@ -1,0 +1,105 @@
+//! Which family each robot of `robots/` gets, or why none: the classification is part of the
+//! compiler's output a user sees (`kinematics inspect`), so it is pinned here.
+
+use kinematics_compiler::ik::{IkFamily, classify};
+
+fn load(file: &str) -> kinematics_model::KinematicTree {
+    let path = format!("{}/../robots/{file}", env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(&path).expect("the robot file is readable");
+    kinematics_model::parse_source(file, &text).expect("the robot file is valid")
+}
+
+fn deepest(tree: &kinematics_model::KinematicTree) -> String {
+    let leaf = tree.leaves().max_by_key(|&l| tree.depth(l)).expect("a tree has a leaf");
+    tree.link(leaf).name.clone()
+}
+
+/// Each robot of `robots/` with the tip classified, and the family or a piece of the reason.
+const EXPECTED: &[(&str, Result<IkFamily, &str>)] = &[
+    ("dual_arm_torso.urdf", Err("the chain has 8 moving joints")),
+    ("gen3.urdf", Err("the chain has 7 moving joints")),
+    ("humanoid.urdf", Err("joint `RFinger21` mimics `RHand`")),
+    ("iiwa14.toml", Err("the chain has 7 moving joints")),
+    ("iiwa14.urdf", Err("the chain has 7 moving joints")),
+    ("irb120.urdf", Ok(IkFamily::SphericalTwoParallel)),
+    ("panda.toml", Err("the chain has 7 moving joints")),
+    ("panda.urdf", Err("joint `panda_finger_joint2` mimics `panda_finger_joint1`")),
+    ("planar_2r.toml", Err("the chain has 2 moving joints")),
+    ("planar_3r.toml", Err("the chain has 3 moving joints")),
+    ("planar_3r.urdf", Err("the chain has 3 moving joints")),
+    ("planar_3r_modified.toml", Err("the chain has 3 moving joints")),
+    ("puma560.toml", Ok(IkFamily::SphericalTwoParallel)),
+    ("quadruped.urdf", Err("the chain has 3 moving joints")),
+    ("scara.toml", Err("joint `joint3` is prismatic")),
+    ("seed_tree.urdf", Err("the chain has 2 moving joints")),
+    ("stanford_arm.toml", Err("joint `joint3` is prismatic")),
+    ("ur10e.toml", Ok(IkFamily::ThreeParallelTwoIntersecting)),
+    ("ur10e.urdf", Ok(IkFamily::ThreeParallelTwoIntersecting)),
+    ("ur5.toml", Ok(IkFamily::ThreeParallelTwoIntersecting)),
+    ("ur5.urdf", Ok(IkFamily::ThreeParallelTwoIntersecting)),
+    ("ur5_modified.toml", Ok(IkFamily::ThreeParallelTwoIntersecting)),
+    ("ur5_ros.urdf", Ok(IkFamily::ThreeParallelTwoIntersecting)),
+];
+
+#[test]
+fn every_robot_is_classified_or_told_why_not() {
+    let dir = format!("{}/../robots", env!("CARGO_MANIFEST_DIR"));
+    let mut files: Vec<String> = std::fs::read_dir(&dir)
+        .expect("robots/ is readable")
+        .map(|e| e.expect("an entry").file_name().to_string_lossy().into_owned())
+        .collect();
+    files.sort();
+    let listed: Vec<&str> = EXPECTED.iter().map(|(f, _)| *f).collect();
+    assert_eq!(files, listed, "a robot was added to robots/: say which family it gets");
+    for (file, expected) in EXPECTED {
+        let tree = load(file);
+        let root = tree.link(tree.root()).name.clone();
+        let tip = deepest(&tree);
+        match (classify(&tree, &root, &tip), expected) {
+            (Ok(plan), Ok(family)) => assert_eq!(plan.family, *family, "{file}"),
+            (Err(e), Err(piece)) => assert!(e.to_string().contains(piece), "{file}: {e}"),
+            (got, _) => panic!("{file}: expected {expected:?}, got {got:?}"),
+        }
+    }
+}
+
+#[test]
+fn a_chain_no_family_covers_is_told_why_for_each_family() {
+    // The UR5's table with the elbow twisted a quarter turn: no three parallel axes, and a wrist
+    // whose axes do not meet (d5 and d6 offsets).
+    let dh = r#"
+convention = "standard"
+[[joints]]
+name = "j1"
+d = 0.089159
+alpha = "pi/2"
+[[joints]]
+name = "j2"
+a = -0.425
+[[joints]]
+name = "j3"
+a = -0.39225
+alpha = "pi/2"
+[[joints]]
+name = "j4"
+d = 0.10915
+alpha = "pi/2"
+[[joints]]
+name = "j5"
+d = 0.09465
+alpha = "-pi/2"
+[[joints]]
+name = "j6"
+d = 0.0823
+"#;
+    let tree = kinematics_model::parse_source("twisted.toml", dh).expect("a valid table");
+    let error = classify(&tree, "base", "link6").expect_err("no family covers it").to_string();
+    assert_eq!(error.matches("spherical wrist").count(), 1, "{error}");
+    for piece in [
+        "no closed-form inverse kinematics for `base` -> `link6`",
+        "axes 2, 3, 4 parallel, axes 5 and 6 meet: axes 2 and 4 are not parallel: 1.5708 rad apart",
+        "spherical wrist: axes 4, 5, 6 do not meet: axis 6 passes 0.0946 m from where 4 and 5 meet",
+    ] {
+        assert!(error.contains(piece), "{error}\nlacks: {piece}");
+    }
+}
