@@ -222,12 +222,8 @@ fn the_ur5_reference_vectors() {
 /// is a representative of a continuum, flagged singular, and still reaches the target.
 #[test]
 fn wrist_singularities_give_flagged_representatives() {
-    let cases: [(&str, fn(&[f64; 6]) -> Pose<f64>, fn(&Pose<f64>) -> Result<IkSolutions<6, 8>, IkError>); 3] = [
-        ("ur5", Ur5::tip_pose, Ur5::tip_ik),
-        ("irb120", Irb120::tip_pose, Irb120::tip_ik),
-        ("puma560", Puma560::tip_pose, Puma560::tip_ik),
-    ];
-    for (name, pose, ik) in cases {
+    for arm in [arm!(Ur5, "tool0"), arm!(Irb120, "tool0"), arm!(Puma560, "link6")] {
+        let (name, pose, ik) = (arm.name, arm.pose, arm.ik);
         for q in [[0.3, -1.2, 1.0, 0.4, 0.0, 2.0], [-0.5, 0.2, 0.6, -1.0, 0.0, 0.0], [0.0; 6]] {
             let target = pose(&q);
             let solutions = ik(&target).expect("a pose");

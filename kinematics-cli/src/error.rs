@@ -49,6 +49,18 @@ pub enum CliError {
         /// The description file.
         file: String,
     },
+    /// `ik`: the target is no pose.
+    #[error("{file}: {source}")]
+    Ik {
+        /// The description file.
+        file: String,
+        /// What the solver refused.
+        #[source]
+        source: kinematics::ik::IkError,
+    },
+    /// An option's value that cannot be used (the message names the option and why).
+    #[error("{0}")]
+    Usage(String),
     /// Standard output could not be written.
     #[error("cannot write to standard output: {0}")]
     Output(#[source] std::io::Error),

@@ -132,6 +132,25 @@ pub fn describe(tree: &KinematicTree) -> String {
             names.join(" -> ")
         );
     }
+    out += &ik_families(tree);
+    out
+}
+
+/// The closed-form inverse kinematics family of each leaf's chain from the root, or why none
+/// applies (`kinematics ik` solves with it; the derive's `ik` key emits it).
+pub fn ik_families(tree: &KinematicTree) -> String {
+    let root = &tree.link(tree.root()).name;
+    let mut out = "inverse kinematics in closed form, from the root to each leaf:\n".to_owned();
+    for leaf in tree.leaves() {
+        let tip = &tree.link(leaf).name;
+        let what = match kinematics_compiler::ik::classify(tree, root, tip) {
+            Ok(plan) if plan.notes.is_empty() => plan.family.name().to_owned(),
+            Ok(plan) => format!("{} ({})", plan.family.name(), plan.notes.join("; ")),
+            Err(kinematics_compiler::CompileError::NoIkFamily(none)) => format!("none: {}", none.reason),
+            Err(other) => format!("none: {other}"),
+        };
+        out += &format!("  {tip}: {what}\n");
+    }
     out
 }
 

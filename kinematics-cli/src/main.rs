@@ -17,6 +17,7 @@ mod expr;
 mod fk;
 mod generate;
 mod graph;
+mod ik;
 mod inspect;
 mod robot;
 mod ur5;
@@ -65,6 +66,9 @@ enum Command {
     Check(check::Args),
     /// Print the kinematic tree as Graphviz DOT (links as boxes, joints as labelled edges).
     Graph(graph::Args),
+    /// Every closed-form inverse kinematics solution of the tip for a pose (or for the pose at
+    /// given joint values), each with its flags and its errors by the runtime reference.
+    Ik(ik::Args),
     /// The whole pipeline on one robot: tree, symbolic pose, operation counts, agreement with the
     /// runtime reference, and timing.
     Demo(demo::Args),
@@ -78,6 +82,7 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Command::Inspect(args) => inspect::run(&args, &mut out),
         Command::Fk(args) => fk::run(&args, &mut out),
+        Command::Ik(args) => ik::run(&args, &mut out),
         Command::Expr(args) => expr::run(&args, &mut out),
         Command::Generate(args) => generate::run(&args, &mut out),
         Command::Check(args) => check::run(&args, &mut out),

@@ -664,3 +664,69 @@ fn expr_of_a_1000_joint_chain_is_linear_in_size() {
         "{out}"
     );
 }
+
+/// `ik --from-q` round-trips on every robot a closed-form family covers: eight exact solutions,
+/// the given configuration among them, every error tiny (by the runtime reference).
+#[test]
+fn ik_round_trips_on_every_covered_robot() {
+    let q = "0.3,-1.2,1.0,0.4,-0.7,2.0";
+    for (file, tip, family) in [
+        ("robots/ur5.urdf", "tool0", "axes 2, 3, 4 parallel, axes 5 and 6 meet"),
+        ("robots/ur10e.toml", "wrist_3_link", "axes 2, 3, 4 parallel, axes 5 and 6 meet"),
+        ("robots/irb120.urdf", "tool0", "spherical wrist, axes 2 and 3 parallel"),
+        ("robots/puma560.toml", "link6", "spherical wrist, axes 2 and 3 parallel"),
+    ] {
+        let out = ok(&["ik", file, "--tip", tip, "--from-q", q]);
+        assert!(out.contains(&format!("closed form: {family}")), "{out}");
+        assert!(out.contains("8 solutions, 8 exact"), "{out}");
+        let line = out.lines().find(|l| l.starts_with("round trip: --from-q is solution")).expect("a round-trip line");
+        let difference: f64 = line.rsplit(": ").next().unwrap().trim_end_matches(" rad)").parse().unwrap();
+        assert!(difference < 1e-9, "{file}: {line}");
+        for row in out.lines().filter(|l| l.contains("  exact")) {
+            let errors: Vec<f64> = row.split_whitespace().rev().take(2).map(|e| e.parse().unwrap()).collect();
+            assert!(errors.iter().all(|e| *e < 1e-12), "{file}: {row}");
+        }
+    }
+    // Degrees in, degrees out.
+    let out = ok(&["ik", "robots/ur5.urdf", "--degrees", "--from-q", "10,-60,45,20,-30,90"]);
+    assert!(out.contains("angles in degrees") && out.contains(" 90.00000)"), "{out}");
+}
+
+#[test]
+fn ik_takes_a_pose_and_refuses_what_is_no_pose() {
+    let out = ok(&["ik", "robots/ur5.urdf", "--pose", "0.4 0.1 0.5 0 1 0 0"]);
+    assert!(out.contains("target: position (0.4, 0.1, 0.5), rotation rows (1, 0, 0; 0, -1, 0; 0, 0, -1)"), "{out}");
+    let far = ok(&["ik", "robots/ur5.urdf", "--pose", "5 0 0 1 0 0 0"]);
+    assert!(far.contains("8 solutions, 0 exact") && far.contains("least squares"), "{far}");
+    for (pose, fault) in [
+        ("0.4 0.1 0.5 0 0 0 0", "the quaternion has length zero: it is no rotation"),
+        ("0.4 0.1 0.5 1 0 0", "6 values given; it takes seven: x y z qw qx qy qz"),
+        ("0.4 x 0.5 1 0 0 0", "`x` is not a number"),
+        ("0.4 NaN 0.5 1 0 0 0", "every value must be a finite number"),
+    ] {
+        let error = fails(&["ik", "robots/ur5.urdf", "--pose", pose]);
+        assert_eq!(error, format!("error: robots/ur5.urdf: --pose \"{pose}\": {fault}"));
+    }
+}
+
+#[test]
+fn ik_on_a_chain_no_family_covers_says_why() {
+    let error = fails(&["ik", "robots/iiwa14.urdf", "--pose", "0.4 0.1 0.5 0 1 0 0"]);
+    assert!(
+        error.starts_with("error: robots/iiwa14.urdf: robot `iiwa14`: no closed-form inverse kinematics"),
+        "{error}"
+    );
+    assert!(error.contains("the chain has 7 moving joints; the closed forms solve six"), "{error}");
+    let error = fails(&["ik", "robots/scara.toml", "--from-q", "0,0,0.1,0"]);
+    assert!(error.contains("joint `joint3` is prismatic"), "{error}");
+}
+
+#[test]
+fn inspect_names_each_leaf_s_ik_family() {
+    let ur5 = ok(&["inspect", "robots/ur5.urdf"]);
+    assert!(ur5.contains("inverse kinematics in closed form, from the root to each leaf:\n"), "{ur5}");
+    assert!(ur5.contains("\n  tool0: axes 2, 3, 4 parallel, axes 5 and 6 meet (point of axis 5"), "{ur5}");
+    assert!(ur5.contains("\n  base: none: the chain has 0 moving joints; the closed forms solve six\n"), "{ur5}");
+    let panda = ok(&["inspect", "robots/panda.toml"]);
+    assert!(panda.contains("  flange: none: the chain has 7 moving joints"), "{panda}");
+}

@@ -29,17 +29,8 @@ pub enum CompileError {
         value: f64,
     },
     /// A chain no closed-form inverse kinematics family covers (every family's reason given).
-    #[error("robot `{robot}`: no closed-form inverse kinematics for `{base}` -> `{tip}`: {reason}")]
-    NoIkFamily {
-        /// Robot name.
-        robot: String,
-        /// The base link.
-        base: String,
-        /// The tip link.
-        tip: String,
-        /// Why each family does not apply.
-        reason: String,
-    },
+    #[error("{0}")]
+    NoIkFamily(Box<NoIkFamily>),
     /// Inverse kinematics asked of other than exactly one tip.
     #[error("robot `{robot}`: inverse kinematics needs exactly one tip (`tip = \"...\"`), not {tips}")]
     IkNeedsOneTip {
@@ -48,4 +39,19 @@ pub enum CompileError {
         /// How many tips were asked for.
         tips: usize,
     },
+}
+
+/// Why no closed-form inverse kinematics family covers a chain (boxed in [`CompileError`], which
+/// stays small).
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("robot `{robot}`: no closed-form inverse kinematics for `{base}` -> `{tip}`: {reason}")]
+pub struct NoIkFamily {
+    /// Robot name.
+    pub robot: String,
+    /// The base link.
+    pub base: String,
+    /// The tip link.
+    pub tip: String,
+    /// Why each family does not apply.
+    pub reason: String,
 }

@@ -27,6 +27,6 @@ pub mod simplify;
 mod stats;
 pub mod symbolic;
 
-pub use error::CompileError;
+pub use error::{CompileError, NoIkFamily};
 pub use request::{Compiled, Frame, FrameVelocity, Request, Velocity, VelocityForm, compile, plain_product_count};
 pub use stats::{OpCount, marginal_counts};

@@ -1,5 +1,6 @@
 //! Which family each robot of `robots/` gets, or why none: the classification is part of the
 //! compiler's output a user sees (`kinematics inspect`), so it is pinned here.
+#![allow(clippy::expect_used, clippy::panic)] // test helpers fail loudly
 
 use kinematics_compiler::ik::{IkFamily, classify};
 

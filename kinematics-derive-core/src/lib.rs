@@ -72,6 +72,21 @@ fn read_and_check(
     (loaded, links_ok)
 }
 
+/// Why `ik` cannot be emitted for this robot and these options, if it cannot: not exactly one
+/// tip, or a chain no closed-form family covers.
+fn ik_fault(options: &KinematicsInput, loaded: &source::Loaded) -> Option<String> {
+    let tips = options.tips();
+    let tree = &loaded.tree;
+    let base = options.base.as_ref().map_or_else(|| tree.link(tree.root()).name.clone(), |b| b.as_ref().clone());
+    match tips.as_slice() {
+        [tip] => kinematics_compiler::ik::classify(tree, &base, tip.as_ref()).err().map(|e| e.to_string()),
+        _ => Some(format!(
+            "`ik` needs exactly one `tip = \"link\"`: the inverse kinematics is the tip's ({} tips given)",
+            tips.len()
+        )),
+    }
+}
+
 /// What the stub needs to know of a loaded robot.
 fn known(loaded: &source::Loaded) -> fallback::Known {
     fallback::Known {
@@ -100,27 +115,13 @@ fn expand_options(
         );
         return (loaded.as_ref().map(known), None);
     }
-    if options.ik.is_present() && links_ok {
-        if let Some(loaded) = &loaded {
-            let tips = options.tips();
-            let base = options
-                .base
-                .as_ref()
-                .map_or_else(|| loaded.tree.link(loaded.tree.root()).name.clone(), |b| b.as_ref().clone());
-            let fault = match tips.as_slice() {
-                [tip] => {
-                    kinematics_compiler::ik::classify(&loaded.tree, &base, tip.as_ref()).err().map(|e| e.to_string())
-                }
-                _ => Some(format!(
-                    "`ik` needs exactly one `tip = \"link\"`: the inverse kinematics is the tip's ({} tips given)",
-                    tips.len()
-                )),
-            };
-            if let Some(fault) = fault {
-                errors.push(darling::Error::custom(format!("{}: {fault}", loaded.label)).with_span(&options.ik.span()));
-                return (Some(known(loaded)), None);
-            }
-        }
+    if options.ik.is_present()
+        && links_ok
+        && let Some(loaded) = &loaded
+        && let Some(fault) = ik_fault(options, loaded)
+    {
+        errors.push(darling::Error::custom(format!("{}: {fault}", loaded.label)).with_span(&options.ik.span()));
+        return (Some(known(loaded)), None);
     }
     let trig = errors.handle(options.trig());
     let known = loaded.as_ref().map(known);

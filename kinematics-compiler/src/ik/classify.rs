@@ -12,7 +12,7 @@
 use kinematics_model::{JointKind, KinematicTree};
 
 use super::geometry::{M3, V3, ZeroConfiguration, zero_configuration};
-use crate::error::CompileError;
+use crate::error::{CompileError, NoIkFamily};
 
 /// Axes whose directions differ by less than this (the sine of the angle between them) are
 /// parallel.
@@ -188,11 +188,13 @@ impl Lines<'_> {
 /// covers it (every family's reason).
 pub fn classify(tree: &KinematicTree, base: &str, tip: &str) -> Result<IkPlan, CompileError> {
     let robot = tree.name().to_owned();
-    let none = |reason: String| CompileError::NoIkFamily {
-        robot: robot.clone(),
-        base: base.to_owned(),
-        tip: tip.to_owned(),
-        reason,
+    let none = |reason: String| {
+        CompileError::NoIkFamily(Box::new(NoIkFamily {
+            robot: robot.clone(),
+            base: base.to_owned(),
+            tip: tip.to_owned(),
+            reason,
+        }))
     };
     let chain = tree.chain(base, tip).map_err(|source| CompileError::Model { robot: robot.clone(), source })?;
     let zero = zero_configuration(tree, &chain).map_err(|joints| {

@@ -1,0 +1,155 @@
+//! `kinematics ik FILE --pose ...` (or `--from-q ...`): every closed-form inverse kinematics
+//! solution of the tip, solved by the same core function the derive's `ik` key calls, with the
+//! geometry the compiler classified, each solution's errors measured by the runtime reference.
+
+use std::io::Write;
+
+use kinematics::Pose;
+use kinematics::ReferenceFk;
+use kinematics::ik::{Arm6, IkSolutions};
+use kinematics_compiler::ik::{IkFamily, IkPlan};
+
+use crate::error::CliError;
+use crate::inspect::short;
+
+/// Arguments of `ik`.
+#[derive(clap::Args)]
+pub struct Args {
+    /// A URDF file (.urdf, .xml) or DH table (.toml, .json).
+    file: String,
+    /// The base link (default: the root).
+    #[arg(long)]
+    base: Option<String>,
+    /// The tip link (default: the deepest link).
+    #[arg(long)]
+    tip: Option<String>,
+    /// The target: position then orientation as a unit quaternion, "x y z qw qx qy qz" (metres;
+    /// the quaternion is normalised, and one of length zero is an error).
+    #[arg(long, allow_hyphen_values = true, conflicts_with = "from_q", required_unless_present = "from_q")]
+    pose: Option<String>,
+    /// The target as the tip's pose at these joint values (comma-separated, DoF order): a round
+    /// trip, which also says which solution they are.
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
+    from_q: Option<Vec<f64>>,
+    /// Read `--from-q` and print solutions in degrees.
+    #[arg(long)]
+    degrees: bool,
+}
+
+/// Solves and prints.
+pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
+    let file = &args.file;
+    let tree = crate::robot::load(file)?;
+    let (base, tip) = crate::robot::base_and_tip(&tree, file, args.base.as_deref(), args.tip.as_deref())?;
+    let plan = kinematics_compiler::ik::classify(&tree, &base, &tip)
+        .map_err(|source| CliError::Compile { file: file.clone(), source })?;
+    let fk = ReferenceFk::new(tree);
+    let runtime = |source| CliError::Runtime { file: file.clone(), source };
+    let scale = if args.degrees { 180.0 / std::f64::consts::PI } else { 1.0 };
+    let (target, given) = match (&args.pose, &args.from_q) {
+        (Some(text), _) => (parse_pose(file, text)?, None),
+        (None, Some(q)) => {
+            let q: Vec<f64> = q.iter().map(|x| x / scale).collect();
+            (Pose::from(fk.relative_pose(&q, &base, &tip).map_err(runtime)?), Some(q))
+        }
+        (None, None) => unreachable!("clap requires --pose or --from-q"),
+    };
+    kinematics::ik::check_target(&target).map_err(|source| CliError::Ik { file: file.clone(), source })?;
+    let mut solutions = solve(&plan, &target);
+    let nan = Pose { rotation: [[f64::NAN; 3]; 3], translation: [f64::NAN; 3] };
+    // Six finite values always pose (the solvers never return NaN); a refusal would show as an
+    // infinite error, never as a small one.
+    solutions.measure(&target, |q| fk.relative_pose(q, &base, &tip).map(Pose::from).unwrap_or(nan));
+    writeln!(out, "robot `{}`: `{tip}` in `{base}`, closed form: {}", fk.tree().name(), plan.family.name())?;
+    let [x, y, z] = target.translation.map(short);
+    let rows: Vec<String> = target.rotation.iter().map(|r| r.map(short).join(", ")).collect();
+    writeln!(out, "target: position ({x}, {y}, {z}), rotation rows ({})", rows.join("; "))?;
+    writeln!(
+        out,
+        "{} solutions, {} exact (errors measured by the runtime reference; angles in {}):",
+        solutions.len(),
+        solutions.exact().count(),
+        if args.degrees { "degrees" } else { "radians" }
+    )?;
+    writeln!(out, "  #  {:<66}  {:<16}  {:>10}  {:>10}", "q", "flags", "position", "rotation")?;
+    for (i, s) in solutions.iter().enumerate() {
+        let q: Vec<String> = s.q.iter().map(|v| format!("{:>9.5}", v * scale)).collect();
+        let flags = match (s.exact, s.singular) {
+            (true, false) => "exact",
+            (true, true) => "exact, singular",
+            (false, false) => "least squares",
+            (false, true) => "l. sq., singular",
+        };
+        writeln!(
+            out,
+            "  {}  ({})  {flags:<16}  {:>10.2e}  {:>10.2e}",
+            i + 1,
+            q.join(", "),
+            s.position_error,
+            s.rotation_error
+        )?;
+    }
+    if let Some(q) = given {
+        let q: [f64; 6] = q.try_into().map_err(|_| CliError::Usage(format!("{file}: --from-q needs six values")))?;
+        // Which solution the given configuration is: the nearest modulo 2 pi.
+        let distance = |s: &[f64; 6]| {
+            s.iter()
+                .zip(&q)
+                .map(|(a, b)| wrap(a - b).abs())
+                .fold(0.0, |m: f64, d| if d > m || d.is_nan() { d } else { m })
+        };
+        let nearest = solutions.iter().enumerate().map(|(i, s)| (distance(&s.q), i)).min_by(|a, b| a.0.total_cmp(&b.0));
+        if let Some((d, i)) = nearest {
+            writeln!(
+                out,
+                "round trip: --from-q is solution {} (largest joint difference modulo 2 pi: {d:.1e} rad)",
+                i + 1
+            )?;
+        }
+    }
+    Ok(())
+}
+
+/// The family's core solver on the plan's geometry.
+pub fn solve(plan: &IkPlan, target: &Pose<f64>) -> IkSolutions<6, 8> {
+    let arm = Arm6 { axes: plan.axes, offsets: plan.offsets, tool_rotation: plan.tool_rotation };
+    match plan.family {
+        IkFamily::SphericalTwoParallel => kinematics::ik::spherical_two_parallel(&arm, target),
+        IkFamily::SphericalFirstTwoIntersecting => kinematics::ik::spherical_first_two_intersecting(&arm, target),
+        IkFamily::SphericalLastTwoIntersecting => kinematics::ik::spherical_last_two_intersecting(&arm, target),
+        IkFamily::ThreeParallelTwoIntersecting => kinematics::ik::three_parallel_two_intersecting(&arm, target),
+    }
+}
+
+/// `x` moved by whole turns into `(-pi, pi]`.
+fn wrap(x: f64) -> f64 {
+    let tau = std::f64::consts::TAU;
+    let wrapped = x - tau * (x / tau).round();
+    if wrapped <= -std::f64::consts::PI { wrapped + tau } else { wrapped }
+}
+
+/// "x y z qw qx qy qz" (spaces or commas) as a pose.
+fn parse_pose(file: &str, text: &str) -> Result<Pose<f64>, CliError> {
+    let bad = |why: String| CliError::Usage(format!("{file}: --pose \"{text}\": {why}"));
+    let values: Vec<f64> = text
+        .split(|c: char| c.is_whitespace() || c == ',')
+        .filter(|t| !t.is_empty())
+        .map(|t| t.parse::<f64>().map_err(|_| bad(format!("`{t}` is not a number"))))
+        .collect::<Result<_, _>>()?;
+    let [x, y, z, w, qx, qy, qz] = values[..] else {
+        return Err(bad(format!("{} values given; it takes seven: x y z qw qx qy qz", values.len())));
+    };
+    if !values.iter().all(|v| v.is_finite()) {
+        return Err(bad("every value must be a finite number".to_owned()));
+    }
+    let quaternion = nalgebra::Quaternion::new(w, qx, qy, qz);
+    if quaternion.norm() == 0.0 {
+        return Err(bad("the quaternion has length zero: it is no rotation".to_owned()));
+    }
+    let rotation = nalgebra::UnitQuaternion::from_quaternion(quaternion).to_rotation_matrix();
+    let r = |i: usize, j: usize| rotation[(i, j)];
+    Ok(Pose {
+        rotation: [[r(0, 0), r(0, 1), r(0, 2)], [r(1, 0), r(1, 1), r(1, 2)], [r(2, 0), r(2, 1), r(2, 2)]],
+        translation: [x, y, z],
+    })
+}
