@@ -30,6 +30,7 @@
 //! ```
 
 mod family;
+mod numeric;
 mod solutions;
 pub mod subproblem;
 mod vector;
@@ -38,6 +39,7 @@ pub use family::{
     Arm6, spherical_first_two_intersecting, spherical_last_two_intersecting, spherical_two_parallel,
     three_parallel_two_intersecting,
 };
+pub use numeric::{NumericOptions, NumericSolution, levenberg_marquardt};
 pub use solutions::{IkError, IkSolution, IkSolutions, ROTATION_TOLERANCE, check_target, pose_errors};
 
 use crate::pose::Pose;

@@ -1,0 +1,346 @@
+//! The numeric inverse kinematics every chain gets: Levenberg-Marquardt on the robot's generated
+//! pose and Jacobian, joint limits respected (steps clamped into them), restarts from
+//! deterministic seeds when a start does not converge, and no heap in the iteration.
+//!
+//! The error is the twist that takes the reached pose to the target: the position difference and
+//! the rotation vector of `R_target R^T`, both in the base frame, which is what the geometric
+//! Jacobian in `LOCAL_WORLD_ALIGNED` maps joint rates to. Each step solves
+//! `(J^T J + lambda (diag(J^T J) + mu I)) dq = J^T e` (Marquardt's scaling, with `mu` keeping
+//! joints that do not move the tip still), taken only when it lowers the error; `lambda` falls
+//! after a good step and rises after a rejected one.
+
+use super::solutions::pose_errors;
+use super::vector::{V3, dot, sub};
+use crate::kinematics::JointLimits;
+use crate::pose::Pose;
+
+/// How hard the numeric solver tries, and when it is done.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct NumericOptions {
+    /// Converged when the position error is at most this (metres) and the rotation error at most
+    /// this (radians).
+    pub tolerance: f64,
+    /// Steps (each one pose-and-Jacobian evaluation) per start.
+    pub max_iterations: usize,
+    /// Starts after the first (from deterministic pseudo-random configurations within the limits)
+    /// when a start does not converge.
+    pub restarts: usize,
+}
+
+impl Default for NumericOptions {
+    /// `1e-10`, 100 steps per start, 8 restarts.
+    fn default() -> Self {
+        NumericOptions { tolerance: 1e-10, max_iterations: 100, restarts: 8 }
+    }
+}
+
+/// What the numeric solver found: the best configuration of all starts and how it got there.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct NumericSolution<const N: usize> {
+    /// The configuration (within the limits given).
+    pub q: [f64; N],
+    /// Both errors within [`NumericOptions::tolerance`].
+    pub converged: bool,
+    /// Distance to the target's translation (metres).
+    pub position_error: f64,
+    /// Angle to the target's rotation (radians).
+    pub rotation_error: f64,
+    /// Steps taken, over all starts.
+    pub iterations: usize,
+    /// Starts made, over all (1 when the seed converged).
+    pub starts: usize,
+}
+
+/// The rotation vector (axis times angle) of the rotation `r`, accurate near 0 and near pi.
+fn rotation_vector(r: &[[f64; 3]; 3]) -> V3 {
+    let vee = [r[2][1] - r[1][2], r[0][2] - r[2][0], r[1][0] - r[0][1]];
+    let sine2 = libm::sqrt(dot(vee, vee)); // 2 sin(angle)
+    let cosine2 = r[0][0] + r[1][1] + r[2][2] - 1.0; // 2 cos(angle)
+    let angle = libm::atan2(sine2, cosine2);
+    if cosine2 > -1.0 {
+        // Away from a half turn: the skew part gives the axis.
+        let scale = if sine2 > 1e-300 { angle / sine2 } else { 0.5 };
+        return [vee[0] * scale, vee[1] * scale, vee[2] * scale];
+    }
+    // Near a half turn the skew part vanishes: the axis is the column of R + I of largest norm
+    // (R + I = 2 u u^T at pi), its sign from the skew part.
+    let mut best = 0;
+    let mut best_norm = -1.0;
+    for j in 0..3 {
+        let column = [r[0][j], r[1][j], r[2][j]];
+        let mut c = column;
+        c[j] += 1.0;
+        let n = dot(c, c);
+        if n > best_norm {
+            best = j;
+            best_norm = n;
+        }
+    }
+    let mut axis = [r[0][best], r[1][best], r[2][best]];
+    axis[best] += 1.0;
+    let n = libm::sqrt(best_norm);
+    let mut axis = [axis[0] / n, axis[1] / n, axis[2] / n];
+    if dot(axis, vee) < 0.0 {
+        axis = [-axis[0], -axis[1], -axis[2]];
+    }
+    [axis[0] * angle, axis[1] * angle, axis[2] * angle]
+}
+
+/// The error twist from `reached` to `target`: position difference, then rotation vector of
+/// `R_target R_reached^T`, both in the base frame.
+fn error_twist(reached: &Pose<f64>, target: &Pose<f64>) -> [f64; 6] {
+    let p = sub(target.translation, reached.translation);
+    let t = &target.rotation;
+    let r = &reached.rotation;
+    // R_target R_reached^T: rows of target against rows of reached.
+    let m = [0, 1, 2].map(|i| [0, 1, 2].map(|j| dot(t[i], r[j])));
+    let w = rotation_vector(&m);
+    [p[0], p[1], p[2], w[0], w[1], w[2]]
+}
+
+/// Solves `a x = b` for a symmetric positive definite `a` by Cholesky, in place; `false` if `a`
+/// is not positive definite (to rounding).
+fn cholesky_solve<const N: usize>(a: &mut [[f64; N]; N], b: &mut [f64; N]) -> bool {
+    for j in 0..N {
+        let mut d = a[j][j];
+        for k in 0..j {
+            d -= a[j][k] * a[j][k];
+        }
+        if d <= 0.0 || !d.is_finite() {
+            return false;
+        }
+        let d = libm::sqrt(d);
+        a[j][j] = d;
+        for i in j + 1..N {
+            let mut s = a[i][j];
+            for k in 0..j {
+                s -= a[i][k] * a[j][k];
+            }
+            a[i][j] = s / d;
+        }
+    }
+    for i in 0..N {
+        let mut s = b[i];
+        for k in 0..i {
+            s -= a[i][k] * b[k];
+        }
+        b[i] = s / a[i][i];
+    }
+    for i in (0..N).rev() {
+        let mut s = b[i];
+        for k in i + 1..N {
+            s -= a[k][i] * b[k];
+        }
+        b[i] = s / a[i][i];
+    }
+    true
+}
+
+fn clamp<const N: usize>(q: &mut [f64; N], limits: &[JointLimits; N]) {
+    for (value, l) in q.iter_mut().zip(limits) {
+        // Infinite limits clamp nothing; the model keeps lower <= upper.
+        if *value < l.lower {
+            *value = l.lower;
+        }
+        if *value > l.upper {
+            *value = l.upper;
+        }
+    }
+}
+
+/// A deterministic generator of restart seeds (splitmix64).
+struct Seeds(u64);
+
+impl Seeds {
+    fn next(&mut self) -> f64 {
+        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        (z ^ (z >> 31)) as f64 / 18_446_744_073_709_551_616.0
+    }
+
+    /// A configuration within the limits (within one turn either side of zero where a joint has
+    /// none).
+    fn within<const N: usize>(&mut self, limits: &[JointLimits; N]) -> [f64; N] {
+        let mut q = [0.0; N];
+        for (value, l) in q.iter_mut().zip(limits) {
+            let (lo, hi) = if l.lower.is_finite() && l.upper.is_finite() {
+                (l.lower, l.upper)
+            } else {
+                (-core::f64::consts::PI, core::f64::consts::PI)
+            };
+            *value = lo + (hi - lo) * self.next();
+        }
+        q
+    }
+}
+
+/// Levenberg-Marquardt from `seed` toward `target`, with `pose_and_jacobian` the robot's
+/// generated tip pose and geometric Jacobian (`LOCAL_WORLD_ALIGNED`, one column per entry of
+/// `q`), the configuration kept within `limits`; restarts from deterministic seeds within the
+/// limits when a start does not converge. Returns the best configuration found.
+pub fn levenberg_marquardt<const N: usize>(
+    target: &Pose<f64>,
+    seed: &[f64; N],
+    limits: &[JointLimits; N],
+    options: &NumericOptions,
+    pose_and_jacobian: impl Fn(&[f64; N]) -> (Pose<f64>, [[f64; N]; 6]),
+) -> NumericSolution<N> {
+    let mut seeds = Seeds(0x6b69_6e65_6d61_7469);
+    let mut best: Option<NumericSolution<N>> = None;
+    let mut iterations = 0;
+    let mut starts = 0;
+    for start in 0..=options.restarts {
+        starts += 1;
+        let mut q = if start == 0 { *seed } else { seeds.within(limits) };
+        clamp(&mut q, limits);
+        let (mut pose, mut jacobian) = pose_and_jacobian(&q);
+        let mut error = error_twist(&pose, target);
+        let mut cost = dot6(&error);
+        let mut lambda = 1e-3;
+        let mut steps = 0;
+        while steps < options.max_iterations {
+            let (position, rotation) = pose_errors(&pose, target);
+            if position <= options.tolerance && rotation <= options.tolerance {
+                break;
+            }
+            steps += 1;
+            // Normal equations: J^T J and J^T e.
+            let mut a = [[0.0; N]; N];
+            let mut g = [0.0; N];
+            for i in 0..N {
+                for j in 0..=i {
+                    let mut s = 0.0;
+                    for row in &jacobian {
+                        s += row[i] * row[j];
+                    }
+                    a[i][j] = s;
+                    a[j][i] = s;
+                }
+                for (row, e) in jacobian.iter().zip(&error) {
+                    g[i] += row[i] * e;
+                }
+            }
+            let mut accepted = false;
+            // A rejected step raises lambda and tries again; after a few the start is done.
+            for _ in 0..10 {
+                let mut m = a;
+                for (i, row) in m.iter_mut().enumerate() {
+                    row[i] += lambda * (a[i][i] + 1e-9);
+                }
+                let mut dq = g;
+                if !cholesky_solve(&mut m, &mut dq) {
+                    lambda *= 10.0;
+                    continue;
+                }
+                let mut candidate = q;
+                for (value, step) in candidate.iter_mut().zip(&dq) {
+                    *value += step;
+                }
+                clamp(&mut candidate, limits);
+                let (new_pose, new_jacobian) = pose_and_jacobian(&candidate);
+                let new_error = error_twist(&new_pose, target);
+                let new_cost = dot6(&new_error);
+                if new_cost < cost {
+                    q = candidate;
+                    pose = new_pose;
+                    jacobian = new_jacobian;
+                    error = new_error;
+                    cost = new_cost;
+                    lambda = if lambda > 1e-12 { lambda / 3.0 } else { 1e-12 };
+                    accepted = true;
+                    break;
+                }
+                lambda *= 4.0;
+            }
+            if !accepted {
+                break;
+            }
+        }
+        iterations += steps;
+        let (position_error, rotation_error) = pose_errors(&pose, target);
+        let converged = position_error <= options.tolerance && rotation_error <= options.tolerance;
+        let found = NumericSolution { q, converged, position_error, rotation_error, iterations, starts: start + 1 };
+        let better = match &best {
+            None => true,
+            Some(b) => position_error + rotation_error < b.position_error + b.rotation_error,
+        };
+        if better {
+            best = Some(found);
+        }
+        if converged {
+            break;
+        }
+    }
+    let mut best = best.unwrap_or(NumericSolution {
+        q: *seed,
+        converged: false,
+        position_error: f64::INFINITY,
+        rotation_error: f64::INFINITY,
+        iterations: 0,
+        starts: 0,
+    });
+    best.iterations = iterations;
+    best.starts = starts;
+    best
+}
+
+fn dot6(e: &[f64; 6]) -> f64 {
+    e.iter().map(|x| x * x).sum()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn rz(t: f64) -> [[f64; 3]; 3] {
+        let (s, c) = libm::sincos(t);
+        [[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]]
+    }
+
+    #[test]
+    fn rotation_vectors_of_small_and_half_turns() {
+        for angle in [0.0, 1e-12, 0.3, 3.0, core::f64::consts::PI - 1e-9, core::f64::consts::PI] {
+            let w = rotation_vector(&rz(angle));
+            assert!((w[2] - angle).abs() < 1e-9 && w[0].abs() < 1e-12 && w[1].abs() < 1e-12, "{angle}: {w:?}");
+        }
+        // A half turn about x: either sign of the axis is the same rotation.
+        let w = rotation_vector(&[[1.0, 0.0, 0.0], [0.0, -1.0, 0.0], [0.0, 0.0, -1.0]]);
+        assert!((w[0].abs() - core::f64::consts::PI).abs() < 1e-15 && w[1] == 0.0 && w[2] == 0.0, "{w:?}");
+    }
+
+    #[test]
+    fn cholesky_solves_and_refuses() {
+        let mut a = [[4.0, 2.0], [2.0, 3.0]];
+        let mut b = [2.0, 1.0];
+        assert!(cholesky_solve(&mut a, &mut b));
+        assert!((b[0] - 0.5).abs() < 1e-15 && b[1].abs() < 1e-15, "{b:?}");
+        let mut singular = [[1.0, 1.0], [1.0, 1.0]];
+        assert!(!cholesky_solve(&mut singular, &mut [1.0, 1.0]));
+    }
+
+    /// A planar 2R arm with unit links, its pose and Jacobian by hand.
+    fn planar(q: &[f64; 2]) -> (Pose<f64>, [[f64; 2]; 6]) {
+        let (s1, c1) = libm::sincos(q[0]);
+        let (s12, c12) = libm::sincos(q[0] + q[1]);
+        let pose = Pose { rotation: rz(q[0] + q[1]), translation: [c1 + c12, s1 + s12, 0.0] };
+        let j = [[-s1 - s12, -s12], [c1 + c12, c12], [0.0, 0.0], [0.0, 0.0], [0.0, 0.0], [1.0, 1.0]];
+        (pose, j)
+    }
+
+    #[test]
+    fn a_planar_arm_converges_and_respects_limits() {
+        let unlimited = [JointLimits { lower: f64::NEG_INFINITY, upper: f64::INFINITY }; 2];
+        let target = planar(&[0.7, -1.1]).0;
+        let found = levenberg_marquardt(&target, &[0.0, 0.5], &unlimited, &NumericOptions::default(), planar);
+        assert!(found.converged, "{found:?}");
+        assert!((found.q[0] - 0.7).abs() < 1e-9 && (found.q[1] + 1.1).abs() < 1e-9, "{found:?}");
+        // With the elbow limited to positive angles the only exact answer is out of reach: the
+        // best stays within the limits and says it did not converge.
+        let limited = [unlimited[0], JointLimits { lower: 0.0, upper: 3.0 }];
+        let found = levenberg_marquardt(&target, &[0.0, 0.5], &limited, &NumericOptions::default(), planar);
+        assert!(!found.converged && found.q[1] >= 0.0 && found.q[1] <= 3.0, "{found:?}");
+        assert!(found.position_error.is_finite() && found.starts == 9, "{found:?}");
+    }
+}
