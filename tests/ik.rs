@@ -1,9 +1,11 @@
 //! Compiled inverse kinematics, derived: the reference vectors of `REFERENCE.md`, round trips on
 //! every robot of `robots/` a closed-form family covers (checked by the generated forward
 //! kinematics and by the runtime reference), and the documented answers for singular,
-//! unreachable and malformed targets.
+//! unreachable and malformed targets; and the numeric solver on seven-joint arms and as the
+//! closed form's witness.
+#![allow(clippy::expect_used)] // test helpers fail loudly
 
-use kinematics::ik::{IkError, IkSolutions};
+use kinematics::ik::{IkError, IkSolutions, NumericSolution};
 use kinematics::{JointLimits, Kinematics, Pose, ReferenceModel};
 
 #[derive(Kinematics)]
@@ -47,6 +49,7 @@ struct Arm {
     pose: fn(&[f64; 6]) -> Pose<f64>,
     jacobian: fn(&[f64; 6]) -> [[f64; 6]; 6],
     ik: fn(&Pose<f64>) -> Result<IkSolutions<6, 8>, IkError>,
+    numeric: fn(&Pose<f64>, &[f64; 6]) -> Result<NumericSolution<6>, IkError>,
     reference: fn() -> Result<kinematics::ReferenceFk, kinematics::LoadError>,
 }
 
@@ -60,6 +63,7 @@ macro_rules! arm {
             pose: $robot::tip_pose,
             jacobian: $robot::tip_jacobian,
             ik: $robot::tip_ik,
+            numeric: $robot::tip_ik_numeric,
             reference: <$robot as ReferenceModel>::reference,
         }
     };
@@ -316,4 +320,103 @@ fn isometry_targets() {
     assert!(solutions.exact().any(|s| angle_distance(&s.q, &q) < 1e-9));
     assert_eq!(Ur5::IK_FAMILY, "axes 2, 3, 4 parallel, axes 5 and 6 meet");
     assert_eq!(Irb120::IK_FAMILY, "spherical wrist, axes 2 and 3 parallel");
+}
+
+#[derive(Kinematics)]
+#[kinematics(dh = "robots/panda.toml", tip = "flange", ik = "numeric")]
+struct Panda;
+
+#[derive(Kinematics)]
+#[kinematics(urdf = "robots/iiwa14.urdf", tip = "iiwa_link_ee", ik = "numeric")]
+struct Iiwa14;
+
+/// The numeric solver on the seven-joint arms: random reachable targets (the pose at a random
+/// configuration within limits), random seeds within limits; at least 99.5% converge to 1e-10,
+/// and each converged answer's pose is the target's by the errors it reports and by the runtime
+/// reference.
+#[test]
+fn numeric_ik_converges_on_seven_joint_arms() {
+    struct Arm7 {
+        name: &'static str,
+        tip: &'static str,
+        limits: [JointLimits; 7],
+        pose: fn(&[f64; 7]) -> Pose<f64>,
+        solve: fn(&Pose<f64>, &[f64; 7]) -> Result<NumericSolution<7>, IkError>,
+        reference: kinematics::ReferenceFk,
+    }
+    let arms = [
+        Arm7 {
+            name: "panda",
+            tip: "flange",
+            limits: Panda::JOINT_LIMITS,
+            pose: Panda::tip_pose,
+            solve: Panda::tip_ik_numeric,
+            reference: Panda::reference().expect("loads"),
+        },
+        Arm7 {
+            name: "iiwa14",
+            tip: "iiwa_link_ee",
+            limits: Iiwa14::JOINT_LIMITS,
+            pose: Iiwa14::tip_pose,
+            solve: Iiwa14::tip_ik_numeric,
+            reference: Iiwa14::reference().expect("loads"),
+        },
+    ];
+    for Arm7 { name, tip, limits, pose, solve, reference } in arms {
+        let mut rng = Uniform(5);
+        let within = |rng: &mut Uniform| limits.map(|l| l.lower + (l.upper - l.lower) * rng.next());
+        let samples = 2000;
+        let mut converged = 0;
+        for _ in 0..samples {
+            let target = pose(&within(&mut rng));
+            let seed = within(&mut rng);
+            let found = solve(&target, &seed).expect("a pose and a finite seed");
+            assert!(found.q.iter().zip(&limits).all(|(q, l)| l.lower <= *q && *q <= l.upper), "{name}: {found:?}");
+            if found.converged {
+                converged += 1;
+                assert!(found.position_error <= 1e-10 && found.rotation_error <= 1e-10, "{name}: {found:?}");
+                let reached = Pose::from(reference.link_pose(&found.q, tip).expect("finite q"));
+                let (position, rotation) = kinematics::ik::pose_errors(&reached, &target);
+                assert!(position <= 1e-10 && rotation <= 1e-10, "{name}: the reference: {position:e}, {rotation:e}");
+            }
+        }
+        assert!(converged * 1000 >= samples * 995, "{name}: {converged} of {samples} converged");
+    }
+}
+
+/// The numeric solver is the closed form's witness: from many seeds it finds no solution the
+/// closed form misses (each converged answer is one of the closed form's, modulo 2 pi).
+#[test]
+fn the_numeric_solver_finds_no_solution_the_closed_form_misses() {
+    for arm in [arm!(Ur5, "tool0"), arm!(Irb120, "tool0")] {
+        let mut rng = Uniform(9);
+        for _ in 0..12 {
+            let target = (arm.pose)(&rng.within(&arm.limits));
+            let closed = (arm.ik)(&target).expect("a pose");
+            for _ in 0..25 {
+                let seed = rng.within(&arm.limits);
+                let found = (arm.numeric)(&target, &seed).expect("a pose and a finite seed");
+                if found.converged {
+                    let nearest = closed.exact().map(|s| angle_distance(&s.q, &found.q)).fold(f64::INFINITY, f64::min);
+                    assert!(
+                        nearest < 1e-4,
+                        "{}: numeric {:?} is no closed-form solution: {closed:#?}",
+                        arm.name,
+                        found.q
+                    );
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn non_finite_seeds_are_errors() {
+    let target = Ur5::tip_pose(&[0.1; 6]);
+    for bad in [f64::NAN, f64::INFINITY] {
+        let mut seed = [0.0; 6];
+        seed[2] = bad;
+        assert_eq!(Ur5::tip_ik_numeric(&target, &seed), Err(IkError::NonFiniteSeed));
+        assert_eq!(Ur5::tip_ik_nearest(&target, &seed), Err(IkError::NonFiniteSeed));
+    }
 }

@@ -29,8 +29,8 @@ pub(crate) struct Emit<'a> {
     pub positions: bool,
     /// Velocity functions of the tips.
     pub jacobians: bool,
-    /// Closed-form inverse kinematics of the tip.
-    pub ik: bool,
+    /// Inverse kinematics of the tip.
+    pub ik: kinematics_compiler::robot::IkMode,
     /// The free-flying root's link, if any.
     pub floating_base: Option<String>,
     /// `_f32` functions too.
@@ -56,11 +56,7 @@ pub(crate) fn emit_source(emit: &Emit<'_>) -> Result<String, BuildError> {
         tips: emit.tips.clone(),
         positions: emit.positions,
         jacobians: emit.jacobians,
-        ik: if emit.ik {
-            kinematics_compiler::robot::IkMode::ClosedForm
-        } else {
-            kinematics_compiler::robot::IkMode::Off
-        },
+        ik: emit.ik.clone(),
         floating_base: emit.floating_base.clone(),
         scalars: Scalars { f64: true, f32: emit.f32 },
         krate: quote!(#krate),

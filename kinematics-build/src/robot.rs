@@ -3,6 +3,7 @@
 use std::path::{Path, PathBuf};
 
 use kinematics_compiler::emit::Trig;
+use kinematics_compiler::robot::IkMode;
 use kinematics_model::{ExactAngles, FLOATING_BASE_JOINT, SourceKind};
 
 use crate::emit::{Emit, default_struct_name, emit_source};
@@ -21,7 +22,7 @@ use crate::write::write_atomic;
 /// | `tip = "link"` / `tips(..)` | [`Robot::tip`] (once per tip) / [`Robot::tips`] |
 /// | `positions` | [`Robot::positions`] |
 /// | `jacobians` | [`Robot::jacobians`] |
-/// | `ik` | [`Robot::ik`] |
+/// | `ik` / `ik = "numeric"` | [`Robot::ik`] / [`Robot::ik_numeric`] |
 /// | `floating_base` / `floating_base = "link"` | [`Robot::floating_base`] |
 /// | `scalars(f64, f32)` | [`Robot::f32`] |
 /// | `crate = "path"` | [`Robot::crate_path`] |
@@ -41,7 +42,7 @@ pub struct Robot {
     tips: Vec<String>,
     positions: bool,
     jacobians: bool,
-    ik: bool,
+    ik: IkMode,
     floating_base: Option<String>,
     f32: bool,
     struct_name: Option<String>,
@@ -60,7 +61,7 @@ impl Robot {
             tips: Vec::new(),
             positions: false,
             jacobians: false,
-            ik: false,
+            ik: IkMode::Off,
             floating_base: None,
             f32: false,
             struct_name: None,
@@ -128,11 +129,19 @@ impl Robot {
         self
     }
 
-    /// Also generate the tip's inverse kinematics in closed form: `tip_ik`, `tip_ik_nearest`,
-    /// `tip_ik_within_limits` and `IK_FAMILY`. Needs exactly one tip whose chain a closed-form
-    /// family covers ([`Robot::generate`] says why not otherwise).
+    /// Also generate the tip's inverse kinematics in closed form (`tip_ik`, `tip_ik_nearest`,
+    /// `tip_ik_within_limits`, `IK_FAMILY`) and the numeric solver beside it (`tip_ik_numeric`,
+    /// `tip_ik_numeric_with`). Needs exactly one tip whose chain a closed-form family covers
+    /// ([`Robot::generate`] says why not otherwise).
     pub fn ik(mut self) -> Self {
-        self.ik = true;
+        self.ik = IkMode::ClosedForm;
+        self
+    }
+
+    /// Also generate the numeric inverse kinematics of the tip only (`tip_ik_numeric`,
+    /// `tip_ik_numeric_with`), for any chain. Needs exactly one tip.
+    pub fn ik_numeric(mut self) -> Self {
+        self.ik = IkMode::Numeric;
         self
     }
 
@@ -213,7 +222,7 @@ impl Robot {
             tips: self.tips.clone(),
             positions: self.positions,
             jacobians: self.jacobians,
-            ik: self.ik,
+            ik: self.ik.clone(),
             floating_base: self.floating_base.clone(),
             f32: self.f32,
             crate_path: &self.crate_path,

@@ -31,6 +31,13 @@ pub enum CompileError {
     /// A chain no closed-form inverse kinematics family covers (every family's reason given).
     #[error("{0}")]
     NoIkFamily(Box<NoIkFamily>),
+    /// Numeric inverse kinematics of a robot with a floating joint (its quaternion's four entries
+    /// of `q` against three velocities: the steps are not yet mapped back).
+    #[error("robot `{robot}`: inverse kinematics of a robot with a floating joint is not supported yet")]
+    IkFloating {
+        /// Robot name.
+        robot: String,
+    },
     /// Inverse kinematics asked of other than exactly one tip.
     #[error("robot `{robot}`: inverse kinematics needs exactly one tip (`tip = \"...\"`), not {tips}")]
     IkNeedsOneTip {

@@ -33,15 +33,18 @@ impl Default for Scalars {
     }
 }
 
-/// Which inverse kinematics to emit.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+/// Which inverse kinematics to emit (of the one tip).
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
 pub enum IkMode {
     /// None.
     #[default]
     Off,
-    /// The closed form of the tip's family (`tip_ik`, `tip_ik_nearest`, `tip_ik_within_limits`);
-    /// a chain no family covers is an error naming why.
+    /// The closed form of the tip's family (`tip_ik`, `tip_ik_nearest`, `tip_ik_within_limits`,
+    /// `IK_FAMILY`) and beside it the numeric solver (`tip_ik_numeric`); a chain no family covers
+    /// is an error naming why.
     ClosedForm,
+    /// The numeric solver only (`tip_ik_numeric`, `tip_ik_numeric_with`), for any chain.
+    Numeric,
 }
 
 /// Everything [`emit_robot`] needs.
@@ -327,8 +330,27 @@ pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenSt
         }
         if one { quote!(out[0] = generic_tip_poses(q);) } else { quote!(out.copy_from_slice(&generic_tip_poses(q));) }
     };
-    if spec.ik == IkMode::ClosedForm {
-        typed.push(emit_ik_functions(tree, &base, &tips, &p)?);
+    if spec.ik != IkMode::Off {
+        let [tip] = tips.as_slice() else {
+            return Err(CompileError::IkNeedsOneTip { robot: tree.name().to_owned(), tips: tips.len() });
+        };
+        if spec.ik == IkMode::ClosedForm {
+            let plan = crate::ik::classify(tree, &base, tip)?;
+            typed.push(crate::ik::emit::emit_ik(&plan, &p, &quote!(generic_tip_poses)));
+        }
+        // The numeric solver steps on the pose and Jacobian together: the velocities' own
+        // function when they are emitted, otherwise one for it.
+        let pose_and_jacobian = if spec.jacobians {
+            quote!(generic_pose_and_jacobian)
+        } else {
+            let compiled = compile(tree, &tip_request.clone().pose_and_jacobian(JacobianFrame::LocalWorldAligned))?;
+            generic.push(emit_function(&compiled, &private("generic_ik_pose_and_jacobian")));
+            quote!(generic_ik_pose_and_jacobian)
+        };
+        if tree.dof() != tree.velocity_dof() {
+            return Err(CompileError::IkFloating { robot: tree.name().to_owned() });
+        }
+        typed.push(crate::ik::emit::emit_numeric(tip, &base, n, &p, &pose_and_jacobian));
     }
     let robot = tree.name();
     let label = &spec.source_label;
@@ -416,20 +438,6 @@ pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenSt
         }
         };
     })
-}
-
-/// The inverse kinematics functions of the one tip, or the error saying why there are none.
-fn emit_ik_functions(
-    tree: &KinematicTree,
-    base: &str,
-    tips: &[String],
-    p: &TokenStream,
-) -> Result<TokenStream, CompileError> {
-    let [tip] = tips else {
-        return Err(CompileError::IkNeedsOneTip { robot: tree.name().to_owned(), tips: tips.len() });
-    };
-    let plan = crate::ik::classify(tree, base, tip)?;
-    Ok(crate::ik::emit::emit_ik(&plan, p, &quote!(generic_tip_poses)))
 }
 
 /// The name of the `*_generic` functions' scalar parameter: `T`, unless the user's impl generics

@@ -74,11 +74,15 @@ fn read_and_check(
 
 /// Why `ik` cannot be emitted for this robot and these options, if it cannot: not exactly one
 /// tip, or a chain no closed-form family covers.
-fn ik_fault(options: &KinematicsInput, loaded: &source::Loaded) -> Option<String> {
+fn ik_fault(options: &KinematicsInput, mode: &IkMode, loaded: &source::Loaded) -> Option<String> {
     let tips = options.tips();
     let tree = &loaded.tree;
     let base = options.base.as_ref().map_or_else(|| tree.link(tree.root()).name.clone(), |b| b.as_ref().clone());
+    if tree.dof() != tree.velocity_dof() {
+        return Some("`ik` of a robot with a floating joint is not supported yet".to_owned());
+    }
     match tips.as_slice() {
+        [_] if *mode == IkMode::Numeric => None,
         [tip] => kinematics_compiler::ik::classify(tree, &base, tip.as_ref()).err().map(|e| e.to_string()),
         _ => Some(format!(
             "`ik` needs exactly one `tip = \"link\"`: the inverse kinematics is the tip's ({} tips given)",
@@ -115,17 +119,16 @@ fn expand_options(
         );
         return (loaded.as_ref().map(known), None);
     }
-    if options.ik.is_present()
-        && links_ok
-        && let Some(loaded) = &loaded
-        && let Some(fault) = ik_fault(options, loaded)
+    let ik = errors.handle(options.ik_mode());
+    if let (Some(mode), Some(key), true, Some(loaded)) = (&ik, &options.ik, links_ok, &loaded)
+        && let Some(fault) = ik_fault(options, mode, loaded)
     {
-        errors.push(darling::Error::custom(format!("{}: {fault}", loaded.label)).with_span(&options.ik.span()));
+        errors.push(darling::Error::custom(format!("{}: {fault}", loaded.label)).with_span(&key.span()));
         return (Some(known(loaded)), None);
     }
     let trig = errors.handle(options.trig());
     let known = loaded.as_ref().map(known);
-    let (Some(loaded), Some(scalars), Some(trig), true) = (loaded, scalars, trig, links_ok) else {
+    let (Some(loaded), Some(scalars), Some(trig), Some(ik), true) = (loaded, scalars, trig, ik, links_ok) else {
         return (known, None);
     };
     let krate = match &options.krate {
@@ -140,7 +143,7 @@ fn expand_options(
         tips: options.tips().into_iter().map(|t| t.as_ref().clone()).collect(),
         positions: options.positions,
         jacobians: options.jacobians.is_present(),
-        ik: if options.ik.is_present() { IkMode::ClosedForm } else { IkMode::Off },
+        ik,
         floating_base: options.source().floating_base.map(|f| f.as_ref().clone()),
         scalars,
         krate,

@@ -15,7 +15,7 @@ use darling::{Error, FromDeriveInput, FromMeta};
 
 use crate::inline_dh::InlineDh;
 use kinematics_compiler::emit::Trig;
-use kinematics_compiler::robot::Scalars;
+use kinematics_compiler::robot::{IkMode, Scalars};
 use kinematics_model::ExactAngles;
 
 /// The options of one derive.
@@ -47,10 +47,11 @@ pub struct KinematicsInput {
     /// `jacobians`: also emit the tips' Jacobians and twists (needs `tip` or `tips`).
     #[darling(default)]
     pub jacobians: darling::util::Flag,
-    /// `ik`: also emit the tip's inverse kinematics in closed form (needs `tip`; a chain no
-    /// family covers is an error naming why).
+    /// `ik` (or `ik = "closed_form"`): also emit the tip's inverse kinematics in closed form and
+    /// the numeric solver beside it (needs `tip`; a chain no family covers is an error naming
+    /// why); `ik = "numeric"`: the numeric solver only, for any chain.
     #[darling(default)]
-    pub ik: darling::util::Flag,
+    pub ik: Option<SpannedValue<Override<String>>>,
     /// `scalars(f64, f32)`.
     #[darling(default)]
     pub scalars: Option<SpannedValue<PathList>>,
@@ -196,6 +197,21 @@ impl KinematicsInput {
                 "unknown trig `{other}`: expected \"fast\" (our sin/cos, the default) or \"std\" (the platform's)"
             ))
             .with_span(&span)),
+        }
+    }
+
+    /// The inverse kinematics asked for.
+    pub fn ik_mode(&self) -> darling::Result<IkMode> {
+        let Some(key) = &self.ik else { return Ok(IkMode::Off) };
+        match key.as_ref() {
+            Override::Inherit => Ok(IkMode::ClosedForm),
+            Override::Explicit(kind) if kind == "closed_form" => Ok(IkMode::ClosedForm),
+            Override::Explicit(kind) if kind == "numeric" => Ok(IkMode::Numeric),
+            Override::Explicit(other) => Err(Error::custom(format!(
+                "unknown ik `{other}`: expected `ik` or `ik = \"closed_form\"` (the closed form of the tip's family, \
+                 and the numeric solver) or `ik = \"numeric\"` (the numeric solver only, for any chain)"
+            ))
+            .with_span(&key.span())),
         }
     }
 

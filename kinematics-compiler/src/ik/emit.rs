@@ -62,10 +62,55 @@ pub fn emit_ik(plan: &IkPlan, private: &TokenStream, forward: &TokenStream) -> T
         }
 
         /// The solution of [`Self::tip_ik`] nearest `seed` (each angle moved by whole turns to the
-        /// seed's side), exact ones preferred to least-squares ones.
+        /// seed's side), exact ones preferred to least-squares ones. A seed with a non-finite entry is
+        /// an error.
         #[inline]
         pub fn tip_ik_nearest(target: &#p::Pose<f64>, seed: &[f64; 6]) -> #one {
+            #p::ik::check_seed(seed)?;
             ::core::result::Result::Ok(Self::tip_ik(target)?.nearest(seed, &[true; 6]))
+        }
+    }
+}
+
+/// The numeric solver's functions (inside the robot's `impl`): Levenberg-Marquardt on
+/// `pose_and_jacobian` (the generic function computing the tip's pose and `LOCAL_WORLD_ALIGNED`
+/// Jacobian), within `JOINT_LIMITS`.
+pub fn emit_numeric(
+    tip: &str,
+    base: &str,
+    dof: usize,
+    private: &TokenStream,
+    pose_and_jacobian: &TokenStream,
+) -> TokenStream {
+    let p = private;
+    let n = Literal::usize_unsuffixed(dof);
+    let result = quote!(::core::result::Result<#p::ik::NumericSolution<#n>, #p::ik::IkError>);
+    let doc = format!(
+        "Numeric inverse kinematics of `{tip}` in `{base}`: Levenberg-Marquardt from `seed` on this robot's \
+         generated pose and Jacobian, within `JOINT_LIMITS`, restarting from deterministic configurations \
+         when a start does not converge (`NumericOptions::default()`: 1e-10 m and rad, 100 steps, 20 restarts). \
+         Returns the best configuration found and whether it converged. A target that is no pose, or a seed \
+         with a non-finite entry, is an error."
+    );
+    quote! {
+        #[doc = #doc]
+        #[inline]
+        pub fn tip_ik_numeric(target: &#p::Pose<f64>, seed: &[f64; #n]) -> #result {
+            Self::tip_ik_numeric_with(target, seed, &#p::ik::NumericOptions::default())
+        }
+
+        /// [`Self::tip_ik_numeric`] with the tolerance, steps and restarts given.
+        #[inline]
+        pub fn tip_ik_numeric_with(target: &#p::Pose<f64>, seed: &[f64; #n], options: &#p::ik::NumericOptions) -> #result {
+            #p::ik::check_target(target)?;
+            #p::ik::check_seed(seed)?;
+            ::core::result::Result::Ok(#p::ik::levenberg_marquardt(
+                target,
+                seed,
+                &Self::JOINT_LIMITS,
+                options,
+                #[inline(always)] |q| #pose_and_jacobian(q),
+            ))
         }
     }
 }

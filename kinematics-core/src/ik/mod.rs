@@ -40,7 +40,7 @@ pub use family::{
     three_parallel_two_intersecting,
 };
 pub use numeric::{NumericOptions, NumericSolution, levenberg_marquardt};
-pub use solutions::{IkError, IkSolution, IkSolutions, ROTATION_TOLERANCE, check_target, pose_errors};
+pub use solutions::{IkError, IkSolution, IkSolutions, ROTATION_TOLERANCE, check_seed, check_target, pose_errors};
 
 use crate::pose::Pose;
 use vector::{add, rotate};

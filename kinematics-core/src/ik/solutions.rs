@@ -18,6 +18,8 @@ pub const ROTATION_TOLERANCE: f64 = 1e-6;
 pub enum IkError {
     /// An entry of the rotation or the translation is NaN or infinite.
     NonFinite,
+    /// A seed (`tip_ik_nearest`, `tip_ik_numeric`) has an entry that is NaN or infinite.
+    NonFiniteSeed,
     /// The rotation is not orthonormal with determinant 1 (within [`ROTATION_TOLERANCE`]).
     NotARotation {
         /// The largest entry of `R R^T - I`, or how far the determinant is from 1 if larger.
@@ -29,6 +31,7 @@ impl fmt::Display for IkError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match *self {
             IkError::NonFinite => f.write_str("the target pose has an entry that is not a finite number"),
+            IkError::NonFiniteSeed => f.write_str("the seed configuration has an entry that is not a finite number"),
             IkError::NotARotation { deviation } => write!(
                 f,
                 "the target's rotation is not a rotation: it is {deviation:e} from orthonormal with determinant 1 \
@@ -60,6 +63,11 @@ pub fn check_target(target: &Pose<f64>) -> Result<(), IkError> {
         return Err(IkError::NotARotation { deviation });
     }
     Ok(())
+}
+
+/// The seed as the solvers take it (every entry finite), or the error.
+pub fn check_seed(seed: &[f64]) -> Result<(), IkError> {
+    if seed.iter().all(|x| x.is_finite()) { Ok(()) } else { Err(IkError::NonFiniteSeed) }
 }
 
 /// One solution: joint values in degree-of-freedom order and what is known of them.
