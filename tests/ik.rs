@@ -420,3 +420,47 @@ fn non_finite_seeds_are_errors() {
         assert_eq!(Ur5::tip_ik_nearest(&target, &seed), Err(IkError::NonFiniteSeed));
     }
 }
+
+#[derive(Kinematics)]
+#[kinematics(urdf = "robots/iiwa14.urdf", tip = "iiwa_link_ee", ik(free = "iiwa_joint_3"))]
+struct Iiwa14Free;
+
+/// The iiwa 14 with its third joint given: the other six form a spherical wrist with the first
+/// two axes meeting, solved in closed form for any value of the third. Round trip from random
+/// configurations within limits, the third joint's value passed as it was.
+#[test]
+fn a_seven_joint_arm_with_a_free_joint_round_trips() {
+    assert_eq!(Iiwa14Free::IK_FAMILY, "spherical wrist, axes 1 and 2 meet");
+    let reach = Iiwa14Free::reference().expect("loads").tree().reach();
+    let mut rng = Uniform(77);
+    let (mut checked, mut near_singular) = (0, 0);
+    for _ in 0..1500 {
+        let q: [f64; 7] = Iiwa14Free::JOINT_LIMITS.map(|l| l.lower + (l.upper - l.lower) * rng.next());
+        let target = Iiwa14Free::tip_pose(&q);
+        let solutions = Iiwa14Free::tip_ik(&target, q[2]).expect("a pose");
+        assert_eq!(solutions.len(), 8);
+        for s in solutions.exact() {
+            assert_eq!(s.q[2], q[2]);
+            assert!(s.position_error <= 1e-12 * reach && s.rotation_error <= 1e-12, "{q:?}: {s:?}");
+        }
+        let nearest = solutions
+            .exact()
+            .map(|s| s.q.iter().zip(&q).map(|(a, b)| wrapped(a - b).abs()).fold(0.0, f64::max))
+            .fold(f64::INFINITY, f64::min);
+        // Near a singularity of the six the angles are ill-conditioned (see NEAR_SINGULAR); the
+        // pose errors above still hold.
+        if nearest > 1e-9 {
+            near_singular += 1;
+            assert!(nearest < 1e-4, "{q:?} is not among {solutions:#?}");
+            continue;
+        }
+        checked += 1;
+        // The seed's third joint is the free joint's value; the others are near q.
+        let mut seed = q.map(|x| x + 1e-3);
+        seed[2] = q[2];
+        let found = Iiwa14Free::tip_ik_nearest(&target, &seed).expect("a pose").expect("solutions");
+        assert!(found.q.iter().zip(&q).all(|(a, b)| (a - b).abs() < 1e-9), "{found:?} vs {q:?}");
+    }
+    assert!(near_singular * 50 < checked, "{near_singular} near a singularity, {checked} checked");
+    assert_eq!(Iiwa14Free::tip_ik(&Iiwa14Free::tip_pose(&[0.1; 7]), f64::NAN), Err(IkError::NonFiniteFree));
+}

@@ -22,7 +22,7 @@ use crate::write::write_atomic;
 /// | `tip = "link"` / `tips(..)` | [`Robot::tip`] (once per tip) / [`Robot::tips`] |
 /// | `positions` | [`Robot::positions`] |
 /// | `jacobians` | [`Robot::jacobians`] |
-/// | `ik` / `ik = "numeric"` | [`Robot::ik`] / [`Robot::ik_numeric`] |
+/// | `ik` / `ik(free = "joint")` / `ik = "numeric"` | [`Robot::ik`] / [`Robot::ik_free`] / [`Robot::ik_numeric`] |
 /// | `floating_base` / `floating_base = "link"` | [`Robot::floating_base`] |
 /// | `scalars(f64, f32)` | [`Robot::f32`] |
 /// | `crate = "path"` | [`Robot::crate_path`] |
@@ -134,7 +134,15 @@ impl Robot {
     /// `tip_ik_numeric_with`). Needs exactly one tip whose chain a closed-form family covers
     /// ([`Robot::generate`] says why not otherwise).
     pub fn ik(mut self) -> Self {
-        self.ik = IkMode::ClosedForm;
+        self.ik = IkMode::ClosedForm { free: None };
+        self
+    }
+
+    /// [`Robot::ik`] for a seven-joint arm: `joint`'s value becomes an input of `tip_ik` (and of
+    /// `tip_ik_within_limits`; `tip_ik_nearest` takes it from the seed), and the other six are
+    /// solved in closed form.
+    pub fn ik_free(mut self, joint: &str) -> Self {
+        self.ik = IkMode::ClosedForm { free: Some(joint.to_owned()) };
         self
     }
 

@@ -42,7 +42,10 @@ pub enum IkMode {
     /// The closed form of the tip's family (`tip_ik`, `tip_ik_nearest`, `tip_ik_within_limits`,
     /// `IK_FAMILY`) and beside it the numeric solver (`tip_ik_numeric`); a chain no family covers
     /// is an error naming why.
-    ClosedForm,
+    ClosedForm {
+        /// For a seven-joint arm, the joint whose value `tip_ik` takes as an input.
+        free: Option<String>,
+    },
     /// The numeric solver only (`tip_ik_numeric`, `tip_ik_numeric_with`), for any chain.
     Numeric,
 }
@@ -334,8 +337,8 @@ pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenSt
         let [tip] = tips.as_slice() else {
             return Err(CompileError::IkNeedsOneTip { robot: tree.name().to_owned(), tips: tips.len() });
         };
-        if spec.ik == IkMode::ClosedForm {
-            let plan = crate::ik::classify(tree, &base, tip)?;
+        if let IkMode::ClosedForm { free } = &spec.ik {
+            let plan = crate::ik::classify_with(tree, &base, tip, free.as_deref())?;
             typed.push(crate::ik::emit::emit_ik(&plan, &p, &quote!(generic_tip_poses)));
         }
         // The numeric solver steps on the pose and Jacobian together: the velocities' own

@@ -104,3 +104,45 @@ d = 0.0823
         assert!(error.contains(piece), "{error}\nlacks: {piece}");
     }
 }
+
+#[test]
+fn a_seven_joint_arm_with_a_free_joint() {
+    let iiwa = load("iiwa14.urdf");
+    let plan = kinematics_compiler::ik::classify_with(&iiwa, "world", "iiwa_link_ee", Some("iiwa_joint_3"))
+        .expect("the iiwa less its third joint is a spherical-wrist arm");
+    assert_eq!(plan.family, IkFamily::SphericalFirstTwoIntersecting);
+    let free = plan.free.expect("a free joint");
+    assert_eq!((free.name.as_str(), free.index), ("iiwa_joint_3", 2));
+    assert_eq!(
+        plan.joints,
+        ["iiwa_joint_1", "iiwa_joint_2", "iiwa_joint_4", "iiwa_joint_5", "iiwa_joint_6", "iiwa_joint_7"]
+    );
+
+    // Without a free joint: the hint.
+    let error = classify(&iiwa, "world", "iiwa_link_ee").expect_err("seven joints").to_string();
+    assert!(
+        error.contains("the chain has 7 moving joints; the closed forms solve six (name one joint free"),
+        "{error}"
+    );
+    // A name that is no moving joint of the chain.
+    let error = kinematics_compiler::ik::classify_with(&iiwa, "world", "iiwa_link_ee", Some("iiwa_joint_9"))
+        .expect_err("no such joint")
+        .to_string();
+    assert!(error.contains("`iiwa_joint_9` is not a moving joint of the chain (those are `iiwa_joint_1`"), "{error}");
+    // The elbow free: shoulder and wrist each a point, the distance between them fixed.
+    let error = kinematics_compiler::ik::classify_with(&iiwa, "world", "iiwa_link_ee", Some("iiwa_joint_4"))
+        .expect_err("a degenerate arm")
+        .to_string();
+    assert!(error.contains("axis 3 is in line with the offset beside it"), "{error}");
+    // The second joint free: the family's pairs straddle it.
+    let error = kinematics_compiler::ik::classify_with(&iiwa, "world", "iiwa_link_ee", Some("iiwa_joint_2"))
+        .expect_err("no family")
+        .to_string();
+    assert!(error.contains("on either side of the free joint"), "{error}");
+    // A free joint asked of a six-joint arm.
+    let ur5 = load("ur5.urdf");
+    let error = kinematics_compiler::ik::classify_with(&ur5, "base_link", "tool0", Some("elbow_joint"))
+        .expect_err("six joints")
+        .to_string();
+    assert!(error.contains("the chain has 6 moving joints; the closed forms solve seven, one of them free"), "{error}");
+}

@@ -83,7 +83,13 @@ fn ik_fault(options: &KinematicsInput, mode: &IkMode, loaded: &source::Loaded) -
     }
     match tips.as_slice() {
         [_] if *mode == IkMode::Numeric => None,
-        [tip] => kinematics_compiler::ik::classify(tree, &base, tip.as_ref()).err().map(|e| e.to_string()),
+        [tip] => {
+            let free = match mode {
+                IkMode::ClosedForm { free } => free.as_deref(),
+                _ => None,
+            };
+            kinematics_compiler::ik::classify_with(tree, &base, tip.as_ref(), free).err().map(|e| e.to_string())
+        }
         _ => Some(format!(
             "`ik` needs exactly one `tip = \"link\"`: the inverse kinematics is the tip's ({} tips given)",
             tips.len()

@@ -49,9 +49,10 @@ pub struct KinematicsInput {
     pub jacobians: darling::util::Flag,
     /// `ik` (or `ik = "closed_form"`): also emit the tip's inverse kinematics in closed form and
     /// the numeric solver beside it (needs `tip`; a chain no family covers is an error naming
-    /// why); `ik = "numeric"`: the numeric solver only, for any chain.
+    /// why); `ik(free = "joint")`: the same for a seven-joint arm, that joint's value an input;
+    /// `ik = "numeric"`: the numeric solver only, for any chain.
     #[darling(default)]
-    pub ik: Option<SpannedValue<Override<String>>>,
+    pub ik: Option<SpannedValue<Override<IkKey>>>,
     /// `scalars(f64, f32)`.
     #[darling(default)]
     pub scalars: Option<SpannedValue<PathList>>,
@@ -70,6 +71,32 @@ pub struct KinematicsInput {
     /// `crate = "path"` for a renamed dependency.
     #[darling(default, rename = "crate")]
     pub krate: Option<syn::Path>,
+}
+
+/// The value of the `ik` key beyond the bare word: `ik = "numeric"` (a kind) or
+/// `ik(free = "joint")`.
+#[derive(Debug, Clone)]
+pub enum IkKey {
+    /// `ik = "..."`.
+    Kind(String),
+    /// `ik(free = "joint")`.
+    Free(String),
+}
+
+/// The list form of `ik(...)`.
+#[derive(Debug, FromMeta)]
+struct IkList {
+    free: String,
+}
+
+impl FromMeta for IkKey {
+    fn from_string(value: &str) -> darling::Result<Self> {
+        Ok(IkKey::Kind(value.to_owned()))
+    }
+
+    fn from_list(items: &[NestedMeta]) -> darling::Result<Self> {
+        Ok(IkKey::Free(IkList::from_list(items)?.free))
+    }
 }
 
 /// The new root link's name for `floating_base` (`world` unless named).
@@ -204,10 +231,11 @@ impl KinematicsInput {
     pub fn ik_mode(&self) -> darling::Result<IkMode> {
         let Some(key) = &self.ik else { return Ok(IkMode::Off) };
         match key.as_ref() {
-            Override::Inherit => Ok(IkMode::ClosedForm),
-            Override::Explicit(kind) if kind == "closed_form" => Ok(IkMode::ClosedForm),
-            Override::Explicit(kind) if kind == "numeric" => Ok(IkMode::Numeric),
-            Override::Explicit(other) => Err(Error::custom(format!(
+            Override::Inherit => Ok(IkMode::ClosedForm { free: None }),
+            Override::Explicit(IkKey::Free(joint)) => Ok(IkMode::ClosedForm { free: Some(joint.clone()) }),
+            Override::Explicit(IkKey::Kind(kind)) if kind == "closed_form" => Ok(IkMode::ClosedForm { free: None }),
+            Override::Explicit(IkKey::Kind(kind)) if kind == "numeric" => Ok(IkMode::Numeric),
+            Override::Explicit(IkKey::Kind(other)) => Err(Error::custom(format!(
                 "unknown ik `{other}`: expected `ik` or `ik = \"closed_form\"` (the closed form of the tip's family, \
                  and the numeric solver) or `ik = \"numeric\"` (the numeric solver only, for any chain)"
             ))

@@ -76,10 +76,35 @@ impl IkFamily {
         }
     }
 
+    /// Every pair of axes (0-based, of the six) whose relation the family relies on.
+    pub fn pairs(self) -> &'static [(usize, usize)] {
+        const WRIST: [(usize, usize); 3] = [(3, 4), (4, 5), (3, 5)];
+        match self {
+            IkFamily::ThreeParallelTwoIntersecting => &[(1, 2), (1, 3), (0, 1), (4, 1), (4, 5)],
+            IkFamily::SphericalTwoParallel => &[WRIST[0], WRIST[1], WRIST[2], (1, 2), (0, 1)],
+            IkFamily::SphericalFirstTwoIntersecting => &[WRIST[0], WRIST[1], WRIST[2], (0, 1)],
+            IkFamily::SphericalLastTwoIntersecting => &[WRIST[0], WRIST[1], WRIST[2], (1, 2)],
+        }
+    }
+
     /// The most solutions a target can have: the capacity of the returned list.
     pub fn max_solutions(self) -> usize {
         8
     }
+}
+
+/// The joint of a seven-joint arm whose value is given, so that the other six are solved in
+/// closed form.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FreeJoint {
+    /// Joint name.
+    pub name: String,
+    /// Its entry of `q` (and its place among the chain's seven moving joints).
+    pub index: usize,
+    /// Its unit axis at `q = 0`.
+    pub axis: V3,
+    /// A point on it.
+    pub point: V3,
 }
 
 /// How to solve a chain in closed form: the family and the geometry its solver takes
@@ -92,7 +117,8 @@ pub struct IkPlan {
     pub base: String,
     /// The tip link.
     pub tip: String,
-    /// The moving joints, base first (their entries of `q` are `0..6`).
+    /// The six joints solved, base first (their entries of `q` are `0..6`, or `0..7` less the
+    /// free joint's).
     pub joints: Vec<String>,
     /// Unit axes `h1..h6` in the base frame.
     pub axes: [V3; 6],
@@ -100,8 +126,14 @@ pub struct IkPlan {
     pub offsets: [V3; 7],
     /// The tip's rotation at `q = 0`.
     pub tool_rotation: M3,
+    /// The points chosen on the axes (`offsets` are their differences).
+    pub points: [V3; 6],
+    /// The tip's origin at `q = 0`.
+    pub tip_point: V3,
     /// The chain's reach (the scale of its distances).
     pub reach: f64,
+    /// The seventh joint whose value is an input, for a seven-joint arm.
+    pub free: Option<FreeJoint>,
     /// What the plan changed of the description's geometry (points moved along their axes,
     /// axes within tolerance made parallel), for `kinematics inspect` and `expr --ik`.
     pub notes: Vec<String>,
@@ -187,6 +219,18 @@ impl Lines<'_> {
 /// The closed-form plan for the chain from `base` to `tip`, or the error saying why no family
 /// covers it (every family's reason).
 pub fn classify(tree: &KinematicTree, base: &str, tip: &str) -> Result<IkPlan, CompileError> {
+    classify_with(tree, base, tip, None)
+}
+
+/// Angles of the free joint at which a seven-joint arm's family is checked: a relation of two
+/// axes on opposite sides of the free joint is a trigonometric polynomial of degree at most 2 in
+/// its angle, so five distinct angles would decide it; families whose relations all keep to one
+/// side (the only ones taken) hold at every angle, and these samples check that too.
+const FREE_SAMPLES: [f64; 5] = [0.0, 0.9, 2.1, 3.3, 4.6];
+
+/// [`classify`], or with `free` (a joint of a seven-joint chain) given as an input: the other six
+/// solved in closed form for any value of it.
+pub fn classify_with(tree: &KinematicTree, base: &str, tip: &str, free: Option<&str>) -> Result<IkPlan, CompileError> {
     let robot = tree.name().to_owned();
     let none = |reason: String| {
         CompileError::NoIkFamily(Box::new(NoIkFamily {
@@ -205,33 +249,114 @@ pub fn classify(tree: &KinematicTree, base: &str, tip: &str) -> Result<IkPlan, C
     if let Some(j) = zero.joints.iter().find(|j| j.kind == JointKind::Prismatic) {
         return Err(none(format!("joint `{}` is prismatic; the closed forms take six revolute joints", j.name)));
     }
-    if moving != 6 {
-        return Err(none(format!("the chain has {moving} moving joints; the closed forms solve six")));
+    let (expected, what) = if free.is_some() { (7, "seven, one of them free") } else { (6, "six") };
+    if moving != expected {
+        let hint = if moving == 7 && free.is_none() { " (name one joint free: `ik(free = \"joint\")`)" } else { "" };
+        return Err(none(format!("the chain has {moving} moving joints; the closed forms solve {what}{hint}")));
     }
-    if tree.dof() != 6 {
+    if tree.dof() != moving {
         return Err(none(format!(
-            "the robot has {} degrees of freedom and the chain moves 6 of them; the closed forms solve a robot's whole q",
+            "the robot has {} degrees of freedom and the chain moves {moving} of them; the closed forms solve a robot's whole q",
             tree.dof()
         )));
     }
-    let lines = Lines { zero: &zero, meet_tolerance: MEET_TOLERANCE * zero.reach };
-    let mut reasons = Vec::new();
-    for family in IkFamily::ALL {
-        match plan(&lines, family) {
-            Ok((points, parallel_to)) => {
-                return Ok(finish(base, tip, &zero, family, points, parallel_to));
+    let Some(free) = free else {
+        let lines = Lines { zero: &zero, meet_tolerance: MEET_TOLERANCE * zero.reach };
+        let mut reasons = Vec::new();
+        for family in IkFamily::ALL {
+            match plan(&lines, family) {
+                Ok((points, parallel_to)) => return Ok(finish(base, tip, &zero, family, points, parallel_to, None)),
+                Err(fault) => note(&mut reasons, family, fault),
             }
-            // The wrist is every spherical family's first test: its fault is told once.
-            Err(Fault::Wrist(reason)) => {
-                let told = format!("spherical wrist: {reason}");
-                if !reasons.contains(&told) {
-                    reasons.push(told);
+        }
+        return Err(none(reasons.join("; ")));
+    };
+    let Some(index) = zero.joints.iter().position(|j| j.name == free) else {
+        let names: Vec<String> = zero.joints.iter().map(|j| format!("`{}`", j.name)).collect();
+        return Err(none(format!("`{free}` is not a moving joint of the chain (those are {})", names.join(", "))));
+    };
+    let samples: Vec<ZeroConfiguration> =
+        FREE_SAMPLES.iter().map(|&angle| without_turned(&zero, index, angle)).collect();
+    let mut reasons = Vec::new();
+    'families: for family in IkFamily::ALL {
+        if let Some(&(i, j)) = family.pairs().iter().find(|&&(i, j)| (i < index) != (j < index)) {
+            reasons.push(format!(
+                "{}: it relates axes {} and {} of the six, on either side of the free joint",
+                family.name(),
+                i + 1,
+                j + 1
+            ));
+            continue;
+        }
+        let mut found = None;
+        for sample in &samples {
+            let lines = Lines { zero: sample, meet_tolerance: MEET_TOLERANCE * zero.reach };
+            match plan(&lines, family) {
+                Ok(placement) => found = found.or(Some(placement)),
+                Err(fault) => {
+                    note(&mut reasons, family, fault);
+                    continue 'families;
                 }
             }
-            Err(Fault::Arm(reason)) => reasons.push(format!("{}: {reason}", family.name())),
         }
+        #[allow(clippy::expect_used, reason = "an invariant of the loop above, named in the message")]
+        let (points, parallel_to) = found.expect("every sample's plan succeeded, and there are samples");
+        let joint = &zero.joints[index];
+        let free = FreeJoint { name: joint.name.clone(), index, axis: joint.axis, point: joint.point };
+        return Ok(finish(base, tip, &samples[0], family, points, parallel_to, Some(free)));
     }
     Err(none(reasons.join("; ")))
+}
+
+/// A family's fault among the reasons, the wrist's once.
+fn note(reasons: &mut Vec<String>, family: IkFamily, fault: Fault) {
+    match fault {
+        // The wrist is every spherical family's first test: its fault is told once.
+        Fault::Wrist(reason) => {
+            let told = format!("spherical wrist: {reason}");
+            if !reasons.contains(&told) {
+                reasons.push(told);
+            }
+        }
+        Fault::Arm(reason) => reasons.push(format!("{}: {reason}", family.name())),
+    }
+}
+
+/// The chain without joint `index`, everything after it turned by `angle` about its axis.
+fn without_turned(zero: &ZeroConfiguration, index: usize, angle: f64) -> ZeroConfiguration {
+    let free = &zero.joints[index];
+    let (s, c) = angle.sin_cos();
+    let k = free.axis;
+    // Rodrigues: c v + s (k x v) + (1 - c)(k . v) k.
+    let turn = |v: V3| {
+        let kv = dot(k, v) * (1.0 - c);
+        let kxv = cross(k, v);
+        [0, 1, 2].map(|i| c * v[i] + s * kxv[i] + kv * k[i])
+    };
+    let turn_point = |p: V3| {
+        let d = turn(sub(p, free.point));
+        [0, 1, 2].map(|i| free.point[i] + d[i])
+    };
+    let mut joints = Vec::with_capacity(zero.joints.len() - 1);
+    for (i, joint) in zero.joints.iter().enumerate() {
+        if i == index {
+            continue;
+        }
+        let mut joint = joint.clone();
+        if i > index {
+            joint.axis = turn(joint.axis);
+            joint.point = turn_point(joint.point);
+        }
+        joints.push(joint);
+    }
+    let r = &zero.tip_rotation;
+    let columns = [0, 1, 2].map(|j| turn([r[0][j], r[1][j], r[2][j]]));
+    ZeroConfiguration {
+        joints,
+        tip_rotation: [0, 1, 2].map(|i| [columns[0][i], columns[1][i], columns[2][i]]),
+        tip_point: turn_point(zero.tip_point),
+        reach: zero.reach,
+    }
 }
 
 /// The points on the axes a family needs (index by joint) and, for axes taken as parallel to an
@@ -298,7 +423,36 @@ fn plan(lines: &Lines<'_>, family: IkFamily) -> Result<Placement, Fault> {
             }
         }
     }
+    distance_depends_on_its_joint(lines, family, &points)?;
     Ok((points, parallel_to))
+}
+
+/// Rule: the joint whose angle subproblem 3 finds from a distance changes that distance: the
+/// offsets on either side of it are not both along its axis (a line through the axis turns into
+/// itself). Otherwise the arm is degenerate: the distance is fixed, so only poses at that
+/// distance are reached, and those by a continuum of angles (the iiwa with its elbow held: its
+/// shoulder and wrist axes each meet in a point, and the distance between the points never
+/// changes).
+fn distance_depends_on_its_joint(lines: &Lines<'_>, family: IkFamily, points: &[Option<V3>; 6]) -> Result<(), Fault> {
+    let point = |i: usize| points[i].unwrap_or(lines.point(i));
+    let across = |axis: usize, from: usize, to: usize| norm(cross(lines.axis(axis), sub(point(to), point(from))));
+    let tolerance = lines.meet_tolerance;
+    let (joint, sides) = match family {
+        // |p23 + rot(h3, q3) p34| is the distance.
+        IkFamily::ThreeParallelTwoIntersecting
+        | IkFamily::SphericalTwoParallel
+        | IkFamily::SphericalFirstTwoIntersecting => (2, [across(2, 1, 2), across(2, 2, 3)]),
+        // |rot(h1, -q1) v - p12| is the distance: only p12 is the robot's.
+        IkFamily::SphericalLastTwoIntersecting => (0, [across(0, 0, 1), f64::INFINITY]),
+    };
+    if sides.iter().any(|&d| d <= tolerance) {
+        return Err(Fault::Arm(format!(
+            "axis {} is in line with the offset beside it, so turning it changes no distance (a degenerate arm: it \
+             reaches only poses at one distance)",
+            joint + 1
+        )));
+    }
+    Ok(())
 }
 
 fn finish(
@@ -308,6 +462,7 @@ fn finish(
     family: IkFamily,
     points: [Option<V3>; 6],
     parallel_to: [Option<usize>; 6],
+    free: Option<FreeJoint>,
 ) -> IkPlan {
     let mut notes = Vec::new();
     let mut axes = [[0.0; 3]; 6];
@@ -353,7 +508,10 @@ fn finish(
         axes,
         offsets,
         tool_rotation: zero.tip_rotation,
+        points: [0, 1, 2, 3, 4, 5].map(|i| chosen[i]),
+        tip_point: zero.tip_point,
         reach: zero.reach,
+        free,
         notes,
     }
 }

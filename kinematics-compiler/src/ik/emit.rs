@@ -6,7 +6,7 @@
 use proc_macro2::{Literal, TokenStream};
 use quote::{format_ident, quote};
 
-use super::classify::IkPlan;
+use super::classify::{FreeJoint, IkPlan};
 use crate::robot::number;
 
 fn vector(v: &[f64; 3]) -> TokenStream {
@@ -17,6 +17,13 @@ fn vector(v: &[f64; 3]) -> TokenStream {
 /// The associated constant and functions (inside the robot's `impl`) for `plan`. `forward` names
 /// the generic function computing the tip's pose.
 pub fn emit_ik(plan: &IkPlan, private: &TokenStream, forward: &TokenStream) -> TokenStream {
+    match &plan.free {
+        None => emit_six(plan, private, forward),
+        Some(free) => emit_free(plan, free, private, forward),
+    }
+}
+
+fn emit_six(plan: &IkPlan, private: &TokenStream, forward: &TokenStream) -> TokenStream {
     let p = private;
     let family = plan.family.name();
     let solver = format_ident!("{}", plan.family.solver());
@@ -68,6 +75,78 @@ pub fn emit_ik(plan: &IkPlan, private: &TokenStream, forward: &TokenStream) -> T
         pub fn tip_ik_nearest(target: &#p::Pose<f64>, seed: &[f64; 6]) -> #one {
             #p::ik::check_seed(seed)?;
             ::core::result::Result::Ok(Self::tip_ik(target)?.nearest(seed, &[true; 6]))
+        }
+    }
+}
+
+/// A seven-joint arm's functions: the free joint's value an input (`tip_ik`,
+/// `tip_ik_within_limits`) or taken from the seed (`tip_ik_nearest`).
+fn emit_free(plan: &IkPlan, free: &FreeJoint, private: &TokenStream, forward: &TokenStream) -> TokenStream {
+    let p = private;
+    let family = plan.family.name();
+    let solver = format_ident!("{}", plan.family.solver());
+    let capacity = Literal::usize_unsuffixed(plan.family.max_solutions());
+    let axes = plan.axes.iter().map(vector);
+    let points = plan.points.iter().map(vector);
+    let rows = plan.tool_rotation.iter().map(vector);
+    let (tip_point, free_axis, free_point) = (vector(&plan.tip_point), vector(&free.axis), vector(&free.point));
+    let index = Literal::usize_unsuffixed(free.index);
+    let (base, tip, name) = (&plan.base, &plan.tip, &free.name);
+    let result = |t: TokenStream| quote!(::core::result::Result<#t, #p::ik::IkError>);
+    let all = result(quote!(#p::ik::IkSolutions<7, #capacity>));
+    let one = result(quote!(::core::option::Option<#p::ik::IkSolution<7>>));
+    let doc_family = format!(
+        "The closed-form inverse kinematics family of `{tip}` in `{base}` with joint `{name}` given: {family}."
+    );
+    let doc_all = format!(
+        "Every closed-form inverse kinematics solution for a pose of `{tip}` in `{base}` with joint `{name}` at \
+         `free` ({family} for the other six): all {capacity} branches, each exact or the least-squares best \
+         where the target is out of its reach, flagged when singular, with its pose errors measured by this \
+         robot's forward kinematics. `q` holds `free` as given and the other angles in `(-pi, pi]`. A target \
+         that is no pose, or a `free` that is not a finite number, is an error."
+    );
+    let doc_nearest = format!(
+        "The solution of [`Self::tip_ik`] with joint `{name}` at the seed's value nearest `seed` (each angle \
+         moved by whole turns to the seed's side), exact ones preferred to least-squares ones."
+    );
+    quote! {
+        #[doc = #doc_family]
+        pub const IK_FAMILY: &'static str = #family;
+
+        #[doc = #doc_all]
+        #[inline]
+        pub fn tip_ik(target: &#p::Pose<f64>, free: f64) -> #all {
+            const ARM: #p::ik::FreeArm6 = #p::ik::FreeArm6 {
+                axes: [#(#axes),*],
+                points: [#(#points),*],
+                tip_point: #tip_point,
+                tool_rotation: [#(#rows),*],
+                free_axis: #free_axis,
+                free_point: #free_point,
+                free_index: #index,
+            };
+            #p::ik::check_target(target)?;
+            if !free.is_finite() {
+                return ::core::result::Result::Err(#p::ik::IkError::NonFiniteFree);
+            }
+            let six = #p::ik::#solver(&ARM.at(free), target);
+            let mut solutions = #p::ik::insert_free(&six, #index, free);
+            solutions.measure(target, #[inline(always)] |q| #forward(q));
+            ::core::result::Result::Ok(solutions)
+        }
+
+        /// The solutions of [`Self::tip_ik`] inside `JOINT_LIMITS`, each angle moved by a whole
+        /// turn into its limits where that fits.
+        #[inline]
+        pub fn tip_ik_within_limits(target: &#p::Pose<f64>, free: f64) -> #all {
+            ::core::result::Result::Ok(Self::tip_ik(target, free)?.within_limits(&Self::JOINT_LIMITS, &[true; 7]))
+        }
+
+        #[doc = #doc_nearest]
+        #[inline]
+        pub fn tip_ik_nearest(target: &#p::Pose<f64>, seed: &[f64; 7]) -> #one {
+            #p::ik::check_seed(seed)?;
+            ::core::result::Result::Ok(Self::tip_ik(target, seed[#index])?.nearest(seed, &[true; 7]))
         }
     }
 }

@@ -8,4 +8,4 @@ pub mod classify;
 pub mod emit;
 pub mod geometry;
 
-pub use classify::{IkFamily, IkPlan, MEET_TOLERANCE, PARALLEL_TOLERANCE, classify};
+pub use classify::{FreeJoint, IkFamily, IkPlan, MEET_TOLERANCE, PARALLEL_TOLERANCE, classify, classify_with};

@@ -154,3 +154,77 @@ pub fn three_parallel_two_intersecting(arm: &Arm6, target: &Pose<f64>) -> IkSolu
     }
     out
 }
+
+/// A seven-joint arm whose joint `free` (its value an input) is fixed before solving the other
+/// six in closed form: the six's geometry at the free joint's zero (points on their axes rather
+/// than offsets, so that the part after the free joint can be turned rigidly), and the free
+/// joint's axis and a point on it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FreeArm6 {
+    /// The six solved joints' unit axes, at the free joint's zero.
+    pub axes: [V3; 6],
+    /// A point on each of their axes (meeting axes share theirs).
+    pub points: [V3; 6],
+    /// The tip's origin at the free joint's zero.
+    pub tip_point: V3,
+    /// The tip's rotation at zero.
+    pub tool_rotation: M3,
+    /// The free joint's unit axis.
+    pub free_axis: V3,
+    /// A point on it.
+    pub free_point: V3,
+    /// The first of the six after the free joint (the free joint's index in `q`).
+    pub free_index: usize,
+}
+
+impl FreeArm6 {
+    /// The six-joint arm with the free joint at `angle`: everything after it turned about its
+    /// axis.
+    #[inline(always)]
+    pub fn at(&self, angle: f64) -> Arm6 {
+        let (s, c) = libm::sincos(angle);
+        let k = self.free_axis;
+        let turn_point = |p: V3| add(self.free_point, super::vector::rotate_cs(k, c, s, sub(p, self.free_point)));
+        let mut axes = self.axes;
+        let mut points = self.points;
+        for i in self.free_index..6 {
+            axes[i] = super::vector::rotate_cs(k, c, s, axes[i]);
+            points[i] = turn_point(points[i]);
+        }
+        let tip = turn_point(self.tip_point);
+        let r = &self.tool_rotation;
+        let columns = [0, 1, 2].map(|j| super::vector::rotate_cs(k, c, s, [r[0][j], r[1][j], r[2][j]]));
+        let tool_rotation = [0, 1, 2].map(|i| [columns[0][i], columns[1][i], columns[2][i]]);
+        let mut offsets = [[0.0; 3]; 7];
+        offsets[0] = points[0];
+        for i in 1..6 {
+            offsets[i] = sub(points[i], points[i - 1]);
+        }
+        offsets[6] = sub(tip, points[5]);
+        Arm6 { axes, offsets, tool_rotation }
+    }
+}
+
+/// Six-joint solutions as seven-joint ones: `value` (the free joint's) inserted at `index`.
+#[inline(always)]
+pub fn insert_free<const M: usize>(six: &IkSolutions<6, M>, index: usize, value: f64) -> IkSolutions<7, M> {
+    let mut out = IkSolutions::new();
+    for s in six.iter() {
+        let mut q = [value; 7];
+        let mut from = 0;
+        for (i, entry) in q.iter_mut().enumerate() {
+            if i != index {
+                *entry = s.q[from];
+                from += 1;
+            }
+        }
+        out.push(IkSolution {
+            q,
+            exact: s.exact,
+            singular: s.singular,
+            position_error: s.position_error,
+            rotation_error: s.rotation_error,
+        });
+    }
+    out
+}

@@ -20,6 +20,8 @@ pub enum IkError {
     NonFinite,
     /// A seed (`tip_ik_nearest`, `tip_ik_numeric`) has an entry that is NaN or infinite.
     NonFiniteSeed,
+    /// The free joint's value (`tip_ik` of a seven-joint arm) is NaN or infinite.
+    NonFiniteFree,
     /// The rotation is not orthonormal with determinant 1 (within [`ROTATION_TOLERANCE`]).
     NotARotation {
         /// The largest entry of `R R^T - I`, or how far the determinant is from 1 if larger.
@@ -31,6 +33,7 @@ impl fmt::Display for IkError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match *self {
             IkError::NonFinite => f.write_str("the target pose has an entry that is not a finite number"),
+            IkError::NonFiniteFree => f.write_str("the free joint's value is not a finite number"),
             IkError::NonFiniteSeed => f.write_str("the seed configuration has an entry that is not a finite number"),
             IkError::NotARotation { deviation } => write!(
                 f,
