@@ -47,16 +47,19 @@ fn emit_six(plan: &IkPlan, private: &TokenStream, forward: &TokenStream) -> Toke
         #[doc = #doc_family]
         pub const IK_FAMILY: &'static str = #family;
 
+        /// The geometry the closed form solves: the chain at `q = 0` as a product of exponentials,
+        /// points on meeting axes placed where they meet.
+        pub const IK_ARM: #p::ik::Arm6 = #p::ik::Arm6 {
+            axes: [#(#axes),*],
+            offsets: [#(#offsets),*],
+            tool_rotation: [#(#rows),*],
+        };
+
         #[doc = #doc_all]
         #[inline]
         pub fn tip_ik(target: &#p::Pose<f64>) -> #all {
-            const ARM: #p::ik::Arm6 = #p::ik::Arm6 {
-                axes: [#(#axes),*],
-                offsets: [#(#offsets),*],
-                tool_rotation: [#(#rows),*],
-            };
             #p::ik::check_target(target)?;
-            let mut solutions = #p::ik::#solver(&ARM, target);
+            let mut solutions = #p::ik::#solver(&Self::IK_ARM, target);
             solutions.measure(target, #[inline(always)] |q| #forward(q));
             ::core::result::Result::Ok(solutions)
         }
@@ -113,10 +116,9 @@ fn emit_free(plan: &IkPlan, free: &FreeJoint, private: &TokenStream, forward: &T
         #[doc = #doc_family]
         pub const IK_FAMILY: &'static str = #family;
 
-        #[doc = #doc_all]
-        #[inline]
-        pub fn tip_ik(target: &#p::Pose<f64>, free: f64) -> #all {
-            const ARM: #p::ik::FreeArm6 = #p::ik::FreeArm6 {
+        /// The geometry the closed form solves, at the free joint's zero (turned to its value at
+        /// run time).
+        pub const IK_ARM: #p::ik::FreeArm6 = #p::ik::FreeArm6 {
                 axes: [#(#axes),*],
                 points: [#(#points),*],
                 tip_point: #tip_point,
@@ -124,12 +126,16 @@ fn emit_free(plan: &IkPlan, free: &FreeJoint, private: &TokenStream, forward: &T
                 free_axis: #free_axis,
                 free_point: #free_point,
                 free_index: #index,
-            };
+        };
+
+        #[doc = #doc_all]
+        #[inline]
+        pub fn tip_ik(target: &#p::Pose<f64>, free: f64) -> #all {
             #p::ik::check_target(target)?;
             if !free.is_finite() {
                 return ::core::result::Result::Err(#p::ik::IkError::NonFiniteFree);
             }
-            let six = #p::ik::#solver(&ARM.at(free), target);
+            let six = #p::ik::#solver(&Self::IK_ARM.at(free), target);
             let mut solutions = #p::ik::insert_free(&six, #index, free);
             solutions.measure(target, #[inline(always)] |q| #forward(q));
             ::core::result::Result::Ok(solutions)

@@ -1,0 +1,273 @@
+//! Inverse kinematics speed: the compiled closed forms (UR5, IRB 120, PUMA 560: every solution
+//! of a pose, the solution nearest a seed, and the family's solver alone without the errors
+//! measured by forward kinematics) and the numeric solver on the seven-joint arms (Panda, iiwa 14)
+//! against the `k` crate's Jacobian IK solver on the same targets and seeds, with both success
+//! rates. `ik-geo`, the run-time IK-Geo, builds nlopt with cmake, so its side of the comparison
+//! lives in `benches/ik-geo/` (its own crate, run by its script), not here.
+//!
+//! `cargo bench --bench ik` measures; under `cargo test` every body runs once and is checked
+//! instead: each closed-form answer holds the configuration its target was made from, and each
+//! converged numeric answer reaches its target by the runtime reference.
+
+#![allow(clippy::expect_used, clippy::panic)] // a benchmark fails loudly on a robot that does not load
+
+use std::hint::black_box;
+use std::time::Duration;
+
+use criterion::Criterion;
+use kinematics::ik::{IkError, IkSolutions, NumericSolution};
+use kinematics::{JointLimits, Kinematics, Pose, ReferenceModel};
+
+#[derive(Kinematics)]
+#[kinematics(urdf = "robots/ur5.urdf", base = "base_link", tip = "tool0", ik)]
+struct Ur5;
+
+#[derive(Kinematics)]
+#[kinematics(urdf = "robots/irb120.urdf", tip = "tool0", ik)]
+struct Irb120;
+
+#[derive(Kinematics)]
+#[kinematics(dh = "robots/puma560.toml", tip = "link6", ik)]
+struct Puma560;
+
+#[derive(Kinematics)]
+#[kinematics(urdf = "robots/panda.urdf", tip = "panda_hand", ik = "numeric")]
+struct Panda;
+
+#[derive(Kinematics)]
+#[kinematics(urdf = "robots/iiwa14.urdf", tip = "iiwa_link_ee", ik = "numeric")]
+struct Iiwa14;
+
+/// Targets (and seeds) cycled through in the timed loops.
+const INPUTS: usize = 256;
+/// Targets of the numeric comparison (each solved once per solver for the success rates).
+const NUMERIC_TARGETS: usize = 500;
+
+/// splitmix64, uniform in [0, 1).
+struct Uniform(u64);
+
+impl Uniform {
+    fn next(&mut self) -> f64 {
+        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        (z ^ (z >> 31)) as f64 / 2f64.powi(64)
+    }
+
+    /// A configuration within the limits (continuous joints within one turn).
+    fn within<const N: usize>(&mut self, limits: &[JointLimits; N]) -> [f64; N] {
+        limits.map(|l| {
+            let (lo, hi) = if l.lower.is_finite() { (l.lower, l.upper) } else { (-3.1, 3.1) };
+            lo + (hi - lo) * self.next()
+        })
+    }
+}
+
+fn wrapped(x: f64) -> f64 {
+    let tau = std::f64::consts::TAU;
+    x - tau * (x / tau).round()
+}
+
+/// One closed-form robot's functions.
+struct Closed {
+    name: &'static str,
+    limits: [JointLimits; 6],
+    pose: fn(&[f64; 6]) -> Pose<f64>,
+    all: fn(&Pose<f64>) -> Result<IkSolutions<6, 8>, IkError>,
+    nearest: fn(&Pose<f64>, &[f64; 6]) -> Result<Option<kinematics::ik::IkSolution<6>>, IkError>,
+    solver: fn(&Pose<f64>) -> IkSolutions<6, 8>,
+}
+
+fn closed_forms() -> [Closed; 3] {
+    [
+        Closed {
+            name: "ur5",
+            limits: Ur5::JOINT_LIMITS,
+            pose: Ur5::tip_pose,
+            all: Ur5::tip_ik,
+            nearest: Ur5::tip_ik_nearest,
+            solver: |t| kinematics::ik::three_parallel_two_intersecting(&Ur5::IK_ARM, t),
+        },
+        Closed {
+            name: "irb120",
+            limits: Irb120::JOINT_LIMITS,
+            pose: Irb120::tip_pose,
+            all: Irb120::tip_ik,
+            nearest: Irb120::tip_ik_nearest,
+            solver: |t| kinematics::ik::spherical_two_parallel(&Irb120::IK_ARM, t),
+        },
+        Closed {
+            name: "puma560",
+            limits: Puma560::JOINT_LIMITS,
+            pose: Puma560::tip_pose,
+            all: Puma560::tip_ik,
+            nearest: Puma560::tip_ik_nearest,
+            solver: |t| kinematics::ik::spherical_two_parallel(&Puma560::IK_ARM, t),
+        },
+    ]
+}
+
+fn closed(c: Option<&mut Criterion>, robot: &Closed) {
+    let mut rng = Uniform(11);
+    let qs: Vec<[f64; 6]> = (0..INPUTS).map(|_| rng.within(&robot.limits)).collect();
+    let targets: Vec<Pose<f64>> = qs.iter().map(|q| (robot.pose)(q)).collect();
+    // Seeds near each configuration, as a controller's last command is near its next answer.
+    let seeds: Vec<[f64; 6]> = qs.iter().map(|q| q.map(|x| x + 0.01)).collect();
+    let Some(c) = c else {
+        for ((q, target), seed) in qs.iter().zip(&targets).zip(&seeds) {
+            let all = (robot.all)(target).expect("a pose");
+            let near = |s: &[f64; 6]| s.iter().zip(q).all(|(a, b)| wrapped(a - b).abs() < 1e-6);
+            assert!(all.exact().any(|s| near(&s.q)), "{}: {q:?} not among {all:?}", robot.name);
+            let nearest = (robot.nearest)(target, seed).expect("a pose").expect("solutions");
+            assert!(near(&nearest.q), "{}: nearest {nearest:?} to {q:?}", robot.name);
+            assert_eq!((robot.solver)(target).len(), all.len());
+        }
+        return;
+    };
+    let mut group = c.benchmark_group(format!("ik-{}", robot.name));
+    let mut i = 0;
+    group.bench_function("all", |b| {
+        b.iter(|| {
+            i = (i + 1) % INPUTS;
+            black_box((robot.all)(black_box(&targets[i])))
+        })
+    });
+    group.bench_function("nearest", |b| {
+        b.iter(|| {
+            i = (i + 1) % INPUTS;
+            black_box((robot.nearest)(black_box(&targets[i]), black_box(&seeds[i])))
+        })
+    });
+    group.bench_function("solver", |b| {
+        b.iter(|| {
+            i = (i + 1) % INPUTS;
+            black_box((robot.solver)(black_box(&targets[i])))
+        })
+    });
+    group.finish();
+}
+
+/// One seven-joint robot's numeric solver and its `k` chain.
+struct Numeric<const N: usize> {
+    name: &'static str,
+    file: &'static str,
+    tip: &'static str,
+    limits: [JointLimits; N],
+    pose: fn(&[f64; N]) -> Pose<f64>,
+    solve: fn(&Pose<f64>, &[f64; N]) -> Result<NumericSolution<N>, IkError>,
+    reference: fn() -> Result<kinematics::ReferenceFk, kinematics::LoadError>,
+}
+
+fn numeric<const N: usize>(c: Option<&mut Criterion>, robot: &Numeric<N>) {
+    let mut rng = Uniform(23);
+    let count = if c.is_some() { NUMERIC_TARGETS } else { 20 };
+    let targets: Vec<Pose<f64>> = (0..count).map(|_| (robot.pose)(&rng.within(&robot.limits))).collect();
+    let seeds: Vec<[f64; N]> = (0..count).map(|_| rng.within(&robot.limits)).collect();
+    let reference = (robot.reference)().expect("loads");
+    // k's chain from the tip up, and its solver held to the same tolerance as ours.
+    let path = format!("{}/robots/{}", env!("CARGO_MANIFEST_DIR"), robot.file);
+    let chain = k::Chain::<f64>::from_urdf_file(&path).expect("k reads the robot");
+    let serial = k::SerialChain::from_end(chain.find_link(robot.tip).expect("k has the tip"));
+    let k_solver = k::JacobianIkSolver::new(1e-10, 1e-10, 0.5, 100);
+    // Our q may hold joints off the chain (the Panda's fingers): k's seed is the chain's own.
+    let chain_dofs: Vec<usize> = {
+        let tree = reference.tree();
+        let ours = tree.dof_names();
+        serial.iter_joints().map(|j| ours.iter().position(|n| *n == j.name).expect("k's joint is ours")).collect()
+    };
+    let k_solve = |i: usize| {
+        let seed: Vec<f64> = chain_dofs.iter().map(|&d| seeds[i][d]).collect();
+        serial.set_joint_positions_clamped(&seed);
+        let target = k_isometry(&targets[i]);
+        k::InverseKinematicsSolver::solve(&k_solver, &serial, &target).is_ok()
+    };
+    let mut ours = 0;
+    let mut theirs = 0;
+    for i in 0..count {
+        let found = (robot.solve)(&targets[i], &seeds[i]).expect("a pose");
+        if found.converged {
+            ours += 1;
+            let reached = Pose::from(reference.link_pose(&found.q, robot.tip).expect("finite"));
+            let (position, rotation) = kinematics::ik::pose_errors(&reached, &targets[i]);
+            assert!(position <= 1e-10 && rotation <= 1e-10, "{}: {position:e} {rotation:e}", robot.name);
+        }
+        theirs += usize::from(k_solve(i));
+    }
+    let Some(c) = c else { return };
+    println!(
+        "ik-{}: converged to 1e-10 from random seeds: ours {ours} of {count} ({:.1}%), k {theirs} of {count} ({:.1}%)",
+        robot.name,
+        100.0 * ours as f64 / count as f64,
+        100.0 * theirs as f64 / count as f64
+    );
+    let mut group = c.benchmark_group(format!("ik-{}", robot.name));
+    let mut i = 0;
+    group.bench_function("numeric", |b| {
+        b.iter(|| {
+            i = (i + 1) % count;
+            black_box((robot.solve)(black_box(&targets[i]), black_box(&seeds[i])))
+        })
+    });
+    group.bench_function("k-jacobian-ik", |b| {
+        b.iter(|| {
+            i = (i + 1) % count;
+            black_box(k_solve(i))
+        })
+    });
+    group.finish();
+}
+
+/// A pose as the isometry of `k`'s own nalgebra version.
+fn k_isometry(pose: &Pose<f64>) -> k::nalgebra::Isometry3<f64> {
+    let r = &pose.rotation;
+    let m = k::nalgebra::Matrix3::new(r[0][0], r[0][1], r[0][2], r[1][0], r[1][1], r[1][2], r[2][0], r[2][1], r[2][2]);
+    let rotation = k::nalgebra::UnitQuaternion::from_matrix(&m);
+    let [x, y, z] = pose.translation;
+    k::nalgebra::Isometry3::from_parts(k::nalgebra::Translation3::new(x, y, z), rotation)
+}
+
+fn all(mut c: Option<&mut Criterion>) {
+    for robot in closed_forms() {
+        closed(c.as_deref_mut(), &robot);
+    }
+    numeric(
+        c.as_deref_mut(),
+        &Numeric {
+            name: "panda",
+            file: "panda.urdf",
+            tip: "panda_hand",
+            limits: Panda::JOINT_LIMITS,
+            pose: Panda::tip_pose,
+            solve: Panda::tip_ik_numeric,
+            reference: <Panda as ReferenceModel>::reference,
+        },
+    );
+    numeric(
+        c,
+        &Numeric {
+            name: "iiwa14",
+            file: "iiwa14.urdf",
+            tip: "iiwa_link_ee",
+            limits: Iiwa14::JOINT_LIMITS,
+            pose: Iiwa14::tip_pose,
+            solve: Iiwa14::tip_ik_numeric,
+            reference: <Iiwa14 as ReferenceModel>::reference,
+        },
+    );
+}
+
+fn main() {
+    if std::env::args().any(|a| a == "--bench") {
+        let mut c = Criterion::default()
+            .warm_up_time(Duration::from_millis(300))
+            .measurement_time(Duration::from_secs(1))
+            .sample_size(30)
+            .configure_from_args();
+        all(Some(&mut c));
+        c.final_summary();
+    } else {
+        all(None);
+        println!("ik benchmarks: every body ran once and its answers were checked");
+    }
+}
