@@ -69,13 +69,16 @@ fn wrapped(x: f64) -> f64 {
     x - tau * (x / tau).round()
 }
 
+/// A robot's `tip_ik_nearest`.
+type Nearest = fn(&Pose<f64>, &[f64; 6]) -> Result<Option<kinematics::ik::IkSolution<6>>, IkError>;
+
 /// One closed-form robot's functions.
 struct Closed {
     name: &'static str,
     limits: [JointLimits; 6],
     pose: fn(&[f64; 6]) -> Pose<f64>,
     all: fn(&Pose<f64>) -> Result<IkSolutions<6, 8>, IkError>,
-    nearest: fn(&Pose<f64>, &[f64; 6]) -> Result<Option<kinematics::ik::IkSolution<6>>, IkError>,
+    nearest: Nearest,
     solver: fn(&Pose<f64>) -> IkSolutions<6, 8>,
 }
 

@@ -117,17 +117,21 @@ fn random_arms_of_every_family_are_classified_and_round_trip() {
                 let target = forward(&q);
                 let mut solutions = solve(&plan, &target);
                 solutions.measure(&target, forward);
-                for s in solutions.exact() {
-                    worst_error = worst_error.max(s.position_error / plan.reach).max(s.rotation_error);
-                }
+                let errors: Vec<f64> =
+                    solutions.exact().map(|s| (s.position_error / plan.reach).max(s.rotation_error)).collect();
+                assert!(errors.iter().all(|e| *e < 1e-9), "{family:?} arm {arm}: {q:?}: {solutions:#?}");
                 let nearest = solutions
                     .exact()
                     .map(|s| s.q.iter().zip(&q).map(|(a, b)| wrapped(a - b).abs()).fold(0.0, f64::max))
                     .fold(f64::INFINITY, f64::min);
-                // Within 1e-9 rad but near a singularity, where the angles are ill-conditioned
-                // (1e-4 rad still tells a missed branch, which is far).
+                // Within 1e-9 rad, or near a singularity (two branches nearly one, where the
+                // angles are ill-conditioned) within 1e-4 rad: that still tells a missed branch,
+                // which is far; such samples are counted and kept few.
                 if nearest > 1e-9 {
                     far += 1;
+                } else {
+                    // A sample whose own branch is well conditioned: every branch to 1e-12.
+                    worst_error = errors.iter().fold(worst_error, |w, e| w.max(*e));
                 }
                 assert!(nearest < 1e-4, "{family:?} arm {arm}: {q:?} not among {solutions:#?}\n{text}");
             }

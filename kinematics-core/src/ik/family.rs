@@ -11,8 +11,8 @@
 //! wrist).
 
 use super::solutions::{IkSolution, IkSolutions};
-use super::subproblem::{Quality, rotation_onto, rotation_to_distance, rotation_to_height, two_rotations};
-use super::vector::{M3, V3, add, cross, dot, mul, mul_by_transpose, norm_squared, rotate, scale, sub, wrap};
+use super::subproblem::{Quality, Turn, rotation_onto, rotation_to_distance, rotation_to_height, two_rotations};
+use super::vector::{M3, V3, add, cross, dot, mul, mul_by_transpose, norm_squared, scale, sub, wrap};
 use crate::pose::Pose;
 
 /// A six-joint revolute arm at its zero configuration (IK-Geo's form): unit axes `h1..h6`, the
@@ -40,17 +40,17 @@ fn wrist_target(arm: &Arm6, target: &Pose<f64>) -> (M3, V3) {
 /// The spherical wrist's joints 4, 5, 6 for arm angles `q1, q2, q3`: `rot(h4, q4) rot(h5, q5)
 /// rot(h6, q6) = R03^T R06` by subproblem 2 (`q4`, `q5`) and subproblem 1 (`q6`), two branches.
 #[inline(always)]
-fn spherical_wrist(arm: &Arm6, r06: &M3, [q1, q2, q3]: [f64; 3], quality: Quality, out: &mut IkSolutions<6, 8>) {
+fn spherical_wrist(arm: &Arm6, r06: &M3, [q1, q2, q3]: [Turn; 3], quality: Quality, out: &mut IkSolutions<6, 8>) {
     let h = &arm.axes;
-    let back = |v: V3| rotate(h[2], -q3, rotate(h[1], -q2, rotate(h[0], -q1, v)));
+    let back = |v: V3| q3.back().rotate(h[2], q2.back().rotate(h[1], q1.back().rotate(h[0], v)));
     let r36_h6 = back(mul(r06, h[5]));
     let r36_h5 = back(mul(r06, h[4]));
     let (pairs, wrist) = two_rotations(h[3], r36_h6, h[4], h[5]);
     for (t4, q5) in pairs {
-        let q4 = -t4;
-        let (q6, last) = rotation_onto(h[5], h[4], rotate(h[4], -q5, rotate(h[3], -q4, r36_h5)));
+        let (q6, last) = rotation_onto(h[5], h[4], q5.back().rotate(h[4], t4.rotate(h[3], r36_h5)));
         let all = quality.and(wrist).and(last);
-        out.push(IkSolution::unmeasured([q1, q2, q3, q4, q5, q6].map(wrap), all.exact, all.singular));
+        let q = [q1.angle, q2.angle, q3.angle, -t4.angle, q5.angle, q6.angle];
+        out.push(IkSolution::unmeasured(q.map(wrap), all.exact, all.singular));
     }
 }
 
@@ -66,12 +66,12 @@ pub fn spherical_two_parallel(arm: &Arm6, target: &Pose<f64>) -> IkSolutions<6, 
     let mut out = IkSolutions::new();
     let (t1s, first) = rotation_to_height(h2, h1, v0, dot(h2, add(add(p12, p23), p34)));
     for t1 in t1s {
-        let v1 = sub(rotate(h1, t1, v0), p12);
+        let v1 = sub(t1.rotate(h1, v0), p12);
         let (q3s, third) = rotation_to_distance(h3, p34, scale(p23, -1.0), norm_squared(v1));
         for q3 in q3s {
-            let (q2, second) = rotation_onto(h2, add(p23, rotate(h3, q3, p34)), v1);
+            let (q2, second) = rotation_onto(h2, add(p23, q3.rotate(h3, p34)), v1);
             let quality = first.and(third).and(second);
-            spherical_wrist(arm, &r06, [-t1, q2, q3], quality, &mut out);
+            spherical_wrist(arm, &r06, [t1.back(), q2, q3], quality, &mut out);
         }
     }
     out
@@ -88,10 +88,10 @@ pub fn spherical_first_two_intersecting(arm: &Arm6, target: &Pose<f64>) -> IkSol
     let mut out = IkSolutions::new();
     let (q3s, third) = rotation_to_distance(h3, p34, scale(p23, -1.0), norm_squared(v0));
     for q3 in q3s {
-        let u = add(p23, rotate(h3, q3, p34));
+        let u = add(p23, q3.rotate(h3, p34));
         let (pairs, shoulder) = two_rotations(h1, v0, h2, u);
         for (t1, q2) in pairs {
-            spherical_wrist(arm, &r06, [-t1, q2, q3], third.and(shoulder), &mut out);
+            spherical_wrist(arm, &r06, [t1.back(), q2, q3], third.and(shoulder), &mut out);
         }
     }
     out
@@ -108,10 +108,10 @@ pub fn spherical_last_two_intersecting(arm: &Arm6, target: &Pose<f64>) -> IkSolu
     let mut out = IkSolutions::new();
     let (t1s, first) = rotation_to_distance(h1, v0, p12, norm_squared(p34));
     for t1 in t1s {
-        let v1 = sub(rotate(h1, t1, v0), p12);
+        let v1 = sub(t1.rotate(h1, v0), p12);
         let (pairs, elbow) = two_rotations(h2, v1, h3, p34);
         for (t2, q3) in pairs {
-            spherical_wrist(arm, &r06, [-t1, -t2, q3], first.and(elbow), &mut out);
+            spherical_wrist(arm, &r06, [t1.back(), t2.back(), q3], first.and(elbow), &mut out);
         }
     }
     out
@@ -133,22 +133,23 @@ pub fn three_parallel_two_intersecting(arm: &Arm6, target: &Pose<f64>) -> IkSolu
     let mut out = IkSolutions::new();
     let (t1s, first) = rotation_to_height(h, h1, v0, dot(h, add(add(p12, p23), add(p34, p45))));
     for t1 in t1s {
-        let q1 = -t1;
+        let q1 = t1.back();
         // `h` seen from the tool flange: R16^T h.
-        let w = super::vector::mul_transposed(&r06, rotate(h1, q1, h));
+        let w = super::vector::mul_transposed(&r06, q1.rotate(h1, h));
+        let v1 = sub(t1.rotate(h1, v0), p12);
         let (q5s, fifth) = rotation_to_height(h, h5, h6, dot(w, h6));
         for q5 in q5s {
-            let (t6, sixth) = rotation_onto(h6, rotate(h5, -q5, h), w);
-            let q6 = -t6;
-            let turned = rotate(h1, t1, mul(&r06, rotate(h6, t6, rotate(h5, -q5, across))));
+            let (t6, sixth) = rotation_onto(h6, q5.back().rotate(h5, h), w);
+            let turned = t1.rotate(h1, mul(&r06, t6.rotate(h6, q5.back().rotate(h5, across))));
             let (sum, summed) = rotation_onto(h, across, turned);
-            let v = sub(sub(rotate(h1, t1, v0), p12), rotate(h, sum, p45));
+            let v = sub(v1, sum.rotate(h, p45));
             let (q3s, third) = rotation_to_distance(h3, p34, scale(p23, -1.0), norm_squared(v));
             for q3 in q3s {
-                let (q2, second) = rotation_onto(h, add(p23, rotate(h3, q3, p34)), v);
-                let q4 = sign4 * (sum - q2 - sign3 * q3);
+                let (q2, second) = rotation_onto(h, add(p23, q3.rotate(h3, p34)), v);
+                let q4 = sign4 * (sum.angle - q2.angle - sign3 * q3.angle);
                 let all = first.and(fifth).and(sixth).and(summed).and(third).and(second);
-                out.push(IkSolution::unmeasured([q1, q2, q3, q4, q5, q6].map(wrap), all.exact, all.singular));
+                let q = [q1.angle, q2.angle, q3.angle, q4, q5.angle, -t6.angle];
+                out.push(IkSolution::unmeasured(q.map(wrap), all.exact, all.singular));
             }
         }
     }

@@ -51,11 +51,50 @@ impl Quality {
     }
 }
 
+/// A solved angle with its cosine and sine, which the subproblems get from the same quantities
+/// as the angle (the arguments of its `atan2`, or an angle sum's formula), so that rotating by it
+/// costs no trigonometric call.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Turn {
+    /// The angle (radians, in `(-pi, pi]` unless made otherwise).
+    pub angle: f64,
+    /// Its cosine.
+    pub cos: f64,
+    /// Its sine.
+    pub sin: f64,
+}
+
+impl Turn {
+    /// No turn.
+    pub const ZERO: Turn = Turn { angle: 0.0, cos: 1.0, sin: 0.0 };
+
+    /// The angle of the vector `(x, y)`: `atan2(y, x)`, its cosine and sine the vector
+    /// normalised (no turn for the zero vector).
+    #[inline(always)]
+    pub fn of(y: f64, x: f64) -> Turn {
+        let r = libm::sqrt(x * x + y * y);
+        if r > 0.0 { Turn { angle: libm::atan2(y, x), cos: x / r, sin: y / r } } else { Turn::ZERO }
+    }
+
+    /// The opposite turn.
+    #[inline(always)]
+    #[must_use]
+    pub fn back(self) -> Turn {
+        Turn { angle: -self.angle, cos: self.cos, sin: -self.sin }
+    }
+
+    /// `v` rotated by this turn about the unit axis `k`.
+    #[inline(always)]
+    pub fn rotate(self, k: V3, v: V3) -> V3 {
+        super::vector::rotate_cs(k, self.cos, self.sin, v)
+    }
+}
+
 /// Subproblem 1: the angle `t` with `rot(k, t) p1 = p2` about the unit axis `k`, or the
 /// least-squares best when the two vectors differ in their component along `k` or in their
 /// distance from it. When `p1` lies on the axis every angle serves: `0`, flagged singular.
 #[inline(always)]
-pub fn rotation_onto(k: V3, p1: V3, p2: V3) -> (f64, Quality) {
+pub fn rotation_onto(k: V3, p1: V3, p2: V3) -> (Turn, Quality) {
     let along1 = dot(k, p1);
     let along2 = dot(k, p2);
     let x = dot(p1, p2) - along1 * along2;
@@ -66,39 +105,45 @@ pub fn rotation_onto(k: V3, p1: V3, p2: V3) -> (f64, Quality) {
     let across2 = norm_squared(cross(k, p2));
     let singular =
         across1 <= DEGENERATE * DEGENERATE * norm_squared(p1) || across2 <= DEGENERATE * DEGENERATE * norm_squared(p2);
-    let angle = if singular { 0.0 } else { libm::atan2(y, x) };
-    (angle, Quality { exact: true, singular })
+    let turn = if singular { Turn::ZERO } else { Turn::of(y, x) };
+    (turn, Quality { exact: true, singular })
 }
 
-/// The two solutions of `a cos t + b sin t = c` in `(-pi, pi]`, the one with the larger angle
-/// from `atan2(b, a)` first. Out of reach (`|c| > hypot(a, b)`), both are the least-squares best
-/// (`t` at or opposite `atan2(b, a)`); when `a = b = 0`, both are `0`, exact (and singular) if
-/// `c = 0` too.
+/// The two solutions of `a cos t + b sin t = c`, `atan2(b, a) + acos(c / hypot(a, b))` first
+/// and the one with the minus second, wrapped into `(-pi, pi]`. Out of reach
+/// (`|c| > hypot(a, b)`), both are the least-squares best (`t` at or opposite `atan2(b, a)`);
+/// when `a = b = 0`, both are `0`, exact (and singular) if `c = 0` too.
 #[inline(always)]
-pub fn cos_sin_equation(a: f64, b: f64, c: f64) -> ([f64; 2], Quality) {
+pub fn cos_sin_equation(a: f64, b: f64, c: f64) -> ([Turn; 2], Quality) {
     let r2 = a * a + b * b;
     let r = libm::sqrt(r2);
     let scale = if r > c.abs() { r } else { c.abs() };
     // The solvers take finite targets (`check_target`), so no operand here is NaN.
     if r <= DEGENERATE * scale {
         let exact = c.abs() <= DEGENERATE * scale;
-        return ([0.0, 0.0], Quality { exact, singular: true });
+        return ([Turn::ZERO; 2], Quality { exact, singular: true });
     }
-    let phi = libm::atan2(b, a);
+    let (cos_phi, sin_phi) = (a / r, b / r);
     let ratio = c / r;
     let exact = ratio.abs() <= 1.0 + REACH_SLACK;
-    let delta = if ratio.abs() >= 1.0 - DOUBLE_ROOT {
-        if ratio > 0.0 { 0.0 } else { core::f64::consts::PI }
+    // t = phi +- delta with cos(delta) = ratio: the cosines and sines by the angle-sum formulas,
+    // and each angle from its own cosine and sine, so the angle and the pair the solvers rotate
+    // with agree to rounding.
+    let (cos_delta, sin_delta) = if ratio.abs() >= 1.0 - DOUBLE_ROOT {
+        (if ratio > 0.0 { 1.0 } else { -1.0 }, 0.0)
     } else {
-        libm::acos(ratio)
+        (ratio, libm::sqrt((1.0 - ratio) * (1.0 + ratio)))
     };
-    ([super::vector::wrap(phi + delta), super::vector::wrap(phi - delta)], Quality { exact, singular: false })
+    let turn = |cos: f64, sin: f64| Turn { angle: libm::atan2(sin, cos), cos, sin };
+    let plus = turn(cos_phi * cos_delta - sin_phi * sin_delta, sin_phi * cos_delta + cos_phi * sin_delta);
+    let minus = turn(cos_phi * cos_delta + sin_phi * sin_delta, sin_phi * cos_delta - cos_phi * sin_delta);
+    ([plus, minus], Quality { exact, singular: false })
 }
 
 /// Subproblem 3: the angles `t` with `|rot(k, t) p1 - p2| = d`, given `d^2` (the callers know
 /// the square, so no root is taken).
 #[inline(always)]
-pub fn rotation_to_distance(k: V3, p1: V3, p2: V3, d_squared: f64) -> ([f64; 2], Quality) {
+pub fn rotation_to_distance(k: V3, p1: V3, p2: V3, d_squared: f64) -> ([Turn; 2], Quality) {
     let along = dot(k, p1) * dot(k, p2);
     let a = dot(p1, p2) - along;
     let b = dot(k, cross(p1, p2));
@@ -108,7 +153,7 @@ pub fn rotation_to_distance(k: V3, p1: V3, p2: V3, d_squared: f64) -> ([f64; 2],
 
 /// Subproblem 4: the angles `t` with `h . rot(k, t) p = d`.
 #[inline(always)]
-pub fn rotation_to_height(h: V3, k: V3, p: V3, d: f64) -> ([f64; 2], Quality) {
+pub fn rotation_to_height(h: V3, k: V3, p: V3, d: f64) -> ([Turn; 2], Quality) {
     let hk_kp = dot(h, k) * dot(k, p);
     let a = dot(h, p) - hk_kp;
     let b = dot(h, cross(k, p));
@@ -120,13 +165,13 @@ pub fn rotation_to_height(h: V3, k: V3, p: V3, d: f64) -> ([f64; 2], Quality) {
 /// when the target is reachable). Two pairs: the rotated vector `x` is where the two cones about
 /// `k1` and `k2` cross; when they do not, both pairs are the least-squares best.
 #[inline(always)]
-pub fn two_rotations(k1: V3, p1: V3, k2: V3, p2: V3) -> ([(f64, f64); 2], Quality) {
+pub fn two_rotations(k1: V3, p1: V3, k2: V3, p2: V3) -> ([(Turn, Turn); 2], Quality) {
     let n1 = libm::sqrt(norm_squared(p1));
     let n2 = libm::sqrt(norm_squared(p2));
     if n1 == 0.0 || n2 == 0.0 {
         // A zero vector is rotated onto anything.
         let exact = n1 == n2;
-        return ([(0.0, 0.0); 2], Quality { exact, singular: true });
+        return ([(Turn::ZERO, Turn::ZERO); 2], Quality { exact, singular: true });
     }
     let u1 = scale(p1, 1.0 / n1);
     let u2 = scale(p2, 1.0 / n2);
@@ -143,7 +188,7 @@ pub fn two_rotations(k1: V3, p1: V3, k2: V3, p2: V3) -> ([(f64, f64); 2], Qualit
     let base = add(scale(k1, alpha), scale(k2, beta));
     let normal = cross(k1, k2);
     let mut quality = Quality { exact, singular: false };
-    let mut pairs = [(0.0, 0.0); 2];
+    let mut pairs = [(Turn::ZERO, Turn::ZERO); 2];
     for (pair, sign) in pairs.iter_mut().zip([1.0, -1.0]) {
         let x = add(base, scale(normal, sign * gamma));
         let (t1, q1) = rotation_onto(k1, u1, x);
@@ -174,7 +219,8 @@ mod tests {
         for angle in [-3.0, -1.0, 0.0, 0.5, 2.9] {
             let p2 = rotate(k, angle, p1);
             let (t, quality) = rotation_onto(k, p1, p2);
-            assert!((t - angle).abs() < 1e-14, "{t} vs {angle}");
+            assert!((t.angle - angle).abs() < 1e-14, "{t:?} vs {angle}");
+            assert!((t.cos - angle.cos()).abs() < 1e-15 && (t.sin - angle.sin()).abs() < 1e-15, "{t:?}");
             assert_eq!(quality, Quality::EXACT);
         }
     }
@@ -182,7 +228,7 @@ mod tests {
     #[test]
     fn subproblem_1_on_the_axis_is_singular_not_nan() {
         let (t, quality) = rotation_onto([0.0, 0.0, 1.0], [0.0, 0.0, 2.0], [0.0, 0.0, 2.0]);
-        assert_eq!(t, 0.0);
+        assert_eq!(t, Turn::ZERO);
         assert!(quality.singular);
     }
 
@@ -196,8 +242,9 @@ mod tests {
         assert!(quality.exact && !quality.singular);
         let mut found = false;
         for (t1, t2) in pairs {
-            assert!(close(rotate(k1, t1, p1), rotate(k2, t2, p2), 1e-14));
-            found |= (t1 - 0.7).abs() < 1e-12 && (t2 - 1.3).abs() < 1e-12;
+            assert!(close(rotate(k1, t1.angle, p1), rotate(k2, t2.angle, p2), 1e-14));
+            assert!(close(t1.rotate(k1, p1), t2.rotate(k2, p2), 1e-14));
+            found |= (t1.angle - 0.7).abs() < 1e-12 && (t2.angle - 1.3).abs() < 1e-12;
         }
         assert!(found, "{pairs:?}");
     }
@@ -209,7 +256,7 @@ mod tests {
         let k2 = [1.0, 0.0, 0.0];
         let (pairs, quality) = two_rotations(k1, [0.1, 0.0, 1.0], k2, [1.0, 0.1, 0.0]);
         assert!(!quality.exact);
-        assert!(pairs.iter().all(|(a, b)| a.is_finite() && b.is_finite()));
+        assert!(pairs.iter().all(|(a, b)| a.angle.is_finite() && b.angle.is_finite()));
     }
 
     #[test]
@@ -219,9 +266,10 @@ mod tests {
         let d2 = norm_squared(sub(rotate(k, 2.2, p1), p2));
         let (angles, quality) = rotation_to_distance(k, p1, p2, d2);
         assert_eq!(quality, Quality::EXACT);
-        assert!(angles.iter().any(|t| (t - 2.2).abs() < 1e-12), "{angles:?}");
+        assert!(angles.iter().any(|t| (t.angle - 2.2).abs() < 1e-12), "{angles:?}");
         for t in angles {
-            assert!((norm_squared(sub(rotate(k, t, p1), p2)) - d2).abs() < 1e-14);
+            assert!((norm_squared(sub(rotate(k, t.angle, p1), p2)) - d2).abs() < 1e-14);
+            assert!((t.cos - t.angle.cos()).abs() < 1e-15 && (t.sin - t.angle.sin()).abs() < 1e-15, "{t:?}");
         }
     }
 
@@ -232,7 +280,7 @@ mod tests {
         assert!(!quality.exact);
         // The farthest the rotated point gets from p2 is 3 (at t = pi).
         for t in angles {
-            assert!((norm_squared(sub(rotate(k, t, [1.0, 0.0, 0.0]), [2.0, 0.0, 0.0])) - 9.0).abs() < 1e-12);
+            assert!((norm_squared(sub(rotate(k, t.angle, [1.0, 0.0, 0.0]), [2.0, 0.0, 0.0])) - 9.0).abs() < 1e-12);
         }
     }
 
@@ -244,20 +292,21 @@ mod tests {
         let d = dot(h, rotate(k, -1.1, p));
         let (angles, quality) = rotation_to_height(h, k, p, d);
         assert_eq!(quality, Quality::EXACT);
-        assert!(angles.iter().any(|t| (t + 1.1).abs() < 1e-12), "{angles:?}");
+        assert!(angles.iter().any(|t| (t.angle + 1.1).abs() < 1e-12), "{angles:?}");
         for t in angles {
-            assert!((dot(h, rotate(k, t, p)) - d).abs() < 1e-14);
+            assert!((dot(h, rotate(k, t.angle, p)) - d).abs() < 1e-14);
+            assert!((dot(h, t.rotate(k, p)) - d).abs() < 1e-14);
         }
     }
 
     #[test]
     fn degenerate_equations_are_flagged_not_nan() {
         let (angles, quality) = cos_sin_equation(0.0, 0.0, 0.0);
-        assert_eq!((angles, quality), ([0.0, 0.0], Quality { exact: true, singular: true }));
+        assert_eq!((angles, quality), ([Turn::ZERO; 2], Quality { exact: true, singular: true }));
         let (angles, quality) = cos_sin_equation(0.0, 0.0, 1.0);
-        assert_eq!((angles, quality), ([0.0, 0.0], Quality { exact: false, singular: true }));
+        assert_eq!((angles, quality), ([Turn::ZERO; 2], Quality { exact: false, singular: true }));
         let (angles, quality) = cos_sin_equation(1.0, 0.0, 2.0);
-        assert_eq!(angles, [0.0, 0.0]);
+        assert_eq!(angles, [Turn::ZERO; 2]);
         assert!(!quality.exact);
     }
 }
