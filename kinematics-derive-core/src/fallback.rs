@@ -13,6 +13,20 @@ use quote::{format_ident, quote};
 use syn::punctuated::Punctuated;
 
 use crate::options::KinematicsInput;
+use kinematics_compiler::robot::IkMode;
+
+/// The inverse kinematics functions the attribute implies.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum IkNames {
+    /// None.
+    Off,
+    /// `tip_ik(&target)` and the numeric solver.
+    ClosedForm,
+    /// `tip_ik(&target, free)` and the numeric solver.
+    Free,
+    /// The numeric solver only.
+    Numeric,
+}
 
 /// The function names the attribute implies.
 #[derive(Debug, Clone, Copy)]
@@ -25,6 +39,8 @@ struct Names {
     positions: bool,
     /// The velocity functions (`tip_jacobian`, ...).
     jacobians: bool,
+    /// Which inverse kinematics functions.
+    ik: IkNames,
     /// `f64` functions (no suffix).
     f64: bool,
     /// `_f32` functions.
@@ -35,8 +51,16 @@ struct Names {
 
 impl Names {
     /// Every name the derive can emit: for an attribute that cannot be read at all.
-    const ALL: Names =
-        Names { one_tip: true, several_tips: true, positions: true, jacobians: true, f64: true, f32: true, tips: None };
+    const ALL: Names = Names {
+        one_tip: true,
+        several_tips: true,
+        positions: true,
+        jacobians: true,
+        ik: IkNames::ClosedForm,
+        f64: true,
+        f32: true,
+        tips: None,
+    };
 
     /// From options darling parsed (the scalar list may still be wrong: then both scalar types).
     fn from_options(options: &KinematicsInput) -> Self {
@@ -50,6 +74,13 @@ impl Names {
             several_tips: tips > 1,
             positions: options.positions,
             jacobians: options.jacobians.is_present(),
+            ik: match options.ik_mode() {
+                Ok(IkMode::Off) => IkNames::Off,
+                Ok(IkMode::ClosedForm { free: Some(_) }) => IkNames::Free,
+                Ok(IkMode::Numeric) => IkNames::Numeric,
+                // An unknown kind: the closed form's names, the most a user would call.
+                Ok(IkMode::ClosedForm { free: None }) | Err(_) => IkNames::ClosedForm,
+            },
             f64,
             f32,
             tips: Some(tips),
@@ -65,6 +96,7 @@ impl Names {
             several_tips: false,
             positions: false,
             jacobians: false,
+            ik: IkNames::Off,
             f64: true,
             f32: false,
             tips: None,
@@ -92,6 +124,12 @@ impl Names {
                     names.positions = true;
                 } else if path.is_ident("jacobians") {
                     names.jacobians = true;
+                } else if path.is_ident("ik") {
+                    names.ik = match &item {
+                        syn::Meta::List(_) => IkNames::Free,
+                        syn::Meta::NameValue(nv) if quote!(#nv).to_string().contains("\"numeric\"") => IkNames::Numeric,
+                        _ => IkNames::ClosedForm,
+                    };
                 } else if path.is_ident("scalars") {
                     let text = match &item {
                         syn::Meta::List(list) => list.tokens.to_string(),
@@ -287,6 +325,34 @@ pub fn stub(input: &syn::DeriveInput, options: Option<&KinematicsInput>, known: 
         }
     }
     let dof_const = known.map_or(0, |k| k.dof);
+    if names.ik != IkNames::Off {
+        let attrs = quote!(#[allow(missing_docs, unused_variables, clippy::missing_panics_doc)]);
+        let params: Vec<&TokenStream> = dof_param.iter().collect();
+        let result = |t: TokenStream| quote!(::core::result::Result<#t, #p::ik::IkError>);
+        let all = result(quote!(#p::ik::IkSolutions<#dof, 8>));
+        let one = result(quote!(::core::option::Option<#p::ik::IkSolution<#dof>>));
+        let numeric = result(quote!(#p::ik::NumericSolution<#dof>));
+        let free = (names.ik == IkNames::Free).then(|| quote!(, free: f64));
+        if names.ik != IkNames::Numeric {
+            functions.push(quote! {
+                pub const IK_FAMILY: &'static str = "";
+                #attrs
+                pub fn tip_ik<#(#params),*>(target: &#p::Pose<f64> #free) -> #all { ::core::unreachable!(#message) }
+                #attrs
+                pub fn tip_ik_within_limits<#(#params),*>(target: &#p::Pose<f64> #free) -> #all { ::core::unreachable!(#message) }
+                #attrs
+                pub fn tip_ik_nearest<#(#params),*>(target: &#p::Pose<f64>, seed: &[f64; #dof]) -> #one { ::core::unreachable!(#message) }
+            });
+        }
+        functions.push(quote! {
+            #attrs
+            pub fn tip_ik_numeric<#(#params),*>(target: &#p::Pose<f64>, seed: &[f64; #dof]) -> #numeric { ::core::unreachable!(#message) }
+            #attrs
+            pub fn tip_ik_numeric_with<#(#params),*>(target: &#p::Pose<f64>, seed: &[f64; #dof], options: &#p::ik::NumericOptions) -> #numeric {
+                ::core::unreachable!(#message)
+            }
+        });
+    }
     let velocity_const = known.map_or(0, |k| k.velocities);
     let load_error = quote! {
         ::core::result::Result::Err(#p::LoadError::new(
