@@ -36,6 +36,13 @@ pub struct Args {
     /// LOCAL_WORLD_ALIGNED) or the link's own (`local`).
     #[arg(long, value_enum, default_value = "local-world-aligned", requires = "jacobian")]
     frame: Frame,
+    /// Print the link's closed-form inverse kinematics instead: its family, the subproblems it is
+    /// composed of, and the geometry the compiler folds into it (or why no family applies).
+    #[arg(long, conflicts_with_all = ["all", "jacobian", "latex"])]
+    ik: bool,
+    /// With `--ik`, the joint of a seven-joint arm whose value is given.
+    #[arg(long, requires = "ik")]
+    free: Option<String>,
 }
 
 /// `--frame`.
@@ -63,6 +70,12 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
         return Ok(());
     }
     let (base, tip) = crate::robot::base_and_tip(&tree, &args.file, args.base.as_deref(), args.tip.as_deref())?;
+    if args.ik {
+        let plan = kinematics_compiler::ik::classify_with(&tree, &base, &tip, args.free.as_deref())
+            .map_err(|source| CliError::Compile { file: args.file.clone(), source })?;
+        write!(out, "{}", ik_text(&tree, &plan))?;
+        return Ok(());
+    }
     if args.jacobian {
         let frame = args.frame.model();
         write!(out, "{}", jacobian_text(&tree, &args.file, &base, &tip, frame, args.latex)?)?;
@@ -74,6 +87,54 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
     writeln!(out, "\noperations:")?;
     write!(out, "{}", op_table(&op_counts(&tree, &args.file, &base, &tip)?))?;
     Ok(())
+}
+
+/// A closed-form plan as text: family, subproblems, and per joint its axis and the offset to it
+/// from the previous point.
+fn ik_text(tree: &KinematicTree, plan: &kinematics_compiler::ik::IkPlan) -> String {
+    let short = crate::inspect::short;
+    let v = |v: &[f64; 3]| format!("({}, {}, {})", short(v[0]), short(v[1]), short(v[2]));
+    let mut out = format!(
+        "robot `{}`: inverse kinematics of `{}` in `{}`\nfamily: {}\nsubproblems (IK-Geo's numbering): {}\n",
+        tree.name(),
+        plan.tip,
+        plan.base,
+        plan.family.name(),
+        plan.family.subproblems()
+    );
+    if let Some(free) = &plan.free {
+        out += &format!(
+            "free joint: `{}` (q[{}]), axis {} through {}\n",
+            free.name,
+            free.index,
+            v(&free.axis),
+            v(&free.point)
+        );
+    }
+    out += "geometry at q = 0 (base frame): joint, axis h, offset p from the previous point\n";
+    let width = crate::inspect::column_width(plan.joints.iter().map(String::as_str));
+    for (i, joint) in plan.joints.iter().enumerate() {
+        out += &format!(
+            "  {}  h{} = {}  p{}{} = {}\n",
+            crate::inspect::pad(joint, width),
+            i + 1,
+            v(&plan.axes[i]),
+            i,
+            i + 1,
+            v(&plan.offsets[i])
+        );
+    }
+    out += &format!(
+        "  tool: p6T = {}, R6T rows {}\n",
+        v(&plan.offsets[6]),
+        plan.tool_rotation.iter().map(v).collect::<Vec<_>>().join(" ")
+    );
+    for note in &plan.notes {
+        out += &format!("note: {note}\n");
+    }
+    out +=
+        &format!("solutions: up to {} (every branch, exact or least-squares, flagged)\n", plan.family.max_solutions());
+    out
 }
 
 /// The 12 entries' names: the rotation row-major, then the translation.

@@ -730,3 +730,20 @@ fn inspect_names_each_leaf_s_ik_family() {
     let panda = ok(&["inspect", "robots/panda.toml"]);
     assert!(panda.contains("  flange: none: the chain has 7 moving joints"), "{panda}");
 }
+
+#[test]
+fn expr_ik_prints_the_family_its_subproblems_and_its_geometry() {
+    let out = ok(&["expr", "robots/ur5.urdf", "--ik"]);
+    for line in [
+        "family: axes 2, 3, 4 parallel, axes 5 and 6 meet",
+        "subproblems (IK-Geo's numbering): q1 by SP4, q5 by SP4, q6 by SP1",
+        "  wrist_3_joint        h6 = (0, 1, 0)  p56 = (0, 0, 0)",
+        "note: point of axis 5 (joint `wrist_2_joint`) moved +0.094650 m along it",
+    ] {
+        assert!(out.contains(line), "{out}\nlacks: {line}");
+    }
+    let free = ok(&["expr", "robots/iiwa14.urdf", "--ik", "--free", "iiwa_joint_3"]);
+    assert!(free.contains("free joint: `iiwa_joint_3` (q[2]), axis (0, 0, 1) through (0, 0, 0.5645)"), "{free}");
+    let error = fails(&["expr", "robots/panda.toml", "--ik"]);
+    assert!(error.contains("the chain has 7 moving joints"), "{error}");
+}
