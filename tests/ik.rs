@@ -464,3 +464,73 @@ fn a_seven_joint_arm_with_a_free_joint_round_trips() {
     assert!(near_singular * 50 < checked, "{near_singular} near a singularity, {checked} checked");
     assert_eq!(Iiwa14Free::tip_ik(&Iiwa14Free::tip_pose(&[0.1; 7]), f64::NAN), Err(IkError::NonFiniteFree));
 }
+
+#[derive(Kinematics)]
+#[kinematics(dh = "robots/planar_2r.toml", tip = "link2", ik)]
+struct Planar2r;
+
+#[derive(Kinematics)]
+#[kinematics(urdf = "robots/planar_3r.urdf", tip = "tool", ik)]
+struct Planar3r;
+
+#[derive(Kinematics)]
+#[kinematics(dh = "robots/planar_3r_modified.toml", tip = "tool", ik)]
+struct Planar3rModified;
+
+#[derive(Kinematics)]
+#[kinematics(dh = "robots/scara.toml", tip = "link4", ik)]
+struct Scara;
+
+/// The planar family on the planar arms and the SCARA: both elbow branches, the configuration
+/// among the exact ones (the prismatic joint's stroke as given), every exact solution on the
+/// target (position only for two joints, whose rotation follows), by its own errors and the
+/// runtime reference.
+#[test]
+fn planar_arms_and_the_scara_round_trip() {
+    macro_rules! round_trip {
+        ($robot:ident, $tip:literal, $n:literal, $rotation:expr) => {{
+            assert_eq!($robot::IK_FAMILY, "planar: revolute axes parallel, a prismatic joint along them at most");
+            let reference = $robot::reference().expect("loads");
+            let reach = reference.tree().reach();
+            let mut rng = Uniform(99);
+            let mut far = 0;
+            for _ in 0..1000 {
+                let q: [f64; $n] = $robot::JOINT_LIMITS.map(|l| {
+                    let (lo, hi) = if l.lower.is_finite() { (l.lower, l.upper) } else { (-3.1, 3.1) };
+                    lo + (hi - lo) * rng.next()
+                });
+                let target = $robot::tip_pose(&q);
+                let solutions = $robot::tip_ik(&target).expect("a pose");
+                assert_eq!(solutions.len(), 2);
+                for s in solutions.exact() {
+                    assert!(s.position_error <= 1e-12 * reach, "{}: {q:?}: {s:?}", stringify!($robot));
+                    if $rotation {
+                        assert!(s.rotation_error <= 1e-12, "{}: {q:?}: {s:?}", stringify!($robot));
+                    }
+                    let reached = Pose::from(reference.link_pose(&s.q, $tip).expect("finite"));
+                    let (position, _) = kinematics::ik::pose_errors(&reached, &target);
+                    assert!(position <= 1e-12 * reach, "{}: the reference: {position:e}", stringify!($robot));
+                }
+                let nearest = solutions
+                    .exact()
+                    .map(|s| s.q.iter().zip(&q).map(|(a, b)| wrapped(a - b).abs()).fold(0.0, f64::max))
+                    .fold(f64::INFINITY, f64::min);
+                // The elbow straight is the planar arms' singularity: near it the angles are
+                // ill-conditioned (counted, kept few).
+                if nearest > 1e-9 {
+                    far += 1;
+                }
+                assert!(nearest < 1e-5, "{}: {q:?} not among {solutions:#?}", stringify!($robot));
+            }
+            assert!(far < 10, "{}: {far} of 1000 near the straight elbow", stringify!($robot));
+        }};
+    }
+    round_trip!(Planar2r, "link2", 2, false);
+    round_trip!(Planar3r, "tool", 3, true);
+    round_trip!(Planar3rModified, "tool", 3, true);
+    round_trip!(Scara, "link4", 4, true);
+    // Off the plane: least squares, flagged.
+    let mut target = Planar3r::tip_pose(&[0.3, -0.5, 1.0]);
+    target.translation[2] += 0.1;
+    assert!(Planar3r::tip_ik(&target).expect("a pose").iter().all(|s| !s.exact));
+}

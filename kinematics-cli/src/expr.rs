@@ -111,24 +111,40 @@ fn ik_text(tree: &KinematicTree, plan: &kinematics_compiler::ik::IkPlan) -> Stri
             v(&free.point)
         );
     }
-    out += "geometry at q = 0 (base frame): joint, axis h, offset p from the previous point\n";
-    let width = crate::inspect::column_width(plan.joints.iter().map(String::as_str));
-    for (i, joint) in plan.joints.iter().enumerate() {
-        out += &format!(
-            "  {}  h{} = {}  p{}{} = {}\n",
-            crate::inspect::pad(joint, width),
-            i + 1,
-            v(&plan.axes[i]),
-            i,
-            i + 1,
-            v(&plan.offsets[i])
-        );
+    match &plan.geometry {
+        kinematics_compiler::ik::IkGeometry::Six(six) => {
+            out += "geometry at q = 0 (base frame): joint, axis h, offset p from the previous point\n";
+            let width = crate::inspect::column_width(plan.joints.iter().map(String::as_str));
+            for (i, joint) in plan.joints.iter().enumerate() {
+                out += &format!(
+                    "  {}  h{} = {}  p{}{} = {}\n",
+                    crate::inspect::pad(joint, width),
+                    i + 1,
+                    v(&six.axes[i]),
+                    i,
+                    i + 1,
+                    v(&six.offsets[i])
+                );
+            }
+            out += &format!(
+                "  tool: p6T = {}, R6T rows {}\n",
+                v(&six.offsets[6]),
+                six.tool_rotation.iter().map(v).collect::<Vec<_>>().join(" ")
+            );
+        }
+        kinematics_compiler::ik::IkGeometry::Planar(planar) => {
+            out += &format!("geometry at q = 0 (base frame): every axis along {}\n", v(&planar.axis));
+            let width = crate::inspect::column_width(plan.joints.iter().map(String::as_str));
+            for (joint, (sign, point)) in plan.joints.iter().zip(&planar.joints) {
+                let what = match point {
+                    Some(point) => format!("revolute about {} h through {}", short(*sign), v(point)),
+                    None => format!("prismatic along {} h", short(*sign)),
+                };
+                out += &format!("  {}  {what}\n", crate::inspect::pad(joint, width));
+            }
+            out += &format!("  tool: at {}\n", v(&planar.tip_point));
+        }
     }
-    out += &format!(
-        "  tool: p6T = {}, R6T rows {}\n",
-        v(&plan.offsets[6]),
-        plan.tool_rotation.iter().map(v).collect::<Vec<_>>().join(" ")
-    );
     for note in &plan.notes {
         out += &format!("note: {note}\n");
     }

@@ -6,8 +6,8 @@ use std::io::Write;
 
 use kinematics::Pose;
 use kinematics::ReferenceFk;
-use kinematics::ik::{Arm6, IkSolutions};
-use kinematics_compiler::ik::{IkFamily, IkPlan};
+use kinematics::ik::{Arm6, IkSolutions, PlanarArm, PlanarJoint};
+use kinematics_compiler::ik::{IkFamily, IkGeometry, IkPlan};
 
 use crate::error::CliError;
 use crate::inspect::short;
@@ -55,11 +55,11 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
         (None, None) => unreachable!("clap requires --pose or --from-q"),
     };
     kinematics::ik::check_target(&target).map_err(|source| CliError::Ik { file: file.clone(), source })?;
-    let mut solutions = solve(&plan, &target);
     let nan = Pose { rotation: [[f64::NAN; 3]; 3], translation: [f64::NAN; 3] };
-    // Six finite values always pose (the solvers never return NaN); a refusal would show as an
+    // Finite values always pose (the solvers never return NaN); a refusal would show as an
     // infinite error, never as a small one.
-    solutions.measure(&target, |q| fk.relative_pose(q, &base, &tip).map(Pose::from).unwrap_or(nan));
+    let forward = |q: &[f64]| fk.relative_pose(q, &base, &tip).map(Pose::from).unwrap_or(nan);
+    let solutions = solve(&plan, &target, &forward);
     writeln!(out, "robot `{}`: `{tip}` in `{base}`, closed form: {}", fk.tree().name(), plan.family.name())?;
     let [x, y, z] = target.translation.map(short);
     let rows: Vec<String> = target.rotation.iter().map(|r| r.map(short).join(", ")).collect();
@@ -68,7 +68,7 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
         out,
         "{} solutions, {} exact (errors measured by the runtime reference; angles in {}):",
         solutions.len(),
-        solutions.exact().count(),
+        solutions.iter().filter(|s| s.exact).count(),
         if args.degrees { "degrees" } else { "radians" }
     )?;
     writeln!(out, "  #  {:<66}  {:<16}  {:>10}  {:>10}", "q", "flags", "position", "rotation")?;
@@ -90,9 +90,8 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
         )?;
     }
     if let Some(q) = given {
-        let q: [f64; 6] = q.try_into().map_err(|_| CliError::Usage(format!("{file}: --from-q needs six values")))?;
         // Which solution the given configuration is: the nearest modulo 2 pi.
-        let distance = |s: &[f64; 6]| {
+        let distance = |s: &[f64]| {
             s.iter()
                 .zip(&q)
                 .map(|(a, b)| wrap(a - b).abs())
@@ -110,14 +109,79 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
     Ok(())
 }
 
-/// The family's core solver on the plan's geometry.
-pub fn solve(plan: &IkPlan, target: &Pose<f64>) -> IkSolutions<6, 8> {
-    let arm = Arm6 { axes: plan.axes, offsets: plan.offsets, tool_rotation: plan.tool_rotation };
-    match plan.family {
-        IkFamily::SphericalTwoParallel => kinematics::ik::spherical_two_parallel(&arm, target),
-        IkFamily::SphericalFirstTwoIntersecting => kinematics::ik::spherical_first_two_intersecting(&arm, target),
-        IkFamily::SphericalLastTwoIntersecting => kinematics::ik::spherical_last_two_intersecting(&arm, target),
-        IkFamily::ThreeParallelTwoIntersecting => kinematics::ik::three_parallel_two_intersecting(&arm, target),
+/// One solution, whatever the arm's number of joints.
+pub struct Solution {
+    /// Joint values in the order of `q`.
+    pub q: Vec<f64>,
+    /// Every equation solvable.
+    pub exact: bool,
+    /// One of a continuum.
+    pub singular: bool,
+    /// Metres from the target.
+    pub position_error: f64,
+    /// Radians from the target.
+    pub rotation_error: f64,
+}
+
+fn rows<const N: usize, const M: usize>(
+    mut solutions: IkSolutions<N, M>,
+    target: &Pose<f64>,
+    forward: &dyn Fn(&[f64]) -> Pose<f64>,
+) -> Vec<Solution> {
+    solutions.measure(target, |q| forward(q));
+    solutions
+        .iter()
+        .map(|s| Solution {
+            q: s.q.to_vec(),
+            exact: s.exact,
+            singular: s.singular,
+            position_error: s.position_error,
+            rotation_error: s.rotation_error,
+        })
+        .collect()
+}
+
+/// The family's core solver on the plan's geometry, each solution measured by `forward`.
+pub fn solve(plan: &IkPlan, target: &Pose<f64>, forward: &dyn Fn(&[f64]) -> Pose<f64>) -> Vec<Solution> {
+    match &plan.geometry {
+        IkGeometry::Six(six) => {
+            let arm = Arm6 { axes: six.axes, offsets: six.offsets, tool_rotation: six.tool_rotation };
+            let solutions = match plan.family {
+                IkFamily::SphericalTwoParallel => kinematics::ik::spherical_two_parallel(&arm, target),
+                IkFamily::SphericalFirstTwoIntersecting => {
+                    kinematics::ik::spherical_first_two_intersecting(&arm, target)
+                }
+                IkFamily::SphericalLastTwoIntersecting => kinematics::ik::spherical_last_two_intersecting(&arm, target),
+                IkFamily::ThreeParallelTwoIntersecting | IkFamily::Planar => {
+                    kinematics::ik::three_parallel_two_intersecting(&arm, target)
+                }
+            };
+            rows(solutions, target, forward)
+        }
+        IkGeometry::Planar(planar) => {
+            let joint = |(sign, point): &(f64, Option<[f64; 3]>)| match point {
+                Some(point) => PlanarJoint::Revolute { sign: *sign, point: *point },
+                None => PlanarJoint::Prismatic { sign: *sign },
+            };
+            macro_rules! planar {
+                ($n:literal) => {{
+                    let joints: [PlanarJoint; $n] = std::array::from_fn(|i| joint(&planar.joints[i]));
+                    let arm = PlanarArm {
+                        axis: planar.axis,
+                        joints,
+                        tip_point: planar.tip_point,
+                        tool_rotation: planar.tool_rotation,
+                    };
+                    rows(arm.solve(target), target, forward)
+                }};
+            }
+            match planar.joints.len() {
+                2 => planar!(2),
+                3 => planar!(3),
+                4 => planar!(4),
+                other => unreachable!("the planar family takes two to four joints, not {other}"),
+            }
+        }
     }
 }
 

@@ -339,7 +339,12 @@ pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenSt
         };
         if let IkMode::ClosedForm { free } = &spec.ik {
             let plan = crate::ik::classify_with(tree, &base, tip, free.as_deref())?;
-            typed.push(crate::ik::emit::emit_ik(&plan, &p, &quote!(generic_tip_poses)));
+            let revolute: Vec<bool> = tree
+                .dof_joints()
+                .iter()
+                .map(|&j| tree.joint(j).kind != kinematics_model::JointKind::Prismatic)
+                .collect();
+            typed.push(crate::ik::emit::emit_ik(&plan, &p, &quote!(generic_tip_poses), &revolute));
         }
         // The numeric solver steps on the pose and Jacobian together: the velocities' own
         // function when they are emitted, otherwise one for it.

@@ -81,17 +81,20 @@ fn random_arm(rng: &mut Uniform, family: IkFamily) -> String {
             (0.0, 0.0, t[4]),
             (0.0, l[6], "0"),
         ],
+        IkFamily::Planar => panic!("not a six-joint family"),
     };
     table(rng, rows)
 }
 
 fn solve(plan: &IkPlan, target: &Pose<f64>) -> IkSolutions<6, 8> {
-    let arm = Arm6 { axes: plan.axes, offsets: plan.offsets, tool_rotation: plan.tool_rotation };
+    let six = plan.six().expect("a six-joint family");
+    let arm = Arm6 { axes: six.axes, offsets: six.offsets, tool_rotation: six.tool_rotation };
     match plan.family {
         IkFamily::SphericalTwoParallel => kinematics_core::ik::spherical_two_parallel(&arm, target),
         IkFamily::SphericalFirstTwoIntersecting => kinematics_core::ik::spherical_first_two_intersecting(&arm, target),
         IkFamily::SphericalLastTwoIntersecting => kinematics_core::ik::spherical_last_two_intersecting(&arm, target),
         IkFamily::ThreeParallelTwoIntersecting => kinematics_core::ik::three_parallel_two_intersecting(&arm, target),
+        IkFamily::Planar => panic!("not a six-joint family"),
     }
 }
 

@@ -133,12 +133,12 @@ struct Row {
     worst_original: f64,
 }
 
-/// The nearest of `ours` (exact ones only if `exact_only`) to `q`, and its distance.
+/// The distance from `q` to the nearest of `ours` (of the exact ones only if `exact_only`).
 fn nearest(ours: &IkSolutions<6, 8>, q: &[f64; 6], exact_only: bool) -> f64 {
     ours.iter().filter(|s| s.exact || !exact_only).map(|s| distance(&s.q, q)).fold(f64::INFINITY, f64::min)
 }
 
-/// Times `calls` calls of `f` (given the call's index).
+/// Times `CALLS` calls of `f` (given the call's index).
 fn time(f: &mut impl FnMut(usize)) -> Duration {
     let start = Instant::now();
     for i in 0..CALLS {
@@ -178,7 +178,6 @@ where
 {
     let name = case.name;
     let robot = ik_geo_robot(&case.arm, case.family);
-    // benches/ik.rs's seed: the same configurations as the criterion benchmark of our side.
     let mut rng = Uniform(11);
     let qs: Vec<[f64; 6]> = (0..POSES).map(|_| rng.within(&case.limits)).collect();
     let targets: Vec<Pose<f64>> = qs.iter().map(|q| (case.pose)(q)).collect();
@@ -193,8 +192,7 @@ where
         let ours_exact = ours.exact().count();
         let theirs_exact = answers.iter().filter(|(_, ls)| !ls).count();
         assert_eq!(
-            theirs_exact,
-            ours_exact,
+            theirs_exact, ours_exact,
             "{name}, pose {k} (q = {q:?}): ik-geo finds {theirs_exact} exact solutions, we find {ours_exact}\n\
              ik-geo: {answers:?}\nours: {ours:#?}"
         );
@@ -212,7 +210,10 @@ where
             worst_ik_geo = worst_ik_geo.max(d);
         }
         let d = nearest(&ours, q, true);
-        assert!(d <= SAME, "{name}, pose {k}: the configuration {q:?} is {d:e} rad from the nearest of ours: {ours:#?}");
+        assert!(
+            d <= SAME,
+            "{name}, pose {k}: the configuration {q:?} is {d:e} rad from the nearest of ours: {ours:#?}"
+        );
         worst_original = worst_original.max(d);
     }
 

@@ -21,7 +21,7 @@ pub const PARALLEL_TOLERANCE: f64 = 1e-12;
 /// Axes that pass closer than this times the chain's reach meet.
 pub const MEET_TOLERANCE: f64 = 1e-12;
 
-/// A closed-form family of six-joint revolute arms (IK-Geo's decompositions).
+/// A closed-form family: of six-joint revolute arms (IK-Geo's decompositions), or of planar arms.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum IkFamily {
     /// Axes 4, 5, 6 meet (a spherical wrist) and axes 2, 3 are parallel: PUMA 560, IRB 120.
@@ -32,10 +32,13 @@ pub enum IkFamily {
     SphericalLastTwoIntersecting,
     /// Axes 2, 3, 4 parallel and axes 5, 6 meet: the UR family.
     ThreeParallelTwoIntersecting,
+    /// Two or three revolute joints about parallel axes, at most one prismatic joint along them:
+    /// planar 2R and 3R arms, the SCARA.
+    Planar,
 }
 
 impl IkFamily {
-    /// Every family, in the order they are tried.
+    /// Every six-joint family, in the order they are tried.
     pub const ALL: [IkFamily; 4] = [
         IkFamily::ThreeParallelTwoIntersecting,
         IkFamily::SphericalTwoParallel,
@@ -50,16 +53,19 @@ impl IkFamily {
             IkFamily::SphericalFirstTwoIntersecting => "spherical wrist, axes 1 and 2 meet",
             IkFamily::SphericalLastTwoIntersecting => "spherical wrist, axes 2 and 3 meet",
             IkFamily::ThreeParallelTwoIntersecting => "axes 2, 3, 4 parallel, axes 5 and 6 meet",
+            IkFamily::Planar => "planar: revolute axes parallel, a prismatic joint along them at most",
         }
     }
 
-    /// The core function that solves it (under `kinematics::__private::ik`).
+    /// The core function that solves it (under `kinematics::__private::ik`; the planar family's
+    /// is the method `PlanarArm::solve`).
     pub fn solver(self) -> &'static str {
         match self {
             IkFamily::SphericalTwoParallel => "spherical_two_parallel",
             IkFamily::SphericalFirstTwoIntersecting => "spherical_first_two_intersecting",
             IkFamily::SphericalLastTwoIntersecting => "spherical_last_two_intersecting",
             IkFamily::ThreeParallelTwoIntersecting => "three_parallel_two_intersecting",
+            IkFamily::Planar => "PlanarArm::solve",
         }
     }
 
@@ -73,6 +79,10 @@ impl IkFamily {
             IkFamily::ThreeParallelTwoIntersecting => {
                 "q1 by SP4, q5 by SP4, q6 by SP1, q2+q3+q4 by SP1, q3 by SP3, q2 by SP1, q4 by difference"
             }
+            IkFamily::Planar => {
+                "the slide from the height; the turn about the axis by SP1 (three revolute joints); the elbow by SP3, \
+                 the shoulder by SP1, the third by difference"
+            }
         }
     }
 
@@ -84,12 +94,16 @@ impl IkFamily {
             IkFamily::SphericalTwoParallel => &[WRIST[0], WRIST[1], WRIST[2], (1, 2), (0, 1)],
             IkFamily::SphericalFirstTwoIntersecting => &[WRIST[0], WRIST[1], WRIST[2], (0, 1)],
             IkFamily::SphericalLastTwoIntersecting => &[WRIST[0], WRIST[1], WRIST[2], (1, 2)],
+            IkFamily::Planar => &[],
         }
     }
 
     /// The most solutions a target can have: the capacity of the returned list.
     pub fn max_solutions(self) -> usize {
-        8
+        match self {
+            IkFamily::Planar => 2,
+            _ => 8,
+        }
     }
 }
 
@@ -107,8 +121,7 @@ pub struct FreeJoint {
     pub point: V3,
 }
 
-/// How to solve a chain in closed form: the family and the geometry its solver takes
-/// (`kinematics_core::ik::Arm6`'s fields).
+/// How to solve a chain in closed form: the family and the geometry its solver takes.
 #[derive(Debug, Clone, PartialEq)]
 pub struct IkPlan {
     /// The family.
@@ -117,9 +130,32 @@ pub struct IkPlan {
     pub base: String,
     /// The tip link.
     pub tip: String,
-    /// The six joints solved, base first (their entries of `q` are `0..6`, or `0..7` less the
-    /// free joint's).
+    /// The joints solved, base first (for a six-joint family their entries of `q` are `0..6`, or
+    /// `0..7` less the free joint's; for a planar arm, `q` itself).
     pub joints: Vec<String>,
+    /// The geometry the family's solver takes.
+    pub geometry: IkGeometry,
+    /// The chain's reach (the scale of its distances).
+    pub reach: f64,
+    /// The seventh joint whose value is an input, for a seven-joint arm.
+    pub free: Option<FreeJoint>,
+    /// What the plan changed of the description's geometry (points moved along their axes,
+    /// axes within tolerance made parallel), for `kinematics inspect` and `expr --ik`.
+    pub notes: Vec<String>,
+}
+
+/// The geometry a family's solver takes.
+#[derive(Debug, Clone, PartialEq)]
+pub enum IkGeometry {
+    /// A six-joint revolute arm (`kinematics_core::ik::Arm6`, or `FreeArm6` with a free joint).
+    Six(Box<SixGeometry>),
+    /// A planar arm (`kinematics_core::ik::PlanarArm`).
+    Planar(PlanarGeometry),
+}
+
+/// A six-joint arm at `q = 0` in IK-Geo's form.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SixGeometry {
     /// Unit axes `h1..h6` in the base frame.
     pub axes: [V3; 6],
     /// `p01, p12, ..., p56, p6T` between the chosen points on the axes.
@@ -130,13 +166,30 @@ pub struct IkPlan {
     pub points: [V3; 6],
     /// The tip's origin at `q = 0`.
     pub tip_point: V3,
-    /// The chain's reach (the scale of its distances).
-    pub reach: f64,
-    /// The seventh joint whose value is an input, for a seven-joint arm.
-    pub free: Option<FreeJoint>,
-    /// What the plan changed of the description's geometry (points moved along their axes,
-    /// axes within tolerance made parallel), for `kinematics inspect` and `expr --ik`.
-    pub notes: Vec<String>,
+}
+
+/// A planar arm at `q = 0`: the common axis direction and, per joint of `q`, how it moves.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PlanarGeometry {
+    /// The unit direction every axis is parallel to.
+    pub axis: V3,
+    /// Per entry of `q`: `Some(point)` for a revolute joint (a point on its axis) or `None` for
+    /// the prismatic one, with the sign of its axis against `axis`.
+    pub joints: Vec<(f64, Option<V3>)>,
+    /// The tip's origin at `q = 0`.
+    pub tip_point: V3,
+    /// The tip's rotation at `q = 0`.
+    pub tool_rotation: M3,
+}
+
+impl IkPlan {
+    /// The six-joint geometry, if the family is a six-joint one.
+    pub fn six(&self) -> Option<&SixGeometry> {
+        match &self.geometry {
+            IkGeometry::Six(six) => Some(six),
+            IkGeometry::Planar(_) => None,
+        }
+    }
 }
 
 fn sub(a: V3, b: V3) -> V3 {
@@ -246,6 +299,27 @@ pub fn classify_with(tree: &KinematicTree, base: &str, tip: &str, free: Option<&
         none(format!("{}; the closed forms take independent revolute joints only", what.join(", ")))
     })?;
     let moving = zero.joints.len();
+    if free.is_none() && (2..=4).contains(&moving) {
+        if tree.dof() != moving {
+            return Err(none(format!(
+                "the robot has {} degrees of freedom and the chain moves {moving} of them; the closed forms solve a \
+                 robot's whole q",
+                tree.dof()
+            )));
+        }
+        return planar(&zero)
+            .map(|(geometry, notes)| IkPlan {
+                family: IkFamily::Planar,
+                base: base.to_owned(),
+                tip: tip.to_owned(),
+                joints: zero.joints.iter().map(|j| j.name.clone()).collect(),
+                geometry: IkGeometry::Planar(geometry),
+                reach: zero.reach,
+                free: None,
+                notes,
+            })
+            .map_err(|reason| none(format!("{}: {reason}", IkFamily::Planar.name())));
+    }
     if let Some(j) = zero.joints.iter().find(|j| j.kind == JointKind::Prismatic) {
         return Err(none(format!("joint `{}` is prismatic; the closed forms take six revolute joints", j.name)));
     }
@@ -306,6 +380,44 @@ pub fn classify_with(tree: &KinematicTree, base: &str, tip: &str, free: Option<&
         return Ok(finish(base, tip, &samples[0], family, points, parallel_to, Some(free)));
     }
     Err(none(reasons.join("; ")))
+}
+
+/// The planar family's geometry: two or three revolute joints whose axes are parallel to the
+/// first's, at most one prismatic joint along them, and arms that are not degenerate (each link
+/// of the two-link problem has a length across the axis); or why not.
+fn planar(zero: &ZeroConfiguration) -> Result<(PlanarGeometry, Vec<String>), String> {
+    let revolute: Vec<usize> =
+        (0..zero.joints.len()).filter(|&i| zero.joints[i].kind != JointKind::Prismatic).collect();
+    let prismatic = zero.joints.len() - revolute.len();
+    if !(2..=3).contains(&revolute.len()) || prismatic > 1 {
+        return Err(format!(
+            "it takes two or three revolute joints and at most one prismatic joint; the chain has {} and {prismatic}",
+            revolute.len()
+        ));
+    }
+    let h = zero.joints[revolute[0]].axis;
+    let mut notes = Vec::new();
+    let mut joints = Vec::new();
+    for (i, joint) in zero.joints.iter().enumerate() {
+        let sine = norm(cross(h, joint.axis));
+        if sine > PARALLEL_TOLERANCE {
+            return Err(format!("axes 1 and {} are not parallel: {:.4} rad apart", i + 1, sine.min(1.0).asin()));
+        }
+        if sine != 0.0 {
+            notes.push(format!("axis {} taken as parallel to axis 1 ({sine:.1e} rad apart)", i + 1));
+        }
+        let sign = if dot(h, joint.axis) < 0.0 { -1.0 } else { 1.0 };
+        joints.push((sign, (joint.kind != JointKind::Prismatic).then_some(joint.point)));
+    }
+    // The two-link problem: the point the first two joints place (the third's axis, or the tip)
+    // must be off the second axis, and the second axis off the first.
+    let carried = if revolute.len() == 3 { zero.joints[revolute[2]].point } else { zero.tip_point };
+    let (o1, o2) = (zero.joints[revolute[0]].point, zero.joints[revolute[1]].point);
+    let tolerance = MEET_TOLERANCE * zero.reach;
+    if norm(cross(h, sub(o2, o1))) <= tolerance || norm(cross(h, sub(carried, o2))) <= tolerance {
+        return Err("a link of the two-link problem has no length across the axes (a degenerate arm)".to_owned());
+    }
+    Ok((PlanarGeometry { axis: h, joints, tip_point: zero.tip_point, tool_rotation: zero.tip_rotation }, notes))
 }
 
 /// A family's fault among the reasons, the wrist's once.
@@ -397,6 +509,7 @@ fn plan(lines: &Lines<'_>, family: IkFamily) -> Result<Placement, Fault> {
             parallel_to[2] = Some(1);
             parallel_to[3] = Some(1);
         }
+        IkFamily::Planar => return Err(Fault::Arm("not a six-joint family".to_owned())),
         IkFamily::SphericalTwoParallel
         | IkFamily::SphericalFirstTwoIntersecting
         | IkFamily::SphericalLastTwoIntersecting => {
@@ -444,6 +557,7 @@ fn distance_depends_on_its_joint(lines: &Lines<'_>, family: IkFamily, points: &[
         | IkFamily::SphericalFirstTwoIntersecting => (2, [across(2, 1, 2), across(2, 2, 3)]),
         // |rot(h1, -q1) v - p12| is the distance: only p12 is the robot's.
         IkFamily::SphericalLastTwoIntersecting => (0, [across(0, 0, 1), f64::INFINITY]),
+        IkFamily::Planar => return Ok(()),
     };
     if sides.iter().any(|&d| d <= tolerance) {
         return Err(Fault::Arm(format!(
@@ -505,11 +619,13 @@ fn finish(
         base: base.to_owned(),
         tip: tip.to_owned(),
         joints: zero.joints.iter().map(|j| j.name.clone()).collect(),
-        axes,
-        offsets,
-        tool_rotation: zero.tip_rotation,
-        points: [0, 1, 2, 3, 4, 5].map(|i| chosen[i]),
-        tip_point: zero.tip_point,
+        geometry: IkGeometry::Six(Box::new(SixGeometry {
+            axes,
+            offsets,
+            tool_rotation: zero.tip_rotation,
+            points: [0, 1, 2, 3, 4, 5].map(|i| chosen[i]),
+            tip_point: zero.tip_point,
+        })),
         reach: zero.reach,
         free,
         notes,

@@ -6,7 +6,7 @@
 use proc_macro2::{Literal, TokenStream};
 use quote::{format_ident, quote};
 
-use super::classify::{FreeJoint, IkPlan};
+use super::classify::{IkGeometry, IkPlan};
 use crate::robot::number;
 
 fn vector(v: &[f64; 3]) -> TokenStream {
@@ -14,52 +14,136 @@ fn vector(v: &[f64; 3]) -> TokenStream {
     quote!([#x, #y, #z])
 }
 
-/// The associated constant and functions (inside the robot's `impl`) for `plan`. `forward` names
-/// the generic function computing the tip's pose.
-pub fn emit_ik(plan: &IkPlan, private: &TokenStream, forward: &TokenStream) -> TokenStream {
-    match &plan.free {
-        None => emit_six(plan, private, forward),
-        Some(free) => emit_free(plan, free, private, forward),
-    }
-}
-
-fn emit_six(plan: &IkPlan, private: &TokenStream, forward: &TokenStream) -> TokenStream {
+/// The associated constants and functions (inside the robot's `impl`) for `plan`. `forward`
+/// names the generic function computing the tip's pose, `dof` is the length of `q` and
+/// `revolute` says which of its entries are angles (moved by whole turns into limits or toward a
+/// seed).
+pub fn emit_ik(plan: &IkPlan, private: &TokenStream, forward: &TokenStream, revolute: &[bool]) -> TokenStream {
     let p = private;
     let family = plan.family.name();
-    let solver = format_ident!("{}", plan.family.solver());
     let capacity = Literal::usize_unsuffixed(plan.family.max_solutions());
-    let axes = plan.axes.iter().map(vector);
-    let offsets = plan.offsets.iter().map(vector);
-    let rows = plan.tool_rotation.iter().map(vector);
     let (base, tip) = (&plan.base, &plan.tip);
-    let solutions = quote!(#p::ik::IkSolutions<6, #capacity>);
+    let n = Literal::usize_unsuffixed(revolute.len());
+    // The six-joint families' core functions (a planar arm solves by its method).
+    let solver = || format_ident!("{}", plan.family.solver());
+    let mask = quote!([#(#revolute),*]);
+    let (arm_ty, arm, solve, free_param, free_doc, free_value) = match (&plan.geometry, &plan.free) {
+        (IkGeometry::Six(six), None) => {
+            let (axes, offsets, rows) =
+                (six.axes.iter().map(vector), six.offsets.iter().map(vector), six.tool_rotation.iter().map(vector));
+            (
+                quote!(#p::ik::Arm6),
+                quote!(#p::ik::Arm6 { axes: [#(#axes),*], offsets: [#(#offsets),*], tool_rotation: [#(#rows),*] }),
+                {
+                    let solver = solver();
+                    quote!(#p::ik::#solver(&Self::IK_ARM, target))
+                },
+                quote!(),
+                String::new(),
+                None,
+            )
+        }
+        (IkGeometry::Six(six), Some(free)) => {
+            let (axes, points, rows) =
+                (six.axes.iter().map(vector), six.points.iter().map(vector), six.tool_rotation.iter().map(vector));
+            let (tip_point, free_axis, free_point) = (vector(&six.tip_point), vector(&free.axis), vector(&free.point));
+            let index = Literal::usize_unsuffixed(free.index);
+            (
+                quote!(#p::ik::FreeArm6),
+                quote!(#p::ik::FreeArm6 {
+                    axes: [#(#axes),*],
+                    points: [#(#points),*],
+                    tip_point: #tip_point,
+                    tool_rotation: [#(#rows),*],
+                    free_axis: #free_axis,
+                    free_point: #free_point,
+                    free_index: #index,
+                }),
+                {
+                    let solver = solver();
+                    quote!(#p::ik::insert_free(&#p::ik::#solver(&Self::IK_ARM.at(free), target), #index, free))
+                },
+                quote!(, free: f64),
+                format!(" with joint `{}` at `free` (`q` holds `free` as given)", free.name),
+                Some(index),
+            )
+        }
+        (IkGeometry::Planar(planar), _) => {
+            let joints = planar.joints.iter().map(|(sign, point)| {
+                let sign = number(*sign);
+                match point {
+                    Some(point) => {
+                        let point = vector(point);
+                        quote!(#p::ik::PlanarJoint::Revolute { sign: #sign, point: #point })
+                    }
+                    None => quote!(#p::ik::PlanarJoint::Prismatic { sign: #sign }),
+                }
+            });
+            let (axis, tip_point) = (vector(&planar.axis), vector(&planar.tip_point));
+            let rows = planar.tool_rotation.iter().map(vector);
+            (
+                quote!(#p::ik::PlanarArm<#n>),
+                quote!(#p::ik::PlanarArm { axis: #axis, joints: [#(#joints),*], tip_point: #tip_point, tool_rotation: [#(#rows),*] }),
+                quote!(Self::IK_ARM.solve(target)),
+                quote!(),
+                String::from(
+                    ", reaching what the arm can: the position (two revolute joints), the rotation about the axes \
+                     (three), the height (a prismatic joint)",
+                ),
+                None,
+            )
+        }
+    };
     let result = |t: TokenStream| quote!(::core::result::Result<#t, #p::ik::IkError>);
-    let all = result(solutions.clone());
-    let one = result(quote!(::core::option::Option<#p::ik::IkSolution<6>>));
+    let all = result(quote!(#p::ik::IkSolutions<#n, #capacity>));
+    let one = result(quote!(::core::option::Option<#p::ik::IkSolution<#n>>));
     let doc_family = format!("The closed-form inverse kinematics family of `{tip}` in `{base}`: {family}.");
     let doc_all = format!(
-        "Every closed-form inverse kinematics solution for a pose of `{tip}` in `{base}` ({family}): all \
+        "Every closed-form inverse kinematics solution for a pose of `{tip}` in `{base}` ({family}){free_doc}: all \
          {capacity} branches, each exact or the least-squares best where the target is out of its reach, flagged \
          when singular, with its pose errors measured by this robot's forward kinematics. Angles are in \
          `(-pi, pi]`. A target with a non-finite entry or a rotation that is not orthonormal is an error."
     );
+    let (free_arg, free_check, nearest_free) = match &free_value {
+        Some(index) => (
+            quote!(, free),
+            quote! {
+                if !free.is_finite() {
+                    return ::core::result::Result::Err(#p::ik::IkError::NonFiniteFree);
+                }
+            },
+            quote!(, seed[#index]),
+        ),
+        None => (quote!(), quote!(), quote!()),
+    };
+    let doc_nearest = match &plan.free {
+        Some(free) => format!(
+            "The solution of [`Self::tip_ik`] with joint `{}` at the seed's value nearest `seed` (each angle moved by \
+             whole turns to the seed's side), exact ones preferred to least-squares ones. A seed with a non-finite \
+             entry is an error.",
+            free.name
+        ),
+        None => {
+            "The solution of [`Self::tip_ik`] nearest `seed` (each angle moved by whole turns to the seed's side), \
+                 exact ones preferred to least-squares ones. A seed with a non-finite entry is an error."
+                .to_owned()
+        }
+    };
     quote! {
         #[doc = #doc_family]
         pub const IK_FAMILY: &'static str = #family;
 
-        /// The geometry the closed form solves: the chain at `q = 0` as a product of exponentials,
-        /// points on meeting axes placed where they meet.
-        pub const IK_ARM: #p::ik::Arm6 = #p::ik::Arm6 {
-            axes: [#(#axes),*],
-            offsets: [#(#offsets),*],
-            tool_rotation: [#(#rows),*],
-        };
+        /// The geometry the closed form solves (at the free joint's zero, for a seven-joint arm,
+        /// turned to its value at run time): the chain at `q = 0`, points on meeting axes placed
+        /// where they meet.
+        pub const IK_ARM: #arm_ty = #arm;
 
         #[doc = #doc_all]
         #[inline]
-        pub fn tip_ik(target: &#p::Pose<f64>) -> #all {
+        pub fn tip_ik(target: &#p::Pose<f64> #free_param) -> #all {
             #p::ik::check_target(target)?;
-            let mut solutions = #p::ik::#solver(&Self::IK_ARM, target);
+            #free_check
+            let mut solutions = #solve;
             solutions.measure(target, #[inline(always)] |q| #forward(q));
             ::core::result::Result::Ok(solutions)
         }
@@ -67,92 +151,15 @@ fn emit_six(plan: &IkPlan, private: &TokenStream, forward: &TokenStream) -> Toke
         /// The solutions of [`Self::tip_ik`] inside `JOINT_LIMITS`, each angle moved by a whole
         /// turn into its limits where that fits.
         #[inline]
-        pub fn tip_ik_within_limits(target: &#p::Pose<f64>) -> #all {
-            ::core::result::Result::Ok(Self::tip_ik(target)?.within_limits(&Self::JOINT_LIMITS, &[true; 6]))
-        }
-
-        /// The solution of [`Self::tip_ik`] nearest `seed` (each angle moved by whole turns to the
-        /// seed's side), exact ones preferred to least-squares ones. A seed with a non-finite entry is
-        /// an error.
-        #[inline]
-        pub fn tip_ik_nearest(target: &#p::Pose<f64>, seed: &[f64; 6]) -> #one {
-            #p::ik::check_seed(seed)?;
-            ::core::result::Result::Ok(Self::tip_ik(target)?.nearest(seed, &[true; 6]))
-        }
-    }
-}
-
-/// A seven-joint arm's functions: the free joint's value an input (`tip_ik`,
-/// `tip_ik_within_limits`) or taken from the seed (`tip_ik_nearest`).
-fn emit_free(plan: &IkPlan, free: &FreeJoint, private: &TokenStream, forward: &TokenStream) -> TokenStream {
-    let p = private;
-    let family = plan.family.name();
-    let solver = format_ident!("{}", plan.family.solver());
-    let capacity = Literal::usize_unsuffixed(plan.family.max_solutions());
-    let axes = plan.axes.iter().map(vector);
-    let points = plan.points.iter().map(vector);
-    let rows = plan.tool_rotation.iter().map(vector);
-    let (tip_point, free_axis, free_point) = (vector(&plan.tip_point), vector(&free.axis), vector(&free.point));
-    let index = Literal::usize_unsuffixed(free.index);
-    let (base, tip, name) = (&plan.base, &plan.tip, &free.name);
-    let result = |t: TokenStream| quote!(::core::result::Result<#t, #p::ik::IkError>);
-    let all = result(quote!(#p::ik::IkSolutions<7, #capacity>));
-    let one = result(quote!(::core::option::Option<#p::ik::IkSolution<7>>));
-    let doc_family = format!(
-        "The closed-form inverse kinematics family of `{tip}` in `{base}` with joint `{name}` given: {family}."
-    );
-    let doc_all = format!(
-        "Every closed-form inverse kinematics solution for a pose of `{tip}` in `{base}` with joint `{name}` at \
-         `free` ({family} for the other six): all {capacity} branches, each exact or the least-squares best \
-         where the target is out of its reach, flagged when singular, with its pose errors measured by this \
-         robot's forward kinematics. `q` holds `free` as given and the other angles in `(-pi, pi]`. A target \
-         that is no pose, or a `free` that is not a finite number, is an error."
-    );
-    let doc_nearest = format!(
-        "The solution of [`Self::tip_ik`] with joint `{name}` at the seed's value nearest `seed` (each angle \
-         moved by whole turns to the seed's side), exact ones preferred to least-squares ones."
-    );
-    quote! {
-        #[doc = #doc_family]
-        pub const IK_FAMILY: &'static str = #family;
-
-        /// The geometry the closed form solves, at the free joint's zero (turned to its value at
-        /// run time).
-        pub const IK_ARM: #p::ik::FreeArm6 = #p::ik::FreeArm6 {
-                axes: [#(#axes),*],
-                points: [#(#points),*],
-                tip_point: #tip_point,
-                tool_rotation: [#(#rows),*],
-                free_axis: #free_axis,
-                free_point: #free_point,
-                free_index: #index,
-        };
-
-        #[doc = #doc_all]
-        #[inline]
-        pub fn tip_ik(target: &#p::Pose<f64>, free: f64) -> #all {
-            #p::ik::check_target(target)?;
-            if !free.is_finite() {
-                return ::core::result::Result::Err(#p::ik::IkError::NonFiniteFree);
-            }
-            let six = #p::ik::#solver(&Self::IK_ARM.at(free), target);
-            let mut solutions = #p::ik::insert_free(&six, #index, free);
-            solutions.measure(target, #[inline(always)] |q| #forward(q));
-            ::core::result::Result::Ok(solutions)
-        }
-
-        /// The solutions of [`Self::tip_ik`] inside `JOINT_LIMITS`, each angle moved by a whole
-        /// turn into its limits where that fits.
-        #[inline]
-        pub fn tip_ik_within_limits(target: &#p::Pose<f64>, free: f64) -> #all {
-            ::core::result::Result::Ok(Self::tip_ik(target, free)?.within_limits(&Self::JOINT_LIMITS, &[true; 7]))
+        pub fn tip_ik_within_limits(target: &#p::Pose<f64> #free_param) -> #all {
+            ::core::result::Result::Ok(Self::tip_ik(target #free_arg)?.within_limits(&Self::JOINT_LIMITS, &#mask))
         }
 
         #[doc = #doc_nearest]
         #[inline]
-        pub fn tip_ik_nearest(target: &#p::Pose<f64>, seed: &[f64; 7]) -> #one {
+        pub fn tip_ik_nearest(target: &#p::Pose<f64>, seed: &[f64; #n]) -> #one {
             #p::ik::check_seed(seed)?;
-            ::core::result::Result::Ok(Self::tip_ik(target, seed[#index])?.nearest(seed, &[true; 7]))
+            ::core::result::Result::Ok(Self::tip_ik(target #nearest_free)?.nearest(seed, &#mask))
         }
     }
 }

@@ -8,4 +8,7 @@ pub mod classify;
 pub mod emit;
 pub mod geometry;
 
-pub use classify::{FreeJoint, IkFamily, IkPlan, MEET_TOLERANCE, PARALLEL_TOLERANCE, classify, classify_with};
+pub use classify::{
+    FreeJoint, IkFamily, IkGeometry, IkPlan, MEET_TOLERANCE, PARALLEL_TOLERANCE, PlanarGeometry, SixGeometry, classify,
+    classify_with,
+};

@@ -229,3 +229,150 @@ pub fn insert_free<const M: usize>(six: &IkSolutions<6, M>, index: usize, value:
     }
     out
 }
+
+/// One joint of a [`PlanarArm`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum PlanarJoint {
+    /// A revolute joint about `sign * h` through `point`.
+    Revolute {
+        /// `+1` or `-1`: its axis is `sign * h`.
+        sign: f64,
+        /// A point on its axis at `q = 0`.
+        point: V3,
+    },
+    /// A prismatic joint sliding along `sign * h`.
+    Prismatic {
+        /// `+1` or `-1`.
+        sign: f64,
+    },
+}
+
+/// An arm whose revolute joints (two or three) all turn about axes parallel to `h`, with at most
+/// one prismatic joint sliding along `h`: planar 2R and 3R arms, the SCARA. It reaches what it
+/// can of a pose: the position (2R), the position and the rotation about `h` (3R), and with the
+/// prismatic joint the height along `h` too (SCARA); an arm without one keeps its height.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PlanarArm<const N: usize> {
+    /// The common direction of the axes (unit).
+    pub axis: V3,
+    /// The joints, in the order of `q`.
+    pub joints: [PlanarJoint; N],
+    /// The tip's origin at `q = 0`.
+    pub tip_point: V3,
+    /// The tip's rotation at `q = 0`.
+    pub tool_rotation: M3,
+}
+
+/// Below this (relative to the lengths involved) a height counts as reached.
+const PLANAR_SLACK: f64 = 1e-12;
+
+/// Below this a target's rotation counts as a turn about the arm's axis (the distance by which it
+/// moves the axis's image, in radians).
+const TILT_SLACK: f64 = 1e-9;
+
+impl<const N: usize> PlanarArm<N> {
+    /// The pose the arm reaches at `q` (a product of exponentials; for tests and tools).
+    pub fn pose(&self, q: &[f64; N]) -> Pose<f64> {
+        let mut rotation = self.tool_rotation;
+        let mut point = self.tip_point;
+        for i in (0..N).rev() {
+            match self.joints[i] {
+                PlanarJoint::Revolute { sign, point: o } => {
+                    let k = scale(self.axis, sign);
+                    let columns = [0, 1, 2]
+                        .map(|j| super::vector::rotate(k, q[i], [rotation[0][j], rotation[1][j], rotation[2][j]]));
+                    rotation = [0, 1, 2].map(|r| [columns[0][r], columns[1][r], columns[2][r]]);
+                    point = add(o, super::vector::rotate(k, q[i], sub(point, o)));
+                }
+                PlanarJoint::Prismatic { sign } => point = add(point, scale(self.axis, sign * q[i])),
+            }
+        }
+        Pose { rotation, translation: point }
+    }
+
+    /// Both solutions (elbow one way and the other) for `target`.
+    #[inline(always)]
+    pub fn solve(&self, target: &Pose<f64>) -> IkSolutions<N, 2> {
+        let h = self.axis;
+        let mut revolute = [0usize; 3];
+        let mut count = 0;
+        let mut prismatic = None;
+        for (i, joint) in self.joints.iter().enumerate() {
+            match joint {
+                PlanarJoint::Revolute { .. } if count < 3 => {
+                    revolute[count] = i;
+                    count += 1;
+                }
+                PlanarJoint::Prismatic { sign } => prismatic = Some((i, *sign)),
+                PlanarJoint::Revolute { .. } => {}
+            }
+        }
+        let point = |i: usize| match self.joints[i] {
+            PlanarJoint::Revolute { point, .. } => point,
+            PlanarJoint::Prismatic { .. } => [0.0; 3],
+        };
+        let sign = |i: usize| match self.joints[i] {
+            PlanarJoint::Revolute { sign, .. } | PlanarJoint::Prismatic { sign } => sign,
+        };
+        // A slide along h commutes with every turn about an axis parallel to it: take it out
+        // first. Without one, the target's height must be the arm's.
+        let rise = dot(h, sub(target.translation, self.tip_point));
+        let mut exact = true;
+        let mut slide = 0.0;
+        match prismatic {
+            Some((_, s)) => slide = s * rise,
+            None => exact &= rise.abs() <= PLANAR_SLACK * (1.0 + libm::sqrt(norm_squared(target.translation))),
+        }
+        let p_target = sub(target.translation, scale(h, rise * f64::from(u8::from(prismatic.is_some()))));
+        let (o1, o2) = (point(revolute[0]), point(revolute[1]));
+        // With a third revolute joint, the turn about h is fixed by the rotation, and the point
+        // on its axis is what the first two place.
+        let (carried, goal, total) = if count == 3 {
+            let r0 = &self.tool_rotation;
+            // The column of R0 farthest from h turns by the total angle about h.
+            let columns = [0, 1, 2].map(|j| [r0[0][j], r0[1][j], r0[2][j]]);
+            let mut best = 0;
+            for j in 1..3 {
+                if norm_squared(cross(h, columns[j])) > norm_squared(cross(h, columns[best])) {
+                    best = j;
+                }
+            }
+            let reached = [0, 1, 2].map(|r| target.rotation[r][best]);
+            let (total, _) = rotation_onto(h, columns[best], reached);
+            // The target's rotation must be a turn about h of R0: it keeps R0^T h on h.
+            let r0h = super::vector::mul_transposed(r0, h);
+            let tilt = norm_squared(sub(mul(&target.rotation, r0h), h));
+            exact &= tilt <= TILT_SLACK * TILT_SLACK;
+            let o3 = point(revolute[2]);
+            let goal = sub(p_target, total.rotate(h, sub(self.tip_point, o3)));
+            (o3, goal, Some(total))
+        } else {
+            (self.tip_point, p_target, None)
+        };
+        // The two-link problem: rot(h1, q1) (o2 - o1 + rot(h2, q2) (c - o2)) = goal - o1.
+        let (h1, h2) = (scale(h, sign(revolute[0])), scale(h, sign(revolute[1])));
+        let arm = sub(o2, o1);
+        let forearm = sub(carried, o2);
+        let reach = sub(goal, o1);
+        let (elbows, elbow) = rotation_to_distance(h2, forearm, scale(arm, -1.0), norm_squared(reach));
+        let mut out = IkSolutions::new();
+        for q2 in elbows {
+            let (q1, shoulder) = rotation_onto(h1, add(arm, q2.rotate(h2, forearm)), reach);
+            let quality = elbow.and(shoulder);
+            let mut q = [0.0; N];
+            q[revolute[0]] = q1.angle;
+            q[revolute[1]] = q2.angle;
+            if let Some(total) = total {
+                // sign1 q1 + sign2 q2 + sign3 q3 = total.
+                let third = revolute[2];
+                q[third] =
+                    wrap(sign(third) * (total.angle - sign(revolute[0]) * q1.angle - sign(revolute[1]) * q2.angle));
+            }
+            if let Some((i, _)) = prismatic {
+                q[i] = slide;
+            }
+            out.push(IkSolution::unmeasured(q, quality.exact && exact, quality.singular));
+        }
+        out
+    }
+}

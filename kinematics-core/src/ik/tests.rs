@@ -1,7 +1,7 @@
 //! Round trips of every family on random arms built to it: random axes (with the family's
 //! parallel and intersecting pairs), random offsets and tool rotations, random configurations.
 
-use super::vector::{V3, cross, norm_squared, scale, wrap};
+use super::vector::{V3, add, cross, norm_squared, scale, wrap};
 use super::*;
 
 /// A small deterministic generator (xorshift64*), so the core needs no dev-dependency for this.
@@ -164,4 +164,69 @@ fn a_wrist_singularity_gives_a_representative_flagged_singular() {
     for s in solutions.iter().filter(|s| s.exact) {
         assert!(s.position_error < 1e-9 && s.rotation_error < 1e-9, "{s:?}");
     }
+}
+
+/// A random planar arm: revolute joints about +-h through random points, a prismatic joint along
+/// h where `slide` says.
+fn random_planar<const N: usize>(rng: &mut Rng, slide: Option<usize>) -> PlanarArm<N> {
+    let h = rng.unit();
+    let joints = core::array::from_fn(|i| {
+        if Some(i) == slide {
+            PlanarJoint::Prismatic { sign: rng.sign() }
+        } else {
+            PlanarJoint::Revolute { sign: rng.sign(), point: rng.vector(0.6) }
+        }
+    });
+    PlanarArm { axis: h, joints, tip_point: rng.vector(0.6), tool_rotation: rng.rotation() }
+}
+
+fn planar_round_trip<const N: usize>(rng: &mut Rng, slide: Option<usize>) {
+    for _ in 0..40 {
+        let arm: PlanarArm<N> = random_planar(rng, slide);
+        for _ in 0..50 {
+            let q: [f64; N] =
+                core::array::from_fn(
+                    |i| if Some(i) == slide { rng.uniform(-0.3, 0.3) } else { rng.uniform(-3.1, 3.1) },
+                );
+            let target = arm.pose(&q);
+            let mut solutions = arm.solve(&target);
+            solutions.measure(&target, |q| arm.pose(q));
+            assert_eq!(solutions.len(), 2);
+            let matched = solutions.exact().any(|s| s.q.iter().zip(&q).all(|(a, b)| wrap(a - b).abs() < 1e-7));
+            assert!(matched, "{q:?} not among {solutions:?}");
+            // Two joints place the point: the rotation about h follows, not asked.
+            for s in solutions.exact() {
+                assert!(s.position_error < 1e-12, "{s:?}");
+                if N > 2 {
+                    assert!(s.rotation_error < 1e-12, "{s:?}");
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn planar_arms_and_the_scara_round_trip() {
+    let mut rng = Rng(31);
+    planar_round_trip::<2>(&mut rng, None);
+    planar_round_trip::<3>(&mut rng, None);
+    planar_round_trip::<4>(&mut rng, Some(2));
+}
+
+#[test]
+fn planar_targets_off_the_plane_are_least_squares() {
+    let mut rng = Rng(41);
+    let arm: PlanarArm<3> = random_planar(&mut rng, None);
+    let mut target = arm.pose(&[0.3, -0.5, 1.0]);
+    // Raised along the axis: an arm without a prismatic joint cannot follow.
+    target.translation = add(target.translation, scale(arm.axis, 0.1));
+    assert!(arm.solve(&target).iter().all(|s| !s.exact));
+    // Tilted off the axis: no turn about it gives that rotation.
+    let mut tilted = arm.pose(&[0.3, -0.5, 1.0]);
+    let across = cross(arm.axis, [1.0, 0.0, 0.0]);
+    let k = scale(across, 1.0 / libm::sqrt(norm_squared(across)));
+    let columns = [0, 1, 2]
+        .map(|j| super::vector::rotate(k, 0.2, [tilted.rotation[0][j], tilted.rotation[1][j], tilted.rotation[2][j]]));
+    tilted.rotation = [0, 1, 2].map(|r| [columns[0][r], columns[1][r], columns[2][r]]);
+    assert!(arm.solve(&tilted).iter().all(|s| !s.exact && s.q.iter().all(|x| x.is_finite())));
 }
