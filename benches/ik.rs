@@ -198,6 +198,7 @@ fn numeric<const N: usize>(c: Option<&mut Criterion>, robot: &Numeric<N>) {
         theirs += usize::from(k_solve(i));
     }
     let Some(c) = c else { return };
+    record_success(robot.name, ours, theirs, count);
     println!(
         "ik-{}: converged to 1e-10 from random seeds: ours {ours} of {count} ({:.1}%), k {theirs} of {count} ({:.1}%)",
         robot.name,
@@ -219,6 +220,27 @@ fn numeric<const N: usize>(c: Option<&mut Criterion>, robot: &Numeric<N>) {
         })
     });
     group.finish();
+}
+
+/// Appends a numeric robot's success counts to `target/criterion/kinematics-ik.tsv` for
+/// `bench-report` (`robot, ours, k, targets`), replacing the robot's last line.
+fn record_success(robot: &str, ours: usize, theirs: usize, count: usize) {
+    let dir = std::env::var("CARGO_TARGET_DIR")
+        .map(std::path::PathBuf::from)
+        .unwrap_or_else(|_| std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target"))
+        .join("criterion");
+    let path = dir.join("kinematics-ik.tsv");
+    let kept: String = std::fs::read_to_string(&path)
+        .unwrap_or_default()
+        .lines()
+        .filter(|l| !l.starts_with(&format!("{robot}\t")))
+        .map(|l| format!("{l}\n"))
+        .collect();
+    let written = std::fs::create_dir_all(&dir)
+        .and_then(|()| std::fs::write(&path, format!("{kept}{robot}\t{ours}\t{theirs}\t{count}\n")));
+    if let Err(e) = written {
+        eprintln!("cannot write the success rates for bench-report: {e}");
+    }
 }
 
 /// A pose as the isometry of `k`'s own nalgebra version.

@@ -8,6 +8,8 @@
 //! targets, each with its measured figure and whether it is met) and `benches/ratios.svg` (the
 //! ratios as bars). Nothing here is typed in by hand.
 
+mod ik;
+
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -194,7 +196,8 @@ fn run() -> Result<()> {
         )
         .into());
     }
-    std::fs::write(root.join("benches/SUMMARY.md"), summary(&runs))?;
+    let ik = ik::section(&root, &target.join("criterion"));
+    std::fs::write(root.join("benches/SUMMARY.md"), summary(&runs) + &ik)?;
     // The bars show the plain build, the one every user gets, when it was run.
     std::fs::write(root.join("benches/ratios.svg"), svg(&runs[0]))?;
     let names: Vec<&str> = runs.iter().map(|r| r.name).collect();
