@@ -6,6 +6,13 @@ use kinematics_build::{Robot, Trig};
 
 use crate::error::CliError;
 
+/// `--ik`'s kinds.
+#[derive(Clone, Copy, clap::ValueEnum)]
+enum IkKind {
+    ClosedForm,
+    Numeric,
+}
+
 /// Arguments of `generate`.
 #[derive(clap::Args)]
 pub struct Args {
@@ -26,6 +33,13 @@ pub struct Args {
     /// Also generate the tips' velocity functions (Jacobians, pose and Jacobian, twists).
     #[arg(long)]
     jacobians: bool,
+    /// Also generate the tip's inverse kinematics: `closed-form` (every solution of its family,
+    /// and the numeric solver) or `numeric` (the numeric solver only). Needs one tip.
+    #[arg(long, value_enum, num_args = 0..=1, default_missing_value = "closed-form")]
+    ik: Option<IkKind>,
+    /// With `--ik`, the joint of a seven-joint arm whose value `tip_ik` takes as an input.
+    #[arg(long, requires = "ik")]
+    free: Option<String>,
     /// Also generate `f32` functions.
     #[arg(long)]
     f32: bool,
@@ -67,6 +81,15 @@ pub fn builder(args: &Args) -> Robot {
     }
     if args.jacobians {
         robot = robot.jacobians();
+    }
+    match (args.ik, &args.free) {
+        (Some(IkKind::ClosedForm), Some(joint)) => robot = robot.ik_free(joint),
+        (Some(IkKind::ClosedForm), None) => robot = robot.ik(),
+        (Some(IkKind::Numeric), Some(_)) => {
+            return Err(CliError::Usage("--free names the joint of a closed form: not with --ik numeric".to_owned()));
+        }
+        (Some(IkKind::Numeric), None) => robot = robot.ik_numeric(),
+        (None, _) => {}
     }
     if args.f32 {
         robot = robot.f32();

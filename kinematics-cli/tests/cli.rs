@@ -284,6 +284,18 @@ fn generate_prints_what_the_build_api_writes() {
     assert!(velocities.contains("pub fn tip_twist(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6]"), "{velocities}");
     let no_tip = fails(&["generate", "robots/ur5.urdf", "--jacobians"]);
     assert!(no_tip.contains("`jacobians` needs a tip"), "{no_tip}");
+    // Inverse kinematics: the build API's `.ik()`, `.ik_free(..)`, `.ik_numeric()`, byte for byte.
+    let build = |robot: kinematics_build::Robot| robot.manifest_dir(root()).generate().unwrap();
+    let ik = ok(&["generate", "robots/ur5.urdf", "--tip", "tool0", "--ik"]);
+    assert_eq!(ik, build(kinematics_build::Robot::file("robots/ur5.urdf").tip("tool0").ik()));
+    assert!(ik.contains("pub fn tip_ik(") && ik.contains("pub fn tip_ik_numeric("), "{ik}");
+    let free = ok(&["generate", "robots/iiwa14.urdf", "--tip", "iiwa_link_ee", "--ik", "--free", "iiwa_joint_3"]);
+    assert_eq!(free, build(kinematics_build::Robot::file("robots/iiwa14.urdf").tip("iiwa_link_ee").ik_free("iiwa_joint_3")));
+    let numeric = ok(&["generate", "robots/panda.toml", "--tip", "flange", "--ik", "numeric"]);
+    assert_eq!(numeric, build(kinematics_build::Robot::file("robots/panda.toml").tip("flange").ik_numeric()));
+    assert!(!numeric.contains("pub fn tip_ik(") && numeric.contains("pub fn tip_ik_numeric("), "{numeric}");
+    let no_family = fails(&["generate", "robots/panda.toml", "--tip", "flange", "--ik"]);
+    assert!(no_family.contains("no closed-form inverse kinematics"), "{no_family}");
     let tips = ok(&["generate", "robots/panda.urdf", "--tip", "panda_leftfinger", "--tip", "panda_rightfinger"]);
     assert!(tips.contains("pub fn tip_poses(q: &[f64; 8]) -> [::kinematics::__private::Pose<f64>; 2]"), "{tips}");
 }

@@ -4,8 +4,9 @@
 //!
 //! It holds the pose type ([`Pose`]), the scalar trait generated code is generic over ([`Real`]),
 //! the trait every compiled robot implements ([`Kinematics`]) with its error ([`KinematicsError`]),
-//! our own sin/cos ([`trig`]), the SIMD lane types ([`F64x4`], [`F32x8`]) and the batch driver
-//! ([`batch`]). Generated code reaches it through one path, `kinematics::__private` (the facade
+//! our own sin/cos ([`trig`]), the SIMD lane types ([`F64x4`], [`F32x8`]), the batch driver
+//! ([`batch`]) and inverse kinematics at run time ([`ik`]: subproblems, closed-form families,
+//! the numeric solver). Generated code reaches it through one path, `kinematics::__private` (the facade
 //! re-exports this crate there), so a user's crate needs only the `kinematics` dependency.
 //!
 //! Features: `std` adds [`StdTrig`] (the platform's `sin_cos`, for code generated with

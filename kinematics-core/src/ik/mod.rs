@@ -1,7 +1,9 @@
 //! Inverse kinematics at run time, for code the compiler generates: the Paden-Kahan subproblems
-//! ([`subproblem`]), the closed-form families of six-joint arms they compose into ([`Arm6`] and
-//! the family functions), and what a call returns ([`IkSolutions`], [`IkError`]). No heap, no
-//! `std`: `libm` does the square roots and inverse trigonometry.
+//! ([`subproblem`]), the closed-form families they compose into (six-joint arms: [`Arm6`] and the
+//! family functions, [`FreeArm6`] for the six of a seven-joint arm; planar arms and the SCARA:
+//! [`PlanarArm`]), the numeric solver every chain gets ([`levenberg_marquardt`]), and what a call
+//! returns ([`IkSolutions`], [`NumericSolution`], [`IkError`]). No heap, no `std`: `libm` does the
+//! square roots and inverse trigonometry.
 //!
 //! The compiler classifies a robot's chain at compile time and emits a call of one family
 //! function with the chain's geometry as constants, so the optimiser folds them into the body;
