@@ -61,8 +61,9 @@ pub enum TrigArg {
     Std,
 }
 
-/// The builder for these arguments: the file relative to the current directory.
-pub fn builder(args: &Args) -> Robot {
+/// The builder for these arguments: the file relative to the current directory; `--free` with
+/// `--ik numeric` is a usage error (the free joint is a closed form's).
+pub fn builder(args: &Args) -> Result<Robot, CliError> {
     let mut robot =
         Robot::file(&args.file).manifest_dir(".").tips(&args.tip).exact_angles(crate::robot::exact_angles_on()).trig(
             match args.trig {
@@ -86,7 +87,10 @@ pub fn builder(args: &Args) -> Robot {
         (Some(IkKind::ClosedForm), Some(joint)) => robot = robot.ik_free(joint),
         (Some(IkKind::ClosedForm), None) => robot = robot.ik(),
         (Some(IkKind::Numeric), Some(_)) => {
-            return Err(CliError::Usage("--free names the joint of a closed form: not with --ik numeric".to_owned()));
+            return Err(CliError::Usage(format!(
+                "{}: --free names the joint a closed form takes as an input: not with --ik numeric",
+                args.file
+            )));
         }
         (Some(IkKind::Numeric), None) => robot = robot.ik_numeric(),
         (None, _) => {}
@@ -94,12 +98,12 @@ pub fn builder(args: &Args) -> Robot {
     if args.f32 {
         robot = robot.f32();
     }
-    robot
+    Ok(robot)
 }
 
 /// Generates, then prints or writes.
 pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
-    let robot = builder(args);
+    let robot = builder(args)?;
     match &args.output {
         Some(path) => robot.write_to(path)?,
         None => write!(out, "{}", robot.generate()?)?,

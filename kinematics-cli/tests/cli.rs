@@ -290,7 +290,10 @@ fn generate_prints_what_the_build_api_writes() {
     assert_eq!(ik, build(kinematics_build::Robot::file("robots/ur5.urdf").tip("tool0").ik()));
     assert!(ik.contains("pub fn tip_ik(") && ik.contains("pub fn tip_ik_numeric("), "{ik}");
     let free = ok(&["generate", "robots/iiwa14.urdf", "--tip", "iiwa_link_ee", "--ik", "--free", "iiwa_joint_3"]);
-    assert_eq!(free, build(kinematics_build::Robot::file("robots/iiwa14.urdf").tip("iiwa_link_ee").ik_free("iiwa_joint_3")));
+    assert_eq!(
+        free,
+        build(kinematics_build::Robot::file("robots/iiwa14.urdf").tip("iiwa_link_ee").ik_free("iiwa_joint_3"))
+    );
     let numeric = ok(&["generate", "robots/panda.toml", "--tip", "flange", "--ik", "numeric"]);
     assert_eq!(numeric, build(kinematics_build::Robot::file("robots/panda.toml").tip("flange").ik_numeric()));
     assert!(!numeric.contains("pub fn tip_ik(") && numeric.contains("pub fn tip_ik_numeric("), "{numeric}");

@@ -1,6 +1,7 @@
 //! The numeric inverse kinematics every chain gets: Levenberg-Marquardt on the robot's generated
-//! pose and Jacobian, joint limits respected (steps clamped into them), restarts from
-//! deterministic seeds when a start does not converge, and no heap in the iteration.
+//! pose and Jacobian, joint limits respected (joints at a limit that would step past it held
+//! still, steps clamped into them), restarts from deterministic seeds when a start does not
+//! converge or stalls (has not halved its error in ten steps), and no heap in the iteration.
 //!
 //! The error is the twist that takes the reached pose to the target: the position difference and
 //! the rotation vector of `R_target R^T`, both in the base frame, which is what the geometric
@@ -98,6 +99,9 @@ fn error_twist(reached: &Pose<f64>, target: &Pose<f64>) -> [f64; 6] {
     [p[0], p[1], p[2], w[0], w[1], w[2]]
 }
 
+/// Steps after which a start must have halved its cost to go on.
+const STALL_STEPS: usize = 10;
+
 /// Solves `a x = b` for a symmetric positive definite `a` by Cholesky, in place; `false` if `a`
 /// is not positive definite (to rounding).
 #[allow(clippy::needless_range_loop, reason = "a factorisation reads as the index arithmetic it is")]
@@ -160,7 +164,8 @@ fn bounded_step<const N: usize>(
     q: &[f64; N],
     limits: &[JointLimits; N],
 ) -> Option<[f64; N]> {
-    let mut held = [false; N];
+    // A joint that does not move the tip at all (a finger beside the chain) stays still.
+    let mut held: [bool; N] = core::array::from_fn(|i| a[i][i] == 0.0);
     // Each pass holds at least one more joint or ends: at most N + 1 passes.
     for _ in 0..=N {
         let mut m = *a;
@@ -247,7 +252,17 @@ pub fn levenberg_marquardt<const N: usize>(
         let mut cost = dot6(&error);
         let mut lambda = 1e-3;
         let mut steps = 0;
+        // The cost ten steps ago: a start that has not halved it since is stuck (a local minimum
+        // or a limit), and a fresh start is cheaper than more steps (converging starts shrink the
+        // cost quadratically).
+        let mut checkpoint = cost;
         while steps < options.max_iterations {
+            if steps > 0 && steps % STALL_STEPS == 0 {
+                if cost > 0.5 * checkpoint {
+                    break;
+                }
+                checkpoint = cost;
+            }
             let (position, rotation) = pose_errors(&pose, target);
             if position <= options.tolerance && rotation <= options.tolerance {
                 break;
