@@ -534,3 +534,45 @@ fn planar_arms_and_the_scara_round_trip() {
     target.translation[2] += 0.1;
     assert!(Planar3r::tip_ik(&target).expect("a pose").iter().all(|s| !s.exact));
 }
+
+#[derive(Kinematics)]
+#[kinematics(dh = "robots/stanford_arm.toml", tip = "link6", ik, jacobians)]
+struct Stanford;
+
+/// The Stanford arm (joint 3 prismatic): the slide from the wrist centre's distance, then the
+/// shoulder and the wrist; a round trip from configurations within limits, the slide compared
+/// as a length.
+#[test]
+fn the_stanford_arm_round_trips() {
+    assert_eq!(Stanford::IK_FAMILY, "spherical wrist, axes 1 and 2 meet, joint 3 prismatic");
+    let reference = Stanford::reference().expect("loads");
+    let reach = reference.tree().reach();
+    let mut rng = Uniform(61);
+    let (mut checked, mut skipped) = (0, 0);
+    for _ in 0..1500 {
+        let q = rng.within(&Stanford::JOINT_LIMITS);
+        let target = Stanford::tip_pose(&q);
+        let solutions = Stanford::tip_ik(&target).expect("a pose");
+        assert_eq!(solutions.len(), 8);
+        for s in solutions.exact() {
+            assert!(s.position_error <= 1e-12 * reach && s.rotation_error <= 1e-12, "{q:?}: {s:?}");
+            let reached = Pose::from(reference.link_pose(&s.q, "link6").expect("finite"));
+            let (position, rotation) = kinematics::ik::pose_errors(&reached, &target);
+            assert!(position <= 1e-12 * reach && rotation <= 1e-12, "the reference: {position:e} {rotation:e}");
+        }
+        if smallest_singular_value(&Stanford::tip_jacobian(&q)) < NEAR_SINGULAR {
+            skipped += 1;
+            continue;
+        }
+        checked += 1;
+        let matches = |s: &kinematics::ik::IkSolution<6>| {
+            (s.q[2] - q[2]).abs() < 1e-9
+                && s.q.iter().zip(&q).enumerate().all(|(i, (a, b))| i == 2 || wrapped(a - b).abs() < 1e-9)
+        };
+        assert!(solutions.exact().any(matches), "{q:?} not among {solutions:#?}");
+        // The slide's value is a length: within limits it is kept as it is.
+        let within = Stanford::tip_ik_within_limits(&target).expect("a pose");
+        assert!(within.iter().all(|s| s.q[2] >= 0.3048 && s.q[2] <= 1.27), "{within:#?}");
+    }
+    assert!(skipped * 20 < checked, "{skipped} near a singularity, {checked} checked");
+}

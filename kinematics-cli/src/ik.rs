@@ -152,6 +152,7 @@ pub fn solve(plan: &IkPlan, target: &Pose<f64>, forward: &dyn Fn(&[f64]) -> Pose
                     kinematics::ik::spherical_first_two_intersecting(&arm, target)
                 }
                 IkFamily::SphericalLastTwoIntersecting => kinematics::ik::spherical_last_two_intersecting(&arm, target),
+                IkFamily::SphericalPrismaticThird => kinematics::ik::spherical_prismatic_third(&arm, target),
                 IkFamily::ThreeParallelTwoIntersecting | IkFamily::Planar => {
                     kinematics::ik::three_parallel_two_intersecting(&arm, target)
                 }

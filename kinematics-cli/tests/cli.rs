@@ -732,8 +732,11 @@ fn ik_on_a_chain_no_family_covers_says_why() {
         "{error}"
     );
     assert!(error.contains("the chain has 7 moving joints; the closed forms solve six"), "{error}");
-    let error = fails(&["ik", "robots/stanford_arm.toml", "--from-q", "0,0,0.5,0,0,0"]);
-    assert!(error.contains("joint `joint3` is prismatic"), "{error}");
+    let error = fails(&["ik", "robots/humanoid.urdf", "--tip", "RFinger23_link", "--pose", "0 0 0 1 0 0 0"]);
+    assert!(error.contains("mimics `RHand`"), "{error}");
+    // The Stanford arm: its slide from the wrist centre's distance.
+    let stanford = ok(&["ik", "robots/stanford_arm.toml", "--from-q", "0.2,-0.4,0.5,0.3,0.6,-0.2"]);
+    assert!(stanford.contains("joint 3 prismatic") && stanford.contains("8 solutions"), "{stanford}");
     // The SCARA is planar: two elbows, the stroke from the height.
     let scara = ok(&["ik", "robots/scara.toml", "--from-q", "0.3,-0.8,0.1,0.5"]);
     assert!(scara.contains("closed form: planar") && scara.contains("2 solutions, 2 exact"), "{scara}");

@@ -33,7 +33,7 @@ const EXPECTED: &[(&str, Result<IkFamily, &str>)] = &[
     ("quadruped.urdf", Err("the robot has 12 degrees of freedom and the chain moves 3 of them")),
     ("scara.toml", Ok(IkFamily::Planar)),
     ("seed_tree.urdf", Err("the robot has 3 degrees of freedom and the chain moves 2 of them")),
-    ("stanford_arm.toml", Err("joint `joint3` is prismatic")),
+    ("stanford_arm.toml", Ok(IkFamily::SphericalPrismaticThird)),
     ("ur10e.toml", Ok(IkFamily::ThreeParallelTwoIntersecting)),
     ("ur10e.urdf", Ok(IkFamily::ThreeParallelTwoIntersecting)),
     ("ur5.toml", Ok(IkFamily::ThreeParallelTwoIntersecting)),

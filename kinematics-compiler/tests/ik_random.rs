@@ -81,6 +81,7 @@ fn random_arm(rng: &mut Uniform, family: IkFamily) -> String {
             (0.0, 0.0, t[4]),
             (0.0, l[6], "0"),
         ],
+        IkFamily::SphericalPrismaticThird => panic!("a prismatic arm: tested in the core and on the Stanford arm"),
         IkFamily::Planar => panic!("not a six-joint family"),
     };
     table(rng, rows)
@@ -94,6 +95,7 @@ fn solve(plan: &IkPlan, target: &Pose<f64>) -> IkSolutions<6, 8> {
         IkFamily::SphericalFirstTwoIntersecting => kinematics_core::ik::spherical_first_two_intersecting(&arm, target),
         IkFamily::SphericalLastTwoIntersecting => kinematics_core::ik::spherical_last_two_intersecting(&arm, target),
         IkFamily::ThreeParallelTwoIntersecting => kinematics_core::ik::three_parallel_two_intersecting(&arm, target),
+        IkFamily::SphericalPrismaticThird => kinematics_core::ik::spherical_prismatic_third(&arm, target),
         IkFamily::Planar => panic!("not a six-joint family"),
     }
 }

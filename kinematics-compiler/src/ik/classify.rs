@@ -35,6 +35,8 @@ pub enum IkFamily {
     /// Two or three revolute joints about parallel axes, at most one prismatic joint along them:
     /// planar 2R and 3R arms, the SCARA.
     Planar,
+    /// A spherical wrist, axes 1 and 2 meeting and joint 3 prismatic: the Stanford arm.
+    SphericalPrismaticThird,
 }
 
 impl IkFamily {
@@ -54,6 +56,7 @@ impl IkFamily {
             IkFamily::SphericalLastTwoIntersecting => "spherical wrist, axes 2 and 3 meet",
             IkFamily::ThreeParallelTwoIntersecting => "axes 2, 3, 4 parallel, axes 5 and 6 meet",
             IkFamily::Planar => "planar: revolute axes parallel, a prismatic joint along them at most",
+            IkFamily::SphericalPrismaticThird => "spherical wrist, axes 1 and 2 meet, joint 3 prismatic",
         }
     }
 
@@ -66,6 +69,7 @@ impl IkFamily {
             IkFamily::SphericalLastTwoIntersecting => "spherical_last_two_intersecting",
             IkFamily::ThreeParallelTwoIntersecting => "three_parallel_two_intersecting",
             IkFamily::Planar => "PlanarArm::solve",
+            IkFamily::SphericalPrismaticThird => "spherical_prismatic_third",
         }
     }
 
@@ -78,6 +82,9 @@ impl IkFamily {
             IkFamily::SphericalLastTwoIntersecting => "q1 by SP3, q2, q3 by SP2; wrist: q4, q5 by SP2, q6 by SP1",
             IkFamily::ThreeParallelTwoIntersecting => {
                 "q1 by SP4, q5 by SP4, q6 by SP1, q2+q3+q4 by SP1, q3 by SP3, q2 by SP1, q4 by difference"
+            }
+            IkFamily::SphericalPrismaticThird => {
+                "q3 from the wrist centre's distance (a quadratic), q1, q2 by SP2; wrist: q4, q5 by SP2, q6 by SP1"
             }
             IkFamily::Planar => {
                 "the slide from the height; the turn about the axis by SP1 (three revolute joints); the elbow by SP3, \
@@ -95,6 +102,7 @@ impl IkFamily {
             IkFamily::SphericalFirstTwoIntersecting => &[WRIST[0], WRIST[1], WRIST[2], (0, 1)],
             IkFamily::SphericalLastTwoIntersecting => &[WRIST[0], WRIST[1], WRIST[2], (1, 2)],
             IkFamily::Planar => &[],
+            IkFamily::SphericalPrismaticThird => &[WRIST[0], WRIST[1], WRIST[2], (0, 1)],
         }
     }
 
@@ -320,6 +328,15 @@ pub fn classify_with(tree: &KinematicTree, base: &str, tip: &str, free: Option<&
             })
             .map_err(|reason| none(format!("{}: {reason}", IkFamily::Planar.name())));
     }
+    let slides: Vec<usize> = (0..moving).filter(|&i| zero.joints[i].kind == JointKind::Prismatic).collect();
+    if free.is_none() && moving == 6 && slides == [2] && tree.dof() == 6 {
+        let lines = Lines { zero: &zero, meet_tolerance: MEET_TOLERANCE * zero.reach };
+        let family = IkFamily::SphericalPrismaticThird;
+        return match plan(&lines, family) {
+            Ok((points, parallel_to)) => Ok(finish(base, tip, &zero, family, points, parallel_to, None)),
+            Err(Fault::Wrist(reason) | Fault::Arm(reason)) => Err(none(format!("{}: {reason}", family.name()))),
+        };
+    }
     if let Some(j) = zero.joints.iter().find(|j| j.kind == JointKind::Prismatic) {
         return Err(none(format!("joint `{}` is prismatic; the closed forms take six revolute joints", j.name)));
     }
@@ -511,6 +528,7 @@ fn plan(lines: &Lines<'_>, family: IkFamily) -> Result<Placement, Fault> {
         }
         IkFamily::Planar => return Err(Fault::Arm("not a six-joint family".to_owned())),
         IkFamily::SphericalTwoParallel
+        | IkFamily::SphericalPrismaticThird
         | IkFamily::SphericalFirstTwoIntersecting
         | IkFamily::SphericalLastTwoIntersecting => {
             let centre = lines.wrist_centre().map_err(Fault::Wrist)?;
@@ -523,7 +541,7 @@ fn plan(lines: &Lines<'_>, family: IkFamily) -> Result<Placement, Fault> {
                     not_parallel(0, 1)?;
                     parallel_to[2] = Some(1);
                 }
-                IkFamily::SphericalFirstTwoIntersecting => {
+                IkFamily::SphericalFirstTwoIntersecting | IkFamily::SphericalPrismaticThird => {
                     let meet = lines.meet(0, 1)?;
                     points[0] = Some(meet);
                     points[1] = Some(meet);
@@ -557,7 +575,8 @@ fn distance_depends_on_its_joint(lines: &Lines<'_>, family: IkFamily, points: &[
         | IkFamily::SphericalFirstTwoIntersecting => (2, [across(2, 1, 2), across(2, 2, 3)]),
         // |rot(h1, -q1) v - p12| is the distance: only p12 is the robot's.
         IkFamily::SphericalLastTwoIntersecting => (0, [across(0, 0, 1), f64::INFINITY]),
-        IkFamily::Planar => return Ok(()),
+        // A slide changes the distance whatever its direction (the quadratic has its roots).
+        IkFamily::Planar | IkFamily::SphericalPrismaticThird => return Ok(()),
     };
     if sides.iter().any(|&d| d <= tolerance) {
         return Err(Fault::Arm(format!(

@@ -41,6 +41,19 @@ fn wrist_target(arm: &Arm6, target: &Pose<f64>) -> (M3, V3) {
 /// rot(h6, q6) = R03^T R06` by subproblem 2 (`q4`, `q5`) and subproblem 1 (`q6`), two branches.
 #[inline(always)]
 fn spherical_wrist(arm: &Arm6, r06: &M3, [q1, q2, q3]: [Turn; 3], quality: Quality, out: &mut IkSolutions<6, 8>) {
+    spherical_wrist_after(arm, r06, [q1, q2, q3], None, quality, out);
+}
+
+/// [`spherical_wrist`], with joint 3 a slide by `slide` (its turn then `Turn::ZERO`) when given.
+#[inline(always)]
+fn spherical_wrist_after(
+    arm: &Arm6,
+    r06: &M3,
+    [q1, q2, q3]: [Turn; 3],
+    slide: Option<f64>,
+    quality: Quality,
+    out: &mut IkSolutions<6, 8>,
+) {
     let h = &arm.axes;
     let back = |v: V3| q3.back().rotate(h[2], q2.back().rotate(h[1], q1.back().rotate(h[0], v)));
     let r36_h6 = back(mul(r06, h[5]));
@@ -49,9 +62,39 @@ fn spherical_wrist(arm: &Arm6, r06: &M3, [q1, q2, q3]: [Turn; 3], quality: Quali
     for (t4, q5) in pairs {
         let (q6, last) = rotation_onto(h[5], h[4], q5.back().rotate(h[4], t4.rotate(h[3], r36_h5)));
         let all = quality.and(wrist).and(last);
-        let q = [q1.angle, q2.angle, q3.angle, -t4.angle, q5.angle, q6.angle];
-        out.push(IkSolution::unmeasured(q.map(wrap), all.exact, all.singular));
+        let mut q = [q1.angle, q2.angle, q3.angle, -t4.angle, q5.angle, q6.angle].map(wrap);
+        if let Some(slide) = slide {
+            q[2] = slide;
+        }
+        out.push(IkSolution::unmeasured(q, all.exact, all.singular));
     }
+}
+
+/// Spherical wrist with axes 1 and 2 meeting (`p12 = 0`) and joint 3 prismatic along `h3` (the
+/// Stanford arm): the slide from the wrist centre's distance from the shoulder (a quadratic:
+/// `|p23 + p34 + q3 h3| = |W - S|`, two roots), `q1`, `q2` by subproblem 2, then the wrist. `q3`
+/// is a length, not wrapped. Needs `h1` not parallel to `h2`.
+#[inline(always)]
+pub fn spherical_prismatic_third(arm: &Arm6, target: &Pose<f64>) -> IkSolutions<6, 8> {
+    let [h1, h2, h3, ..] = arm.axes;
+    let [_, _, p23, p34, ..] = arm.offsets;
+    let (r06, v0) = wrist_target(arm, target);
+    let mut out = IkSolutions::new();
+    // |u + q3 h3|^2 = |v0|^2 with u = p23 + p34: q3^2 + 2 (u . h3) q3 + |u|^2 - |v0|^2 = 0.
+    let u = add(p23, p34);
+    let b = dot(u, h3);
+    let discriminant = b * b - norm_squared(u) + norm_squared(v0);
+    let size = norm_squared(u) + norm_squared(v0);
+    let exact = discriminant >= -1e-12 * size;
+    let root = if discriminant > 0.0 { libm::sqrt(discriminant) } else { 0.0 };
+    let reach = Quality { exact, singular: false };
+    for q3 in [-b + root, -b - root] {
+        let (pairs, shoulder) = two_rotations(h1, v0, h2, add(u, scale(h3, q3)));
+        for (t1, q2) in pairs {
+            spherical_wrist_after(arm, &r06, [t1.back(), q2, Turn::ZERO], Some(q3), reach.and(shoulder), &mut out);
+        }
+    }
+    out
 }
 
 /// Spherical wrist (axes 4, 5, 6 meet, `p45 = p56 = 0`) with axes 2 and 3 parallel (PUMA 560,

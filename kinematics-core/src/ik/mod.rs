@@ -39,7 +39,8 @@ mod vector;
 
 pub use family::{
     Arm6, FreeArm6, PlanarArm, PlanarJoint, insert_free, spherical_first_two_intersecting,
-    spherical_last_two_intersecting, spherical_two_parallel, three_parallel_two_intersecting,
+    spherical_last_two_intersecting, spherical_prismatic_third, spherical_two_parallel,
+    three_parallel_two_intersecting,
 };
 pub use numeric::{NumericOptions, NumericSolution, levenberg_marquardt};
 pub use solutions::{IkError, IkSolution, IkSolutions, ROTATION_TOLERANCE, check_seed, check_target, pose_errors};

@@ -230,3 +230,47 @@ fn planar_targets_off_the_plane_are_least_squares() {
     tilted.rotation = [0, 1, 2].map(|r| [columns[0][r], columns[1][r], columns[2][r]]);
     assert!(arm.solve(&tilted).iter().all(|s| !s.exact && s.q.iter().all(|x| x.is_finite())));
 }
+
+/// The pose of an arm whose third joint slides along `h3` (the Stanford arm's form).
+fn stanford_pose(arm: &Arm6, q: &[f64; 6]) -> Pose<f64> {
+    let mut rotation = arm.tool_rotation;
+    let mut point = arm.offsets[6];
+    for i in (0..6).rev() {
+        if i == 2 {
+            point = add(arm.offsets[2], add(scale(arm.axes[2], q[2]), point));
+            continue;
+        }
+        let columns = [0, 1, 2]
+            .map(|j| super::vector::rotate(arm.axes[i], q[i], [rotation[0][j], rotation[1][j], rotation[2][j]]));
+        rotation = [0, 1, 2].map(|r| [columns[0][r], columns[1][r], columns[2][r]]);
+        point = add(arm.offsets[i], super::vector::rotate(arm.axes[i], q[i], point));
+    }
+    Pose { rotation, translation: point }
+}
+
+#[test]
+fn stanford_arms_round_trip() {
+    let mut rng = Rng(53);
+    let mut worst: f64 = 0.0;
+    for _ in 0..40 {
+        let mut arm = random_arm(&mut rng, Family::SphericalFirstTwoIntersecting);
+        arm.offsets[3] = rng.vector(0.3);
+        for _ in 0..50 {
+            let mut q = [0; 6].map(|_| rng.uniform(-3.1, 3.1));
+            q[2] = rng.uniform(0.2, 1.0);
+            let target = stanford_pose(&arm, &q);
+            let mut solutions = spherical_prismatic_third(&arm, &target);
+            solutions.measure(&target, |q| stanford_pose(&arm, q));
+            assert_eq!(solutions.len(), 8);
+            let found = solutions.exact().any(|s| {
+                (s.q[2] - q[2]).abs() < 1e-7
+                    && s.q.iter().zip(&q).enumerate().all(|(i, (a, b))| i == 2 || wrap(a - b).abs() < 1e-7)
+            });
+            assert!(found, "{q:?} not among {solutions:?}");
+            for s in solutions.exact() {
+                worst = worst.max(s.position_error).max(s.rotation_error);
+            }
+        }
+    }
+    assert!(worst < 1e-11, "worst pose error {worst:e}");
+}
