@@ -73,7 +73,7 @@ impl Turn {
     #[inline(always)]
     pub fn of(y: f64, x: f64) -> Turn {
         let r = libm::sqrt(x * x + y * y);
-        if r > 0.0 { Turn { angle: libm::atan2(y, x), cos: x / r, sin: y / r } } else { Turn::ZERO }
+        if r > 0.0 { Turn { angle: crate::trig::atan2(y, x), cos: x / r, sin: y / r } } else { Turn::ZERO }
     }
 
     /// The opposite turn.
@@ -134,7 +134,7 @@ pub fn cos_sin_equation(a: f64, b: f64, c: f64) -> ([Turn; 2], Quality) {
     } else {
         (ratio, libm::sqrt((1.0 - ratio) * (1.0 + ratio)))
     };
-    let turn = |cos: f64, sin: f64| Turn { angle: libm::atan2(sin, cos), cos, sin };
+    let turn = |cos: f64, sin: f64| Turn { angle: crate::trig::atan2(sin, cos), cos, sin };
     let plus = turn(cos_phi * cos_delta - sin_phi * sin_delta, sin_phi * cos_delta + cos_phi * sin_delta);
     let minus = turn(cos_phi * cos_delta + sin_phi * sin_delta, sin_phi * cos_delta - cos_phi * sin_delta);
     ([plus, minus], Quality { exact, singular: false })

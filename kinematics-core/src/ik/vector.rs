@@ -72,12 +72,31 @@ pub(crate) fn rotate(k: V3, angle: f64, v: V3) -> V3 {
     rotate_cs(k, c, s, v)
 }
 
-/// `angle` moved by a multiple of 2 pi into `(-pi, pi]`.
+/// `angle` moved by a multiple of 2 pi into `(-pi, pi]`. The solvers' angles are sums of at
+/// most a few angles in `[-pi, pi]`, which two conditional turns bring back; anything larger
+/// takes the general path (`round` in software costs more than the rest: baseline x86-64 has no
+/// rounding instruction).
 #[inline(always)]
 pub(crate) fn wrap(angle: f64) -> f64 {
-    const TAU: f64 = core::f64::consts::TAU;
+    use core::f64::consts::{PI, TAU};
+    if angle.abs() <= 3.0 * PI {
+        let once = if angle > PI {
+            angle - TAU
+        } else if angle <= -PI {
+            angle + TAU
+        } else {
+            angle
+        };
+        return if once > PI {
+            once - TAU
+        } else if once <= -PI {
+            once + TAU
+        } else {
+            once
+        };
+    }
     let wrapped = angle - TAU * libm::round(angle / TAU);
-    if wrapped <= -core::f64::consts::PI { wrapped + TAU } else { wrapped }
+    if wrapped <= -PI { wrapped + TAU } else { wrapped }
 }
 
 #[cfg(test)]
