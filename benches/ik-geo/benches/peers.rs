@@ -319,7 +319,7 @@ fn main() {
     let table = table(&rows);
     println!("{table}");
 
-    let now = SystemTime::now().duration_since(UNIX_EPOCH).map(|d| d.as_secs()).unwrap_or(0);
+    let now = SystemTime::now().duration_since(UNIX_EPOCH).map(|d| d.as_secs()).expect("the system clock is past 1970");
     let report = format!(
         "# ik-geo 0.1.2 against our compiled IK\n\n\
          Produced by `bash benches/ik-geo/run.sh` (`cargo bench --manifest-path benches/ik-geo/Cargo.toml`) on {}: \

@@ -53,16 +53,22 @@ pub fn check_target(target: &Pose<f64>) -> Result<(), IkError> {
     if !r.iter().flatten().chain(&target.translation).all(|x| x.is_finite()) {
         return Err(IkError::NonFinite);
     }
+    // Finite entries can still overflow in a product (1e200 * 1e200 - 1e200 * 1e200 is NaN):
+    // every comparison here counts NaN as the largest deviation, never as none.
     let mut deviation: f64 = 0.0;
+    let mut worse = |d: f64| {
+        if !(d <= deviation) {
+            deviation = if d.is_nan() { f64::INFINITY } else { d };
+        }
+    };
     for i in 0..3 {
         for j in 0..3 {
             let expected = if i == j { 1.0 } else { 0.0 };
-            deviation = deviation.max((dot(r[i], r[j]) - expected).abs());
+            worse((dot(r[i], r[j]) - expected).abs());
         }
     }
-    let det = dot(r[0], super::vector::cross(r[1], r[2]));
-    deviation = deviation.max((det - 1.0).abs());
-    if deviation > ROTATION_TOLERANCE {
+    worse((dot(r[0], super::vector::cross(r[1], r[2])) - 1.0).abs());
+    if !(deviation <= ROTATION_TOLERANCE) {
         return Err(IkError::NotARotation { deviation });
     }
     Ok(())
@@ -277,6 +283,10 @@ mod tests {
         let mut scaled = identity_at([0.0; 3]);
         scaled.rotation[0][0] = 1.1;
         assert!(matches!(check_target(&scaled), Err(IkError::NotARotation { .. })));
+        // Rows whose products overflow to NaN (inf - inf) are no rotation either.
+        let mut huge = identity_at([0.0; 3]);
+        huge.rotation = [[1e200, 1e200, 0.0], [1e200, -1e200, 0.0], [0.0, 0.0, 1.0]];
+        assert!(matches!(check_target(&huge), Err(IkError::NotARotation { deviation }) if deviation == f64::INFINITY));
         let mut mirrored = identity_at([0.0; 3]);
         mirrored.rotation[2][2] = -1.0;
         assert!(matches!(check_target(&mirrored), Err(IkError::NotARotation { deviation }) if deviation == 2.0));
