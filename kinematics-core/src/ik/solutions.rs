@@ -57,8 +57,10 @@ pub fn check_target(target: &Pose<f64>) -> Result<(), IkError> {
     // every comparison here counts NaN as the largest deviation, never as none.
     let mut deviation: f64 = 0.0;
     let mut worse = |d: f64| {
-        if !(d <= deviation) {
-            deviation = if d.is_nan() { f64::INFINITY } else { d };
+        if d.is_nan() {
+            deviation = f64::INFINITY;
+        } else if d > deviation {
+            deviation = d;
         }
     };
     for i in 0..3 {
@@ -68,7 +70,7 @@ pub fn check_target(target: &Pose<f64>) -> Result<(), IkError> {
         }
     }
     worse((dot(r[0], super::vector::cross(r[1], r[2])) - 1.0).abs());
-    if !(deviation <= ROTATION_TOLERANCE) {
+    if deviation > ROTATION_TOLERANCE {
         return Err(IkError::NotARotation { deviation });
     }
     Ok(())
