@@ -28,6 +28,7 @@ mod nalgebra;
 mod orientation;
 mod pose;
 mod real;
+mod splitmix;
 pub mod trig;
 
 pub use batch::batch;

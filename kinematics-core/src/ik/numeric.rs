@@ -14,6 +14,7 @@ use super::solutions::pose_errors;
 use super::vector::{V3, dot, sub};
 use crate::kinematics::JointLimits;
 use crate::pose::Pose;
+use crate::splitmix::SplitMix;
 
 /// How hard the numeric solver tries, and when it is done.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -200,18 +201,10 @@ fn bounded_step<const N: usize>(
     None
 }
 
-/// A deterministic generator of restart seeds (splitmix64).
-struct Seeds(u64);
+/// The deterministic generator of restart seeds.
+struct Seeds(SplitMix);
 
 impl Seeds {
-    fn next(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-        (z ^ (z >> 31)) as f64 / 18_446_744_073_709_551_616.0
-    }
-
     /// A configuration within the limits (within one turn either side of zero where a joint has
     /// none).
     fn within<const N: usize>(&mut self, limits: &[JointLimits; N]) -> [f64; N] {
@@ -222,7 +215,7 @@ impl Seeds {
             } else {
                 (-core::f64::consts::PI, core::f64::consts::PI)
             };
-            *value = lo + (hi - lo) * self.next();
+            *value = lo + (hi - lo) * self.0.next();
         }
         q
     }
@@ -239,7 +232,7 @@ pub fn levenberg_marquardt<const N: usize>(
     options: &NumericOptions,
     pose_and_jacobian: impl Fn(&[f64; N]) -> (Pose<f64>, [[f64; N]; 6]),
 ) -> NumericSolution<N> {
-    let mut seeds = Seeds(0x6b69_6e65_6d61_7469);
+    let mut seeds = Seeds(SplitMix(0x6b69_6e65_6d61_7469));
     let mut best: Option<NumericSolution<N>> = None;
     let mut iterations = 0;
     let mut starts = 0;

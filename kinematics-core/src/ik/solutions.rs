@@ -285,7 +285,8 @@ mod tests {
         let mut scaled = identity_at([0.0; 3]);
         scaled.rotation[0][0] = 1.1;
         assert!(matches!(check_target(&scaled), Err(IkError::NotARotation { .. })));
-        // Rows whose products overflow to NaN (inf - inf) are no rotation either.
+        // Rows whose products overflow (to infinity, and NaN where inf - inf) are no rotation: the
+        // deviation is infinite, never a NaN a comparison would pass over.
         let mut huge = identity_at([0.0; 3]);
         huge.rotation = [[1e200, 1e200, 0.0], [1e200, -1e200, 0.0], [0.0, 0.0, 1.0]];
         assert!(matches!(check_target(&huge), Err(IkError::NotARotation { deviation }) if deviation == f64::INFINITY));

@@ -71,18 +71,7 @@ mod tests {
         key(a).abs_diff(key(b))
     }
 
-    /// splitmix64, uniform in [0, 1).
-    struct Uniform(u64);
-
-    impl Uniform {
-        fn next(&mut self) -> f64 {
-            self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
-            let mut z = self.0;
-            z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-            z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-            (z ^ (z >> 31)) as f64 / 18_446_744_073_709_551_616.0
-        }
-    }
+    use crate::splitmix::SplitMix as Uniform;
 
     fn worst(points: impl Iterator<Item = (f64, f64)>) -> (u64, (f64, f64)) {
         let mut worst = (0, (0.0, 0.0));
