@@ -1,7 +1,9 @@
 //! The closed-form families of six-joint revolute arms, each a fixed composition of the
 //! subproblems (IK-Geo's decompositions, arXiv 2211.05737, section V), for the geometry the
-//! compiler classified and wrote as constants. Every function returns all eight branches in a
-//! fixed order (first joint's branch outermost), exact or least-squares, flagged.
+//! compiler classified and wrote as constants. Every function returns its branches in a fixed order
+//! (first joint's branch outermost), exact or least-squares, flagged: all eight where the family's
+//! first step is a subproblem of two solutions, and as many as the quartic of subproblem 5 or 6
+//! has (up to four, each with two more branches) where it is one of those.
 //!
 //! The arm is written as IK-Geo writes it, a product of exponentials at the zero configuration:
 //! `R = rot(h1, q1) ... rot(h6, q6) R6T` and
@@ -11,7 +13,9 @@
 //! wrist).
 
 use super::solutions::{IkSolution, IkSolutions};
-use super::subproblem::{Quality, Turn, rotation_onto, rotation_to_distance, rotation_to_height, two_rotations};
+use super::subproblem::{
+    Quality, Turn, rotation_onto, rotation_to_distance, rotation_to_height, three_rotations, two_heights, two_rotations,
+};
 use super::vector::{M3, V3, add, cross, dot, mul, mul_by_transpose, norm_squared, scale, sub, wrap};
 use crate::pose::Pose;
 
@@ -162,39 +166,90 @@ pub fn spherical_last_two_intersecting(arm: &Arm6, target: &Pose<f64>) -> IkSolu
 
 /// Axes 2, 3, 4 parallel (direction `h = h2`) and axes 5, 6 meeting (`p56 = 0`): the UR family.
 /// `q1` by subproblem 4 (the tool flange's height along `h` is fixed), `q5` by subproblem 4 (so
-/// is the angle between `h` and `h6`), `q6` by subproblem 1, the sum `q2 + q3 + q4` (with the
-/// axes' signs) by subproblem 1, then the planar elbow: `q3` by subproblem 3, `q2` by
-/// subproblem 1, `q4` from the sum. Needs `h1` and `h5` not parallel to `h`.
+/// is the angle between `h` and `h6`), then [`parallel_elbow`]. Needs `h1` and `h5` not parallel
+/// to `h`.
 #[inline(always)]
 pub fn three_parallel_two_intersecting(arm: &Arm6, target: &Pose<f64>) -> IkSolutions<6, 8> {
-    let [h1, h, h3, h4, h5, h6] = arm.axes;
+    let [h1, h, _, _, h5, h6] = arm.axes;
     let [_, p12, p23, p34, p45, ..] = arm.offsets;
-    let (sign3, sign4) = (dot(h, h3), dot(h, h4));
-    // A direction across `h`, rotated by the sum of the parallel joints' angles.
-    let across = cross(h, h5);
     let (r06, v0) = wrist_target(arm, target);
     let mut out = IkSolutions::new();
     let (t1s, first) = rotation_to_height(h, h1, v0, dot(h, add(add(p12, p23), add(p34, p45))));
     for t1 in t1s {
-        let q1 = t1.back();
         // `h` seen from the tool flange: R16^T h.
-        let w = super::vector::mul_transposed(&r06, q1.rotate(h1, h));
-        let v1 = sub(t1.rotate(h1, v0), p12);
+        let w = super::vector::mul_transposed(&r06, t1.back().rotate(h1, h));
         let (q5s, fifth) = rotation_to_height(h, h5, h6, dot(w, h6));
         for q5 in q5s {
-            let (t6, sixth) = rotation_onto(h6, q5.back().rotate(h5, h), w);
-            let turned = t1.rotate(h1, mul(&r06, t6.rotate(h6, q5.back().rotate(h5, across))));
-            let (sum, summed) = rotation_onto(h, across, turned);
-            let v = sub(v1, sum.rotate(h, p45));
-            let (q3s, third) = rotation_to_distance(h3, p34, scale(p23, -1.0), norm_squared(v));
-            for q3 in q3s {
-                let (q2, second) = rotation_onto(h, add(p23, q3.rotate(h3, p34)), v);
-                let q4 = sign4 * (sum.angle - q2.angle - sign3 * q3.angle);
-                let all = first.and(fifth).and(sixth).and(summed).and(third).and(second);
-                let q = [q1.angle, q2.angle, q3.angle, q4, q5.angle, -t6.angle];
-                out.push(IkSolution::unmeasured(q.map(wrap), all.exact, all.singular));
-            }
+            parallel_elbow(arm, &r06, v0, t1, q5, first.and(fifth), &mut out);
         }
+    }
+    out
+}
+
+/// Axes 2, 3, 4 parallel (direction `h = h2`), no other two meeting: `q1` and `q5` together by
+/// subproblem 6 (the tool flange's height along `h`, and the angle between `h` and `h6`, are
+/// both fixed, and each depends on `q1` and `q5` alone; at most four pairs), then
+/// [`parallel_elbow`]. Needs `h1` and `h5` not parallel to `h`.
+#[inline(always)]
+pub fn three_parallel(arm: &Arm6, target: &Pose<f64>) -> IkSolutions<6, 8> {
+    let [h1, h, _, _, h5, h6] = arm.axes;
+    let [_, p12, p23, p34, p45, p56, _] = arm.offsets;
+    let (r06, v0) = wrist_target(arm, target);
+    let mut out = IkSolutions::new();
+    // h . R1^T v0 - h . R5 p56 = h . (p12 + p23 + p34 + p45) and h . R1^T R06 h6 - h . R5 h6 = 0,
+    // with t1 = -q1.
+    let pairs = two_heights(
+        [h; 4],
+        [h1, h5, h1, h5],
+        [v0, scale(p56, -1.0), mul(&r06, h6), scale(h6, -1.0)],
+        [dot(h, add(add(p12, p23), add(p34, p45))), 0.0],
+    );
+    for &(t1, q5) in pairs.as_slice() {
+        parallel_elbow(arm, &r06, v0, t1, q5, pairs.quality, &mut out);
+    }
+    out
+}
+
+/// The rest of an arm with axes 2, 3, 4 parallel, once `q1` (as `t1 = -q1`) and `q5` are known:
+/// `q6` by subproblem 1, the sum `q2 + q3 + q4` (with the axes' signs) by subproblem 1, then the
+/// planar elbow: `q3` by subproblem 3, `q2` by subproblem 1, `q4` from the sum. Two branches.
+#[inline(always)]
+fn parallel_elbow(arm: &Arm6, r06: &M3, v0: V3, t1: Turn, q5: Turn, quality: Quality, out: &mut IkSolutions<6, 8>) {
+    let [h1, h, h3, h4, h5, h6] = arm.axes;
+    let [_, p12, p23, p34, p45, p56, _] = arm.offsets;
+    let (sign3, sign4) = (dot(h, h3), dot(h, h4));
+    // A direction across `h`, rotated by the sum of the parallel joints' angles.
+    let across = cross(h, h5);
+    let q1 = t1.back();
+    // `h` seen from the tool flange: R16^T h.
+    let w = super::vector::mul_transposed(r06, q1.rotate(h1, h));
+    let v1 = sub(t1.rotate(h1, v0), p12);
+    let (t6, sixth) = rotation_onto(h6, q5.back().rotate(h5, h), w);
+    let turned = t1.rotate(h1, mul(r06, t6.rotate(h6, q5.back().rotate(h5, across))));
+    let (sum, summed) = rotation_onto(h, across, turned);
+    let v = sub(v1, sum.rotate(h, add(p45, q5.rotate(h5, p56))));
+    let (q3s, third) = rotation_to_distance(h3, p34, scale(p23, -1.0), norm_squared(v));
+    for q3 in q3s {
+        let (q2, second) = rotation_onto(h, add(p23, q3.rotate(h3, p34)), v);
+        let q4 = sign4 * (sum.angle - q2.angle - sign3 * q3.angle);
+        let all = quality.and(sixth).and(summed).and(third).and(second);
+        let q = [q1.angle, q2.angle, q3.angle, q4, q5.angle, -t6.angle];
+        out.push(IkSolution::unmeasured(q.map(wrap), all.exact, all.singular));
+    }
+}
+
+/// Spherical wrist (axes 4, 5, 6 meet, `p45 = p56 = 0`) with no two of axes 1, 2, 3 parallel or
+/// meeting: `q1`, `q2`, `q3` by subproblem 5 (`R1^T W - p12 = R2 (p23 + R3 p34)` for the wrist
+/// centre `W`; at most four triples), then the wrist.
+#[inline(always)]
+pub fn spherical(arm: &Arm6, target: &Pose<f64>) -> IkSolutions<6, 8> {
+    let [h1, h2, h3, ..] = arm.axes;
+    let [_, p12, p23, p34, ..] = arm.offsets;
+    let (r06, v0) = wrist_target(arm, target);
+    let mut out = IkSolutions::new();
+    let triples = three_rotations(scale(p12, -1.0), h1, v0, h2, p23, h3, p34);
+    for &[t1, q2, q3] in triples.as_slice() {
+        spherical_wrist(arm, &r06, [t1.back(), q2, q3], triples.quality, &mut out);
     }
     out
 }

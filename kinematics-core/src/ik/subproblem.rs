@@ -7,12 +7,19 @@
 //! - subproblem 1, [`rotation_onto`]: `rot(k, t) p1 = p2`;
 //! - subproblem 2, [`two_rotations`]: `rot(k1, t1) p1 = rot(k2, t2) p2`;
 //! - subproblem 3, [`rotation_to_distance`]: `|rot(k, t) p1 - p2| = d`;
-//! - subproblem 4, [`rotation_to_height`]: `h . rot(k, t) p = d`.
+//! - subproblem 4, [`rotation_to_height`]: `h . rot(k, t) p = d`;
+//! - subproblem 5, [`three_rotations`]: `p0 + rot(k1, t1) p1 = rot(k2, t2) (p2 + rot(k3, t3) p3)`;
+//! - subproblem 6, [`two_heights`]: two equations `h . rot(k, t1) p + h' . rot(k', t2) p' = d`.
 //!
 //! Subproblems 3 and 4 are both `a cos t + b sin t = c` ([`cos_sin_equation`]). No function here
 //! returns NaN for finite input: a degenerate case gives a representative angle and a flag.
 
 use super::vector::{V3, add, cross, dot, norm_squared, scale};
+
+mod circles;
+mod polynomial;
+
+pub use circles::{TurnPairs, TurnTriples, three_rotations, two_heights};
 
 /// Relative slack on a discriminant before an equation counts as out of reach: rounding alone
 /// takes a target exactly on the boundary of the workspace a few ulp past it.

@@ -1,0 +1,198 @@
+//! Real roots of a polynomial of degree at most four, for the subproblems whose two angles meet in
+//! a quartic (5 and 6). Each root is isolated between consecutive roots of the derivative (found
+//! the same way, down to a linear one) and then polished by Newton's method kept inside its bracket
+//! by bisection: no closed-form radicals, whose cancellation near double roots costs half the
+//! digits, and no heap.
+
+/// At most four real roots, in increasing order.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Roots {
+    values: [f64; 4],
+    count: usize,
+}
+
+impl Roots {
+    const NONE: Roots = Roots { values: [0.0; 4], count: 0 };
+
+    fn push(&mut self, x: f64) {
+        // A double root found from both sides of its critical point (or the critical point itself
+        // and a bracket beside it) is one root.
+        if self.count > 0 {
+            let last = self.values[self.count - 1];
+            if (x - last).abs() <= 1e-12 * (1.0 + x.abs()) {
+                return;
+            }
+        }
+        if self.count < 4 {
+            self.values[self.count] = x;
+            self.count += 1;
+        }
+    }
+
+    /// The roots found.
+    pub(crate) fn as_slice(&self) -> &[f64] {
+        &self.values[..self.count]
+    }
+}
+
+/// `c[0] + c[1] x + ... + c[n] x^n` by Horner's rule, with its derivative.
+fn evaluate(c: &[f64], x: f64) -> (f64, f64) {
+    let mut value = 0.0;
+    let mut slope = 0.0;
+    for &coefficient in c.iter().rev() {
+        slope = slope * x + value;
+        value = value * x + coefficient;
+    }
+    (value, slope)
+}
+
+/// A bound on the rounding error of [`evaluate`] at `x`: the sum of the terms' sizes.
+fn size_at(c: &[f64], x: f64) -> f64 {
+    let mut size = 0.0;
+    for &coefficient in c.iter().rev() {
+        size = size * x.abs() + coefficient.abs();
+    }
+    size
+}
+
+/// Below this times the terms' size, a polynomial's value at a critical point counts as zero:
+/// the critical point is a double root (a tangency), which rounding may lift a little off zero.
+const TOUCH: f64 = 1e-13;
+
+/// The root in `[lo, hi]`, where the values at the ends have opposite signs (or one is zero).
+fn bracketed(c: &[f64], mut lo: f64, mut hi: f64) -> f64 {
+    let (f_lo, _) = evaluate(c, lo);
+    if f_lo == 0.0 {
+        return lo;
+    }
+    let rising = f_lo < 0.0;
+    let mut x = 0.5 * (lo + hi);
+    // Bisection alone halves the bracket each step and needs about 64 steps from any finite
+    // bracket; Newton's steps, taken when they stay inside, usually finish in a handful.
+    for _ in 0..128 {
+        let (f, slope) = evaluate(c, x);
+        if f == 0.0 {
+            return x;
+        }
+        if (f < 0.0) == rising {
+            lo = x;
+        } else {
+            hi = x;
+        }
+        let newton = x - f / slope;
+        let next = if newton > lo && newton < hi && slope != 0.0 { newton } else { 0.5 * (lo + hi) };
+        if next == x || hi - lo <= 2.0 * f64::EPSILON * x.abs().max(f64::MIN_POSITIVE) {
+            return next;
+        }
+        x = next;
+    }
+    x
+}
+
+/// The real roots of `c[0] + c[1] x + ... + c[n] x^n` (`n = c.len() - 1`, at most 4, with
+/// `c[n] != 0`), each once, in increasing order. A critical point where the value is zero to
+/// rounding is a (double) root.
+pub(crate) fn real_roots(c: &[f64]) -> Roots {
+    let n = c.len() - 1;
+    let mut roots = Roots::NONE;
+    if n == 0 {
+        return roots;
+    }
+    if n == 1 {
+        roots.push(-c[0] / c[1]);
+        return roots;
+    }
+    // Every root lies within Cauchy's bound.
+    let lead = c[n];
+    let bound = 1.0 + c[..n].iter().fold(0.0_f64, |m, &x| m.max((x / lead).abs()));
+    let mut derivative = [0.0; 4];
+    for (i, slot) in derivative.iter_mut().enumerate().take(n) {
+        *slot = c[i + 1] * (i + 1) as f64;
+    }
+    let critical = real_roots(&derivative[..n]);
+    let mut edges = [0.0; 5];
+    let mut count = 0;
+    edges[count] = -bound;
+    count += 1;
+    for &x in critical.as_slice() {
+        if x > -bound && x < bound {
+            edges[count] = x;
+            count += 1;
+        }
+    }
+    // A critical point whose value is zero to rounding is a root, and its value counts as zero:
+    // the sign change rounding may leave beside it is the same (double) root.
+    let mut lo = edges[0];
+    let (mut f_lo, _) = evaluate(c, lo);
+    for i in 1..=count {
+        let hi = if i < count { edges[i] } else { bound };
+        let (mut f_hi, _) = evaluate(c, hi);
+        let touches = i < count && f_hi.abs() <= TOUCH * size_at(c, hi);
+        if touches {
+            f_hi = 0.0;
+        }
+        if f_lo != 0.0 && f_hi != 0.0 && (f_lo < 0.0) != (f_hi < 0.0) {
+            roots.push(bracketed(c, lo, hi));
+        }
+        if touches {
+            roots.push(hi);
+        }
+        lo = hi;
+        f_lo = f_hi;
+    }
+    roots
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The coefficients of `lead * (x - r1) ... (x - rk)`, lowest first.
+    fn from_roots(lead: f64, roots: &[f64]) -> [f64; 5] {
+        let mut c = [0.0; 5];
+        c[0] = lead;
+        for (k, &r) in roots.iter().enumerate() {
+            // Multiply by (x - r).
+            for i in (0..=k + 1).rev() {
+                let shifted = if i > 0 { c[i - 1] } else { 0.0 };
+                c[i] = shifted - r * c[i];
+            }
+        }
+        c
+    }
+
+    #[test]
+    fn four_distinct_roots_are_found_in_order() {
+        let c = from_roots(2.5, &[-3.0, -0.25, 0.5, 7.0]);
+        let roots = real_roots(&c);
+        assert_eq!(roots.as_slice().len(), 4);
+        for (found, expected) in roots.as_slice().iter().zip([-3.0, -0.25, 0.5, 7.0]) {
+            assert!((found - expected).abs() < 1e-13, "{roots:?}");
+        }
+    }
+
+    #[test]
+    fn no_real_roots_gives_none() {
+        // (x^2 + 1)(x^2 + 2x + 5)
+        let c = [5.0, 2.0, 6.0, 2.0, 1.0];
+        assert!(real_roots(&c).as_slice().is_empty());
+    }
+
+    #[test]
+    fn a_double_root_is_found_once() {
+        let c = from_roots(1.0, &[1.5, 1.5, -2.0, 4.0]);
+        let roots = real_roots(&c);
+        assert_eq!(roots.as_slice().len(), 3, "{roots:?}");
+        assert!(roots.as_slice().iter().any(|r| (r - 1.5).abs() < 1e-7));
+    }
+
+    #[test]
+    fn lower_degrees_work() {
+        assert_eq!(real_roots(&[-6.0, 2.0]).as_slice(), &[3.0]);
+        let quadratic = real_roots(&[-2.0, 1.0, 1.0]);
+        assert_eq!(quadratic.as_slice().len(), 2);
+        assert!((quadratic.as_slice()[0] + 2.0).abs() < 1e-15 && (quadratic.as_slice()[1] - 1.0).abs() < 1e-15);
+        let cubic = real_roots(&from_roots(-1.0, &[0.1, 0.2, 30.0])[..4]);
+        assert_eq!(cubic.as_slice().len(), 3, "{cubic:?}");
+    }
+}
