@@ -81,6 +81,25 @@ fn random_arm(rng: &mut Uniform, family: IkFamily) -> String {
             (0.0, 0.0, t[4]),
             (0.0, l[6], "0"),
         ],
+        // Axes 1, 2, 3 skew (offsets along both common normals, one twist not square), a
+        // spherical wrist.
+        IkFamily::Spherical => [
+            (l[0], l[1], t[0]),
+            (l[2], l[3], "1.1"),
+            (l[4], l[5], t[2]),
+            (0.0, l[6], t[3]),
+            (0.0, 0.0, t[4]),
+            (0.0, l[7], "0"),
+        ],
+        // UR-like, but axes 5 and 6 apart (a common normal of length l[8]).
+        IkFamily::ThreeParallel => [
+            (0.0, l[0], t[0]),
+            (l[1], 0.0, "0"),
+            (l[2], 0.0, "0"),
+            (0.0, l[3], t[3]),
+            (l[8], l[4], t[4]),
+            (0.0, l[5], "0"),
+        ],
         IkFamily::SphericalPrismaticThird => panic!("a prismatic arm: tested in the core and on the Stanford arm"),
         IkFamily::Planar => panic!("not a six-joint family"),
     };
@@ -96,6 +115,8 @@ fn solve(plan: &IkPlan, target: &Pose<f64>) -> IkSolutions<6, 8> {
         IkFamily::SphericalLastTwoIntersecting => kinematics_core::ik::spherical_last_two_intersecting(&arm, target),
         IkFamily::ThreeParallelTwoIntersecting => kinematics_core::ik::three_parallel_two_intersecting(&arm, target),
         IkFamily::SphericalPrismaticThird => kinematics_core::ik::spherical_prismatic_third(&arm, target),
+        IkFamily::Spherical => kinematics_core::ik::spherical(&arm, target),
+        IkFamily::ThreeParallel => kinematics_core::ik::three_parallel(&arm, target),
         IkFamily::Planar => panic!("not a six-joint family"),
     }
 }

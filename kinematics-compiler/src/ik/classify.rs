@@ -37,15 +37,23 @@ pub enum IkFamily {
     Planar,
     /// A spherical wrist, axes 1 and 2 meeting and joint 3 prismatic: the Stanford arm.
     SphericalPrismaticThird,
+    /// A spherical wrist, no two of axes 1, 2, 3 parallel or meeting: the general case.
+    Spherical,
+    /// Axes 2, 3, 4 parallel, axes 5 and 6 not meeting.
+    ThreeParallel,
 }
 
 impl IkFamily {
-    /// Every six-joint family, in the order they are tried.
-    pub const ALL: [IkFamily; 4] = [
+    /// Every six-joint revolute family, in the order they are tried: the special cases (a
+    /// quadratic first step, eight solutions at most) before the general ones they are special
+    /// cases of (a quartic first step).
+    pub const ALL: [IkFamily; 6] = [
         IkFamily::ThreeParallelTwoIntersecting,
         IkFamily::SphericalTwoParallel,
         IkFamily::SphericalFirstTwoIntersecting,
         IkFamily::SphericalLastTwoIntersecting,
+        IkFamily::Spherical,
+        IkFamily::ThreeParallel,
     ];
 
     /// A stable name (`kinematics inspect`, the generated `IK_FAMILY`).
@@ -57,6 +65,8 @@ impl IkFamily {
             IkFamily::ThreeParallelTwoIntersecting => "axes 2, 3, 4 parallel, axes 5 and 6 meet",
             IkFamily::Planar => "planar: revolute axes parallel, a prismatic joint along them at most",
             IkFamily::SphericalPrismaticThird => "spherical wrist, axes 1 and 2 meet, joint 3 prismatic",
+            IkFamily::Spherical => "spherical wrist",
+            IkFamily::ThreeParallel => "axes 2, 3, 4 parallel",
         }
     }
 
@@ -70,11 +80,14 @@ impl IkFamily {
             IkFamily::ThreeParallelTwoIntersecting => "three_parallel_two_intersecting",
             IkFamily::Planar => "PlanarArm::solve",
             IkFamily::SphericalPrismaticThird => "spherical_prismatic_third",
+            IkFamily::Spherical => "spherical",
+            IkFamily::ThreeParallel => "three_parallel",
         }
     }
 
     /// The subproblems it is composed of, in order (IK-Geo's numbering: 1 a rotation onto a
-    /// vector, 2 two rotations, 3 a rotation to a distance, 4 a rotation to a height).
+    /// vector, 2 two rotations, 3 a rotation to a distance, 4 a rotation to a height, 5 three
+    /// rotations of a point, 6 two angles from two heights; 5 and 6 solve a quartic).
     pub fn subproblems(self) -> &'static str {
         match self {
             IkFamily::SphericalTwoParallel => "q1 by SP4, q3 by SP3, q2 by SP1; wrist: q4, q5 by SP2, q6 by SP1",
@@ -90,6 +103,10 @@ impl IkFamily {
                 "the slide from the height; the turn about the axis by SP1 (three revolute joints); the elbow by SP3, \
                  the shoulder by SP1, the third by difference"
             }
+            IkFamily::Spherical => "q1, q2, q3 by SP5; wrist: q4, q5 by SP2, q6 by SP1",
+            IkFamily::ThreeParallel => {
+                "q1, q5 by SP6, q6 by SP1, q2+q3+q4 by SP1, q3 by SP3, q2 by SP1, q4 by difference"
+            }
         }
     }
 
@@ -103,6 +120,8 @@ impl IkFamily {
             IkFamily::SphericalLastTwoIntersecting => &[WRIST[0], WRIST[1], WRIST[2], (1, 2)],
             IkFamily::Planar => &[],
             IkFamily::SphericalPrismaticThird => &[WRIST[0], WRIST[1], WRIST[2], (0, 1)],
+            IkFamily::Spherical => &WRIST,
+            IkFamily::ThreeParallel => &[(1, 2), (1, 3), (0, 1), (4, 1)],
         }
     }
 
@@ -356,7 +375,13 @@ pub fn classify_with(tree: &KinematicTree, base: &str, tip: &str, free: Option<&
         let mut reasons = Vec::new();
         for family in IkFamily::ALL {
             match plan(&lines, family) {
-                Ok((points, parallel_to)) => return Ok(finish(base, tip, &zero, family, points, parallel_to, None)),
+                Ok((points, parallel_to)) => {
+                    let plan = finish(base, tip, &zero, family, points, parallel_to, None);
+                    match solves_samples(&plan) {
+                        Ok(()) => return Ok(plan),
+                        Err(reason) => note(&mut reasons, family, Fault::Arm(reason)),
+                    }
+                }
                 Err(fault) => note(&mut reasons, family, fault),
             }
         }
@@ -394,7 +419,11 @@ pub fn classify_with(tree: &KinematicTree, base: &str, tip: &str, free: Option<&
         let (points, parallel_to) = found.expect("every sample's plan succeeded, and there are samples");
         let joint = &zero.joints[index];
         let free = FreeJoint { name: joint.name.clone(), index, axis: joint.axis, point: joint.point };
-        return Ok(finish(base, tip, &samples[0], family, points, parallel_to, Some(free)));
+        let plan = finish(base, tip, &samples[0], family, points, parallel_to, Some(free));
+        match solves_samples(&plan) {
+            Ok(()) => return Ok(plan),
+            Err(reason) => note(&mut reasons, family, Fault::Arm(reason)),
+        }
     }
     Err(none(reasons.join("; ")))
 }
@@ -526,7 +555,21 @@ fn plan(lines: &Lines<'_>, family: IkFamily) -> Result<Placement, Fault> {
             parallel_to[2] = Some(1);
             parallel_to[3] = Some(1);
         }
+        IkFamily::ThreeParallel => {
+            lines.parallel(1, 2)?;
+            lines.parallel(1, 3)?;
+            not_parallel(0, 1)?;
+            not_parallel(4, 1)?;
+            parallel_to[2] = Some(1);
+            parallel_to[3] = Some(1);
+        }
         IkFamily::Planar => return Err(Fault::Arm("not a six-joint family".to_owned())),
+        IkFamily::Spherical => {
+            let centre = lines.wrist_centre().map_err(Fault::Wrist)?;
+            points[3] = Some(centre);
+            points[4] = Some(centre);
+            points[5] = Some(centre);
+        }
         IkFamily::SphericalTwoParallel
         | IkFamily::SphericalPrismaticThird
         | IkFamily::SphericalFirstTwoIntersecting
@@ -571,12 +614,16 @@ fn distance_depends_on_its_joint(lines: &Lines<'_>, family: IkFamily, points: &[
     let (joint, sides) = match family {
         // |p23 + rot(h3, q3) p34| is the distance.
         IkFamily::ThreeParallelTwoIntersecting
+        | IkFamily::ThreeParallel
         | IkFamily::SphericalTwoParallel
         | IkFamily::SphericalFirstTwoIntersecting => (2, [across(2, 1, 2), across(2, 2, 3)]),
         // |rot(h1, -q1) v - p12| is the distance: only p12 is the robot's.
         IkFamily::SphericalLastTwoIntersecting => (0, [across(0, 0, 1), f64::INFINITY]),
         // A slide changes the distance whatever its direction (the quadratic has its roots).
         IkFamily::Planar | IkFamily::SphericalPrismaticThird => return Ok(()),
+        // Subproblem 5 ties all three; the solver's trial on sample poses ([`solves_samples`])
+        // catches an arm it cannot solve.
+        IkFamily::Spherical => return Ok(()),
     };
     if sides.iter().any(|&d| d <= tolerance) {
         return Err(Fault::Arm(format!(
@@ -584,6 +631,64 @@ fn distance_depends_on_its_joint(lines: &Lines<'_>, family: IkFamily, points: &[
              reaches only poses at one distance)",
             joint + 1
         )));
+    }
+    Ok(())
+}
+
+/// Configurations at which [`solves_samples`] tries a plan: spread over every joint's turn, away
+/// from the zero configuration (where wrists and elbows are often singular).
+const SAMPLE_CONFIGURATIONS: [[f64; 6]; 8] = [
+    [0.3, -1.2, 1.0, 0.4, -0.7, 2.0],
+    [-2.1, 0.5, -0.8, 1.9, 1.3, -0.4],
+    [1.4, 2.2, 0.6, -2.6, 0.9, 1.1],
+    [-0.6, -0.3, 2.7, 0.8, -1.8, -2.9],
+    [2.8, 1.1, -1.9, -0.5, 2.4, 0.2],
+    [-1.5, -2.5, -0.2, 2.3, -0.4, 1.7],
+    [0.9, 0.2, 1.6, -1.2, 1.6, -1.3],
+    [-2.7, 1.8, -2.4, 0.1, -2.2, 2.6],
+];
+
+/// Rule: a six-joint revolute family is taken only if its solver, run here on the plan's geometry,
+/// finds the joint values of sample poses of this very arm (at least six of the eight
+/// [`SAMPLE_CONFIGURATIONS`]: a sample may land near a singularity of a regular arm). The
+/// families' structural tests (parallel, meeting) say when a decomposition applies; this says
+/// that it is not degenerate for the arm at hand (a quartic family's equations can lose their
+/// hold on an angle in ways no single relation of two axes shows).
+fn solves_samples(plan: &IkPlan) -> Result<(), String> {
+    use kinematics_core::Pose;
+    use kinematics_core::ik::{self, Arm6, IkSolutions};
+    type Solver = fn(&Arm6, &Pose<f64>) -> IkSolutions<6, 8>;
+    let IkGeometry::Six(six) = &plan.geometry else {
+        return Ok(());
+    };
+    let solver: Solver = match plan.family {
+        IkFamily::ThreeParallelTwoIntersecting => ik::three_parallel_two_intersecting,
+        IkFamily::SphericalTwoParallel => ik::spherical_two_parallel,
+        IkFamily::SphericalFirstTwoIntersecting => ik::spherical_first_two_intersecting,
+        IkFamily::SphericalLastTwoIntersecting => ik::spherical_last_two_intersecting,
+        IkFamily::Spherical => ik::spherical,
+        IkFamily::ThreeParallel => ik::three_parallel,
+        // A slide is no turn for `Arm6::pose`; the Stanford family's tests are structural.
+        IkFamily::SphericalPrismaticThird | IkFamily::Planar => return Ok(()),
+    };
+    let arm = Arm6 { axes: six.axes, offsets: six.offsets, tool_rotation: six.tool_rotation };
+    let turn_apart = |a: f64, b: f64| {
+        let d = (a - b).rem_euclid(std::f64::consts::TAU);
+        d.min(std::f64::consts::TAU - d)
+    };
+    let recovered = SAMPLE_CONFIGURATIONS
+        .iter()
+        .filter(|q| {
+            let target = arm.pose(q);
+            solver(&arm, &target).exact().any(|s| s.q.iter().zip(q.iter()).all(|(&a, &b)| turn_apart(a, b) < 1e-6))
+        })
+        .count();
+    if recovered * 4 < SAMPLE_CONFIGURATIONS.len() * 3 {
+        return Err(format!(
+            "its solver finds only {recovered} of {} sample configurations from their poses (a degenerate arm for \
+             this family)",
+            SAMPLE_CONFIGURATIONS.len()
+        ));
     }
     Ok(())
 }
