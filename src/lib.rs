@@ -66,7 +66,7 @@
 //!   [`Pose`], `trig = "std"`, and batches that choose AVX2 at run time when the CPU has it (a
 //!   plain build targets baseline x86-64). Without it the crate is `#![no_std]` and a derived robot needs
 //!   nothing but [`kinematics_core`] (no allocation, no XML, TOML, JSON or nalgebra code).
-//! - `rayon`: [`parallel::batch`], batches split across cores.
+//! - `rayon`: `parallel::batch`, batches split across cores.
 //!
 //! Generated code reaches what it needs through one path, `kinematics::__private` (hidden from
 //! the docs, not for users: it may change with the code generator).

@@ -1,6 +1,6 @@
 //! Every robot in `robots/`, compiled to Rust at build time by `kinematics-compiler`, and a registry
 //! of the generated functions for the agreement tests (`tests/`) to iterate over; and the same for
-//! a fixed-seed set of random robots ([`RANDOM`]), compiled through `emit_robot` as the derive does.
+//! a fixed-seed set of random robots ([`random::RANDOM`]), compiled through `emit_robot` as the derive does.
 //!
 //! Being a workspace member, this crate also puts the generated code through the workspace's
 //! `cargo clippy -D warnings`: the emitted code must be clippy-clean in a user's crate.

@@ -134,7 +134,7 @@ where
 pub const SIN_COS_WEIGHT: usize = 40;
 
 impl OpCount {
-    /// One number to compare forms by: sines and cosines weighted by [`SIN_COS_WEIGHT`], plus every
+    /// One number to compare forms by: sines and cosines weighted by `SIN_COS_WEIGHT`, plus every
     /// multiplication and addition.
     pub fn weighted(&self) -> usize {
         self.sin_cos * SIN_COS_WEIGHT + self.mul + self.add

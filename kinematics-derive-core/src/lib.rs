@@ -1,9 +1,9 @@
 //! The logic of `#[derive(Kinematics)]`, as a plain library so it can be tested and benchmarked
 //! without a compiler: parse the `#[kinematics(...)]` attribute ([`options`]), read and validate
-//! the description ([`source`]), compile it and emit the robot's impls (through
+//! the description (the private `source` module), compile it and emit the robot's impls (through
 //! `kinematics_compiler::robot`). Every fault becomes a spanned `compile_error!`, all of them at
 //! once (darling's accumulator); nothing panics. With any fault, the output also holds a stub of
-//! what the derive would have defined ([`fallback`]), so the user sees the real errors rather than
+//! what the derive would have defined (the private `fallback` module), so the user sees the real errors rather than
 //! a cascade of "no function `tip_pose`" and "trait `Kinematics` not implemented".
 //! The `kinematics-derive` proc-macro crate is a shim over [`expand`].
 

@@ -110,7 +110,7 @@ fn floating_base(key: Option<&SpannedValue<Override<String>>>) -> Option<Spanned
     })
 }
 
-/// What [`crate::source::load`] needs: the keys that name the description, its exactness policy
+/// What the crate-private `source::read` needs: the keys that name the description, its exactness policy
 /// and the links asked for.
 #[derive(Debug)]
 pub struct SourceOptions<'a> {

@@ -1,5 +1,5 @@
 //! Inverse kinematics, compiled: the chain's geometry at its zero configuration ([`geometry`]),
-//! the closed-form family that solves it, decided at compile time ([`classify`]: which axes are
+//! the closed-form family that solves it, decided at compile time ([`mod@classify`]: which axes are
 //! parallel and which meet, and where to place the points on them), and the functions emitted
 //! for it ([`emit`]: the family's solver in `kinematics-core` called with the geometry as
 //! constants).

@@ -42,7 +42,10 @@ fn wrist_target(arm: &Arm6, target: &Pose<f64>) -> (M3, V3) {
 }
 
 /// The spherical wrist's joints 4, 5, 6 for arm angles `q1, q2, q3`: `rot(h4, q4) rot(h5, q5)
-/// rot(h6, q6) = R03^T R06` by subproblem 2 (`q4`, `q5`) and subproblem 1 (`q6`), two branches.
+/// rot(h6, q6) = R03^T R06`, `q5` by subproblem 4 (turning about `h4` keeps the height of `R36 h6`
+/// along it), then `q4` and `q6` each by subproblem 1. Two branches. (Subproblem 2 would give `q4`
+/// with `q5`, but from where two cones nearly touch, which near the singularity loses half the
+/// digits of `q4` and `q6`; subproblem 1 loses only as many as the distance to it.)
 #[inline(always)]
 fn spherical_wrist(arm: &Arm6, r06: &M3, [q1, q2, q3]: [Turn; 3], quality: Quality, out: &mut IkSolutions<6, 8>) {
     spherical_wrist_after(arm, r06, [q1, q2, q3], None, quality, out);
@@ -62,11 +65,12 @@ fn spherical_wrist_after(
     let back = |v: V3| q3.back().rotate(h[2], q2.back().rotate(h[1], q1.back().rotate(h[0], v)));
     let r36_h6 = back(mul(r06, h[5]));
     let r36_h5 = back(mul(r06, h[4]));
-    let (pairs, wrist) = two_rotations(h[3], r36_h6, h[4], h[5]);
-    for (t4, q5) in pairs {
-        let (q6, last) = rotation_onto(h[5], h[4], q5.back().rotate(h[4], t4.rotate(h[3], r36_h5)));
-        let all = quality.and(wrist).and(last);
-        let mut q = [q1.angle, q2.angle, q3.angle, -t4.angle, q5.angle, q6.angle].map(wrap);
+    let (q5s, fifth) = rotation_to_height(h[3], h[4], h[5], dot(h[3], r36_h6));
+    for q5 in q5s {
+        let (q4, fourth) = rotation_onto(h[3], q5.rotate(h[4], h[5]), r36_h6);
+        let (q6, sixth) = rotation_onto(h[5], h[4], q5.back().rotate(h[4], q4.back().rotate(h[3], r36_h5)));
+        let all = quality.and(fifth).and(fourth).and(sixth);
+        let mut q = [q1.angle, q2.angle, q3.angle, q4.angle, q5.angle, q6.angle].map(wrap);
         if let Some(slide) = slide {
             q[2] = slide;
         }
@@ -166,7 +170,7 @@ pub fn spherical_last_two_intersecting(arm: &Arm6, target: &Pose<f64>) -> IkSolu
 
 /// Axes 2, 3, 4 parallel (direction `h = h2`) and axes 5, 6 meeting (`p56 = 0`): the UR family.
 /// `q1` by subproblem 4 (the tool flange's height along `h` is fixed), `q5` by subproblem 4 (so
-/// is the angle between `h` and `h6`), then [`parallel_elbow`]. Needs `h1` and `h5` not parallel
+/// is the angle between `h` and `h6`), then `parallel_elbow`. Needs `h1` and `h5` not parallel
 /// to `h`.
 #[inline(always)]
 pub fn three_parallel_two_intersecting(arm: &Arm6, target: &Pose<f64>) -> IkSolutions<6, 8> {
@@ -189,7 +193,7 @@ pub fn three_parallel_two_intersecting(arm: &Arm6, target: &Pose<f64>) -> IkSolu
 /// Axes 2, 3, 4 parallel (direction `h = h2`), no other two meeting: `q1` and `q5` together by
 /// subproblem 6 (the tool flange's height along `h`, and the angle between `h` and `h6`, are
 /// both fixed, and each depends on `q1` and `q5` alone; at most four pairs), then
-/// [`parallel_elbow`]. Needs `h1` and `h5` not parallel to `h`.
+/// `parallel_elbow`. Needs `h1` and `h5` not parallel to `h`.
 #[inline(always)]
 pub fn three_parallel(arm: &Arm6, target: &Pose<f64>) -> IkSolutions<6, 8> {
     let [h1, h, _, _, h5, h6] = arm.axes;

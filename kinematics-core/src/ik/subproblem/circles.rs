@@ -231,7 +231,7 @@ pub fn two_heights(h: [V3; 4], k: [V3; 4], p: [V3; 4], d: [f64; 2]) -> TurnPairs
 ///
 /// A rotation about `k2` keeps both a vector's component along `k2` and its length, so
 /// `k2 . (p0 + rot(k1, t1) p1) = k2 . (p2 + rot(k3, t3) p3)` and
-/// `|p0 + rot(k1, t1) p1|^2 = |p2 + rot(k3, t3) p3|^2` tie `t1` to `t3` alone ([`circle_pair`]);
+/// `|p0 + rot(k1, t1) p1|^2 = |p2 + rot(k3, t3) p3|^2` tie `t1` to `t3` alone (`circle_pair`);
 /// then `t2` is subproblem 1.
 pub fn three_rotations(p0: V3, k1: V3, p1: V3, k2: V3, p2: V3, k3: V3, p3: V3) -> TurnTriples {
     let (along1, across1, turned1) = seen_through(k2, k1, p1);
