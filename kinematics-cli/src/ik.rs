@@ -153,6 +153,8 @@ pub fn solve(plan: &IkPlan, target: &Pose<f64>, forward: &dyn Fn(&[f64]) -> Pose
                 }
                 IkFamily::SphericalLastTwoIntersecting => kinematics::ik::spherical_last_two_intersecting(&arm, target),
                 IkFamily::SphericalPrismaticThird => kinematics::ik::spherical_prismatic_third(&arm, target),
+                IkFamily::Spherical => kinematics::ik::spherical(&arm, target),
+                IkFamily::ThreeParallel => kinematics::ik::three_parallel(&arm, target),
                 IkFamily::ThreeParallelTwoIntersecting | IkFamily::Planar => {
                     kinematics::ik::three_parallel_two_intersecting(&arm, target)
                 }
