@@ -71,6 +71,10 @@
 //! Generated code reaches what it needs through one path, `kinematics::__private` (hidden from
 //! the docs, not for users: it may change with the code generator).
 #![cfg_attr(not(feature = "std"), no_std)]
+// docs.rs builds with `--cfg docsrs` on nightly (`package.metadata.docs.rs` in Cargo.toml); there
+// `doc_cfg` badges each feature-gated item with the feature it needs (nightly folded the former
+// `doc_auto_cfg` into `doc_cfg`, rust-lang/rust#138907).
+#![cfg_attr(docsrs, feature(doc_cfg))]
 
 pub use kinematics_core::{
     AGREEMENT_TOLERANCE, AGREEMENT_TOLERANCE_F32, F32x8, F64x4, JointLimits, Kinematics, KinematicsError, LaneValue,
@@ -90,6 +94,7 @@ pub use kinematics_runtime as runtime;
 pub use kinematics_runtime::{Configurations, ReferenceFk, ReferenceModel, RuntimeError};
 
 #[cfg(feature = "rayon")]
+#[cfg_attr(docsrs, doc(cfg(feature = "rayon")))]
 pub mod parallel;
 
 /// What generated code calls: the core crate, and with `std` the loader and the reference.
@@ -121,6 +126,7 @@ macro_rules! __kinematics_with_std {
 }
 
 #[cfg(feature = "std")]
+#[cfg_attr(docsrs, doc(cfg(feature = "std")))]
 /// Reads and validates a robot description file: `.urdf`/`.xml` (URDF), `.toml` or `.json` (DH table).
 ///
 /// Errors name the file as given, the element (joint, link, DH row) and the fault. Decimal angles
@@ -143,6 +149,7 @@ pub fn load(path: impl AsRef<std::path::Path>) -> Result<KinematicTree, LoadErro
 /// # Ok::<(), kinematics::LoadError>(())
 /// ```
 #[cfg(feature = "std")]
+#[cfg_attr(docsrs, doc(cfg(feature = "std")))]
 pub fn load_with(path: impl AsRef<std::path::Path>, exact_angles: ExactAngles) -> Result<KinematicTree, LoadError> {
     let path = path.as_ref();
     let label = path.display().to_string();

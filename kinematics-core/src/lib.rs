@@ -13,6 +13,10 @@
 //! `trig = "std"`); `nalgebra` adds conversions of [`Pose`] to nalgebra's types and the pose
 //! distance the agreement checks use. The facade's default `std` feature turns both on.
 #![no_std]
+// docs.rs builds with `--cfg docsrs` on nightly (`package.metadata.docs.rs` in Cargo.toml); there
+// `doc_cfg` badges each feature-gated item with the feature it needs (nightly folded the former
+// `doc_auto_cfg` into `doc_cfg`, rust-lang/rust#138907).
+#![cfg_attr(docsrs, feature(doc_cfg))]
 
 #[cfg(feature = "std")]
 extern crate std;

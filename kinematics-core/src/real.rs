@@ -82,6 +82,7 @@ impl Real for f32 {
 /// Our routines ([`crate::trig`]) are the default; this is the choice for users who want the
 /// platform's library, e.g. to compare against it. Lane types call it lane by lane.
 #[cfg(feature = "std")]
+#[cfg_attr(docsrs, doc(cfg(feature = "std")))]
 pub trait StdTrig: Real {
     /// `(sin x, cos x)` by the standard library.
     fn sin_cos_std(self) -> (Self, Self);

@@ -21,6 +21,10 @@
 //! assert_eq!(tree.joint_by_name("swing").map(|j| j.axis), Some([0.0, 0.0, 1.0]));
 //! # Ok::<(), kinematics_model::LoadError>(())
 //! ```
+// docs.rs builds with `--cfg docsrs` on nightly (`package.metadata.docs.rs` in Cargo.toml); there
+// `doc_cfg` badges each feature-gated item with the feature it needs (nightly folded the former
+// `doc_auto_cfg` into `doc_cfg`, rust-lang/rust#138907).
+#![cfg_attr(docsrs, feature(doc_cfg))]
 
 mod angle;
 mod description;
