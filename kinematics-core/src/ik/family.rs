@@ -14,7 +14,8 @@
 
 use super::solutions::{IkSolution, IkSolutions};
 use super::subproblem::{
-    Quality, Turn, rotation_onto, rotation_to_distance, rotation_to_height, three_rotations, two_heights, two_rotations,
+    Quality, Turn, rotation_onto, rotation_to_distance, rotation_to_height, rotation_to_height_on_great_circle,
+    three_rotations, two_heights, two_rotations,
 };
 use super::vector::{M3, V3, add, cross, dot, mul, mul_by_transpose, norm_squared, scale, sub, wrap};
 use crate::pose::Pose;
@@ -41,6 +42,10 @@ fn wrist_target(arm: &Arm6, target: &Pose<f64>) -> (M3, V3) {
     (r06, point)
 }
 
+/// Below this (the cosine between two unit axes) a wrist's axes are square for
+/// [`rotation_to_height_on_great_circle`]: the rounding of axes written as exact quarter turns.
+const ORTHOGONAL: f64 = 1e-15;
+
 /// The spherical wrist's joints 4, 5, 6 for arm angles `q1, q2, q3`: `rot(h4, q4) rot(h5, q5)
 /// rot(h6, q6) = R03^T R06`, `q5` by subproblem 4 (turning about `h4` keeps the height of `R36 h6`
 /// along it), then `q4` and `q6` each by subproblem 1. Two branches. (Subproblem 2 would give `q4`
@@ -65,7 +70,14 @@ fn spherical_wrist_after(
     let back = |v: V3| q3.back().rotate(h[2], q2.back().rotate(h[1], q1.back().rotate(h[0], v)));
     let r36_h6 = back(mul(r06, h[5]));
     let r36_h5 = back(mul(r06, h[4]));
-    let (q5s, fifth) = rotation_to_height(h[3], h[4], h[5], dot(h[3], r36_h6));
+    // An orthogonal wrist (the usual one: h4 and h6 both square to h5, known at compile time, so
+    // the test folds away) takes the well-conditioned form of subproblem 4.
+    let orthogonal = dot(h[3], h[4]).abs() <= ORTHOGONAL && dot(h[5], h[4]).abs() <= ORTHOGONAL;
+    let (q5s, fifth) = if orthogonal {
+        (rotation_to_height_on_great_circle(h[3], h[4], h[5], r36_h6), Quality::EXACT)
+    } else {
+        rotation_to_height(h[3], h[4], h[5], dot(h[3], r36_h6))
+    };
     for q5 in q5s {
         let (q4, fourth) = rotation_onto(h[3], q5.rotate(h[4], h[5]), r36_h6);
         let (q6, sixth) = rotation_onto(h[5], h[4], q5.back().rotate(h[4], q4.back().rotate(h[3], r36_h5)));

@@ -7,7 +7,8 @@
 //! - subproblem 1, [`rotation_onto`]: `rot(k, t) p1 = p2`;
 //! - subproblem 2, [`two_rotations`]: `rot(k1, t1) p1 = rot(k2, t2) p2`;
 //! - subproblem 3, [`rotation_to_distance`]: `|rot(k, t) p1 - p2| = d`;
-//! - subproblem 4, [`rotation_to_height`]: `h . rot(k, t) p = d`;
+//! - subproblem 4, [`rotation_to_height`]: `h . rot(k, t) p = d` (and
+//!   [`rotation_to_height_on_great_circle`], its well-conditioned form for orthogonal wrists);
 //! - subproblem 5, [`three_rotations`]: `p0 + rot(k1, t1) p1 = rot(k2, t2) (p2 + rot(k3, t3) p3)`;
 //! - subproblem 6, [`two_heights`]: two equations `h . rot(k, t1) p + h' . rot(k', t2) p' = d`.
 //!
@@ -165,6 +166,25 @@ pub fn rotation_to_height(h: V3, k: V3, p: V3, d: f64) -> ([Turn; 2], Quality) {
     let a = dot(h, p) - hk_kp;
     let b = dot(h, cross(k, p));
     cos_sin_equation(a, b, d - hk_kp)
+}
+
+/// Subproblem 4 for an orthogonal wrist: the angles `t` with `h . rot(k, t) p = h . v`, for unit
+/// `h`, `k`, `p`, `v` with `h` and `p` both square to `k` (so `rot(k, t) p` sweeps the great circle
+/// through `h`). Then `h . rot(k, t) p = cos(t - phi)` for the angle `phi` of `h` on that circle,
+/// and the half-width `delta` of the solutions has `cos delta = h . v` and `sin delta = |h x v|`:
+/// taking the sine from the cross product keeps its digits where the height is near `+-1` (near
+/// the wrist's singularity), which `sqrt(1 - height^2)` would lose (half of them at a distance
+/// of 1e-8 rad). Always exact: `v` is reached by construction.
+#[inline(always)]
+pub fn rotation_to_height_on_great_circle(h: V3, k: V3, p: V3, v: V3) -> [Turn; 2] {
+    let (cos_phi, sin_phi) = (dot(h, p), dot(h, cross(k, p)));
+    let cos_delta = dot(h, v);
+    let sin_delta = libm::sqrt(norm_squared(cross(h, v)));
+    let turn = |cos: f64, sin: f64| Turn { angle: crate::trig::atan2(sin, cos), cos, sin };
+    [
+        turn(cos_phi * cos_delta - sin_phi * sin_delta, sin_phi * cos_delta + cos_phi * sin_delta),
+        turn(cos_phi * cos_delta + sin_phi * sin_delta, sin_phi * cos_delta - cos_phi * sin_delta),
+    ]
 }
 
 /// Subproblem 2: the angle pairs `(t1, t2)` with `rot(k1, t1) p1 = rot(k2, t2) p2` about unit
