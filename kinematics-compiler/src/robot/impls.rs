@@ -1,0 +1,108 @@
+//! The block around everything: the generic bodies, the type's `impl` (constants, functions,
+//! `reference()`), `impl Kinematics` and `impl ReferenceModel`.
+
+use kinematics_model::ExactAngles;
+use proc_macro2::TokenStream;
+use quote::quote;
+
+use super::functions::Functions;
+use super::{Context, constants, number};
+
+/// The whole output, `const _: () = { ... };`, for `self_ty` with the functions of `out`.
+pub(super) fn robot_block(self_ty: &TokenStream, cx: &Context<'_>, out: &Functions) -> TokenStream {
+    let p = &cx.p;
+    let (generic, typed) = (&out.generic, &out.typed);
+    let (impl_generics, where_clause) = (&cx.spec.impl_generics, &cx.spec.where_clause);
+    let inherent = constants::inherent(cx);
+    let of_trait = constants::of_trait(cx);
+    let reference = reference(cx);
+    let into = trait_functions(cx);
+    quote! {
+        const _: () = {
+        #(#generic)*
+
+        #[allow(clippy::approx_constant)] // limits and offsets are kept exactly as the description gives them
+        #[allow(clippy::type_complexity)] // several tips' poses and Jacobians, as arrays of pairs
+        impl #impl_generics #self_ty #where_clause {
+            #inherent
+
+            #(#typed)*
+
+            #p::with_std! {
+                /// The runtime reference model of this robot, built from the same description.
+                pub fn reference() -> ::core::result::Result<#p::ReferenceFk, #p::LoadError> {
+                    #reference.map(#p::ReferenceFk::new)
+                }
+            }
+        }
+
+        #[allow(clippy::approx_constant)] // limits are kept exactly as the description gives them
+        impl #impl_generics #p::Kinematics for #self_ty #where_clause {
+            #of_trait
+
+            #into
+        }
+
+        #p::with_std! {
+            impl #impl_generics #p::ReferenceModel for #self_ty #where_clause {
+                fn reference() -> ::core::result::Result<#p::ReferenceFk, #p::LoadError> {
+                    Self::reference()
+                }
+            }
+        }
+        };
+    }
+}
+
+/// `tip_poses_into` and `link_poses_into` of `impl Kinematics`: the slice checked against the
+/// robot's lengths, then the generic bodies' values copied in.
+fn trait_functions(cx: &Context<'_>) -> TokenStream {
+    let (p, robot, n_lit, m_lit, k_lit) = (&cx.p, cx.tree().name(), &cx.n_lit, &cx.m_lit, &cx.k_lit);
+    let jn = constants::joint_names(cx);
+    let tip_poses_body = if cx.tips.is_empty() {
+        quote!(let _ = (q, out);)
+    } else if cx.one {
+        quote!(out[0] = generic_tip_poses(q);)
+    } else {
+        quote!(out.copy_from_slice(&generic_tip_poses(q));)
+    };
+    quote! {
+            fn tip_poses_into(q: &[f64], out: &mut [#p::Pose<f64>]) -> ::core::result::Result<(), #p::KinematicsError> {
+                let q = #p::q_array::<#n_lit>(#robot, &#jn, q)?;
+                #p::check_output(#robot, #k_lit, out.len())?;
+                #tip_poses_body
+                ::core::result::Result::Ok(())
+            }
+
+            fn link_poses_into(q: &[f64], out: &mut [#p::Pose<f64>]) -> ::core::result::Result<(), #p::KinematicsError> {
+                let q = #p::q_array::<#n_lit>(#robot, &#jn, q)?;
+                #p::check_output(#robot, #m_lit, out.len())?;
+                out.copy_from_slice(&generic_link_poses(q));
+                ::core::result::Result::Ok(())
+            }
+    }
+}
+
+/// The expression loading the reference model's tree: the description's text parsed with the
+/// tree's own exactness policy (and free-flying root), so the reference is the robot the code
+/// was compiled from.
+fn reference(cx: &Context<'_>) -> TokenStream {
+    let p = &cx.p;
+    let (label, text) = (&cx.spec.source_label, &cx.spec.source_text);
+    let policy = policy_tokens(p, cx.tree().exact_angles());
+    match &cx.spec.floating_base {
+        None => quote!(#p::parse_source_with(#label, #text, #policy)),
+        Some(link) => quote!(#p::parse_source_floating(#label, #text, #policy, #link)),
+    }
+}
+
+/// The policy as an expression of type `ExactAngles`.
+fn policy_tokens(p: &TokenStream, policy: ExactAngles) -> TokenStream {
+    match policy {
+        ExactAngles::Off => quote!(#p::ExactAngles::Off),
+        ExactAngles::Within(tolerance) => {
+            let tolerance = number(tolerance);
+            quote!(#p::ExactAngles::Within(#tolerance))
+        }
+    }
+}
