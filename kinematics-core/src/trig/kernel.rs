@@ -135,3 +135,57 @@ pub fn in_fast_range(x: f64) -> bool {
 pub fn sin_cos_slow(x: f64) -> (f64, f64) {
     libm::sincos(x)
 }
+
+/// A scalar type with a fast path and a slow path: what the lane loop (`sin_cos_lanes` in the
+/// parent module) needs, so one loop serves `f64` and `f32`.
+pub trait Kernel: Copy {
+    /// Zero, the padding of a chunk's unused lanes.
+    const ZERO: Self;
+    /// The branch-free fast path ([`sin_cos_fast_f64`], [`sin_cos_fast_f32`]).
+    fn sin_cos_fast(self) -> (Self, Self);
+    /// Whether the fast path is right for this value ([`in_fast_range`]).
+    fn in_fast_range(self) -> bool;
+    /// The slow path ([`sin_cos_slow`]).
+    fn sin_cos_slow(self) -> (Self, Self);
+}
+
+impl Kernel for f64 {
+    const ZERO: Self = 0.0;
+
+    #[inline(always)]
+    fn sin_cos_fast(self) -> (Self, Self) {
+        sin_cos_fast_f64(self)
+    }
+
+    #[inline(always)]
+    fn in_fast_range(self) -> bool {
+        in_fast_range(self)
+    }
+
+    #[inline(always)]
+    fn sin_cos_slow(self) -> (Self, Self) {
+        sin_cos_slow(self)
+    }
+}
+
+impl Kernel for f32 {
+    const ZERO: Self = 0.0;
+
+    #[inline(always)]
+    fn sin_cos_fast(self) -> (Self, Self) {
+        sin_cos_fast_f32(self)
+    }
+
+    #[inline(always)]
+    fn in_fast_range(self) -> bool {
+        in_fast_range(f64::from(self))
+    }
+
+    #[inline(always)]
+    fn sin_cos_slow(self) -> (Self, Self) {
+        let (s, c) = sin_cos_slow(f64::from(self));
+        // One rounding of libm's f64 result (itself within 1 ulp of f64): the f32 result is
+        // within half an f32 ulp plus 2^-29 of one.
+        (s as f32, c as f32)
+    }
+}

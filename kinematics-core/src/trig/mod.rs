@@ -64,6 +64,7 @@ mod tests;
 
 pub use atan::atan2;
 pub use kernel::FAST_BOUND;
+use kernel::Kernel;
 
 /// `(sin x, cos x)` for `f64`; see the module doc for the accuracy contract.
 #[inline(always)]
@@ -87,36 +88,7 @@ pub fn sin_cos_f32(x: f32) -> (f32, f32) {
 /// path.
 #[inline(always)]
 pub fn sin_cos_f64_lanes<const N: usize>(x: [f64; N]) -> ([f64; N], [f64; N]) {
-    let mut s = [0.0; N];
-    let mut c = [0.0; N];
-    let mut all_fast = true;
-    let mut start = 0;
-    while start < N {
-        let mut chunk = [0.0; F64_CHUNK];
-        // A loop, not `copy_from_slice`: no call to `memcpy` on this path (see `lanes.rs`).
-        #[allow(clippy::manual_memcpy)]
-        for j in 0..F64_CHUNK.min(N - start) {
-            chunk[j] = x[start + j];
-        }
-        let mut chunk_s = [0.0; F64_CHUNK];
-        let mut chunk_c = [0.0; F64_CHUNK];
-        for j in 0..F64_CHUNK {
-            (chunk_s[j], chunk_c[j]) = kernel::sin_cos_fast_f64(chunk[j]);
-            all_fast &= kernel::in_fast_range(chunk[j]);
-        }
-        for j in 0..F64_CHUNK.min(N - start) {
-            (s[start + j], c[start + j]) = (chunk_s[j], chunk_c[j]);
-        }
-        start += F64_CHUNK;
-    }
-    if !all_fast {
-        for i in 0..N {
-            if !kernel::in_fast_range(x[i]) {
-                (s[i], c[i]) = kernel::sin_cos_slow(x[i]);
-            }
-        }
-    }
-    (s, c)
+    sin_cos_lanes::<f64, N, F64_CHUNK>(x)
 }
 
 /// How many `f64` values [`sin_cos_f64_lanes`] puts through the fast path together: four, one AVX2
@@ -132,36 +104,41 @@ pub const F32_CHUNK: usize = 8;
 /// zeros), the slow path only for values that need it.
 #[inline(always)]
 pub fn sin_cos_f32_lanes<const N: usize>(x: [f32; N]) -> ([f32; N], [f32; N]) {
-    let mut s = [0.0; N];
-    let mut c = [0.0; N];
+    sin_cos_lanes::<f32, N, F32_CHUNK>(x)
+}
+
+/// The lane loop of both scalar types: the values through `K`'s fast path `CHUNK` at a time, the
+/// last chunk padded with zeros, then, in one rarely taken branch, the values beyond its range
+/// again on the slow path. `CHUNK` is a parameter rather than a constant of `K` because an
+/// array's length cannot be a generic type's constant on stable Rust.
+#[inline(always)]
+fn sin_cos_lanes<K: Kernel, const N: usize, const CHUNK: usize>(x: [K; N]) -> ([K; N], [K; N]) {
+    let mut s = [K::ZERO; N];
+    let mut c = [K::ZERO; N];
     let mut all_fast = true;
     let mut start = 0;
     while start < N {
-        let mut chunk = [0.0; F32_CHUNK];
+        let mut chunk = [K::ZERO; CHUNK];
         // A loop, not `copy_from_slice`: no call to `memcpy` on this path (see `lanes.rs`).
         #[allow(clippy::manual_memcpy)]
-        for j in 0..F32_CHUNK.min(N - start) {
+        for j in 0..CHUNK.min(N - start) {
             chunk[j] = x[start + j];
         }
-        let mut chunk_s = [0.0; F32_CHUNK];
-        let mut chunk_c = [0.0; F32_CHUNK];
-        for j in 0..F32_CHUNK {
-            (chunk_s[j], chunk_c[j]) = kernel::sin_cos_fast_f32(chunk[j]);
-            all_fast &= kernel::in_fast_range(f64::from(chunk[j]));
+        let mut chunk_s = [K::ZERO; CHUNK];
+        let mut chunk_c = [K::ZERO; CHUNK];
+        for j in 0..CHUNK {
+            (chunk_s[j], chunk_c[j]) = chunk[j].sin_cos_fast();
+            all_fast &= chunk[j].in_fast_range();
         }
-        for j in 0..F32_CHUNK.min(N - start) {
+        for j in 0..CHUNK.min(N - start) {
             (s[start + j], c[start + j]) = (chunk_s[j], chunk_c[j]);
         }
-        start += F32_CHUNK;
+        start += CHUNK;
     }
     if !all_fast {
         for i in 0..N {
-            let wide = f64::from(x[i]);
-            if !kernel::in_fast_range(wide) {
-                let (sw, cw) = kernel::sin_cos_slow(wide);
-                // One rounding of libm's f64 result (itself within 1 ulp of f64): the f32 result
-                // is within half an f32 ulp plus 2^-29 of one.
-                (s[i], c[i]) = (sw as f32, cw as f32);
+            if !x[i].in_fast_range() {
+                (s[i], c[i]) = x[i].sin_cos_slow();
             }
         }
     }
