@@ -58,9 +58,14 @@ pub struct FrameError {
 
 /// Compiles every link's pose in the root frame and evaluates the expressions (no Rust compiled)
 /// against the runtime reference on `samples` configurations: the largest error per link.
+///
+/// On a terminal, stderr shows a spinner while the compiler works (it reports no progress of its
+/// own) and then a bar over the configurations; elsewhere nothing.
 pub fn check_graph(tree: &KinematicTree, file: &str, samples: usize) -> Result<Vec<FrameError>, CliError> {
-    let compiled =
-        compile(tree, &Request::all_links()).map_err(|source| CliError::Compile { file: file.to_owned(), source })?;
+    let spinner = crate::progress::spinner("compiling every link's pose");
+    let compiled = compile(tree, &Request::all_links());
+    spinner.finish_and_clear();
+    let compiled = compiled.map_err(|source| CliError::Compile { file: file.to_owned(), source })?;
     let fk = ReferenceFk::new(tree.clone());
     let reach = tree.reach();
     let ids: Vec<usize> = compiled
@@ -70,12 +75,15 @@ pub fn check_graph(tree: &KinematicTree, file: &str, samples: usize) -> Result<V
         .collect::<Result<_, _>>()
         .map_err(|source| CliError::Runtime { file: file.to_owned(), source })?;
     let mut worst = vec![0.0f64; ids.len()];
+    let bar = crate::progress::bar(samples as u64, "checking configurations");
     for q in Configurations::new(tree).take(samples) {
         let reference = fk.link_poses(&q).map_err(|source| CliError::Runtime { file: file.to_owned(), source })?;
         for ((frame, &id), worst) in compiled.eval(&q).iter().zip(&ids).zip(&mut worst) {
             *worst = worst_of(*worst, distance(frame, &reference[id], reach));
         }
+        bar.inc(1);
     }
+    bar.finish_and_clear();
     Ok(compiled.frames().iter().zip(worst).map(|(f, error)| FrameError { link: f.link.clone(), error }).collect())
 }
 

@@ -61,6 +61,17 @@ pub enum CliError {
     /// An option's value that cannot be used (the message names the option and why).
     #[error("{0}")]
     Usage(String),
+    /// An output file could not be written (it was written atomically, so nothing is left behind).
+    #[error("{file}: cannot write `{path}`: {source}")]
+    Write {
+        /// The description file.
+        file: String,
+        /// The output path, as given.
+        path: String,
+        /// The IO error.
+        #[source]
+        source: std::io::Error,
+    },
     /// Standard output could not be written.
     #[error("cannot write to standard output: {0}")]
     Output(#[source] std::io::Error),

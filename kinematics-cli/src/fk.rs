@@ -34,14 +34,7 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
     let fk = ReferenceFk::new(crate::robot::load(file)?);
     let tree = fk.tree();
     // Documented default: zeros when `--q` is omitted.
-    let mut q = args.q.clone().unwrap_or_else(|| vec![0.0; tree.dof()]);
-    if args.degrees {
-        for (value, &joint) in q.iter_mut().zip(tree.dof_joints()) {
-            if tree.joint(joint).kind.is_rotational() {
-                *value = value.to_radians();
-            }
-        }
-    }
+    let q = crate::robot::configuration(tree, args.q.as_deref(), args.degrees);
     let poses = fk.link_poses(&q).map_err(|source| CliError::Runtime { file: file.clone(), source })?;
     let selected: Vec<LinkId> = match &args.link {
         Some(name) => vec![crate::robot::link(tree, file, "requested", name)?],

@@ -4,14 +4,18 @@
 //! `inspect` prints the kinematic tree, `fk` the runtime reference pose of every link (or one, or
 //! as JSON), `expr` the simplified symbolic pose with its operation counts, `generate` the Rust a
 //! build script would write (the build API's own text), `check` the compiled expressions against
-//! the runtime reference, `graph` the tree as Graphviz DOT, and `demo` all of it on one robot with
-//! a timing of the generated code built into this binary (`ur5.rs`, from `build.rs`). Errors go
-//! to stderr as `error: <file>: <element>: <fault>`, with a non-zero exit status; files are written
-//! atomically, so a failed run leaves none behind.
+//! the runtime reference, `graph` the tree as Graphviz DOT, `draw` the robot at a configuration as
+//! SVG (three orthographic views of the runtime reference's link origins and joint axes), and
+//! `demo` all of it on one robot with a timing of the generated code built into this binary
+//! (`ur5.rs`, from `build.rs`). Errors go to stderr as `error: <file>: <element>: <fault>`, with a
+//! non-zero exit status; files are written atomically, so a failed run leaves none behind. Long
+//! work (`check`, `demo`'s agreement) shows a progress bar on stderr when stderr is a terminal,
+//! and nothing when it is not.
 
 mod agreement;
 mod check;
 mod demo;
+mod draw;
 mod error;
 mod expr;
 mod fk;
@@ -19,6 +23,7 @@ mod generate;
 mod graph;
 mod ik;
 mod inspect;
+mod progress;
 mod robot;
 mod ur5;
 
@@ -66,6 +71,9 @@ enum Command {
     Check(check::Args),
     /// Print the kinematic tree as Graphviz DOT (links as boxes, joints as labelled edges).
     Graph(graph::Args),
+    /// Draw the robot at a configuration as SVG: front, side and top views on one scale, links
+    /// as segments between origins, joint axes as arrows.
+    Draw(draw::Args),
     /// Every closed-form inverse kinematics solution of the tip for a pose (or for the pose at
     /// given joint values), each with its flags and its errors by the runtime reference.
     Ik(ik::Args),
@@ -87,6 +95,7 @@ fn main() -> ExitCode {
         Command::Generate(args) => generate::run(&args, &mut out),
         Command::Check(args) => check::run(&args, &mut out),
         Command::Graph(args) => graph::run(&args, &mut out),
+        Command::Draw(args) => draw::run(&args, &mut out),
         Command::Demo(args) => demo::run(&args, &mut out),
     };
     let result = result.and_then(|()| out.flush().map_err(CliError::Output));

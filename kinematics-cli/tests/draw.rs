@@ -1,0 +1,349 @@
+//! `kinematics draw` run as a user runs it (issue 21): the SVG of every robot in `robots/` read
+//! back, its link origins and joint axes held against the runtime reference at the same
+//! configuration, every view's screen coordinates against the 3D data and the one scale, and bad
+//! input refused with nothing written.
+#![allow(clippy::panic, clippy::unwrap_used, clippy::expect_used)] // test helpers fail loudly
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+use kinematics::ReferenceFk;
+use kinematics::model::JointKind;
+
+/// The workspace root: the binary runs there, so `robots/...` paths work as in the README.
+fn root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("..")
+}
+
+fn run(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_kinematics")).args(args).current_dir(root()).output().unwrap()
+}
+
+/// Standard output of a run that must succeed quietly.
+fn ok(args: &[&str]) -> String {
+    let output = run(args);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(output.status.success(), "kinematics {args:?} failed: {stderr}");
+    assert!(stderr.is_empty(), "kinematics {args:?} wrote to stderr: {stderr}");
+    String::from_utf8(output.stdout).unwrap()
+}
+
+/// The error message of a run that must fail: one `error: ...` line, nothing on stdout.
+fn fails(args: &[&str]) -> String {
+    let output = run(args);
+    assert_eq!(output.status.code(), Some(1), "kinematics {args:?}");
+    assert!(output.stdout.is_empty(), "kinematics {args:?} printed {}", String::from_utf8_lossy(&output.stdout));
+    let stderr = String::from_utf8(output.stderr).unwrap();
+    assert!(stderr.starts_with("error: ") && stderr.ends_with('\n'), "{stderr}");
+    stderr.trim_end().to_owned()
+}
+
+/// Every description in `robots/`, as `robots/<file>`.
+fn robots() -> Vec<String> {
+    let mut files: Vec<String> = std::fs::read_dir(root().join("robots"))
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|f| kinematics::model::SourceFormat::from_file_name(f).is_some())
+        .map(|f| format!("robots/{f}"))
+        .collect();
+    files.sort();
+    assert!(files.len() >= 10, "robots/ should hold the robot library: {files:?}");
+    files
+}
+
+fn scratch(test: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("kinematics-draw-{test}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn entries(dir: &Path) -> Vec<String> {
+    let mut names: Vec<String> =
+        std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+    names.sort();
+    names
+}
+
+/// A configuration with distinct values, some negative, none special.
+fn configuration(dof: usize) -> Vec<f64> {
+    (0..dof).map(|i| 0.61 * ((i * 7 % 11) as f64) - 2.3 + 0.013 * i as f64).collect()
+}
+
+fn joined(q: &[f64]) -> String {
+    q.iter().map(|x| x.to_string()).collect::<Vec<_>>().join(",")
+}
+
+/// One start tag of the SVG: its name and attributes (values unescaped), in document order,
+/// with the index of the `view` group it sits in, if any.
+#[derive(Debug)]
+struct Element {
+    name: String,
+    attributes: BTreeMap<String, String>,
+    view: Option<usize>,
+}
+
+impl Element {
+    fn get(&self, key: &str) -> &str {
+        self.attributes.get(key).unwrap_or_else(|| panic!("<{}> has no `{key}`: {:?}", self.name, self.attributes))
+    }
+
+    fn number(&self, key: &str) -> f64 {
+        self.get(key).parse().unwrap_or_else(|e| panic!("`{key}` = `{}`: {e}", self.get(key)))
+    }
+
+    fn class(&self) -> &str {
+        self.attributes.get("class").map_or("", String::as_str)
+    }
+}
+
+fn unescape(text: &str) -> String {
+    text.replace("&lt;", "<").replace("&gt;", ">").replace("&quot;", "\"").replace("&apos;", "'").replace("&amp;", "&")
+}
+
+/// The start tags of an SVG written as `draw` writes it (attribute values in double quotes,
+/// `<` escaped inside them and in text).
+fn elements(svg: &str) -> Vec<Element> {
+    let mut out = Vec::new();
+    let mut views = 0;
+    let mut in_view = None;
+    for chunk in svg.split('<').skip(1) {
+        let tag = &chunk[..chunk.find('>').unwrap()];
+        if tag.starts_with('/') {
+            if tag == "/g" {
+                in_view = None;
+            }
+            continue;
+        }
+        let name_end = tag.find([' ', '/']).unwrap_or(tag.len());
+        let name = tag[..name_end].to_owned();
+        let mut attributes = BTreeMap::new();
+        let mut rest = &tag[name_end..];
+        while let Some(eq) = rest.find("=\"") {
+            let key = rest[..eq].trim().to_owned();
+            let value_end = rest[eq + 2..].find('"').unwrap();
+            attributes.insert(key, unescape(&rest[eq + 2..eq + 2 + value_end]));
+            rest = &rest[eq + 2 + value_end + 1..];
+        }
+        let element = Element { name, attributes, view: in_view };
+        if element.name == "g" && element.class() == "view" {
+            in_view = Some(views);
+            views += 1;
+        }
+        out.push(element);
+    }
+    out
+}
+
+fn point(e: &Element) -> [f64; 3] {
+    [e.number("data-x"), e.number("data-y"), e.number("data-z")]
+}
+
+fn close(a: [f64; 3], b: [f64; 3], tolerance: f64) -> bool {
+    a.iter().zip(&b).all(|(x, y)| (x - y).abs() <= tolerance)
+}
+
+/// A screen coordinate printed with three decimals.
+fn on_screen(printed: f64, exact: f64) -> bool {
+    (printed - exact).abs() <= 5e-4 + 1e-9 * exact.abs()
+}
+
+#[test]
+fn draw_puts_every_origin_and_axis_where_the_runtime_reference_does() {
+    for file in robots() {
+        let fk = ReferenceFk::new(kinematics::load(root().join(&file)).unwrap());
+        let tree = fk.tree();
+        let q = configuration(tree.dof());
+        let svg = ok(&["draw", &file, "--q", &joined(&q)]);
+        assert!(svg.starts_with("<svg xmlns=\"http://www.w3.org/2000/svg\"") && svg.ends_with("</svg>\n"), "{file}");
+        let poses = fk.link_poses(&q).unwrap();
+        let reach = tree.reach().max(f64::MIN_POSITIVE);
+        let tolerance = 1e-9 * reach;
+        let elements = elements(&svg);
+        let root = &elements[0];
+        assert_eq!(root.get("data-robot"), tree.name());
+        assert_eq!(root.get("data-q"), joined(&q), "{file}");
+        let scale = root.number("data-scale");
+        assert!(scale > 0.0 && scale.is_finite(), "{file}: {scale}");
+        let views: Vec<&Element> = elements.iter().filter(|e| e.name == "g" && e.class() == "view").collect();
+        let names: Vec<&str> = views.iter().map(|v| v.get("data-view")).collect();
+        assert_eq!(names, ["front", "side", "top"], "{file}");
+        let coordinate = |name: &str| ["x", "y", "z"].iter().position(|c| *c == name).unwrap();
+        let uv: Vec<(usize, usize)> =
+            views.iter().map(|v| (coordinate(v.get("data-u")), coordinate(v.get("data-v")))).collect();
+        assert_eq!(uv, [(0, 2), (1, 2), (0, 1)], "{file}");
+        // Where a view must put a root-frame point.
+        let project = |view: usize, p: [f64; 3]| {
+            let (u, v) = uv[view];
+            (views[view].number("data-ox") + scale * p[u], views[view].number("data-oy") - scale * p[v])
+        };
+        let panels: Vec<&Element> = elements.iter().filter(|e| e.class() == "panel").collect();
+        let inside = |view: usize, x: f64, y: f64| {
+            let panel = panels[view];
+            let (left, top) = (panel.number("x"), panel.number("y"));
+            (left..=left + panel.number("width")).contains(&x) && (top..=top + panel.number("height")).contains(&y)
+        };
+
+        // Every link's origin, once per view, at the runtime's position and projected by the scale.
+        let dots: Vec<&Element> = elements.iter().filter(|e| e.class() == "origin").collect();
+        assert_eq!(dots.len(), 3 * tree.links().len(), "{file}");
+        for dot in &dots {
+            let id = tree.link_id(dot.get("data-link")).unwrap();
+            let expected = poses[id.0].translation.vector;
+            let drawn = point(dot);
+            assert!(close(drawn, [expected.x, expected.y, expected.z], tolerance), "{file}: {drawn:?} {expected:?}");
+            let view = dot.view.unwrap();
+            let (x, y) = project(view, drawn);
+            assert!(on_screen(dot.number("cx"), x) && on_screen(dot.number("cy"), y), "{file}: {dot:?}");
+            assert!(inside(view, x, y), "{file}: {} outside its panel", dot.get("data-link"));
+        }
+
+        // Every joint's segment, from the parent's origin to the child's, once per view.
+        let segments: Vec<&Element> = elements.iter().filter(|e| e.name == "polyline").collect();
+        assert_eq!(segments.len(), 3 * tree.joints().len(), "{file}");
+        for segment in &segments {
+            let joint = tree.joint_by_name(segment.get("data-joint")).unwrap();
+            let points: Vec<[f64; 3]> = segment
+                .get("data-points")
+                .split(' ')
+                .map(|p| {
+                    let c: Vec<f64> = p.split(',').map(|x| x.parse().unwrap()).collect();
+                    [c[0], c[1], c[2]]
+                })
+                .collect();
+            let origin = |id: kinematics::model::LinkId| {
+                let t = poses[id.0].translation.vector;
+                [t.x, t.y, t.z]
+            };
+            assert!(close(points[0], origin(joint.parent), tolerance), "{file}: {}", joint.name);
+            assert!(close(*points.last().unwrap(), origin(joint.child), tolerance), "{file}: {}", joint.name);
+            let screen: Vec<f64> =
+                segment.get("points").split([' ', ',']).map(|x| x.parse().unwrap()).collect::<Vec<_>>();
+            assert_eq!(screen.len(), 2 * points.len(), "{file}");
+            for (p, xy) in points.iter().zip(screen.chunks(2)) {
+                let (x, y) = project(segment.view.unwrap(), *p);
+                assert!(on_screen(xy[0], x) && on_screen(xy[1], y), "{file}: {segment:?}");
+            }
+        }
+
+        // Every moving joint's axis (fixed and floating joints have none), at the joint frame
+        // after its motion, along the axis in the root frame, styled by its kind.
+        let axes: Vec<&Element> =
+            elements.iter().filter(|e| e.name == "line" && e.attributes.contains_key("data-joint")).collect();
+        let drawn_kinds = tree.joints().iter().filter(|j| !matches!(j.kind, JointKind::Fixed | JointKind::Floating));
+        assert_eq!(axes.len(), 3 * drawn_kinds.count(), "{file}");
+        for axis in &axes {
+            let joint = tree.joint_by_name(axis.get("data-joint")).unwrap();
+            let style = match joint.kind {
+                JointKind::Revolute | JointKind::Continuous => "axis revolute",
+                JointKind::Prismatic => "axis prismatic",
+                JointKind::Planar => "axis planar",
+                other => panic!("{file}: a {other:?} joint has an axis"),
+            };
+            assert_eq!(axis.class(), style, "{file}: {}", joint.name);
+            let moved = poses[joint.child.0] * kinematics::runtime::fixed_isometry(&joint.after_motion).inverse();
+            let at = moved.translation.vector;
+            assert!(close(point(axis), [at.x, at.y, at.z], tolerance), "{file}: {}", joint.name);
+            let d = moved.rotation * nalgebra::Vector3::from(joint.axis);
+            let drawn = [axis.number("data-dx"), axis.number("data-dy"), axis.number("data-dz")];
+            assert!(close(drawn, [d.x, d.y, d.z], 1e-12), "{file}: {}: {drawn:?} {d:?}", joint.name);
+            let view = axis.view.unwrap();
+            let (x, y) = project(view, point(axis));
+            assert!(on_screen(axis.number("x1"), x) && on_screen(axis.number("y1"), y), "{file}: {axis:?}");
+            // The drawn arrow points along the axis's projection: parallel, same sense.
+            let (u, v) = uv[view];
+            let (ex, ey) = (axis.number("x2") - axis.number("x1"), -(axis.number("y2") - axis.number("y1")));
+            let cross = ex * drawn[v] - ey * drawn[u];
+            let dot = ex * drawn[u] + ey * drawn[v];
+            assert!(cross.abs() < 2e-3 && dot >= -2e-3, "{file}: {}: {ex} {ey} against {drawn:?}", joint.name);
+        }
+
+        // The scale bar is as long as it says, on the common scale.
+        let bar = elements.iter().find(|e| e.class() == "scale").unwrap();
+        let line = elements.iter().find(|e| e.class() == "scale-bar").unwrap();
+        let length = line.number("x2") - line.number("x1");
+        assert!(on_screen(length, bar.number("data-metres") * scale), "{file}: {length} px for {bar:?}");
+        assert!(svg.contains(" m</text></g>"), "{file}");
+    }
+}
+
+#[test]
+fn draw_writes_the_file_it_prints_and_reads_degrees_and_zeros_as_fk_does() {
+    let printed = ok(&["draw", "robots/ur5.urdf", "--q", "0.3,-1.2,1.0,0.4,-0.7,2.0"]);
+    // Deterministic: the same run prints the same bytes.
+    assert_eq!(printed, ok(&["draw", "robots/ur5.urdf", "--q", "0.3,-1.2,1.0,0.4,-0.7,2.0"]));
+    let dir = scratch("output");
+    let path = dir.join("ur5.svg");
+    assert_eq!(ok(&["draw", "robots/ur5.urdf", "--q", "0.3,-1.2,1.0,0.4,-0.7,2.0", "-o", path.to_str().unwrap()]), "");
+    assert_eq!(std::fs::read_to_string(&path).unwrap(), printed);
+    assert_eq!(entries(&dir), ["ur5.svg"]);
+    std::fs::remove_dir_all(&dir).unwrap();
+    let radians = ok(&["draw", "robots/ur5.urdf", "--q", "0,-1.5707963267948966,1.5707963267948966,0,0,0"]);
+    let degrees = ok(&["draw", "robots/ur5.urdf", "--q", "0,-90,90,0,0,0", "--degrees"]);
+    assert_eq!(radians, degrees);
+    // Omitted, `--q` is the zero configuration, as for `fk`.
+    assert_eq!(ok(&["draw", "robots/ur5.urdf"]), ok(&["draw", "robots/ur5.urdf", "--q", "0,0,0,0,0,0"]));
+}
+
+#[test]
+fn draw_refuses_bad_configurations_and_leaves_no_file_behind() {
+    let dir = scratch("errors");
+    let path = dir.join("robot.svg");
+    let target = path.to_str().unwrap();
+    assert_eq!(
+        fails(&["draw", "robots/ur5.urdf", "--q", "1,2,3", "-o", target]),
+        "error: robots/ur5.urdf: robot `ur5` has 6 degrees of freedom (shoulder_pan_joint, shoulder_lift_joint, \
+         elbow_joint, wrist_1_joint, wrist_2_joint, wrist_3_joint), but q has 3 values"
+    );
+    assert_eq!(
+        fails(&["draw", "robots/ur5.urdf", "--q", "0,NaN,0,0,0,0", "-o", target]),
+        "error: robots/ur5.urdf: robot `ur5`: the value of joint `shoulder_lift_joint` (q[1]) is NaN, not a finite number"
+    );
+    assert_eq!(
+        fails(&["draw", "robots/ur5.urdf", "--q", "0,0,inf,0,0,0", "-o", target]),
+        "error: robots/ur5.urdf: robot `ur5`: the value of joint `elbow_joint` (q[2]) is inf, not a finite number"
+    );
+    assert_eq!(
+        fails(&["draw", "robots/none.urdf", "-o", target]).split(": cannot read").next(),
+        Some("error: robots/none.urdf")
+    );
+    assert!(entries(&dir).is_empty(), "{:?}", entries(&dir));
+    // A path that cannot be written: a missing directory, and a directory in the file's place.
+    let missing = dir.join("missing").join("robot.svg");
+    let message = fails(&["draw", "robots/ur5.urdf", "-o", missing.to_str().unwrap()]);
+    assert!(
+        message.starts_with(&format!("error: robots/ur5.urdf: cannot write `{}`: ", missing.display())),
+        "{message}"
+    );
+    std::fs::create_dir(&path).unwrap();
+    let message = fails(&["draw", "robots/ur5.urdf", "-o", target]);
+    assert!(message.starts_with(&format!("error: robots/ur5.urdf: cannot write `{target}`: ")), "{message}");
+    assert_eq!(entries(&dir), ["robot.svg"]);
+    assert!(entries(&path).is_empty());
+    std::fs::remove_dir_all(&dir).unwrap();
+    // Not a number: clap's usage error (status 2), as for `fk`.
+    let output = run(&["draw", "robots/ur5.urdf", "--q", "1,x"]);
+    assert_eq!(output.status.code(), Some(2));
+}
+
+#[test]
+fn names_are_escaped_and_read_back() {
+    let dir = scratch("names");
+    let urdf = r#"<robot name="r&amp;d"><link name="base &lt;0&gt;"/><link name="tip &quot;1&quot; &amp; 'x'"/>
+      <joint name="j&lt;1&gt;" type="prismatic"><parent link="base &lt;0&gt;"/><child link="tip &quot;1&quot; &amp; 'x'"/>
+      <origin xyz="0.1 0 0.2"/><axis xyz="0 0 1"/><limit lower="0" upper="1" effort="1" velocity="1"/></joint></robot>"#;
+    let file = dir.join("names.urdf");
+    std::fs::write(&file, urdf).unwrap();
+    let svg = ok(&["draw", file.to_str().unwrap(), "--q", "0.25"]);
+    let elements = elements(&svg);
+    assert_eq!(elements[0].get("data-robot"), "r&d");
+    let links: Vec<&str> =
+        elements.iter().filter(|e| e.class() == "origin" && e.view == Some(0)).map(|e| e.get("data-link")).collect();
+    assert_eq!(links, ["base <0>", "tip \"1\" & 'x'"]);
+    let axis = elements.iter().find(|e| e.class() == "axis prismatic" && e.view == Some(0)).unwrap();
+    assert_eq!(axis.get("data-joint"), "j<1>");
+    // Text content is escaped too: no raw `<` or `&` outside markup.
+    assert!(svg.contains(">base &lt;0&gt;</text>") && svg.contains("<title>robot r&amp;d drawn"), "{svg}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
