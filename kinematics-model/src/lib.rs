@@ -39,6 +39,8 @@ pub mod synthetic;
 mod transform;
 mod tree;
 pub mod urdf;
+#[cfg(feature = "urdf-rs")]
+mod urdf_rs_interop;
 mod validate;
 
 pub use angle::{Angle, PiRational};
@@ -52,3 +54,8 @@ pub use joint::{Joint, JointKind, JointMotion, Limits, Link};
 pub use source::{Source, SourceFormat, SourceKind, parse_source, parse_source_floating, parse_source_with};
 pub use transform::{Axis, Elementary, FixedTransform};
 pub use tree::{Chain, JointId, KinematicTree, LinkId};
+/// The urdf-rs this crate converts from (feature `urdf-rs`: [`Description::from_urdf_rs`],
+/// [`KinematicTree::from_urdf_rs`]), for callers without a dependency of their own.
+#[cfg(feature = "urdf-rs")]
+#[cfg_attr(docsrs, doc(cfg(feature = "urdf-rs")))]
+pub use urdf_rs;

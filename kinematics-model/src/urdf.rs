@@ -16,6 +16,10 @@
 //! `nan` included: validation rejects them naming the field); anything else is an error naming the
 //! attribute. An element given twice where URDF allows one (two `<origin>`s) is an error rather
 //! than a silent choice. Every error names the joint (or link) and the line.
+//!
+//! A robot urdf-rs has already read (`k` and openrr hand around `urdf_rs::Robot`) comes in through
+//! `Description::from_urdf_rs` and `KinematicTree::from_urdf_rs` (feature `urdf-rs`), which build
+//! each joint with this reader's `UrdfJoint` and validate as [`crate::Source::load`] does.
 
 use roxmltree::{Document, Node};
 
@@ -96,8 +100,7 @@ fn joint(doc: &Document<'_>, node: Node<'_, '_>) -> Result<JointDescription, Loa
         }),
         None => None,
     };
-    let limited = matches!(kind, JointTypeDescription::Revolute | JointTypeDescription::Prismatic);
-    if limited && limit.is_none() {
+    if needs_limit(kind) && limit.is_none() {
         return Err(
             at.error(start, format!("a {} joint needs a <limit> element (with `effort` and `velocity`)", kind.name()))
         );
@@ -110,19 +113,47 @@ fn joint(doc: &Document<'_>, node: Node<'_, '_>) -> Result<JointDescription, Loa
         }),
         None => None,
     };
-    Ok(JointDescription {
-        element: Element::Joint(name.clone()),
-        name,
-        kind,
-        parent,
-        child,
-        origin: FixedTransform::from_xyz_rpy(xyz, rpy.map(Angle::Radians)),
-        after_motion: FixedTransform::identity(),
-        axis,
-        // Continuous, fixed and the refused types have no position limits, whatever they write.
-        limits: if limited { limit } else { None },
-        mimic,
-    })
+    Ok(UrdfJoint { name, kind, parent, child, xyz, rpy, axis, limit, mimic }.description())
+}
+
+/// Whether URDF requires a `<limit>` of a joint of this type (revolute and prismatic joints).
+pub(crate) fn needs_limit(kind: JointTypeDescription) -> bool {
+    matches!(kind, JointTypeDescription::Revolute | JointTypeDescription::Prismatic)
+}
+
+/// A URDF joint's fields once read, by whichever reader (this one, or the urdf-rs conversion):
+/// the one place they become a [`JointDescription`], so both describe a joint alike.
+pub(crate) struct UrdfJoint {
+    pub(crate) name: String,
+    pub(crate) kind: JointTypeDescription,
+    pub(crate) parent: String,
+    pub(crate) child: String,
+    pub(crate) xyz: [f64; 3],
+    pub(crate) rpy: [f64; 3],
+    pub(crate) axis: [f64; 3],
+    pub(crate) limit: Option<LimitsDescription>,
+    pub(crate) mimic: Option<MimicDescription>,
+}
+
+impl UrdfJoint {
+    /// The description: the origin as `xyz` then yaw, pitch, roll (angles as written, for the
+    /// exactness policy to judge), position limits for the types that take them.
+    pub(crate) fn description(self) -> JointDescription {
+        let UrdfJoint { name, kind, parent, child, xyz, rpy, axis, limit, mimic } = self;
+        JointDescription {
+            element: Element::Joint(name.clone()),
+            name,
+            kind,
+            parent,
+            child,
+            origin: FixedTransform::from_xyz_rpy(xyz, rpy.map(Angle::Radians)),
+            after_motion: FixedTransform::identity(),
+            axis,
+            // Continuous, fixed and the refused types have no position limits, whatever they write.
+            limits: if needs_limit(kind) { limit } else { None },
+            mimic,
+        }
+    }
 }
 
 /// Where errors are reported: the document (for lines) and the element being read.
