@@ -11,6 +11,8 @@
 
 #![allow(clippy::expect_used, clippy::panic)] // a benchmark fails loudly on a robot that does not load
 
+mod common;
+
 use std::hint::black_box;
 use std::time::Duration;
 
@@ -225,10 +227,7 @@ fn numeric<const N: usize>(c: Option<&mut Criterion>, robot: &Numeric<N>) {
 /// Appends a numeric robot's success counts to `target/criterion/kinematics-ik.tsv` for
 /// `bench-report` (`robot, ours, k, targets`), replacing the robot's last line.
 fn record_success(robot: &str, ours: usize, theirs: usize, count: usize) {
-    let dir = std::env::var("CARGO_TARGET_DIR")
-        .map(std::path::PathBuf::from)
-        .unwrap_or_else(|_| std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target"))
-        .join("criterion");
+    let dir = common::criterion_dir();
     let path = dir.join("kinematics-ik.tsv");
     let kept: String = std::fs::read_to_string(&path)
         .unwrap_or_default()
@@ -283,12 +282,8 @@ fn all(mut c: Option<&mut Criterion>) {
 }
 
 fn main() {
-    if std::env::args().any(|a| a == "--bench") {
-        let mut c = Criterion::default()
-            .warm_up_time(Duration::from_millis(300))
-            .measurement_time(Duration::from_secs(1))
-            .sample_size(30)
-            .configure_from_args();
+    if common::measuring() {
+        let mut c = common::criterion(Duration::from_millis(300), Duration::from_secs(1));
         all(Some(&mut c));
         c.final_summary();
     } else {

@@ -1,0 +1,133 @@
+//! How a body is run: timed by criterion (`cargo bench`), or once and checked (`cargo test`); and
+//! the paired ratios, two bodies timed in alternation, which a shared machine whose speed drifts
+//! over minutes cannot skew the way it skews two criterion medians taken seconds apart. The pairs
+//! are collected here and written next to criterion's results for `bench-report`.
+
+use std::hint::black_box;
+use std::time::Instant;
+
+use criterion::{BenchmarkGroup, measurement::WallTime};
+
+use crate::inputs::INPUTS;
+
+/// How one benchmark is run: measured by criterion, or once and checked (`cargo test`).
+pub enum Mode<'a, 'c> {
+    /// Criterion's group, and the robot's name for the paired ratios.
+    Measure(&'a mut BenchmarkGroup<'c, WallTime>, &'static str),
+    /// Every body once; the areas check what the bodies compute.
+    Check,
+}
+
+impl Mode<'_, '_> {
+    /// Times `f` (called with an input index) as benchmark `name` of the group, or calls it once.
+    pub fn run<R>(&mut self, name: &str, mut f: impl FnMut(usize) -> R) {
+        match self {
+            Mode::Measure(group, _) => {
+                let mut i = 0usize;
+                group.bench_function(name, |b| {
+                    b.iter(|| {
+                        i = (i + 1) % INPUTS;
+                        black_box(f(black_box(i)))
+                    })
+                });
+            }
+            Mode::Check => {
+                black_box(f(0));
+            }
+        }
+    }
+
+    /// The time of `numerator` over the time of `denominator`, measured in alternation: 201 rounds,
+    /// each timing both on the same 2,000 inputs back to back (which goes first alternates), and
+    /// the median of the rounds' ratios. Criterion's medians come from different seconds of a
+    /// shared machine whose speed drifts; these ratios do not. Recorded for `bench-report`.
+    pub fn pair<A, B>(&mut self, name: &str, numerator: impl FnMut(usize) -> A, denominator: impl FnMut(usize) -> B) {
+        self.pair_calls(name, 2000, numerator, denominator);
+    }
+
+    /// [`Mode::pair`] with `calls` calls of each per round: fewer for bodies that take a batch per
+    /// call, so a round stays about a millisecond.
+    pub fn pair_calls<A, B>(
+        &mut self,
+        name: &str,
+        calls: usize,
+        mut numerator: impl FnMut(usize) -> A,
+        mut denominator: impl FnMut(usize) -> B,
+    ) {
+        let Mode::Measure(_, robot) = self else { return };
+        if !selected(&format!("{robot}/{name}")) {
+            return; // a filtered run times the pairs of the robots it selects only
+        }
+        const ROUNDS: usize = 201;
+        let time = |f: &mut dyn FnMut(usize)| {
+            let start = Instant::now();
+            for k in 0..calls {
+                f(black_box(k % INPUTS));
+            }
+            start.elapsed().as_secs_f64()
+        };
+        let mut ratios: Vec<f64> = (0..ROUNDS)
+            .map(|round| {
+                let mut num = |i: usize| {
+                    black_box(numerator(i));
+                };
+                let mut den = |i: usize| {
+                    black_box(denominator(i));
+                };
+                if round % 2 == 0 {
+                    let n = time(&mut num);
+                    n / time(&mut den)
+                } else {
+                    let d = time(&mut den);
+                    time(&mut num) / d
+                }
+            })
+            .collect();
+        ratios.sort_by(f64::total_cmp);
+        let median = ratios[ROUNDS / 2];
+        println!("{robot}/{name}: paired ratio {median:.3} (median of {ROUNDS} alternating rounds)");
+        PAIRED.lock().map(|mut p| p.push(format!("{robot}\t{name}\t{median}\n"))).ok();
+    }
+}
+
+/// Criterion's filter, if it was given one: the first argument that is neither a flag nor the
+/// value of a flag that takes one.
+pub static FILTER: std::sync::LazyLock<Option<String>> = std::sync::LazyLock::new(|| {
+    const TAKES_VALUE: [&str; 16] = [
+        "--save-baseline",
+        "--baseline",
+        "--baseline-lenient",
+        "--load-baseline",
+        "--sample-size",
+        "--warm-up-time",
+        "--measurement-time",
+        "--nresamples",
+        "--noise-threshold",
+        "--confidence-level",
+        "--significance-level",
+        "--profile-time",
+        "--plotting-backend",
+        "--output-format",
+        "--color",
+        "--format",
+    ];
+    let mut args = std::env::args().skip(1);
+    while let Some(arg) = args.next() {
+        if TAKES_VALUE.contains(&arg.as_str()) {
+            args.next();
+        } else if !arg.starts_with('-') {
+            return Some(arg);
+        }
+    }
+    None
+});
+
+/// Whether a pair named `id` (`robot/numerator/denominator`) is timed in this run: always without
+/// a filter, else when the filter is part of its name (criterion's filters are regular
+/// expressions; a plain robot name such as `ur5` selects the same robots both ways).
+fn selected(id: &str) -> bool {
+    FILTER.as_deref().is_none_or(|filter| id.contains(filter))
+}
+
+/// Paired ratios of this run, written next to criterion's results for `bench-report`.
+pub static PAIRED: std::sync::Mutex<Vec<String>> = std::sync::Mutex::new(Vec::new());
