@@ -1,7 +1,7 @@
 //! Operation counts of the generated code for every robot in `robots/`, against a plain sequential
 //! product of the same transforms (zeros and ones folded, nothing else), and the targets we hold
 //! the compiler to. `cargo test -p kinematics-compiler --test op_counts -- --nocapture` prints the
-//! table the README carries.
+//! table the guide carries (`src/guide/emitted.md`).
 #![allow(clippy::panic, clippy::unwrap_used, clippy::expect_used)] // test helpers fail loudly
 
 mod common;
@@ -21,7 +21,7 @@ fn short(c: OpCount) -> String {
     format!("{}/{}/{}", c.sin_cos, c.mul, c.add)
 }
 
-/// The table the README prints: one markdown row per robot in `robots/`.
+/// The table the guide prints (`src/guide/emitted.md`): one markdown row per robot in `robots/`.
 fn table() -> String {
     let mut rows = String::from(
         "| robot | DoF | tip | generated | plain product | position only | all links |\n|---|---|---|---|---|---|---|\n",
@@ -56,17 +56,17 @@ fn table_of_every_robot() {
     insta::assert_snapshot!("op_counts", table);
 }
 
-/// Every row of the README's op-count table is a row of the pinned table, so the README cannot
-/// quote counts the compiler no longer produces.
+/// Every row of the guide's op-count table (`src/guide/emitted.md`) is a row of the pinned table,
+/// so the guide cannot quote counts the compiler no longer produces.
 #[test]
-fn the_readme_quotes_the_pinned_table() {
+fn the_guide_quotes_the_pinned_table() {
     let table = table();
-    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../README.md")).unwrap();
-    let section = readme.split("| robot | DoF | tip | generated |").nth(1).expect("the README has the op-count table");
+    let page = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../src/guide/emitted.md")).unwrap();
+    let section = page.split("| robot | DoF | tip | generated |").nth(1).expect("the guide has the op-count table");
     let rows: Vec<&str> = section.lines().skip(2).take_while(|l| l.starts_with('|')).collect();
     assert!(rows.len() >= 10, "{rows:?}");
     for row in rows {
-        assert!(table.lines().any(|l| l == row), "README row `{row}` is not what the compiler produces:\n{table}");
+        assert!(table.lines().any(|l| l == row), "guide row `{row}` is not what the compiler produces:\n{table}");
     }
 }
 
@@ -105,20 +105,21 @@ fn velocity_table() -> String {
     rows
 }
 
-/// The velocity op counts are pinned as the pose counts are, and the README quotes them.
+/// The velocity op counts are pinned as the pose counts are, and the guide quotes them
+/// (`src/guide/velocities.md`).
 #[test]
 fn velocity_table_of_every_robot() {
     let table = velocity_table();
     println!("sin_cos/mul/add of the end effector's velocity functions\n{table}");
     insta::assert_snapshot!("velocity_op_counts", table);
-    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../README.md")).unwrap();
-    if let Some(section) = readme.split("| robot | DoF | tip | pose | Jacobian |").nth(1) {
+    let page = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../src/guide/velocities.md")).unwrap();
+    if let Some(section) = page.split("| robot | DoF | tip | pose | Jacobian |").nth(1) {
         let rows: Vec<&str> = section.lines().skip(2).take_while(|l| l.starts_with('|')).collect();
         for row in rows {
-            assert!(table.lines().any(|l| l == row), "README row `{row}` is not what the compiler produces:\n{table}");
+            assert!(table.lines().any(|l| l == row), "guide row `{row}` is not what the compiler produces:\n{table}");
         }
     } else {
-        panic!("the README has the velocity op-count table");
+        panic!("the guide has the velocity op-count table");
     }
 }
 
