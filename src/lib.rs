@@ -69,8 +69,6 @@
 //! - `rayon`: `parallel::batch`, batches split across cores.
 //! - `urdf-rs`: [`from_urdf_rs`], the model of a robot urdf-rs has read (as `k` and openrr hold
 //!   it), by the same rules and exactness policy as [`load`].
-//! - `urdf-rs`: [`from_urdf_rs`], the model of a robot urdf-rs has read (as `k` and openrr hold
-//!   it), by the same rules and exactness policy as [`load`].
 //!
 //! Generated code reaches what it needs through one path, `kinematics::__private` (hidden from
 //! the docs, not for users: it may change with the code generator).
@@ -172,43 +170,6 @@ pub fn load_with(path: impl AsRef<std::path::Path>, exact_angles: ExactAngles) -
     let label = path.display().to_string();
     let bytes = std::fs::read(path).map_err(|e| LoadError::new(label.clone(), LoadErrorKind::Io(e)))?;
     kinematics_model::Source::from_bytes(label, kinematics_model::SourceKind::ByExtension, bytes)?.load(exact_angles)
-}
-
-/// The validated tree of a robot urdf-rs has read (`urdf_rs::read_file`, or the robot `k` and
-/// openrr hand around), by the rules and the exactness policy [`load`] applies to a file
-/// ([`KinematicTree::from_urdf_rs`]; [`from_urdf_rs_with`] takes another policy). Errors name the
-/// joint or link; urdf-rs keeps no lines. The same file gives the same tree either way, so the
-/// runtime reference and the compiler see the same robot:
-///
-/// ```
-/// use kinematics::model::urdf_rs;
-/// let file = concat!(env!("CARGO_MANIFEST_DIR"), "/robots/ur5.urdf");
-/// let robot = urdf_rs::read_file(file)?; // what a user of `k` already holds
-/// let tree = kinematics::from_urdf_rs(&robot)?;
-/// let q = [0.3, -1.2, 1.0, 0.4, -0.7, 2.0];
-/// let pose = kinematics::ReferenceFk::new(tree.clone()).link_pose(&q, "tool0")?;
-/// let built_in = kinematics::ReferenceFk::new(kinematics::load(file)?).link_pose(&q, "tool0")?;
-/// assert_eq!(pose, built_in);
-/// // The compiler takes the tree too (`kinematics-compiler`, beside the derive).
-/// let compiled = kinematics_compiler::compile(&tree, &kinematics_compiler::Request::tip("tool0"))?;
-/// let entries = compiled.eval(&q)[0];
-/// assert!((0..3).all(|i| (entries[9 + i] - pose.translation.vector[i]).abs() < 1e-12));
-/// # Ok::<(), Box<dyn std::error::Error>>(())
-/// ```
-#[cfg(feature = "urdf-rs")]
-#[cfg_attr(docsrs, doc(cfg(feature = "urdf-rs")))]
-pub fn from_urdf_rs(robot: &kinematics_model::urdf_rs::Robot) -> Result<KinematicTree, LoadErrorKind> {
-    from_urdf_rs_with(robot, ExactAngles::default())
-}
-
-/// [`from_urdf_rs`] with the exactness policy `exact_angles`.
-#[cfg(feature = "urdf-rs")]
-#[cfg_attr(docsrs, doc(cfg(feature = "urdf-rs")))]
-pub fn from_urdf_rs_with(
-    robot: &kinematics_model::urdf_rs::Robot,
-    exact_angles: ExactAngles,
-) -> Result<KinematicTree, LoadErrorKind> {
-    KinematicTree::from_urdf_rs(robot, exact_angles)
 }
 
 /// The validated tree of a robot urdf-rs has read (`urdf_rs::read_file`, or the robot `k` and
