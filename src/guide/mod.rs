@@ -19,7 +19,7 @@
 //! | [`lanes`] | `F64x4`, `F32x8`, batches, `parallel::batch` |
 //! | [`no_std`] | firmware: the crate without `std` |
 //! | [`errors`] | what can go wrong, and what you get |
-//! | [`command_line`] | the `kinematics` command: `demo`, `inspect`, `fk`, `ik`, `expr`, `generate`, `check`, `graph` |
+//! | [`command_line`] | the `kinematics` command: `demo`, `inspect`, `fk`, `ik`, `expr`, `generate`, `check`, `draw`, `graph` |
 //! | [`build_scripts`] | `kinematics-build`: the same code from `build.rs`, as a file |
 //! | [`emitted`] | what the compiler emits, its operation counts, compile cost |
 //! | [`checks`] | how the generated code is checked, and how closely it agrees |
