@@ -7,7 +7,8 @@
 //!   link's meshes and inertials;
 //! - a joint needs `name`, `type` (`revolute`, `continuous`, `prismatic`, `fixed`, `floating`,
 //!   `planar`), `<parent link>` and `<child link>`;
-//! - `<origin xyz rpy>` defaults to zeros, `<axis xyz>` to `1 0 0`;
+//! - `<origin xyz rpy>` defaults to zeros, `<axis xyz>` to `1 0 0`; a joint origin's
+//!   `quat_xyzw` (URDF 1.1) is refused (write `rpy`), never ignored;
 //! - revolute and prismatic joints need `<limit>`, and every `<limit>` needs `effort` and
 //!   `velocity`; `lower` and `upper` default to 0;
 //! - `<mimic joint multiplier offset>`: `multiplier` defaults to 1, `offset` to 0.
@@ -84,7 +85,16 @@ fn joint(doc: &Document<'_>, node: Node<'_, '_>) -> Result<JointDescription, Loa
     let parent = link("parent")?;
     let child = link("child")?;
     let (xyz, rpy) = match at.single(node, "origin")? {
-        Some(origin) => (at.vector(origin, "xyz")?.unwrap_or([0.0; 3]), at.vector(origin, "rpy")?.unwrap_or([0.0; 3])),
+        Some(origin) => {
+            // URDF 1.1's quaternion: refused rather than ignored (urdfdom ignores it in 1.0 files),
+            // so the rotation it holds is never silently dropped.
+            if let Some(byte) = attribute_start(origin, "quat_xyzw") {
+                return Err(
+                    at.error(byte, "<origin quat_xyzw> (URDF 1.1) is not read: write the rotation as `rpy`".to_owned())
+                );
+            }
+            (at.vector(origin, "xyz")?.unwrap_or([0.0; 3]), at.vector(origin, "rpy")?.unwrap_or([0.0; 3]))
+        }
         None => ([0.0; 3], [0.0; 3]),
     };
     let axis = match at.single(node, "axis")? {

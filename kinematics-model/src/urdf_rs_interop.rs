@@ -34,7 +34,9 @@ impl Description {
     ///   is kept (the built-in reader refuses the missing attribute; no kinematics uses the effort);
     /// - a robot without a `name` reads as the empty name: refused;
     /// - a word that is no number inside `xyz` or `rpy` is skipped by urdf-rs (`"1 x 0 0"` reads as
-    ///   `1 0 0`), where the built-in reader refuses the attribute; after reading nothing shows it.
+    ///   `1 0 0`), where the built-in reader refuses the attribute; after reading nothing shows it;
+    /// - an `<origin quat_xyzw>` becomes `rpy` in a URDF 1.1 file (so the rotation is kept, where
+    ///   the built-in reader refuses the attribute) and is ignored in a 1.0 file, as urdfdom does.
     ///
     /// Where URDF itself gives a default (no `<origin>`, no `<axis>`, no mimic `multiplier` or
     /// `offset`), urdf-rs and the built-in reader give the same one.

@@ -178,6 +178,33 @@ fn what_urdf_rs_cannot_tell() {
     assert_eq!(tree.joint_by_name("elbow").unwrap().axis, [0.0, 0.0, 1.0]);
 }
 
+/// A quaternion origin (URDF 1.1): the built-in reader refuses it, naming joint and line;
+/// urdf-rs turns it into roll, pitch and yaw, which the policy then judges like written ones.
+#[test]
+fn a_quaternion_origin() {
+    let text = |version: &str| {
+        format!(
+            r#"<robot name="r"{version}><link name="a"/><link name="b"/>
+            <joint name="j" type="fixed"><parent link="a"/><child link="b"/>
+            <origin quat_xyzw="0 0 0.7071067811865476 0.7071067811865476"/></joint></robot>"#
+        )
+    };
+    let ours = parse_source_with("r.urdf", &text(r#" version="1.1""#), ExactAngles::default()).unwrap_err();
+    assert_eq!(
+        ours.to_string(),
+        "r.urdf: joint `j` (line 3): <origin quat_xyzw> (URDF 1.1) is not read: write the rotation as `rpy`"
+    );
+    let UrdfRs::Tree(tree) = via_urdf_rs(&text(r#" version="1.1""#), ExactAngles::default()) else { panic!() };
+    let quarter = kinematics_model::PiRational::new(1, 2).unwrap();
+    assert_eq!(
+        tree.joint_by_name("j").unwrap().origin.steps(),
+        [kinematics_model::Elementary::Rotation(kinematics_model::Axis::Z, kinematics_model::Angle::Exact(quarter))]
+    );
+    // In a URDF 1.0 file urdf-rs, like urdfdom, ignores it: after reading nothing shows it was there.
+    let UrdfRs::Tree(tree) = via_urdf_rs(&text(""), ExactAngles::default()) else { panic!() };
+    assert!(tree.joint_by_name("j").unwrap().origin.steps().is_empty());
+}
+
 /// The exactness policy gives the same verdict on the same decimals either way: a full-precision
 /// quarter turn, xacro's pi, a truncated pi, and decimals meant as numbers.
 #[test]
