@@ -67,7 +67,7 @@
 //!   plain build targets baseline x86-64). Without it the crate is `#![no_std]` and a derived robot needs
 //!   nothing but [`kinematics_core`] (no allocation, no XML, TOML, JSON or nalgebra code).
 //! - `rayon`: `parallel::batch`, batches split across cores.
-//! - `urdf-rs`: [`from_urdf_rs`], the model of a robot urdf-rs has read (as `k` and openrr hold
+//! - `urdf-rs`: `from_urdf_rs`, the model of a robot urdf-rs has read (as `k` and openrr hold
 //!   it), by the same rules and exactness policy as [`load`].
 //!
 //! Generated code reaches what it needs through one path, `kinematics::__private` (hidden from
