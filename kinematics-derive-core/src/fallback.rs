@@ -65,16 +65,16 @@ impl Names {
     /// From options darling parsed (the scalar list may still be wrong: then both scalar types).
     fn from_options(options: &KinematicsInput) -> Self {
         let tips = options.tips().len();
-        let (f64, f32) = match options.scalars() {
+        let (f64, f32) = match options.output().scalars() {
             Ok(s) => (s.f64, s.f32),
             Err(_) => (true, true),
         };
         Names {
             one_tip: tips == 1,
             several_tips: tips > 1,
-            positions: options.positions,
-            jacobians: options.jacobians.is_present(),
-            ik: match options.ik_mode() {
+            positions: options.output().positions,
+            jacobians: options.output().jacobians.is_present(),
+            ik: match options.output().ik_mode() {
                 Ok(IkMode::Off) => IkNames::Off,
                 Ok(IkMode::ClosedForm { free: Some(_) }) => IkNames::Free,
                 Ok(IkMode::Numeric) => IkNames::Numeric,
@@ -152,7 +152,7 @@ impl Names {
 
 /// The crate path from `crate = "..."`, read leniently, or `::kinematics`.
 fn crate_path(input: &syn::DeriveInput, options: Option<&KinematicsInput>) -> TokenStream {
-    if let Some(path) = options.and_then(|o| o.krate.as_ref()) {
+    if let Some(path) = options.and_then(|o| o.output().krate.as_ref()) {
         return quote!(#path);
     }
     for attr in input.attrs.iter().filter(|a| a.path().is_ident("kinematics")) {

@@ -77,7 +77,7 @@ fn read_and_check(
 fn ik_fault(options: &KinematicsInput, mode: &IkMode, loaded: &source::Loaded) -> Option<String> {
     let tips = options.tips();
     let tree = &loaded.tree;
-    let base = options.base.as_ref().map_or_else(|| tree.link(tree.root()).name.clone(), |b| b.as_ref().clone());
+    let base = options.keys.base.as_ref().map_or_else(|| tree.link(tree.root()).name.clone(), |b| b.as_ref().clone());
     if tree.dof() != tree.velocity_dof() {
         return Some("`ik` of a robot with a floating joint is not supported yet".to_owned());
     }
@@ -114,30 +114,30 @@ fn expand_options(
     errors: &mut darling::error::Accumulator,
 ) -> (Option<fallback::Known>, Option<TokenStream>) {
     let (loaded, links_ok) = read_and_check(&options.source(), errors);
-    let scalars = errors.handle(options.scalars());
-    if options.jacobians.is_present() && options.tips().is_empty() {
+    let scalars = errors.handle(options.output().scalars());
+    if options.output().jacobians.is_present() && options.tips().is_empty() {
         errors.push(
             darling::Error::custom(
                 "`jacobians` needs `tip = \"link\"` or `tips(...)`: the Jacobians are the tips' (add the link whose \
                  velocity you want)",
             )
-            .with_span(&options.jacobians.span()),
+            .with_span(&options.output().jacobians.span()),
         );
         return (loaded.as_ref().map(known), None);
     }
-    let ik = errors.handle(options.ik_mode());
-    if let (Some(mode), Some(key), true, Some(loaded)) = (&ik, &options.ik, links_ok, &loaded)
+    let ik = errors.handle(options.output().ik_mode());
+    if let (Some(mode), Some(key), true, Some(loaded)) = (&ik, &options.output().ik, links_ok, &loaded)
         && let Some(fault) = ik_fault(options, mode, loaded)
     {
         errors.push(darling::Error::custom(format!("{}: {fault}", loaded.label)).with_span(&key.span()));
         return (Some(known(loaded)), None);
     }
-    let trig = errors.handle(options.trig());
+    let trig = errors.handle(options.output().trig());
     let known = loaded.as_ref().map(known);
     let (Some(loaded), Some(scalars), Some(trig), Some(ik), true) = (loaded, scalars, trig, ik, links_ok) else {
         return (known, None);
     };
-    let krate = match &options.krate {
+    let krate = match &options.output().krate {
         Some(path) => quote!(#path),
         None => quote!(::kinematics),
     };
@@ -145,10 +145,10 @@ fn expand_options(
     let (impl_generics, ty_generics, where_clause) = options.generics.split_for_impl();
     let spec = RobotSpec {
         tree: &loaded.tree,
-        base: options.base.as_ref().map(|b| b.as_ref().clone()),
+        base: options.keys.base.as_ref().map(|b| b.as_ref().clone()),
         tips: options.tips().into_iter().map(|t| t.as_ref().clone()).collect(),
-        positions: options.positions,
-        jacobians: options.jacobians.is_present(),
+        positions: options.output().positions,
+        jacobians: options.output().jacobians.is_present(),
         ik,
         floating_base: options.source().floating_base.map(|f| f.as_ref().clone()),
         scalars,

@@ -8,6 +8,10 @@
 //!                 joint(name = "shoulder", a = 1.0),
 //!                 joint(name = "elbow", a = 1.0, alpha = "pi/2")))]
 //! ```
+//!
+//! The keys naming the description and the links asked for are defined once, in [`SourceKeys`],
+//! and read by both readers of the attribute: [`KinematicsInput`] (every key, the others in
+//! [`OutputKeys`]) and [`DescriptionKeys`] (those keys alone, every other skipped).
 
 use darling::ast::NestedMeta;
 use darling::util::{Override, PathList, SpannedValue};
@@ -26,6 +30,17 @@ pub struct KinematicsInput {
     pub ident: syn::Ident,
     /// Its generics.
     pub generics: syn::Generics,
+    /// Every key: those naming the description and links, then (in `rest`) what to emit.
+    #[darling(flatten)]
+    pub keys: SourceKeys<OutputKeys>,
+}
+
+/// The keys naming the description and the links asked for, and `rest`, the other keys as `Rest`
+/// reads them. Darling reads `rest`'s keys after these (a flattened field gets the keys its
+/// struct does not know), so a fault in one of these is reported before any in `rest`'s keys;
+/// among themselves, each group's faults come in the attribute's order.
+#[derive(Debug, FromMeta)]
+pub struct SourceKeys<Rest> {
     /// `urdf = "path"`.
     #[darling(default)]
     pub urdf: Option<SpannedValue<String>>,
@@ -41,6 +56,23 @@ pub struct KinematicsInput {
     /// `tips("a", "b")`.
     #[darling(default)]
     pub tips: Option<Tips>,
+    /// `exact_angles = false`: read every decimal angle as written (default `true`: angles within
+    /// 1e-8 rad of a multiple of pi/2 are that multiple; see `kinematics_model::exactness`).
+    #[darling(default)]
+    pub exact_angles: Option<Switch>,
+    /// `floating_base` (or `floating_base = "link"`): a free-flying root, the description's root
+    /// joined to a new root link (`world` by default) by a floating joint `root_joint`.
+    #[darling(default)]
+    pub floating_base: Option<SpannedValue<Override<String>>>,
+    /// The other keys.
+    #[darling(flatten)]
+    pub rest: Rest,
+}
+
+/// The keys saying what to emit (every key but [`SourceKeys`]'); any other key is an error, with
+/// a "did you mean" over both structs' keys.
+#[derive(Debug, FromMeta)]
+pub struct OutputKeys {
     /// `positions`: also emit position-only functions.
     #[darling(default)]
     pub positions: bool,
@@ -56,21 +88,23 @@ pub struct KinematicsInput {
     /// `scalars(f64, f32)`.
     #[darling(default)]
     pub scalars: Option<SpannedValue<PathList>>,
-    /// `exact_angles = false`: read every decimal angle as written (default `true`: angles within
-    /// 1e-8 rad of a multiple of pi/2 are that multiple; see `kinematics_model::exactness`).
-    #[darling(default)]
-    pub exact_angles: Option<Switch>,
     /// `trig = "std"`: call the platform's `sin_cos` (one call per angle) instead of ours (the
     /// default, `trig = "fast"`: every angle of a function in one call, side by side in SIMD lanes).
     #[darling(default)]
     pub trig: Option<SpannedValue<String>>,
-    /// `floating_base` (or `floating_base = "link"`): a free-flying root, the description's root
-    /// joined to a new root link (`world` by default) by a floating joint `root_joint`.
-    #[darling(default)]
-    pub floating_base: Option<SpannedValue<Override<String>>>,
     /// `crate = "path"` for a renamed dependency.
     #[darling(default, rename = "crate")]
     pub krate: Option<syn::Path>,
+}
+
+/// Every key beyond [`SourceKeys`]', skipped (for [`DescriptionKeys`]).
+#[derive(Debug)]
+pub struct SkippedKeys;
+
+impl FromMeta for SkippedKeys {
+    fn from_list(_: &[NestedMeta]) -> darling::Result<Self> {
+        Ok(SkippedKeys)
+    }
 }
 
 /// The value of the `ik` key beyond the bare word: `ik = "numeric"` (a kind) or
@@ -130,82 +164,52 @@ pub struct SourceOptions<'a> {
     pub floating_base: Option<SpannedValue<String>>,
 }
 
-/// `tip` then the entries of `tips`.
-fn all_tips(tip: Option<&SpannedValue<String>>, tips: Option<&Tips>) -> Vec<SpannedValue<String>> {
-    let mut all: Vec<SpannedValue<String>> = tip.into_iter().cloned().collect();
-    if let Some(list) = tips {
-        all.extend(list.0.iter().cloned());
-    }
-    all
-}
-
-/// `exact_angles = true` (the default) or `false`.
-fn policy(switch: Option<Switch>) -> ExactAngles {
-    match switch {
-        Some(Switch(on)) => ExactAngles::on(on),
-        None => ExactAngles::default(),
-    }
-}
-
-/// The keys [`SourceOptions`] holds, read on their own with every other key skipped. When a key
-/// darling cannot read fails the whole attribute, the description is still read with these, so its
-/// faults are reported beside that key's instead of after it is fixed.
+/// The keys of [`SourceKeys`] read on their own with every other key skipped. When a key darling
+/// cannot read fails the whole attribute, the description is still read with these, so its faults
+/// are reported beside that key's instead of after it is fixed.
 #[derive(Debug, FromDeriveInput)]
-#[darling(attributes(kinematics), supports(struct_any), allow_unknown_fields)]
+#[darling(attributes(kinematics), supports(struct_any))]
 pub struct DescriptionKeys {
     ident: syn::Ident,
-    #[darling(default)]
-    urdf: Option<SpannedValue<String>>,
-    #[darling(default)]
-    dh: Option<SpannedValue<DhSource>>,
-    #[darling(default)]
-    base: Option<SpannedValue<String>>,
-    #[darling(default)]
-    tip: Option<SpannedValue<String>>,
-    #[darling(default)]
-    tips: Option<Tips>,
-    #[darling(default)]
-    exact_angles: Option<Switch>,
-    #[darling(default)]
-    floating_base: Option<SpannedValue<Override<String>>>,
+    #[darling(flatten)]
+    keys: SourceKeys<SkippedKeys>,
 }
 
 impl DescriptionKeys {
     /// Whether a description is named at all (a misspelt `urdf` or `dh` is the other key's fault,
     /// not a second one to report).
     pub fn names_a_description(&self) -> bool {
-        self.urdf.is_some() || self.dh.is_some()
+        self.keys.urdf.is_some() || self.keys.dh.is_some()
     }
 
     /// What loading needs.
     pub fn source(&self) -> SourceOptions<'_> {
-        SourceOptions {
-            ident: &self.ident,
-            urdf: self.urdf.as_ref(),
-            dh: self.dh.as_ref(),
-            base: self.base.as_ref(),
-            tips: all_tips(self.tip.as_ref(), self.tips.as_ref()),
-            exact_angles: policy(self.exact_angles),
-            floating_base: floating_base(self.floating_base.as_ref()),
-        }
+        self.keys.source(&self.ident)
     }
 }
 
-impl KinematicsInput {
-    /// The tip links, from `tip` or `tips`.
+impl<Rest> SourceKeys<Rest> {
+    /// The tip links, from `tip` then the entries of `tips`.
     pub fn tips(&self) -> Vec<SpannedValue<String>> {
-        all_tips(self.tip.as_ref(), self.tips.as_ref())
+        let mut all: Vec<SpannedValue<String>> = self.tip.iter().cloned().collect();
+        if let Some(list) = &self.tips {
+            all.extend(list.0.iter().cloned());
+        }
+        all
     }
 
     /// The exactness policy: `exact_angles = true` (the default) or `false`.
     pub fn exact_angles(&self) -> ExactAngles {
-        policy(self.exact_angles)
+        match self.exact_angles {
+            Some(Switch(on)) => ExactAngles::on(on),
+            None => ExactAngles::default(),
+        }
     }
 
-    /// What loading needs.
-    pub fn source(&self) -> SourceOptions<'_> {
+    /// What loading needs, `ident` being the struct's name.
+    pub fn source<'a>(&'a self, ident: &'a syn::Ident) -> SourceOptions<'a> {
         SourceOptions {
-            ident: &self.ident,
+            ident,
             urdf: self.urdf.as_ref(),
             dh: self.dh.as_ref(),
             base: self.base.as_ref(),
@@ -214,7 +218,26 @@ impl KinematicsInput {
             floating_base: floating_base(self.floating_base.as_ref()),
         }
     }
+}
 
+impl KinematicsInput {
+    /// The tip links, from `tip` or `tips`.
+    pub fn tips(&self) -> Vec<SpannedValue<String>> {
+        self.keys.tips()
+    }
+
+    /// What loading needs.
+    pub fn source(&self) -> SourceOptions<'_> {
+        self.keys.source(&self.ident)
+    }
+
+    /// The keys saying what to emit.
+    pub fn output(&self) -> &OutputKeys {
+        &self.keys.rest
+    }
+}
+
+impl OutputKeys {
     /// The sine and cosine asked for (ours by default).
     pub fn trig(&self) -> darling::Result<Trig> {
         match self.trig.as_ref().map(|t| (t.as_str(), t.span())) {
