@@ -163,10 +163,15 @@ fn smallest_singular_value(j: &[[f64; 6]; 6]) -> f64 {
 /// themselves.
 const NEAR_SINGULAR: f64 = 1e-3;
 
+/// The pose errors allowed of exact solutions within [`NEAR_SINGULAR`] of a singularity (times
+/// the reach for translations).
+const NEAR_SINGULAR_TOLERANCE: f64 = 1e-10;
+
 /// The round trip: for random `q` within limits, `tip_ik(tip_pose(q))` holds `q` (modulo 2 pi,
 /// within 1e-9 rad) among its exact solutions, and every exact solution reaches the target
 /// within `AGREEMENT_TOLERANCE` (times the reach for translations), by the errors the generated
-/// forward kinematics measured and by the runtime reference.
+/// forward kinematics measured and by the runtime reference; samples within [`NEAR_SINGULAR`] of
+/// a singularity, within [`NEAR_SINGULAR_TOLERANCE`].
 #[test]
 fn every_covered_robot_round_trips() {
     let tolerance = kinematics::AGREEMENT_TOLERANCE;
@@ -180,13 +185,18 @@ fn every_covered_robot_round_trips() {
             let target = (arm.pose)(&q);
             let solutions = (arm.ik)(&target).expect("a pose is a valid target");
             if quartic(arm.family) {
-                assert!(solutions.len() >= 2 && solutions.len() % 2 == 0, "{}: {solutions:#?}", arm.name);
+                assert!(solutions.len() >= 2 && solutions.len().is_multiple_of(2), "{}: {solutions:#?}", arm.name);
             } else {
                 assert_eq!(solutions.len(), 8, "{}", arm.name);
             }
+            // Within the stated distance of a singularity the angles lose digits (a double root's
+            // are as good as the square root of rounding, or the distance's reciprocal times it):
+            // those samples are held to a looser bound, the rest to the agreement tolerance.
+            let near_singular = smallest_singular_value(&(arm.jacobian)(&q)) < NEAR_SINGULAR;
+            let bound = if near_singular { NEAR_SINGULAR_TOLERANCE } else { tolerance };
             for s in solutions.exact() {
                 assert!(
-                    s.position_error <= tolerance * reach && s.rotation_error <= tolerance,
+                    s.position_error <= bound * reach && s.rotation_error <= bound,
                     "{}: q {q:?}: solution {s:?}",
                     arm.name
                 );
@@ -194,13 +204,13 @@ fn every_covered_robot_round_trips() {
                 let generated = Pose::from(reached);
                 let (position, rotation) = kinematics::ik::pose_errors(&generated, &target);
                 assert!(
-                    position <= tolerance * reach && rotation <= tolerance,
+                    position <= bound * reach && rotation <= bound,
                     "{}: the reference puts solution {:?} {position:e} m, {rotation:e} rad from the target",
                     arm.name,
                     s.q
                 );
             }
-            if smallest_singular_value(&(arm.jacobian)(&q)) < NEAR_SINGULAR {
+            if near_singular {
                 skipped += 1;
                 continue;
             }

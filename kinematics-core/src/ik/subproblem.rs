@@ -15,7 +15,7 @@
 //! Subproblems 3 and 4 are both `a cos t + b sin t = c` ([`cos_sin_equation`]). No function here
 //! returns NaN for finite input: a degenerate case gives a representative angle and a flag.
 
-use super::vector::{V3, add, cross, dot, norm_squared, scale};
+use super::vector::{V3, add, cross, dot, norm_squared, scale, sub};
 
 mod circles;
 mod polynomial;
@@ -103,10 +103,13 @@ impl Turn {
 /// distance from it. When `p1` lies on the axis every angle serves: `0`, flagged singular.
 #[inline(always)]
 pub fn rotation_onto(k: V3, p1: V3, p2: V3) -> (Turn, Quality) {
-    let along1 = dot(k, p1);
-    let along2 = dot(k, p2);
-    let x = dot(p1, p2) - along1 * along2;
-    let y = dot(k, cross(p1, p2));
+    // The parts across the axis first, then their angle: `p1 . p2 - (k . p1)(k . p2)` would
+    // cancel to a few digits for vectors near the axis (a wrist near its singularity), where the
+    // parts across are small but still exact to rounding.
+    let u1 = sub(p1, scale(k, dot(k, p1)));
+    let u2 = sub(p2, scale(k, dot(k, p2)));
+    let x = dot(u1, u2);
+    let y = dot(k, cross(u1, u2));
     // The squared distances from the axis, as |k x p|^2: the difference |p|^2 - (k . p)^2 would
     // cancel to rounding noise for a vector nearly along the axis.
     let across1 = norm_squared(cross(k, p1));

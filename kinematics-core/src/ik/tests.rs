@@ -135,7 +135,7 @@ fn every_family_round_trips_on_random_arms() {
                 let mut solutions = solve(family, &arm, &target);
                 solutions.measure(&target, |q| arm.pose(q));
                 if family.quartic() {
-                    assert!(solutions.len() >= 2 && solutions.len() % 2 == 0, "{family:?}: {solutions:?}");
+                    assert!(solutions.len() >= 2 && solutions.len().is_multiple_of(2), "{family:?}: {solutions:?}");
                 } else {
                     assert_eq!(solutions.len(), 8);
                 }

@@ -122,12 +122,13 @@ pub(crate) fn real_roots(c: &[f64]) -> Roots {
     }
     // A critical point whose value is zero to rounding is a root, and its value counts as zero:
     // the sign change rounding may leave beside it is the same (double) root.
+    edges[count] = bound;
     let mut lo = edges[0];
     let (mut f_lo, _) = evaluate(c, lo);
-    for i in 1..=count {
-        let hi = if i < count { edges[i] } else { bound };
+    for (i, &hi) in edges[1..=count].iter().enumerate() {
         let (mut f_hi, _) = evaluate(c, hi);
-        let touches = i < count && f_hi.abs() <= TOUCH * size_at(c, hi);
+        // Every edge but the last (the bound) is a critical point.
+        let touches = i + 1 < count && f_hi.abs() <= TOUCH * size_at(c, hi);
         if touches {
             f_hi = 0.0;
         }
