@@ -1,0 +1,307 @@
+//! Reading: criterion's medians (`<group>/<variant>/new/estimates.json`) and the records the
+//! benchmarks leave beside them (`kinematics-robots.tsv`, `kinematics-build.tsv`,
+//! `kinematics-paired.tsv`, `kinematics-ik.tsv`), `benches/ik-geo/RESULTS.md`, the compiler's
+//! operation counts of each robot, and the machine. Everything the report prints comes from here
+//! as plain data ([`Run`], [`Row`], [`Ik`]); the other modules only format it, so they know
+//! nothing of files and can be tested on values written in the test.
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+
+/// Any failure reading the results: a robot file, its parse or its compilation.
+pub type Result<T> = std::result::Result<T, Box<dyn std::error::Error>>;
+
+/// One robot's row of one run.
+#[derive(Clone)]
+pub struct Row {
+    /// The benchmark's group name (`ur5`).
+    pub group: String,
+    /// The description's file name under `robots/`.
+    pub file: String,
+    /// The tip the tip bodies compute.
+    pub tip: String,
+    /// Degrees of freedom.
+    pub dof: usize,
+    /// The compiler's operation counts of the tip pose (`sin_cos/mul/add`).
+    pub ops: String,
+    /// The same for all link poses.
+    pub ops_all: String,
+    /// The same for the tip's Jacobian (`LOCAL_WORLD_ALIGNED`) and for the pose with it.
+    pub ops_jacobian: String,
+    pub ops_pose_and_jacobian: String,
+    /// Median ns per configuration (per call for single-configuration bodies), by variant.
+    pub ns: BTreeMap<&'static str, f64>,
+    /// Ratios timed in alternation by the benchmark (`kinematics-paired.tsv`), by pair name.
+    pub paired: BTreeMap<String, f64>,
+}
+
+/// One build's results.
+pub struct Run {
+    /// `plain` or `native`, the directory it was read from.
+    pub name: &'static str,
+    /// The benchmark's build record: its label and the vector features it was compiled with.
+    pub build: String,
+    /// The directory it was read from.
+    pub dir: PathBuf,
+    pub rows: Vec<Row>,
+}
+
+/// Every variant the benchmark times, and how many configurations one call computes (criterion's
+/// median is per call; the tables show it per configuration).
+const VARIANTS: [(&str, f64); 35] = [
+    ("generated_jacobian_f64", 1.0),
+    ("generated_pose_and_jacobian_f64", 1.0),
+    ("runtime_jacobian_f64", 1.0),
+    ("k_jacobian_f64", 1.0),
+    ("generated_twist_f64", 1.0),
+    ("generated_pose_f64", 1.0),
+    ("generated_pose_f32", 1.0),
+    ("generated_position_f64", 1.0),
+    ("generated_all_f64", 1.0),
+    ("generated_all_f32", 1.0),
+    ("std_pose_f64", 1.0),
+    ("std_all_f64", 1.0),
+    ("lanes_pose_f64x4", 4.0),
+    ("scalar4_pose_f64", 4.0),
+    ("lanes_pose_f32x8", 8.0),
+    ("scalar8_pose_f32", 8.0),
+    ("generated_batch1024_f64", 1024.0),
+    ("batch1024_f64", 1024.0),
+    ("generated_batch1024_f32", 1024.0),
+    ("batch1024_f32", 1024.0),
+    ("batch16384_f64", 16384.0),
+    ("parallel_batch16384_f64", 16384.0),
+    ("runtime_pose_f64", 1.0),
+    ("runtime_all_f64", 1.0),
+    ("k_all_f64", 1.0),
+    ("k_pose_f64", 1.0),
+    ("floor_f64", 1.0),
+    ("floor_std_f64", 1.0),
+    ("floor_f32", 1.0),
+    ("floor_f64x4", 4.0),
+    ("floor_f32x8", 8.0),
+    ("floor_all_f64", 1.0),
+    ("floor_std_all_f64", 1.0),
+    ("galaw_all_f64", 1.0),
+    ("galaw_all_f32", 1.0),
+];
+
+/// Criterion's median, in ns per call, of benchmark `variant` of group `group`, if it was run.
+pub fn median_ns(criterion: &Path, group: &str, variant: &str) -> Option<f64> {
+    let path = criterion.join(group).join(variant).join("new/estimates.json");
+    let json: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(path).ok()?).ok()?;
+    json["median"]["point_estimate"].as_f64()
+}
+
+/// The CPU, its cores and the compiler, for the summary's header.
+pub fn machine() -> String {
+    let model = std::fs::read_to_string("/proc/cpuinfo")
+        .ok()
+        .and_then(|s| {
+            s.lines().find(|l| l.starts_with("model name")).map(|l| l.split(':').nth(1).unwrap_or("").trim().to_owned())
+        })
+        .unwrap_or_else(|| "unknown CPU".to_owned());
+    let cores = std::thread::available_parallelism().map(|n| n.get()).unwrap_or(0);
+    let rustc = std::process::Command::new("rustc")
+        .arg("-V")
+        .output()
+        .ok()
+        .map(|o| String::from_utf8_lossy(&o.stdout).trim().to_owned())
+        .unwrap_or_default();
+    format!("{model}, {cores} cores, {rustc}")
+}
+
+/// `a / b`, when both were measured.
+pub fn ratio(a: Option<f64>, b: Option<f64>) -> Option<f64> {
+    Some(a? / b?)
+}
+
+/// Reads one build's results from `criterion` (its robot list, medians, pairs and build record),
+/// or `None` when that build was never benchmarked.
+pub fn read_run(root: &Path, name: &'static str, criterion: PathBuf) -> Result<Option<Run>> {
+    let Ok(manifest) = std::fs::read_to_string(criterion.join("kinematics-robots.tsv")) else { return Ok(None) };
+    // Absent when the run predates the pairs or the build record: the tables then say n/a.
+    let paired_text = std::fs::read_to_string(criterion.join("kinematics-paired.tsv")).unwrap_or_default();
+    let build = std::fs::read_to_string(criterion.join("kinematics-build.tsv"))
+        .unwrap_or_default()
+        .lines()
+        .filter_map(|l| l.split_once('\t'))
+        .map(|(k, v)| format!("{k}: {v}"))
+        .collect::<Vec<_>>()
+        .join("; ");
+    let mut rows = Vec::new();
+    for line in manifest.lines() {
+        let [group, file, tip] = line.split('\t').collect::<Vec<_>>()[..] else { continue };
+        let text = std::fs::read_to_string(root.join("robots").join(file))?;
+        let tree = kinematics_model::parse_source(file, &text)?;
+        let ops = kinematics_compiler::compile(&tree, &kinematics_compiler::Request::tip(tip))?.op_count();
+        let ops_all = kinematics_compiler::compile(&tree, &kinematics_compiler::Request::all_links())?.op_count();
+        let frame = kinematics_model::JacobianFrame::LocalWorldAligned;
+        let ops_jacobian =
+            kinematics_compiler::compile(&tree, &kinematics_compiler::Request::tip(tip).jacobian(frame))?.op_count();
+        let ops_pose_and_jacobian =
+            kinematics_compiler::compile(&tree, &kinematics_compiler::Request::tip(tip).pose_and_jacobian(frame))?
+                .op_count();
+        let mut ns = BTreeMap::new();
+        for (variant, configurations) in VARIANTS {
+            if let Some(v) = median_ns(&criterion, group, variant) {
+                ns.insert(variant, v / configurations);
+            }
+        }
+        rows.push(Row {
+            group: group.to_owned(),
+            file: file.to_owned(),
+            tip: tip.to_owned(),
+            dof: tree.dof(),
+            ops: format!("{}/{}/{}", ops.sin_cos, ops.mul, ops.add),
+            ops_all: format!("{}/{}/{}", ops_all.sin_cos, ops_all.mul, ops_all.add),
+            ops_jacobian: format!("{}/{}/{}", ops_jacobian.sin_cos, ops_jacobian.mul, ops_jacobian.add),
+            ops_pose_and_jacobian: format!(
+                "{}/{}/{}",
+                ops_pose_and_jacobian.sin_cos, ops_pose_and_jacobian.mul, ops_pose_and_jacobian.add
+            ),
+            ns,
+            paired: paired_text
+                .lines()
+                .filter_map(|l| match l.split('\t').collect::<Vec<_>>()[..] {
+                    [g, name, v] if g == group => Some((name.to_owned(), v.parse().ok()?)),
+                    _ => None,
+                })
+                .collect(),
+        });
+    }
+    let build = if build.is_empty() { "no build record".to_owned() } else { build };
+    Ok(Some(Run { name, build, dir: criterion, rows }))
+}
+
+/// The closed-form robots of the IK benchmark, as it names its groups (`ik-<name>`), and as the
+/// summary names them.
+const CLOSED: [(&str, &str); 3] = [("ur5", "UR5"), ("irb120", "IRB 120"), ("puma560", "PUMA 560")];
+/// The numeric robots.
+const NUMERIC: [(&str, &str); 2] = [("panda", "Panda"), ("iiwa14", "iiwa 14")];
+
+/// One closed-form robot's IK medians, ns per call.
+pub struct ClosedIk {
+    /// The summary's name (`UR5`).
+    pub name: &'static str,
+    /// Every solution (`tip_ik`).
+    pub all: Option<f64>,
+    /// The solution nearest a seed (`tip_ik_nearest`).
+    pub nearest: Option<f64>,
+    /// The family solver alone, without measuring each solution's errors.
+    pub solver: Option<f64>,
+}
+
+/// One numeric robot's IK medians and success counts.
+pub struct NumericIk {
+    /// The summary's name (`Panda`).
+    pub name: &'static str,
+    /// Our numeric solve, ns per call.
+    pub ours: Option<f64>,
+    /// `k`'s Jacobian IK on the same targets and seeds, ns per call.
+    pub k: Option<f64>,
+    /// Converged solves, ours and `k`'s, of how many targets (`kinematics-ik.tsv`).
+    pub success: Option<(f64, f64, f64)>,
+}
+
+/// The results of `cargo bench --bench ik` and of `benches/ik-geo/run.sh`.
+pub struct Ik {
+    /// The closed forms.
+    pub closed: Vec<ClosedIk>,
+    /// The numeric solver against `k`.
+    pub numeric: Vec<NumericIk>,
+    /// The table lines (`|...`) of `benches/ik-geo/RESULTS.md`, empty when it was never run.
+    pub ik_geo: String,
+}
+
+/// The IK results in `criterion` (and `root`'s `benches/ik-geo/RESULTS.md`), or `None` when the
+/// IK benchmark was never run (no median for the UR5's `all`).
+pub fn read_ik(root: &Path, criterion: &Path) -> Option<Ik> {
+    median_ns(criterion, "ik-ur5", "all")?;
+    let closed = CLOSED
+        .into_iter()
+        .map(|(group, name)| {
+            let g = format!("ik-{group}");
+            let [all, nearest, solver] = ["all", "nearest", "solver"].map(|v| median_ns(criterion, &g, v));
+            ClosedIk { name, all, nearest, solver }
+        })
+        .collect();
+    let numeric = NUMERIC
+        .into_iter()
+        .map(|(group, name)| {
+            let g = format!("ik-{group}");
+            let (ours, k) = (median_ns(criterion, &g, "numeric"), median_ns(criterion, &g, "k-jacobian-ik"));
+            NumericIk { name, ours, k, success: success(criterion, group) }
+        })
+        .collect();
+    let ik_geo = std::fs::read_to_string(root.join("benches/ik-geo/RESULTS.md")).unwrap_or_default();
+    let ik_geo = ik_geo.lines().filter(|l| l.starts_with('|')).map(|l| format!("{l}\n")).collect();
+    Some(Ik { closed, numeric, ik_geo })
+}
+
+/// One numeric robot's success counts (`robot, ours, k, targets`), as the benchmark wrote them.
+fn success(criterion: &Path, robot: &str) -> Option<(f64, f64, f64)> {
+    let text = std::fs::read_to_string(criterion.join("kinematics-ik.tsv")).ok()?;
+    text.lines().find_map(|line| {
+        let cells: Vec<&str> = line.split('\t').collect();
+        match cells[..] {
+            [name, ours, k, count] if name == robot => Some((ours.parse().ok()?, k.parse().ok()?, count.parse().ok()?)),
+            _ => None,
+        }
+    })
+}
+
+/// A ratio cell of the ik-geo table for `robot` (column `column`, 0-based after the robot's name).
+pub fn ik_geo_cell(table: &str, robot: &str, column: usize) -> Option<f64> {
+    let line = table.lines().find(|l| l.starts_with(&format!("| {robot} |")))?;
+    line.split('|').map(str::trim).filter(|c| !c.is_empty()).nth(column + 1)?.parse().ok()
+}
+
+/// A robot's row with the given medians and pairs, for the other modules' tests.
+#[cfg(test)]
+pub fn test_row(group: &str, ns: &[(&'static str, f64)], paired: &[(&str, f64)]) -> Row {
+    Row {
+        group: group.to_owned(),
+        file: format!("{group}.urdf"),
+        tip: "tool0".to_owned(),
+        dof: 6,
+        ops: "6/1/2".to_owned(),
+        ops_all: "6/3/4".to_owned(),
+        ops_jacobian: "6/5/6".to_owned(),
+        ops_pose_and_jacobian: "6/7/8".to_owned(),
+        ns: ns.iter().copied().collect(),
+        paired: paired.iter().map(|&(k, v)| (k.to_owned(), v)).collect(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ratio_needs_both_figures() {
+        assert_eq!(ratio(Some(3.0), Some(2.0)), Some(1.5));
+        assert_eq!(ratio(None, Some(2.0)), None);
+        assert_eq!(ratio(Some(3.0), None), None);
+    }
+
+    #[test]
+    fn ik_geo_cell_reads_a_robot_s_column() {
+        let table = "| robot | a | b | c |\n|---|---|---|---|\n| UR5 | 1.5 | 2.25 | x |\n| IRB 120 | 7 | 8 | 9 |\n";
+        assert_eq!(ik_geo_cell(table, "UR5", 0), Some(1.5));
+        assert_eq!(ik_geo_cell(table, "UR5", 1), Some(2.25));
+        assert_eq!(ik_geo_cell(table, "IRB 120", 2), Some(9.0));
+        // Not a number, past the last column, or no such robot.
+        assert_eq!(ik_geo_cell(table, "UR5", 2), None);
+        assert_eq!(ik_geo_cell(table, "UR5", 3), None);
+        assert_eq!(ik_geo_cell(table, "PUMA 560", 0), None);
+    }
+
+    #[test]
+    fn every_variant_is_named_once_with_a_positive_count() {
+        for (i, (variant, configurations)) in VARIANTS.iter().enumerate() {
+            assert!(*configurations >= 1.0, "{variant}");
+            assert!(VARIANTS[..i].iter().all(|(v, _)| v != variant), "{variant} twice");
+        }
+    }
+}

@@ -1,0 +1,228 @@
+//! Each build's sections of the summary: median ns per call (f64 unless marked), lanes and
+//! batches per configuration, ratios of the medians, the paired ratios (the figures to quote),
+//! and the tip velocities of the robots that have them.
+
+use std::fmt::Write as _;
+use std::path::PathBuf;
+
+use super::{fmt, paired, table};
+use crate::read::{Row, Run, ratio};
+
+/// One build's sections, appended to `s`.
+pub fn run_sections(s: &mut String, run: &Run) {
+    let title = if run.name == "plain" { "Plain build" } else { "Native build (`-C target-cpu=native`)" };
+    // The directory relative to the workspace (`target/criterion`), never the machine's own path.
+    let dir = run.dir.components().rev().take_while(|c| c.as_os_str() != "..").collect::<Vec<_>>();
+    let dir: PathBuf = dir.into_iter().rev().collect();
+    let _ = writeln!(s, "## {title}\n\nFrom `{}` ({}).\n", dir.display(), run.build);
+    let _ = writeln!(s, "### Median ns per call (f64 unless marked)\n");
+    let columns = [
+        "DoF",
+        "tip",
+        "ops (sin_cos/mul/add)",
+        "all-links ops",
+        "pose",
+        "std pose",
+        "pose f32",
+        "position",
+        "all links",
+        "std all",
+        "all f32",
+        "runtime pose",
+        "runtime all",
+        "k all",
+        "k pose",
+        "galaw all",
+        "galaw all f32",
+        "floor",
+        "floor std",
+        "floor f32",
+        "floor all",
+        "floor std all",
+    ];
+    let variants = [
+        "generated_pose_f64",
+        "std_pose_f64",
+        "generated_pose_f32",
+        "generated_position_f64",
+        "generated_all_f64",
+        "std_all_f64",
+        "generated_all_f32",
+        "runtime_pose_f64",
+        "runtime_all_f64",
+        "k_all_f64",
+        "k_pose_f64",
+        "galaw_all_f64",
+        "galaw_all_f32",
+        "floor_f64",
+        "floor_std_f64",
+        "floor_f32",
+        "floor_all_f64",
+        "floor_std_all_f64",
+    ];
+    table(s, &run.rows, &columns, |r, i| match i {
+        0 => format!("{} (`{}`)", r.dof, r.file),
+        1 => r.tip.clone(),
+        2 => r.ops.clone(),
+        3 => r.ops_all.clone(),
+        i => fmt(r.ns.get(variants[i - 4]).copied()),
+    });
+    let _ = writeln!(s, "\n### Lanes and batches: median ns per configuration (tip pose)\n");
+    let columns = [
+        "lanes f64x4",
+        "4 scalar calls",
+        "floor f64x4",
+        "lanes f32x8",
+        "8 scalar f32 calls",
+        "floor f32x8",
+        "batch f64",
+        "scalar loop f64",
+        "batch f32",
+        "scalar loop f32",
+        "16,384 one thread",
+        "16,384 rayon",
+    ];
+    let variants = [
+        "lanes_pose_f64x4",
+        "scalar4_pose_f64",
+        "floor_f64x4",
+        "lanes_pose_f32x8",
+        "scalar8_pose_f32",
+        "floor_f32x8",
+        "batch1024_f64",
+        "generated_batch1024_f64",
+        "batch1024_f32",
+        "generated_batch1024_f32",
+        "batch16384_f64",
+        "parallel_batch16384_f64",
+    ];
+    table(s, &run.rows, &columns, |r, i| fmt(r.ns.get(variants[i]).copied()));
+    let _ = writeln!(s, "\n### Ratios of the medians\n");
+    let _ = writeln!(
+        s,
+        "Speed-ups are the other contender's time over the generated code's (higher is better); `pose / floor` is the\n\
+         generated pose's time over the trigonometry floor (1.0 would be nothing but the `sin_cos` calls); `trig share` is\n\
+         floor / pose, the part of the pose's time spent in `sin_cos`, and `rest` the pose's time beyond the floor (ns);\n\
+         `f64 / f32` is the pose's f64 time over its f32 time; `k all / galaw all` places galaw against `k` as its\n\
+         authors compare them.\n"
+    );
+    let pairs: [(&str, &str, &str); 12] = [
+        ("std pose / pose", "std_pose_f64", "generated_pose_f64"),
+        ("runtime all / generated all", "runtime_all_f64", "generated_all_f64"),
+        ("k all / generated all", "k_all_f64", "generated_all_f64"),
+        ("galaw all / generated all", "galaw_all_f64", "generated_all_f64"),
+        ("k all / galaw all", "k_all_f64", "galaw_all_f64"),
+        ("k pose / generated pose", "k_pose_f64", "generated_pose_f64"),
+        ("pose / floor", "generated_pose_f64", "floor_f64"),
+        ("position / pose", "generated_position_f64", "generated_pose_f64"),
+        ("trig share", "floor_f64", "generated_pose_f64"),
+        ("f64 / f32", "generated_pose_f64", "generated_pose_f32"),
+        ("all f64 / all f32", "generated_all_f64", "generated_all_f32"),
+        ("batch f64 / batch f32", "batch1024_f64", "batch1024_f32"),
+    ];
+    let mut columns: Vec<&str> = pairs.iter().map(|p| p.0).collect();
+    columns.insert(9, "rest");
+    table(s, &run.rows, &columns, |r, i| {
+        let n = |k: &str| r.ns.get(k).copied();
+        let x = |v: Option<f64>| v.map_or("n/a".to_owned(), |v| format!("{v:.2}"));
+        match i {
+            9 => fmt(n("generated_pose_f64").zip(n("floor_f64")).map(|(p, f)| p - f)),
+            i => {
+                let (_, a, b) = pairs[if i > 9 { i - 1 } else { i }];
+                x(ratio(n(a), n(b)))
+            }
+        }
+    });
+    let _ = writeln!(s, "\n### Paired ratios\n");
+    let _ = writeln!(
+        s,
+        "The medians above come from different seconds of a shared machine whose speed drifts, so ratios of them move\n\
+         by tens of percent between runs. These are timed in alternation instead: 201 rounds, each running both\n\
+         contenders back to back (2,000 calls each; 8 calls of a 1,024-batch; 2 calls of a 16,384-batch; which goes\n\
+         first alternates), and the median of the rounds' ratios. They are the figures to quote. `floor all` is the\n\
+         trigonometry floor of all link poses (every `sin_cos` pair the all-links code calls); `runtime all / floor all`\n\
+         and `k all / floor all` are therefore the largest speed-ups over the runtime and over `k` that any code calling\n\
+         our `sin_cos` could show, and `all / floor all` how far the generated code is from them. `floor std / floor` is\n\
+         what our sin/cos gives over std's on the same angles.\n"
+    );
+    let names = [
+        ("std pose / pose", "std_pose_f64/generated_pose_f64"),
+        ("std all / all", "std_all_f64/generated_all_f64"),
+        ("runtime all / generated all", "runtime_all_f64/generated_all_f64"),
+        ("k all / generated all", "k_all_f64/generated_all_f64"),
+        ("galaw all / generated all", "galaw_all_f64/generated_all_f64"),
+        ("pose / floor", "generated_pose_f64/floor_f64"),
+        ("all / floor all", "generated_all_f64/floor_all_f64"),
+        ("pose f32 / floor f32", "generated_pose_f32/floor_f32"),
+        ("floor std / floor", "floor_std_f64/floor_f64"),
+        ("floor std all / floor all", "floor_std_all_f64/floor_all_f64"),
+        ("std pose / floor std", "std_pose_f64/floor_std_f64"),
+        ("position / pose", "generated_position_f64/generated_pose_f64"),
+        ("runtime all / floor all (bound)", "runtime_all_f64/floor_all_f64"),
+        ("k all / floor all (bound)", "k_all_f64/floor_all_f64"),
+    ];
+    let columns: Vec<&str> = names.iter().map(|n| n.0).collect();
+    table(s, &run.rows, &columns, |r, i| paired(r, names[i].1));
+    let _ = writeln!(
+        s,
+        "\nLanes and batches, paired (per configuration: `4 scalar / lanes` is four `tip_pose` calls over one\n\
+         `tip_pose_generic::<F64x4>` call on the same four configurations; `f64x4 / f32x8` is two `F64x4` calls over one\n\
+         `F32x8` call, eight configurations each side):\n"
+    );
+    let names = [
+        ("4 scalar / lanes f64x4", "scalar4_pose_f64/lanes_pose_f64x4"),
+        ("8 scalar / lanes f32x8", "scalar8_pose_f32/lanes_pose_f32x8"),
+        ("lanes f64x4 / floor f64x4", "lanes_pose_f64x4/floor_f64x4"),
+        ("lanes f32x8 / floor f32x8", "lanes_pose_f32x8/floor_f32x8"),
+        ("f64x4 / f32x8", "lanes_pose_f64x4/lanes_pose_f32x8"),
+        ("scalar loop / batch f64", "generated_batch1024_f64/batch1024_f64"),
+        ("scalar loop / batch f32", "generated_batch1024_f32/batch1024_f32"),
+        ("batch f64 / batch f32", "batch1024_f64/batch1024_f32"),
+        ("one thread / rayon", "batch16384_f64/parallel_batch16384_f64"),
+    ];
+    let columns: Vec<&str> = names.iter().map(|n| n.0).collect();
+    table(s, &run.rows, &columns, |r, i| paired(r, names[i].1));
+    velocity_section(s, run);
+    let _ = writeln!(s);
+}
+
+/// The tip velocities of the arms that have them: medians, and paired ratios.
+fn velocity_section(s: &mut String, run: &Run) {
+    let rows: Vec<Row> = run.rows.iter().filter(|r| r.paired.contains_key(VELOCITY_PAIRS[0].1)).cloned().collect();
+    if rows.is_empty() {
+        return;
+    }
+    let _ = writeln!(
+        s,
+        "\nTip velocities, f64 (`J`: the generated geometric Jacobian, `LOCAL_WORLD_ALIGNED`; `pose + J`:\n\
+         `tip_pose_and_jacobian`; `runtime J`: `ReferenceFk::jacobian`; `k J`: `k::jacobian` of its serial chain;\n\
+         `twist`: `tip_twist`, against `tip_jacobian` and the product by the rates written by hand). Op counts,\n\
+         medians in ns, then paired ratios:\n"
+    );
+    let _ = writeln!(s, "Op counts (`sin_cos` pairs / multiplications / additions):\n");
+    let columns = ["pose", "J", "pose + J"];
+    table(s, &rows, &columns, |r, i| [&r.ops, &r.ops_jacobian, &r.ops_pose_and_jacobian][i].clone());
+    let _ = writeln!(s);
+    let medians = [
+        ("J", "generated_jacobian_f64"),
+        ("pose + J", "generated_pose_and_jacobian_f64"),
+        ("runtime J", "runtime_jacobian_f64"),
+        ("k J", "k_jacobian_f64"),
+        ("twist", "generated_twist_f64"),
+    ];
+    let columns: Vec<&str> = medians.iter().map(|m| m.0).collect();
+    table(s, &rows, &columns, |r, i| fmt(r.ns.get(medians[i].1).copied()));
+    let _ = writeln!(s);
+    let columns: Vec<&str> = VELOCITY_PAIRS.iter().map(|p| p.0).collect();
+    table(s, &rows, &columns, |r, i| paired(r, VELOCITY_PAIRS[i].1));
+}
+
+/// The velocity pairs the summary prints: (column, pair name).
+const VELOCITY_PAIRS: [(&str, &str); 6] = [
+    ("pose + J / pose", "generated_pose_and_jacobian_f64/generated_pose_f64"),
+    ("J / pose", "generated_jacobian_f64/generated_pose_f64"),
+    ("runtime J / pose + J", "runtime_jacobian_f64/generated_pose_and_jacobian_f64"),
+    ("runtime J / J", "runtime_jacobian_f64/generated_jacobian_f64"),
+    ("k J / pose + J", "k_jacobian_f64/generated_pose_and_jacobian_f64"),
+    ("J then J*qd / twist", "jacobian_times_qd_f64/generated_twist_f64"),
+];
