@@ -95,3 +95,58 @@ fn positional_rows_read_like_the_textbook_table() {
     let [x, _, _] = PlanarTable::tip_pose(&[0.0, 0.0, 0.0, 0.0]).translation;
     assert!((x - 2.5).abs() < 1e-12);
 }
+
+/// Issue 21: the generated bodies' locals (`q1`, `s1`, `c23`, `t0`, `qd1`, ...) beside constants
+/// and unit structs of those names in the deriving module. A `let` named like a constant or unit
+/// struct in scope is a pattern, not a binding, so these broke the derive ("expected type
+/// parameter `T`, found `q1`") until the bodies moved into a module of their own.
+mod locals_named_like_user_items {
+    #![allow(non_upper_case_globals, non_camel_case_types, dead_code)]
+
+    use kinematics::Kinematics;
+
+    const q1: f64 = 0.0;
+    const c23: f64 = 0.0;
+    const t0: f64 = 0.0;
+    const qd1: f64 = 0.0;
+    struct s1;
+    struct c1;
+
+    #[derive(Kinematics)]
+    #[kinematics(urdf = "robots/ur5.urdf", tip = "tool0", positions, jacobians, ik, scalars(f64, f32))]
+    pub struct Ur5Here;
+
+    #[test]
+    fn every_function_computes_what_it_does_elsewhere() {
+        let q = [0.3, -1.2, 1.0, 0.4, -0.7, 2.0];
+        let pose = Ur5Here::tip_pose(&q);
+        let reference = Ur5Here::reference().unwrap();
+        let expected = reference.relative_pose(&q, Ur5Here::BASE, "tool0").unwrap();
+        assert!((pose.to_isometry().translation.vector - expected.translation.vector).norm() < 1e-12);
+        assert!(pose.to_isometry().rotation.angle_to(&expected.rotation) < 1e-12);
+        assert_eq!(Ur5Here::tip_position(&q), pose.translation);
+        for (link, link_pose) in Ur5Here::LINK_NAMES.iter().zip(Ur5Here::link_poses(&q)) {
+            let expected = reference.relative_pose(&q, Ur5Here::BASE, link).unwrap();
+            assert!((link_pose.to_isometry().translation.vector - expected.translation.vector).norm() < 1e-12);
+        }
+        let (with_jacobian, jacobian) = Ur5Here::tip_pose_and_jacobian(&q);
+        // Computed together with the Jacobian, so rounded differently: equal to within rounding.
+        assert!(with_jacobian.to_isometry().rotation.angle_to(&pose.to_isometry().rotation) < 1e-12);
+        assert_eq!(with_jacobian.translation, pose.translation);
+        assert_eq!(jacobian, Ur5Here::tip_jacobian(&q));
+        let qd = [0.1, 0.2, -0.3, 0.4, 0.5, -0.6];
+        let twist = Ur5Here::tip_twist(&q, &qd);
+        for (row, value) in jacobian.iter().zip(twist) {
+            let product: f64 = row.iter().zip(qd).map(|(j, v)| j * v).sum();
+            assert!((product - value).abs() < 1e-12, "twist {value} against J * qd {product}");
+        }
+        let solutions = Ur5Here::tip_ik(&pose).unwrap();
+        let found = Ur5Here::tip_ik_nearest(&pose, &q).unwrap().expect("a solution near q");
+        assert!(!solutions.is_empty());
+        for (a, b) in found.q.iter().zip(q) {
+            assert!((a - b).abs() < 1e-9, "nearest solution {:?} against q {q:?}", found.q);
+        }
+        let pose_f32 = Ur5Here::tip_pose_f32(&q.map(|v| v as f32));
+        assert!((f64::from(pose_f32.translation[0]) - pose.translation[0]).abs() < 1e-5);
+    }
+}

@@ -24,7 +24,7 @@ pub(super) type Returns<'r> = &'r dyn Fn(&TokenStream) -> TokenStream;
 impl Functions {
     /// `compiled` as the generic body `name`.
     pub(super) fn body(&mut self, cx: &Context<'_>, compiled: &Compiled, name: &str) {
-        self.generic.push(emit_function(compiled, &cx.private(name)));
+        self.generic.push(emit_function(compiled, &cx.body_options(name)));
     }
 
     /// The functions on the type calling the generic body `generic_name` with `q`: `name` and its

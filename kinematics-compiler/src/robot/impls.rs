@@ -19,7 +19,10 @@ pub(super) fn robot_block(self_ty: &TokenStream, cx: &Context<'_>, out: &Functio
     let into = trait_functions(cx);
     quote! {
         const _: () = {
-        #(#generic)*
+        mod bodies {
+            #(#generic)*
+        }
+        use bodies::*;
 
         #[allow(clippy::approx_constant)] // limits and offsets are kept exactly as the description gives them
         #[allow(clippy::type_complexity)] // several tips' poses and Jacobians, as arrays of pairs

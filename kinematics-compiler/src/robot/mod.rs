@@ -2,12 +2,24 @@
 //!
 //! The derive macro and the build API both emit through [`emit_robot`], so their output is the same.
 //!
-//! The output is one anonymous block, `const _: () = { ... };`, holding the generic functions (free
-//! functions, private to the block) and the impls that call them. Nothing in it can collide with
-//! the user's names: the generic functions' own scalar parameter `T` is declared where no other
-//! generics are in scope, the user's generics appear only on the impls (as given in
+//! The output is one anonymous block, `const _: () = { ... };`, holding the generic functions (in
+//! a module `bodies` private to the block) and the impls that call them. Nothing in it can collide
+//! with the user's names: the generic functions' own scalar parameter `T` is declared where no
+//! other generics are in scope, the user's generics appear only on the impls (as given in
 //! [`RobotSpec::impl_generics`]), and everything else is reached by absolute paths (`::core`, the
 //! crate path).
+//!
+//! The generic functions' locals (`q1`, `s1`, `c23`, `t0`, ...) are in a module of their own
+//! because a `let` whose name is a constant or unit struct in scope is a pattern, not a binding:
+//! beside a user's `const q1: f64` in the same module, `let [q1, q2] = *q;` would not compile.
+//! A module sees none of its parent's items, so its bodies see none of the user's. Hygiene
+//! (`Span::mixed_site()`) would not do: it hides locals from each other, not items from
+//! patterns (tried: a `const q1` beside a mixed-site `let q1` still makes it a pattern), and
+//! the build API's output is text, which has no hygiene at all. The impls' own parameters and
+//! locals (`q`, `qd`, `qs`, `out`, `target`, `seed`, `free`, `options`, `solutions`) are in the
+//! user's scope, as a hand-written function's would be. The module reaches the crate by
+//! [`RobotSpec::krate`], so that path must name it from any module (an absolute path, a
+//! `crate::` path or a dependency's name), as the `crate` option's renamed dependency does.
 
 mod constants;
 mod functions;
@@ -196,9 +208,10 @@ impl<'a> Context<'a> {
         self.spec.tree
     }
 
-    /// How the generic body `name` is emitted: private to the block, with the spec's trig.
-    fn private(&self, name: &str) -> EmitOptions {
-        EmitOptions { name: name.to_owned(), private: self.p.clone(), public: false, trig: self.spec.trig }
+    /// How the generic body `name` is emitted: public in the block's private module `bodies`
+    /// (so the block can call it), with the spec's trig.
+    fn body_options(&self, name: &str) -> EmitOptions {
+        EmitOptions { name: name.to_owned(), private: self.p.clone(), public: true, trig: self.spec.trig }
     }
 
     /// `Pose<t>`.
