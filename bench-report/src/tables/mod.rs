@@ -1,7 +1,7 @@
 //! Tables: the Markdown of `benches/SUMMARY.md`. This module holds the cell formats, the one
 //! table layout every section uses (a row per robot), and the summary's opening and closing
 //! prose; `fk` writes each build's sections (medians, ratios, paired ratios, velocities) and `ik`
-//! the inverse kinematics section. Figures come in as [`Row`]s and [`Ik`] values read elsewhere.
+//! the inverse kinematics section. Figures come in as [`Row`]s and [`Ik`](crate::read::Ik) values read elsewhere.
 
 mod fk;
 mod ik;
