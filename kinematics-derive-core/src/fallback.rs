@@ -3,10 +3,13 @@
 //! errors wherever the struct is used (as thiserror's `fallback.rs` and serde_derive do).
 //!
 //! The stub never runs: the `compile_error!`s beside it stop the build. Its functions take and
-//! return arrays of the robot's lengths when the description loaded; otherwise they are generic
-//! over them (`q: &[f64; N]`, `[Pose<f64>; M]`, under names the user's generics cannot take), so
-//! calls that fix the lengths type check whatever the robot was meant to be. The fallible ones return errors; the infallible ones
-//! (`tip_pose`) have nothing to return and are `unreachable!`.
+//! return arrays of the robot's lengths when the description loaded. Otherwise the number of
+//! joints is a const parameter (`q: &[f64; N]`, under a name the user's generics cannot take),
+//! which every call's `q` fixes, and an array of links or of tips no one could count is an
+//! `UnknownLength` that indexes, iterates and compares as the array would, so
+//! `let poses = Robot::link_poses(&q); poses[2]` adds no "type annotations needed" (a batch's
+//! `out` gives its length, so batches keep a const parameter). The fallible ones return errors;
+//! the infallible ones (`tip_pose`) have nothing to return and are `unreachable!`.
 
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
@@ -184,6 +187,16 @@ pub struct Known {
     pub links: usize,
 }
 
+/// How many values a stub function returns: one, or an array of them whose length is known or
+/// not.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Frames {
+    /// One value (`tip_pose`).
+    One,
+    /// An array (`link_poses`, `tip_poses`), of the length given if known.
+    Many(Option<usize>),
+}
+
 /// The stub: `impl Type { ... }` with the constants, the functions the attribute implies and
 /// `reference()`, and `impl Kinematics for Type`, in an anonymous block. Lengths not known (no
 /// description, or tips that could not be counted) are const parameters of the functions, which
@@ -200,69 +213,89 @@ pub fn stub(input: &syn::DeriveInput, options: Option<&KinematicsInput>, known: 
         .filter(|(on, _, _)| *on)
         .map(|(_, suffix, t)| (suffix, t))
         .collect();
-    let length = |known: Option<usize>, param: &TokenStream| match known {
-        Some(n) => {
-            let n = proc_macro2::Literal::usize_unsuffixed(n);
+    let (dof, dof_param) = match known {
+        Some(k) => {
+            let n = proc_macro2::Literal::usize_unsuffixed(k.dof);
             (quote!(#n), None)
         }
-        None => (param.clone(), Some(quote!(const #param: usize))),
+        None => (quote!(__KINEMATICS_DOF), Some(quote!(const __KINEMATICS_DOF: usize))),
     };
-    let (dof, dof_param) = length(known.map(|k| k.dof), &quote!(__KINEMATICS_DOF));
     // Unknown, the velocities are taken to be as many as `q`'s entries (no floating joint), so a
     // call fixes both.
-    let (nv, _) = length(known.map(|k| k.velocities), &dof);
-    let (links, links_param) = length(known.map(|k| k.links), &quote!(__KINEMATICS_FRAMES));
-    let (tips, tips_param) = length(names.tips, &quote!(__KINEMATICS_FRAMES));
+    let nv = match known {
+        Some(k) => {
+            let n = proc_macro2::Literal::usize_unsuffixed(k.velocities);
+            quote!(#n)
+        }
+        None => dof.clone(),
+    };
+    let links = known.map(|k| k.links);
+    let tips = names.tips;
+    let array = |elem: TokenStream, frames: Frames, batch: bool| match frames {
+        Frames::One => elem,
+        Frames::Many(Some(n)) => {
+            let n = proc_macro2::Literal::usize_unsuffixed(n);
+            quote!([#elem; #n])
+        }
+        // A batch's `out` gives the length; a value nothing gives it to is `UnknownLength`.
+        Frames::Many(None) if batch => quote!([#elem; __KINEMATICS_FRAMES]),
+        Frames::Many(None) => quote!(UnknownLength<#elem>),
+    };
+    let attrs = quote!(#[allow(missing_docs, unused_variables, clippy::missing_panics_doc)]);
     let mut functions = Vec::new();
-    let mut function = |name: &str, frames: Option<&Option<TokenStream>>, ret: &dyn Fn(&TokenStream) -> TokenStream| {
-        let params: Vec<&TokenStream> = dof_param.iter().chain(frames.into_iter().flatten()).collect();
-        let attrs = quote!(#[allow(missing_docs, unused_variables, clippy::missing_panics_doc)]);
+    // `name` (and its batch per scalar, and `name_generic`), returning `frames` values of `elem`'s
+    // type for the scalar; `rates`: the function takes the joint rates `qd` too (and has no batch).
+    let mut function = |name: &str, frames: Frames, rates: bool, elem: &dyn Fn(&TokenStream) -> TokenStream| {
+        let params: Vec<&TokenStream> = dof_param.iter().collect();
+        let frames_param = (frames == Frames::Many(None)).then(|| quote!(const __KINEMATICS_FRAMES: usize));
+        let batch_params: Vec<&TokenStream> = dof_param.iter().chain(&frames_param).collect();
+        let qd = |t: &TokenStream| if rates { quote!(, qd: &[#t; #nv]) } else { quote!() };
         for (suffix, t) in &scalars {
             let f = format_ident!("{name}{suffix}");
-            let batch = format_ident!("{name}_batch{suffix}");
-            let r = ret(t);
+            let (r, qd) = (array(elem(t), frames, false), qd(t));
             functions.push(quote! {
                 #attrs
-                pub fn #f<#(#params),*>(q: &[#t; #dof]) -> #r {
-                    ::core::unreachable!(#message)
-                }
-                #attrs
-                pub fn #batch<#(#params),*>(qs: &[[#t; #dof]], out: &mut [#r]) -> ::core::result::Result<(), #p::KinematicsError> {
+                pub fn #f<#(#params),*>(q: &[#t; #dof] #qd) -> #r {
                     ::core::unreachable!(#message)
                 }
             });
+            if !rates {
+                let batch = format_ident!("{name}_batch{suffix}");
+                let r = array(elem(t), frames, true);
+                functions.push(quote! {
+                    #attrs
+                    pub fn #batch<#(#batch_params),*>(qs: &[[#t; #dof]], out: &mut [#r]) -> ::core::result::Result<(), #p::KinematicsError> {
+                        ::core::unreachable!(#message)
+                    }
+                });
+            }
         }
         let f = format_ident!("{name}_generic");
         let scalar = quote!(__KinematicsScalar);
-        let r = ret(&scalar);
+        let (r, qd) = (array(elem(&scalar), frames, false), qd(&scalar));
         functions.push(quote! {
             #attrs
-            pub fn #f<#scalar: #p::Real, #(#params),*>(q: &[#scalar; #dof]) -> #r {
+            pub fn #f<#scalar: #p::Real, #(#params),*>(q: &[#scalar; #dof] #qd) -> #r {
                 ::core::unreachable!(#message)
             }
         });
     };
     let pose = |t: &TokenStream| quote!(#p::Pose<#t>);
-    function("link_poses", Some(&links_param), &|t| {
-        let p = pose(t);
-        quote!([#p; #links])
-    });
+    function("link_poses", Frames::Many(links), false, &pose);
     if names.one_tip {
-        function("tip_pose", None, &pose);
+        function("tip_pose", Frames::One, false, &pose);
     }
     if names.several_tips {
-        function("tip_poses", Some(&tips_param), &|t| {
-            let p = pose(t);
-            quote!([#p; #tips])
-        });
+        function("tip_poses", Frames::Many(tips), false, &pose);
     }
     if names.positions {
-        function("link_positions", Some(&links_param), &|t| quote!([[#t; 3]; #links]));
+        let position = |t: &TokenStream| quote!([#t; 3]);
+        function("link_positions", Frames::Many(links), false, &position);
         if names.one_tip {
-            function("tip_position", None, &|t| quote!([#t; 3]));
+            function("tip_position", Frames::One, false, &position);
         }
         if names.several_tips {
-            function("tip_positions", Some(&tips_param), &|t| quote!([[#t; 3]; #tips]));
+            function("tip_positions", Frames::Many(tips), false, &position);
         }
     }
     if names.jacobians {
@@ -273,55 +306,27 @@ pub fn stub(input: &syn::DeriveInput, options: Option<&KinematicsInput>, known: 
         }
         for (one, several, rows) in velocity {
             let rows = proc_macro2::Literal::usize_unsuffixed(rows);
+            let jacobian = |t: &TokenStream| quote!([[#t; #nv]; #rows]);
             if names.one_tip {
-                function(one, None, &|t| quote!([[#t; #nv]; #rows]));
+                function(one, Frames::One, false, &jacobian);
             }
             if names.several_tips {
-                function(several, Some(&tips_param), &|t| quote!([[[#t; #nv]; #rows]; #tips]));
+                function(several, Frames::Many(tips), false, &jacobian);
             }
         }
         let pair = |t: &TokenStream| quote!((#p::Pose<#t>, [[#t; #nv]; 6]));
         if names.one_tip {
-            function("tip_pose_and_jacobian", None, &pair);
+            function("tip_pose_and_jacobian", Frames::One, false, &pair);
         }
         if names.several_tips {
-            function("tip_poses_and_jacobians", Some(&tips_param), &|t| {
-                let pair = pair(t);
-                quote!([#pair; #tips])
-            });
+            function("tip_poses_and_jacobians", Frames::Many(tips), false, &pair);
         }
-    }
-    if names.jacobians {
-        let attrs = quote!(#[allow(missing_docs, unused_variables, clippy::missing_panics_doc)]);
-        let mut twists = Vec::new();
-        if names.one_tip {
-            twists.extend([("tip_twist", None), ("tip_twist_local", None)]);
-        }
-        if names.several_tips {
-            twists.extend([("tip_twists", Some(&tips_param)), ("tip_twists_local", Some(&tips_param))]);
-        }
-        for (name, frames) in twists {
-            let params: Vec<&TokenStream> = dof_param.iter().chain(frames.into_iter().flatten()).collect();
-            let ret = |t: &TokenStream| if frames.is_some() { quote!([[#t; 6]; #tips]) } else { quote!([#t; 6]) };
-            for (suffix, t) in &scalars {
-                let f = format_ident!("{name}{suffix}");
-                let r = ret(t);
-                functions.push(quote! {
-                    #attrs
-                    pub fn #f<#(#params),*>(q: &[#t; #dof], qd: &[#t; #nv]) -> #r {
-                        ::core::unreachable!(#message)
-                    }
-                });
+        let twist = |t: &TokenStream| quote!([#t; 6]);
+        for (name, frames) in [("tip_twist", Frames::One), ("tip_twists", Frames::Many(tips))] {
+            if (frames == Frames::One && names.one_tip) || (frames != Frames::One && names.several_tips) {
+                function(name, frames, true, &twist);
+                function(&format!("{name}_local"), frames, true, &twist);
             }
-            let f = format_ident!("{name}_generic");
-            let scalar = quote!(__KinematicsScalar);
-            let r = ret(&scalar);
-            functions.push(quote! {
-                #attrs
-                pub fn #f<#scalar: #p::Real, #(#params),*>(q: &[#scalar; #dof], qd: &[#scalar; #nv]) -> #r {
-                    ::core::unreachable!(#message)
-                }
-            });
         }
     }
     let dof_const = known.map_or(0, |k| k.dof);
@@ -354,6 +359,7 @@ pub fn stub(input: &syn::DeriveInput, options: Option<&KinematicsInput>, known: 
         });
     }
     let velocity_const = known.map_or(0, |k| k.velocities);
+    let unknown_length = unknown_length(message);
     let load_error = quote! {
         ::core::result::Result::Err(#p::LoadError::new(
             "",
@@ -365,6 +371,8 @@ pub fn stub(input: &syn::DeriveInput, options: Option<&KinematicsInput>, known: 
     };
     quote! {
         const _: () = {
+            #unknown_length
+
             #[allow(dead_code, missing_docs)]
             impl #impl_generics #ident #ty_generics #where_clause {
                 pub const ROBOT: &'static str = "";
@@ -410,5 +418,70 @@ pub fn stub(input: &syn::DeriveInput, options: Option<&KinematicsInput>, known: 
                 }
             }
         };
+    }
+}
+
+/// The type a stub function returns for an array whose length no one knows (the links of a
+/// description that could not be read, tips that could not be counted): an array type would need
+/// that length, and a const parameter for it is "type annotations needed" wherever the call's
+/// value is used without one (`let poses = Robot::link_poses(&q); poses[2]`). It acts as the array
+/// would where no length is written: indexing, `len`, `iter`, `for` (through `Deref` to a slice
+/// and `IntoIterator`), `==` with arrays. Code that writes the length down
+/// (`let poses: [Pose<f64>; 9] = ...`, `let [a, b] = ...`) gets a second error naming
+/// `UnknownLength`: no one type can be an array of every length. The batches take their
+/// length from `out`, so they keep a const parameter.
+fn unknown_length(message: &str) -> TokenStream {
+    quote! {
+        /// The value of a stub function whose length the derive could not know.
+        #[allow(dead_code)]
+        #[derive(Debug, Clone, Copy)]
+        pub struct UnknownLength<T>(::core::marker::PhantomData<T>);
+
+        impl<T> ::core::ops::Deref for UnknownLength<T> {
+            type Target = [T];
+            fn deref(&self) -> &[T] {
+                ::core::unreachable!(#message)
+            }
+        }
+
+        impl<T> ::core::ops::DerefMut for UnknownLength<T> {
+            fn deref_mut(&mut self) -> &mut [T] {
+                ::core::unreachable!(#message)
+            }
+        }
+
+        impl<T> ::core::iter::IntoIterator for UnknownLength<T> {
+            type Item = T;
+            type IntoIter = ::core::iter::Empty<T>;
+            fn into_iter(self) -> Self::IntoIter {
+                ::core::unreachable!(#message)
+            }
+        }
+
+        impl<'a, T> ::core::iter::IntoIterator for &'a UnknownLength<T> {
+            type Item = &'a T;
+            type IntoIter = ::core::slice::Iter<'a, T>;
+            fn into_iter(self) -> Self::IntoIter {
+                ::core::unreachable!(#message)
+            }
+        }
+
+        impl<T> ::core::cmp::PartialEq for UnknownLength<T> {
+            fn eq(&self, _: &Self) -> bool {
+                ::core::unreachable!(#message)
+            }
+        }
+
+        impl<T, const N: usize> ::core::cmp::PartialEq<[T; N]> for UnknownLength<T> {
+            fn eq(&self, _: &[T; N]) -> bool {
+                ::core::unreachable!(#message)
+            }
+        }
+
+        impl<T, const N: usize> ::core::cmp::PartialEq<UnknownLength<T>> for [T; N] {
+            fn eq(&self, _: &UnknownLength<T>) -> bool {
+                ::core::unreachable!(#message)
+            }
+        }
     }
 }
