@@ -66,7 +66,11 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
     let tree = crate::robot::load(&args.file)?;
     if args.all {
         let (base, _) = crate::robot::base_and_tip(&tree, &args.file, args.base.as_deref(), None)?;
-        write!(out, "{}", all_links_table(&tree, &args.file, &base)?)?;
+        // Every link's pose is compiled: minutes on a chain of thousands of joints.
+        let spinner = crate::progress::spinner("compiling every link's pose");
+        let table = all_links_table(&tree, &args.file, &base);
+        spinner.finish_and_clear();
+        write!(out, "{}", table?)?;
         return Ok(());
     }
     let (base, tip) = crate::robot::base_and_tip(&tree, &args.file, args.base.as_deref(), args.tip.as_deref())?;

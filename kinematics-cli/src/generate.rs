@@ -104,9 +104,16 @@ pub fn builder(args: &Args) -> Result<Robot, CliError> {
 /// Generates, then prints or writes.
 pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
     let robot = builder(args)?;
-    match &args.output {
-        Some(path) => robot.write_to(path)?,
-        None => write!(out, "{}", robot.generate()?)?,
+    // The build API compiles inside one call, with no progress of its own: a spinner says what
+    // runs (on a terminal only).
+    let spinner = crate::progress::spinner("generating code");
+    let generated = match &args.output {
+        Some(path) => robot.write_to(path).map(|()| None),
+        None => robot.generate().map(Some),
+    };
+    spinner.finish_and_clear();
+    if let Some(code) = generated? {
+        write!(out, "{code}")?;
     }
     Ok(())
 }

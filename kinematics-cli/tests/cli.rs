@@ -397,7 +397,7 @@ fn demo_walks_through_the_pipeline() {
 
 #[test]
 fn a_missing_file_is_named_by_every_subcommand() {
-    for command in ["inspect", "fk", "expr", "generate", "check", "graph", "demo"] {
+    for command in ["inspect", "fk", "expr", "generate", "check", "graph", "draw", "demo"] {
         let message = fails(&[command, "robots/none.urdf"]);
         assert!(message.starts_with("error: robots/none.urdf: cannot read the file: "), "{command}: {message}");
     }
