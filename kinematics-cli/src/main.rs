@@ -9,8 +9,9 @@
 //! `demo` all of it on one robot with a timing of the generated code built into this binary
 //! (`ur5.rs`, from `build.rs`). Errors go to stderr as `error: <file>: <element>: <fault>`, with a
 //! non-zero exit status; files are written atomically, so a failed run leaves none behind. Long
-//! work (`check`, `demo`'s agreement) shows a progress bar on stderr when stderr is a terminal,
-//! and nothing when it is not.
+//! work shows progress on stderr when stderr is a terminal, and nothing when it is not: a spinner
+//! while the compiler runs (`check`, `demo`, `generate`, `expr --all`), then a bar over the
+//! configurations `check` and `demo` compare.
 
 mod agreement;
 mod check;
