@@ -40,7 +40,7 @@ use crate::error::CliError;
 #[derive(Parser)]
 #[command(name = "kinematics", version, about)]
 struct Cli {
-    /// Read decimal angles within 1e-9 rad of a multiple of pi/2 (such as 3.14159265359) as that
+    /// Read decimal angles within 1e-8 rad of a multiple of pi/2 (such as 3.14159265359) as that
     /// exact multiple (`on`), or every angle as written (`off`).
     #[arg(long, global = true, value_enum, value_name = "on|off", default_value = "on")]
     exact_angles: Switch,

@@ -90,20 +90,20 @@ impl IkFamily {
     /// rotations of a point, 6 two angles from two heights; 5 and 6 solve a quartic).
     pub fn subproblems(self) -> &'static str {
         match self {
-            IkFamily::SphericalTwoParallel => "q1 by SP4, q3 by SP3, q2 by SP1; wrist: q4, q5 by SP2, q6 by SP1",
-            IkFamily::SphericalFirstTwoIntersecting => "q3 by SP3, q1, q2 by SP2; wrist: q4, q5 by SP2, q6 by SP1",
-            IkFamily::SphericalLastTwoIntersecting => "q1 by SP3, q2, q3 by SP2; wrist: q4, q5 by SP2, q6 by SP1",
+            IkFamily::SphericalTwoParallel => "q1 by SP4, q3 by SP3, q2 by SP1; wrist: q5 by SP4, q4, q6 by SP1",
+            IkFamily::SphericalFirstTwoIntersecting => "q3 by SP3, q1, q2 by SP2; wrist: q5 by SP4, q4, q6 by SP1",
+            IkFamily::SphericalLastTwoIntersecting => "q1 by SP3, q2, q3 by SP2; wrist: q5 by SP4, q4, q6 by SP1",
             IkFamily::ThreeParallelTwoIntersecting => {
                 "q1 by SP4, q5 by SP4, q6 by SP1, q2+q3+q4 by SP1, q3 by SP3, q2 by SP1, q4 by difference"
             }
             IkFamily::SphericalPrismaticThird => {
-                "q3 from the wrist centre's distance (a quadratic), q1, q2 by SP2; wrist: q4, q5 by SP2, q6 by SP1"
+                "q3 from the wrist centre's distance (a quadratic), q1, q2 by SP2; wrist: q5 by SP4, q4, q6 by SP1"
             }
             IkFamily::Planar => {
                 "the slide from the height; the turn about the axis by SP1 (three revolute joints); the elbow by SP3, \
                  the shoulder by SP1, the third by difference"
             }
-            IkFamily::Spherical => "q1, q2, q3 by SP5; wrist: q4, q5 by SP2, q6 by SP1",
+            IkFamily::Spherical => "q1, q2, q3 by SP5; wrist: q5 by SP4, q4, q6 by SP1",
             IkFamily::ThreeParallel => {
                 "q1, q5 by SP6, q6 by SP1, q2+q3+q4 by SP1, q3 by SP3, q2 by SP1, q4 by difference"
             }
