@@ -1,4 +1,5 @@
-//! The exact compile error of every way a derive can be wrong (trybuild; `.stderr` beside each case).
+//! The exact compile error of every way a derive can be wrong (trybuild; `.stderr` beside each case),
+//! and what must compile (`pass/`).
 //! Regenerate on purpose with `TRYBUILD=overwrite cargo test --test ui` and read the diff.
 
 #[test]
@@ -7,4 +8,6 @@ fn derive_errors() {
     cases.compile_fail("tests/ui/*.rs");
     // A faulty derive with code using the struct: only the derive's errors, no cascade.
     cases.compile_fail("tests/ui/cascade/*.rs");
+    // What must compile: user items named like the generated code's locals.
+    cases.pass("tests/ui/pass/*.rs");
 }
