@@ -86,7 +86,9 @@ impl Mode<'_, '_> {
         ratios.sort_by(f64::total_cmp);
         let median = ratios[ROUNDS / 2];
         println!("{robot}/{name}: paired ratio {median:.3} (median of {ROUNDS} alternating rounds)");
-        PAIRED.lock().map(|mut p| p.push(format!("{robot}\t{name}\t{median}\n"))).ok();
+        // A poisoned lock means another body panicked (the run fails anyway); its pairs are still
+        // whole strings, so keep them rather than drop this one.
+        PAIRED.lock().unwrap_or_else(std::sync::PoisonError::into_inner).push(format!("{robot}\t{name}\t{median}\n"));
     }
 }
 

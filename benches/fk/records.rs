@@ -39,7 +39,7 @@ pub fn write_robots(manifest: &str) {
 /// The paired ratios of this run. A filtered run replaces the pairs it timed and keeps the last
 /// run's others.
 pub fn write_paired() {
-    let paired = PAIRED.lock().map(|p| p.concat()).unwrap_or_default();
+    let paired = PAIRED.lock().unwrap_or_else(std::sync::PoisonError::into_inner).concat();
     let path = criterion_dir().join("kinematics-paired.tsv");
     let id = |line: &str| line.rsplit_once('\t').map(|(id, _)| id.to_owned());
     let timed: std::collections::BTreeSet<String> = paired.lines().filter_map(id).collect();

@@ -13,12 +13,8 @@ use crate::error::CliError;
 pub struct Args {
     /// A URDF file (.urdf, .xml) or DH table (.toml, .json).
     file: String,
-    /// Joint values in DoF order, comma-separated (radians, metres); zeros if omitted.
-    #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
-    q: Option<Vec<f64>>,
-    /// Read `--q` in degrees (prismatic values stay in metres).
-    #[arg(long)]
-    degrees: bool,
+    #[command(flatten)]
+    configuration: crate::robot::ConfigurationArgs,
     /// Print only this link.
     #[arg(long)]
     link: Option<String>,
@@ -34,7 +30,7 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
     let fk = ReferenceFk::new(crate::robot::load(file)?);
     let tree = fk.tree();
     // Documented default: zeros when `--q` is omitted.
-    let q = crate::robot::configuration(tree, args.q.as_deref(), args.degrees);
+    let q = args.configuration.resolve(tree);
     let poses = fk.link_poses(&q).map_err(|source| CliError::Runtime { file: file.clone(), source })?;
     let selected: Vec<LinkId> = match &args.link {
         Some(name) => vec![crate::robot::link(tree, file, "requested", name)?],

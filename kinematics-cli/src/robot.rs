@@ -32,20 +32,34 @@ pub fn link(tree: &KinematicTree, file: &str, role: &'static str, name: &str) ->
     Ok(kinematics_build::find_link(tree, file, role, name)?)
 }
 
-/// The configuration from `--q` (zeros when it is omitted, the documented default of `fk` and
-/// `draw`), with rotational joints' values read as degrees under `--degrees` (prismatic values
-/// stay metres). Its length and finiteness are checked by the runtime reference that uses it, so
-/// a wrong count or a NaN is refused there with the joint named, never padded or replaced.
-pub fn configuration(tree: &KinematicTree, q: Option<&[f64]>, degrees: bool) -> Vec<f64> {
-    let mut q = q.map_or_else(|| vec![0.0; tree.dof()], <[f64]>::to_vec);
-    if degrees {
-        for (value, &joint) in q.iter_mut().zip(tree.dof_joints()) {
-            if tree.joint(joint).kind.is_rotational() {
-                *value = value.to_radians();
+/// `--q` and `--degrees`: a configuration on the command line (`fk`, `draw`).
+#[derive(clap::Args)]
+pub struct ConfigurationArgs {
+    /// Joint values in DoF order, comma-separated (radians, metres); zeros if omitted.
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
+    q: Option<Vec<f64>>,
+    /// Read `--q` in degrees (prismatic values stay in metres).
+    #[arg(long)]
+    degrees: bool,
+}
+
+impl ConfigurationArgs {
+    /// The configuration from `--q` (zeros when it is omitted, the documented default of `fk` and
+    /// `draw`), with rotational joints' values read as degrees under `--degrees` (prismatic values
+    /// stay metres). Its length and finiteness are checked by the runtime reference that uses it, so
+    /// a wrong count or a NaN is refused there with the joint named, never padded or replaced.
+    pub fn resolve(&self, tree: &KinematicTree) -> Vec<f64> {
+        let (q, degrees) = (self.q.as_deref(), self.degrees);
+        let mut q = q.map_or_else(|| vec![0.0; tree.dof()], <[f64]>::to_vec);
+        if degrees {
+            for (value, &joint) in q.iter_mut().zip(tree.dof_joints()) {
+                if tree.joint(joint).kind.is_rotational() {
+                    *value = value.to_radians();
+                }
             }
         }
+        q
     }
-    q
 }
 
 /// The end effector when none is named: the deepest link (most joints from the root), the last

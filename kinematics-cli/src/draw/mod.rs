@@ -19,12 +19,8 @@ use crate::error::CliError;
 pub struct Args {
     /// A URDF file (.urdf, .xml) or DH table (.toml, .json).
     file: String,
-    /// Joint values in DoF order, comma-separated (radians, metres); zeros if omitted, as for `fk`.
-    #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
-    q: Option<Vec<f64>>,
-    /// Read `--q` in degrees (prismatic values stay in metres).
-    #[arg(long)]
-    degrees: bool,
+    #[command(flatten)]
+    configuration: crate::robot::ConfigurationArgs,
     /// Write the SVG to this file (atomically) instead of standard output.
     #[arg(short, long)]
     output: Option<std::path::PathBuf>,
@@ -34,7 +30,7 @@ pub struct Args {
 pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
     let file = &args.file;
     let fk = ReferenceFk::new(crate::robot::load(file)?);
-    let q = crate::robot::configuration(fk.tree(), args.q.as_deref(), args.degrees);
+    let q = args.configuration.resolve(fk.tree());
     let scene = Scene::new(&fk, &q).map_err(|source| CliError::Runtime { file: file.clone(), source })?;
     let text = svg::render(&scene);
     match &args.output {
