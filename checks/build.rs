@@ -152,6 +152,7 @@ fn write_random_robots(out: &Path) -> Result<(), Box<dyn std::error::Error>> {
             tree: &tree,
             base: robot.base.clone(),
             tips: robot.tips.clone(),
+            links: Vec::new(),
             positions: robot.positions,
             jacobians: velocities,
             ik: kinematics_compiler::robot::IkMode::Off,

@@ -25,6 +25,8 @@ pub(crate) struct Emit<'a> {
     pub base: Option<String>,
     /// Tip links.
     pub tips: Vec<String>,
+    /// The links `link_poses` returns, in order (empty: every link but the base).
+    pub links: Vec<String>,
     /// Position-only functions too.
     pub positions: bool,
     /// Velocity functions of the tips.
@@ -54,6 +56,7 @@ pub(crate) fn emit_source(emit: &Emit<'_>) -> Result<String, BuildError> {
         tree: &loaded.tree,
         base: emit.base.clone(),
         tips: emit.tips.clone(),
+        links: emit.links.clone(),
         positions: emit.positions,
         jacobians: emit.jacobians,
         ik: emit.ik.clone(),

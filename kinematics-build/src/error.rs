@@ -15,17 +15,25 @@ pub enum BuildError {
     /// model rule (every broken rule is listed).
     #[error(transparent)]
     Load(#[from] LoadError),
-    /// A base or tip that the robot does not have.
+    /// A base, tip or listed link (`links`) that the robot does not have.
     #[error("{file}: {role} link `{link}` does not exist{}", suggestion.as_ref().map(|s| format!("; did you mean `{s}`?")).unwrap_or_default())]
     UnknownLink {
         /// The description file.
         file: String,
-        /// `base` or `tip`.
+        /// `base`, `tip` or `listed` (an entry of `links`).
         role: &'static str,
         /// The link asked for.
         link: String,
         /// The closest link name, when it looks like a typo.
         suggestion: Option<String>,
+    },
+    /// A link listed twice in [`crate::Robot::links`].
+    #[error("{file}: link `{link}` is listed twice in `links`")]
+    DuplicateLink {
+        /// The description file.
+        file: String,
+        /// The link listed twice.
+        link: String,
     },
     /// A free-flying root whose link or joint name the description already has.
     #[error(

@@ -20,6 +20,7 @@ use crate::write::write_atomic;
 /// | `dh = "path"` | [`Robot::dh`] |
 /// | `base = "link"` | [`Robot::base`] |
 /// | `tip = "link"` / `tips(..)` | [`Robot::tip`] (once per tip) / [`Robot::tips`] |
+/// | `links = ["a", "b"]` | [`Robot::links`] |
 /// | `positions` | [`Robot::positions`] |
 /// | `jacobians` | [`Robot::jacobians`] |
 /// | `ik` / `ik(free = "joint")` / `ik = "numeric"` | [`Robot::ik`] / [`Robot::ik_free`] / [`Robot::ik_numeric`] |
@@ -40,6 +41,7 @@ pub struct Robot {
     dir: Option<PathBuf>,
     base: Option<String>,
     tips: Vec<String>,
+    links: Vec<String>,
     positions: bool,
     jacobians: bool,
     ik: IkMode,
@@ -59,6 +61,7 @@ impl Robot {
             dir: None,
             base: None,
             tips: Vec::new(),
+            links: Vec::new(),
             positions: false,
             jacobians: false,
             ik: IkMode::Off,
@@ -112,6 +115,19 @@ impl Robot {
         S: AsRef<str>,
     {
         self.tips.extend(links.into_iter().map(|l| l.as_ref().to_owned()));
+        self
+    }
+
+    /// Only these links in `link_poses` (and `link_positions`, `LINK_NAMES`), in this order,
+    /// instead of every link but the base: only their poses are computed. Each name must be a link
+    /// of the robot ([`BuildError::UnknownLink`], with "did you mean") and appear once
+    /// ([`BuildError::DuplicateLink`]). Calling it again adds to the list.
+    pub fn links<I, S>(mut self, links: I) -> Self
+    where
+        I: IntoIterator<Item = S>,
+        S: AsRef<str>,
+    {
+        self.links.extend(links.into_iter().map(|l| l.as_ref().to_owned()));
         self
     }
 
@@ -219,6 +235,12 @@ impl Robot {
         for tip in &self.tips {
             find_link(&loaded.tree, &label, "tip", tip)?;
         }
+        for (i, link) in self.links.iter().enumerate() {
+            find_link(&loaded.tree, &label, "listed", link)?;
+            if self.links[..i].contains(link) {
+                return Err(BuildError::DuplicateLink { file: label, link: link.clone() });
+            }
+        }
         if self.jacobians && self.tips.is_empty() {
             return Err(BuildError::JacobiansWithoutTip { file: label });
         }
@@ -228,6 +250,7 @@ impl Robot {
             name: &name,
             base: self.base.clone(),
             tips: self.tips.clone(),
+            links: self.links.clone(),
             positions: self.positions,
             jacobians: self.jacobians,
             ik: self.ik.clone(),
@@ -376,6 +399,32 @@ mod tests {
         assert!(std.contains("::kinematics::__private::StdTrig::sin_cos_std(q1)"), "{std}");
         assert!(std.contains("T: ::kinematics::__private::Real + ::kinematics::__private::StdTrig"), "{std}");
         assert!(!std.contains("sin_cos_many"), "{std}");
+    }
+
+    #[test]
+    fn links_choose_what_link_poses_returns() {
+        let dir = fixture("links", &[("arm.urdf", ARM)]);
+        let robot = || Robot::urdf("arm.urdf").manifest_dir(&dir);
+        let listed = robot().links(["tool0", "upper"]).positions().generate().unwrap();
+        assert!(listed.contains(r#"pub const LINK_NAMES: [&'static str; 2] = ["tool0", "upper"];"#), "{listed}");
+        assert!(listed.contains("-> [[f64; 3]; 2]"), "{listed}");
+        // One link is still an array; calls add up.
+        let one = robot().links(["tool0"]).generate().unwrap();
+        assert!(one.contains("pub fn link_poses(q: &[f64; 2]) -> [::kinematics::__private::Pose<f64>; 1]"), "{one}");
+        assert_eq!(
+            robot().links(["tool0"]).links(["upper"]).generate().unwrap(),
+            robot().links(["tool0", "upper"]).generate().unwrap()
+        );
+        let message = fails(
+            &robot().links(["upper", "tool9"]),
+            |e| matches!(e, BuildError::UnknownLink { role: "listed", link, suggestion: Some(s), .. } if link == "tool9" && s == "tool0"),
+        );
+        assert_eq!(message, "arm.urdf: listed link `tool9` does not exist; did you mean `tool0`?");
+        let message = fails(
+            &robot().links(["tool0", "upper", "tool0"]),
+            |e| matches!(e, BuildError::DuplicateLink { link, .. } if link == "tool0"),
+        );
+        assert_eq!(message, "arm.urdf: link `tool0` is listed twice in `links`");
     }
 
     #[test]

@@ -24,6 +24,10 @@ pub struct Args {
     /// A tip link (repeat for several): `tip_pose` / `tip_poses` (default: none, only `link_poses`).
     #[arg(long)]
     tip: Vec<String>,
+    /// Only these links in `link_poses` (and `link_positions`, `LINK_NAMES`), in this order,
+    /// comma-separated (`--links l_sole,r_sole`; default: every link but the base).
+    #[arg(long, value_delimiter = ',')]
+    links: Vec<String>,
     /// The struct's name (default: the robot's name in UpperCamelCase).
     #[arg(long)]
     name: Option<String>,
@@ -73,6 +77,9 @@ pub fn builder(args: &Args) -> Result<Robot, CliError> {
         );
     if let Some(base) = &args.base {
         robot = robot.base(base);
+    }
+    if !args.links.is_empty() {
+        robot = robot.links(&args.links);
     }
     if let Some(name) = &args.name {
         robot = robot.struct_name(name);

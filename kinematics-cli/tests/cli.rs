@@ -304,6 +304,23 @@ fn generate_prints_what_the_build_api_writes() {
 }
 
 #[test]
+fn generate_lists_the_links_asked_for() {
+    let out = ok(&["generate", "robots/humanoid.urdf", "--links", "r_sole,l_sole", "--positions"]);
+    let expected = kinematics_build::Robot::file("robots/humanoid.urdf")
+        .manifest_dir(root())
+        .links(["r_sole", "l_sole"])
+        .positions()
+        .generate()
+        .unwrap();
+    assert_eq!(out, expected);
+    assert!(out.contains(r#"pub const LINK_NAMES: [&'static str; 2] = ["r_sole", "l_sole"];"#));
+    let message = fails(&["generate", "robots/humanoid.urdf", "--links", "r_sole,l_sol"]);
+    assert_eq!(message, "error: robots/humanoid.urdf: listed link `l_sol` does not exist; did you mean `l_sole`?");
+    let message = fails(&["generate", "robots/humanoid.urdf", "--links", "r_sole,r_sole"]);
+    assert_eq!(message, "error: robots/humanoid.urdf: link `r_sole` is listed twice in `links`");
+}
+
+#[test]
 fn generate_writes_a_file_atomically() {
     let dir = scratch("generate");
     let path = dir.join("fk.rs");

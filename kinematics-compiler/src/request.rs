@@ -169,8 +169,8 @@ pub struct Compiled {
     pub position_only: bool,
     /// The velocity computed, if any.
     pub velocity: Option<Velocity>,
-    /// Whether every link but the base was asked for (the emitted function then returns an array
-    /// of frames, however many links there are).
+    /// Whether the emitted function returns an array of frames however many there are: every link
+    /// but the base was asked for, or a list of links ([`Compiled::into_link_list`]).
     pub(crate) all_links: bool,
     pub(crate) graph: ExprGraph,
     pub(crate) frames: Vec<Frame>,
@@ -498,11 +498,18 @@ impl Compiled {
         &self.frames
     }
 
-    /// Whether the emitted function returns an array of frames (every link was asked for, or
-    /// several tips) rather than one frame (one tip). An all-links request returns an array even
-    /// when the robot has one link below the base, or none.
+    /// Whether the emitted function returns an array of frames (every link was asked for, a list
+    /// of links, or several tips) rather than one frame (one tip). An all-links request returns an
+    /// array even when the robot has one link below the base, or none.
     pub fn returns_array(&self) -> bool {
         self.all_links || self.frames.len() != 1
+    }
+
+    /// The same frames as a list of links (`link_poses` of a `links = [...]` subset): an array
+    /// even when the list has one link, as `link_poses` always returns.
+    pub(crate) fn into_link_list(mut self) -> Self {
+        self.all_links = true;
+        self
     }
 
     /// Number of degrees of freedom.

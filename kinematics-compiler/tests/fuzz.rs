@@ -49,6 +49,7 @@ fn compile_everything(label: &str, text: &str) -> Result<Vec<String>, String> {
         tree: &tree,
         base: None,
         tips: leaves,
+        links: Vec::new(),
         positions: true,
         jacobians: true,
         ik: kinematics_compiler::robot::IkMode::Off,

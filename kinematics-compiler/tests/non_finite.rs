@@ -39,6 +39,7 @@ fn spec(tree: &kinematics_model::KinematicTree) -> RobotSpec<'_> {
         tree,
         base: None,
         tips: vec![tree.links().last().unwrap().name.clone()],
+        links: Vec::new(),
         positions: true,
         jacobians: true,
         ik: kinematics_compiler::robot::IkMode::Off,

@@ -19,6 +19,7 @@ fn spec(tree: &KinematicTree) -> RobotSpec<'_> {
         tree,
         base: None,
         tips: vec!["tool".to_owned()],
+        links: Vec::new(),
         positions: false,
         jacobians: false,
         ik: kinematics_compiler::robot::IkMode::Off,

@@ -50,6 +50,19 @@ struct Names {
     f32: bool,
     /// How many tips, if they could be counted.
     tips: Option<usize>,
+    /// Which links `link_poses` returns.
+    links: LinkCount,
+}
+
+/// How many links `link_poses` returns, as far as the attribute says.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum LinkCount {
+    /// Every link but the base (no `links` key): the description's count, if it loaded.
+    All,
+    /// The entries of `links`.
+    Listed(usize),
+    /// A `links` key that could not be read.
+    Unknown,
 }
 
 impl Names {
@@ -63,6 +76,7 @@ impl Names {
         f64: true,
         f32: true,
         tips: None,
+        links: LinkCount::Unknown,
     };
 
     /// From options darling parsed (the scalar list may still be wrong: then both scalar types).
@@ -87,6 +101,10 @@ impl Names {
             f64,
             f32,
             tips: Some(tips),
+            links: match &options.keys.links {
+                Some(list) => LinkCount::Listed(list.as_ref().0.len()),
+                None => LinkCount::All,
+            },
         }
     }
 
@@ -103,6 +121,7 @@ impl Names {
             f64: true,
             f32: false,
             tips: None,
+            links: LinkCount::All,
         };
         let mut tips = 0usize;
         for attr in input.attrs.iter().filter(|a| a.path().is_ident("kinematics")) {
@@ -123,6 +142,13 @@ impl Names {
                         }
                         _ => (names.one_tip, names.several_tips) = (true, true),
                     }
+                } else if path.is_ident("links") {
+                    names.links = match &item {
+                        syn::Meta::NameValue(syn::MetaNameValue { value: syn::Expr::Array(list), .. }) => {
+                            LinkCount::Listed(list.elems.len())
+                        }
+                        _ => LinkCount::Unknown,
+                    };
                 } else if path.is_ident("positions") {
                     names.positions = true;
                 } else if path.is_ident("jacobians") {
@@ -229,7 +255,11 @@ pub fn stub(input: &syn::DeriveInput, options: Option<&KinematicsInput>, known: 
         }
         None => dof.clone(),
     };
-    let links = known.map(|k| k.links);
+    let links = match names.links {
+        LinkCount::All => known.map(|k| k.links),
+        LinkCount::Listed(n) => Some(n),
+        LinkCount::Unknown => None,
+    };
     let tips = names.tips;
     let array = |elem: TokenStream, frames: Frames, batch: bool| match frames {
         Frames::One => elem,
@@ -265,6 +295,13 @@ pub fn stub(input: &syn::DeriveInput, options: Option<&KinematicsInput>, known: 
                 functions.push(quote! {
                     #attrs
                     pub fn #batch<#(#batch_params),*>(qs: &[[#t; #dof]], out: &mut [#r]) -> ::core::result::Result<(), #p::KinematicsError> {
+                        ::core::unreachable!(#message)
+                    }
+                });
+                let columns = format_ident!("{name}_batch_columns{suffix}");
+                functions.push(quote! {
+                    #attrs
+                    pub fn #columns<#(#batch_params),*>(columns: [&[#t]; #dof], out: &mut [#r]) -> ::core::result::Result<(), #p::KinematicsError> {
                         ::core::unreachable!(#message)
                     }
                 });

@@ -147,6 +147,7 @@ fn expand_options(
         tree: &loaded.tree,
         base: options.keys.base.as_ref().map(|b| b.as_ref().clone()),
         tips: options.tips().into_iter().map(|t| t.as_ref().clone()).collect(),
+        links: options.keys.links().into_iter().map(|l| l.as_ref().clone()).collect(),
         positions: options.output().positions,
         jacobians: options.output().jacobians.is_present(),
         ik,

@@ -4,6 +4,7 @@
 //! #[kinematics(urdf = "robots/ur5.urdf", base = "base", tip = "tool0")]
 //! #[kinematics(dh = "robots/ur5.toml", tips("link3", "link6"), positions, scalars(f64, f32))]
 //! #[kinematics(urdf = "robots/ur5_ros.urdf", exact_angles = false)]
+//! #[kinematics(urdf = "robots/humanoid.urdf", links = ["l_sole", "r_sole"])]
 //! #[kinematics(dh(convention = "standard",
 //!                 joint(name = "shoulder", a = 1.0),
 //!                 joint(name = "elbow", a = 1.0, alpha = "pi/2")))]
@@ -56,6 +57,10 @@ pub struct SourceKeys<Rest> {
     /// `tips("a", "b")`.
     #[darling(default)]
     pub tips: Option<Tips>,
+    /// `links = ["a", "b"]`: only these links in `link_poses` (and `link_positions`,
+    /// `LINK_NAMES`), in this order.
+    #[darling(default)]
+    pub links: Option<SpannedValue<Links>>,
     /// `exact_angles = false`: read every decimal angle as written (default `true`: angles within
     /// 1e-8 rad of a multiple of pi/2 are that multiple; see `kinematics_model::exactness`).
     #[darling(default)]
@@ -158,6 +163,8 @@ pub struct SourceOptions<'a> {
     pub base: Option<&'a SpannedValue<String>>,
     /// `tip` and `tips`, in that order.
     pub tips: Vec<SpannedValue<String>>,
+    /// The entries of `links`, in order (empty when the key is absent).
+    pub links: Vec<SpannedValue<String>>,
     /// `exact_angles`.
     pub exact_angles: ExactAngles,
     /// `floating_base`: the new root link's name, spanned on the key.
@@ -198,6 +205,11 @@ impl<Rest> SourceKeys<Rest> {
         all
     }
 
+    /// The entries of `links`, in order (empty when the key is absent: every link).
+    pub fn links(&self) -> Vec<SpannedValue<String>> {
+        self.links.as_ref().map(|l| l.as_ref().0.clone()).unwrap_or_default()
+    }
+
     /// The exactness policy: `exact_angles = true` (the default) or `false`.
     pub fn exact_angles(&self) -> ExactAngles {
         match self.exact_angles {
@@ -214,6 +226,7 @@ impl<Rest> SourceKeys<Rest> {
             dh: self.dh.as_ref(),
             base: self.base.as_ref(),
             tips: self.tips(),
+            links: self.links(),
             exact_angles: self.exact_angles(),
             floating_base: floating_base(self.floating_base.as_ref()),
         }
@@ -308,6 +321,43 @@ impl FromMeta for Tips {
         errors.finish_with(Tips(tips))
     }
 }
+
+/// `links = ["a", "b"]`: string literals in an array, each with its span. An empty list is an
+/// error (it would be a robot without link poses; leave the key out for every link).
+#[derive(Debug, Clone)]
+pub struct Links(pub Vec<SpannedValue<String>>);
+
+impl FromMeta for Links {
+    fn from_expr(expr: &syn::Expr) -> darling::Result<Self> {
+        let syn::Expr::Array(array) = expr else {
+            if let syn::Expr::Group(group) = expr {
+                // The invisible group a `macro_rules!` wraps a fragment in.
+                return Self::from_expr(&group.expr);
+            }
+            return Err(Error::custom(LINKS_SYNTAX).with_span(expr));
+        };
+        let mut errors = Error::accumulator();
+        let mut links = Vec::new();
+        for element in &array.elems {
+            match element {
+                syn::Expr::Lit(syn::ExprLit { lit: syn::Lit::Str(s), .. }) => {
+                    links.push(SpannedValue::new(s.value(), s.span()));
+                }
+                other => errors.push(Error::custom(LINKS_SYNTAX).with_span(other)),
+            }
+        }
+        if array.elems.is_empty() {
+            errors.push(
+                Error::custom("`links = []` lists no link: name at least one, or leave the key out for every link")
+                    .with_span(expr),
+            );
+        }
+        errors.finish_with(Links(links))
+    }
+}
+
+/// What a malformed `links` value is told.
+const LINKS_SYNTAX: &str = "expected link names in quotes in square brackets, like `links = [\"l_sole\", \"r_sole\"]`";
 
 /// Where a DH table comes from.
 #[derive(Debug, Clone)]

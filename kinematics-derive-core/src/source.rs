@@ -50,15 +50,24 @@ pub fn read(options: &SourceOptions<'_>) -> darling::Result<Loaded> {
     Ok(loaded)
 }
 
-/// Checks that the base and tips are links of the loaded robot, each fault spanned on its name.
+/// Checks that the base, tips and listed links are links of the loaded robot and that no listed
+/// link repeats, each fault spanned on its name.
 pub fn check_links(loaded: &Loaded, options: &SourceOptions<'_>) -> darling::Result<()> {
     let mut errors = Error::accumulator();
     let mut links: Vec<(&'static str, SpannedValue<String>)> =
         options.base.iter().map(|&b| ("base", b.clone())).collect();
     links.extend(options.tips.iter().map(|t| ("tip", t.clone())));
+    links.extend(options.links.iter().map(|l| ("listed", l.clone())));
     for (role, link) in &links {
         if let Err(e) = loaded.tree.find_link(role, link) {
             errors.push(Error::custom(format!("{}: {e}", loaded.written)).with_span(&link.span()));
+        }
+    }
+    for (i, link) in options.links.iter().enumerate() {
+        if options.links[..i].iter().any(|earlier| earlier.as_ref() == link.as_ref()) {
+            errors.push(
+                Error::custom(format!("link `{}` is listed twice in `links`", link.as_ref())).with_span(&link.span()),
+            );
         }
     }
     errors.finish()

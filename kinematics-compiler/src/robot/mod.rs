@@ -78,6 +78,10 @@ pub struct RobotSpec<'a> {
     pub base: Option<String>,
     /// Tip links (may be empty).
     pub tips: Vec<String>,
+    /// The links `link_poses` (and `link_positions`, `LINK_NAMES`) return, in this order; empty
+    /// means every link but the base. The caller has checked the names (unknown ones are a
+    /// [`CompileError`]) and that none repeats.
+    pub links: Vec<String>,
     /// Also emit position-only functions.
     pub positions: bool,
     /// Also emit the tips' velocities: geometric Jacobians in both frames, the pose with its
@@ -125,8 +129,7 @@ pub struct RobotSpec<'a> {
 pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenStream, CompileError> {
     let tree = spec.tree;
     let base = spec.base.clone().unwrap_or_else(|| tree.link(tree.root()).name.clone());
-    let links =
-        compile(tree, &Request { base: Some(base.clone()), tips: Vec::new(), position_only: false, velocity: None })?;
+    let links = compile(tree, &link_request(spec, &base, false))?.into_link_list();
     let cx = Context::new(spec, base, &links);
     let mut out = Functions::default();
     poses::link_poses(&cx, &links, &mut out)?;
@@ -138,6 +141,12 @@ pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenSt
     }
     ik::ik(&cx, &mut out)?;
     Ok(impls::robot_block(self_ty, &cx, &out))
+}
+
+/// The poses (or positions) `link_poses` (`link_positions`) returns: every link but the base, or
+/// the spec's list of links, in its order.
+fn link_request(spec: &RobotSpec<'_>, base: &str, position_only: bool) -> Request {
+    Request { base: Some(base.to_owned()), tips: spec.links.clone(), position_only, velocity: None }
 }
 
 /// What every kind of output needs: the spec, the paths and lengths as tokens, and the scalars.
@@ -206,6 +215,15 @@ impl<'a> Context<'a> {
     /// The tree.
     fn tree(&self) -> &'a KinematicTree {
         self.spec.tree
+    }
+
+    /// The links `link_poses` returns, for its doc: "every link but `base`", or the list's names.
+    fn links_described(&self) -> String {
+        if self.spec.links.is_empty() {
+            format!("every link but `{}`", self.base)
+        } else {
+            self.spec.links.iter().map(|l| format!("`{l}`")).collect::<Vec<_>>().join(", ")
+        }
     }
 
     /// How the generic body `name` is emitted: public in the block's private module `bodies`

@@ -21,17 +21,17 @@ pub(super) fn link_poses(cx: &Context<'_>, links: &Compiled, out: &mut Functions
             let pose = cx.pose_ty(t);
             quote!([#pose; #m_lit])
         },
-        format!("Poses of every link but `{base}`, in `{base}` and in the order of `LINK_NAMES`"),
+        format!("Poses of {}, in `{base}` and in the order of `LINK_NAMES`", cx.links_described()),
     );
     if cx.spec.positions {
-        let request = Request { base: Some(base.clone()), tips: Vec::new(), position_only: true, velocity: None };
-        out.body(cx, &compile(cx.tree(), &request)?, "generic_link_positions");
+        let positions = compile(cx.tree(), &super::link_request(cx.spec, base, true))?.into_link_list();
+        out.body(cx, &positions, "generic_link_positions");
         out.on_type(
             cx,
             "link_positions",
             "generic_link_positions",
             &|t| quote!([[#t; 3]; #m_lit]),
-            format!("Positions of every link but `{base}`, in `{base}`"),
+            format!("Positions of {}, in `{base}`", cx.links_described()),
         );
     }
     Ok(())
