@@ -2,6 +2,11 @@
 //! constant, or the sum of two computed angles (plus a constant), come from theirs by the sum
 //! formulas instead of a `sin_cos` call.
 //!
+//! An angle whose joint terms are the negation of a computed angle's (`k - q` beside `q`: a mimic
+//! joint with multiplier -1 and an offset) comes from it the same way, `sin(k - a) = sin k cos a -
+//! cos k sin a`, for the same four multiplications; with a zero offset the graph already shares the
+//! call (`sin(-q) = -sin q`).
+//!
 //! Mimic joints make such angles: a finger joint that follows its hand joint with a multiplier
 //! `m` and sits behind a fixed `Rz(-m)` turns by `m*q - m` while its base link turns by `m*q`, and
 //! merging parallel finger joints gives `2*m*q - m`. Each would be its own `sin_cos` (about forty
@@ -69,10 +74,19 @@ fn linear(g: &ExprGraph, id: ExprId) -> Option<Linear> {
 }
 
 /// The variable part of the angle `id` (its joint terms without the constant), if it is a linear
-/// form: angles with equal parts derive from one another by [`DERIVED_ANGLES`] for four
+/// form, with the sign that makes its first coefficient positive: angles with equal parts, or
+/// parts equal but for the sign, derive from one another by [`DERIVED_ANGLES`] for four
 /// multiplications, which is what the search over fold orders charges for them.
 pub(crate) fn angle_terms(g: &ExprGraph, id: ExprId) -> Option<Vec<(u32, u64)>> {
-    linear(g, id).map(|l| l.terms)
+    linear(g, id).map(|l| match l.terms.first() {
+        Some(&(_, k)) if f64::from_bits(k) < 0.0 => negated(&l.terms),
+        _ => l.terms,
+    })
+}
+
+/// `-terms` (exact: negation only flips the sign bit).
+fn negated(terms: &Terms) -> Terms {
+    terms.iter().map(|&(i, k)| (i, (-f64::from_bits(k)).to_bits())).collect()
 }
 
 /// What deriving an angle's sine and cosine from another's costs, in multiplications plus additions.
@@ -155,6 +169,12 @@ fn derive_frames(g: &mut ExprGraph, frames: &mut [SymTransform], extra: &mut [Ex
             let (a, sc, depth) = available[i];
             let k = form.constant - angles[&a].constant;
             found = Some((offset(g, sc, k), depth + 1));
+        } else if let Some(i) = shallowest(&negated(&form.terms), &available) {
+            // form = -a + k: the sine and cosine of -a are -sin a and cos a.
+            let (a, (sa, ca), depth) = available[i];
+            let k = form.constant + angles[&a].constant;
+            let minus_a = (g.neg(sa), ca);
+            found = Some((offset(g, minus_a, k), depth + 1));
         } else if angles.len() <= MAX_PAIR_SEARCH {
             for i in 0..available.len() {
                 let (a, sc_a, depth_a) = available[i];
@@ -241,6 +261,16 @@ mod tests {
         check(
             &["[sin(0.999899*q8 - 0.999899), sin(0.999899*q8), 0]"],
             &["[0.5403872916816489*sin(0.999899*q8) - 0.8414164099831738*cos(0.999899*q8), sin(0.999899*q8), 0]"],
+        );
+    }
+
+    #[test]
+    fn a_negated_angle_plus_a_constant() {
+        // A constant less an angle: a mimic joint with multiplier -1 and an offset.
+        check(
+            &["[sin(q1), sin(0.5 - q1), cos(0.5 - q1)]"],
+            &["[sin(q1), 0.479425538604203*cos(q1) - 0.8775825618903728*sin(q1), 0.8775825618903728*cos(q1) + \
+               0.479425538604203*sin(q1)]"],
         );
     }
 
