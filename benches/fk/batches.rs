@@ -3,14 +3,18 @@
 //! `parallel::batch` (rayon) on 16,384 against one thread. This is the throughput a user with many
 //! configurations gets without writing lane code; criterion's figures are per batch, and
 //! `bench-report` divides them. Check mode holds every output to the reference, also on batches
-//! whose length is no multiple of 4 or 8, so the last, partly filled pack is checked too.
+//! whose length is no multiple of 4 or 8, so the last, partly filled pack is checked too. The
+//! column-wise batches (`tip_pose_batch_columns`, one slice per joint) are timed against the
+//! row-wise ones and must give the very same poses, and every batch is timed against its lane
+//! floor: the sin/cos of its configurations in the lanes it runs on this CPU.
 
 use std::hint::black_box;
 
-use kinematics::{AGREEMENT_TOLERANCE, AGREEMENT_TOLERANCE_F32};
+use kinematics::{AGREEMENT_TOLERANCE, AGREEMENT_TOLERANCE_F32, F32x8, F32x16, F64x4, F64x8};
 
 use crate::check::{nan_pose, verify, widen};
-use crate::inputs::{arrays, arrays_f32, inputs};
+use crate::floors::floor_fast;
+use crate::inputs::{arrays, arrays_f32, inputs, packs};
 use crate::mode::Mode;
 use crate::robots::{Generated, Setup};
 
@@ -77,6 +81,63 @@ pub fn batches<R: Generated<N>, const N: usize>(mode: &mut Mode, fk: &Setup<N>) 
     mode.run("batch1024_f32", &mut batch_f32);
     mode.pair_calls("generated_batch1024_f32/batch1024_f32", 8, &mut scalar_batch32, &mut batch_f32);
     mode.pair_calls("batch1024_f64/batch1024_f32", 8, &mut batch_f64, &mut batch_f32);
+    // Column-wise input (one slice per joint), against the same batch row-wise.
+    let columns64: Vec<Vec<f64>> = (0..N).map(|j| batch64.iter().map(|q| q[j]).collect()).collect();
+    let columns32: Vec<Vec<f32>> = (0..N).map(|j| batch32.iter().map(|q| q[j]).collect()).collect();
+    let cols64: [&[f64]; N] = std::array::from_fn(|j| columns64[j].as_slice());
+    let cols32: [&[f32]; N] = std::array::from_fn(|j| columns32[j].as_slice());
+    if let Mode::Check = mode {
+        for len in [BATCH, BATCH - TAIL_CUT] {
+            let mut out = vec![nan_pose(); len];
+            R::tip_pose_batch_columns(cols64.map(|c| &c[..len]), &mut out).expect("one output per configuration");
+            let mut rows = vec![nan_pose(); len];
+            R::tip_pose_batch(&batch64[..len], &mut rows).expect("one output per configuration");
+            assert_eq!(out, rows, "{tip}: the column-wise batch differs from the row-wise one");
+            let mut out = vec![nan_pose::<f32>(); len];
+            R::tip_pose_batch_columns_f32(cols32.map(|c| &c[..len]), &mut out).expect("one output per configuration");
+            let mut rows = vec![nan_pose::<f32>(); len];
+            R::tip_pose_batch_f32(&batch32[..len], &mut rows).expect("one output per configuration");
+            assert_eq!(out, rows, "{tip}: the column-wise f32 batch differs from the row-wise one");
+        }
+    }
+    let mut out_columns64 = vec![R::tip_pose(&batch64[0]); BATCH];
+    let mut columns_f64 = |_: usize| {
+        R::tip_pose_batch_columns(cols64, &mut out_columns64).expect("one output per configuration");
+        black_box(&mut out_columns64);
+    };
+    mode.run("batch_columns1024_f64", &mut columns_f64);
+    mode.pair_calls("batch1024_f64/batch_columns1024_f64", 8, &mut batch_f64, &mut columns_f64);
+    let mut out_columns32 = vec![R::tip_pose_f32(&batch32[0]); BATCH];
+    let mut columns_f32 = |_: usize| {
+        R::tip_pose_batch_columns_f32(cols32, &mut out_columns32).expect("one output per configuration");
+        black_box(&mut out_columns32);
+    };
+    mode.run("batch_columns1024_f32", &mut columns_f32);
+    mode.pair_calls("batch1024_f32/batch_columns1024_f32", 8, &mut batch_f32, &mut columns_f32);
+    // The batches' lane floor: the sin/cos of 1,024 configurations in the lanes the batch runs on
+    // this CPU (eight f64 or sixteen f32 with AVX-512, else four or eight), dispatched.
+    let (n, _) = fk.sin_cos;
+    let wide = kinematics::dispatched_level().contains("AVX-512");
+    let floor64: Box<dyn FnMut(usize) -> f64> = if wide {
+        let packs: Vec<[F64x8; N]> = packs(&batch64, BATCH / 8);
+        Box::new(move |_| packs.iter().map(|p| floor_fast(p, n).lane(0)).sum())
+    } else {
+        let packs: Vec<[F64x4; N]> = packs(&batch64, BATCH / 4);
+        Box::new(move |_| packs.iter().map(|p| floor_fast(p, n).lane(0)).sum())
+    };
+    let mut floor64 = floor64;
+    mode.run("floor_batch1024_f64", &mut floor64);
+    mode.pair_calls("batch1024_f64/floor_batch1024_f64", 8, &mut batch_f64, &mut floor64);
+    let floor32: Box<dyn FnMut(usize) -> f32> = if wide {
+        let packs: Vec<[F32x16; N]> = packs(&batch32, BATCH / 16);
+        Box::new(move |_| packs.iter().map(|p| floor_fast(p, n).lane(0)).sum())
+    } else {
+        let packs: Vec<[F32x8; N]> = packs(&batch32, BATCH / 8);
+        Box::new(move |_| packs.iter().map(|p| floor_fast(p, n).lane(0)).sum())
+    };
+    let mut floor32 = floor32;
+    mode.run("floor_batch1024_f32", &mut floor32);
+    mode.pair_calls("batch1024_f32/floor_batch1024_f32", 8, &mut batch_f32, &mut floor32);
     if let Mode::Check = mode {
         // The scalar loops' outputs, as the single run above left them.
         for (i, (pose, q)) in out64.iter().zip(&batch).enumerate() {

@@ -22,7 +22,8 @@ pub fn floor_std<T: StdTrig, const N: usize>(q: &[T; N], n: usize) -> T {
 }
 
 /// The trigonometry floor with our sin/cos, as the generated code calls it: all `n` angles of the
-/// function in one `T::sin_cos_many` call (folded like [`floor_std`]). `n` is a run-time count
+/// function in one `T::sin_cos_many` call (folded like [`floor_std`]), dispatched to the widest
+/// instruction set the CPU has, as the generated functions are. `n` is a run-time count
 /// (the compiler's), `sin_cos_many` takes it as a constant: one arm per count, chosen by a branch
 /// that always goes the same way.
 #[inline(always)]
@@ -44,7 +45,11 @@ pub fn floor_fast<T: Real, const N: usize>(q: &[T; N], n: usize) -> T {
             }
         };
     }
-    by_count!(0 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19 20 21 22 23 24 25 26 27 28 29 30 31 32)
+    // Dispatched, as the generated functions are: the floor of what they run on this CPU.
+    kinematics::dispatch(
+        #[inline(always)]
+        || by_count!(0 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19 20 21 22 23 24 25 26 27 28 29 30 31 32),
+    )
 }
 
 /// The `sin_cos` pairs of a robot's tip pose and of all its link poses, as the compiler counts them.

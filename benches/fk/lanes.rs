@@ -2,9 +2,11 @@
 //! eight in one `F32x8` call) against as many scalar calls on the same configurations, and
 //! against the lane type's own trigonometry floor. This is what the generated code gains from
 //! being generic over its scalar: one body, evaluated across a vector register. Check mode holds
-//! every lane of every pack to the reference's pose of that lane's configuration.
+//! every lane of every pack to the reference's pose of that lane's configuration. The lane calls
+//! (and their floors) run inside `kinematics::dispatch`, as a user's own loop over lanes would, so
+//! a plain build times them with the CPU's widest instruction set.
 
-use kinematics::{AGREEMENT_TOLERANCE, AGREEMENT_TOLERANCE_F32, F32x8, F64x4, LaneValue, Pose};
+use kinematics::{AGREEMENT_TOLERANCE, AGREEMENT_TOLERANCE_F32, F32x8, F64x4, LaneValue, Pose, dispatch};
 
 use crate::check::{reference_poses, verify, widen};
 use crate::floors::floor_fast;
@@ -44,7 +46,12 @@ pub fn lanes<R: Generated<N>, const N: usize>(mode: &mut Mode, fk: &Setup<N>) {
     // Four configurations per call against four calls on the same configurations (and eight for
     // f32); the pack's own floor is our sin/cos on the lane type.
     let mut scalar4 = |i: usize| -> [Pose<f64>; 4] { std::array::from_fn(|l| R::tip_pose(&q64[(4 * i + l) % INPUTS])) };
-    let mut lanes4 = |i: usize| R::tip_pose_generic::<F64x4>(&pack64[i]);
+    let mut lanes4 = |i: usize| {
+        dispatch(
+            #[inline(always)]
+            || R::tip_pose_generic::<F64x4>(&pack64[i]),
+        )
+    };
     mode.run("lanes_pose_f64x4", &mut lanes4);
     mode.run("scalar4_pose_f64", &mut scalar4);
     mode.pair("scalar4_pose_f64/lanes_pose_f64x4", &mut scalar4, &mut lanes4);
@@ -52,7 +59,12 @@ pub fn lanes<R: Generated<N>, const N: usize>(mode: &mut Mode, fk: &Setup<N>) {
     mode.pair("lanes_pose_f64x4/floor_f64x4", &mut lanes4, |i| floor_fast(&pack64[i], n));
     let mut scalar8 =
         |i: usize| -> [Pose<f32>; 8] { std::array::from_fn(|l| R::tip_pose_f32(&q32[(8 * i + l) % INPUTS])) };
-    let mut lanes8 = |i: usize| R::tip_pose_generic::<F32x8>(&pack32[i]);
+    let mut lanes8 = |i: usize| {
+        dispatch(
+            #[inline(always)]
+            || R::tip_pose_generic::<F32x8>(&pack32[i]),
+        )
+    };
     mode.run("lanes_pose_f32x8", &mut lanes8);
     mode.run("scalar8_pose_f32", &mut scalar8);
     mode.pair("scalar8_pose_f32/lanes_pose_f32x8", &mut scalar8, &mut lanes8);
@@ -61,7 +73,12 @@ pub fn lanes<R: Generated<N>, const N: usize>(mode: &mut Mode, fk: &Setup<N>) {
     // Per configuration, f64 lanes against f32 lanes: two f64 packs, eight configurations.
     mode.pair(
         "lanes_pose_f64x4/lanes_pose_f32x8",
-        |i| (R::tip_pose_generic::<F64x4>(&pack64[i]), R::tip_pose_generic::<F64x4>(&pack64[(i + 1) % INPUTS])),
+        |i| {
+            dispatch(
+                #[inline(always)]
+                || (R::tip_pose_generic::<F64x4>(&pack64[i]), R::tip_pose_generic::<F64x4>(&pack64[(i + 1) % INPUTS])),
+            )
+        },
         &mut lanes8,
     );
 }

@@ -10,8 +10,12 @@ use kinematics::{AGREEMENT_TOLERANCE, AGREEMENT_TOLERANCE_F32};
 
 use crate::check::{position_pose, reference_poses, verify, widen};
 use crate::floors::{floor_fast, floor_std};
+use crate::inputs::INPUTS;
 use crate::mode::Mode;
 use crate::robots::{Generated, Setup, StdGenerated};
+
+/// Calls per round of the dispatch-cost pair.
+const DISPATCH_CALLS: usize = 64;
 
 /// The tip: pose f64 (generated, std-trig) and f32, position, and their floors.
 pub fn tip<R: Generated<N>, S: StdGenerated<N>, const N: usize>(mode: &mut Mode, fk: &Setup<N>) {
@@ -27,6 +31,8 @@ pub fn tip<R: Generated<N>, S: StdGenerated<N>, const N: usize>(mode: &mut Mode,
             let (f64_tol, f32_tol) = (AGREEMENT_TOLERANCE, AGREEMENT_TOLERANCE_F32);
             verify("generated_pose_f64", tip, i, &R::tip_pose(&q64[i]), &expected(tip), reach, f64_tol);
             verify("std_pose_f64", tip, i, &S::tip_pose(&q64[i]), &expected(tip), reach, f64_tol);
+            let baseline = R::tip_pose_generic::<f64>(&q64[i]);
+            verify("baseline_pose_f64", tip, i, &baseline, &expected(tip), reach, f64_tol);
             verify("generated_pose_f32", tip, i, &widen(&R::tip_pose_f32(&q32[i])), &expected_f32(tip), reach, f32_tol);
             let position = position_pose(R::tip_position(&q64[i]), &expected(tip));
             verify("generated_position_f64", tip, i, &position, &expected(tip), reach, f64_tol);
@@ -35,6 +41,30 @@ pub fn tip<R: Generated<N>, S: StdGenerated<N>, const N: usize>(mode: &mut Mode,
     let (n, _) = fk.sin_cos;
     let mut generated_pose = |i: usize| R::tip_pose(&q64[i]);
     mode.run("generated_pose_f64", &mut generated_pose);
+    // The same body, not dispatched: the build's own instruction set (baseline x86-64 in a plain
+    // build, so the pair is what dispatch gains; in a native build both are the same code and
+    // the pair is what dispatch costs there, nothing).
+    let mut baseline_pose = |i: usize| R::tip_pose_generic::<f64>(&q64[i]);
+    mode.run("baseline_pose_f64", &mut baseline_pose);
+    mode.pair("baseline_pose_f64/generated_pose_f64", &mut baseline_pose, &mut generated_pose);
+    // What the choice itself costs per call: 64 dispatched calls against one dispatch around 64
+    // calls of the same body.
+    let each = |i: usize| {
+        for k in 0..DISPATCH_CALLS {
+            black_box(R::tip_pose(&q64[(i + k) % INPUTS]));
+        }
+    };
+    let once = |i: usize| {
+        kinematics::dispatch(
+            #[inline(always)]
+            || {
+                for k in 0..DISPATCH_CALLS {
+                    black_box(R::tip_pose_generic::<f64>(&q64[(i + k) % INPUTS]));
+                }
+            },
+        );
+    };
+    mode.pair_calls("dispatch_each_pose_f64/dispatch_once_pose_f64", 32, each, once);
     // The new floor (our sin/cos, one call for the function's angles) and the old one (std's).
     mode.run("floor_f64", |i| floor_fast(&q64[i], n));
     mode.pair("generated_pose_f64/floor_f64", &mut generated_pose, |i| floor_fast(&q64[i], n));
@@ -79,6 +109,9 @@ pub fn all_links<R: Generated<N>, S: StdGenerated<N>, const N: usize>(
             for (pose, link) in S::link_poses(&q64[i]).as_ref().iter().zip(S::LINK_NAMES) {
                 verify("std_all_f64", link, i, pose, &expected(link), reach, AGREEMENT_TOLERANCE);
             }
+            for (pose, link) in R::link_poses_baseline(&q64[i]).as_ref().iter().zip(R::LINK_NAMES) {
+                verify("baseline_all_f64", link, i, pose, &expected(link), reach, AGREEMENT_TOLERANCE);
+            }
             for (pose, link) in R::link_poses_f32(&q32[i]).as_ref().iter().zip(R::LINK_NAMES) {
                 verify("generated_all_f32", link, i, &widen(pose), &expected_f32(link), reach, AGREEMENT_TOLERANCE_F32);
             }
@@ -86,20 +119,25 @@ pub fn all_links<R: Generated<N>, S: StdGenerated<N>, const N: usize>(
     }
     let (_, n_all) = fk.sin_cos;
     mode.run("generated_all_f64", &mut generated_all);
+    // Not dispatched (see `tip`): what dispatch gains on all links in a plain build.
+    let mut baseline_all = |i: usize| {
+        let poses = R::link_poses_baseline(&q64[i]);
+        black_box(&poses);
+    };
+    mode.run("baseline_all_f64", &mut baseline_all);
+    mode.pair("baseline_all_f64/generated_all_f64", &mut baseline_all, &mut generated_all);
     mode.run("floor_all_f64", floor_all);
     mode.pair("generated_all_f64/floor_all_f64", &mut generated_all, floor_all);
     mode.run("floor_std_all_f64", |i| floor_std(&q64[i], n_all));
     mode.pair("floor_std_all_f64/floor_all_f64", |i| floor_std(&q64[i], n_all), floor_all);
-    let mut std_all64 = S::link_poses(&q64[0]);
     let mut std_all = |i: usize| {
-        std_all64 = S::link_poses(&q64[i]);
-        black_box(&mut std_all64);
+        let poses = S::link_poses(&q64[i]);
+        black_box(&poses);
     };
     mode.run("std_all_f64", &mut std_all);
     mode.pair("std_all_f64/generated_all_f64", &mut std_all, &mut generated_all);
-    let mut all32 = R::link_poses_f32(&q32[0]);
     mode.run("generated_all_f32", |i| {
-        all32 = R::link_poses_f32(&q32[i]);
-        black_box(&mut all32);
+        let poses = R::link_poses_f32(&q32[i]);
+        black_box(&poses);
     });
 }

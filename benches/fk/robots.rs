@@ -26,10 +26,16 @@ pub trait Generated<const N: usize>: Kinematics {
     fn link_poses(q: &[f64; N]) -> impl AsRef<[Pose<f64>]>;
     /// `link_poses_f32`.
     fn link_poses_f32(q: &[f32; N]) -> impl AsRef<[Pose<f32>]>;
+    /// `link_poses_generic::<f64>`: the same body, not dispatched (the build's own instruction set).
+    fn link_poses_baseline(q: &[f64; N]) -> impl AsRef<[Pose<f64>]>;
     /// `tip_pose_batch`.
     fn tip_pose_batch(qs: &[[f64; N]], out: &mut [Pose<f64>]) -> Result<(), KinematicsError>;
     /// `tip_pose_batch_f32`.
     fn tip_pose_batch_f32(qs: &[[f32; N]], out: &mut [Pose<f32>]) -> Result<(), KinematicsError>;
+    /// `tip_pose_batch_columns`.
+    fn tip_pose_batch_columns(columns: [&[f64]; N], out: &mut [Pose<f64>]) -> Result<(), KinematicsError>;
+    /// `tip_pose_batch_columns_f32`.
+    fn tip_pose_batch_columns_f32(columns: [&[f32]; N], out: &mut [Pose<f32>]) -> Result<(), KinematicsError>;
     /// galaw's generated code for the same URDF against ours ([`crate::peers::galaw_contender`]); nothing
     /// for a robot galaw has no code for (the DH robots: galaw reads URDF only).
     fn galaw(_mode: &mut Mode, _fk: &Setup<N>, _generated_all: impl FnMut(usize)) {}
@@ -73,12 +79,24 @@ macro_rules! generated {
                 <$ty>::link_poses_f32(q)
             }
             #[inline(always)]
+            fn link_poses_baseline(q: &[f64; $n]) -> impl AsRef<[Pose<f64>]> {
+                <$ty>::link_poses_generic::<f64>(q)
+            }
+            #[inline(always)]
             fn tip_pose_batch(qs: &[[f64; $n]], out: &mut [Pose<f64>]) -> Result<(), KinematicsError> {
                 <$ty>::tip_pose_batch(qs, out)
             }
             #[inline(always)]
             fn tip_pose_batch_f32(qs: &[[f32; $n]], out: &mut [Pose<f32>]) -> Result<(), KinematicsError> {
                 <$ty>::tip_pose_batch_f32(qs, out)
+            }
+            #[inline(always)]
+            fn tip_pose_batch_columns(columns: [&[f64]; $n], out: &mut [Pose<f64>]) -> Result<(), KinematicsError> {
+                <$ty>::tip_pose_batch_columns(columns, out)
+            }
+            #[inline(always)]
+            fn tip_pose_batch_columns_f32(columns: [&[f32]; $n], out: &mut [Pose<f32>]) -> Result<(), KinematicsError> {
+                <$ty>::tip_pose_batch_columns_f32(columns, out)
             }
             $(
                 fn galaw(mode: &mut Mode, fk: &Setup<$n>, generated_all: impl FnMut(usize)) {

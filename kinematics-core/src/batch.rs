@@ -1,9 +1,15 @@
-//! Batches: many configurations through a lane type, array-of-structs in and out.
+//! Batches: many configurations through a lane type, one output per configuration.
 //!
 //! [`batch`] packs `L::LANES` configurations at a time into lanes (a structure of arrays), runs
 //! the generated code once per pack, and unpacks each lane's result into the caller's output. The
 //! last pack is filled up with copies of the batch's last configuration, whose results are thrown
 //! away: every lane always computes a real configuration, and the tail costs one pack.
+//!
+//! [`batch_wide`] is the same with two lane types, a narrow one for AVX2 and the baseline and a
+//! wide one for AVX-512, the body chosen at run time with the lanes that fill the CPU's registers;
+//! [`batch_columns`] takes the configurations column-wise (one slice per joint, as planners keep
+//! them), so packing a lane is a contiguous load rather than a transpose. Generated `*_batch` and
+//! `*_batch_columns` functions are these two.
 
 use crate::error::KinematicsError;
 use crate::kinematics::check_output;
@@ -12,8 +18,7 @@ use crate::lanes::{LaneValue, Lanes};
 /// Evaluates `f` on every configuration of `qs` into `out` (one output per configuration), `L::LANES`
 /// configurations per call of `f`.
 ///
-/// Generated `*_batch` functions are this with their generic body as `f`. An `out` of another
-/// length than `qs` is an error naming `robot`; nothing is written then.
+/// An `out` of another length than `qs` is an error naming `robot`; nothing is written then.
 ///
 /// ```
 /// use kinematics_core::{batch, F64x4, Real};
@@ -33,47 +38,213 @@ pub fn batch<L: Lanes, const N: usize, O: LaneValue<L>>(
     f: impl Fn(&[L; N]) -> O,
 ) -> Result<(), KinematicsError> {
     check_output(robot, qs.len(), out.len())?;
-    // With `dispatch`, the whole loop (the generated body inlined into it) is compiled for each
-    // instruction set pulp knows and the best the CPU has is chosen at run time.
+    // With `dispatch`, the whole loop (the body inlined into it) is compiled for each instruction
+    // set pulp knows and the best the CPU has is chosen at run time.
     #[cfg(feature = "dispatch")]
-    pulp::Arch::new().dispatch(Packs { qs, out, f: &f });
+    pulp::Arch::new().dispatch(Packs::new(Rows(qs), out, &f));
     #[cfg(not(feature = "dispatch"))]
-    packs(qs, out, &f);
+    packs_from(Rows(qs), out, &f);
     Ok(())
 }
 
-/// The loop of [`batch`] as pulp's operation. A closure would not do: its `FnOnce` shim is not
-/// inlined into pulp's `#[target_feature]` function (measured: no AVX instruction in the result),
-/// while `with_simd` below and everything it calls are `#[inline(always)]`.
-#[cfg(feature = "dispatch")]
-struct Packs<'a, L: Lanes, const N: usize, O: LaneValue<L>, F> {
-    qs: &'a [[L::Scalar; N]],
-    out: &'a mut [O::Scalar],
-    f: &'a F,
+/// [`batch`] with the lanes chosen for the CPU: `wide` (`W`, e.g. `F64x8`) where it has AVX-512,
+/// `narrow` (`L`, e.g. `F64x4`) elsewhere. Both are the same body on different lane types, so
+/// the results are the same whichever runs (see [`crate::dispatch`]).
+///
+/// ```
+/// use kinematics_core::{batch_wide, F64x4, F64x8, Real};
+/// fn norm2<T: Real>(q: &[T; 2]) -> T { q[0] * q[0] + q[1] * q[1] }
+/// let qs: Vec<[f64; 2]> = (0..11).map(|i| [i as f64, 1.0]).collect();
+/// let mut out = vec![0.0; 11];
+/// batch_wide::<F64x4, F64x8, 2, _, _>("demo", &qs, &mut out, norm2, norm2)?;
+/// assert_eq!(out, qs.iter().map(norm2).collect::<Vec<f64>>());
+/// # Ok::<(), kinematics_core::KinematicsError>(())
+/// ```
+#[inline(always)]
+pub fn batch_wide<L, W, const N: usize, O, P>(
+    robot: &'static str,
+    qs: &[[L::Scalar; N]],
+    out: &mut [O::Scalar],
+    narrow: impl Fn(&[L; N]) -> O,
+    wide: impl Fn(&[W; N]) -> P,
+) -> Result<(), KinematicsError>
+where
+    L: Lanes,
+    W: Lanes<Scalar = L::Scalar>,
+    O: LaneValue<L>,
+    P: LaneValue<W, Scalar = O::Scalar>,
+{
+    check_output(robot, qs.len(), out.len())?;
+    run(Rows(qs), out, &narrow, &wide);
+    Ok(())
 }
 
-#[cfg(feature = "dispatch")]
-impl<L: Lanes, const N: usize, O: LaneValue<L>, F: Fn(&[L; N]) -> O> pulp::WithSimd for Packs<'_, L, N, O, F> {
-    type Output = ();
+/// [`batch_wide`] on configurations given column-wise: `columns[j][i]` is joint `j`'s value in
+/// configuration `i`. Every column must hold one value per output; a column of another length is
+/// an error naming its joint (`joints[j]`, the robot's `JOINT_NAMES`), and nothing is written then.
+///
+/// ```
+/// use kinematics_core::{batch_columns, F64x4, F64x8, Real};
+/// fn norm2<T: Real>(q: &[T; 2]) -> T { q[0] * q[0] + q[1] * q[1] }
+/// let x: Vec<f64> = (0..11).map(f64::from).collect();
+/// let y = vec![1.0; 11];
+/// let mut out = vec![0.0; 11];
+/// batch_columns::<F64x4, F64x8, 2, _, _>("demo", &["x", "y"], [&x, &y], &mut out, norm2, norm2)?;
+/// assert_eq!(out, x.iter().map(|&x| norm2(&[x, 1.0])).collect::<Vec<f64>>());
+/// assert!(batch_columns::<F64x4, F64x8, 2, _, _>("demo", &["x", "y"], [&x, &y[1..]], &mut out, norm2, norm2).is_err());
+/// # Ok::<(), kinematics_core::KinematicsError>(())
+/// ```
+#[inline(always)]
+pub fn batch_columns<L, W, const N: usize, O, P>(
+    robot: &'static str,
+    joints: &'static [&'static str],
+    columns: [&[L::Scalar]; N],
+    out: &mut [O::Scalar],
+    narrow: impl Fn(&[L; N]) -> O,
+    wide: impl Fn(&[W; N]) -> P,
+) -> Result<(), KinematicsError>
+where
+    L: Lanes,
+    W: Lanes<Scalar = L::Scalar>,
+    O: LaneValue<L>,
+    P: LaneValue<W, Scalar = O::Scalar>,
+{
+    for (j, column) in columns.iter().enumerate() {
+        if column.len() != out.len() {
+            return Err(KinematicsError::WrongColumnLength {
+                robot,
+                joint: joints.get(j).copied().unwrap_or("?"),
+                expected: out.len(),
+                got: column.len(),
+            });
+        }
+    }
+    run(Columns(columns), out, &narrow, &wide);
+    Ok(())
+}
+
+/// Where a batch's configurations come from: packs of `L::LANES` of them as lanes.
+trait Configurations<S: Copy, const N: usize>: Copy {
+    /// Configurations `start..start + L::LANES` as lanes, those past `last` replaced by `last`
+    /// (`start <= last`, `last` below the batch's length).
+    fn pack<L: Lanes<Scalar = S>>(self, start: usize, last: usize) -> [L; N];
+}
+
+/// Array of structures: one array per configuration.
+#[derive(Clone, Copy)]
+struct Rows<'a, S, const N: usize>(&'a [[S; N]]);
+
+impl<S: Copy, const N: usize> Configurations<S, N> for Rows<'_, S, N> {
     #[inline(always)]
-    fn with_simd<S: pulp::Simd>(self, _: S) {
-        packs(self.qs, self.out, self.f);
+    fn pack<L: Lanes<Scalar = S>>(self, start: usize, last: usize) -> [L; N] {
+        let mut packed = [L::from_f64(0.0); N];
+        for (j, lanes) in packed.iter_mut().enumerate() {
+            *lanes = L::from_fn(|i| self.0[(start + i).min(last)][j]);
+        }
+        packed
     }
 }
 
-/// The loop of [`batch`]: pack, evaluate, unpack.
+/// Structure of arrays: one slice per joint, each as long as the batch (checked by the caller).
+#[derive(Clone, Copy)]
+struct Columns<'a, S, const N: usize>([&'a [S]; N]);
+
+impl<S: Copy, const N: usize> Configurations<S, N> for Columns<'_, S, N> {
+    #[inline(always)]
+    fn pack<L: Lanes<Scalar = S>>(self, start: usize, last: usize) -> [L; N] {
+        let mut packed = [L::from_f64(0.0); N];
+        for (lanes, column) in packed.iter_mut().zip(self.0) {
+            // A whole pack is one slice of known length: a contiguous load, no per-lane check.
+            *lanes = match column.get(start..start + L::LANES) {
+                Some(values) => L::from_fn(|i| values[i]),
+                None => L::from_fn(|i| column[(start + i).min(last)]),
+            };
+        }
+        packed
+    }
+}
+
+/// The loop on the lanes that fill the CPU's registers (see [`batch_wide`]).
 #[inline(always)]
-fn packs<L: Lanes, const N: usize, O: LaneValue<L>>(
-    qs: &[[L::Scalar; N]],
+fn run<L, W, const N: usize, O, P, C>(
+    source: C,
+    out: &mut [O::Scalar],
+    narrow: &impl Fn(&[L; N]) -> O,
+    wide: &impl Fn(&[W; N]) -> P,
+) where
+    L: Lanes,
+    W: Lanes<Scalar = L::Scalar>,
+    O: LaneValue<L>,
+    P: LaneValue<W, Scalar = O::Scalar>,
+    C: Configurations<L::Scalar, N>,
+{
+    #[cfg(all(feature = "dispatch", target_arch = "x86_64"))]
+    {
+        use pulp::Simd;
+        match pulp::Arch::new() {
+            pulp::Arch::V4(simd) => Simd::vectorize(simd, Packs::new(source, out, wide)),
+            pulp::Arch::V3(simd) => Simd::vectorize(simd, Packs::new(source, out, narrow)),
+            _ => packs_from(source, out, narrow),
+        }
+    }
+    #[cfg(all(feature = "dispatch", not(target_arch = "x86_64")))]
+    {
+        let _ = wide;
+        pulp::Arch::new().dispatch(Packs::new(source, out, narrow));
+    }
+    // Without dispatch, the lanes the build's own target fills.
+    #[cfg(not(feature = "dispatch"))]
+    {
+        if cfg!(target_feature = "avx512f") {
+            packs_from(source, out, wide);
+        } else {
+            packs_from(source, out, narrow);
+        }
+    }
+}
+
+/// The loop of [`batch`] and [`run`] as pulp's operation. A closure would not do: its `FnOnce`
+/// shim is not inlined into pulp's `#[target_feature]` function (measured: no AVX instruction in
+/// the result), while `with_simd` below and everything it calls are `#[inline(always)]`.
+#[cfg(feature = "dispatch")]
+struct Packs<'a, L: Lanes, const N: usize, O: LaneValue<L>, C, F> {
+    source: C,
+    out: &'a mut [O::Scalar],
+    f: &'a F,
+    lanes: core::marker::PhantomData<fn(&[L; N]) -> O>,
+}
+
+#[cfg(feature = "dispatch")]
+impl<'a, L: Lanes, const N: usize, O: LaneValue<L>, C, F> Packs<'a, L, N, O, C, F> {
+    /// The loop over `source` into `out`, evaluating `f`.
+    #[inline(always)]
+    fn new(source: C, out: &'a mut [O::Scalar], f: &'a F) -> Self {
+        Packs { source, out, f, lanes: core::marker::PhantomData }
+    }
+}
+
+#[cfg(feature = "dispatch")]
+impl<L: Lanes, const N: usize, O: LaneValue<L>, C: Configurations<L::Scalar, N>, F: Fn(&[L; N]) -> O> pulp::WithSimd
+    for Packs<'_, L, N, O, C, F>
+{
+    type Output = ();
+    #[inline(always)]
+    fn with_simd<S: pulp::Simd>(self, _: S) {
+        packs_from(self.source, self.out, self.f);
+    }
+}
+
+/// Pack, evaluate, unpack, `L::LANES` configurations at a time; the last pack padded with the
+/// last configuration. The source holds `out.len()` configurations (checked by the callers).
+#[inline(always)]
+fn packs_from<L: Lanes, const N: usize, O: LaneValue<L>>(
+    source: impl Configurations<L::Scalar, N>,
     out: &mut [O::Scalar],
     f: &impl Fn(&[L; N]) -> O,
 ) {
-    for (q, o) in qs.chunks(L::LANES).zip(out.chunks_mut(L::LANES)) {
-        let last = q.len() - 1;
-        let mut packed = [L::from_f64(0.0); N];
-        for (j, lanes) in packed.iter_mut().enumerate() {
-            *lanes = L::from_fn(|i| q[i.min(last)][j]);
-        }
+    let len = out.len();
+    for (pack, o) in out.chunks_mut(L::LANES).enumerate() {
+        let packed: [L; N] = source.pack(pack * L::LANES, len - 1);
         let value = (*f)(&packed);
         for (i, slot) in o.iter_mut().enumerate() {
             *slot = value.lane(i);

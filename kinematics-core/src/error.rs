@@ -27,6 +27,17 @@ pub enum KinematicsError {
         /// Length of the output slice.
         got: usize,
     },
+    /// A column of a column-wise batch (`*_batch_columns`) of another length than the output.
+    WrongColumnLength {
+        /// Robot name.
+        robot: &'static str,
+        /// The joint whose column it is.
+        joint: &'static str,
+        /// Length of the output slice.
+        expected: usize,
+        /// Length of the column.
+        got: usize,
+    },
 }
 
 impl fmt::Display for KinematicsError {
@@ -45,6 +56,10 @@ impl fmt::Display for KinematicsError {
             KinematicsError::WrongOutputLength { robot, expected, got } => {
                 write!(f, "robot `{robot}`: the output holds {got} values, but {expected} are computed")
             }
+            KinematicsError::WrongColumnLength { robot, joint, expected, got } => write!(
+                f,
+                "robot `{robot}`: the column of joint `{joint}` holds {got} values, but the output holds {expected}"
+            ),
         }
     }
 }

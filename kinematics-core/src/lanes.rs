@@ -1,6 +1,7 @@
 //! SIMD lane types: several configurations side by side in one value, on stable Rust.
 //!
-//! [`F64x4`] holds four `f64`, [`F32x8`] eight `f32`. They are plain arrays with lane-wise
+//! [`F64x4`] holds four `f64`, [`F32x8`] eight `f32`; [`F64x8`] and [`F32x16`], twice as many, fill
+//! an AVX-512 register (the generated batches take them where the CPU has AVX-512). They are plain arrays with lane-wise
 //! arithmetic written as loops over the lanes, which LLVM turns into packed instructions (AVX2
 //! `ymm` registers with `-C target-cpu=native` on a machine that has them, pairs of SSE2 `xmm`
 //! registers on baseline x86-64); their sines and cosines are [`crate::trig`]'s lane routines. They
@@ -99,10 +100,10 @@ impl<L: Lanes, A: LaneValue<L>, B: LaneValue<L>> LaneValue<L> for (A, B) {
 }
 
 macro_rules! lane_type {
-    ($name:ident, $scalar:ident, $lanes:literal, $sin_cos:path, $doc:literal) => {
+    ($name:ident, $scalar:ident, $lanes:literal, $align:literal, $sin_cos:path, $doc:literal) => {
         #[doc = $doc]
         #[derive(Debug, Clone, Copy, PartialEq)]
-        #[repr(C, align(32))]
+        #[repr(C, align($align))]
         pub struct $name(pub [$scalar; $lanes]);
 
         impl $name {
@@ -240,5 +241,21 @@ macro_rules! lane_type {
     };
 }
 
-lane_type!(F64x4, f64, 4, trig::sin_cos_f64_lanes, "Four `f64` lanes (one AVX2 register).");
-lane_type!(F32x8, f32, 8, trig::sin_cos_f32_lanes, "Eight `f32` lanes (one AVX2 register).");
+lane_type!(F64x4, f64, 4, 32, trig::sin_cos_f64_lanes, "Four `f64` lanes (one AVX2 register).");
+lane_type!(F32x8, f32, 8, 32, trig::sin_cos_f32_lanes, "Eight `f32` lanes (one AVX2 register).");
+lane_type!(
+    F64x8,
+    f64,
+    8,
+    64,
+    trig::sin_cos_f64_lanes,
+    "Eight `f64` lanes (one AVX-512 register; the batches use it where the CPU has AVX-512)."
+);
+lane_type!(
+    F32x16,
+    f32,
+    16,
+    64,
+    trig::sin_cos_f32_lanes,
+    "Sixteen `f32` lanes (one AVX-512 register; the batches use it where the CPU has AVX-512)."
+);

@@ -22,6 +22,7 @@
 extern crate std;
 
 mod batch;
+mod dispatch;
 mod error;
 mod floating;
 pub mod ik;
@@ -35,11 +36,12 @@ mod real;
 mod splitmix;
 pub mod trig;
 
-pub use batch::batch;
+pub use batch::{batch, batch_columns, batch_wide};
+pub use dispatch::{dispatch, dispatched_level};
 pub use error::KinematicsError;
 pub use floating::quaternion_matrix;
 pub use kinematics::{JointLimits, Kinematics, check_output, q_array};
-pub use lanes::{F32x8, F64x4, LaneValue, Lanes};
+pub use lanes::{F32x8, F32x16, F64x4, F64x8, LaneValue, Lanes};
 pub use orientation::OrientationError;
 pub use pose::{AGREEMENT_TOLERANCE, AGREEMENT_TOLERANCE_F32, Pose};
 pub use real::Real;

@@ -143,9 +143,13 @@ pub fn emit_ik(plan: &IkPlan, private: &TokenStream, forward: &TokenStream, revo
         pub fn tip_ik(target: &#p::Pose<f64> #free_param) -> #all {
             #p::ik::check_target(target)?;
             #free_check
-            let mut solutions = #solve;
-            solutions.measure(target, #[inline(always)] |q| #forward(q));
-            ::core::result::Result::Ok(solutions)
+            // Dispatched (`__private::dispatch`): the measure's forward kinematics runs with the
+            // widest instruction set the CPU has.
+            ::core::result::Result::Ok(#p::dispatch(#[inline(always)] || {
+                let mut solutions = #solve;
+                solutions.measure(target, #[inline(always)] |q| #forward(q));
+                solutions
+            }))
         }
 
         /// The solutions of [`Self::tip_ik`] inside `JOINT_LIMITS`, each angle moved by a whole
@@ -196,13 +200,15 @@ pub fn emit_numeric(
         pub fn tip_ik_numeric_with(target: &#p::Pose<f64>, seed: &[f64; #n], options: &#p::ik::NumericOptions) -> #result {
             #p::ik::check_target(target)?;
             #p::ik::check_seed(seed)?;
-            ::core::result::Result::Ok(#p::ik::levenberg_marquardt(
+            // Dispatched: the iteration's pose and Jacobian run with the widest instruction set
+            // the CPU has.
+            ::core::result::Result::Ok(#p::dispatch(#[inline(always)] || #p::ik::levenberg_marquardt(
                 target,
                 seed,
                 &Self::JOINT_LIMITS,
                 options,
                 #[inline(always)] |q| #pose_and_jacobian(q),
-            ))
+            )))
         }
     }
 }

@@ -168,8 +168,9 @@ struct Context<'a> {
     nv_lit: Literal,
     m_lit: Literal,
     k_lit: Literal,
-    /// (suffix, scalar, lane type) per scalar asked for.
-    scalars: Vec<(&'static str, TokenStream, TokenStream)>,
+    /// (suffix, scalar, lane type, wide lane type) per scalar asked for: the batches run the
+    /// wide lanes where the CPU has AVX-512, the others elsewhere.
+    scalars: Vec<(&'static str, TokenStream, TokenStream, TokenStream)>,
     /// The `*_generic` functions' scalar parameter and its bound.
     scalar: TokenStream,
     bound: TokenStream,
@@ -184,12 +185,12 @@ impl<'a> Context<'a> {
         let p = quote!(#krate::__private);
         let link_names: Vec<String> = links.frames().iter().map(|f| f.link.clone()).collect();
         let scalars = [
-            (spec.scalars.f64, "", quote!(f64), quote!(#p::F64x4)),
-            (spec.scalars.f32, "_f32", quote!(f32), quote!(#p::F32x8)),
+            (spec.scalars.f64, "", quote!(f64), quote!(#p::F64x4), quote!(#p::F64x8)),
+            (spec.scalars.f32, "_f32", quote!(f32), quote!(#p::F32x8), quote!(#p::F32x16)),
         ]
         .into_iter()
         .filter(|(on, ..)| *on)
-        .map(|(_, suffix, t, lanes)| (suffix, t, lanes))
+        .map(|(_, suffix, t, lanes, wide)| (suffix, t, lanes, wide))
         .collect();
         let tips = spec.tips.clone();
         let tip_request =
