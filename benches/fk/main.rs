@@ -103,6 +103,7 @@ fn all(c: Option<&mut Criterion>) {
     each!(
         ("puma560", Puma560, Puma560Std, 6, "puma560.toml", "link6"),
         ("stanford", Stanford, StanfordStd, 6, "stanford_arm.toml", "link6"),
+        ("planar_2r", Planar2r, Planar2rStd, 2, "planar_2r.toml", "link2"),
         ("scara", Scara, ScaraStd, 4, "scara.toml", "link4"),
         ("ur5", Ur5, Ur5Std, 6, "ur5.urdf", "tool0"),
         ("ur10e", Ur10e, Ur10eStd, 6, "ur10e.urdf", "tool0"),

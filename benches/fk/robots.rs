@@ -130,6 +130,13 @@ pub struct Stanford;
 #[derive(Kinematics)]
 #[kinematics(dh = "robots/stanford_arm.toml", tip = "link6", trig = "std")]
 pub struct StanfordStd;
+// The smallest robot: where the cost of dispatch, per call, shows most.
+#[derive(Kinematics)]
+#[kinematics(dh = "robots/planar_2r.toml", tip = "link2", positions, scalars(f64, f32))]
+pub struct Planar2r;
+#[derive(Kinematics)]
+#[kinematics(dh = "robots/planar_2r.toml", tip = "link2", trig = "std")]
+pub struct Planar2rStd;
 #[derive(Kinematics)]
 #[kinematics(dh = "robots/scara.toml", tip = "link4", positions, scalars(f64, f32))]
 pub struct Scara;
@@ -193,6 +200,7 @@ pub struct HumanoidStd;
 
 generated!(Puma560, Puma560Std, 6);
 generated!(Stanford, StanfordStd, 6);
+generated!(Planar2r, Planar2rStd, 2);
 generated!(Scara, ScaraStd, 4);
 generated!(Ur5, Ur5Std, 6, ur5);
 generated!(Ur10e, Ur10eStd, 6, ur10e);
