@@ -27,6 +27,12 @@ pub enum BuildError {
         /// The closest link name, when it looks like a typo.
         suggestion: Option<String>,
     },
+    /// [`crate::Robot::links`] called with no link at all (leave it out for every link).
+    #[error("{file}: `links` lists no link (leave it out to have every link)")]
+    EmptyLinks {
+        /// The description file.
+        file: String,
+    },
     /// A link listed twice in [`crate::Robot::links`].
     #[error("{file}: link `{link}` is listed twice in `links`")]
     DuplicateLink {

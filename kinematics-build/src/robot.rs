@@ -41,7 +41,8 @@ pub struct Robot {
     dir: Option<PathBuf>,
     base: Option<String>,
     tips: Vec<String>,
-    links: Vec<String>,
+    /// `None` until [`Robot::links`] is called: every link.
+    links: Option<Vec<String>>,
     positions: bool,
     jacobians: bool,
     ik: IkMode,
@@ -61,7 +62,7 @@ impl Robot {
             dir: None,
             base: None,
             tips: Vec::new(),
-            links: Vec::new(),
+            links: None,
             positions: false,
             jacobians: false,
             ik: IkMode::Off,
@@ -121,13 +122,14 @@ impl Robot {
     /// Only these links in `link_poses` (and `link_positions`, `LINK_NAMES`), in this order,
     /// instead of every link but the base: only their poses are computed. Each name must be a link
     /// of the robot ([`BuildError::UnknownLink`], with "did you mean") and appear once
-    /// ([`BuildError::DuplicateLink`]). Calling it again adds to the list.
+    /// ([`BuildError::DuplicateLink`]). Calling it again adds to the list; a list that stays
+    /// empty is an error ([`BuildError::EmptyLinks`]), not every link.
     pub fn links<I, S>(mut self, links: I) -> Self
     where
         I: IntoIterator<Item = S>,
         S: AsRef<str>,
     {
-        self.links.extend(links.into_iter().map(|l| l.as_ref().to_owned()));
+        self.links.get_or_insert_with(Vec::new).extend(links.into_iter().map(|l| l.as_ref().to_owned()));
         self
     }
 
@@ -235,9 +237,13 @@ impl Robot {
         for tip in &self.tips {
             find_link(&loaded.tree, &label, "tip", tip)?;
         }
-        for (i, link) in self.links.iter().enumerate() {
+        let links = self.links.as_deref().unwrap_or_default();
+        if self.links.as_ref().is_some_and(Vec::is_empty) {
+            return Err(BuildError::EmptyLinks { file: label });
+        }
+        for (i, link) in links.iter().enumerate() {
             find_link(&loaded.tree, &label, "listed", link)?;
-            if self.links[..i].contains(link) {
+            if links[..i].contains(link) {
                 return Err(BuildError::DuplicateLink { file: label, link: link.clone() });
             }
         }
@@ -250,7 +256,7 @@ impl Robot {
             name: &name,
             base: self.base.clone(),
             tips: self.tips.clone(),
-            links: self.links.clone(),
+            links: links.to_vec(),
             positions: self.positions,
             jacobians: self.jacobians,
             ik: self.ik.clone(),
@@ -425,6 +431,9 @@ mod tests {
             |e| matches!(e, BuildError::DuplicateLink { link, .. } if link == "tool0"),
         );
         assert_eq!(message, "arm.urdf: link `tool0` is listed twice in `links`");
+        // An empty list is what the user wrote, and lists nothing: refused, not every link.
+        let message = fails(&robot().links(Vec::<String>::new()), |e| matches!(e, BuildError::EmptyLinks { .. }));
+        assert_eq!(message, "arm.urdf: `links` lists no link (leave it out to have every link)");
     }
 
     #[test]
