@@ -4,8 +4,9 @@
 //! the medians in `<robot>/<variant>/new/estimates.json`, the robot list (`kinematics-robots.tsv`),
 //! the build record (`kinematics-build.tsv`) and the paired ratios (`kinematics-paired.tsv`) the
 //! benchmark writes. It writes `benches/SUMMARY.md` (per build and robot: median ns per call or per
-//! configuration, the ratios, the operation counts, the machine and the commands; then the issue's
-//! targets, each with its measured figure and whether it is met) and `benches/ratios.svg` (the
+//! configuration, the ratios, the operation counts, the machine and the commands; the plain build
+//! against the native one; then the issues' targets, each with its measured figure and whether it
+//! is met) and `benches/ratios.svg` (the
 //! ratios as bars). Nothing here is typed in by hand.
 //!
 //! One module per output: `read` (every input, as data), `tables` (the Markdown), `svg` (the
@@ -42,11 +43,13 @@ fn run() -> Result<()> {
         )
         .into());
     }
-    // Forward kinematics: each build's tables, the targets over all builds, the notes.
+    // Forward kinematics: each build's tables, the two builds side by side, the targets over all
+    // builds, the notes.
     let mut summary = tables::header(&read::machine());
     for run in &runs {
         tables::run_sections(&mut summary, run);
     }
+    tables::plain_against_native(&mut summary, &runs);
     targets::targets(&mut summary, &runs);
     summary += &tables::notes();
     // Inverse kinematics (plain build only): its tables, then its targets when it was run.

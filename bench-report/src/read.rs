@@ -48,7 +48,7 @@ pub struct Run {
 
 /// Every variant the benchmark times, and how many configurations one call computes (criterion's
 /// median is per call; the tables show it per configuration).
-const VARIANTS: [(&str, f64); 35] = [
+const VARIANTS: [(&str, f64); 41] = [
     ("generated_jacobian_f64", 1.0),
     ("generated_pose_and_jacobian_f64", 1.0),
     ("runtime_jacobian_f64", 1.0),
@@ -84,6 +84,12 @@ const VARIANTS: [(&str, f64); 35] = [
     ("floor_std_all_f64", 1.0),
     ("galaw_all_f64", 1.0),
     ("galaw_all_f32", 1.0),
+    ("baseline_pose_f64", 1.0),
+    ("baseline_all_f64", 1.0),
+    ("batch_columns1024_f64", 1024.0),
+    ("batch_columns1024_f32", 1024.0),
+    ("floor_batch1024_f64", 1024.0),
+    ("floor_batch1024_f32", 1024.0),
 ];
 
 /// Criterion's median, in ns per call, of benchmark `variant` of group `group`, if it was run.
@@ -114,6 +120,35 @@ pub fn machine() -> String {
 /// `a / b`, when both were measured.
 pub fn ratio(a: Option<f64>, b: Option<f64>) -> Option<f64> {
     Some(a? / b?)
+}
+
+/// The pair that times what dispatch costs: 64 dispatched `tip_pose` calls against one dispatch
+/// around 64 calls of the same body.
+pub const DISPATCH_PAIR: &str = "dispatch_each_pose_f64/dispatch_once_pose_f64";
+
+/// What one dispatch costs, in ns per call: the dispatch pair's ratio over one, times the
+/// dispatched pose's median (64 calls each pay it, against one: (ratio - 1) is the cost as a share
+/// of a call). `None` unless both were measured; NaN stays NaN.
+pub fn dispatch_ns(row: &Row) -> Option<f64> {
+    let ratio = row.paired.get(DISPATCH_PAIR)?;
+    Some((ratio - 1.0) * row.ns.get("generated_pose_f64")?)
+}
+
+/// The figures compared between the plain and the native build, as (column, variant): each a
+/// criterion median per call or per configuration.
+pub const ACROSS_BUILDS: [(&str, &str); 5] = [
+    ("pose", "generated_pose_f64"),
+    ("all links", "generated_all_f64"),
+    ("Jacobian", "generated_jacobian_f64"),
+    ("batch f64", "batch1024_f64"),
+    ("batch f32", "batch1024_f32"),
+];
+
+/// The plain build's median of `variant` over the native build's, for robot `group` (from two
+/// separate runs, so not paired): `None` unless both runs timed it.
+pub fn plain_over_native(plain: &[Row], native: &[Row], group: &str, variant: &str) -> Option<f64> {
+    let median = |rows: &[Row]| rows.iter().find(|r| r.group == group)?.ns.get(variant).copied();
+    ratio(median(plain), median(native))
 }
 
 /// Reads one build's results from `criterion` (its robot list, medians, pairs and build record),
@@ -283,6 +318,27 @@ mod tests {
         assert_eq!(ratio(Some(3.0), Some(2.0)), Some(1.5));
         assert_eq!(ratio(None, Some(2.0)), None);
         assert_eq!(ratio(Some(3.0), None), None);
+    }
+
+    #[test]
+    fn dispatch_cost_is_the_ratio_over_one_times_the_pose() {
+        let row = test_row("ur5", &[("generated_pose_f64", 40.0)], &[(DISPATCH_PAIR, 1.05)]);
+        assert!((dispatch_ns(&row).unwrap() - 2.0).abs() < 1e-12);
+        // Either figure missing: none; a NaN ratio stays NaN.
+        assert_eq!(dispatch_ns(&test_row("ur5", &[], &[(DISPATCH_PAIR, 1.05)])), None);
+        assert_eq!(dispatch_ns(&test_row("ur5", &[("generated_pose_f64", 40.0)], &[])), None);
+        let nan = test_row("ur5", &[("generated_pose_f64", 40.0)], &[(DISPATCH_PAIR, f64::NAN)]);
+        assert!(dispatch_ns(&nan).unwrap().is_nan());
+    }
+
+    #[test]
+    fn plain_over_native_needs_the_robot_in_both_runs() {
+        let plain = [test_row("ur5", &[("generated_pose_f64", 33.0)], &[]), test_row("panda", &[], &[])];
+        let native = [test_row("ur5", &[("generated_pose_f64", 30.0)], &[])];
+        assert!((plain_over_native(&plain, &native, "ur5", "generated_pose_f64").unwrap() - 1.1).abs() < 1e-12);
+        assert_eq!(plain_over_native(&plain, &native, "panda", "generated_pose_f64"), None);
+        assert_eq!(plain_over_native(&plain, &native, "ur5", "generated_all_f64"), None);
+        assert_eq!(plain_over_native(&plain, &[], "ur5", "generated_pose_f64"), None);
     }
 
     #[test]

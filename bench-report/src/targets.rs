@@ -1,37 +1,61 @@
-//! Targets: the issue's speed targets, each stated for a build (`plain`, `native`, or `any`),
-//! with the figure measured in that build's results and whether it is met; then the inverse
-//! kinematics targets. A target that has no figure yet says `not measured` (or `n/a`), never met.
-//! NaN is the worst figure of all and meets no bound.
+//! Targets: the issues' speed targets, each stated for a build (`plain`, `native`, `any`, the plain
+//! build judged with the native one listed beside it, or the two builds together), with the
+//! figure measured in that build's results and whether it is met; then the inverse kinematics
+//! targets. A target that has no figure yet says `not measured` (or `n/a`), never met. NaN is the
+//! worst figure of all and meets no bound. A figure with no stated bound is reported, not judged.
 
 use std::fmt::Write as _;
 
-use crate::read::{Ik, Row, Run, ik_geo_cell, ratio};
+use crate::read::{DISPATCH_PAIR, Ik, Row, Run, dispatch_ns, ik_geo_cell, plain_over_native, ratio};
 
-/// One of the issue's targets, as a figure measured in one run.
-struct Target {
-    what: &'static str,
-    /// `native`, `plain` or `any`: the build the target is stated for.
-    build: &'static str,
-    /// The measured figure, and whether it meets the target.
-    measure: fn(&[Row]) -> Option<(String, bool)>,
+/// A measured figure as the table shows it, and whether it meets the target; `None` when it was
+/// not measured.
+type Judged = Option<(String, bool)>;
+
+/// How a target's figure is measured.
+enum Measure {
+    /// From one build's rows.
+    One(fn(&[Row]) -> Judged),
+    /// From one build's rows, with no bound to meet: the figure only.
+    Report(fn(&[Row]) -> Option<String>),
+    /// From the plain build's rows (first) and the native build's together.
+    Builds(fn(&[Row], &[Row]) -> Judged),
 }
 
-/// The worst (`lowest` when higher is better, else highest) of pair `name` over the robots that
-/// have it, with that robot: `None` when no robot has it.
-fn worst_paired(rows: &[Row], name: &str, lowest: bool) -> Option<(f64, String)> {
+/// One of the issues' targets.
+struct Target {
+    what: &'static str,
+    /// The build the target is stated for: `native`, `plain`, `any` (every build run, each
+    /// judged), [`NATIVE_LISTED`] (the plain build judged, the native build's figure listed) or
+    /// [`BOTH`] (a [`Measure::Builds`] target, one line).
+    build: &'static str,
+    measure: Measure,
+}
+
+/// A target stated for the plain build, with the native build's figure listed (not judged).
+const NATIVE_LISTED: &str = "plain, native listed";
+/// A target comparing the plain build with the native one.
+const BOTH: &str = "plain / native";
+
+/// The worst (`lowest` when higher is better, else highest) of `figures` (value, robot): `None`
+/// when there are none. NaN is the worst of all: once found, it stays.
+fn worst(figures: impl IntoIterator<Item = (f64, String)>, lowest: bool) -> Option<(f64, String)> {
     let mut worst: Option<(f64, String)> = None;
-    for r in rows {
-        let Some(&v) = r.paired.get(name) else { continue };
-        // NaN is the worst of all: once found, it stays.
+    for (v, robot) in figures {
         let replace = match &worst {
             None => true,
             Some((w, _)) => !w.is_nan() && (v.is_nan() || if lowest { v < *w } else { v > *w }),
         };
         if replace {
-            worst = Some((v, r.group.clone()));
+            worst = Some((v, robot));
         }
     }
     worst
+}
+
+/// The worst of pair `name` over the robots that have it, with that robot (see [`worst`]).
+fn worst_paired(rows: &[Row], name: &str, lowest: bool) -> Option<(f64, String)> {
+    worst(rows.iter().filter_map(|r| Some((*r.paired.get(name)?, r.group.clone()))), lowest)
 }
 
 /// [`every_robot`] over the UR5, the Panda and the iiwa 14 only (the robots the velocity targets
@@ -64,111 +88,221 @@ fn every_robot(rows: &[Row], name: &str, bound: f64, lowest: bool) -> Option<(St
     Some((format!("worst {v:.2} ({robot}; {count} robots, paired)"), met))
 }
 
-/// The issue's forward kinematics targets, in the order the table shows them.
-const TARGETS: [Target; 16] = [
+/// Robot `group`'s plain median of `variant` over its native median (two runs, not paired), at
+/// most `bound`, NaN failing.
+fn within_native(plain: &[Row], native: &[Row], group: &str, variant: &str, bound: f64) -> Option<(String, bool)> {
+    let median = |rows: &[Row]| rows.iter().find(|r| r.group == group)?.ns.get(variant).copied();
+    let (p, n) = (median(plain)?, median(native)?);
+    let v = p / n;
+    Some((format!("{v:.2} ({p:.1} ns / {n:.1} ns, medians of two runs)"), at_most(v, bound)))
+}
+
+/// The worst (highest) plain median of `variant` over the native median among the robots both
+/// runs timed, at most `bound`, NaN failing.
+fn every_robot_within_native(plain: &[Row], native: &[Row], variant: &str, bound: f64) -> Option<(String, bool)> {
+    let ratios: Vec<(f64, String)> = plain
+        .iter()
+        .filter_map(|r| Some((plain_over_native(plain, native, &r.group, variant)?, r.group.clone())))
+        .collect();
+    let count = ratios.len();
+    let (v, robot) = worst(ratios, false)?;
+    Some((format!("worst {v:.2} ({robot}; {count} robots, medians of two runs)"), at_most(v, bound)))
+}
+
+/// The dispatch pair and the cost per call it gives ([`dispatch_ns`]) of every robot that has it,
+/// the smallest robot of the run (fewest degrees of freedom, the first of equals) named first, or
+/// said to be not measured: `None` when no robot has the pair.
+fn dispatch_cost(rows: &[Row]) -> Option<String> {
+    let measured: Vec<(&Row, f64)> = rows.iter().filter_map(|r| Some((r, *r.paired.get(DISPATCH_PAIR)?))).collect();
+    if measured.is_empty() {
+        return None;
+    }
+    let smallest = rows.iter().min_by_key(|r| r.dof)?;
+    let figure = |r: &Row, v: f64| {
+        let ns = dispatch_ns(r).map_or("n/a".to_owned(), |ns| format!("{ns:.2} ns"));
+        format!("{v:.2}x, {ns}")
+    };
+    let others: Vec<String> = measured
+        .iter()
+        .filter(|(r, _)| r.group != smallest.group)
+        .map(|&(r, v)| format!("{} {}", r.group, figure(r, v)))
+        .collect();
+    let others = if others.is_empty() { "none".to_owned() } else { others.join("; ") };
+    let first = smallest.paired.get(DISPATCH_PAIR).map_or("not measured".to_owned(), |&v| figure(smallest, v));
+    Some(format!("smallest: {} ({} DoF) {first}; others: {others}", smallest.group, smallest.dof))
+}
+
+/// The issues' forward kinematics targets, in the order the table shows them: the previous
+/// issue's, then issue 22's (native speed from a plain build).
+const TARGETS: [Target; 27] = [
     Target {
         what: "UR5, Panda, iiwa: pose + Jacobian of the tip at most 1.6x the pose alone (paired)",
         build: "any",
-        measure: |rows| named_robots(rows, "generated_pose_and_jacobian_f64/generated_pose_f64", 1.6, false),
+        measure: Measure::One(|rows| {
+            named_robots(rows, "generated_pose_and_jacobian_f64/generated_pose_f64", 1.6, false)
+        }),
     },
     Target {
         what: "UR5, Panda, iiwa: pose + Jacobian at least 8x faster than the runtime Jacobian (paired)",
         build: "any",
-        measure: |rows| named_robots(rows, "runtime_jacobian_f64/generated_pose_and_jacobian_f64", 8.0, true),
+        measure: Measure::One(|rows| {
+            named_robots(rows, "runtime_jacobian_f64/generated_pose_and_jacobian_f64", 8.0, true)
+        }),
     },
     Target {
         what: "UR5, Panda, iiwa: the twist cheaper than forming J and multiplying (paired ratio > 1)",
         build: "any",
-        measure: |rows| named_robots(rows, "jacobian_times_qd_f64/generated_twist_f64", 1.0, true),
+        measure: Measure::One(|rows| named_robots(rows, "jacobian_times_qd_f64/generated_twist_f64", 1.0, true)),
     },
     Target {
         what: "UR5 pose f64 scalar >= 2.5x faster than the std-trig pose (paired), native",
         build: "native",
-        measure: |rows| {
+        measure: Measure::One(|rows| {
             let v = *ur5(rows)?.paired.get("std_pose_f64/generated_pose_f64")?;
             Some((format!("{v:.2}x"), at_least(v, 2.5)))
-        },
+        }),
     },
     Target {
         what: "UR5 pose f64 scalar >= 2x faster than the std-trig pose (paired), plain build",
         build: "plain",
-        measure: |rows| {
+        measure: Measure::One(|rows| {
             let v = *ur5(rows)?.paired.get("std_pose_f64/generated_pose_f64")?;
             Some((format!("{v:.2}x"), at_least(v, 2.0)))
-        },
+        }),
     },
     Target {
         what: "all link poses f64, every robot: >= 6x faster than `k` (URDF robots)",
         build: "any",
-        measure: |rows| every_robot(rows, "k_all_f64/generated_all_f64", 6.0, true),
+        measure: Measure::One(|rows| every_robot(rows, "k_all_f64/generated_all_f64", 6.0, true)),
     },
     Target {
         what: "all link poses f64, every robot: >= 3x faster than galaw (URDF robots)",
         build: "any",
-        measure: |rows| every_robot(rows, "galaw_all_f64/generated_all_f64", 3.0, true),
+        measure: Measure::One(|rows| every_robot(rows, "galaw_all_f64/generated_all_f64", 3.0, true)),
     },
     Target {
         what: "all link poses f64, every robot: >= 4x faster than the runtime",
         build: "any",
-        measure: |rows| every_robot(rows, "runtime_all_f64/generated_all_f64", 4.0, true),
+        measure: Measure::One(|rows| every_robot(rows, "runtime_all_f64/generated_all_f64", 4.0, true)),
     },
     Target {
         what: "batch of 1,024 UR5 poses f64: <= 16 ns per configuration (criterion median), native",
         build: "native",
-        measure: |rows| {
+        measure: Measure::One(|rows| {
             let v = *ur5(rows)?.ns.get("batch1024_f64")?;
             Some((format!("{v:.2} ns"), at_most(v, 16.0)))
-        },
+        }),
     },
     Target {
         what: "batch of 1,024 UR5 poses f32: <= 8 ns per configuration (criterion median), native",
         build: "native",
-        measure: |rows| {
+        measure: Measure::One(|rows| {
             let v = *ur5(rows)?.ns.get("batch1024_f32")?;
             Some((format!("{v:.2} ns"), at_most(v, 8.0)))
-        },
+        }),
     },
     Target {
         what: "rayon on 2 cores >= 1.8x over one thread (UR5, 16,384 configurations, paired)",
         build: "any",
-        measure: |rows| {
+        measure: Measure::One(|rows| {
             let v = *ur5(rows)?.paired.get("batch16384_f64/parallel_batch16384_f64")?;
             Some((format!("{v:.2}x"), at_least(v, 1.8)))
-        },
+        }),
     },
     Target {
         what: "every body within 1.3x of the new floor: pose f64 / floor",
         build: "any",
-        measure: |rows| every_robot(rows, "generated_pose_f64/floor_f64", 1.3, false),
+        measure: Measure::One(|rows| every_robot(rows, "generated_pose_f64/floor_f64", 1.3, false)),
     },
     Target {
         what: "every body within 1.3x of the new floor: all links f64 / floor all",
         build: "any",
-        measure: |rows| every_robot(rows, "generated_all_f64/floor_all_f64", 1.3, false),
+        measure: Measure::One(|rows| every_robot(rows, "generated_all_f64/floor_all_f64", 1.3, false)),
     },
     Target {
         what: "every body within 1.3x of the new floor: pose f32 / floor f32",
         build: "any",
-        measure: |rows| every_robot(rows, "generated_pose_f32/floor_f32", 1.3, false),
+        measure: Measure::One(|rows| every_robot(rows, "generated_pose_f32/floor_f32", 1.3, false)),
     },
     Target {
         what: "every body within 1.3x of the new floor: lanes f64x4 and f32x8 / their floors",
         build: "any",
-        measure: |rows| {
+        measure: Measure::One(|rows| {
             let (a, ra) = every_robot(rows, "lanes_pose_f64x4/floor_f64x4", 1.3, false)?;
             let (b, rb) = every_robot(rows, "lanes_pose_f32x8/floor_f32x8", 1.3, false)?;
             Some((format!("f64x4 {a}; f32x8 {b}"), ra && rb))
-        },
+        }),
     },
     Target {
         what: "f32 about twice as fast as f64 in lanes (read as >= 1.8x per configuration, paired, UR5)",
         build: "any",
-        measure: |rows| {
+        measure: Measure::One(|rows| {
             let r = ur5(rows)?;
             let lanes = *r.paired.get("lanes_pose_f64x4/lanes_pose_f32x8")?;
             let batch = *r.paired.get("batch1024_f64/batch1024_f32")?;
             Some((format!("lanes {lanes:.2}x, batches {batch:.2}x"), at_least(lanes, 1.8) && at_least(batch, 1.8)))
-        },
+        }),
+    },
+    Target {
+        what: "issue 22: UR5 pose f64, plain build within 1.1x of native (plain median / native median)",
+        build: BOTH,
+        measure: Measure::Builds(|plain, native| within_native(plain, native, "ur5", "generated_pose_f64", 1.1)),
+    },
+    Target {
+        what: "issue 22: Panda pose f64, plain build within 1.1x of native (plain median / native median)",
+        build: BOTH,
+        measure: Measure::Builds(|plain, native| within_native(plain, native, "panda", "generated_pose_f64", 1.1)),
+    },
+    Target {
+        what: "issue 22: Panda Jacobian f64, plain build within 1.1x of native (plain median / native median)",
+        build: BOTH,
+        measure: Measure::Builds(|plain, native| within_native(plain, native, "panda", "generated_jacobian_f64", 1.1)),
+    },
+    Target {
+        what: "issue 22: all link poses f64, every robot: plain build within 1.1x of native (plain median / native median)",
+        build: BOTH,
+        measure: Measure::Builds(|plain, native| every_robot_within_native(plain, native, "generated_all_f64", 1.1)),
+    },
+    Target {
+        what: "issue 22: all link poses f64, every robot: >= 2.2x faster than galaw's generated code (paired, URDF robots)",
+        build: NATIVE_LISTED,
+        measure: Measure::One(|rows| every_robot(rows, "galaw_all_f64/generated_all_f64", 2.2, true)),
+    },
+    Target {
+        what: "issue 22: all link poses f64, every robot: >= 7x faster than `k` (paired, URDF robots)",
+        build: NATIVE_LISTED,
+        measure: Measure::One(|rows| every_robot(rows, "k_all_f64/generated_all_f64", 7.0, true)),
+    },
+    Target {
+        what: "issue 22: batch of 1,024 UR5 poses f64: <= 12 ns per configuration (criterion median), plain build",
+        build: "plain",
+        measure: Measure::One(|rows| {
+            let v = *ur5(rows)?.ns.get("batch1024_f64")?;
+            Some((format!("{v:.2} ns"), at_most(v, 12.0)))
+        }),
+    },
+    Target {
+        what: "issue 22: batch of 1,024 UR5 poses f32: <= 6 ns per configuration (criterion median), plain build",
+        build: "plain",
+        measure: Measure::One(|rows| {
+            let v = *ur5(rows)?.ns.get("batch1024_f32")?;
+            Some((format!("{v:.2} ns"), at_most(v, 6.0)))
+        }),
+    },
+    Target {
+        what: "issue 22: every robot's batch f64 within 1.2x of its lane floor (paired)",
+        build: "any",
+        measure: Measure::One(|rows| every_robot(rows, "batch1024_f64/floor_batch1024_f64", 1.2, false)),
+    },
+    Target {
+        what: "issue 22: every robot's batch f32 within 1.2x of its lane floor (paired)",
+        build: "any",
+        measure: Measure::One(|rows| every_robot(rows, "batch1024_f32/floor_batch1024_f32", 1.2, false)),
+    },
+    Target {
+        what: "issue 22: dispatch cost, kept small (reported: `dispatch each / once`, paired, and ns per call)",
+        build: "any",
+        measure: Measure::Report(dispatch_cost),
     },
 ];
 
@@ -177,19 +311,43 @@ pub fn targets(s: &mut String, runs: &[Run]) {
     let _ = writeln!(s, "## Targets\n");
     let _ = writeln!(
         s,
-        "The issue's targets, each from the build it names (`any`: every build that was run), with the figure\n\
-         measured and whether it is met. Ratios are paired (above); the batch figures are criterion medians per\n\
-         configuration. `not measured` means that build (or that body) has no results yet.\n"
+        "The issues' targets (the previous issue's, then issue 22's), each from the build it names (`any`: every\n\
+         build that was run, each judged; `plain, native listed`: the plain build judged, the native build's figure\n\
+         listed beside it; `plain / native`: the plain build's criterion median over the native build's, two\n\
+         separate runs, not paired, so noisier), with the figure measured and whether it is met. Other ratios are\n\
+         paired (above); the batch figures are criterion medians per configuration. `report` marks a figure with\n\
+         no stated bound. `not measured` means that build (or that body) has no results yet.\n"
     );
     let _ = writeln!(s, "| target | build | measured | met |");
     let _ = writeln!(s, "|---|---|---|---|");
+    let rows = |name: &str| runs.iter().find(|r| r.name == name).map(|r| r.rows.as_slice());
+    let not_measured = || ("not measured".to_owned(), "-");
     for target in &TARGETS {
-        let wanted: Vec<&'static str> =
-            if target.build == "any" { vec!["plain", "native"] } else { vec![target.build] };
+        let wanted = match target.build {
+            "any" | NATIVE_LISTED => vec!["plain", "native"],
+            build => vec![build],
+        };
         for build in wanted {
-            let (figure, met) = match runs.iter().find(|r| r.name == build).and_then(|r| (target.measure)(&r.rows)) {
-                Some((figure, met)) => (figure, if met { "yes" } else { "**no**" }),
-                None => ("not measured".to_owned(), "-"),
+            let judged = |m: Option<(String, bool)>| {
+                m.map_or_else(not_measured, |(figure, met)| {
+                    let listed = target.build == NATIVE_LISTED && build == "native";
+                    (
+                        figure,
+                        match (met, listed) {
+                            (true, false) => "yes",
+                            (false, false) => "**no**",
+                            (true, true) => "yes (listed)",
+                            (false, true) => "no (listed)",
+                        },
+                    )
+                })
+            };
+            let (figure, met) = match target.measure {
+                Measure::One(measure) => judged(rows(build).and_then(measure)),
+                Measure::Builds(measure) => judged(rows("plain").zip(rows("native")).and_then(|(p, n)| measure(p, n))),
+                Measure::Report(measure) => {
+                    rows(build).and_then(measure).map_or_else(not_measured, |figure| (figure, "report"))
+                }
             };
             let _ = writeln!(s, "| {} | {build} | {figure} | {met} |", target.what);
         }
@@ -279,6 +437,105 @@ mod tests {
         targets(&mut s, &[run("native")]);
         assert!(s.contains("(paired), native | native | 2.20x | **no** |\n"), "{s}");
         assert!(s.contains("native | native | 12.00 ns | yes |\n"), "{s}");
+    }
+
+    fn run(name: &'static str, rows: Vec<Row>) -> Run {
+        Run { name, build: String::new(), dir: PathBuf::new(), rows }
+    }
+
+    /// The line of target `what` (its start) for `build` in the targets table of `runs`.
+    fn line(runs: &[Run], what: &str, build: &str) -> String {
+        let mut s = String::new();
+        targets(&mut s, runs);
+        let found = s.lines().find(|l| l.starts_with(&format!("| {what}")) && l.contains(&format!(" | {build} | ")));
+        found.unwrap_or_else(|| panic!("no line for {what} ({build}) in\n{s}")).to_owned()
+    }
+
+    #[test]
+    fn plain_against_native_needs_both_runs_names_the_worst_robot_and_nan_fails() {
+        let plain = vec![
+            test_row("ur5", &[("generated_pose_f64", 43.0), ("generated_all_f64", 50.0)], &[]),
+            test_row("panda", &[("generated_pose_f64", 50.0), ("generated_jacobian_f64", 60.0)], &[]),
+            test_row("humanoid", &[("generated_all_f64", 600.0)], &[]),
+        ];
+        let native = vec![
+            test_row("ur5", &[("generated_pose_f64", 40.0), ("generated_all_f64", 49.0)], &[]),
+            test_row("panda", &[("generated_pose_f64", f64::NAN), ("generated_jacobian_f64", 50.0)], &[]),
+            test_row("humanoid", &[("generated_all_f64", 500.0)], &[]),
+        ];
+        let both = [run("plain", plain.clone()), run("native", native)];
+        let ur5 = line(&both, "issue 22: UR5 pose f64", "plain / native");
+        assert!(ur5.ends_with("| 1.07 (43.0 ns / 40.0 ns, medians of two runs) | yes |"), "{ur5}");
+        assert!(line(&both, "issue 22: Panda pose f64", "plain / native").ends_with("| **no** |"));
+        let jacobian = line(&both, "issue 22: Panda Jacobian f64", "plain / native");
+        assert!(jacobian.ends_with("| 1.20 (60.0 ns / 50.0 ns, medians of two runs) | **no** |"), "{jacobian}");
+        let all = line(&both, "issue 22: all link poses f64, every robot: plain build", "plain / native");
+        assert!(all.ends_with("| worst 1.20 (humanoid; 2 robots, medians of two runs) | **no** |"), "{all}");
+        // Without the native run, every one of them is not measured.
+        let alone = [run("plain", plain)];
+        for what in ["UR5 pose", "Panda pose", "Panda Jacobian", "all link poses f64, every robot: plain"] {
+            let l = line(&alone, &format!("issue 22: {what}"), "plain / native");
+            assert!(l.ends_with("| plain / native | not measured | - |"), "{l}");
+        }
+    }
+
+    #[test]
+    fn the_plain_build_is_judged_and_the_native_one_listed() {
+        let rows = |galaw| vec![test_row("ur5", &[], &[("galaw_all_f64/generated_all_f64", galaw)])];
+        let runs = [run("plain", rows(2.5)), run("native", rows(2.0))];
+        let what = "issue 22: all link poses f64, every robot: >= 2.2x faster than galaw";
+        assert!(line(&runs, what, "plain").ends_with("| plain | worst 2.50 (ur5; 1 robots, paired) | yes |"));
+        assert!(line(&runs, what, "native").ends_with("| native | worst 2.00 (ur5; 1 robots, paired) | no (listed) |"));
+        // NaN fails the plain build; the k target has no pair: not measured.
+        let runs = [run("plain", rows(f64::NAN))];
+        assert!(line(&runs, what, "plain").ends_with("| **no** |"));
+        assert!(line(&runs, what, "native").ends_with("| native | not measured | - |"));
+        let k = "issue 22: all link poses f64, every robot: >= 7x faster than `k`";
+        assert!(line(&runs, k, "plain").ends_with("| plain | not measured | - |"));
+    }
+
+    #[test]
+    fn issue_22_batches_per_configuration_and_against_their_lane_floor() {
+        let ns = [("batch1024_f64", 11.5), ("batch1024_f32", 6.5)];
+        let pairs = [("batch1024_f64/floor_batch1024_f64", 1.15), ("batch1024_f32/floor_batch1024_f32", f64::NAN)];
+        let runs = [run("plain", vec![test_row("ur5", &ns, &pairs), test_row("scara", &[], &pairs[..1])])];
+        let f64_line = line(&runs, "issue 22: batch of 1,024 UR5 poses f64: <= 12 ns", "plain");
+        assert!(f64_line.ends_with("| plain | 11.50 ns | yes |"), "{f64_line}");
+        let f32_line = line(&runs, "issue 22: batch of 1,024 UR5 poses f32: <= 6 ns", "plain");
+        assert!(f32_line.ends_with("| plain | 6.50 ns | **no** |"), "{f32_line}");
+        let floor = line(&runs, "issue 22: every robot's batch f64 within 1.2x", "plain");
+        assert!(floor.ends_with("| worst 1.15 (ur5; 2 robots, paired) | yes |"), "{floor}");
+        let floor = line(&runs, "issue 22: every robot's batch f32 within 1.2x", "plain");
+        assert!(floor.ends_with("| worst NaN (ur5; 1 robots, paired) | **no** |"), "{floor}");
+        assert!(line(&runs, "issue 22: every robot's batch f32", "native").ends_with("| not measured | - |"));
+    }
+
+    #[test]
+    fn dispatch_cost_is_reported_for_every_robot_smallest_first() {
+        let mut scara = test_row("scara", &[("generated_pose_f64", 20.0)], &[(DISPATCH_PAIR, 1.1)]);
+        scara.dof = 4;
+        let mut planar = test_row("planar_2r", &[], &[(DISPATCH_PAIR, 1.5)]);
+        planar.dof = 2;
+        let rows = vec![
+            test_row("ur5", &[("generated_pose_f64", 40.0)], &[(DISPATCH_PAIR, 1.05)]),
+            scara,
+            planar.clone(),
+            test_row("humanoid", &[("generated_pose_f64", 40.0)], &[]),
+        ];
+        let expected = "smallest: planar_2r (2 DoF) 1.50x, n/a; others: ur5 1.05x, 2.00 ns; scara 1.10x, 2.00 ns";
+        assert_eq!(dispatch_cost(&rows).as_deref(), Some(expected));
+        assert_eq!(dispatch_cost(&rows[3..]), None);
+        // The smallest robot is named even when it lacks the pair.
+        let mut small = rows[3].clone();
+        small.dof = 1;
+        let expected_small = "smallest: humanoid (1 DoF) not measured; others: ur5 1.05x, 2.00 ns";
+        assert_eq!(dispatch_cost(&[rows[0].clone(), small]).as_deref(), Some(expected_small));
+        assert_eq!(dispatch_cost(&[planar]).as_deref(), Some("smallest: planar_2r (2 DoF) 1.50x, n/a; others: none"));
+        // Reported, never judged; not measured in a build without it.
+        let what = "issue 22: dispatch cost";
+        let runs = [run("native", rows)];
+        assert!(line(&runs, what, "native").ends_with(&format!("| native | {expected} | report |")));
+        assert!(line(&runs, what, "plain").ends_with("| plain | not measured | - |"));
     }
 
     #[test]

@@ -6,7 +6,7 @@ use std::fmt::Write as _;
 use std::path::PathBuf;
 
 use super::{fmt, paired, table};
-use crate::read::{Row, Run, ratio};
+use crate::read::{DISPATCH_PAIR, Row, Run, dispatch_ns, ratio};
 
 /// One build's sections, appended to `s`.
 pub fn run_sections(s: &mut String, run: &Run) {
@@ -16,16 +16,27 @@ pub fn run_sections(s: &mut String, run: &Run) {
     let dir: PathBuf = dir.into_iter().rev().collect();
     let _ = writeln!(s, "## {title}\n\nFrom `{}` ({}).\n", dir.display(), run.build);
     let _ = writeln!(s, "### Median ns per call (f64 unless marked)\n");
+    let _ = writeln!(
+        s,
+        "`pose`, `pose f32`, `position`, `all links` and `all f32` are the generated functions, each dispatched at run\n\
+         time to the widest instruction set the CPU has (AVX-512, else AVX2, else the build's own); `baseline pose` and\n\
+         `baseline all` are the same bodies not dispatched (`tip_pose_generic::<f64>`, `link_poses_generic::<f64>`),\n\
+         compiled for the build's own instruction set (x86-64 baseline in a plain build, this CPU's in a native one).\n\
+         `all links` times `let poses = link_poses(q); black_box(&poses)`. `std pose` and `std all` are the robot derived\n\
+         with `trig = \"std\"`; `runtime`, `k` and galaw are the peers, `floor ...` the trigonometry floors (see the Notes).\n"
+    );
     let columns = [
         "DoF",
         "tip",
         "ops (sin_cos/mul/add)",
         "all-links ops",
         "pose",
+        "baseline pose",
         "std pose",
         "pose f32",
         "position",
         "all links",
+        "baseline all",
         "std all",
         "all f32",
         "runtime pose",
@@ -42,10 +53,12 @@ pub fn run_sections(s: &mut String, run: &Run) {
     ];
     let variants = [
         "generated_pose_f64",
+        "baseline_pose_f64",
         "std_pose_f64",
         "generated_pose_f32",
         "generated_position_f64",
         "generated_all_f64",
+        "baseline_all_f64",
         "std_all_f64",
         "generated_all_f32",
         "runtime_pose_f64",
@@ -68,6 +81,15 @@ pub fn run_sections(s: &mut String, run: &Run) {
         i => fmt(r.ns.get(variants[i - 4]).copied()),
     });
     let _ = writeln!(s, "\n### Lanes and batches: median ns per configuration (tip pose)\n");
+    let _ = writeln!(
+        s,
+        "Lanes: one `tip_pose_generic` call on four (`F64x4`) or eight (`F32x8`) configurations inside\n\
+         `kinematics::dispatch`, beside as many scalar calls and the lane type's floor. Batches of 1,024: `batch` is\n\
+         `tip_pose_batch` (rows, one array per configuration), `batch columns` is `tip_pose_batch_columns` (one slice\n\
+         per joint), `scalar loop` the loop of `tip_pose` calls, and `floor batch` the batch's lane floor: the sin/cos\n\
+         alone of its 1,024 configurations in the lanes the batch runs on this CPU (`F64x8` and `F32x16` with AVX-512,\n\
+         else `F64x4` and `F32x8`). Rayon: `parallel::batch` of 16,384 against `tip_pose_batch` on one thread.\n"
+    );
     let columns = [
         "lanes f64x4",
         "4 scalar calls",
@@ -76,8 +98,12 @@ pub fn run_sections(s: &mut String, run: &Run) {
         "8 scalar f32 calls",
         "floor f32x8",
         "batch f64",
+        "batch columns f64",
+        "floor batch f64",
         "scalar loop f64",
         "batch f32",
+        "batch columns f32",
+        "floor batch f32",
         "scalar loop f32",
         "16,384 one thread",
         "16,384 rayon",
@@ -90,8 +116,12 @@ pub fn run_sections(s: &mut String, run: &Run) {
         "scalar8_pose_f32",
         "floor_f32x8",
         "batch1024_f64",
+        "batch_columns1024_f64",
+        "floor_batch1024_f64",
         "generated_batch1024_f64",
         "batch1024_f32",
+        "batch_columns1024_f32",
+        "floor_batch1024_f32",
         "generated_batch1024_f32",
         "batch16384_f64",
         "parallel_batch16384_f64",
@@ -138,12 +168,17 @@ pub fn run_sections(s: &mut String, run: &Run) {
         s,
         "The medians above come from different seconds of a shared machine whose speed drifts, so ratios of them move\n\
          by tens of percent between runs. These are timed in alternation instead: 201 rounds, each running both\n\
-         contenders back to back (2,000 calls each; 8 calls of a 1,024-batch; 2 calls of a 16,384-batch; which goes\n\
-         first alternates), and the median of the rounds' ratios. They are the figures to quote. `floor all` is the\n\
-         trigonometry floor of all link poses (every `sin_cos` pair the all-links code calls); `runtime all / floor all`\n\
-         and `k all / floor all` are therefore the largest speed-ups over the runtime and over `k` that any code calling\n\
-         our `sin_cos` could show, and `all / floor all` how far the generated code is from them. `floor std / floor` is\n\
-         what our sin/cos gives over std's on the same angles.\n"
+         contenders back to back (2,000 calls each; 8 calls of a 1,024-batch; 2 calls of a 16,384-batch; 32 calls of\n\
+         the 64 poses of the dispatch pair; which goes first alternates), and the median of the rounds' ratios. They\n\
+         are the figures to quote. `floor all` is the trigonometry floor of all link poses (every `sin_cos` pair the\n\
+         all-links code calls); `runtime all / floor all` and `k all / floor all` are therefore the largest speed-ups\n\
+         over the runtime and over `k` that any code calling our `sin_cos` could show, and `all / floor all` how far the\n\
+         generated code is from them. `floor std / floor` is what our sin/cos gives over std's on the same angles.\n\
+         `baseline pose / pose` and `baseline all / all` are the bodies not dispatched over the dispatched ones: what\n\
+         dispatch gains in a plain build (about 1 in a native build, where both run the same instructions).\n\
+         `dispatch each / once` is 64 dispatched `tip_pose` calls over one dispatch around 64 calls of the same body,\n\
+         and `dispatch ns` the cost of one dispatch it gives: (ratio - 1) times the `pose` median, in ns per call (below\n\
+         zero when the two are within noise).\n"
     );
     let names = [
         ("std pose / pose", "std_pose_f64/generated_pose_f64"),
@@ -160,14 +195,23 @@ pub fn run_sections(s: &mut String, run: &Run) {
         ("position / pose", "generated_position_f64/generated_pose_f64"),
         ("runtime all / floor all (bound)", "runtime_all_f64/floor_all_f64"),
         ("k all / floor all (bound)", "k_all_f64/floor_all_f64"),
+        ("baseline pose / pose", "baseline_pose_f64/generated_pose_f64"),
+        ("baseline all / all", "baseline_all_f64/generated_all_f64"),
+        ("dispatch each / once", DISPATCH_PAIR),
     ];
-    let columns: Vec<&str> = names.iter().map(|n| n.0).collect();
-    table(s, &run.rows, &columns, |r, i| paired(r, names[i].1));
+    let mut columns: Vec<&str> = names.iter().map(|n| n.0).collect();
+    columns.push("dispatch ns");
+    table(s, &run.rows, &columns, |r, i| match names.get(i) {
+        Some(&(_, name)) => paired(r, name),
+        None => fmt(dispatch_ns(r)),
+    });
     let _ = writeln!(
         s,
         "\nLanes and batches, paired (per configuration: `4 scalar / lanes` is four `tip_pose` calls over one\n\
          `tip_pose_generic::<F64x4>` call on the same four configurations; `f64x4 / f32x8` is two `F64x4` calls over one\n\
-         `F32x8` call, eight configurations each side):\n"
+         `F32x8` call, eight configurations each side; `batch / columns` is `tip_pose_batch` over\n\
+         `tip_pose_batch_columns` on the same 1,024 configurations, above 1 when columns are faster; `batch / floor`\n\
+         is the batch over its lane floor, 1.0 being nothing but the sin/cos in the batch's lanes):\n"
     );
     let names = [
         ("4 scalar / lanes f64x4", "scalar4_pose_f64/lanes_pose_f64x4"),
@@ -178,6 +222,10 @@ pub fn run_sections(s: &mut String, run: &Run) {
         ("scalar loop / batch f64", "generated_batch1024_f64/batch1024_f64"),
         ("scalar loop / batch f32", "generated_batch1024_f32/batch1024_f32"),
         ("batch f64 / batch f32", "batch1024_f64/batch1024_f32"),
+        ("batch f64 / columns f64", "batch1024_f64/batch_columns1024_f64"),
+        ("batch f32 / columns f32", "batch1024_f32/batch_columns1024_f32"),
+        ("batch f64 / floor batch f64", "batch1024_f64/floor_batch1024_f64"),
+        ("batch f32 / floor batch f32", "batch1024_f32/floor_batch1024_f32"),
         ("one thread / rayon", "batch16384_f64/parallel_batch16384_f64"),
     ];
     let columns: Vec<&str> = names.iter().map(|n| n.0).collect();
@@ -226,3 +274,39 @@ const VELOCITY_PAIRS: [(&str, &str); 6] = [
     ("k J / pose + J", "k_jacobian_f64/generated_pose_and_jacobian_f64"),
     ("J then J*qd / twist", "jacobian_times_qd_f64/generated_twist_f64"),
 ];
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::read::test_row;
+
+    #[test]
+    fn issue_22_figures_have_columns_and_the_dispatch_cost_its_ns() {
+        let ns = [("generated_pose_f64", 40.0), ("baseline_pose_f64", 52.0), ("floor_batch1024_f32", 3.25)];
+        let pairs = [("baseline_all_f64/generated_all_f64", 1.3), (DISPATCH_PAIR, 1.05)];
+        let run = Run {
+            name: "plain",
+            build: "build: baseline".to_owned(),
+            dir: PathBuf::from("/somewhere/../target/criterion"),
+            rows: vec![test_row("ur5", &ns, &pairs)],
+        };
+        let mut s = String::new();
+        run_sections(&mut s, &run);
+        assert!(s.contains("From `target/criterion` (build: baseline)."), "{s}");
+        // Medians: pose beside its undispatched body; the batch floor f32 per configuration.
+        assert!(s.contains("| all-links ops | pose | baseline pose | std pose |"), "{s}");
+        assert!(s.contains("| 6/3/4 | 40 | 52 | n/a |"), "{s}");
+        assert!(s.contains("| batch f32 | batch columns f32 | floor batch f32 | scalar loop f32 |"), "{s}");
+        assert!(s.contains("| n/a | n/a | 3.25 | n/a | n/a | n/a |\n"), "{s}");
+        // Paired: the baseline pairs, the dispatch pair and its cost, (1.05 - 1) * 40 ns.
+        assert!(
+            s.contains("| baseline pose / pose | baseline all / all | dispatch each / once | dispatch ns |"),
+            "{s}"
+        );
+        assert!(s.contains("| n/a | 1.30 | 1.05 | 2.00 |\n"), "{s}");
+        assert!(
+            s.contains("| batch f64 / columns f64 | batch f32 / columns f32 | batch f64 / floor batch f64 |"),
+            "{s}"
+        );
+    }
+}

@@ -1,10 +1,11 @@
 //! Tables: the Markdown of `benches/SUMMARY.md`. This module holds the cell formats, the one
 //! table layout every section uses (a row per robot), and the summary's opening and closing
-//! prose; `fk` writes each build's sections (medians, ratios, paired ratios, velocities) and `ik`
-//! the inverse kinematics section. Figures come in as [`Row`]s and [`Ik`](crate::read::Ik) values read elsewhere.
+//! prose; `fk` writes each build's sections (medians, ratios, paired ratios, velocities),
+//! `plain_native` the comparison of the two builds, and `ik` the inverse kinematics section. Figures come in as [`Row`]s and [`Ik`](crate::read::Ik) values read elsewhere.
 
 mod fk;
 mod ik;
+mod plain_native;
 
 use std::fmt::Write as _;
 
@@ -12,6 +13,7 @@ use crate::read::Row;
 
 pub use fk::run_sections;
 pub use ik::ik_section;
+pub use plain_native::plain_against_native;
 
 /// A figure in ns: two decimals under 10, else none; `n/a` when not measured.
 pub fn fmt(x: Option<f64>) -> String {
@@ -66,14 +68,27 @@ pub fn notes() -> String {
     let _ = writeln!(
         s,
         "\n## Notes\n\n\
+         The generated functions (all but the `_generic` ones) are dispatched at run time (`kinematics::dispatch`,\n\
+         pulp: AVX-512, else AVX2 and FMA, else the build's own instruction set), so a plain x86-64 build runs this\n\
+         CPU's vector instructions; `baseline pose` and `baseline all` are the same bodies called directly\n\
+         (`tip_pose_generic::<f64>`, `link_poses_generic::<f64>`), compiled for the build's own instruction set only.\n\
          `floor` is the new trigonometry floor: our sin/cos alone, every angle of the function in one `sin_cos_many`\n\
-         call, as the generated code calls it (as many angles as the compiler counts `sin_cos` pairs); `floor std` is\n\
-         std's `sin_cos` once per angle, as code derived with `trig = \"std\"` calls it. `std pose` and `std all` are the\n\
-         same robot derived with `trig = \"std\"`. Lanes (`F64x4`, `F32x8`) evaluate `tip_pose_generic` on four or eight\n\
-         configurations per call and are shown per configuration, beside as many scalar calls on the same\n\
-         configurations; batches are `tip_pose_batch` / `tip_pose_batch_f32` (lanes inside) against the scalar loop,\n\
-         per configuration; rayon is `parallel::batch` over 16,384 configurations against `tip_pose_batch` on one\n\
-         thread.\n\
+         call, as the generated code calls it (as many angles as the compiler counts `sin_cos` pairs); our floors\n\
+         (`floor`, `floor f32`, `floor all`, `floor f64x4`, `floor f32x8` and the batches' lane floors) run inside\n\
+         `kinematics::dispatch` too, so each is the floor of what the generated code runs on this CPU. `floor std` is\n\
+         std's `sin_cos` once per angle, as code derived with `trig = \"std\"` calls it, not wrapped in a dispatch.\n\
+         `std pose` and `std all` are the same robot derived with `trig = \"std\"` (dispatched like any generated\n\
+         function). All links is `let poses = link_poses(q); black_box(&poses)`: every link's pose into the\n\
+         function's own return slot, black-boxed so no store can be skipped; one closure is the generated side of\n\
+         every all-links figure and pair (against baseline, floor, std, galaw, runtime and `k`), and the baseline and\n\
+         std bodies are timed the same way. Assigning into an array kept from call to call would cost one copy of\n\
+         the result more (the dispatched body is a call LLVM cannot see through). Lanes (`F64x4`, `F32x8`) evaluate `tip_pose_generic` on four or\n\
+         eight configurations per call inside `kinematics::dispatch`, as a user's own loop over lanes would, and are\n\
+         shown per configuration, beside as many scalar calls on the same configurations; batches are\n\
+         `tip_pose_batch` / `tip_pose_batch_f32` (lanes inside: `F64x8` / `F32x16` where the CPU has AVX-512, else\n\
+         `F64x4` / `F32x8`) and the column-wise `tip_pose_batch_columns` / `tip_pose_batch_columns_f32`, against the\n\
+         scalar loop, per configuration; rayon is `parallel::batch` over 16,384 configurations against\n\
+         `tip_pose_batch` on one thread.\n\
          `k` and galaw read URDF only: DH robots have no figures for them. `k` orders its joints its own way; its inputs\n\
          are the same values, so it does the same amount of work. galaw's code is its own generator's output for our\n\
          URDFs (`benches/galaw/regenerate.sh`, galaw 0.3.0); galaw has no mimic joints, so it gets one command per moving\n\
