@@ -22,6 +22,8 @@ pub struct Row {
     pub tip: String,
     /// Degrees of freedom.
     pub dof: usize,
+    /// The link poses `link_poses` returns (every link but the root).
+    pub links: usize,
     /// The compiler's operation counts of the tip pose (`sin_cos/mul/add`).
     pub ops: String,
     /// The same for all link poses.
@@ -188,6 +190,7 @@ pub fn read_run(root: &Path, name: &'static str, criterion: PathBuf) -> Result<O
             file: file.to_owned(),
             tip: tip.to_owned(),
             dof: tree.dof(),
+            links: tree.links().len().saturating_sub(1),
             ops: format!("{}/{}/{}", ops.sin_cos, ops.mul, ops.add),
             ops_all: format!("{}/{}/{}", ops_all.sin_cos, ops_all.mul, ops_all.add),
             ops_jacobian: format!("{}/{}/{}", ops_jacobian.sin_cos, ops_jacobian.mul, ops_jacobian.add),
@@ -300,6 +303,7 @@ pub fn test_row(group: &str, ns: &[(&'static str, f64)], paired: &[(&str, f64)])
         file: format!("{group}.urdf"),
         tip: "tool0".to_owned(),
         dof: 6,
+        links: 7,
         ops: "6/1/2".to_owned(),
         ops_all: "6/3/4".to_owned(),
         ops_jacobian: "6/5/6".to_owned(),

@@ -1,6 +1,6 @@
 //! What a measured run leaves for `bench-report` beside criterion's results in
 //! `target/criterion/`: the robot list (`kinematics-robots.tsv`: group, file, tip), the build
-//! record (`kinematics-build.tsv`: label and vector features) and the paired ratios
+//! record (`kinematics-build.tsv`: label, vector features and the level dispatch runs) and the paired ratios
 //! (`kinematics-paired.tsv`: group, pair, ratio). The report finds criterion's medians by the
 //! group and benchmark names, so those names are the interface and never change.
 
@@ -21,7 +21,10 @@ fn build_record() -> String {
     let inferred = if cfg!(target_feature = "avx2") { "native" } else { "baseline" };
     let label = std::env::var("KINEMATICS_BENCH_BUILD").unwrap_or_else(|_| inferred.to_owned());
     let on = if on.is_empty() { "sse2 only".to_owned() } else { on.join(",") };
-    format!("build\t{label}\nfeatures\t{on}\n")
+    // What `kinematics::dispatch` runs on this CPU: the generated functions' instruction set, and
+    // which lanes the batches (and their floors) take.
+    let dispatch = kinematics::dispatched_level();
+    format!("build\t{label}\nfeatures\t{on}\ndispatch\t{dispatch}\n")
 }
 
 /// The robot list (`manifest`, one `group, file, tip` line each) and the build record, for

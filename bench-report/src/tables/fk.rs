@@ -23,7 +23,8 @@ pub fn run_sections(s: &mut String, run: &Run) {
          `baseline all` are the same bodies not dispatched (`tip_pose_generic::<f64>`, `link_poses_generic::<f64>`),\n\
          compiled for the build's own instruction set (x86-64 baseline in a plain build, this CPU's in a native one).\n\
          `all links` times `let poses = link_poses(q); black_box(&poses)`. `std pose` and `std all` are the robot derived\n\
-         with `trig = \"std\"`; `runtime`, `k` and galaw are the peers, `floor ...` the trigonometry floors (see the Notes).\n"
+         with `trig = \"std\"`; `runtime`, `k` and galaw are the peers, `floor ...` the trigonometry floors (see the Notes).\n\
+         `links` is how many poses `link_poses` returns, and `all links per link` the `all links` median over it.\n"
     );
     let columns = [
         "DoF",
@@ -50,6 +51,8 @@ pub fn run_sections(s: &mut String, run: &Run) {
         "floor f32",
         "floor all",
         "floor std all",
+        "links",
+        "all links per link",
     ];
     let variants = [
         "generated_pose_f64",
@@ -78,6 +81,8 @@ pub fn run_sections(s: &mut String, run: &Run) {
         1 => r.tip.clone(),
         2 => r.ops.clone(),
         3 => r.ops_all.clone(),
+        i if i == columns.len() - 2 => r.links.to_string(),
+        i if i == columns.len() - 1 => fmt(r.ns.get("generated_all_f64").map(|ns| ns / r.links.max(1) as f64)),
         i => fmt(r.ns.get(variants[i - 4]).copied()),
     });
     let _ = writeln!(s, "\n### Lanes and batches: median ns per configuration (tip pose)\n");
