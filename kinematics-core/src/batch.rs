@@ -178,7 +178,7 @@ fn run<L, W, const N: usize, O, P, C>(
     P: LaneValue<W, Scalar = O::Scalar>,
     C: Configurations<L::Scalar, N>,
 {
-    #[cfg(all(feature = "dispatch", target_arch = "x86_64"))]
+    #[cfg(all(feature = "dispatch", target_arch = "x86_64", not(target_feature = "avx512f")))]
     {
         use pulp::Simd;
         match pulp::Arch::new() {
@@ -187,13 +187,14 @@ fn run<L, W, const N: usize, O, P, C>(
             _ => packs_from(source, out, narrow),
         }
     }
-    #[cfg(all(feature = "dispatch", not(target_arch = "x86_64")))]
+    #[cfg(all(feature = "dispatch", not(target_arch = "x86_64"), not(target_feature = "avx512f")))]
     {
         let _ = wide;
         pulp::Arch::new().dispatch(Packs::new(source, out, narrow));
     }
-    // Without dispatch, the lanes the build's own target fills.
-    #[cfg(not(feature = "dispatch"))]
+    // Without dispatch, or with a target that already has AVX-512 (nothing wider to choose), the
+    // lanes the build's own target fills.
+    #[cfg(any(not(feature = "dispatch"), target_feature = "avx512f"))]
     {
         if cfg!(target_feature = "avx512f") {
             packs_from(source, out, wide);

@@ -44,6 +44,7 @@ impl Functions {
             // for (measured). The same holds for the batches below.
             self.typed.push(quote! {
                 #[doc = #one]
+                #[inline]
                 #[allow(clippy::redundant_closure)]
                 pub fn #f(q: &[#t; #n_lit]) -> #r { #p::dispatch(#[inline(always)] || #g(q)) }
             });
