@@ -54,6 +54,8 @@ fn same<T: Debug>(a: &T, b: &T, what: &str, i: usize) {
 }
 
 /// Runs `f` under each instruction set pulp finds on this CPU (and the baseline), for `same`.
+/// `f` must be an `#[inline(always)]` closure, as the generated code passes its bodies: only then
+/// is the body compiled inside pulp's `#[target_feature]` function rather than called from it.
 fn each_level<R>(f: impl Fn() -> R + Copy) -> Vec<(&'static str, R)> {
     let mut out = vec![("baseline", f())];
     if let Some(v3) = pulp::x86::V3::try_new() {
@@ -74,7 +76,7 @@ macro_rules! check_robot {
             same(&<$ty>::link_poses(q), &<$ty>::link_poses_generic::<f64>(q), "link_poses", i);
             let q32 = q.map(|x| x as f32);
             same(&<$ty>::link_poses_f32(&q32), &<$ty>::link_poses_generic::<f32>(&q32), "link_poses_f32", i);
-            for (level, poses) in each_level(|| <$ty>::link_poses_generic::<f64>(q)) {
+            for (level, poses) in each_level(#[inline(always)] || <$ty>::link_poses_generic::<f64>(q)) {
                 same(&poses, &<$ty>::link_poses_generic::<f64>(q), level, i);
             }
             $( check_robot!(@extra $ty, q, i, $extra); )*

@@ -97,7 +97,7 @@ where
 #[inline(always)]
 pub fn batch_columns<L, W, const N: usize, O, P>(
     robot: &'static str,
-    joints: &'static [&'static str],
+    joints: &'static [&'static str; N],
     columns: [&[L::Scalar]; N],
     out: &mut [O::Scalar],
     narrow: impl Fn(&[L; N]) -> O,
@@ -109,14 +109,9 @@ where
     O: LaneValue<L>,
     P: LaneValue<W, Scalar = O::Scalar>,
 {
-    for (j, column) in columns.iter().enumerate() {
+    for (column, &joint) in columns.iter().zip(joints) {
         if column.len() != out.len() {
-            return Err(KinematicsError::WrongColumnLength {
-                robot,
-                joint: joints.get(j).copied().unwrap_or("?"),
-                expected: out.len(),
-                got: column.len(),
-            });
+            return Err(KinematicsError::WrongColumnLength { robot, joint, expected: out.len(), got: column.len() });
         }
     }
     run(Columns(columns), out, &narrow, &wide);

@@ -82,7 +82,10 @@ pub fn run_sections(s: &mut String, run: &Run) {
         2 => r.ops.clone(),
         3 => r.ops_all.clone(),
         i if i == columns.len() - 2 => r.links.to_string(),
-        i if i == columns.len() - 1 => fmt(r.ns.get("generated_all_f64").map(|ns| ns / r.links.max(1) as f64)),
+        // No link but the base: nothing to divide by, so no figure (n/a).
+        i if i == columns.len() - 1 => {
+            fmt(r.ns.get("generated_all_f64").filter(|_| r.links > 0).map(|ns| ns / r.links as f64))
+        }
         i => fmt(r.ns.get(variants[i - 4]).copied()),
     });
     let _ = writeln!(s, "\n### Lanes and batches: median ns per configuration (tip pose)\n");
