@@ -3,8 +3,10 @@
 
 use core::fmt;
 
-use super::vector::{dot, sub};
+use super::real::IkReal;
+use super::vector::dot;
 use crate::kinematics::JointLimits;
+use crate::lanes::Lanes;
 use crate::pose::Pose;
 
 /// How far a target's rotation may be from orthonormal (the largest entry of `R R^T - I`)
@@ -178,6 +180,39 @@ impl<const N: usize, const M: usize> IkSolutions<N, M> {
         }
     }
 
+    /// The branches a compiled closed form computed side by side, one per lane: lane `i`'s joint
+    /// values, flags (`1.0` for true) and the pose `reached` there (the robot's forward kinematics
+    /// of them, in the same lanes), its errors measured against `target`. The first `M` lanes are
+    /// taken, in lane order.
+    #[inline(always)]
+    pub fn from_lanes<L: Lanes<Scalar = f64> + IkReal>(
+        q: &[L; N],
+        exact: L,
+        singular: L,
+        reached: &Pose<L>,
+        target: &Pose<f64>,
+    ) -> Self {
+        let (distance2, frobenius2) = squared_differences(reached, &super::real::splat_pose(target));
+        let (position, sine) = (distance2.sqrt(), (frobenius2 * L::from_f64(0.125)).sqrt());
+        let mut out = Self::new();
+        for lane in 0..M.min(L::LANES) {
+            let mut joints = [0.0; N];
+            for (value, lanes) in joints.iter_mut().zip(q) {
+                *value = lanes.lane(lane);
+            }
+            let (position_error, rotation_error) =
+                errors_of_squares(position.lane(lane), frobenius2.lane(lane), sine.lane(lane));
+            out.push(IkSolution {
+                q: joints,
+                exact: exact.lane(lane) == 1.0,
+                singular: singular.lane(lane) == 1.0,
+                position_error,
+                rotation_error,
+            });
+        }
+        out
+    }
+
     /// The solution nearest `seed` (Euclidean distance in joint space, each angle of a joint
     /// marked in `revolute` first moved by a multiple of 2 pi to the seed's side), preferring
     /// exact solutions to least-squares ones. `None` only when there are no solutions.
@@ -246,14 +281,28 @@ impl RemEuclidTau for f64 {
 /// (`2 asin(|Ra - Rb|_F / sqrt 8)`, accurate for small angles, where the trace formula loses half
 /// the digits). Non-finite entries give infinity.
 pub fn pose_errors(a: &Pose<f64>, b: &Pose<f64>) -> (f64, f64) {
-    let d = sub(a.translation, b.translation);
-    let position = libm::sqrt(dot(d, d));
-    let mut frobenius2 = 0.0;
-    for i in 0..3 {
-        let row = sub(a.rotation[i], b.rotation[i]);
-        frobenius2 += dot(row, row);
+    let (distance2, frobenius2) = squared_differences(a, b);
+    errors_of_squares(IkReal::sqrt(distance2), frobenius2, IkReal::sqrt(frobenius2 / 8.0))
+}
+
+/// The squared distance between two poses' translations and the squared Frobenius norm of the
+/// difference of their rotations, for any scalar (lanes: every lane's at once).
+#[inline(always)]
+fn squared_differences<T: IkReal>(a: &Pose<T>, b: &Pose<T>) -> (T, T) {
+    let square = |x: T| x * x;
+    let [ax, ay, az] = a.translation;
+    let [bx, by, bz] = b.translation;
+    let distance2 = square(ax - bx) + square(ay - by) + square(az - bz);
+    let mut frobenius2 = square(a.rotation[0][0] - b.rotation[0][0]);
+    for (i, j) in [(0, 1), (0, 2), (1, 0), (1, 1), (1, 2), (2, 0), (2, 1), (2, 2)] {
+        frobenius2 = frobenius2 + square(a.rotation[i][j] - b.rotation[i][j]);
     }
-    let sine = libm::sqrt(frobenius2 / 8.0);
+    (distance2, frobenius2)
+}
+
+/// [`pose_errors`] from the distance, the squared Frobenius norm and its sine `sqrt(f^2 / 8)`.
+#[inline(always)]
+fn errors_of_squares(position: f64, frobenius2: f64, sine: f64) -> (f64, f64) {
     // For the small angles exact solutions have, the series 2 asin(s) = 2 s (1 + s^2 / 6 + ...)
     // is exact to rounding below s = 1e-4 (the next term is 3 s^4 / 40 < 1e-17 of it) and
     // costs no call.

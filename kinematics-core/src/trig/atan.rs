@@ -22,8 +22,43 @@ use super::atan_coefficients::{ATAN_F64, FRAC_PI_2_LO, FRAC_PI_4_LO, PI_LO, TAN_
 #[inline(always)]
 pub fn atan2(y: f64, x: f64) -> f64 {
     if !(x.is_finite() && y.is_finite()) {
-        return libm::atan2(y, x);
+        return atan2_slow(y, x);
     }
+    atan2_fast(y, x)
+}
+
+/// `atan2` of `N` independent pairs at once, bit for bit what [`atan2`] gives for each: every
+/// lane through the branch-free fast path (so the loop vectorises), then, in one rarely taken
+/// branch, the lanes with a non-finite argument again through libm.
+#[inline(always)]
+pub fn atan2_f64_lanes<const N: usize>(y: [f64; N], x: [f64; N]) -> [f64; N] {
+    let mut out = [0.0; N];
+    let mut all_finite = true;
+    for i in 0..N {
+        out[i] = atan2_fast(y[i], x[i]);
+        all_finite &= x[i].is_finite() & y[i].is_finite();
+    }
+    if !all_finite {
+        for i in 0..N {
+            if !(x[i].is_finite() && y[i].is_finite()) {
+                out[i] = atan2_slow(y[i], x[i]);
+            }
+        }
+    }
+    out
+}
+
+/// The non-finite cases (infinities, NaN): libm's, which follows IEEE 754 in each. Out of line
+/// and cold, so the fast path's code stays small.
+#[cold]
+#[inline(never)]
+fn atan2_slow(y: f64, x: f64) -> f64 {
+    libm::atan2(y, x)
+}
+
+/// The fast path for finite arguments: no branch, the octant and quadrant chosen by selects.
+#[inline(always)]
+fn atan2_fast(y: f64, x: f64) -> f64 {
     let (ax, ay) = (x.abs(), y.abs());
     let below = ay <= ax * TAN_PI_8;
     let above = ax <= ay * TAN_PI_8;
@@ -41,8 +76,10 @@ pub fn atan2(y: f64, x: f64) -> f64 {
     } else {
         (core::f64::consts::FRAC_PI_4, FRAC_PI_4_LO)
     };
-    // Both zero: the angle of the origin is 0 (or pi, by the signs below).
-    let u = if den > 0.0 { num / den } else { 0.0 };
+    // Both zero: the angle of the origin is 0 (or pi, by the signs below). The quotient is
+    // computed either way and discarded there (a select, not a branch).
+    let quotient = num / den;
+    let u = if den > 0.0 { quotient } else { 0.0 };
     let z = u * u;
     let mut poly = ATAN_F64[ATAN_F64.len() - 1];
     for &c in ATAN_F64.iter().rev().skip(1) {
@@ -118,6 +155,35 @@ mod tests {
             (ratio * x.abs(), x)
         }));
         assert!(d <= 2, "{d} ulp at {at:?}");
+    }
+
+    #[test]
+    fn lanes_are_the_scalar_bit_for_bit() {
+        use super::atan2_f64_lanes;
+        let mut rng = Uniform(4);
+        let specials = [0.0, -0.0, 1.0, -1.0, 1e-300, -1e300, f64::INFINITY, f64::NEG_INFINITY, f64::NAN];
+        for round in 0..20_000 {
+            let mut y = [0.0; 8];
+            let mut x = [0.0; 8];
+            for i in 0..8 {
+                // Every tenth round mixes special values into random lanes.
+                let pick = |r: f64| if round % 10 == 0 && r < 0.3 { specials[(r * 30.0) as usize % 9] } else { 0.0 };
+                let (ry, rx) = (rng.next(), rng.next());
+                y[i] = 10f64.powf(8.0 * rng.next() - 4.0) * (2.0 * rng.next() - 1.0) + pick(ry);
+                x[i] = 10f64.powf(8.0 * rng.next() - 4.0) * (2.0 * rng.next() - 1.0) + pick(rx);
+            }
+            let lanes = atan2_f64_lanes(y, x);
+            for i in 0..8 {
+                let scalar = atan2(y[i], x[i]);
+                assert!(
+                    lanes[i].to_bits() == scalar.to_bits() || (lanes[i].is_nan() && scalar.is_nan()),
+                    "lane {i}: atan2({}, {}) = {} in lanes, {scalar} alone",
+                    y[i],
+                    x[i],
+                    lanes[i]
+                );
+            }
+        }
     }
 
     #[test]

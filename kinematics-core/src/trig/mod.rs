@@ -62,7 +62,7 @@ mod kernel;
 #[cfg(test)]
 mod tests;
 
-pub use atan::atan2;
+pub use atan::{atan2, atan2_f64_lanes};
 pub use kernel::FAST_BOUND;
 use kernel::Kernel;
 
