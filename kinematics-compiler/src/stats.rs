@@ -8,7 +8,8 @@ use crate::symbolic::graph::{ExprGraph, ExprId, Node};
 /// What evaluating a set of expressions costs at run time.
 ///
 /// Multiplications include those by constants; a negation is free (it folds into the sum that uses
-/// it); additions include subtractions and the angle sums such as `q2 + q3`.
+/// it); additions include subtractions and the angle sums such as `q2 + q3`. Divisions, square
+/// roots, `atan2` calls and selects appear only in inverse kinematics.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct OpCount {
     /// Distinct angles whose sine or cosine is needed: one `sin_cos` call each.
@@ -17,9 +18,30 @@ pub struct OpCount {
     pub mul: usize,
     /// Additions and subtractions.
     pub add: usize,
+    /// Divisions.
+    pub div: usize,
+    /// Square roots.
+    pub sqrt: usize,
+    /// `atan2` calls.
+    pub atan2: usize,
+    /// Selects (`if_positive`).
+    pub select: usize,
 }
 
 impl OpCount {
+    /// Counts one arithmetic node (sines and cosines count per angle, by the caller).
+    fn count(&mut self, node: Node) {
+        match node {
+            Node::Mul(..) => self.mul += 1,
+            Node::Add(..) => self.add += 1,
+            Node::Div(..) => self.div += 1,
+            Node::Sqrt(_) => self.sqrt += 1,
+            Node::Atan2(..) => self.atan2 += 1,
+            Node::IfPositive(..) => self.select += 1,
+            Node::Const(_) | Node::Var(_) | Node::Input(_) | Node::Neg(_) | Node::Sin(_) | Node::Cos(_) => {}
+        }
+    }
+
     /// Counts the nodes reachable from `outputs`.
     pub fn of(g: &ExprGraph, outputs: impl IntoIterator<Item = ExprId>) -> Self {
         let reachable = reachable(g, outputs);
@@ -27,12 +49,10 @@ impl OpCount {
         let mut angles = BTreeSet::new();
         for &id in &reachable {
             match g.node(id) {
-                Node::Mul(..) => count.mul += 1,
-                Node::Add(..) => count.add += 1,
                 Node::Sin(a) | Node::Cos(a) => {
                     angles.insert(a);
                 }
-                _ => {}
+                node => count.count(node),
             }
         }
         count.sin_cos = angles.len();
@@ -95,22 +115,16 @@ impl Reached {
                 continue;
             }
             match g.node(id) {
-                Node::Mul(a, b) => {
-                    count.mul += 1;
-                    stack.extend([a, b]);
-                }
-                Node::Add(a, b) => {
-                    count.add += 1;
-                    stack.extend([a, b]);
-                }
                 Node::Sin(a) | Node::Cos(a) => {
                     if !self.angles.contains(&a) && new_angle(a) {
                         count.sin_cos += 1;
                     }
                     stack.push(a);
                 }
-                Node::Neg(a) => stack.push(a),
-                Node::Const(_) | Node::Var(_) => {}
+                node => {
+                    count.count(node);
+                    stack.extend(node.operands());
+                }
             }
         }
         count
@@ -133,17 +147,54 @@ where
 /// 20 ns against well under a nanosecond for a multiply-add on the machines we measured.
 pub const SIN_COS_WEIGHT: usize = 40;
 
+/// What a division or a square root costs against a multiply-add (their latency, about four
+/// times a multiplication's on the machines we measured).
+pub const ROOT_WEIGHT: usize = 4;
+
+/// What one `atan2` costs against a multiply-add (ours: one division and a polynomial of 11
+/// terms).
+pub const ATAN2_WEIGHT: usize = 20;
+
 impl OpCount {
     /// One number to compare forms by: sines and cosines weighted by `SIN_COS_WEIGHT`, plus every
     /// multiplication and addition.
     pub fn weighted(&self) -> usize {
-        self.sin_cos * SIN_COS_WEIGHT + self.mul + self.add
+        self.sin_cos * SIN_COS_WEIGHT
+            + self.mul
+            + self.add
+            + ROOT_WEIGHT * (self.div + self.sqrt)
+            + self.select
+            + ATAN2_WEIGHT * self.atan2
+    }
+}
+
+/// Counts added field by field (the cost of two computations that share nothing).
+impl std::ops::Add for OpCount {
+    type Output = OpCount;
+    fn add(self, other: OpCount) -> OpCount {
+        OpCount {
+            sin_cos: self.sin_cos + other.sin_cos,
+            mul: self.mul + other.mul,
+            add: self.add + other.add,
+            div: self.div + other.div,
+            sqrt: self.sqrt + other.sqrt,
+            atan2: self.atan2 + other.atan2,
+            select: self.select + other.select,
+        }
     }
 }
 
 impl fmt::Display for OpCount {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{} sin/cos pairs, {} multiplications, {} additions", self.sin_cos, self.mul, self.add)
+        write!(f, "{} sin/cos pairs, {} multiplications, {} additions", self.sin_cos, self.mul, self.add)?;
+        for (count, what) in
+            [(self.div, "divisions"), (self.sqrt, "square roots"), (self.atan2, "atan2"), (self.select, "selects")]
+        {
+            if count > 0 {
+                write!(f, ", {count} {what}")?;
+            }
+        }
+        Ok(())
     }
 }
 
@@ -155,14 +206,7 @@ pub fn reachable(g: &ExprGraph, outputs: impl IntoIterator<Item = ExprId>) -> Ve
         if std::mem::replace(&mut seen[id.index()], true) {
             continue;
         }
-        match g.node(id) {
-            Node::Sin(a) | Node::Cos(a) | Node::Neg(a) => stack.push(a),
-            Node::Add(a, b) | Node::Mul(a, b) => {
-                stack.push(a);
-                stack.push(b);
-            }
-            Node::Const(_) | Node::Var(_) => {}
-        }
+        stack.extend(g.node(id).operands());
     }
     seen.iter().enumerate().filter(|(_, s)| **s).map(|(i, _)| g.id(i)).collect()
 }
@@ -181,7 +225,7 @@ mod tests {
         let sum = g.add(ab, c);
         let (s, co) = (g.sin(a), g.cos(a));
         let counts = marginal_counts(&g, [vec![ab, s], vec![sum, co], vec![ab]]);
-        let count = |sin_cos, mul, add| OpCount { sin_cos, mul, add };
+        let count = |sin_cos, mul, add| OpCount { sin_cos, mul, add, ..OpCount::default() };
         assert_eq!(counts, vec![count(1, 1, 0), count(0, 0, 1), count(0, 0, 0)]);
         assert_eq!(OpCount::of(&g, [ab, s, sum, co]), count(1, 1, 1));
         // What a group would add is not recorded until it is added.

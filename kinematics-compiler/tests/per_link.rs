@@ -14,11 +14,7 @@ fn all_links(file: &str) -> (kinematics_model::KinematicTree, Compiled) {
 }
 
 fn sum(counts: &[OpCount]) -> OpCount {
-    counts.iter().fold(OpCount::default(), |a, c| OpCount {
-        sin_cos: a.sin_cos + c.sin_cos,
-        mul: a.mul + c.mul,
-        add: a.add + c.add,
-    })
+    counts.iter().fold(OpCount::default(), |a, c| a + *c)
 }
 
 #[test]

@@ -62,6 +62,8 @@ struct Writer<'a> {
     /// Entries of `q` and of `qd`: variables from `q.0` on are joint rates (`qd1`, ...), from
     /// `q.0 + q.1` on floating joints' rotations (`rot1_11`, ...).
     sizes: (usize, usize),
+    /// The names of the inputs ([`Node::Input`]), by index.
+    inputs: &'a [Ident],
 }
 
 /// The name of the graph's variable `i` (`sizes`: the lengths of `q` and `qd`): a joint position
@@ -162,16 +164,49 @@ impl Writer<'_> {
                 punct(out, '*');
                 self.operand(b, out);
             }
+            Node::Input(i) => out.append(self.input(i)),
+            Node::Div(a, b) => {
+                self.operand(a, out);
+                punct(out, '/');
+                let wrap = self.inline(b)
+                    && matches!(g.node(b), Node::Add(..) | Node::Neg(..) | Node::Mul(..) | Node::Div(..));
+                self.wrapped(b, wrap, out);
+            }
+            Node::Sqrt(a) => self.call("sqrt", &[a], out),
+            Node::Atan2(y, x) => self.call("atan2", &[y, x], out),
+            Node::IfPositive(c, a, b) => self.call("if_positive", &[c, a, b], out),
         }
+    }
+
+    /// The name of input `i`.
+    #[allow(clippy::expect_used, reason = "an invariant of the caller, named in the message")]
+    fn input(&self, i: u32) -> Ident {
+        // Whoever builds a graph with inputs names them all (`straight_line`'s `inputs`).
+        self.inputs.get(i as usize).cloned().expect("every input of an emitted graph has a name")
+    }
+
+    /// `T::name(a, b)`: a function of `IkReal`, which the bound on `T` brings.
+    fn call(&self, name: &str, operands: &[ExprId], out: &mut TokenStream) {
+        out.extend(quote!(T::));
+        out.append(ident(name));
+        let mut arguments = TokenStream::new();
+        for (k, &a) in operands.iter().enumerate() {
+            if k > 0 {
+                punct(&mut arguments, ',');
+            }
+            self.expr(a, &mut arguments);
+        }
+        group(out, Delimiter::Parenthesis, arguments);
     }
 
     fn inline(&self, id: ExprId) -> bool {
         !self.schedule.bound.contains_key(&id)
     }
 
-    /// An operand of `*` or unary `-`: inline sums and negations get parentheses.
+    /// An operand of `*`, `/` or unary `-`: inline sums, negations and quotients get parentheses
+    /// (`a * (b / c)` is not `a * b / c`, which Rust reads as `(a * b) / c`).
     fn operand(&self, id: ExprId, out: &mut TokenStream) {
-        let wrap = self.inline(id) && matches!(self.g.node(id), Node::Add(..) | Node::Neg(..));
+        let wrap = self.inline(id) && matches!(self.g.node(id), Node::Add(..) | Node::Neg(..) | Node::Div(..));
         self.wrapped(id, wrap, out);
     }
 
@@ -322,7 +357,7 @@ pub fn emit_function(compiled: &Compiled, options: &EmitOptions) -> TokenStream 
     let schedule = Schedule::new(g, &outputs);
     let private = &options.private;
     let (n, nv) = (compiled.dof(), compiled.velocity_dof());
-    let w = Writer { g, schedule: &schedule, private, sizes: (n, nv) };
+    let w = Writer { g, schedule: &schedule, private, sizes: (n, nv), inputs: &[] };
     let n_lit = Literal::usize_unsuffixed(n);
     let nv_lit = Literal::usize_unsuffixed(nv);
     let twist = compiled.velocity.is_some_and(|v| v.form == VelocityForm::Twist);
@@ -399,6 +434,38 @@ pub fn emit_function(compiled: &Compiled, options: &EmitOptions) -> TokenStream 
             #body
         }
     }
+}
+
+/// Straight-line code for a graph of inputs (no joint variables): [`straight_line`]'s result.
+#[derive(Debug, Clone)]
+pub struct StraightLine {
+    /// The `let` statements, in order.
+    pub statements: TokenStream,
+    /// Each output's expression (a name, or written out), in the order asked.
+    pub outputs: Vec<TokenStream>,
+    /// The inputs the code reads.
+    pub used_inputs: std::collections::BTreeSet<usize>,
+}
+
+/// The statements computing `outputs` of `g`, scheduled as every generated function is (shared
+/// nodes bound once, nothing nested deeper than [`INLINE_DEPTH_LIMIT`](super::INLINE_DEPTH_LIMIT)),
+/// with input `i` read from the variable `inputs[i]`, for the caller to wrap in a function whose
+/// scalar type is `T`. Square roots, `atan2` and selects are `T::sqrt`, `T::atan2` and
+/// `T::if_positive` (`IkReal`'s), so `T` must be bound by it.
+pub fn straight_line(g: &ExprGraph, outputs: &[ExprId], inputs: &[Ident], private: &TokenStream) -> StraightLine {
+    let schedule = Schedule::new(g, outputs);
+    let w = Writer { g, schedule: &schedule, private, sizes: (0, 0), inputs };
+    let mut statements = TokenStream::new();
+    w.items(Trig::Fast, &mut statements);
+    let outputs = outputs
+        .iter()
+        .map(|&id| {
+            let mut value = TokenStream::new();
+            w.expr(id, &mut value);
+            value
+        })
+        .collect();
+    StraightLine { statements, outputs, used_inputs: schedule.used_inputs.clone() }
 }
 
 /// What one frame's value is made of: its pose (or position), its velocity, or both.

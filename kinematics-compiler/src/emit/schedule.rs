@@ -47,6 +47,8 @@ pub struct Schedule {
     pub names: Names,
     /// Joint variables that are used.
     pub used_vars: BTreeSet<usize>,
+    /// Inputs ([`Node::Input`]) that are used.
+    pub used_inputs: BTreeSet<usize>,
     /// Angles whose sine is used.
     pub sines: BTreeSet<ExprId>,
     /// Angles whose cosine is used.
@@ -67,12 +69,11 @@ impl Schedule {
                         uses[a.index()] += 1;
                     }
                 }
-                Node::Neg(a) => uses[a.index()] += 1,
-                Node::Add(a, b) | Node::Mul(a, b) => {
-                    uses[a.index()] += 1;
-                    uses[b.index()] += 1;
+                node => {
+                    for a in node.operands() {
+                        uses[a.index()] += 1;
+                    }
                 }
-                Node::Const(_) | Node::Var(_) => {}
             }
         }
         for &o in outputs {
@@ -101,6 +102,7 @@ impl Schedule {
         let bind = bind_for_depth(g, &nodes, &uses);
         let mut bound = BTreeMap::new();
         let mut used_vars = BTreeSet::new();
+        let mut used_inputs = BTreeSet::new();
         let mut emitted_angles = BTreeSet::new();
         let (mut sines, mut cosines) = (BTreeSet::new(), BTreeSet::new());
         let (mut before_calls, mut calls, mut after_calls) = (Vec::new(), Vec::new(), Vec::new());
@@ -109,13 +111,16 @@ impl Schedule {
                 Node::Var(i) => {
                     used_vars.insert(i as usize);
                 }
+                Node::Input(i) => {
+                    used_inputs.insert(i as usize);
+                }
                 Node::Sin(a) | Node::Cos(a) => {
                     if matches!(g.node(id), Node::Sin(_)) { &mut sines } else { &mut cosines }.insert(a);
                     if emitted_angles.insert(a) {
                         calls.push(Item::SinCos(a));
                     }
                 }
-                Node::Add(..) | Node::Mul(..) if bind[id.index()] => {
+                _ if bind[id.index()] => {
                     if feeds_angle[id.index()] { &mut before_calls } else { &mut after_calls }.push(id);
                 }
                 _ => {}
@@ -130,7 +135,7 @@ impl Schedule {
         let before_calls: Vec<Item> = before_calls.into_iter().map(&mut bind).collect();
         let after_calls: Vec<Item> = after_calls.into_iter().map(&mut bind).collect();
         let items = [before_calls, calls, after_calls].concat();
-        Schedule { items, bound, names, used_vars, sines, cosines }
+        Schedule { items, bound, names, used_vars, used_inputs, sines, cosines }
     }
 }
 
@@ -151,10 +156,12 @@ fn bind_for_depth(g: &ExprGraph, nodes: &[ExprId], uses: &[usize]) -> Vec<bool> 
         let i = id.index();
         depth[i] = match g.node(id) {
             Node::Const(_) => 3,
-            Node::Var(_) | Node::Sin(_) | Node::Cos(_) => 1,
+            Node::Var(_) | Node::Input(_) | Node::Sin(_) | Node::Cos(_) => 1,
             Node::Neg(a) => 2 + depth[a.index()],
-            Node::Add(a, b) | Node::Mul(a, b) => {
-                let inline = 2 + depth[a.index()].max(depth[b.index()]);
+            // A sum, product or quotient (an operator, maybe parentheses), or a call (`T::sqrt(..)`:
+            // the call and its argument list).
+            node => {
+                let inline = 2 + node.operands().map(|a| depth[a.index()]).max().unwrap_or(0);
                 bind[i] = uses[i] >= 2 || inline > INLINE_DEPTH_LIMIT;
                 if bind[i] { 1 } else { inline }
             }

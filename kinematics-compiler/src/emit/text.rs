@@ -56,9 +56,7 @@ pub fn latex_listing(g: &ExprGraph, names: &Names, outputs: &[ExprId]) -> Listin
 /// operand writes the operand under the negation, as a subtraction.
 fn operands(g: &ExprGraph, id: ExprId) -> Vec<ExprId> {
     match g.node(id) {
-        Node::Const(_) | Node::Var(_) | Node::Sin(_) | Node::Cos(_) => Vec::new(),
-        Node::Neg(a) => vec![a],
-        Node::Mul(a, b) => vec![a, b],
+        Node::Sin(_) | Node::Cos(_) => Vec::new(),
         Node::Add(a, b) => {
             let (na, ia) = g.unneg(a);
             let (nb, ib) = g.unneg(b);
@@ -68,6 +66,7 @@ fn operands(g: &ExprGraph, id: ExprId) -> Vec<ExprId> {
                 _ => vec![a, b],
             }
         }
+        node => node.operands().collect(),
     }
 }
 
@@ -102,7 +101,8 @@ fn listing(g: &ExprGraph, names: &Names, outputs: &[ExprId], style: Style) -> Li
         }
         let id = g.id(index);
         length[index] = measure.length(id, &length);
-        let compound = matches!(g.node(id), Node::Neg(_) | Node::Add(..) | Node::Mul(..));
+        let compound =
+            !matches!(g.node(id), Node::Const(_) | Node::Var(_) | Node::Input(_) | Node::Sin(_) | Node::Cos(_));
         if compound && uses[index] > 1 && length[index] > INLINE_BUDGET {
             measure.temporary[index] = Some(format!("t{}", chosen.len() + 1));
             chosen.push(id);
@@ -211,6 +211,23 @@ impl<'a> Writer<'a> {
                 });
                 self.factor(out, b);
             }
+            Node::Input(i) => out.push_str(&input(i, style)),
+            Node::Div(a, b) => {
+                self.factor(out, a);
+                out.push('/');
+                self.wrapped(out, b, self.wraps_divisor(b));
+            }
+            Node::Sqrt(_) | Node::Atan2(..) | Node::IfPositive(..) => {
+                let node = g.node(id);
+                out.push_str(call(node, style).0);
+                for (k, operand) in node.operands().enumerate() {
+                    if k > 0 {
+                        out.push_str(", ");
+                    }
+                    self.push(out, operand);
+                }
+                out.push_str(call(node, style).1);
+            }
         }
     }
 
@@ -248,7 +265,23 @@ impl<'a> Writer<'a> {
                 };
                 factor(a).saturating_add(join).saturating_add(factor(b))
             }
+            Node::Input(i) => input(i, self.style).len(),
+            Node::Div(a, b) => {
+                let divisor = operand(b).saturating_add(if self.wraps_divisor(b) { parens } else { 0 });
+                factor(a).saturating_add(1).saturating_add(divisor)
+            }
+            node @ (Node::Sqrt(_) | Node::Atan2(..) | Node::IfPositive(..)) => {
+                let (open, close) = call(node, self.style);
+                let commas = 2 * node.operands().count().saturating_sub(1);
+                node.operands().fold(open.len() + close.len() + commas, |total, x| total.saturating_add(operand(x)))
+            }
         }
+    }
+
+    /// Whether a divisor gets parentheses: what a factor does, and products and quotients too.
+    fn wraps_divisor(&self, id: ExprId) -> bool {
+        self.wraps_factor(id)
+            || (self.temporary[id.index()].is_none() && matches!(self.g.node(id), Node::Mul(..) | Node::Div(..)))
     }
 
     /// Whether an operand of a product or negation gets parentheses: sums and negative numbers do
@@ -290,6 +323,26 @@ impl<'a> Writer<'a> {
             Style::Text => ")",
             Style::Latex => "\\right)",
         });
+    }
+}
+
+/// An input's name: `in0`, `\mathrm{in}_{0}`.
+fn input(index: u32, style: Style) -> String {
+    match style {
+        Style::Text => format!("in{index}"),
+        Style::Latex => format!("\\mathrm{{in}}_{{{index}}}"),
+    }
+}
+
+/// What opens and closes a function call's text (its operands between them, comma-separated).
+fn call(node: Node, style: Style) -> (&'static str, &'static str) {
+    match (node, style) {
+        (Node::Sqrt(_), Style::Text) => ("sqrt(", ")"),
+        (Node::Sqrt(_), Style::Latex) => ("\\sqrt{", "}"),
+        (Node::Atan2(..), Style::Text) => ("atan2(", ")"),
+        (Node::Atan2(..), Style::Latex) => ("\\operatorname{atan2}\\left(", "\\right)"),
+        (_, Style::Text) => ("if_positive(", ")"),
+        (_, Style::Latex) => ("\\operatorname{if}_{>0}\\left(", "\\right)"),
     }
 }
 

@@ -1,13 +1,78 @@
-//! The inverse kinematics functions of a robot with a closed-form plan: the family's solver
-//! called with the plan's geometry as a constant (so the optimiser folds it into the body), every
-//! solution measured with the robot's generated forward kinematics, and the nearest and
-//! within-limits forms.
+//! The inverse kinematics functions of a robot with a closed-form plan: for the families
+//! composed over the expression graph ([`IkBody`]), its straight-line body evaluated with the
+//! eight branches side by side in the lanes of `F64x8`; for the others, the run time's family
+//! solver called with the plan's geometry as a constant (so the optimiser folds it into the
+//! body). Either way every solution is measured with the robot's generated forward kinematics,
+//! and the nearest and within-limits forms follow.
 
-use proc_macro2::{Literal, TokenStream};
+use proc_macro2::{Ident, Literal, Span, TokenStream};
 use quote::{format_ident, quote};
 
 use super::classify::{IkGeometry, IkPlan};
+use super::closed_form::{FIRST_SIGN, IkBody};
+use crate::emit::straight_line;
 use crate::robot::number;
+
+/// The name of the generic body of a compiled closed form (one branch per evaluation).
+pub const BRANCH_BODY: &str = "generic_tip_ik_branch";
+
+/// The body's inputs as the generated code names them: `r11 .. r33`, `px, py, pz`, `sign1 ..
+/// sign3`.
+fn input_names() -> Vec<Ident> {
+    let mut names: Vec<Ident> = (0..9usize).map(|k| format_ident!("r{}{}", k / 3 + 1, k % 3 + 1)).collect();
+    names.extend(["px", "py", "pz"].map(|n| Ident::new(n, Span::call_site())));
+    names.extend((1..=3usize).map(|k| format_ident!("sign{k}")));
+    names
+}
+
+/// The generic body of `body`: one branch of the closed form, for any `IkReal` scalar, the
+/// branch picked by `signs`.
+pub fn emit_branch_body(body: &IkBody, private: &TokenStream, doc: &str) -> TokenStream {
+    let p = private;
+    let names = input_names();
+    let line = straight_line(body.graph(), &body.outputs(), &names, p);
+    let bind = |k: usize| {
+        let name = &names[k];
+        if line.used_inputs.contains(&k) { quote!(#name) } else { quote!(_) }
+    };
+    let rows = (0..3).map(|i| {
+        let entries = (0..3).map(|j| bind(3 * i + j));
+        quote!([#(#entries),*])
+    });
+    let translation = (9..12).map(bind);
+    let signs = (FIRST_SIGN..FIRST_SIGN + 3).map(bind);
+    let statements = &line.statements;
+    let dof = body.dof();
+    let q = &line.outputs[..dof];
+    let (exact, singular) = (&line.outputs[dof], &line.outputs[dof + 1]);
+    let n = Literal::usize_unsuffixed(dof);
+    let name = Ident::new(BRANCH_BODY, Span::call_site());
+    let cost = format!(" Cost per branch: {}.", body.op_count());
+    quote! {
+        #[doc = #doc]
+        #[doc = ""]
+        #[doc = #cost]
+        #[allow(clippy::inline_always)]
+        #[inline(always)]
+        #[allow(clippy::approx_constant)] // a robot's own decimals may resemble pi; they are kept as given
+        pub fn #name<T: #p::ik::IkReal>(target: &#p::Pose<T>, signs: &[T; 3]) -> ([T; #n], T, T) {
+            let [#(#rows),*] = target.rotation;
+            let [#(#translation),*] = target.translation;
+            let [#(#signs),*] = *signs;
+            #statements
+            ([#(#q),*], #exact, #singular)
+        }
+    }
+}
+
+/// What [`emit_ik`] adds: a generic body (for a composed family) and the items of the type's
+/// `impl`.
+pub struct IkItems {
+    /// The generic body, when the family is composed over the graph.
+    pub body: Option<TokenStream>,
+    /// The constants and functions on the type.
+    pub typed: TokenStream,
+}
 
 fn vector(v: &[f64; 3]) -> TokenStream {
     let [x, y, z] = v.map(number);
@@ -18,8 +83,9 @@ fn vector(v: &[f64; 3]) -> TokenStream {
 /// names the generic function computing the tip's pose, `dof` is the length of `q` and
 /// `revolute` says which of its entries are angles (moved by whole turns into limits or toward a
 /// seed).
-pub fn emit_ik(plan: &IkPlan, private: &TokenStream, forward: &TokenStream, revolute: &[bool]) -> TokenStream {
+pub fn emit_ik(plan: &IkPlan, private: &TokenStream, forward: &TokenStream, revolute: &[bool]) -> IkItems {
     let p = private;
+    let compiled = IkBody::of(plan);
     let family = plan.family.name();
     let capacity = Literal::usize_unsuffixed(plan.family.max_solutions());
     let (base, tip) = (&plan.base, &plan.tip);
@@ -129,7 +195,46 @@ pub fn emit_ik(plan: &IkPlan, private: &TokenStream, forward: &TokenStream, revo
                 .to_owned()
         }
     };
-    quote! {
+    let branch_doc = format!(
+        "One branch of the closed-form inverse kinematics of `{tip}` in `{base}` ({family}), for any `IkReal` \
+         scalar: the joint values, then `1` or `0` for whether every equation had a real solution (else the \
+         values are the least-squares best) and whether some joint was free (a singularity). `signs` picks the \
+         branch (`+1` or `-1` for each of the three choices, the first outermost: `kinematics::ik::branch_signs`); \
+         with `F64x8` and `kinematics::ik::BRANCH_SIGNS_8` every branch at once, one per lane, in the order of \
+         [`Self::tip_ik`]. The target must be a pose (see [`Self::tip_ik`]); nothing is checked here."
+    );
+    let (body, solve_and_measure, branch_fn) = match &compiled {
+        Some(body) => {
+            let g = Ident::new(BRANCH_BODY, Span::call_site());
+            (
+                Some(emit_branch_body(body, p, &branch_doc)),
+                quote! {
+                    // The eight branches side by side, one per lane, and their poses the same way.
+                    let lanes = #p::ik::splat_pose::<#p::F64x8>(target);
+                    let (q, exact, singular) = #g(&lanes, &#p::ik::BRANCH_SIGNS_8);
+                    let reached = #forward(&q);
+                    #p::ik::IkSolutions::from_lanes(&q, exact, singular, &reached, target)
+                },
+                quote! {
+                    #[doc = #branch_doc]
+                    #[inline]
+                    pub fn tip_ik_branch_generic<S: #p::ik::IkReal>(target: &#p::Pose<S>, signs: &[S; 3]) -> ([S; #n], S, S) {
+                        #g(target, signs)
+                    }
+                },
+            )
+        }
+        None => (
+            None,
+            quote! {
+                let mut solutions = #solve;
+                solutions.measure(target, #[inline(always)] |q| #forward(q));
+                solutions
+            },
+            quote!(),
+        ),
+    };
+    let typed = quote! {
         #[doc = #doc_family]
         pub const IK_FAMILY: &'static str = #family;
 
@@ -145,12 +250,10 @@ pub fn emit_ik(plan: &IkPlan, private: &TokenStream, forward: &TokenStream, revo
             #free_check
             // Dispatched (`__private::dispatch`): the measure's forward kinematics runs with the
             // widest instruction set the CPU has.
-            ::core::result::Result::Ok(#p::dispatch(#[inline(always)] || {
-                let mut solutions = #solve;
-                solutions.measure(target, #[inline(always)] |q| #forward(q));
-                solutions
-            }))
+            ::core::result::Result::Ok(#p::dispatch(#[inline(always)] || { #solve_and_measure }))
         }
+
+        #branch_fn
 
         /// The solutions of [`Self::tip_ik`] inside `JOINT_LIMITS`, each angle moved by a whole
         /// turn into its limits where that fits.
@@ -165,7 +268,8 @@ pub fn emit_ik(plan: &IkPlan, private: &TokenStream, forward: &TokenStream, revo
             #p::ik::check_seed(seed)?;
             ::core::result::Result::Ok(Self::tip_ik(target #nearest_free)?.nearest(seed, &#mask))
         }
-    }
+    };
+    IkItems { body, typed }
 }
 
 /// The numeric solver's functions (inside the robot's `impl`): Levenberg-Marquardt on

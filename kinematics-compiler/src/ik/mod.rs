@@ -5,6 +5,7 @@
 //! constants).
 
 pub mod classify;
+pub mod closed_form;
 pub mod emit;
 pub mod geometry;
 
@@ -12,3 +13,4 @@ pub use classify::{
     FreeJoint, IkFamily, IkGeometry, IkPlan, MEET_TOLERANCE, PARALLEL_TOLERANCE, PlanarGeometry, SixGeometry, classify,
     classify_with,
 };
+pub use closed_form::IkBody;

@@ -23,7 +23,9 @@ pub(super) fn ik(cx: &Context<'_>, out: &mut Functions) -> Result<(), CompileErr
         let plan = crate::ik::classify_with(tree, base, tip, free.as_deref())?;
         let revolute: Vec<bool> =
             tree.dof_joints().iter().map(|&j| tree.joint(j).kind != JointKind::Prismatic).collect();
-        out.typed.push(crate::ik::emit::emit_ik(&plan, p, &quote!(generic_tip_poses), &revolute));
+        let items = crate::ik::emit::emit_ik(&plan, p, &quote!(generic_tip_poses), &revolute);
+        out.generic.extend(items.body);
+        out.typed.push(items.typed);
     }
     // The numeric solver steps on the pose and Jacobian together: the velocities' own
     // function when they are emitted, otherwise one for it.

@@ -66,7 +66,7 @@ fn linear(g: &ExprGraph, id: ExprId) -> Option<Linear> {
                 }
                 _ => return None,
             },
-            Node::Sin(_) | Node::Cos(_) => return None,
+            _ => return None,
         }
     }
     let terms = coefficients.into_iter().filter(|&(_, k)| k != 0.0).map(|(i, k)| (i, k.to_bits())).collect();
@@ -211,21 +211,9 @@ fn derive_frames(g: &mut ExprGraph, frames: &mut [SymTransform], extra: &mut [Ex
     let mut new: BTreeMap<ExprId, ExprId> = BTreeMap::new();
     for &id in &nodes {
         let rewritten = match g.node(id) {
-            Node::Const(_) | Node::Var(_) => id,
             Node::Sin(a) => derived.get(&a).map_or(id, |&(s, _)| s),
             Node::Cos(a) => derived.get(&a).map_or(id, |&(_, c)| c),
-            Node::Neg(a) => {
-                let a = new[&a];
-                g.neg(a)
-            }
-            Node::Add(a, b) => {
-                let (a, b) = (new[&a], new[&b]);
-                g.add(a, b)
-            }
-            Node::Mul(a, b) => {
-                let (a, b) = (new[&a], new[&b]);
-                g.mul(a, b)
-            }
+            node => g.rebuild(node, |a| new[&a]),
         };
         new.insert(id, rewritten);
     }

@@ -46,18 +46,9 @@ fn factor_common(g: &mut ExprGraph, outputs: &[ExprId]) -> Vec<ExprId> {
     // The user of each node (meaningful for nodes used once).
     let mut parent: Vec<Option<ExprId>> = vec![None; g.len()];
     for &id in &nodes {
-        match g.node(id) {
-            Node::Sin(a) | Node::Cos(a) | Node::Neg(a) => {
-                uses[a.index()] += 1;
-                parent[a.index()] = Some(id);
-            }
-            Node::Add(a, b) | Node::Mul(a, b) => {
-                uses[a.index()] += 1;
-                uses[b.index()] += 1;
-                parent[a.index()] = Some(id);
-                parent[b.index()] = Some(id);
-            }
-            Node::Const(_) | Node::Var(_) => {}
+        for a in g.node(id).operands() {
+            uses[a.index()] += 1;
+            parent[a.index()] = Some(id);
         }
     }
     for &o in outputs {
@@ -88,28 +79,12 @@ fn factor_common(g: &mut ExprGraph, outputs: &[ExprId]) -> Vec<ExprId> {
             continue;
         }
         let rewritten = match g.node(id) {
-            Node::Const(_) | Node::Var(_) => id,
-            Node::Sin(a) => {
-                let a = new[&a];
-                g.sin(a)
-            }
-            Node::Cos(a) => {
-                let a = new[&a];
-                g.cos(a)
-            }
-            Node::Neg(a) => {
-                let a = new[&a];
-                g.neg(a)
-            }
-            Node::Mul(a, b) => {
-                let (a, b) = (new[&a], new[&b]);
-                g.mul(a, b)
-            }
             Node::Add(..) => {
                 let mut terms = Vec::new();
                 flatten(g, id, false, &uses, &new, &mut terms, true);
                 rebuild(g, terms, &uses)
             }
+            node => g.rebuild(node, |a| new[&a]),
         };
         new.insert(id, rewritten);
     }

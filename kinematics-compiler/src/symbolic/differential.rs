@@ -430,12 +430,7 @@ fn collect_vars(g: &ExprGraph, id: ExprId, out: &mut Vec<usize>) {
         }
         match g.node(id) {
             Node::Var(i) => out.push(i as usize),
-            Node::Const(_) => {}
-            Node::Sin(a) | Node::Cos(a) | Node::Neg(a) => stack.push(a),
-            Node::Add(a, b) | Node::Mul(a, b) => {
-                stack.push(a);
-                stack.push(b);
-            }
+            node => stack.extend(node.operands()),
         }
     }
 }
@@ -476,6 +471,36 @@ fn derivative_memo(g: &mut ExprGraph, id: ExprId, var: usize, memo: &mut FxHashM
             let (da, db) = (derivative_memo(g, a, var, memo), derivative_memo(g, b, var, memo));
             let (x, y) = (g.mul(da, b), g.mul(a, db));
             g.add(x, y)
+        }
+        // The inverse kinematics' operations (a body of it is never differentiated today; the
+        // rules are the textbook's, so the graph stays one algebra).
+        Node::Input(_) => g.constant(0.0),
+        Node::Div(a, b) => {
+            // (da b - a db) / b^2
+            let (da, db) = (derivative_memo(g, a, var, memo), derivative_memo(g, b, var, memo));
+            let (x, y, bb) = (g.mul(da, b), g.mul(a, db), g.mul(b, b));
+            let numerator = g.sub(x, y);
+            g.div(numerator, bb)
+        }
+        Node::Sqrt(a) => {
+            // da / (2 sqrt a)
+            let da = derivative_memo(g, a, var, memo);
+            let two = g.constant(2.0);
+            let twice = g.mul(two, id);
+            g.div(da, twice)
+        }
+        Node::Atan2(y, x) => {
+            // (x dy - y dx) / (x^2 + y^2)
+            let (dy, dx) = (derivative_memo(g, y, var, memo), derivative_memo(g, x, var, memo));
+            let (a, b) = (g.mul(x, dy), g.mul(y, dx));
+            let numerator = g.sub(a, b);
+            let (xx, yy) = (g.mul(x, x), g.mul(y, y));
+            let r2 = g.add(xx, yy);
+            g.div(numerator, r2)
+        }
+        Node::IfPositive(c, a, b) => {
+            let (da, db) = (derivative_memo(g, a, var, memo), derivative_memo(g, b, var, memo));
+            g.if_positive(c, da, db)
         }
     };
     memo.insert(id, d);

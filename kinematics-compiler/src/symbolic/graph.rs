@@ -51,6 +51,32 @@ pub enum Node {
     Mul(ExprId, ExprId),
     /// Negation (free at run time: it folds into the surrounding sum).
     Neg(ExprId),
+    /// A run-time input that is no joint variable: an inverse kinematics body's target entries
+    /// and branch signs, named by whoever emits the graph. (The nodes from here on appear only in
+    /// inverse kinematics.)
+    Input(u32),
+    /// Quotient.
+    Div(ExprId, ExprId),
+    /// Square root.
+    Sqrt(ExprId),
+    /// `atan2(y, x)`, the angle of `(x, y)`.
+    Atan2(ExprId, ExprId),
+    /// `then` where `condition > 0`, else `otherwise` (a select: both are computed).
+    IfPositive(ExprId, ExprId, ExprId),
+}
+
+impl Node {
+    /// The node's operands, in order.
+    pub fn operands(self) -> impl Iterator<Item = ExprId> {
+        let none = ExprId(0);
+        let (list, len) = match self {
+            Node::Const(_) | Node::Var(_) | Node::Input(_) => ([none; 3], 0),
+            Node::Sin(a) | Node::Cos(a) | Node::Neg(a) | Node::Sqrt(a) => ([a, none, none], 1),
+            Node::Add(a, b) | Node::Mul(a, b) | Node::Div(a, b) | Node::Atan2(a, b) => ([a, b, none], 2),
+            Node::IfPositive(c, a, b) => ([c, a, b], 3),
+        };
+        list.into_iter().take(len)
+    }
 }
 
 /// A hash-consed arena of expressions.
@@ -262,23 +288,116 @@ impl ExprGraph {
     /// # Panics
     ///
     /// If `q` is shorter than a variable of the expression needs (a caller's bug: the caller
-    /// checks `q` against the robot's degrees of freedom).
+    /// checks `q` against the robot's degrees of freedom), or the expression has an input.
     pub fn eval(&self, id: ExprId, q: &[f64], values: &mut Vec<Option<f64>>) -> f64 {
+        self.eval_with_inputs(id, q, &[], values)
+    }
+
+    /// [`ExprGraph::eval`] with the values of the inputs ([`Node::Input`]) too. Square roots,
+    /// `atan2` and selects evaluate as the generated code's `f64` does (`kinematics_core`'s
+    /// `atan2`), so values agree with it bit for bit where the operations are the same.
+    ///
+    /// # Panics
+    ///
+    /// If `q` or `inputs` is shorter than a variable or an input of the expression needs (a
+    /// caller's bug).
+    pub fn eval_with_inputs(&self, id: ExprId, q: &[f64], inputs: &[f64], values: &mut Vec<Option<f64>>) -> f64 {
         values.resize(self.nodes.len(), None);
         if let Some(v) = values[id.index()] {
             return v;
         }
+        let mut at = |a: ExprId| self.eval_with_inputs(a, q, inputs, values);
         let v = match self.node(id) {
             Node::Const(c) => c.value(),
             Node::Var(i) => q[i as usize],
-            Node::Sin(a) => self.eval(a, q, values).sin(),
-            Node::Cos(a) => self.eval(a, q, values).cos(),
-            Node::Add(a, b) => self.eval(a, q, values) + self.eval(b, q, values),
-            Node::Mul(a, b) => self.eval(a, q, values) * self.eval(b, q, values),
-            Node::Neg(a) => -self.eval(a, q, values),
+            Node::Input(i) => inputs[i as usize],
+            Node::Sin(a) => at(a).sin(),
+            Node::Cos(a) => at(a).cos(),
+            Node::Add(a, b) => at(a) + at(b),
+            Node::Mul(a, b) => at(a) * at(b),
+            Node::Div(a, b) => at(a) / at(b),
+            Node::Neg(a) => -at(a),
+            Node::Sqrt(a) => at(a).sqrt(),
+            Node::Atan2(y, x) => kinematics_core::trig::atan2(at(y), at(x)),
+            Node::IfPositive(c, a, b) => {
+                let (c, a, b) = (at(c), at(a), at(b));
+                if c > 0.0 { a } else { b }
+            }
         };
         values[id.index()] = Some(v);
         v
+    }
+
+    /// `node` with each operand replaced by `map` of it, built through the smart constructors (so
+    /// it folds and shares as any new node does). A leaf is itself.
+    pub fn rebuild(&mut self, node: Node, map: impl Fn(ExprId) -> ExprId) -> ExprId {
+        match node {
+            Node::Const(c) => self.constant(c.value()),
+            Node::Var(i) => self.var(i as usize),
+            Node::Input(i) => self.input(i as usize),
+            Node::Sin(a) => self.sin(map(a)),
+            Node::Cos(a) => self.cos(map(a)),
+            Node::Neg(a) => self.neg(map(a)),
+            Node::Sqrt(a) => self.sqrt(map(a)),
+            Node::Add(a, b) => self.add(map(a), map(b)),
+            Node::Mul(a, b) => self.mul(map(a), map(b)),
+            Node::Div(a, b) => self.div(map(a), map(b)),
+            Node::Atan2(y, x) => self.atan2(map(y), map(x)),
+            Node::IfPositive(c, a, b) => self.if_positive(map(c), map(a), map(b)),
+        }
+    }
+
+    /// A run-time input ([`Node::Input`]).
+    pub fn input(&mut self, index: usize) -> ExprId {
+        self.intern(Node::Input(Self::index_u32(index)))
+    }
+
+    /// `a / b` (rules `div-const`, `div-one`, `div-zero`, `neg-quotient`). A quotient of constants
+    /// folds only when it is finite: a zero divisor stays for the run time to show.
+    pub fn div(&mut self, a: ExprId, b: ExprId) -> ExprId {
+        match (self.as_const(a), self.as_const(b)) {
+            (_, Some(y)) if y == 0.0 => return self.intern(Node::Div(a, b)),
+            (Some(x), Some(y)) if (x / y).is_finite() => return self.constant(x / y),
+            (_, Some(1.0)) => return a,
+            (_, Some(-1.0)) => return self.neg(a),
+            (Some(0.0), _) => return a,
+            _ => {}
+        }
+        let (na, ia) = self.unneg(a);
+        let (nb, ib) = self.unneg(b);
+        if na || nb {
+            let quotient = self.div(ia, ib);
+            return if na != nb { self.neg(quotient) } else { quotient };
+        }
+        self.intern(Node::Div(a, b))
+    }
+
+    /// `sqrt(a)` (rule `sqrt-const`, for a constant at or above zero).
+    pub fn sqrt(&mut self, a: ExprId) -> ExprId {
+        match self.as_const(a) {
+            Some(x) if x >= 0.0 => self.constant(x.sqrt()),
+            _ => self.intern(Node::Sqrt(a)),
+        }
+    }
+
+    /// `atan2(y, x)` (rule `atan2-const`, folded by the run time's own `atan2`).
+    pub fn atan2(&mut self, y: ExprId, x: ExprId) -> ExprId {
+        match (self.as_const(y), self.as_const(x)) {
+            (Some(y), Some(x)) => self.constant(kinematics_core::trig::atan2(y, x)),
+            _ => self.intern(Node::Atan2(y, x)),
+        }
+    }
+
+    /// `then` where `condition > 0`, else `otherwise` (rules `select-const`, `select-same`).
+    pub fn if_positive(&mut self, condition: ExprId, then: ExprId, otherwise: ExprId) -> ExprId {
+        if then == otherwise {
+            return then;
+        }
+        match self.as_const(condition) {
+            Some(c) if c > 0.0 => then,
+            Some(_) => otherwise,
+            None => self.intern(Node::IfPositive(condition, then, otherwise)),
+        }
     }
 }
 

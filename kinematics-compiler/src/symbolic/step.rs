@@ -192,6 +192,13 @@ pub fn expr_text(g: &ExprGraph, id: ExprId) -> String {
             let (a, b) = if g.as_const(b).is_some() && g.as_const(a).is_none() { (b, a) } else { (a, b) };
             format!("{}*{}", operand(g, a, false), operand(g, b, true))
         }
+        Node::Input(i) => format!("in{i}"),
+        Node::Div(a, b) => format!("{}/{}", operand(g, a, false), operand(g, b, true)),
+        Node::Sqrt(a) => format!("sqrt({})", expr_text(g, a)),
+        Node::Atan2(y, x) => format!("atan2({}, {})", expr_text(g, y), expr_text(g, x)),
+        Node::IfPositive(c, a, b) => {
+            format!("if_positive({}, {}, {})", expr_text(g, c), expr_text(g, a), expr_text(g, b))
+        }
     }
 }
 
@@ -213,7 +220,7 @@ fn operand(g: &ExprGraph, id: ExprId, right: bool) -> String {
     let text = expr_text(g, id);
     let wrap = match g.node(id) {
         Node::Add(..) | Node::Neg(..) => true,
-        Node::Mul(..) => right,
+        Node::Mul(..) | Node::Div(..) => right,
         Node::Const(c) => c.value() < 0.0,
         _ => false,
     };

@@ -3,6 +3,8 @@
 
 use kinematics_model::KinematicTree;
 
+pub mod arms;
+
 /// A robot from the workspace's `robots/` directory.
 pub fn robot(file: &str) -> KinematicTree {
     let path = format!("{}/../robots/{file}", env!("CARGO_MANIFEST_DIR"));

@@ -44,7 +44,7 @@ fn wrist_target(arm: &Arm6, target: &Pose<f64>) -> (M3, V3) {
 
 /// Below this (the cosine between two unit axes) a wrist's axes are square for
 /// [`rotation_to_height_on_great_circle`]: the rounding of axes written as exact quarter turns.
-const ORTHOGONAL: f64 = 1e-15;
+pub const ORTHOGONAL: f64 = 1e-15;
 
 /// The spherical wrist's joints 4, 5, 6 for arm angles `q1, q2, q3`: `rot(h4, q4) rot(h5, q5)
 /// rot(h6, q6) = R03^T R06`, `q5` by subproblem 4 (turning about `h4` keeps the height of `R36 h6`

@@ -39,7 +39,7 @@ pub mod subproblem;
 mod vector;
 
 pub use family::{
-    Arm6, FreeArm6, PlanarArm, PlanarJoint, insert_free, spherical, spherical_first_two_intersecting,
+    Arm6, FreeArm6, ORTHOGONAL, PlanarArm, PlanarJoint, insert_free, spherical, spherical_first_two_intersecting,
     spherical_last_two_intersecting, spherical_prismatic_third, spherical_two_parallel, three_parallel,
     three_parallel_two_intersecting,
 };

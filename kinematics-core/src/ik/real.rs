@@ -142,11 +142,11 @@ pub fn splat_pose<L: crate::lanes::Lanes<Scalar = f64>>(pose: &crate::pose::Pose
     let t = &pose.translation;
     let s = |x: f64| L::from_fn(|_| x);
     crate::pose::Pose {
-        rotation: [[s(r[0][0]), s(r[0][1]), s(r[0][2])], [s(r[1][0]), s(r[1][1]), s(r[1][2])], [
-            s(r[2][0]),
-            s(r[2][1]),
-            s(r[2][2]),
-        ]],
+        rotation: [
+            [s(r[0][0]), s(r[0][1]), s(r[0][2])],
+            [s(r[1][0]), s(r[1][1]), s(r[1][2])],
+            [s(r[2][0]), s(r[2][1]), s(r[2][2])],
+        ],
         translation: [s(t[0]), s(t[1]), s(t[2])],
     }
 }

@@ -24,18 +24,18 @@ pub use circles::{TurnPairs, TurnTriples, three_rotations, two_heights};
 
 /// Relative slack on a discriminant before an equation counts as out of reach: rounding alone
 /// takes a target exactly on the boundary of the workspace a few ulp past it.
-const REACH_SLACK: f64 = 1e-12;
+pub const REACH_SLACK: f64 = 1e-12;
 
 /// Within this of `+-1`, the ratio of `a cos t + b sin t = c` is taken as exactly `+-1`: a double
 /// root, the two solutions one. Targets built at a singularity (a UR's fifth joint at zero) land
 /// there with a few ulp of rounding, which `acos` would turn into an angle error of the order of
 /// the square root of it (1e-8 rad); the price is that targets within about `sqrt(2e-14)`,
 /// 1.4e-7 rad, of a double root are solved as if on it.
-const DOUBLE_ROOT: f64 = 1e-14;
+pub const DOUBLE_ROOT: f64 = 1e-14;
 
 /// Below this (relative to the vectors' lengths) a component is taken as zero: the angle it
 /// would fix is free, a singularity.
-const DEGENERATE: f64 = 1e-9;
+pub const DEGENERATE: f64 = 1e-9;
 
 /// What is known of a solved angle (or of a whole solution): whether every equation on its way had
 /// a real solution, and whether any had a continuum of them.

@@ -1,0 +1,367 @@
+//! The six-joint families whose every step has two roots at most, composed of the subproblems
+//! as expressions: the run time's `kinematics_core::ik` family functions written over the graph,
+//! one branch at a time. Three binary choices pick the branch (`signs[0]` outermost, the order
+//! of the run time's nested loops), so the body evaluated with every combination of signs gives
+//! the eight solutions in the run time's order.
+
+use kinematics_core::ik::ORTHOGONAL;
+
+use super::algebra::{Builder, Matrix, Quality, Turn, Vector};
+use crate::ik::classify::{IkFamily, SixGeometry};
+use crate::symbolic::graph::ExprId;
+
+/// What the body computes for one branch: joint values, and the flags `exact` and `singular`.
+pub(super) struct Branch {
+    pub q: [ExprId; 6],
+    pub quality: Quality,
+}
+
+/// The arm's constants as expressions.
+struct Arm {
+    h: [Vector; 6],
+    p: [Vector; 7],
+}
+
+/// The chain's geometry, the target (rotation rows, translation) and the branch signs.
+pub(super) struct Problem<'a> {
+    pub six: &'a SixGeometry,
+    pub rotation: Matrix,
+    pub translation: Vector,
+    pub signs: [ExprId; 3],
+}
+
+/// The family's branch, or `None` for a family this module does not compose (a quartic first
+/// step, or no six-joint arm).
+pub(super) fn branch(b: &mut Builder, family: IkFamily, problem: &Problem<'_>) -> Option<Branch> {
+    let arm = Arm { h: problem.six.axes.map(|v| b.vector(v)), p: problem.six.offsets.map(|v| b.vector(v)) };
+    let (r06, v0) = wrist_target(b, &arm, problem);
+    let [s1, s2, s3] = problem.signs;
+    let branch = match family {
+        IkFamily::ThreeParallelTwoIntersecting => three_parallel_two_intersecting(b, &arm, &r06, v0, [s1, s2, s3]),
+        IkFamily::SphericalTwoParallel => spherical_two_parallel(b, &arm, problem.six, &r06, v0, [s1, s2, s3]),
+        IkFamily::SphericalFirstTwoIntersecting => {
+            spherical_first_two_intersecting(b, &arm, problem.six, &r06, v0, [s1, s2, s3])
+        }
+        IkFamily::SphericalLastTwoIntersecting => {
+            spherical_last_two_intersecting(b, &arm, problem.six, &r06, v0, [s1, s2, s3])
+        }
+        IkFamily::SphericalPrismaticThird => spherical_prismatic_third(b, &arm, problem.six, &r06, v0, [s1, s2, s3]),
+        IkFamily::Spherical | IkFamily::ThreeParallel | IkFamily::Planar => return None,
+    };
+    Some(branch)
+}
+
+/// The wrist's rotation `R06 = R R6T^T` and the point `p - R06 p6T - p01` the first joints must
+/// reach.
+fn wrist_target(b: &mut Builder, arm: &Arm, problem: &Problem<'_>) -> (Matrix, Vector) {
+    let tool = problem.six.tool_rotation.map(|row| b.vector(row));
+    let r06 = [0, 1, 2].map(|i| [0, 1, 2].map(|j| b.dot(problem.rotation[i], tool[j])));
+    let tool_offset = b.mul_vector(&r06, arm.p[6]);
+    let point = b.vsub(problem.translation, tool_offset);
+    let point = b.vsub(point, arm.p[0]);
+    b.step("the wrist's target: R06 = R R6T^T, the point p - R06 p6T - p01", point);
+    (r06, point)
+}
+
+/// The angle `x` moved by whole turns into `(-pi, pi]`, for a sum of at most three angles in
+/// `[-pi, pi]` (two conditional turns, as the run time's `wrap`).
+fn wrap_sum(b: &mut Builder, x: ExprId) -> ExprId {
+    let once = wrap(b, x);
+    wrap(b, once)
+}
+
+/// The angle `x`, in `[-pi, pi]`, moved into `(-pi, pi]` (one conditional turn, which is all the
+/// run time's `wrap` does to such an angle).
+fn wrap(b: &mut Builder, x: ExprId) -> ExprId {
+    use std::f64::consts::{PI, TAU};
+    let (pi, tau) = (b.constant(PI), b.constant(TAU));
+    let over = b.sub(x, pi);
+    let down = b.sub(x, tau);
+    let up = b.add(x, tau);
+    let under = b.add(x, pi);
+    let within = b.select(under, x, up);
+    b.select(over, down, within)
+}
+
+/// The spherical wrist's `q4, q5, q6` for the arm's turns: `q5` by subproblem 4 (on the great
+/// circle for an orthogonal wrist), `q4` and `q6` by subproblem 1. `sign` picks `q5`'s root.
+fn spherical_wrist(
+    b: &mut Builder,
+    arm: &Arm,
+    six: &SixGeometry,
+    r06: &Matrix,
+    [q1, q2, q3]: [Turn; 3],
+    quality: Quality,
+    sign: ExprId,
+) -> ([Turn; 3], Quality) {
+    let h = &arm.h;
+    let back = |b: &mut Builder, v: Vector| {
+        let (t1, t2, t3) = (b.back(q1), b.back(q2), b.back(q3));
+        let v = b.rotate(t1, h[0], v);
+        let v = b.rotate(t2, h[1], v);
+        b.rotate(t3, h[2], v)
+    };
+    let seen6 = b.mul_vector(r06, h[5]);
+    let r36_h6 = back(b, seen6);
+    let seen5 = b.mul_vector(r06, h[4]);
+    let r36_h5 = back(b, seen5);
+    let dot = |u: [f64; 3], v: [f64; 3]| u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+    let axes = &six.axes;
+    // Decided here, at compile time, as the run time decides it from the same constants.
+    let orthogonal = dot(axes[3], axes[4]).abs() <= ORTHOGONAL && dot(axes[5], axes[4]).abs() <= ORTHOGONAL;
+    let (q5, fifth) = if orthogonal {
+        let q5 = b.rotation_to_height_on_great_circle(h[3], h[4], h[5], r36_h6, sign);
+        (q5, b.exact())
+    } else {
+        let height = b.dot(h[3], r36_h6);
+        b.rotation_to_height(h[3], h[4], h[5], height, sign)
+    };
+    b.step("q5 by SP4", q5.nodes().into_iter().chain(fifth.nodes()));
+    let turned = b.rotate(q5, h[4], h[5]);
+    let (q4, fourth) = b.rotation_onto(h[3], turned, r36_h6);
+    b.step("q4 by SP1", q4.nodes().into_iter().chain(fourth.nodes()));
+    let (back4, back5) = (b.back(q4), b.back(q5));
+    let v = b.rotate(back4, h[3], r36_h5);
+    let v = b.rotate(back5, h[4], v);
+    let (q6, sixth) = b.rotation_onto(h[5], h[4], v);
+    b.step("q6 by SP1", q6.nodes().into_iter().chain(sixth.nodes()));
+    let quality = b.both(quality, fifth);
+    let quality = b.both(quality, fourth);
+    let quality = b.both(quality, sixth);
+    ([q4, q5, q6], quality)
+}
+
+/// A spherical-wrist branch as joint values: every angle wrapped, `slide` in place of `q3` for
+/// a prismatic third joint.
+fn spherical_branch(
+    b: &mut Builder,
+    arm: &Arm,
+    six: &SixGeometry,
+    r06: &Matrix,
+    arm_turns: [Turn; 3],
+    slide: Option<ExprId>,
+    quality: Quality,
+    sign: ExprId,
+) -> Branch {
+    let ([q4, q5, q6], quality) = spherical_wrist(b, arm, six, r06, arm_turns, quality, sign);
+    let [q1, q2, q3] = arm_turns;
+    let mut q = [q1, q2, q3, q4, q5, q6].map(|t| wrap(b, t.angle));
+    if let Some(slide) = slide {
+        q[2] = slide;
+    }
+    Branch { q, quality }
+}
+
+/// Axes 2, 3 parallel (PUMA 560, IRB 120): `q1` by subproblem 4, `q3` by subproblem 3, `q2` by
+/// subproblem 1, then the wrist.
+fn spherical_two_parallel(
+    b: &mut Builder,
+    arm: &Arm,
+    six: &SixGeometry,
+    r06: &Matrix,
+    v0: Vector,
+    [s1, s2, s3]: [ExprId; 3],
+) -> Branch {
+    let [h1, h2, h3, ..] = arm.h;
+    let [_, p12, p23, p34, ..] = arm.p;
+    let reach = b.vadd(p12, p23);
+    let reach = b.vadd(reach, p34);
+    let height = b.dot(h2, reach);
+    let (t1, first) = b.rotation_to_height(h2, h1, v0, height, s1);
+    b.step("q1 by SP4", t1.nodes().into_iter().chain(first.nodes()));
+    let turned = b.rotate(t1, h1, v0);
+    let v1 = b.vsub(turned, p12);
+    let distance = b.norm_squared(v1);
+    let minus_one = b.constant(-1.0);
+    let back23 = b.scale(p23, minus_one);
+    let (q3, third) = b.rotation_to_distance(h3, p34, back23, distance, s2);
+    b.step("q3 by SP3", q3.nodes().into_iter().chain(third.nodes()));
+    let elbow = b.rotate(q3, h3, p34);
+    let forearm = b.vadd(p23, elbow);
+    let (q2, second) = b.rotation_onto(h2, forearm, v1);
+    b.step("q2 by SP1", q2.nodes().into_iter().chain(second.nodes()));
+    let quality = b.both(first, third);
+    let quality = b.both(quality, second);
+    let q1 = b.back(t1);
+    spherical_branch(b, arm, six, r06, [q1, q2, q3], None, quality, s3)
+}
+
+/// Axes 1, 2 meeting: `q3` by subproblem 3, `q1`, `q2` by subproblem 2, then the wrist.
+fn spherical_first_two_intersecting(
+    b: &mut Builder,
+    arm: &Arm,
+    six: &SixGeometry,
+    r06: &Matrix,
+    v0: Vector,
+    [s1, s2, s3]: [ExprId; 3],
+) -> Branch {
+    let [h1, h2, h3, ..] = arm.h;
+    let [_, _, p23, p34, ..] = arm.p;
+    let distance = b.norm_squared(v0);
+    let minus_one = b.constant(-1.0);
+    let back23 = b.scale(p23, minus_one);
+    let (q3, third) = b.rotation_to_distance(h3, p34, back23, distance, s1);
+    b.step("q3 by SP3", q3.nodes().into_iter().chain(third.nodes()));
+    let elbow = b.rotate(q3, h3, p34);
+    let u = b.vadd(p23, elbow);
+    let (t1, q2, shoulder) = b.two_rotations(h1, v0, h2, u, s2);
+    b.step("q1, q2 by SP2", t1.nodes().into_iter().chain(q2.nodes()).chain(shoulder.nodes()));
+    let quality = b.both(third, shoulder);
+    let q1 = b.back(t1);
+    spherical_branch(b, arm, six, r06, [q1, q2, q3], None, quality, s3)
+}
+
+/// Axes 2, 3 meeting: `q1` by subproblem 3, `q2`, `q3` by subproblem 2, then the wrist.
+fn spherical_last_two_intersecting(
+    b: &mut Builder,
+    arm: &Arm,
+    six: &SixGeometry,
+    r06: &Matrix,
+    v0: Vector,
+    [s1, s2, s3]: [ExprId; 3],
+) -> Branch {
+    let [h1, h2, h3, ..] = arm.h;
+    let [_, p12, _, p34, ..] = arm.p;
+    let distance = b.norm_squared(p34);
+    let (t1, first) = b.rotation_to_distance(h1, v0, p12, distance, s1);
+    b.step("q1 by SP3", t1.nodes().into_iter().chain(first.nodes()));
+    let turned = b.rotate(t1, h1, v0);
+    let v1 = b.vsub(turned, p12);
+    let (t2, q3, elbow) = b.two_rotations(h2, v1, h3, p34, s2);
+    b.step("q2, q3 by SP2", t2.nodes().into_iter().chain(q3.nodes()).chain(elbow.nodes()));
+    let quality = b.both(first, elbow);
+    let (q1, q2) = (b.back(t1), b.back(t2));
+    spherical_branch(b, arm, six, r06, [q1, q2, q3], None, quality, s3)
+}
+
+/// Axes 1, 2 meeting and joint 3 prismatic (the Stanford arm): the slide from the wrist
+/// centre's distance (a quadratic), `q1`, `q2` by subproblem 2, then the wrist.
+fn spherical_prismatic_third(
+    b: &mut Builder,
+    arm: &Arm,
+    six: &SixGeometry,
+    r06: &Matrix,
+    v0: Vector,
+    [s1, s2, s3]: [ExprId; 3],
+) -> Branch {
+    let [h1, h2, h3, ..] = arm.h;
+    let [_, _, p23, p34, ..] = arm.p;
+    // |u + q3 h3|^2 = |v0|^2 with u = p23 + p34: q3^2 + 2 (u . h3) q3 + |u|^2 - |v0|^2 = 0.
+    let u = b.vadd(p23, p34);
+    let half_b = b.dot(u, h3);
+    let (uu, vv) = (b.norm_squared(u), b.norm_squared(v0));
+    let bb = b.mul(half_b, half_b);
+    let discriminant = b.sub(bb, uu);
+    let discriminant = b.add(discriminant, vv);
+    let size = b.add(uu, vv);
+    let slack = b.constant(-1e-12);
+    let bound = b.mul(slack, size);
+    let exact = b.at_most(bound, discriminant);
+    let zero = b.constant(0.0);
+    let clamped = b.select(discriminant, discriminant, zero);
+    let root = b.sqrt(clamped);
+    let signed = b.mul(s1, root);
+    let minus_b = b.neg(half_b);
+    let slide = b.add(minus_b, signed);
+    let reach = Quality { exact, singular: zero };
+    b.step("q3 from the wrist centre's distance (a quadratic)", [slide, exact]);
+    let along = b.scale(h3, slide);
+    let u = b.vadd(u, along);
+    let (t1, q2, shoulder) = b.two_rotations(h1, v0, h2, u, s2);
+    b.step("q1, q2 by SP2", t1.nodes().into_iter().chain(q2.nodes()).chain(shoulder.nodes()));
+    let quality = b.both(reach, shoulder);
+    let (q1, none) = (b.back(t1), b.zero_turn());
+    spherical_branch(b, arm, six, r06, [q1, q2, none], Some(slide), quality, s3)
+}
+
+/// Axes 2, 3, 4 parallel and axes 5, 6 meeting (the UR family): `q1` by subproblem 4, `q5` by
+/// subproblem 4, then the planar elbow.
+fn three_parallel_two_intersecting(
+    b: &mut Builder,
+    arm: &Arm,
+    r06: &Matrix,
+    v0: Vector,
+    [s1, s2, s3]: [ExprId; 3],
+) -> Branch {
+    let [h1, h, _, _, h5, h6] = arm.h;
+    let [_, p12, p23, p34, p45, ..] = arm.p;
+    let first_two = b.vadd(p12, p23);
+    let last_two = b.vadd(p34, p45);
+    let reach = b.vadd(first_two, last_two);
+    let height = b.dot(h, reach);
+    let (t1, first) = b.rotation_to_height(h, h1, v0, height, s1);
+    b.step("q1 by SP4", t1.nodes().into_iter().chain(first.nodes()));
+    // `h` seen from the tool flange: R16^T h.
+    let q1 = b.back(t1);
+    let turned = b.rotate(q1, h1, h);
+    let w = b.mul_transposed(r06, turned);
+    let height = b.dot(w, h6);
+    let (q5, fifth) = b.rotation_to_height(h, h5, h6, height, s2);
+    b.step("q5 by SP4", q5.nodes().into_iter().chain(fifth.nodes()));
+    let quality = b.both(first, fifth);
+    parallel_elbow(b, arm, r06, v0, t1, q5, quality, s3)
+}
+
+/// The rest of an arm with axes 2, 3, 4 parallel, once `q1` (as `t1 = -q1`) and `q5` are known:
+/// `q6` and the sum `q2 + q3 + q4` by subproblem 1, `q3` by subproblem 3, `q2` by subproblem 1,
+/// `q4` by difference.
+#[allow(clippy::too_many_arguments, reason = "the run time's parallel_elbow, argument for argument")]
+fn parallel_elbow(
+    b: &mut Builder,
+    arm: &Arm,
+    r06: &Matrix,
+    v0: Vector,
+    t1: Turn,
+    q5: Turn,
+    quality: Quality,
+    sign: ExprId,
+) -> Branch {
+    let [h1, h, h3, h4, h5, h6] = arm.h;
+    let [_, p12, p23, p34, p45, p56, _] = arm.p;
+    let (sign3, sign4) = (b.dot(h, h3), b.dot(h, h4));
+    // A direction across `h`, rotated by the sum of the parallel joints' angles.
+    let across = b.cross(h, h5);
+    let q1 = b.back(t1);
+    let turned = b.rotate(q1, h1, h);
+    let w = b.mul_transposed(r06, turned);
+    let turned = b.rotate(t1, h1, v0);
+    let v1 = b.vsub(turned, p12);
+    let back5 = b.back(q5);
+    let seen = b.rotate(back5, h5, h);
+    let (t6, sixth) = b.rotation_onto(h6, seen, w);
+    b.step("q6 by SP1", t6.nodes().into_iter().chain(sixth.nodes()));
+    let across5 = b.rotate(back5, h5, across);
+    let across6 = b.rotate(t6, h6, across5);
+    let in_base = b.mul_vector(r06, across6);
+    let turned = b.rotate(t1, h1, in_base);
+    let (sum, summed) = b.rotation_onto(h, across, turned);
+    b.step("q2 + q3 + q4 by SP1", sum.nodes().into_iter().chain(summed.nodes()));
+    let wrist = b.rotate(q5, h5, p56);
+    let wrist = b.vadd(p45, wrist);
+    let wrist = b.rotate(sum, h, wrist);
+    let v = b.vsub(v1, wrist);
+    let distance = b.norm_squared(v);
+    let minus_one = b.constant(-1.0);
+    let back23 = b.scale(p23, minus_one);
+    let (q3, third) = b.rotation_to_distance(h3, p34, back23, distance, sign);
+    b.step("q3 by SP3", q3.nodes().into_iter().chain(third.nodes()));
+    let elbow = b.rotate(q3, h3, p34);
+    let forearm = b.vadd(p23, elbow);
+    let (q2, second) = b.rotation_onto(h, forearm, v);
+    b.step("q2 by SP1", q2.nodes().into_iter().chain(second.nodes()));
+    // q4 = sign4 (sum - q2 - sign3 q3).
+    let rest = b.sub(sum.angle, q2.angle);
+    let third_part = b.mul(sign3, q3.angle);
+    let rest = b.sub(rest, third_part);
+    let q4 = b.mul(sign4, rest);
+    b.step("q4 by difference", [q4]);
+    let quality = b.both(quality, sixth);
+    let quality = b.both(quality, summed);
+    let quality = b.both(quality, third);
+    let quality = b.both(quality, second);
+    let q6 = b.neg(t6.angle);
+    let [q1, q2, q3] = [q1.angle, q2.angle, q3.angle].map(|x| wrap(b, x));
+    let q4 = wrap_sum(b, q4);
+    let [q5, q6] = [q5.angle, q6].map(|x| wrap(b, x));
+    Branch { q: [q1, q2, q3, q4, q5, q6], quality }
+}

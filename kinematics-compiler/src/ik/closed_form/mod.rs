@@ -1,0 +1,114 @@
+//! A closed form as straight-line code: the family's subproblems composed over the expression
+//! graph ([`IkBody`]), with the chain's geometry as constants that fold as the expressions are
+//! built, every shared subexpression once, and one branch of the solution per evaluation, picked
+//! by three signs that are inputs of the body. Emitted as a function generic over
+//! `kinematics_core::ik::IkReal` and called with `F64x8` and `BRANCH_SIGNS_8`, the body computes
+//! the eight branches side by side, one per SIMD lane, with no branch in the code: where an
+//! equation has no real solution in a lane, selects take its least-squares answer there and flag
+//! it.
+//!
+//! The families whose every step has at most two roots are composed here: the UR family, and the
+//! spherical wrist with axes 2, 3 parallel, axes 1, 2 or axes 2, 3 meeting, or a prismatic third
+//! joint. The general spherical wrist and the three-parallel arm, whose first step is a quartic
+//! (its real roots found by an iteration), the planar arms and the six of a seven-joint arm (its
+//! geometry turned by the free joint at run time) keep the run time's family functions.
+
+mod algebra;
+mod family;
+mod subproblem;
+
+use kinematics_core::Pose;
+
+use super::classify::{IkGeometry, IkPlan};
+use crate::stats::{OpCount, marginal_counts};
+use crate::symbolic::graph::{ExprGraph, ExprId};
+
+/// The body's inputs, in order: the target's rotation row-major (`0..9`), its translation
+/// (`9..12`), the three branch signs (`12..15`).
+pub const INPUTS: usize = 15;
+
+/// The index of the first branch sign among the inputs.
+pub const FIRST_SIGN: usize = 12;
+
+/// One branch of a closed form, as expressions of the target and the branch signs.
+#[derive(Debug, Clone)]
+pub struct IkBody {
+    graph: ExprGraph,
+    /// The joint values, in the order of `q` (revolute angles in `(-pi, pi]`).
+    q: Vec<ExprId>,
+    /// `1` where every equation of the branch had a real solution, else `0`.
+    exact: ExprId,
+    /// `1` where some joint was free (a singularity), else `0`.
+    singular: ExprId,
+    /// The subproblems in order, with the nodes each produced.
+    steps: Vec<(String, Vec<ExprId>)>,
+}
+
+impl IkBody {
+    /// The body of `plan`'s family, or `None` where the family keeps the run time's solver (see
+    /// the module doc).
+    pub fn of(plan: &IkPlan) -> Option<IkBody> {
+        let IkGeometry::Six(six) = &plan.geometry else { return None };
+        if plan.free.is_some() {
+            return None;
+        }
+        let mut b = algebra::Builder::default();
+        let inputs: Vec<ExprId> = (0..INPUTS).map(|i| b.g.input(i)).collect();
+        let rotation = [0, 1, 2].map(|i| [0, 1, 2].map(|j| inputs[3 * i + j]));
+        let translation = [inputs[9], inputs[10], inputs[11]];
+        let signs = [inputs[FIRST_SIGN], inputs[FIRST_SIGN + 1], inputs[FIRST_SIGN + 2]];
+        let problem = family::Problem { six, rotation, translation, signs };
+        let branch = family::branch(&mut b, plan.family, &problem)?;
+        let q = branch.q.to_vec();
+        b.step(
+            "the joint values, wrapped into (-pi, pi], and the flags",
+            q.iter().copied().chain(branch.quality.nodes()),
+        );
+        Some(IkBody { graph: b.g, q, exact: branch.quality.exact, singular: branch.quality.singular, steps: b.steps })
+    }
+
+    /// The graph.
+    pub fn graph(&self) -> &ExprGraph {
+        &self.graph
+    }
+
+    /// The outputs: the joint values, then the flags `exact` and `singular`.
+    pub fn outputs(&self) -> Vec<ExprId> {
+        self.q.iter().copied().chain([self.exact, self.singular]).collect()
+    }
+
+    /// How many joint values.
+    pub fn dof(&self) -> usize {
+        self.q.len()
+    }
+
+    /// What one branch costs (every lane of a SIMD type computes one, side by side).
+    pub fn op_count(&self) -> OpCount {
+        OpCount::of(&self.graph, self.outputs())
+    }
+
+    /// What each subproblem adds to those before it, labelled (`kinematics expr --ik`); the
+    /// counts add up to [`IkBody::op_count`].
+    pub fn step_counts(&self) -> Vec<(String, OpCount)> {
+        // A step's node no output needs (the cosine of a last angle) is not emitted: not counted.
+        let mut needed = vec![false; self.graph.len()];
+        for id in crate::stats::reachable(&self.graph, self.outputs()) {
+            needed[id.index()] = true;
+        }
+        let groups = self.steps.iter().map(|(_, nodes)| nodes.iter().copied().filter(|id| needed[id.index()]));
+        let counts = marginal_counts(&self.graph, groups);
+        self.steps.iter().map(|(label, _)| label.clone()).zip(counts).collect()
+    }
+
+    /// Evaluates branch `index` (`0..8`, the run time's order) for `target`, as the generated
+    /// `f64` code would: the joint values, `exact` and `singular`.
+    pub fn eval(&self, target: &Pose<f64>, index: usize) -> (Vec<f64>, bool, bool) {
+        let mut inputs = [0.0; INPUTS];
+        inputs[..12].copy_from_slice(&target.entries());
+        inputs[FIRST_SIGN..].copy_from_slice(&kinematics_core::ik::branch_signs(index));
+        let mut values = Vec::new();
+        let mut at = |id: ExprId| self.graph.eval_with_inputs(id, &[], &inputs, &mut values);
+        let q = self.q.iter().map(|&id| at(id)).collect();
+        (q, at(self.exact) == 1.0, at(self.singular) == 1.0)
+    }
+}

@@ -1,0 +1,232 @@
+//! The Paden-Kahan subproblems 1 to 4 (IK-Geo's numbering, arXiv 2211.05737) as expressions: the
+//! run time's `kinematics_core::ik::subproblem` written over the graph, step for step and with
+//! its tolerances, so that the compiled body and the run time's solver compute the same numbers
+//! (up to the rounding of constants the graph folds). Where the run time returns both roots of an
+//! equation, these take a branch sign (`+1` or `-1`, an input of the body) and return the one it
+//! picks; where it branches on a degenerate case, these select.
+
+use kinematics_core::ik::subproblem::{DEGENERATE, DOUBLE_ROOT, REACH_SLACK};
+
+use super::algebra::{Builder, Quality, Turn, Vector};
+use crate::symbolic::graph::ExprId;
+
+impl Builder {
+    /// `atan2(y, x)` as a turn, its cosine and sine the vector normalised; no turn for the zero
+    /// vector (the run time's `Turn::of`).
+    fn turn_of(&mut self, y: ExprId, x: ExprId) -> Turn {
+        let (xx, yy) = (self.mul(x, x), self.mul(y, y));
+        let r2 = self.add(xx, yy);
+        let r = self.sqrt(r2);
+        let one = self.constant(1.0);
+        let safe = self.select(r, r, one);
+        let (cos, sin) = (self.div(x, safe), self.div(y, safe));
+        let turn = self.turn(cos, sin);
+        let zero = self.zero_turn();
+        self.select_turn(r, turn, zero)
+    }
+
+    /// Subproblem 1: the angle `t` with `rot(k, t) p1 = p2` about the unit axis `k`, or the
+    /// least-squares best; `0`, flagged singular, when either vector lies on the axis.
+    pub fn rotation_onto(&mut self, k: Vector, p1: Vector, p2: Vector) -> (Turn, Quality) {
+        let across_part = |b: &mut Builder, p: Vector| {
+            let along = b.dot(k, p);
+            let on_axis = b.scale(k, along);
+            b.vsub(p, on_axis)
+        };
+        let u1 = across_part(self, p1);
+        let u2 = across_part(self, p2);
+        let x = self.dot(u1, u2);
+        let u1xu2 = self.cross(u1, u2);
+        let y = self.dot(k, u1xu2);
+        let limit = self.constant(DEGENERATE * DEGENERATE);
+        let on_axis = |b: &mut Builder, p: Vector| {
+            let kxp = b.cross(k, p);
+            let across = b.norm_squared(kxp);
+            let length = b.norm_squared(p);
+            let bound = b.mul(limit, length);
+            b.at_most(across, bound)
+        };
+        let first = on_axis(self, p1);
+        let second = on_axis(self, p2);
+        let singular = self.or(first, second);
+        let turn = self.turn_of(y, x);
+        let zero = self.zero_turn();
+        let one = self.constant(1.0);
+        (self.select_turn(singular, zero, turn), Quality { exact: one, singular })
+    }
+
+    /// The root `sign` picks of `a cos t + b sin t = c`: `atan2(b, a) + sign * acos(c / hypot(a, b))`,
+    /// the least-squares best out of reach, `0` (singular) when `a = b = 0`.
+    pub fn cos_sin_equation(&mut self, a: ExprId, b: ExprId, c: ExprId, sign: ExprId) -> (Turn, Quality) {
+        let (aa, bb) = (self.mul(a, a), self.mul(b, b));
+        let r2 = self.add(aa, bb);
+        let r = self.sqrt(r2);
+        let abs_c = self.abs(c);
+        let r_over = self.sub(r, abs_c);
+        let scale = self.select(r_over, r, abs_c);
+        let tiny = self.constant(DEGENERATE);
+        let bound = self.mul(tiny, scale);
+        let degenerate = self.at_most(r, bound);
+        let exact_degenerate = self.at_most(abs_c, bound);
+        let one = self.constant(1.0);
+        let safe = self.select(degenerate, one, r);
+        let (cos_phi, sin_phi, ratio) = (self.div(a, safe), self.div(b, safe), self.div(c, safe));
+        let abs_ratio = self.abs(ratio);
+        let reach = self.constant(1.0 + REACH_SLACK);
+        let exact = self.at_most(abs_ratio, reach);
+        let double = self.constant(1.0 - DOUBLE_ROOT);
+        let near = self.at_most(double, abs_ratio);
+        // t = phi +- delta with cos(delta) = ratio, the root snapped to a double root near +-1.
+        let minus_one = self.constant(-1.0);
+        let sign_of_ratio = self.select(ratio, one, minus_one);
+        let cos_delta = self.select(near, sign_of_ratio, ratio);
+        let (below, above) = (self.sub(one, ratio), self.add(one, ratio));
+        let width = self.mul(below, above);
+        let zero = self.constant(0.0);
+        let clamped = self.select(width, width, zero);
+        let root = self.sqrt(clamped);
+        let sin_delta = self.select(near, zero, root);
+        let (cc, ss) = (self.mul(cos_phi, cos_delta), self.mul(sin_phi, sin_delta));
+        let signed_ss = self.mul(sign, ss);
+        let cos = self.sub(cc, signed_ss);
+        let (sc, cs) = (self.mul(sin_phi, cos_delta), self.mul(cos_phi, sin_delta));
+        let signed_cs = self.mul(sign, cs);
+        let sin = self.add(sc, signed_cs);
+        let turn = self.turn(cos, sin);
+        let zero_turn = self.zero_turn();
+        let turn = self.select_turn(degenerate, zero_turn, turn);
+        let exact = self.select(degenerate, exact_degenerate, exact);
+        (turn, Quality { exact, singular: degenerate })
+    }
+
+    /// Subproblem 3: the angle `t` with `|rot(k, t) p1 - p2| = d`, given `d^2`, the root `sign`
+    /// picks.
+    pub fn rotation_to_distance(
+        &mut self,
+        k: Vector,
+        p1: Vector,
+        p2: Vector,
+        d_squared: ExprId,
+        sign: ExprId,
+    ) -> (Turn, Quality) {
+        let (kp1, kp2) = (self.dot(k, p1), self.dot(k, p2));
+        let along = self.mul(kp1, kp2);
+        let p1p2 = self.dot(p1, p2);
+        let a = self.sub(p1p2, along);
+        let p1xp2 = self.cross(p1, p2);
+        let b = self.dot(k, p1xp2);
+        let (n1, n2) = (self.norm_squared(p1), self.norm_squared(p2));
+        let lengths = self.add(n1, n2);
+        let difference = self.sub(lengths, d_squared);
+        let half = self.constant(0.5);
+        let halved = self.mul(half, difference);
+        let c = self.sub(halved, along);
+        self.cos_sin_equation(a, b, c, sign)
+    }
+
+    /// Subproblem 4: the angle `t` with `h . rot(k, t) p = d`, the root `sign` picks.
+    pub fn rotation_to_height(&mut self, h: Vector, k: Vector, p: Vector, d: ExprId, sign: ExprId) -> (Turn, Quality) {
+        let (hk, kp) = (self.dot(h, k), self.dot(k, p));
+        let hk_kp = self.mul(hk, kp);
+        let hp = self.dot(h, p);
+        let a = self.sub(hp, hk_kp);
+        let kxp = self.cross(k, p);
+        let b = self.dot(h, kxp);
+        let c = self.sub(d, hk_kp);
+        self.cos_sin_equation(a, b, c, sign)
+    }
+
+    /// Subproblem 4 for an orthogonal wrist (`h` and `p` square to `k`, all unit): the angle `t`
+    /// with `h . rot(k, t) p = h . v`, the half-width's sine from `|h x v|` (its digits kept near
+    /// the singularity). Always exact.
+    pub fn rotation_to_height_on_great_circle(
+        &mut self,
+        h: Vector,
+        k: Vector,
+        p: Vector,
+        v: Vector,
+        sign: ExprId,
+    ) -> Turn {
+        let cos_phi = self.dot(h, p);
+        let kxp = self.cross(k, p);
+        let sin_phi = self.dot(h, kxp);
+        let cos_delta = self.dot(h, v);
+        let hxv = self.cross(h, v);
+        let across = self.norm_squared(hxv);
+        let sin_delta = self.sqrt(across);
+        let (cc, ss) = (self.mul(cos_phi, cos_delta), self.mul(sin_phi, sin_delta));
+        let signed_ss = self.mul(sign, ss);
+        let cos = self.sub(cc, signed_ss);
+        let (sc, cs) = (self.mul(sin_phi, cos_delta), self.mul(cos_phi, sin_delta));
+        let signed_cs = self.mul(sign, cs);
+        let sin = self.add(sc, signed_cs);
+        self.turn(cos, sin)
+    }
+
+    /// Subproblem 2: the pair `(t1, t2)` with `rot(k1, t1) p1 = rot(k2, t2) p2` about axes that
+    /// are not parallel, the crossing of the two cones `sign` picks; the least-squares best when
+    /// they do not cross, and no turns (singular) when a vector is zero.
+    pub fn two_rotations(
+        &mut self,
+        k1: Vector,
+        p1: Vector,
+        k2: Vector,
+        p2: Vector,
+        sign: ExprId,
+    ) -> (Turn, Turn, Quality) {
+        let (n1, n2) = (self.norm_squared(p1), self.norm_squared(p2));
+        let (n1, n2) = (self.sqrt(n1), self.sqrt(n2));
+        let zero = self.constant(0.0);
+        let one = self.constant(1.0);
+        let (zero1, zero2) = (self.at_most(n1, zero), self.at_most(n2, zero));
+        let degenerate = self.or(zero1, zero2);
+        let gap = self.sub(n1, n2);
+        let gap = self.abs(gap);
+        let equal = self.at_most(gap, zero);
+        let (safe1, safe2) = (self.select(n1, n1, one), self.select(n2, n2, one));
+        let (inverse1, inverse2) = (self.div(one, safe1), self.div(one, safe2));
+        let u1 = self.scale(p1, inverse1);
+        let u2 = self.scale(p2, inverse2);
+        let c = self.dot(k1, k2);
+        let cc = self.mul(c, c);
+        let s2 = self.sub(one, cc);
+        let (a1, a2) = (self.dot(k1, u1), self.dot(k2, u2));
+        // x = alpha k1 + beta k2 + gamma (k1 x k2), with k1 . x = a1, k2 . x = a2, |x| = 1.
+        let c_a2 = self.mul(c, a2);
+        let alpha = self.sub(a1, c_a2);
+        let alpha = self.div(alpha, s2);
+        let c_a1 = self.mul(c, a1);
+        let beta = self.sub(a2, c_a1);
+        let beta = self.div(beta, s2);
+        let (alpha2, beta2) = (self.mul(alpha, alpha), self.mul(beta, beta));
+        let two = self.constant(2.0);
+        let twice_alpha = self.mul(two, alpha);
+        let cross_term = self.mul(twice_alpha, beta);
+        let cross_term = self.mul(cross_term, c);
+        let rest = self.sub(one, alpha2);
+        let rest = self.sub(rest, beta2);
+        let rest = self.sub(rest, cross_term);
+        let slack = self.constant(-REACH_SLACK);
+        let exact = self.at_most(slack, rest);
+        let clamped = self.select(rest, rest, zero);
+        let over = self.div(clamped, s2);
+        let gamma = self.sqrt(over);
+        let (along1, along2) = (self.scale(k1, alpha), self.scale(k2, beta));
+        let base = self.vadd(along1, along2);
+        let normal = self.cross(k1, k2);
+        let signed = self.mul(sign, gamma);
+        let out = self.scale(normal, signed);
+        let x = self.vadd(base, out);
+        let (t1, first) = self.rotation_onto(k1, u1, x);
+        let (t2, second) = self.rotation_onto(k2, u2, x);
+        let quality = Quality { exact, singular: zero };
+        let quality = self.both(quality, first);
+        let quality = self.both(quality, second);
+        let none = self.zero_turn();
+        let t1 = self.select_turn(degenerate, none, t1);
+        let t2 = self.select_turn(degenerate, none, t2);
+        let exact = self.select(degenerate, equal, quality.exact);
+        let singular = self.select(degenerate, one, quality.singular);
+        (t1, t2, Quality { exact, singular })
+    }
+}
