@@ -17,8 +17,8 @@ use std::hint::black_box;
 use std::time::Duration;
 
 use criterion::Criterion;
-use kinematics::ik::{IkError, IkSolutions, NumericSolution};
-use kinematics::{JointLimits, Kinematics, Pose, ReferenceModel};
+use kinematics::ik::{IkBranch, IkError, IkReal, IkSolution, IkSolutions, NumericSolution};
+use kinematics::{F64x4, F64x8, JointLimits, Kinematics, Pose, ReferenceModel};
 
 #[derive(Kinematics)]
 #[kinematics(urdf = "robots/ur5.urdf", base = "base_link", tip = "tool0", ik)]
@@ -71,83 +71,153 @@ fn wrapped(x: f64) -> f64 {
     x - tau * (x / tau).round()
 }
 
-/// A robot's `tip_ik_nearest`.
-type Nearest = fn(&Pose<f64>, &[f64; 6]) -> Result<Option<kinematics::ik::IkSolution<6>>, IkError>;
-
-/// One closed-form robot's functions.
-struct Closed {
-    name: &'static str,
-    limits: [JointLimits; 6],
-    pose: fn(&[f64; 6]) -> Pose<f64>,
-    all: fn(&Pose<f64>) -> Result<IkSolutions<6, 8>, IkError>,
-    nearest: Nearest,
-    solver: fn(&Pose<f64>) -> IkSolutions<6, 8>,
+/// One closed-form robot's functions, as a trait so that each robot's benchmark is compiled for
+/// it and the bodies inline into `kinematics::dispatch` (through a function pointer the baseline
+/// body would run).
+trait Closed {
+    const NAME: &'static str;
+    const LIMITS: [JointLimits; 6];
+    fn pose(q: &[f64; 6]) -> Pose<f64>;
+    fn all(target: &Pose<f64>) -> Result<IkSolutions<6, 8>, IkError>;
+    fn nearest(target: &Pose<f64>, seed: &[f64; 6]) -> Result<Option<IkSolution<6>>, IkError>;
+    /// The run time's family function with the robot's geometry (the path before compilation).
+    fn solver(target: &Pose<f64>) -> IkSolutions<6, 8>;
+    /// The compiled body: one branch per lane (`tip_ik_branch_generic`).
+    fn branches<T: IkReal>(target: &Pose<T>, signs: &[T; 3]) -> IkBranch<T, 6>;
+    /// The forward kinematics on lanes (the measure's cost).
+    fn forward8(q: &[F64x8; 6]) -> Pose<F64x8>;
 }
 
-fn closed_forms() -> [Closed; 3] {
-    [
-        Closed {
-            name: "ur5",
-            limits: Ur5::JOINT_LIMITS,
-            pose: Ur5::tip_pose,
-            all: Ur5::tip_ik,
-            nearest: Ur5::tip_ik_nearest,
-            solver: |t| kinematics::ik::three_parallel_two_intersecting(&Ur5::IK_ARM, t),
-        },
-        Closed {
-            name: "irb120",
-            limits: Irb120::JOINT_LIMITS,
-            pose: Irb120::tip_pose,
-            all: Irb120::tip_ik,
-            nearest: Irb120::tip_ik_nearest,
-            solver: |t| kinematics::ik::spherical_two_parallel(&Irb120::IK_ARM, t),
-        },
-        Closed {
-            name: "puma560",
-            limits: Puma560::JOINT_LIMITS,
-            pose: Puma560::tip_pose,
-            all: Puma560::tip_ik,
-            nearest: Puma560::tip_ik_nearest,
-            solver: |t| kinematics::ik::spherical_two_parallel(&Puma560::IK_ARM, t),
-        },
-    ]
+macro_rules! closed {
+    ($robot:ident, $name:literal, $family:ident) => {
+        impl Closed for $robot {
+            const NAME: &'static str = $name;
+            const LIMITS: [JointLimits; 6] = $robot::JOINT_LIMITS;
+            fn pose(q: &[f64; 6]) -> Pose<f64> {
+                $robot::tip_pose(q)
+            }
+            fn all(target: &Pose<f64>) -> Result<IkSolutions<6, 8>, IkError> {
+                $robot::tip_ik(target)
+            }
+            fn nearest(target: &Pose<f64>, seed: &[f64; 6]) -> Result<Option<IkSolution<6>>, IkError> {
+                $robot::tip_ik_nearest(target, seed)
+            }
+            fn solver(target: &Pose<f64>) -> IkSolutions<6, 8> {
+                kinematics::ik::$family(&$robot::IK_ARM, target)
+            }
+            #[inline(always)]
+            fn branches<T: IkReal>(target: &Pose<T>, signs: &[T; 3]) -> IkBranch<T, 6> {
+                $robot::tip_ik_branch_generic(target, signs)
+            }
+            #[inline(always)]
+            fn forward8(q: &[F64x8; 6]) -> Pose<F64x8> {
+                $robot::tip_pose_generic(q)
+            }
+        }
+    };
 }
 
-fn closed(c: Option<&mut Criterion>, robot: &Closed) {
+closed!(Ur5, "ur5", three_parallel_two_intersecting);
+closed!(Irb120, "irb120", spherical_two_parallel);
+closed!(Puma560, "puma560", spherical_two_parallel);
+
+fn closed<R: Closed>(c: Option<&mut Criterion>) {
+    use kinematics::ik::{BRANCH_SIGNS_8, branch_signs, branch_signs_4, splat_pose};
     let mut rng = Uniform(11);
-    let qs: Vec<[f64; 6]> = (0..INPUTS).map(|_| rng.within(&robot.limits)).collect();
-    let targets: Vec<Pose<f64>> = qs.iter().map(|q| (robot.pose)(q)).collect();
+    let qs: Vec<[f64; 6]> = (0..INPUTS).map(|_| rng.within(&R::LIMITS)).collect();
+    let targets: Vec<Pose<f64>> = qs.iter().map(R::pose).collect();
     // Seeds near each configuration, as a controller's last command is near its next answer.
     let seeds: Vec<[f64; 6]> = qs.iter().map(|q| q.map(|x| x + 0.01)).collect();
+    let lanes8: Vec<Pose<F64x8>> = targets.iter().map(splat_pose).collect();
+    let lanes4: Vec<Pose<F64x4>> = targets.iter().map(splat_pose).collect();
     let Some(c) = c else {
-        for ((q, target), seed) in qs.iter().zip(&targets).zip(&seeds) {
-            let all = (robot.all)(target).expect("a pose");
+        for (k, ((q, target), seed)) in qs.iter().zip(&targets).zip(&seeds).enumerate() {
+            let all = R::all(target).expect("a pose");
             let near = |s: &[f64; 6]| s.iter().zip(q).all(|(a, b)| wrapped(a - b).abs() < 1e-6);
-            assert!(all.exact().any(|s| near(&s.q)), "{}: {q:?} not among {all:?}", robot.name);
-            let nearest = (robot.nearest)(target, seed).expect("a pose").expect("solutions");
-            assert!(near(&nearest.q), "{}: nearest {nearest:?} to {q:?}", robot.name);
-            assert_eq!((robot.solver)(target).len(), all.len());
+            assert!(all.exact().any(|s| near(&s.q)), "{}: {q:?} not among {all:?}", R::NAME);
+            let nearest = R::nearest(target, seed).expect("a pose").expect("solutions");
+            assert!(near(&nearest.q), "{}: nearest {nearest:?} to {q:?}", R::NAME);
+            assert_eq!(R::solver(target).len(), all.len());
+            // The compiled body gives tip_ik's branches in every lane width, bit for bit.
+            let eight = R::branches(&lanes8[k], &BRANCH_SIGNS_8).q;
+            for (branch, solution) in all.iter().enumerate() {
+                let scalar = R::branches(target, &branch_signs(branch)).q;
+                let four = R::branches(&lanes4[k], &branch_signs_4(branch / 4)).q;
+                for j in 0..6 {
+                    assert_eq!(scalar[j].to_bits(), solution.q[j].to_bits(), "{}: branch {branch}", R::NAME);
+                    assert_eq!(eight[j].lane(branch).to_bits(), scalar[j].to_bits(), "{}: branch {branch}", R::NAME);
+                    assert_eq!(four[j].lane(branch % 4).to_bits(), scalar[j].to_bits(), "{}: branch {branch}", R::NAME);
+                }
+            }
         }
         return;
     };
-    let mut group = c.benchmark_group(format!("ik-{}", robot.name));
+    let mut group = c.benchmark_group(format!("ik-{}", R::NAME));
     let mut i = 0;
     group.bench_function("all", |b| {
         b.iter(|| {
             i = (i + 1) % INPUTS;
-            black_box((robot.all)(black_box(&targets[i])))
+            black_box(R::all(black_box(&targets[i])))
         })
     });
     group.bench_function("nearest", |b| {
         b.iter(|| {
             i = (i + 1) % INPUTS;
-            black_box((robot.nearest)(black_box(&targets[i]), black_box(&seeds[i])))
+            black_box(R::nearest(black_box(&targets[i]), black_box(&seeds[i])))
         })
     });
     group.bench_function("solver", |b| {
         b.iter(|| {
             i = (i + 1) % INPUTS;
-            black_box((robot.solver)(black_box(&targets[i])))
+            black_box(R::solver(black_box(&targets[i])))
+        })
+    });
+    // The compiled body alone (no measure), dispatched as `tip_ik` is: every branch in one call
+    // of eight lanes, in two calls of four, and in a loop of eight scalar calls.
+    group.bench_function("branches-f64x8", |b| {
+        b.iter(|| {
+            i = (i + 1) % INPUTS;
+            kinematics::dispatch(
+                #[inline(always)]
+                || black_box(R::branches(black_box(&lanes8[i]), &BRANCH_SIGNS_8)),
+            )
+        })
+    });
+    group.bench_function("branches-f64x4", |b| {
+        b.iter(|| {
+            i = (i + 1) % INPUTS;
+            kinematics::dispatch(
+                #[inline(always)]
+                || {
+                    for half in 0..2 {
+                        black_box(R::branches(black_box(&lanes4[i]), &branch_signs_4(half)));
+                    }
+                },
+            )
+        })
+    });
+    group.bench_function("branches-scalar", |b| {
+        b.iter(|| {
+            i = (i + 1) % INPUTS;
+            kinematics::dispatch(
+                #[inline(always)]
+                || {
+                    for branch in 0..8 {
+                        black_box(R::branches(black_box(&targets[i]), &branch_signs(branch)));
+                    }
+                },
+            )
+        })
+    });
+    // The measure's forward kinematics alone: eight configurations in the lanes of `F64x8`.
+    let qs8: Vec<[F64x8; 6]> = qs.iter().map(|q| q.map(F64x8::splat)).collect();
+    group.bench_function("measure-f64x8", |b| {
+        b.iter(|| {
+            i = (i + 1) % INPUTS;
+            kinematics::dispatch(
+                #[inline(always)]
+                || black_box(R::forward8(black_box(&qs8[i]))),
+            )
         })
     });
     group.finish();
@@ -252,9 +322,9 @@ fn k_isometry(pose: &Pose<f64>) -> k::nalgebra::Isometry3<f64> {
 }
 
 fn all(mut c: Option<&mut Criterion>) {
-    for robot in closed_forms() {
-        closed(c.as_deref_mut(), &robot);
-    }
+    closed::<Ur5>(c.as_deref_mut());
+    closed::<Irb120>(c.as_deref_mut());
+    closed::<Puma560>(c.as_deref_mut());
     numeric(
         c.as_deref_mut(),
         &Numeric {

@@ -28,7 +28,20 @@ fn agree(plan: &IkPlan, body: &IkBody, target: &Pose<f64>, what: &str) {
     let run_time = solve(plan, target);
     assert_eq!(run_time.len(), 8, "{what}");
     for (index, expected) in run_time.iter().enumerate() {
-        let (q, exact, singular) = body.eval(target, index);
+        let branch = body.eval(target, index);
+        let (q, exact, singular) = (&branch.q, branch.exact, branch.singular);
+        // The cosines and sines are those of the angles (a prismatic joint's are 1 and 0).
+        for (j, (&c, &s)) in branch.cos.iter().zip(&branch.sin).enumerate() {
+            let (expected_c, expected_s) = if plan.family == IkFamily::SphericalPrismaticThird && j == 2 {
+                (1.0, 0.0)
+            } else {
+                (q[j].cos(), q[j].sin())
+            };
+            assert!(
+                (c - expected_c).abs() < 1e-14 && (s - expected_s).abs() < 1e-14,
+                "{what}: branch {index} joint {j}"
+            );
+        }
         assert!(q.iter().all(|x| x.is_finite()), "{what}: branch {index} {q:?}");
         let worst = q.iter().zip(&expected.q).map(|(a, b)| wrapped(a - b).abs()).fold(0.0, f64::max);
         let tolerance = if expected.singular || singular { 1e-6 } else { 1e-10 };

@@ -443,18 +443,27 @@ pub struct StraightLine {
     pub statements: TokenStream,
     /// Each output's expression (a name, or written out), in the order asked.
     pub outputs: Vec<TokenStream>,
+    /// The joint variables the code reads.
+    pub used_vars: std::collections::BTreeSet<usize>,
     /// The inputs the code reads.
     pub used_inputs: std::collections::BTreeSet<usize>,
 }
 
 /// The statements computing `outputs` of `g`, scheduled as every generated function is (shared
 /// nodes bound once, nothing nested deeper than [`INLINE_DEPTH_LIMIT`](super::INLINE_DEPTH_LIMIT)),
-/// with input `i` read from the variable `inputs[i]`, for the caller to wrap in a function whose
-/// scalar type is `T`. Square roots, `atan2` and selects are `T::sqrt`, `T::atan2` and
-/// `T::if_positive` (`IkReal`'s), so `T` must be bound by it.
-pub fn straight_line(g: &ExprGraph, outputs: &[ExprId], inputs: &[Ident], private: &TokenStream) -> StraightLine {
+/// with input `i` read from the variable `inputs[i]` and the joint variables (if any) from `q1 ..
+/// q{dof}`, for the caller to wrap in a function whose scalar type is `T`. Square roots, `atan2`
+/// and selects are `T::sqrt`, `T::atan2` and `T::if_positive` (`IkReal`'s), so a graph with them
+/// needs `T` bound by it.
+pub fn straight_line(
+    g: &ExprGraph,
+    outputs: &[ExprId],
+    dof: usize,
+    inputs: &[Ident],
+    private: &TokenStream,
+) -> StraightLine {
     let schedule = Schedule::new(g, outputs);
-    let w = Writer { g, schedule: &schedule, private, sizes: (0, 0), inputs };
+    let w = Writer { g, schedule: &schedule, private, sizes: (dof, 0), inputs };
     let mut statements = TokenStream::new();
     w.items(Trig::Fast, &mut statements);
     let outputs = outputs
@@ -465,7 +474,12 @@ pub fn straight_line(g: &ExprGraph, outputs: &[ExprId], inputs: &[Ident], privat
             value
         })
         .collect();
-    StraightLine { statements, outputs, used_inputs: schedule.used_inputs.clone() }
+    StraightLine {
+        statements,
+        outputs,
+        used_vars: schedule.used_vars.clone(),
+        used_inputs: schedule.used_inputs.clone(),
+    }
 }
 
 /// What one frame's value is made of: its pose (or position), its velocity, or both.

@@ -10,6 +10,7 @@ use quote::{format_ident, quote};
 
 use super::classify::{IkGeometry, IkPlan};
 use super::closed_form::{FIRST_SIGN, IkBody};
+use super::measure::{MEASURE_BODY, Measure, emit_measure};
 use crate::emit::straight_line;
 use crate::robot::number;
 
@@ -30,7 +31,7 @@ fn input_names() -> Vec<Ident> {
 pub fn emit_branch_body(body: &IkBody, private: &TokenStream, doc: &str) -> TokenStream {
     let p = private;
     let names = input_names();
-    let line = straight_line(body.graph(), &body.outputs(), &names, p);
+    let line = straight_line(body.graph(), &body.outputs(), 0, &names, p);
     let bind = |k: usize| {
         let name = &names[k];
         if line.used_inputs.contains(&k) { quote!(#name) } else { quote!(_) }
@@ -43,8 +44,8 @@ pub fn emit_branch_body(body: &IkBody, private: &TokenStream, doc: &str) -> Toke
     let signs = (FIRST_SIGN..FIRST_SIGN + 3).map(bind);
     let statements = &line.statements;
     let dof = body.dof();
-    let q = &line.outputs[..dof];
-    let (exact, singular) = (&line.outputs[dof], &line.outputs[dof + 1]);
+    let (q, cos, sin) = (&line.outputs[..dof], &line.outputs[dof..2 * dof], &line.outputs[2 * dof..3 * dof]);
+    let (exact, singular) = (&line.outputs[3 * dof], &line.outputs[3 * dof + 1]);
     let n = Literal::usize_unsuffixed(dof);
     let name = Ident::new(BRANCH_BODY, Span::call_site());
     let cost = format!(" Cost per branch: {}.", body.op_count());
@@ -55,21 +56,21 @@ pub fn emit_branch_body(body: &IkBody, private: &TokenStream, doc: &str) -> Toke
         #[allow(clippy::inline_always)]
         #[inline(always)]
         #[allow(clippy::approx_constant)] // a robot's own decimals may resemble pi; they are kept as given
-        pub fn #name<T: #p::ik::IkReal>(target: &#p::Pose<T>, signs: &[T; 3]) -> ([T; #n], T, T) {
+        pub fn #name<T: #p::ik::IkReal>(target: &#p::Pose<T>, signs: &[T; 3]) -> #p::ik::IkBranch<T, #n> {
             let [#(#rows),*] = target.rotation;
             let [#(#translation),*] = target.translation;
             let [#(#signs),*] = *signs;
             #statements
-            ([#(#q),*], #exact, #singular)
+            #p::ik::IkBranch { q: [#(#q),*], cos: [#(#cos),*], sin: [#(#sin),*], exact: #exact, singular: #singular }
         }
     }
 }
 
-/// What [`emit_ik`] adds: a generic body (for a composed family) and the items of the type's
-/// `impl`.
+/// What [`emit_ik`] adds: generic bodies (for a composed family: its branch and its measure) and
+/// the items of the type's `impl`.
 pub struct IkItems {
-    /// The generic body, when the family is composed over the graph.
-    pub body: Option<TokenStream>,
+    /// The generic bodies.
+    pub bodies: Vec<TokenStream>,
     /// The constants and functions on the type.
     pub typed: TokenStream,
 }
@@ -80,10 +81,16 @@ fn vector(v: &[f64; 3]) -> TokenStream {
 }
 
 /// The associated constants and functions (inside the robot's `impl`) for `plan`. `forward`
-/// names the generic function computing the tip's pose, `dof` is the length of `q` and
-/// `revolute` says which of its entries are angles (moved by whole turns into limits or toward a
-/// seed).
-pub fn emit_ik(plan: &IkPlan, private: &TokenStream, forward: &TokenStream, revolute: &[bool]) -> IkItems {
+/// names the generic function computing the tip's pose, `measure` is the same pose from the
+/// joints' cosines and sines (when the chain has that form), `revolute` says which entries of `q`
+/// are angles (moved by whole turns into limits or toward a seed).
+pub fn emit_ik(
+    plan: &IkPlan,
+    private: &TokenStream,
+    forward: &TokenStream,
+    measure: Option<&Measure>,
+    revolute: &[bool],
+) -> IkItems {
     let p = private;
     let compiled = IkBody::of(plan);
     let family = plan.family.name();
@@ -164,10 +171,15 @@ pub fn emit_ik(plan: &IkPlan, private: &TokenStream, forward: &TokenStream, revo
     let all = result(quote!(#p::ik::IkSolutions<#n, #capacity>));
     let one = result(quote!(::core::option::Option<#p::ik::IkSolution<#n>>));
     let doc_family = format!("The closed-form inverse kinematics family of `{tip}` in `{base}`: {family}.");
+    let measured = if compiled.is_some() && measure.is_some() {
+        " (at the cosines and sines the solver computed for each angle, of which `q` is the `atan2`)"
+    } else {
+        ""
+    };
     let doc_all = format!(
         "Every closed-form inverse kinematics solution for a pose of `{tip}` in `{base}` ({family}){free_doc}: all \
          {capacity} branches, each exact or the least-squares best where the target is out of its reach, flagged \
-         when singular, with its pose errors measured by this robot's forward kinematics. Angles are in \
+         when singular, with its pose errors measured by this robot's forward kinematics{measured}. Angles are in \
          `(-pi, pi]`. A target with a non-finite entry or a rotation that is not orthonormal is an error."
     );
     let (free_arg, free_check, nearest_free) = match &free_value {
@@ -197,35 +209,46 @@ pub fn emit_ik(plan: &IkPlan, private: &TokenStream, forward: &TokenStream, revo
     };
     let branch_doc = format!(
         "One branch of the closed-form inverse kinematics of `{tip}` in `{base}` ({family}), for any `IkReal` \
-         scalar: the joint values, then `1` or `0` for whether every equation had a real solution (else the \
-         values are the least-squares best) and whether some joint was free (a singularity). `signs` picks the \
-         branch (`+1` or `-1` for each of the three choices, the first outermost: `kinematics::ik::branch_signs`); \
-         with `F64x8` and `kinematics::ik::BRANCH_SIGNS_8` every branch at once, one per lane, in the order of \
-         [`Self::tip_ik`]. The target must be a pose (see [`Self::tip_ik`]); nothing is checked here."
+         scalar: the joint values with their cosines and sines, and `1` or `0` for whether every equation had a \
+         real solution (else the values are the least-squares best) and whether some joint was free (a \
+         singularity). `signs` picks the branch (`+1` or `-1` for each of the three choices, the first \
+         outermost: `kinematics::ik::branch_signs`); with `F64x8` and `kinematics::ik::BRANCH_SIGNS_8` every \
+         branch at once, one per lane, in the order of [`Self::tip_ik`]. The target must be a pose (see \
+         [`Self::tip_ik`]); nothing is checked here."
     );
-    let (body, solve_and_measure, branch_fn) = match &compiled {
+    let mut bodies = Vec::new();
+    let (solve_and_measure, branch_fn) = match &compiled {
         Some(body) => {
             let g = Ident::new(BRANCH_BODY, Span::call_site());
+            bodies.push(emit_branch_body(body, p, &branch_doc));
+            // The solutions' poses, in the same lanes: from the cosines and sines the solver
+            // computed where the chain allows, else at `q`.
+            let reached = match measure {
+                Some(measure) => {
+                    bodies.push(emit_measure(measure, p, tip, base));
+                    let m = Ident::new(MEASURE_BODY, Span::call_site());
+                    quote!(#m(&branches.q, &branches.cos, &branches.sin))
+                }
+                None => quote!(#forward(&branches.q)),
+            };
             (
-                Some(emit_branch_body(body, p, &branch_doc)),
                 quote! {
-                    // The eight branches side by side, one per lane, and their poses the same way.
+                    // The eight branches side by side, one per lane.
                     let lanes = #p::ik::splat_pose::<#p::F64x8>(target);
-                    let (q, exact, singular) = #g(&lanes, &#p::ik::BRANCH_SIGNS_8);
-                    let reached = #forward(&q);
-                    #p::ik::IkSolutions::from_lanes(&q, exact, singular, &reached, target)
+                    let branches = #g(&lanes, &#p::ik::BRANCH_SIGNS_8);
+                    let reached = #reached;
+                    #p::ik::IkSolutions::from_lanes(&branches, &reached, target)
                 },
                 quote! {
                     #[doc = #branch_doc]
                     #[inline]
-                    pub fn tip_ik_branch_generic<S: #p::ik::IkReal>(target: &#p::Pose<S>, signs: &[S; 3]) -> ([S; #n], S, S) {
+                    pub fn tip_ik_branch_generic<S: #p::ik::IkReal>(target: &#p::Pose<S>, signs: &[S; 3]) -> #p::ik::IkBranch<S, #n> {
                         #g(target, signs)
                     }
                 },
             )
         }
         None => (
-            None,
             quote! {
                 let mut solutions = #solve;
                 solutions.measure(target, #[inline(always)] |q| #forward(q));
@@ -269,7 +292,7 @@ pub fn emit_ik(plan: &IkPlan, private: &TokenStream, forward: &TokenStream, revo
             ::core::result::Result::Ok(Self::tip_ik(target #nearest_free)?.nearest(seed, &#mask))
         }
     };
-    IkItems { body, typed }
+    IkItems { bodies, typed }
 }
 
 /// The numeric solver's functions (inside the robot's `impl`): Levenberg-Marquardt on

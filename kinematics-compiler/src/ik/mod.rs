@@ -8,9 +8,11 @@ pub mod classify;
 pub mod closed_form;
 pub mod emit;
 pub mod geometry;
+pub mod measure;
 
 pub use classify::{
     FreeJoint, IkFamily, IkGeometry, IkPlan, MEET_TOLERANCE, PARALLEL_TOLERANCE, PlanarGeometry, SixGeometry, classify,
     classify_with,
 };
-pub use closed_form::IkBody;
+pub use closed_form::{BranchValue, IkBody};
+pub use measure::Measure;

@@ -23,8 +23,10 @@ pub(super) fn ik(cx: &Context<'_>, out: &mut Functions) -> Result<(), CompileErr
         let plan = crate::ik::classify_with(tree, base, tip, free.as_deref())?;
         let revolute: Vec<bool> =
             tree.dof_joints().iter().map(|&j| tree.joint(j).kind != JointKind::Prismatic).collect();
-        let items = crate::ik::emit::emit_ik(&plan, p, &quote!(generic_tip_poses), &revolute);
-        out.generic.extend(items.body);
+        let tip_pose = compile(tree, &cx.tip_request)?;
+        let measure = crate::ik::Measure::of(&tip_pose);
+        let items = crate::ik::emit::emit_ik(&plan, p, &quote!(generic_tip_poses), measure.as_ref(), &revolute);
+        out.generic.extend(items.bodies);
         out.typed.push(items.typed);
     }
     // The numeric solver steps on the pose and Jacobian together: the velocities' own

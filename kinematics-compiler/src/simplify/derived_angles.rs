@@ -84,6 +84,12 @@ pub(crate) fn angle_terms(g: &ExprGraph, id: ExprId) -> Option<Vec<(u32, u64)>> 
     })
 }
 
+/// The angle `id` as `sum of k_i q_i + constant`: the variables (by index, ascending) with their
+/// coefficients, and the constant; `None` if it is not a linear form.
+pub(crate) fn linear_form(g: &ExprGraph, id: ExprId) -> Option<(Vec<(usize, f64)>, f64)> {
+    linear(g, id).map(|l| (l.terms.iter().map(|&(i, k)| (i as usize, f64::from_bits(k))).collect(), l.constant))
+}
+
 /// `-terms` (exact: negation only flips the sign bit).
 fn negated(terms: &Terms) -> Terms {
     terms.iter().map(|&(i, k)| (i, (-f64::from_bits(k)).to_bits())).collect()

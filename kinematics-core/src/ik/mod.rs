@@ -44,7 +44,7 @@ pub use family::{
     three_parallel_two_intersecting,
 };
 pub use numeric::{NumericOptions, NumericSolution, levenberg_marquardt};
-pub use real::{BRANCH_SIGNS_8, IkReal, branch_signs, branch_signs_4, splat_pose};
+pub use real::{BRANCH_SIGNS_8, IkBranch, IkReal, branch_signs, branch_signs_4, splat_pose};
 pub use solutions::{IkError, IkSolution, IkSolutions, ROTATION_TOLERANCE, check_seed, check_target, pose_errors};
 
 use crate::pose::Pose;

@@ -101,6 +101,23 @@ macro_rules! ik_lanes {
 ik_lanes!(F64x4, 4);
 ik_lanes!(F64x8, 8);
 
+/// One branch of a compiled closed form, as its generic body returns it (for a lane type, one
+/// branch per lane): the joint values, each joint's cosine and sine (`1` and `0` for a prismatic
+/// joint), and the flags as numbers (`1` true, `0` false).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct IkBranch<T, const N: usize> {
+    /// Joint values (revolute angles in `(-pi, pi]`).
+    pub q: [T; N],
+    /// Each joint's cosine, as the solver computed it (`q` is the `atan2` of it and the sine).
+    pub cos: [T; N],
+    /// Each joint's sine.
+    pub sin: [T; N],
+    /// `1` where every equation had a real solution, else `0` (the least-squares best).
+    pub exact: T,
+    /// `1` where some joint was free (a singularity), else `0`.
+    pub singular: T,
+}
+
 /// The branch signs of eight branches, one per lane of [`F64x8`]: lane `i` takes the first
 /// choice's `+` root when bit 2 of `i` is clear, the second's when bit 1 is, the third's when bit 0
 /// is, so the lanes run in the order of three nested loops over the roots, `+` first.

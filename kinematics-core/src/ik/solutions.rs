@@ -181,36 +181,42 @@ impl<const N: usize, const M: usize> IkSolutions<N, M> {
     }
 
     /// The branches a compiled closed form computed side by side, one per lane: lane `i`'s joint
-    /// values, flags (`1.0` for true) and the pose `reached` there (the robot's forward kinematics
-    /// of them, in the same lanes), its errors measured against `target`. The first `M` lanes are
-    /// taken, in lane order.
+    /// values and flags, and the pose `reached` there (the robot's forward kinematics of them, in
+    /// the same lanes), its errors measured against `target`. The first `M` lanes are taken, in
+    /// lane order.
     #[inline(always)]
     pub fn from_lanes<L: Lanes<Scalar = f64> + IkReal>(
-        q: &[L; N],
-        exact: L,
-        singular: L,
+        branches: &super::real::IkBranch<L, N>,
         reached: &Pose<L>,
         target: &Pose<f64>,
     ) -> Self {
         let (distance2, frobenius2) = squared_differences(reached, &super::real::splat_pose(target));
         let (position, sine) = (distance2.sqrt(), (frobenius2 * L::from_f64(0.125)).sqrt());
-        let mut out = Self::new();
-        for lane in 0..M.min(L::LANES) {
-            let mut joints = [0.0; N];
-            for (value, lanes) in joints.iter_mut().zip(q) {
-                *value = lanes.lane(lane);
+        // The small-angle series in every lane at once; a lane past it (or not finite) takes the
+        // scalar path in `errors_of_squares`, which gives the same value for the others.
+        let series = L::from_f64(2.0) * sine * (L::from_f64(1.0) + sine * sine / L::from_f64(6.0));
+        let count = M.min(L::LANES);
+        let mut solutions = [IkSolution::unmeasured([0.0; N], false, false); M];
+        // Column by column: each lane type's value is read once.
+        for (j, column) in branches.q.iter().enumerate() {
+            for (lane, solution) in solutions[..count].iter_mut().enumerate() {
+                solution.q[j] = column.lane(lane);
             }
-            let (position_error, rotation_error) =
-                errors_of_squares(position.lane(lane), frobenius2.lane(lane), sine.lane(lane));
-            out.push(IkSolution {
-                q: joints,
-                exact: exact.lane(lane) == 1.0,
-                singular: singular.lane(lane) == 1.0,
-                position_error,
-                rotation_error,
-            });
         }
-        out
+        for (lane, solution) in solutions[..count].iter_mut().enumerate() {
+            let (position, frobenius2, sine) = (position.lane(lane), frobenius2.lane(lane), sine.lane(lane));
+            let (position_error, rotation_error) =
+                if sine < SERIES_BOUND && position.is_finite() && frobenius2.is_finite() {
+                    (position, series.lane(lane))
+                } else {
+                    errors_of_squares(position, frobenius2, sine)
+                };
+            solution.exact = branches.exact.lane(lane) == 1.0;
+            solution.singular = branches.singular.lane(lane) == 1.0;
+            solution.position_error = position_error;
+            solution.rotation_error = rotation_error;
+        }
+        IkSolutions { solutions, len: count }
     }
 
     /// The solution nearest `seed` (Euclidean distance in joint space, each angle of a joint
@@ -300,13 +306,17 @@ fn squared_differences<T: IkReal>(a: &Pose<T>, b: &Pose<T>) -> (T, T) {
     (distance2, frobenius2)
 }
 
+/// Below this sine of half the rotation error, its angle comes from the series (see
+/// [`errors_of_squares`]).
+const SERIES_BOUND: f64 = 1e-4;
+
 /// [`pose_errors`] from the distance, the squared Frobenius norm and its sine `sqrt(f^2 / 8)`.
 #[inline(always)]
 fn errors_of_squares(position: f64, frobenius2: f64, sine: f64) -> (f64, f64) {
     // For the small angles exact solutions have, the series 2 asin(s) = 2 s (1 + s^2 / 6 + ...)
     // is exact to rounding below s = 1e-4 (the next term is 3 s^4 / 40 < 1e-17 of it) and
     // costs no call.
-    let rotation = if sine < 1e-4 {
+    let rotation = if sine < SERIES_BOUND {
         2.0 * sine * (1.0 + sine * sine / 6.0)
     } else {
         2.0 * libm::asin(if sine < 1.0 { sine } else { 1.0 })

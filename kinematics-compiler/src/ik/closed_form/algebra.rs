@@ -66,8 +66,16 @@ impl Builder {
         self.g.neg(a)
     }
 
+    /// `a / b`; by a constant, a product with its reciprocal (a multiplication, where a division
+    /// takes several times as long).
     pub fn div(&mut self, a: ExprId, b: ExprId) -> ExprId {
-        self.g.div(a, b)
+        match self.g.as_const(b) {
+            Some(k) if k != 0.0 => {
+                let reciprocal = self.g.constant(1.0 / k);
+                self.g.mul(a, reciprocal)
+            }
+            _ => self.g.div(a, b),
+        }
     }
 
     pub fn sqrt(&mut self, a: ExprId) -> ExprId {
@@ -187,6 +195,19 @@ impl Builder {
             cos: self.g.if_positive(flag, if_true.cos, if_false.cos),
             sin: self.g.if_positive(flag, if_true.sin, if_false.sin),
         }
+    }
+
+    /// The turn by `a + b`, its cosine and sine by the angle-sum formulas.
+    pub fn angle_sum(&mut self, a: Turn, b: Turn) -> Turn {
+        let (cc, ss) = (self.g.mul(a.cos, b.cos), self.g.mul(a.sin, b.sin));
+        let (sc, cs) = (self.g.mul(a.sin, b.cos), self.g.mul(a.cos, b.sin));
+        Turn { angle: self.g.add(a.angle, b.angle), cos: self.g.sub(cc, ss), sin: self.g.add(sc, cs) }
+    }
+
+    /// The turn by `a - b`, its cosine and sine by the angle-difference formulas.
+    pub fn difference(&mut self, a: Turn, b: Turn) -> Turn {
+        let minus_b = self.back(b);
+        self.angle_sum(a, minus_b)
     }
 
     /// The turn whose cosine and sine are given (already normalised): its angle by `atan2`.

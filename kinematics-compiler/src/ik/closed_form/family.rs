@@ -10,9 +10,13 @@ use super::algebra::{Builder, Matrix, Quality, Turn, Vector};
 use crate::ik::classify::{IkFamily, SixGeometry};
 use crate::symbolic::graph::ExprId;
 
-/// What the body computes for one branch: joint values, and the flags `exact` and `singular`.
+/// What the body computes for one branch: joint values, each joint's cosine and sine (of the
+/// angle `q` is the `atan2` of; `1` and `0` for a prismatic joint), and the flags `exact` and
+/// `singular`.
 pub(super) struct Branch {
     pub q: [ExprId; 6],
+    pub cos: [ExprId; 6],
+    pub sin: [ExprId; 6],
     pub quality: Quality,
 }
 
@@ -20,6 +24,8 @@ pub(super) struct Branch {
 struct Arm {
     h: [Vector; 6],
     p: [Vector; 7],
+    /// The axes in numbers, for what is decided at compile time.
+    axes: [[f64; 3]; 6],
 }
 
 /// The chain's geometry, the target (rotation rows, translation) and the branch signs.
@@ -33,7 +39,11 @@ pub(super) struct Problem<'a> {
 /// The family's branch, or `None` for a family this module does not compose (a quartic first
 /// step, or no six-joint arm).
 pub(super) fn branch(b: &mut Builder, family: IkFamily, problem: &Problem<'_>) -> Option<Branch> {
-    let arm = Arm { h: problem.six.axes.map(|v| b.vector(v)), p: problem.six.offsets.map(|v| b.vector(v)) };
+    let arm = Arm {
+        h: problem.six.axes.map(|v| b.vector(v)),
+        p: problem.six.offsets.map(|v| b.vector(v)),
+        axes: problem.six.axes,
+    };
     let (r06, v0) = wrist_target(b, &arm, problem);
     let [s1, s2, s3] = problem.signs;
     let branch = match family {
@@ -145,11 +155,12 @@ fn spherical_branch(
 ) -> Branch {
     let ([q4, q5, q6], quality) = spherical_wrist(b, arm, six, r06, arm_turns, quality, sign);
     let [q1, q2, q3] = arm_turns;
-    let mut q = [q1, q2, q3, q4, q5, q6].map(|t| wrap(b, t.angle));
+    let turns = [q1, q2, q3, q4, q5, q6];
+    let mut q = turns.map(|t| wrap(b, t.angle));
     if let Some(slide) = slide {
         q[2] = slide;
     }
-    Branch { q, quality }
+    Branch { q, cos: turns.map(|t| t.cos), sin: turns.map(|t| t.sin), quality }
 }
 
 /// Axes 2, 3 parallel (PUMA 560, IRB 120): `q1` by subproblem 4, `q3` by subproblem 3, `q2` by
@@ -349,19 +360,28 @@ fn parallel_elbow(
     let forearm = b.vadd(p23, elbow);
     let (q2, second) = b.rotation_onto(h, forearm, v);
     b.step("q2 by SP1", q2.nodes().into_iter().chain(second.nodes()));
-    // q4 = sign4 (sum - q2 - sign3 q3).
+    // q4 = sign4 (sum - q2 - sign3 q3), its cosine and sine by the angle-sum formulas (the signs
+    // are +-1: the axes are parallel, exactly or as the plan wrote them).
     let rest = b.sub(sum.angle, q2.angle);
     let third_part = b.mul(sign3, q3.angle);
     let rest = b.sub(rest, third_part);
     let q4 = b.mul(sign4, rest);
-    b.step("q4 by difference", [q4]);
+    let [sign3_exact, sign4_exact] = [2, 3].map(|axis| {
+        let dot = |u: [f64; 3], v: [f64; 3]| u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+        dot(arm.axes[1], arm.axes[axis]).signum()
+    });
+    let t4 = b.difference(sum, q2);
+    let t4 = if sign3_exact > 0.0 { b.difference(t4, q3) } else { b.angle_sum(t4, q3) };
+    let t4 = if sign4_exact > 0.0 { t4 } else { b.back(t4) };
+    b.step("q4 by difference", [q4, t4.cos, t4.sin]);
     let quality = b.both(quality, sixth);
     let quality = b.both(quality, summed);
     let quality = b.both(quality, third);
     let quality = b.both(quality, second);
-    let q6 = b.neg(t6.angle);
-    let [q1, q2, q3] = [q1.angle, q2.angle, q3.angle].map(|x| wrap(b, x));
-    let q4 = wrap_sum(b, q4);
-    let [q5, q6] = [q5.angle, q6].map(|x| wrap(b, x));
-    Branch { q: [q1, q2, q3, q4, q5, q6], quality }
+    let t6 = b.back(t6);
+    let turns = [q1, q2, q3, t4, q5, t6];
+    let [w1, w2, w3] = [q1.angle, q2.angle, q3.angle].map(|x| wrap(b, x));
+    let w4 = wrap_sum(b, q4);
+    let [w5, w6] = [q5.angle, t6.angle].map(|x| wrap(b, x));
+    Branch { q: [w1, w2, w3, w4, w5, w6], cos: turns.map(|t| t.cos), sin: turns.map(|t| t.sin), quality }
 }

@@ -30,12 +30,30 @@ pub const INPUTS: usize = 15;
 /// The index of the first branch sign among the inputs.
 pub const FIRST_SIGN: usize = 12;
 
+/// One branch of a closed form evaluated ([`IkBody::eval`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct BranchValue {
+    /// The joint values.
+    pub q: Vec<f64>,
+    /// Their cosines, as the solver computed them.
+    pub cos: Vec<f64>,
+    /// Their sines.
+    pub sin: Vec<f64>,
+    /// Every equation had a real solution.
+    pub exact: bool,
+    /// Some joint was free.
+    pub singular: bool,
+}
+
 /// One branch of a closed form, as expressions of the target and the branch signs.
 #[derive(Debug, Clone)]
 pub struct IkBody {
     graph: ExprGraph,
     /// The joint values, in the order of `q` (revolute angles in `(-pi, pi]`).
     q: Vec<ExprId>,
+    /// Each joint's cosine and sine (`1` and `0` for a prismatic joint).
+    cos: Vec<ExprId>,
+    sin: Vec<ExprId>,
     /// `1` where every equation of the branch had a real solution, else `0`.
     exact: ExprId,
     /// `1` where some joint was free (a singularity), else `0`.
@@ -59,12 +77,20 @@ impl IkBody {
         let signs = [inputs[FIRST_SIGN], inputs[FIRST_SIGN + 1], inputs[FIRST_SIGN + 2]];
         let problem = family::Problem { six, rotation, translation, signs };
         let branch = family::branch(&mut b, plan.family, &problem)?;
-        let q = branch.q.to_vec();
+        let (q, cos, sin) = (branch.q.to_vec(), branch.cos.to_vec(), branch.sin.to_vec());
         b.step(
             "the joint values, wrapped into (-pi, pi], and the flags",
             q.iter().copied().chain(branch.quality.nodes()),
         );
-        Some(IkBody { graph: b.g, q, exact: branch.quality.exact, singular: branch.quality.singular, steps: b.steps })
+        Some(IkBody {
+            graph: b.g,
+            q,
+            cos,
+            sin,
+            exact: branch.quality.exact,
+            singular: branch.quality.singular,
+            steps: b.steps,
+        })
     }
 
     /// The graph.
@@ -72,9 +98,10 @@ impl IkBody {
         &self.graph
     }
 
-    /// The outputs: the joint values, then the flags `exact` and `singular`.
+    /// The outputs: the joint values, their cosines, their sines, then the flags `exact` and
+    /// `singular`.
     pub fn outputs(&self) -> Vec<ExprId> {
-        self.q.iter().copied().chain([self.exact, self.singular]).collect()
+        self.q.iter().chain(&self.cos).chain(&self.sin).copied().chain([self.exact, self.singular]).collect()
     }
 
     /// How many joint values.
@@ -101,14 +128,19 @@ impl IkBody {
     }
 
     /// Evaluates branch `index` (`0..8`, the run time's order) for `target`, as the generated
-    /// `f64` code would: the joint values, `exact` and `singular`.
-    pub fn eval(&self, target: &Pose<f64>, index: usize) -> (Vec<f64>, bool, bool) {
+    /// `f64` code would.
+    pub fn eval(&self, target: &Pose<f64>, index: usize) -> BranchValue {
         let mut inputs = [0.0; INPUTS];
         inputs[..12].copy_from_slice(&target.entries());
         inputs[FIRST_SIGN..].copy_from_slice(&kinematics_core::ik::branch_signs(index));
         let mut values = Vec::new();
         let mut at = |id: ExprId| self.graph.eval_with_inputs(id, &[], &inputs, &mut values);
-        let q = self.q.iter().map(|&id| at(id)).collect();
-        (q, at(self.exact) == 1.0, at(self.singular) == 1.0)
+        BranchValue {
+            q: self.q.iter().map(|&id| at(id)).collect(),
+            cos: self.cos.iter().map(|&id| at(id)).collect(),
+            sin: self.sin.iter().map(|&id| at(id)).collect(),
+            exact: at(self.exact) == 1.0,
+            singular: at(self.singular) == 1.0,
+        }
     }
 }

@@ -11,18 +11,22 @@ use super::algebra::{Builder, Quality, Turn, Vector};
 use crate::symbolic::graph::ExprId;
 
 impl Builder {
-    /// `atan2(y, x)` as a turn, its cosine and sine the vector normalised; no turn for the zero
-    /// vector (the run time's `Turn::of`).
-    fn turn_of(&mut self, y: ExprId, x: ExprId) -> Turn {
+    /// `atan2(y, x)` as a turn, its cosine and sine the vector normalised (one division, for the
+    /// reciprocal of its length); no turn for the zero vector, nor where `none` is set.
+    fn turn_of(&mut self, y: ExprId, x: ExprId, none: ExprId) -> Turn {
         let (xx, yy) = (self.mul(x, x), self.mul(y, y));
         let r2 = self.add(xx, yy);
         let r = self.sqrt(r2);
+        let zero = self.constant(0.0);
+        let vanishing = self.at_most(r, zero);
+        let none = self.or(none, vanishing);
         let one = self.constant(1.0);
-        let safe = self.select(r, r, one);
-        let (cos, sin) = (self.div(x, safe), self.div(y, safe));
+        let safe = self.select(none, one, r);
+        let inverse = self.div(one, safe);
+        let (cos, sin) = (self.mul(x, inverse), self.mul(y, inverse));
         let turn = self.turn(cos, sin);
-        let zero = self.zero_turn();
-        self.select_turn(r, turn, zero)
+        let zero_turn = self.zero_turn();
+        self.select_turn(none, zero_turn, turn)
     }
 
     /// Subproblem 1: the angle `t` with `rot(k, t) p1 = p2` about the unit axis `k`, or the
@@ -49,49 +53,58 @@ impl Builder {
         let first = on_axis(self, p1);
         let second = on_axis(self, p2);
         let singular = self.or(first, second);
-        let turn = self.turn_of(y, x);
-        let zero = self.zero_turn();
+        let turn = self.turn_of(y, x, singular);
         let one = self.constant(1.0);
-        (self.select_turn(singular, zero, turn), Quality { exact: one, singular })
+        (turn, Quality { exact: one, singular })
     }
 
     /// The root `sign` picks of `a cos t + b sin t = c`: `atan2(b, a) + sign * acos(c / hypot(a, b))`,
     /// the least-squares best out of reach, `0` (singular) when `a = b = 0`.
+    ///
+    /// Written on squares: with `r^2 = a^2 + b^2` and `w = sqrt(r^2 - c^2)`, `cos t = (a c - sign b w) /
+    /// r^2` and `sin t = (b c + sign a w) / r^2`, one square root and one division on the way
+    /// (the run time's `cos_sin_equation` takes `r`, then three quotients by it, then a second
+    /// root: the same tests and the same values to rounding, on a path half as long). Near a
+    /// double root (`|c| / r` within `DOUBLE_ROOT` of 1) and out of reach the root is snapped
+    /// to `atan2(b, a)` or its opposite, as there.
     pub fn cos_sin_equation(&mut self, a: ExprId, b: ExprId, c: ExprId, sign: ExprId) -> (Turn, Quality) {
-        let (aa, bb) = (self.mul(a, a), self.mul(b, b));
+        let (aa, bb, cc) = (self.mul(a, a), self.mul(b, b), self.mul(c, c));
         let r2 = self.add(aa, bb);
-        let r = self.sqrt(r2);
-        let abs_c = self.abs(c);
-        let r_over = self.sub(r, abs_c);
-        let scale = self.select(r_over, r, abs_c);
-        let tiny = self.constant(DEGENERATE);
-        let bound = self.mul(tiny, scale);
-        let degenerate = self.at_most(r, bound);
-        let exact_degenerate = self.at_most(abs_c, bound);
+        // r <= DEGENERATE max(r, |c|), and |c| <= DEGENERATE max(r, |c|) for the degenerate case's
+        // exactness, on squares.
+        let r2_over = self.sub(r2, cc);
+        let scale2 = self.select(r2_over, r2, cc);
+        let tiny = self.constant(DEGENERATE * DEGENERATE);
+        let bound = self.mul(tiny, scale2);
+        let degenerate = self.at_most(r2, bound);
+        let exact_degenerate = self.at_most(cc, bound);
         let one = self.constant(1.0);
-        let safe = self.select(degenerate, one, r);
-        let (cos_phi, sin_phi, ratio) = (self.div(a, safe), self.div(b, safe), self.div(c, safe));
-        let abs_ratio = self.abs(ratio);
-        let reach = self.constant(1.0 + REACH_SLACK);
-        let exact = self.at_most(abs_ratio, reach);
-        let double = self.constant(1.0 - DOUBLE_ROOT);
-        let near = self.at_most(double, abs_ratio);
-        // t = phi +- delta with cos(delta) = ratio, the root snapped to a double root near +-1.
+        let safe = self.select(degenerate, one, r2);
+        let inverse2 = self.div(one, safe);
+        // |c| / r <= 1 + REACH_SLACK, and |c| / r >= 1 - DOUBLE_ROOT, on squares.
+        let reach = self.constant((1.0 + REACH_SLACK) * (1.0 + REACH_SLACK));
+        let reach = self.mul(reach, r2);
+        let exact = self.at_most(cc, reach);
+        let double = self.constant((1.0 - DOUBLE_ROOT) * (1.0 - DOUBLE_ROOT));
+        let double = self.mul(double, r2);
+        let near = self.at_most(double, cc);
+        // Away from a double root, r^2 - c^2 > 0.
+        let w2 = self.sub(r2, cc);
+        let w = self.sqrt(w2);
+        let (ac, bc) = (self.mul(a, c), self.mul(b, c));
+        let (bw, aw) = (self.mul(b, w), self.mul(a, w));
+        let (signed_bw, signed_aw) = (self.mul(sign, bw), self.mul(sign, aw));
+        let cos = self.sub(ac, signed_bw);
+        let sin = self.add(bc, signed_aw);
+        let (cos, sin) = (self.mul(cos, inverse2), self.mul(sin, inverse2));
+        // At a double root or beyond: (a, b) / r, turned to the side of c.
         let minus_one = self.constant(-1.0);
-        let sign_of_ratio = self.select(ratio, one, minus_one);
-        let cos_delta = self.select(near, sign_of_ratio, ratio);
-        let (below, above) = (self.sub(one, ratio), self.add(one, ratio));
-        let width = self.mul(below, above);
-        let zero = self.constant(0.0);
-        let clamped = self.select(width, width, zero);
-        let root = self.sqrt(clamped);
-        let sin_delta = self.select(near, zero, root);
-        let (cc, ss) = (self.mul(cos_phi, cos_delta), self.mul(sin_phi, sin_delta));
-        let signed_ss = self.mul(sign, ss);
-        let cos = self.sub(cc, signed_ss);
-        let (sc, cs) = (self.mul(sin_phi, cos_delta), self.mul(cos_phi, sin_delta));
-        let signed_cs = self.mul(sign, cs);
-        let sin = self.add(sc, signed_cs);
+        let side = self.select(c, one, minus_one);
+        let inverse = self.sqrt(inverse2);
+        let toward = self.mul(side, inverse);
+        let (snapped_cos, snapped_sin) = (self.mul(a, toward), self.mul(b, toward));
+        let cos = self.select(near, snapped_cos, cos);
+        let sin = self.select(near, snapped_sin, sin);
         let turn = self.turn(cos, sin);
         let zero_turn = self.zero_turn();
         let turn = self.select_turn(degenerate, zero_turn, turn);
