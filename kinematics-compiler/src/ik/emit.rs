@@ -190,7 +190,7 @@ pub fn emit_ik(
                     return ::core::result::Result::Err(#p::ik::IkError::NonFiniteFree);
                 }
             },
-            quote!(, seed[#index]),
+            quote!(let free = seed[#index];),
         ),
         None => (quote!(), quote!(), quote!()),
     };
@@ -289,7 +289,13 @@ pub fn emit_ik(
         #[inline]
         pub fn tip_ik_nearest(target: &#p::Pose<f64>, seed: &[f64; #n]) -> #one {
             #p::ik::check_seed(seed)?;
-            ::core::result::Result::Ok(Self::tip_ik(target #nearest_free)?.nearest(seed, &#mask))
+            #p::ik::check_target(target)?;
+            #nearest_free
+            // Solved, measured and chosen in one dispatched body.
+            ::core::result::Result::Ok(#p::dispatch(#[inline(always)] || {
+                let solutions: #p::ik::IkSolutions<#n, #capacity> = { #solve_and_measure };
+                solutions.nearest(seed, &#mask)
+            }))
         }
     };
     IkItems { bodies, typed }

@@ -222,27 +222,35 @@ impl<const N: usize, const M: usize> IkSolutions<N, M> {
     /// The solution nearest `seed` (Euclidean distance in joint space, each angle of a joint
     /// marked in `revolute` first moved by a multiple of 2 pi to the seed's side), preferring
     /// exact solutions to least-squares ones. `None` only when there are no solutions.
+    #[inline(always)]
     pub fn nearest(&self, seed: &[f64; N], revolute: &[bool; N]) -> Option<IkSolution<N>> {
-        let mut best: Option<(bool, f64, IkSolution<N>)> = None;
-        for solution in self.iter() {
-            let mut moved = *solution;
+        // The distances first, without a branch on the angles (their turns are selects), then the
+        // choice: a branch per solution, not per joint.
+        let mut best: Option<(bool, f64, usize)> = None;
+        for (k, solution) in self.iter().enumerate() {
             let mut distance = 0.0;
             for i in 0..N {
-                if revolute[i] {
-                    moved.q[i] = seed[i] + super::vector::wrap(moved.q[i] - seed[i]);
-                }
-                let d = moved.q[i] - seed[i];
+                let d = solution.q[i] - seed[i];
+                let d = if revolute[i] { super::vector::nearest_turn(d) } else { d };
                 distance += d * d;
             }
-            let better = match &best {
+            let better = match best {
                 None => true,
-                Some((exact, d, _)) => (moved.exact && !exact) || (moved.exact == *exact && distance < *d),
+                Some((exact, d, _)) => (solution.exact && !exact) || (solution.exact == exact && distance < d),
             };
             if better {
-                best = Some((moved.exact, distance, moved));
+                best = Some((solution.exact, distance, k));
             }
         }
-        best.map(|(_, _, s)| s)
+        best.map(|(_, _, k)| {
+            let mut moved = self.solutions[k];
+            for i in 0..N {
+                if revolute[i] {
+                    moved.q[i] = seed[i] + super::vector::nearest_turn(moved.q[i] - seed[i]);
+                }
+            }
+            moved
+        })
     }
 
     /// The solutions inside `limits` (closed intervals), each angle of a joint marked in

@@ -99,6 +99,18 @@ pub(crate) fn wrap(angle: f64) -> f64 {
     if wrapped <= -PI { wrapped + TAU } else { wrapped }
 }
 
+/// `angle` less the whole turns nearest it: within half a turn of zero (`[-pi, pi]`, either end
+/// where it falls on one), with no branch. The turns are rounded by adding and subtracting
+/// `1.5 * 2^52`, exact for fewer than 2^51 turns; beyond that (angles past 1e16 rad) the
+/// subtraction of a float's worth of turns is already all the precision the angle has.
+#[inline(always)]
+pub(crate) fn nearest_turn(angle: f64) -> f64 {
+    use core::f64::consts::TAU;
+    const ROUND: f64 = 6_755_399_441_055_744.0; // 1.5 * 2^52
+    let turns = (angle * (1.0 / TAU) + ROUND) - ROUND;
+    angle - turns * TAU
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -107,6 +119,17 @@ mod tests {
     fn rotation_about_z_by_a_quarter_turn() {
         let v = rotate([0.0, 0.0, 1.0], core::f64::consts::FRAC_PI_2, [1.0, 2.0, 3.0]);
         assert!((v[0] + 2.0).abs() < 1e-15 && (v[1] - 1.0).abs() < 1e-15 && (v[2] - 3.0).abs() < 1e-15);
+    }
+
+    #[test]
+    fn nearest_turn_is_within_half_a_turn() {
+        use core::f64::consts::{PI, TAU};
+        for angle in [0.0, 1.0, -1.0, 3.0, -3.0, 3.2, -3.2, 7.0, -7.0, 100.0, -1e6, 12.0 * TAU + 0.1] {
+            let near = nearest_turn(angle);
+            assert!(near.abs() <= PI + 1e-12, "{angle} -> {near}");
+            let turns = (angle - near) / TAU;
+            assert!((turns - libm::round(turns)).abs() < 1e-9, "{angle} -> {near}: not whole turns");
+        }
     }
 
     #[test]
