@@ -1,6 +1,8 @@
-//! Inverse kinematics speed: the compiled closed forms (UR5, IRB 120, PUMA 560: every solution
-//! of a pose, the solution nearest a seed, and the family's solver alone without the errors
-//! measured by forward kinematics) and the numeric solver on the seven-joint arms (Panda, iiwa 14)
+//! Inverse kinematics speed: the closed forms (UR5, IRB 120, PUMA 560, compiled to straight-line
+//! bodies: every solution of a pose, the solution nearest a seed, the run time's family function
+//! they were compiled from, and the compiled body alone on eight lanes, on four and on one; and
+//! one arm of each family whose first step is a quartic, which `tip_ik` solves with the run
+//! time's family function) and the numeric solver on the seven-joint arms (Panda, iiwa 14)
 //! against the `k` crate's Jacobian IK solver on the same targets and seeds, with both success
 //! rates. `ik-geo`, the run-time IK-Geo, builds nlopt with cmake, so its side of the comparison
 //! lives in `benches/ik-geo/` (its own crate, run by its script), not here.
@@ -31,6 +33,33 @@ struct Irb120;
 #[derive(Kinematics)]
 #[kinematics(dh = "robots/puma560.toml", tip = "link6", ik)]
 struct Puma560;
+
+// The two families whose first step is a quartic, on the made-up arms `tests/ik.rs` checks them
+// on (no maker's arm in `robots/` is of either family): axes 1, 2, 3 skew with a spherical wrist,
+// and a UR whose last two axes are 0.06 m apart.
+#[derive(Kinematics)]
+#[kinematics(dh(
+    convention = "standard",
+    row("j1", 0.15, "pi/2", 0.40, 0.0),
+    row("j2", 0.45, 1.1, 0.12, 0.3),
+    row("j3", 0.05, "-pi/2", 0.08, -0.2),
+    row("j4", 0.0, "pi/2", 0.42, 0.0),
+    row("j5", 0.0, "-pi/2", 0.0, 0.0),
+    row("j6", 0.0, 0.0, 0.09, 0.0),
+), tip = "link6", ik)]
+struct SkewSpherical;
+
+#[derive(Kinematics)]
+#[kinematics(dh(
+    convention = "standard",
+    row("j1", 0.0, "pi/2", 0.089, 0.0),
+    row("j2", -0.425, 0.0, 0.0, 0.0),
+    row("j3", -0.392, 0.0, 0.0, 0.0),
+    row("j4", 0.0, "pi/2", 0.109, 0.0),
+    row("j5", 0.06, "-pi/2", 0.095, 0.0),
+    row("j6", 0.0, 0.0, 0.082, 0.0),
+), tip = "link6", ik)]
+struct OffsetWristUr;
 
 #[derive(Kinematics)]
 #[kinematics(urdf = "robots/panda.urdf", tip = "panda_hand", ik = "numeric")]
@@ -80,12 +109,18 @@ trait Closed {
     fn pose(q: &[f64; 6]) -> Pose<f64>;
     fn all(target: &Pose<f64>) -> Result<IkSolutions<6, 8>, IkError>;
     fn nearest(target: &Pose<f64>, seed: &[f64; 6]) -> Result<Option<IkSolution<6>>, IkError>;
-    /// The run time's family function with the robot's geometry (the path before compilation).
+    /// The run time's family function with the robot's geometry (what `tip_ik` calls for a
+    /// family with a quartic first step; the path before compilation for the others).
     fn solver(target: &Pose<f64>) -> IkSolutions<6, 8>;
+}
+
+/// A robot whose closed form is compiled to a straight-line body.
+trait Compiled: Closed {
     /// The compiled body: one branch per lane (`tip_ik_branch_generic`).
     fn branches<T: IkReal>(target: &Pose<T>, signs: &[T; 3]) -> IkBranch<T, 6>;
-    /// The forward kinematics on lanes (the measure's cost).
-    fn forward8(q: &[F64x8; 6]) -> Pose<F64x8>;
+    /// The pose at `q` on lanes: what measuring the solutions would cost with `sin_cos` (the
+    /// measure `tip_ik` runs takes each angle's cosine and sine from the solver instead).
+    fn pose8(q: &[F64x8; 6]) -> Pose<F64x8>;
 }
 
 macro_rules! closed {
@@ -105,12 +140,19 @@ macro_rules! closed {
             fn solver(target: &Pose<f64>) -> IkSolutions<6, 8> {
                 kinematics::ik::$family(&$robot::IK_ARM, target)
             }
+        }
+    };
+}
+
+macro_rules! compiled {
+    ($robot:ident) => {
+        impl Compiled for $robot {
             #[inline(always)]
             fn branches<T: IkReal>(target: &Pose<T>, signs: &[T; 3]) -> IkBranch<T, 6> {
                 $robot::tip_ik_branch_generic(target, signs)
             }
             #[inline(always)]
-            fn forward8(q: &[F64x8; 6]) -> Pose<F64x8> {
+            fn pose8(q: &[F64x8; 6]) -> Pose<F64x8> {
                 $robot::tip_pose_generic(q)
             }
         }
@@ -120,35 +162,39 @@ macro_rules! closed {
 closed!(Ur5, "ur5", three_parallel_two_intersecting);
 closed!(Irb120, "irb120", spherical_two_parallel);
 closed!(Puma560, "puma560", spherical_two_parallel);
+closed!(SkewSpherical, "skew-spherical", spherical);
+closed!(OffsetWristUr, "offset-wrist-ur", three_parallel);
+compiled!(Ur5);
+compiled!(Irb120);
+compiled!(Puma560);
 
-fn closed<R: Closed>(c: Option<&mut Criterion>) {
-    use kinematics::ik::{BRANCH_SIGNS_8, branch_signs, branch_signs_4, splat_pose};
+/// The targets, seeds and configurations a closed-form robot is timed on.
+struct Inputs {
+    qs: Vec<[f64; 6]>,
+    targets: Vec<Pose<f64>>,
+    seeds: Vec<[f64; 6]>,
+}
+
+fn inputs<R: Closed>() -> Inputs {
     let mut rng = Uniform(11);
     let qs: Vec<[f64; 6]> = (0..INPUTS).map(|_| rng.within(&R::LIMITS)).collect();
-    let targets: Vec<Pose<f64>> = qs.iter().map(R::pose).collect();
+    let targets = qs.iter().map(R::pose).collect();
     // Seeds near each configuration, as a controller's last command is near its next answer.
-    let seeds: Vec<[f64; 6]> = qs.iter().map(|q| q.map(|x| x + 0.01)).collect();
-    let lanes8: Vec<Pose<F64x8>> = targets.iter().map(splat_pose).collect();
-    let lanes4: Vec<Pose<F64x4>> = targets.iter().map(splat_pose).collect();
+    let seeds = qs.iter().map(|q| q.map(|x| x + 0.01)).collect();
+    Inputs { qs, targets, seeds }
+}
+
+/// Every solution, the nearest, and the run time's family function: for every closed form.
+fn closed<R: Closed>(c: Option<&mut Criterion>) {
+    let Inputs { qs, targets, seeds } = inputs::<R>();
     let Some(c) = c else {
-        for (k, ((q, target), seed)) in qs.iter().zip(&targets).zip(&seeds).enumerate() {
+        for ((q, target), seed) in qs.iter().zip(&targets).zip(&seeds) {
             let all = R::all(target).expect("a pose");
             let near = |s: &[f64; 6]| s.iter().zip(q).all(|(a, b)| wrapped(a - b).abs() < 1e-6);
             assert!(all.exact().any(|s| near(&s.q)), "{}: {q:?} not among {all:?}", R::NAME);
             let nearest = R::nearest(target, seed).expect("a pose").expect("solutions");
             assert!(near(&nearest.q), "{}: nearest {nearest:?} to {q:?}", R::NAME);
             assert_eq!(R::solver(target).len(), all.len());
-            // The compiled body gives tip_ik's branches in every lane width, bit for bit.
-            let eight = R::branches(&lanes8[k], &BRANCH_SIGNS_8).q;
-            for (branch, solution) in all.iter().enumerate() {
-                let scalar = R::branches(target, &branch_signs(branch)).q;
-                let four = R::branches(&lanes4[k], &branch_signs_4(branch / 4)).q;
-                for j in 0..6 {
-                    assert_eq!(scalar[j].to_bits(), solution.q[j].to_bits(), "{}: branch {branch}", R::NAME);
-                    assert_eq!(eight[j].lane(branch).to_bits(), scalar[j].to_bits(), "{}: branch {branch}", R::NAME);
-                    assert_eq!(four[j].lane(branch % 4).to_bits(), scalar[j].to_bits(), "{}: branch {branch}", R::NAME);
-                }
-            }
         }
         return;
     };
@@ -172,6 +218,34 @@ fn closed<R: Closed>(c: Option<&mut Criterion>) {
             black_box(R::solver(black_box(&targets[i])))
         })
     });
+    group.finish();
+}
+
+/// The compiled body alone, on eight lanes, four and one, and the pose on lanes.
+fn compiled<R: Compiled>(c: Option<&mut Criterion>) {
+    use kinematics::ik::{BRANCH_SIGNS_8, branch_signs, branch_signs_4, splat_pose};
+    let Inputs { qs, targets, .. } = inputs::<R>();
+    let lanes8: Vec<Pose<F64x8>> = targets.iter().map(splat_pose).collect();
+    let lanes4: Vec<Pose<F64x4>> = targets.iter().map(splat_pose).collect();
+    let Some(c) = c else {
+        for (k, target) in targets.iter().enumerate() {
+            let all = R::all(target).expect("a pose");
+            // The compiled body gives tip_ik's branches in every lane width, bit for bit.
+            let eight = R::branches(&lanes8[k], &BRANCH_SIGNS_8).q;
+            for (branch, solution) in all.iter().enumerate() {
+                let scalar = R::branches(target, &branch_signs(branch)).q;
+                let four = R::branches(&lanes4[k], &branch_signs_4(branch / 4)).q;
+                for j in 0..6 {
+                    assert_eq!(scalar[j].to_bits(), solution.q[j].to_bits(), "{}: branch {branch}", R::NAME);
+                    assert_eq!(eight[j].lane(branch).to_bits(), scalar[j].to_bits(), "{}: branch {branch}", R::NAME);
+                    assert_eq!(four[j].lane(branch % 4).to_bits(), scalar[j].to_bits(), "{}: branch {branch}", R::NAME);
+                }
+            }
+        }
+        return;
+    };
+    let mut group = c.benchmark_group(format!("ik-{}", R::NAME));
+    let mut i = 0;
     // The compiled body alone (no measure), dispatched as `tip_ik` is: every branch in one call
     // of eight lanes, in two calls of four, and in a loop of eight scalar calls.
     group.bench_function("branches-f64x8", |b| {
@@ -209,14 +283,15 @@ fn closed<R: Closed>(c: Option<&mut Criterion>) {
             )
         })
     });
-    // The measure's forward kinematics alone: eight configurations in the lanes of `F64x8`.
+    // The pose at q, eight configurations in the lanes of `F64x8`: what measuring the solutions
+    // would cost computing their sines and cosines again.
     let qs8: Vec<[F64x8; 6]> = qs.iter().map(|q| q.map(F64x8::splat)).collect();
-    group.bench_function("measure-f64x8", |b| {
+    group.bench_function("pose-f64x8", |b| {
         b.iter(|| {
             i = (i + 1) % INPUTS;
             kinematics::dispatch(
                 #[inline(always)]
-                || black_box(R::forward8(black_box(&qs8[i]))),
+                || black_box(R::pose8(black_box(&qs8[i]))),
             )
         })
     });
@@ -323,8 +398,13 @@ fn k_isometry(pose: &Pose<f64>) -> k::nalgebra::Isometry3<f64> {
 
 fn all(mut c: Option<&mut Criterion>) {
     closed::<Ur5>(c.as_deref_mut());
+    compiled::<Ur5>(c.as_deref_mut());
     closed::<Irb120>(c.as_deref_mut());
+    compiled::<Irb120>(c.as_deref_mut());
     closed::<Puma560>(c.as_deref_mut());
+    compiled::<Puma560>(c.as_deref_mut());
+    closed::<SkewSpherical>(c.as_deref_mut());
+    closed::<OffsetWristUr>(c.as_deref_mut());
     numeric(
         c.as_deref_mut(),
         &Numeric {

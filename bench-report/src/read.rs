@@ -212,13 +212,21 @@ pub fn read_run(root: &Path, name: &'static str, criterion: PathBuf) -> Result<O
     Ok(Some(Run { name, build, dir: criterion, rows }))
 }
 
-/// The closed-form robots of the IK benchmark, as it names its groups (`ik-<name>`), and as the
-/// summary names them.
-const CLOSED: [(&str, &str); 3] = [("ur5", "UR5"), ("irb120", "IRB 120"), ("puma560", "PUMA 560")];
+/// The closed-form robots of the IK benchmark: its group (`ik-<group>`), the summary's name (the
+/// ik-geo table's too), and for a robot in `robots/` its file, base and tip (for the compiled
+/// body's operation counts; the quartic families' made-up arms are written in the benchmark).
+const CLOSED: [(&str, &str, Option<(&str, &str, &str)>); 5] = [
+    ("ur5", "UR5", Some(("ur5.urdf", "base_link", "tool0"))),
+    ("irb120", "IRB 120", Some(("irb120.urdf", "base_link", "tool0"))),
+    ("puma560", "PUMA 560", Some(("puma560.toml", "base", "link6"))),
+    ("skew-spherical", "skew spherical wrist (quartic)", None),
+    ("offset-wrist-ur", "UR, wrist offset (quartic)", None),
+];
 /// The numeric robots.
 const NUMERIC: [(&str, &str); 2] = [("panda", "Panda"), ("iiwa14", "iiwa 14")];
 
-/// One closed-form robot's IK medians, ns per call.
+/// One closed-form robot's IK medians (ns per call) and operation counts.
+#[derive(Default)]
 pub struct ClosedIk {
     /// The summary's name (`UR5`).
     pub name: &'static str,
@@ -226,8 +234,18 @@ pub struct ClosedIk {
     pub all: Option<f64>,
     /// The solution nearest a seed (`tip_ik_nearest`).
     pub nearest: Option<f64>,
-    /// The family solver alone, without measuring each solution's errors.
+    /// The run time's family function with the robot's geometry, without the errors' measure.
     pub solver: Option<f64>,
+    /// The compiled body, all eight branches in one call on `F64x8`.
+    pub lanes8: Option<f64>,
+    /// The same in two calls on `F64x4`.
+    pub lanes4: Option<f64>,
+    /// The same in eight scalar calls.
+    pub scalar: Option<f64>,
+    /// The pose at `q` in the lanes of `F64x8` (measuring with `sin_cos` again).
+    pub pose8: Option<f64>,
+    /// The compiled body's operations per branch, and the measure's (`kinematics expr --ik`).
+    pub ops: Option<(String, String)>,
 }
 
 /// One numeric robot's IK medians and success counts.
@@ -258,10 +276,13 @@ pub fn read_ik(root: &Path, criterion: &Path) -> Option<Ik> {
     median_ns(criterion, "ik-ur5", "all")?;
     let closed = CLOSED
         .into_iter()
-        .map(|(group, name)| {
+        .map(|(group, name, robot)| {
             let g = format!("ik-{group}");
-            let [all, nearest, solver] = ["all", "nearest", "solver"].map(|v| median_ns(criterion, &g, v));
-            ClosedIk { name, all, nearest, solver }
+            let [all, nearest, solver, lanes8, lanes4, scalar, pose8] =
+                ["all", "nearest", "solver", "branches-f64x8", "branches-f64x4", "branches-scalar", "pose-f64x8"]
+                    .map(|v| median_ns(criterion, &g, v));
+            let ops = robot.and_then(|(file, base, tip)| ik_op_counts(root, file, base, tip));
+            ClosedIk { name, all, nearest, solver, lanes8, lanes4, scalar, pose8, ops }
         })
         .collect();
     let numeric = NUMERIC
@@ -275,6 +296,21 @@ pub fn read_ik(root: &Path, criterion: &Path) -> Option<Ik> {
     let ik_geo = std::fs::read_to_string(root.join("benches/ik-geo/RESULTS.md")).unwrap_or_default();
     let ik_geo = ik_geo.lines().filter(|l| l.starts_with('|')).map(|l| format!("{l}\n")).collect();
     Some(Ik { closed, numeric, ik_geo })
+}
+
+/// The compiled closed form's operations per branch and its measure's, as `sin_cos/mul/add/div/
+/// sqrt/atan2/select`; `None` for a robot whose closed form is not compiled (or that does not load).
+fn ik_op_counts(root: &Path, file: &str, base: &str, tip: &str) -> Option<(String, String)> {
+    let text = std::fs::read_to_string(root.join("robots").join(file)).ok()?;
+    let tree = kinematics_model::parse_source(file, &text).ok()?;
+    let plan = kinematics_compiler::ik::classify(&tree, base, tip).ok()?;
+    let body = kinematics_compiler::ik::IkBody::of(&plan)?;
+    let pose = kinematics_compiler::compile(&tree, &kinematics_compiler::Request::tip(tip).with_base(base)).ok()?;
+    let measure = kinematics_compiler::ik::Measure::of(&pose)?;
+    let cells = |c: kinematics_compiler::OpCount| {
+        format!("{}/{}/{}/{}/{}/{}/{}", c.sin_cos, c.mul, c.add, c.div, c.sqrt, c.atan2, c.select)
+    };
+    Some((cells(body.op_count()), cells(measure.op_count())))
 }
 
 /// One numeric robot's success counts (`robot, ours, k, targets`), as the benchmark wrote them.

@@ -541,7 +541,7 @@ mod tests {
     #[test]
     fn ik_targets_show_two_decimals_and_n_a_without_a_figure() {
         let ik = Ik {
-            closed: vec![ClosedIk { name: "UR5", all: Some(400.0), nearest: Some(500.0), solver: None }],
+            closed: vec![ClosedIk { name: "UR5", all: Some(400.0), nearest: Some(500.0), ..ClosedIk::default() }],
             numeric: vec![NumericIk {
                 name: "Panda",
                 ours: Some(1.0),

@@ -77,7 +77,8 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
     if args.ik {
         let plan = kinematics_compiler::ik::classify_with(&tree, &base, &tip, args.free.as_deref())
             .map_err(|source| CliError::Compile { file: args.file.clone(), source })?;
-        write!(out, "{}", ik_text(&tree, &plan))?;
+        let text = ik_text(&tree, &plan).map_err(|source| CliError::Compile { file: args.file.clone(), source })?;
+        write!(out, "{text}")?;
         return Ok(());
     }
     if args.jacobian {
@@ -95,7 +96,10 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
 
 /// A closed-form plan as text: family, subproblems, and per joint its axis and the offset to it
 /// from the previous point.
-fn ik_text(tree: &KinematicTree, plan: &kinematics_compiler::ik::IkPlan) -> String {
+fn ik_text(
+    tree: &KinematicTree,
+    plan: &kinematics_compiler::ik::IkPlan,
+) -> Result<String, kinematics_compiler::CompileError> {
     let short = crate::inspect::short;
     let v = |v: &[f64; 3]| format!("({}, {}, {})", short(v[0]), short(v[1]), short(v[2]));
     let mut out = format!(
@@ -154,7 +158,50 @@ fn ik_text(tree: &KinematicTree, plan: &kinematics_compiler::ik::IkPlan) -> Stri
     }
     out +=
         &format!("solutions: up to {} (every branch, exact or least-squares, flagged)\n", plan.family.max_solutions());
-    out
+    out += &emitted_ik_text(tree, plan)?;
+    Ok(out)
+}
+
+/// What the compiler emits for a plan: the straight-line body's subproblems with what each adds
+/// to the operations before it, and the measure's cost; or the run time's function it calls.
+fn emitted_ik_text(
+    tree: &KinematicTree,
+    plan: &kinematics_compiler::ik::IkPlan,
+) -> Result<String, kinematics_compiler::CompileError> {
+    let Some(body) = kinematics_compiler::ik::IkBody::of(plan) else {
+        let why = if plan.free.is_some() {
+            "its geometry is turned by the free joint at run time"
+        } else if matches!(plan.geometry, kinematics_compiler::ik::IkGeometry::Planar(_)) {
+            "a planar arm"
+        } else {
+            "its first step is a quartic, whose real roots an iteration finds"
+        };
+        return Ok(format!(
+            "emitted: a call of the run time's `kinematics::ik::{}` with the geometry above as constants ({why}), \
+             every solution measured by the generated pose\n",
+            plan.family.solver()
+        ));
+    };
+    let mut out = String::from(
+        "emitted: one straight-line body computing one branch, run on F64x8 with the eight branches side by side \
+         (one per lane), the geometry folded in as constants\noperations per branch, each step's beyond the steps \
+         before it:\n",
+    );
+    let steps = body.step_counts();
+    let width = steps.iter().map(|(label, _)| label.len()).max().unwrap_or(0);
+    for (label, count) in &steps {
+        out += &format!("  {label:<width$}  {count}\n");
+    }
+    out += &format!("  {:<width$}  {}\n", "total", body.op_count());
+    let pose = kinematics_compiler::compile(tree, &kinematics_compiler::Request::tip(&plan.tip).with_base(&plan.base))?;
+    out += &match kinematics_compiler::ik::Measure::of(&pose) {
+        Some(measure) => format!(
+            "measure: the generated pose at each joint's cosine and sine from the solver, per branch: {}\n",
+            measure.op_count()
+        ),
+        None => "measure: the generated pose at q (an angle of the chain is no sum of joint values)\n".to_owned(),
+    };
+    Ok(out)
 }
 
 /// The 12 entries' names: the rotation row-major, then the translation.

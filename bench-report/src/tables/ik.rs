@@ -1,6 +1,7 @@
 //! The inverse kinematics section: the medians of `cargo bench --bench ik` (closed forms: every
-//! solution, the nearest, the family solver alone; the numeric solver and `k`'s Jacobian IK with
-//! their success rates) and the paired table `benches/ik-geo/RESULTS.md` that
+//! solution, the nearest, the compiled body on eight, four and one lanes, the pose on lanes, the
+//! run-time family function; the compiled bodies' operation counts; the numeric solver and `k`'s
+//! Jacobian IK with their success rates) and the paired table `benches/ik-geo/RESULTS.md` that
 //! `bash benches/ik-geo/run.sh` writes (IK-Geo's crate on the same poses). The IK targets follow
 //! it, from `crate::targets::ik_targets`.
 
@@ -25,26 +26,43 @@ pub fn ik_section(ik: Option<&Ik>) -> String {
     };
     let _ = writeln!(
         s,
-        "| robot | every solution (`tip_ik`) | nearest (`tip_ik_nearest`) | family solver alone | nearest / all |"
+        "| robot | every solution (`tip_ik`) | nearest (`tip_ik_nearest`) | nearest / all | compiled body, 8 lanes | \
+         4 lanes, 2 calls | scalar, 8 calls | scalar / 8 lanes | pose at q, 8 lanes | run-time family function |"
     );
-    let _ = writeln!(s, "|---|---|---|---|---|");
-    for robot in &ik.closed {
-        let (all, nearest, solver) = (robot.all, robot.nearest, robot.solver);
+    let _ = writeln!(s, "|---|---|---|---|---|---|---|---|---|---|");
+    for r in &ik.closed {
         let _ = writeln!(
             s,
-            "| {} | {} | {} | {} | {} |",
-            robot.name,
-            fmt(all),
-            fmt(nearest),
-            fmt(solver),
-            fmt(ratio(nearest, all))
+            "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |",
+            r.name,
+            fmt(r.all),
+            fmt(r.nearest),
+            fmt(ratio(r.nearest, r.all)),
+            fmt(r.lanes8),
+            fmt(r.lanes4),
+            fmt(r.scalar),
+            fmt(ratio(r.scalar, r.lanes8)),
+            fmt(r.pose8),
+            fmt(r.solver)
         );
     }
     let _ = writeln!(
         s,
-        "\nThe difference between `tip_ik` and the solver is measuring each solution's errors with the generated\n\
-         forward kinematics (eight poses).\n\n\
-         | robot | numeric solve | k Jacobian IK | k / ours | converged to 1e-10 (ours) | converged (k, same tolerance) |\n\
+        "\n`tip_ik` is the compiled body on eight lanes, then every solution's pose at the cosines and sines the\n\
+         body computed (no `sin_cos`), its errors against the target, and the eight solutions unpacked; the\n\
+         quartic families' `tip_ik` calls the run-time family function instead. `pose at q` is what the measure\n\
+         would cost with `sin_cos`. Operations per branch (one per lane), `sin_cos/mul/add/div/sqrt/atan2/select`,\n\
+         from `kinematics expr --ik`:\n\n\
+         | robot | compiled body | measure |\n|---|---|---|"
+    );
+    for r in &ik.closed {
+        if let Some((body, measure)) = &r.ops {
+            let _ = writeln!(s, "| {} | {body} | {measure} |", r.name);
+        }
+    }
+    let _ = writeln!(
+        s,
+        "\n| robot | numeric solve | k Jacobian IK | k / ours | converged to 1e-10 (ours) | converged (k, same tolerance) |\n\
          |---|---|---|---|---|---|"
     );
     for robot in &ik.numeric {
@@ -85,7 +103,17 @@ mod tests {
     #[test]
     fn closed_and_numeric_rows() {
         let ik = Ik {
-            closed: vec![ClosedIk { name: "UR5", all: Some(400.0), nearest: Some(440.0), solver: Some(300.0) }],
+            closed: vec![ClosedIk {
+                name: "UR5",
+                all: Some(400.0),
+                nearest: Some(440.0),
+                solver: Some(300.0),
+                lanes8: Some(200.0),
+                lanes4: None,
+                scalar: Some(800.0),
+                pose8: Some(250.0),
+                ops: Some(("0/1/2/3/4/5/6".to_owned(), "0/7/8/0/0/0/0".to_owned())),
+            }],
             numeric: vec![NumericIk {
                 name: "Panda",
                 ours: Some(25_000.0),
@@ -95,7 +123,8 @@ mod tests {
             ik_geo: String::new(),
         };
         let s = ik_section(Some(&ik));
-        assert!(s.contains("\n| UR5 | 400 | 440 | 300 | 1.10 |\n"), "{s}");
+        assert!(s.contains("\n| UR5 | 400 | 440 | 1.10 | 200 | n/a | 800 | 4.00 | 250 | 300 |\n"), "{s}");
+        assert!(s.contains("\n| UR5 | 0/1/2/3/4/5/6 | 0/7/8/0/0/0/0 |\n"), "{s}");
         assert!(s.contains("\n| Panda | 25.0 us | n/a | n/a | 99.8% (499 of 500) | 60.0% (300 of 500) |\n"), "{s}");
         assert!(s.ends_with("\nNo ik-geo results: run `bash benches/ik-geo/run.sh`.\n"), "{s}");
     }

@@ -74,23 +74,31 @@ fn wrist_target(b: &mut Builder, arm: &Arm, problem: &Problem<'_>) -> (Matrix, V
 }
 
 /// The angle `x` moved by whole turns into `(-pi, pi]`, for a sum of at most three angles in
-/// `[-pi, pi]` (two conditional turns, as the run time's `wrap`).
+/// `[-pi, pi]` (two conditional turns each way, as the run time's `wrap`).
 fn wrap_sum(b: &mut Builder, x: ExprId) -> ExprId {
-    let once = wrap(b, x);
-    wrap(b, once)
+    let once = wrap_both(b, x);
+    wrap_both(b, once)
 }
 
-/// The angle `x`, in `[-pi, pi]`, moved into `(-pi, pi]` (one conditional turn, which is all the
-/// run time's `wrap` does to such an angle).
+/// One conditional turn either way: `x - 2 pi` above `pi`, `x + 2 pi` at or below `-pi`.
+fn wrap_both(b: &mut Builder, x: ExprId) -> ExprId {
+    use std::f64::consts::PI;
+    let pi = b.constant(PI);
+    let over = b.sub(x, pi);
+    let tau = b.constant(std::f64::consts::TAU);
+    let down = b.sub(x, tau);
+    let within = wrap(b, x);
+    b.select(over, down, within)
+}
+
+/// The angle `x`, in `[-pi, pi]` (an `atan2`'s, or its negation), moved into `(-pi, pi]`: `-pi`
+/// becomes `pi`, which is all the run time's `wrap` does to such an angle.
 fn wrap(b: &mut Builder, x: ExprId) -> ExprId {
     use std::f64::consts::{PI, TAU};
     let (pi, tau) = (b.constant(PI), b.constant(TAU));
-    let over = b.sub(x, pi);
-    let down = b.sub(x, tau);
     let up = b.add(x, tau);
     let under = b.add(x, pi);
-    let within = b.select(under, x, up);
-    b.select(over, down, within)
+    b.select(under, x, up)
 }
 
 /// The spherical wrist's `q4, q5, q6` for the arm's turns: `q5` by subproblem 4 (on the great
