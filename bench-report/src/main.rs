@@ -9,6 +9,9 @@
 //! is met) and `benches/ratios.svg` (the
 //! ratios as bars). Nothing here is typed in by hand.
 //!
+//! `cargo run -p bench-report -- --ik` rewrites only the inverse kinematics part, from the results of
+//! `cargo bench --bench ik` and `benches/ik-geo/RESULTS.md`, keeping the forward kinematics sections.
+//!
 //! One module per output: `read` (every input, as data), `tables` (the Markdown), `svg` (the
 //! chart) and `targets` (the targets, met or not). This file only puts them in order.
 
@@ -31,6 +34,9 @@ fn main() {
 fn run() -> Result<()> {
     let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..");
     let target = root.join("target");
+    if std::env::args().nth(1).as_deref() == Some("--ik") {
+        return ik_only(&root, &target);
+    }
     let mut runs = Vec::new();
     for (name, dir) in [("plain", target.join("criterion")), ("native", target.join("native/criterion"))] {
         runs.extend(read::read_run(&root, name, dir)?);
@@ -52,16 +58,39 @@ fn run() -> Result<()> {
     tables::plain_against_native(&mut summary, &runs);
     targets::targets(&mut summary, &runs);
     summary += &tables::notes();
-    // Inverse kinematics (plain build only): its tables, then its targets when it was run.
-    let ik = read::read_ik(&root, &target.join("criterion"));
-    summary += &tables::ik_section(ik.as_ref());
-    if let Some(ik) = &ik {
-        summary += &targets::ik_targets(ik);
-    }
+    summary += &ik_part(&root, &target);
     std::fs::write(root.join("benches/SUMMARY.md"), summary)?;
     // The bars show the plain build, the one every user gets, when it was run.
     std::fs::write(root.join("benches/ratios.svg"), svg::svg(&runs[0]))?;
     let names: Vec<&str> = runs.iter().map(|r| r.name).collect();
     println!("wrote benches/SUMMARY.md and benches/ratios.svg from the {} run(s)", names.join(" and "));
+    Ok(())
+}
+
+/// The inverse kinematics part (plain build only): its tables, then its targets when it was run.
+fn ik_part(root: &std::path::Path, target: &std::path::Path) -> String {
+    let ik = read::read_ik(root, &target.join("criterion"));
+    let mut part = tables::ik_section(ik.as_ref(), &read::machine());
+    if let Some(ik) = &ik {
+        part += &targets::ik_targets(ik);
+    }
+    part
+}
+
+/// `bench-report --ik`: the inverse kinematics part of `benches/SUMMARY.md` rewritten from the
+/// IK results alone, the forward kinematics sections kept as they are (measured by their own
+/// runs, on whichever machine those were: the IK part names its own).
+fn ik_only(root: &std::path::Path, target: &std::path::Path) -> Result<()> {
+    let path = root.join("benches/SUMMARY.md");
+    let summary = std::fs::read_to_string(&path)?;
+    let Some(start) = summary.find(tables::IK_HEADING) else {
+        return Err(format!(
+            "{} has no inverse kinematics part to replace: run `cargo run -p bench-report`",
+            path.display()
+        )
+        .into());
+    };
+    std::fs::write(&path, format!("{}{}", &summary[..start], ik_part(root, target)))?;
+    println!("rewrote the inverse kinematics part of benches/SUMMARY.md");
     Ok(())
 }

@@ -116,7 +116,18 @@ pub fn machine() -> String {
         .ok()
         .map(|o| String::from_utf8_lossy(&o.stdout).trim().to_owned())
         .unwrap_or_default();
-    format!("{model}, {cores} cores, {rustc}")
+    let widest = std::fs::read_to_string("/proc/cpuinfo").ok().map_or("", |s| {
+        let flags = s.lines().find(|l| l.starts_with("flags")).unwrap_or("");
+        let has = |flag: &str| flags.split_whitespace().any(|f| f == flag);
+        if has("avx512f") {
+            " with AVX-512"
+        } else if has("avx2") {
+            " with AVX2 (no AVX-512)"
+        } else {
+            ""
+        }
+    });
+    format!("{model}{widest}, {cores} cores, {rustc}")
 }
 
 /// `a / b`, when both were measured.
@@ -212,10 +223,13 @@ pub fn read_run(root: &Path, name: &'static str, criterion: PathBuf) -> Result<O
     Ok(Some(Run { name, build, dir: criterion, rows }))
 }
 
+/// A robot in `robots/` with the base and tip of its chain: `(file, base, tip)`.
+type RobotFile = (&'static str, &'static str, &'static str);
+
 /// The closed-form robots of the IK benchmark: its group (`ik-<group>`), the summary's name (the
 /// ik-geo table's too), and for a robot in `robots/` its file, base and tip (for the compiled
 /// body's operation counts; the quartic families' made-up arms are written in the benchmark).
-const CLOSED: [(&str, &str, Option<(&str, &str, &str)>); 5] = [
+const CLOSED: [(&str, &str, Option<RobotFile>); 5] = [
     ("ur5", "UR5", Some(("ur5.urdf", "base_link", "tool0"))),
     ("irb120", "IRB 120", Some(("irb120.urdf", "base_link", "tool0"))),
     ("puma560", "PUMA 560", Some(("puma560.toml", "base", "link6"))),

@@ -10,15 +10,20 @@ use std::fmt::Write as _;
 use super::fmt;
 use crate::read::{Ik, ratio};
 
-/// The section's heading and tables, or a line saying the IK benchmark has no results.
-pub fn ik_section(ik: Option<&Ik>) -> String {
+/// The line the inverse kinematics part starts with (after a blank line).
+pub const IK_HEADING: &str = "\n## Inverse kinematics (plain build)\n";
+
+/// The section's heading and tables, or a line saying the IK benchmark has no results. `machine`
+/// is where it ran (`bench-report --ik` keeps forward kinematics sections measured elsewhere).
+pub fn ik_section(ik: Option<&Ik>, machine: &str) -> String {
     let mut s = String::new();
     let _ = writeln!(
         s,
-        "\n## Inverse kinematics (plain build)\n\n\
+        "{IK_HEADING}\n\
          From `cargo bench --bench ik` (criterion medians, ns per call; random configurations within the limits,\n\
          their poses as targets) and `bash benches/ik-geo/run.sh` (IK-Geo's Rust crate `ik-geo` 0.1.2 on the same\n\
-         geometry and poses, timed in pairs; its own crate, since it builds nlopt with cmake).\n"
+         geometry and poses, timed in pairs; its own crate, since it builds nlopt with cmake), then\n\
+         `cargo run -p bench-report -- --ik`. Machine: {machine}.\n"
     );
     let Some(ik) = ik else {
         let _ = writeln!(s, "No results: run `cargo bench --bench ik`.");
@@ -95,7 +100,7 @@ mod tests {
 
     #[test]
     fn without_results_the_section_says_which_command_to_run() {
-        let s = ik_section(None);
+        let s = ik_section(None, "a machine");
         assert!(s.starts_with("\n## Inverse kinematics (plain build)\n"));
         assert!(s.ends_with("\nNo results: run `cargo bench --bench ik`.\n"));
     }
@@ -122,7 +127,7 @@ mod tests {
             }],
             ik_geo: String::new(),
         };
-        let s = ik_section(Some(&ik));
+        let s = ik_section(Some(&ik), "a machine");
         assert!(s.contains("\n| UR5 | 400 | 440 | 1.10 | 200 | n/a | 800 | 4.00 | 250 | 300 |\n"), "{s}");
         assert!(s.contains("\n| UR5 | 0/1/2/3/4/5/6 | 0/7/8/0/0/0/0 |\n"), "{s}");
         assert!(s.contains("\n| Panda | 25.0 us | n/a | n/a | 99.8% (499 of 500) | 60.0% (300 of 500) |\n"), "{s}");

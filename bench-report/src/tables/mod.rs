@@ -12,7 +12,7 @@ use std::fmt::Write as _;
 use crate::read::Row;
 
 pub use fk::run_sections;
-pub use ik::ik_section;
+pub use ik::{IK_HEADING, ik_section};
 pub use plain_native::plain_against_native;
 
 /// A figure in ns: two decimals under 10, else none; `n/a` when not measured.

@@ -356,7 +356,7 @@ impl ExprGraph {
     /// folds only when it is finite: a zero divisor stays for the run time to show.
     pub fn div(&mut self, a: ExprId, b: ExprId) -> ExprId {
         match (self.as_const(a), self.as_const(b)) {
-            (_, Some(y)) if y == 0.0 => return self.intern(Node::Div(a, b)),
+            (_, Some(0.0)) => return self.intern(Node::Div(a, b)),
             (Some(x), Some(y)) if (x / y).is_finite() => return self.constant(x / y),
             (_, Some(1.0)) => return a,
             (_, Some(-1.0)) => return self.neg(a),

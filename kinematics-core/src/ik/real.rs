@@ -171,7 +171,6 @@ pub fn splat_pose<L: crate::lanes::Lanes<Scalar = f64>>(pose: &crate::pose::Pose
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::lanes::Lanes;
 
     #[test]
     fn branch_signs_agree_in_every_form() {
@@ -191,11 +190,11 @@ mod tests {
         let y = F64x8::new(values);
         let x = F64x8::new([1.0, -1.0, -0.0, 2.0, 0.5, -1e-10, 3.0, -0.25]);
         let (roots, angles, picked) = (y.sqrt(), y.atan2(x), (y - F64x8::splat(1.0)).if_positive(y, x));
-        for i in 0..8 {
+        for (i, &value) in values.iter().enumerate() {
             let same = |a: f64, b: f64| a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan());
-            assert!(same(roots.lane(i), IkReal::sqrt(values[i])), "sqrt lane {i}");
-            assert!(same(angles.lane(i), IkReal::atan2(values[i], x.lane(i))), "atan2 lane {i}");
-            assert!(same(picked.lane(i), (values[i] - 1.0).if_positive(values[i], x.lane(i))), "select lane {i}");
+            assert!(same(roots.lane(i), IkReal::sqrt(value)), "sqrt lane {i}");
+            assert!(same(angles.lane(i), IkReal::atan2(value, x.lane(i))), "atan2 lane {i}");
+            assert!(same(picked.lane(i), (value - 1.0).if_positive(value, x.lane(i))), "select lane {i}");
         }
     }
 }

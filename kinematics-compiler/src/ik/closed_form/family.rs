@@ -48,14 +48,10 @@ pub(super) fn branch(b: &mut Builder, family: IkFamily, problem: &Problem<'_>) -
     let [s1, s2, s3] = problem.signs;
     let branch = match family {
         IkFamily::ThreeParallelTwoIntersecting => three_parallel_two_intersecting(b, &arm, &r06, v0, [s1, s2, s3]),
-        IkFamily::SphericalTwoParallel => spherical_two_parallel(b, &arm, problem.six, &r06, v0, [s1, s2, s3]),
-        IkFamily::SphericalFirstTwoIntersecting => {
-            spherical_first_two_intersecting(b, &arm, problem.six, &r06, v0, [s1, s2, s3])
-        }
-        IkFamily::SphericalLastTwoIntersecting => {
-            spherical_last_two_intersecting(b, &arm, problem.six, &r06, v0, [s1, s2, s3])
-        }
-        IkFamily::SphericalPrismaticThird => spherical_prismatic_third(b, &arm, problem.six, &r06, v0, [s1, s2, s3]),
+        IkFamily::SphericalTwoParallel => spherical_two_parallel(b, &arm, &r06, v0, [s1, s2, s3]),
+        IkFamily::SphericalFirstTwoIntersecting => spherical_first_two_intersecting(b, &arm, &r06, v0, [s1, s2, s3]),
+        IkFamily::SphericalLastTwoIntersecting => spherical_last_two_intersecting(b, &arm, &r06, v0, [s1, s2, s3]),
+        IkFamily::SphericalPrismaticThird => spherical_prismatic_third(b, &arm, &r06, v0, [s1, s2, s3]),
         IkFamily::Spherical | IkFamily::ThreeParallel | IkFamily::Planar => return None,
     };
     Some(branch)
@@ -106,7 +102,6 @@ fn wrap(b: &mut Builder, x: ExprId) -> ExprId {
 fn spherical_wrist(
     b: &mut Builder,
     arm: &Arm,
-    six: &SixGeometry,
     r06: &Matrix,
     [q1, q2, q3]: [Turn; 3],
     quality: Quality,
@@ -124,7 +119,7 @@ fn spherical_wrist(
     let seen5 = b.mul_vector(r06, h[4]);
     let r36_h5 = back(b, seen5);
     let dot = |u: [f64; 3], v: [f64; 3]| u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
-    let axes = &six.axes;
+    let axes = &arm.axes;
     // Decided here, at compile time, as the run time decides it from the same constants.
     let orthogonal = dot(axes[3], axes[4]).abs() <= ORTHOGONAL && dot(axes[5], axes[4]).abs() <= ORTHOGONAL;
     let (q5, fifth) = if orthogonal {
@@ -154,14 +149,13 @@ fn spherical_wrist(
 fn spherical_branch(
     b: &mut Builder,
     arm: &Arm,
-    six: &SixGeometry,
     r06: &Matrix,
     arm_turns: [Turn; 3],
     slide: Option<ExprId>,
     quality: Quality,
     sign: ExprId,
 ) -> Branch {
-    let ([q4, q5, q6], quality) = spherical_wrist(b, arm, six, r06, arm_turns, quality, sign);
+    let ([q4, q5, q6], quality) = spherical_wrist(b, arm, r06, arm_turns, quality, sign);
     let [q1, q2, q3] = arm_turns;
     let turns = [q1, q2, q3, q4, q5, q6];
     let mut q = turns.map(|t| wrap(b, t.angle));
@@ -173,14 +167,7 @@ fn spherical_branch(
 
 /// Axes 2, 3 parallel (PUMA 560, IRB 120): `q1` by subproblem 4, `q3` by subproblem 3, `q2` by
 /// subproblem 1, then the wrist.
-fn spherical_two_parallel(
-    b: &mut Builder,
-    arm: &Arm,
-    six: &SixGeometry,
-    r06: &Matrix,
-    v0: Vector,
-    [s1, s2, s3]: [ExprId; 3],
-) -> Branch {
+fn spherical_two_parallel(b: &mut Builder, arm: &Arm, r06: &Matrix, v0: Vector, [s1, s2, s3]: [ExprId; 3]) -> Branch {
     let [h1, h2, h3, ..] = arm.h;
     let [_, p12, p23, p34, ..] = arm.p;
     let reach = b.vadd(p12, p23);
@@ -202,14 +189,13 @@ fn spherical_two_parallel(
     let quality = b.both(first, third);
     let quality = b.both(quality, second);
     let q1 = b.back(t1);
-    spherical_branch(b, arm, six, r06, [q1, q2, q3], None, quality, s3)
+    spherical_branch(b, arm, r06, [q1, q2, q3], None, quality, s3)
 }
 
 /// Axes 1, 2 meeting: `q3` by subproblem 3, `q1`, `q2` by subproblem 2, then the wrist.
 fn spherical_first_two_intersecting(
     b: &mut Builder,
     arm: &Arm,
-    six: &SixGeometry,
     r06: &Matrix,
     v0: Vector,
     [s1, s2, s3]: [ExprId; 3],
@@ -227,14 +213,13 @@ fn spherical_first_two_intersecting(
     b.step("q1, q2 by SP2", t1.nodes().into_iter().chain(q2.nodes()).chain(shoulder.nodes()));
     let quality = b.both(third, shoulder);
     let q1 = b.back(t1);
-    spherical_branch(b, arm, six, r06, [q1, q2, q3], None, quality, s3)
+    spherical_branch(b, arm, r06, [q1, q2, q3], None, quality, s3)
 }
 
 /// Axes 2, 3 meeting: `q1` by subproblem 3, `q2`, `q3` by subproblem 2, then the wrist.
 fn spherical_last_two_intersecting(
     b: &mut Builder,
     arm: &Arm,
-    six: &SixGeometry,
     r06: &Matrix,
     v0: Vector,
     [s1, s2, s3]: [ExprId; 3],
@@ -250,7 +235,7 @@ fn spherical_last_two_intersecting(
     b.step("q2, q3 by SP2", t2.nodes().into_iter().chain(q3.nodes()).chain(elbow.nodes()));
     let quality = b.both(first, elbow);
     let (q1, q2) = (b.back(t1), b.back(t2));
-    spherical_branch(b, arm, six, r06, [q1, q2, q3], None, quality, s3)
+    spherical_branch(b, arm, r06, [q1, q2, q3], None, quality, s3)
 }
 
 /// Axes 1, 2 meeting and joint 3 prismatic (the Stanford arm): the slide from the wrist
@@ -258,7 +243,6 @@ fn spherical_last_two_intersecting(
 fn spherical_prismatic_third(
     b: &mut Builder,
     arm: &Arm,
-    six: &SixGeometry,
     r06: &Matrix,
     v0: Vector,
     [s1, s2, s3]: [ExprId; 3],
@@ -290,7 +274,7 @@ fn spherical_prismatic_third(
     b.step("q1, q2 by SP2", t1.nodes().into_iter().chain(q2.nodes()).chain(shoulder.nodes()));
     let quality = b.both(reach, shoulder);
     let (q1, none) = (b.back(t1), b.zero_turn());
-    spherical_branch(b, arm, six, r06, [q1, q2, none], Some(slide), quality, s3)
+    spherical_branch(b, arm, r06, [q1, q2, none], Some(slide), quality, s3)
 }
 
 /// Axes 2, 3, 4 parallel and axes 5, 6 meeting (the UR family): `q1` by subproblem 4, `q5` by
