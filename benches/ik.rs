@@ -219,6 +219,15 @@ fn closed<R: Closed>(c: Option<&mut Criterion>) {
         })
     });
     group.finish();
+    record_pair(
+        R::NAME,
+        "nearest/all",
+        101,
+        2000,
+        INPUTS,
+        |i| R::nearest(&targets[i], &seeds[i]),
+        |i| R::all(&targets[i]),
+    );
 }
 
 /// The compiled body alone, on eight lanes, four and one, and the pose on lanes.
@@ -296,6 +305,37 @@ fn compiled<R: Compiled>(c: Option<&mut Criterion>) {
         })
     });
     group.finish();
+    // The lanes against the scalar loop, and the compiled tip_ik against the run-time family
+    // function it was compiled from (which measures nothing), in alternation.
+    let scalar = |i: usize| {
+        kinematics::dispatch(
+            #[inline(always)]
+            || {
+                for branch in 0..8 {
+                    black_box(R::branches(&targets[i], &branch_signs(branch)));
+                }
+            },
+        )
+    };
+    let eight = |i: usize| {
+        kinematics::dispatch(
+            #[inline(always)]
+            || black_box(R::branches(&lanes8[i], &BRANCH_SIGNS_8)),
+        )
+    };
+    let four = |i: usize| {
+        kinematics::dispatch(
+            #[inline(always)]
+            || {
+                for half in 0..2 {
+                    black_box(R::branches(&lanes4[i], &branch_signs_4(half)));
+                }
+            },
+        )
+    };
+    record_pair(R::NAME, "branches-scalar/branches-f64x8", 101, 2000, INPUTS, scalar, eight);
+    record_pair(R::NAME, "branches-f64x4/branches-f64x8", 101, 2000, INPUTS, four, eight);
+    record_pair(R::NAME, "solver/all", 101, 2000, INPUTS, |i| R::solver(&targets[i]), |i| R::all(&targets[i]));
 }
 
 /// One seven-joint robot's numeric solver and its `k` chain.
@@ -367,24 +407,51 @@ fn numeric<const N: usize>(c: Option<&mut Criterion>, robot: &Numeric<N>) {
         })
     });
     group.finish();
+    // k's solve over ours, in alternation on the same targets and seeds (20 of each a round).
+    record_pair(robot.name, "k-jacobian-ik/numeric", 51, 20, count, k_solve, |i| (robot.solve)(&targets[i], &seeds[i]));
+}
+
+/// Times `numerator` against `denominator` in alternation (`common::paired_ratio`), prints the
+/// ratio and records it in `target/criterion/kinematics-ik-paired.tsv` for `bench-report`
+/// (`robot, pair, ratio`), replacing the robot's last figure for that pair.
+fn record_pair<A, B>(
+    robot: &str,
+    pair: &str,
+    rounds: usize,
+    calls: usize,
+    inputs: usize,
+    numerator: impl FnMut(usize) -> A,
+    denominator: impl FnMut(usize) -> B,
+) {
+    if !common::selected(&format!("ik-{robot}/{pair}")) {
+        return; // a filtered run times the pairs of the groups it selects only
+    }
+    let ratio = common::paired_ratio(rounds, calls, inputs, numerator, denominator);
+    println!("ik-{robot}/{pair}: paired ratio {ratio:.3} (median of {rounds} alternating rounds)");
+    replace_record("kinematics-ik-paired.tsv", &format!("{robot}\t{pair}\t"), &format!("{ratio}\n"));
+}
+
+/// Writes `prefix` + `rest` as a line of `file` in criterion's directory, in place of the line
+/// that starts with `prefix`, if any.
+fn replace_record(file: &str, prefix: &str, rest: &str) {
+    let dir = common::criterion_dir();
+    let path = dir.join(file);
+    let kept: String = std::fs::read_to_string(&path)
+        .unwrap_or_default()
+        .lines()
+        .filter(|l| !l.starts_with(prefix))
+        .map(|l| format!("{l}\n"))
+        .collect();
+    let written = std::fs::create_dir_all(&dir).and_then(|()| std::fs::write(&path, format!("{kept}{prefix}{rest}")));
+    if let Err(e) = written {
+        eprintln!("cannot write {file} for bench-report: {e}");
+    }
 }
 
 /// Appends a numeric robot's success counts to `target/criterion/kinematics-ik.tsv` for
 /// `bench-report` (`robot, ours, k, targets`), replacing the robot's last line.
 fn record_success(robot: &str, ours: usize, theirs: usize, count: usize) {
-    let dir = common::criterion_dir();
-    let path = dir.join("kinematics-ik.tsv");
-    let kept: String = std::fs::read_to_string(&path)
-        .unwrap_or_default()
-        .lines()
-        .filter(|l| !l.starts_with(&format!("{robot}\t")))
-        .map(|l| format!("{l}\n"))
-        .collect();
-    let written = std::fs::create_dir_all(&dir)
-        .and_then(|()| std::fs::write(&path, format!("{kept}{robot}\t{ours}\t{theirs}\t{count}\n")));
-    if let Err(e) = written {
-        eprintln!("cannot write the success rates for bench-report: {e}");
-    }
+    replace_record("kinematics-ik.tsv", &format!("{robot}\t"), &format!("{ours}\t{theirs}\t{count}\n"));
 }
 
 /// A pose as the isometry of `k`'s own nalgebra version.

@@ -260,6 +260,9 @@ pub struct ClosedIk {
     pub pose8: Option<f64>,
     /// The compiled body's operations per branch, and the measure's (`kinematics expr --ik`).
     pub ops: Option<(String, String)>,
+    /// Paired ratios (`kinematics-ik-paired.tsv`): `nearest/all`, `branches-scalar/branches-f64x8`,
+    /// `branches-f64x4/branches-f64x8`, `solver/all`.
+    pub paired: BTreeMap<String, f64>,
 }
 
 /// One numeric robot's IK medians and success counts.
@@ -272,6 +275,8 @@ pub struct NumericIk {
     pub k: Option<f64>,
     /// Converged solves, ours and `k`'s, of how many targets (`kinematics-ik.tsv`).
     pub success: Option<(f64, f64, f64)>,
+    /// `k`'s solve over ours, timed in alternation (`k-jacobian-ik/numeric`).
+    pub paired: Option<f64>,
 }
 
 /// The results of `cargo bench --bench ik` and of `benches/ik-geo/run.sh`.
@@ -296,7 +301,8 @@ pub fn read_ik(root: &Path, criterion: &Path) -> Option<Ik> {
                 ["all", "nearest", "solver", "branches-f64x8", "branches-f64x4", "branches-scalar", "pose-f64x8"]
                     .map(|v| median_ns(criterion, &g, v));
             let ops = robot.and_then(|(file, base, tip)| ik_op_counts(root, file, base, tip));
-            ClosedIk { name, all, nearest, solver, lanes8, lanes4, scalar, pose8, ops }
+            let paired = ik_pairs(criterion, group);
+            ClosedIk { name, all, nearest, solver, lanes8, lanes4, scalar, pose8, ops, paired }
         })
         .collect();
     let numeric = NUMERIC
@@ -304,7 +310,8 @@ pub fn read_ik(root: &Path, criterion: &Path) -> Option<Ik> {
         .map(|(group, name)| {
             let g = format!("ik-{group}");
             let (ours, k) = (median_ns(criterion, &g, "numeric"), median_ns(criterion, &g, "k-jacobian-ik"));
-            NumericIk { name, ours, k, success: success(criterion, group) }
+            let paired = ik_pairs(criterion, group).get("k-jacobian-ik/numeric").copied();
+            NumericIk { name, ours, k, success: success(criterion, group), paired }
         })
         .collect();
     let ik_geo = std::fs::read_to_string(root.join("benches/ik-geo/RESULTS.md")).unwrap_or_default();
@@ -325,6 +332,17 @@ fn ik_op_counts(root: &Path, file: &str, base: &str, tip: &str) -> Option<(Strin
         format!("{}/{}/{}/{}/{}/{}/{}", c.sin_cos, c.mul, c.add, c.div, c.sqrt, c.atan2, c.select)
     };
     Some((cells(body.op_count()), cells(measure.op_count())))
+}
+
+/// One robot's paired ratios from `kinematics-ik-paired.tsv` (`robot, pair, ratio`), by pair.
+fn ik_pairs(criterion: &Path, robot: &str) -> BTreeMap<String, f64> {
+    let text = std::fs::read_to_string(criterion.join("kinematics-ik-paired.tsv")).unwrap_or_default();
+    text.lines()
+        .filter_map(|line| match line.split('\t').collect::<Vec<_>>()[..] {
+            [name, pair, ratio] if name == robot => Some((pair.to_owned(), ratio.parse().ok()?)),
+            _ => None,
+        })
+        .collect()
 }
 
 /// One numeric robot's success counts (`robot, ours, k, targets`), as the benchmark wrote them.

@@ -4,7 +4,6 @@
 //! are collected here and written next to criterion's results for `bench-report`.
 
 use std::hint::black_box;
-use std::time::Instant;
 
 use criterion::{BenchmarkGroup, measurement::WallTime};
 
@@ -55,80 +54,16 @@ impl Mode<'_, '_> {
         mut denominator: impl FnMut(usize) -> B,
     ) {
         let Mode::Measure(_, robot) = self else { return };
-        if !selected(&format!("{robot}/{name}")) {
+        if !crate::common::selected(&format!("{robot}/{name}")) {
             return; // a filtered run times the pairs of the robots it selects only
         }
         const ROUNDS: usize = 201;
-        let time = |f: &mut dyn FnMut(usize)| {
-            let start = Instant::now();
-            for k in 0..calls {
-                f(black_box(k % INPUTS));
-            }
-            start.elapsed().as_secs_f64()
-        };
-        let mut ratios: Vec<f64> = (0..ROUNDS)
-            .map(|round| {
-                let mut num = |i: usize| {
-                    black_box(numerator(i));
-                };
-                let mut den = |i: usize| {
-                    black_box(denominator(i));
-                };
-                if round % 2 == 0 {
-                    let n = time(&mut num);
-                    n / time(&mut den)
-                } else {
-                    let d = time(&mut den);
-                    time(&mut num) / d
-                }
-            })
-            .collect();
-        ratios.sort_by(f64::total_cmp);
-        let median = ratios[ROUNDS / 2];
+        let median = crate::common::paired_ratio(ROUNDS, calls, INPUTS, &mut numerator, &mut denominator);
         println!("{robot}/{name}: paired ratio {median:.3} (median of {ROUNDS} alternating rounds)");
         // A poisoned lock means another body panicked (the run fails anyway); its pairs are still
         // whole strings, so keep them rather than drop this one.
         PAIRED.lock().unwrap_or_else(std::sync::PoisonError::into_inner).push(format!("{robot}\t{name}\t{median}\n"));
     }
-}
-
-/// Criterion's filter, if it was given one: the first argument that is neither a flag nor the
-/// value of a flag that takes one.
-pub static FILTER: std::sync::LazyLock<Option<String>> = std::sync::LazyLock::new(|| {
-    const TAKES_VALUE: [&str; 16] = [
-        "--save-baseline",
-        "--baseline",
-        "--baseline-lenient",
-        "--load-baseline",
-        "--sample-size",
-        "--warm-up-time",
-        "--measurement-time",
-        "--nresamples",
-        "--noise-threshold",
-        "--confidence-level",
-        "--significance-level",
-        "--profile-time",
-        "--plotting-backend",
-        "--output-format",
-        "--color",
-        "--format",
-    ];
-    let mut args = std::env::args().skip(1);
-    while let Some(arg) = args.next() {
-        if TAKES_VALUE.contains(&arg.as_str()) {
-            args.next();
-        } else if !arg.starts_with('-') {
-            return Some(arg);
-        }
-    }
-    None
-});
-
-/// Whether a pair named `id` (`robot/numerator/denominator`) is timed in this run: always without
-/// a filter, else when the filter is part of its name (criterion's filters are regular
-/// expressions; a plain robot name such as `ur5` selects the same robots both ways).
-fn selected(id: &str) -> bool {
-    FILTER.as_deref().is_none_or(|filter| id.contains(filter))
 }
 
 /// Paired ratios of this run, written next to criterion's results for `bench-report`.

@@ -4,8 +4,9 @@
 //! (`kinematics-paired.tsv`: group, pair, ratio). The report finds criterion's medians by the
 //! group and benchmark names, so those names are the interface and never change.
 
+use crate::common::FILTER;
 use crate::common::criterion_dir;
-use crate::mode::{FILTER, PAIRED};
+use crate::mode::PAIRED;
 
 /// How this benchmark was compiled, for `bench-report`: a label (`KINEMATICS_BENCH_BUILD` when the
 /// command sets it, `native` or `baseline`; else `native` when the code may use AVX2, which a plain

@@ -8,7 +8,7 @@
 use std::fmt::Write as _;
 
 use super::fmt;
-use crate::read::{Ik, ratio};
+use crate::read::Ik;
 
 /// The line the inverse kinematics part starts with (after a blank line).
 pub const IK_HEADING: &str = "\n## Inverse kinematics (plain build)\n";
@@ -31,24 +31,41 @@ pub fn ik_section(ik: Option<&Ik>, machine: &str) -> String {
     };
     let _ = writeln!(
         s,
-        "| robot | every solution (`tip_ik`) | nearest (`tip_ik_nearest`) | nearest / all | compiled body, 8 lanes | \
-         4 lanes, 2 calls | scalar, 8 calls | scalar / 8 lanes | pose at q, 8 lanes | run-time family function |"
+        "| robot | every solution (`tip_ik`) | nearest (`tip_ik_nearest`) | compiled body, 8 lanes | 4 lanes, 2 calls | \
+         scalar, 8 calls | pose at q, 8 lanes | run-time family function |"
     );
-    let _ = writeln!(s, "|---|---|---|---|---|---|---|---|---|---|");
+    let _ = writeln!(s, "|---|---|---|---|---|---|---|---|");
     for r in &ik.closed {
         let _ = writeln!(
             s,
-            "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |",
+            "| {} | {} | {} | {} | {} | {} | {} | {} |",
             r.name,
             fmt(r.all),
             fmt(r.nearest),
-            fmt(ratio(r.nearest, r.all)),
             fmt(r.lanes8),
             fmt(r.lanes4),
             fmt(r.scalar),
-            fmt(ratio(r.scalar, r.lanes8)),
             fmt(r.pose8),
             fmt(r.solver)
+        );
+    }
+    let _ = writeln!(
+        s,
+        "\nPaired ratios (timed in alternation, the median of the rounds' ratios): the nearest solution against\n\
+         all, the scalar loop and the four-lane body against the eight-lane one, and the run-time family function\n\
+         against the compiled `tip_ik`.\n\n\
+         | robot | nearest / all | scalar / 8 lanes | 4 lanes / 8 lanes | family function / `tip_ik` |\n|---|---|---|---|---|"
+    );
+    for r in &ik.closed {
+        let pair = |name: &str| r.paired.get(name).map_or("n/a".to_owned(), |v| format!("{v:.2}"));
+        let _ = writeln!(
+            s,
+            "| {} | {} | {} | {} | {} |",
+            r.name,
+            pair("nearest/all"),
+            pair("branches-scalar/branches-f64x8"),
+            pair("branches-f64x4/branches-f64x8"),
+            pair("solver/all")
         );
     }
     let _ = writeln!(
@@ -67,7 +84,7 @@ pub fn ik_section(ik: Option<&Ik>, machine: &str) -> String {
     }
     let _ = writeln!(
         s,
-        "\n| robot | numeric solve | k Jacobian IK | k / ours | converged to 1e-10 (ours) | converged (k, same tolerance) |\n\
+        "\n| robot | numeric solve | k Jacobian IK | k / ours (paired) | converged to 1e-10 (ours) | converged (k, same tolerance) |\n\
          |---|---|---|---|---|---|"
     );
     for robot in &ik.numeric {
@@ -82,7 +99,7 @@ pub fn ik_section(ik: Option<&Ik>, machine: &str) -> String {
             robot.name,
             us(ours),
             us(k),
-            fmt(ratio(k, ours))
+            robot.paired.map_or("n/a".to_owned(), |v| format!("{v:.2}"))
         );
     }
     if ik.ik_geo.is_empty() {
@@ -118,17 +135,20 @@ mod tests {
                 scalar: Some(800.0),
                 pose8: Some(250.0),
                 ops: Some(("0/1/2/3/4/5/6".to_owned(), "0/7/8/0/0/0/0".to_owned())),
+                paired: [("nearest/all".to_owned(), 1.1)].into_iter().collect(),
             }],
             numeric: vec![NumericIk {
                 name: "Panda",
                 ours: Some(25_000.0),
                 k: None,
                 success: Some((499.0, 300.0, 500.0)),
+                paired: None,
             }],
             ik_geo: String::new(),
         };
         let s = ik_section(Some(&ik), "a machine");
-        assert!(s.contains("\n| UR5 | 400 | 440 | 1.10 | 200 | n/a | 800 | 4.00 | 250 | 300 |\n"), "{s}");
+        assert!(s.contains("\n| UR5 | 400 | 440 | 200 | n/a | 800 | 250 | 300 |\n"), "{s}");
+        assert!(s.contains("\n| UR5 | 1.10 | n/a | n/a | n/a |\n"), "{s}");
         assert!(s.contains("\n| UR5 | 0/1/2/3/4/5/6 | 0/7/8/0/0/0/0 |\n"), "{s}");
         assert!(s.contains("\n| Panda | 25.0 us | n/a | n/a | 99.8% (499 of 500) | 60.0% (300 of 500) |\n"), "{s}");
         assert!(s.ends_with("\nNo ik-geo results: run `bash benches/ik-geo/run.sh`.\n"), "{s}");

@@ -10,7 +10,7 @@
 //! joints that do not move the tip still), taken only when it lowers the error; `lambda` falls
 //! after a good step and rises after a rejected one.
 
-use super::solutions::pose_errors;
+use super::solutions::pose_errors_inline as pose_errors;
 use super::vector::{V3, dot, sub};
 use crate::kinematics::JointLimits;
 use crate::pose::Pose;
@@ -54,11 +54,12 @@ pub struct NumericSolution<const N: usize> {
 }
 
 /// The rotation vector (axis times angle) of the rotation `r`, accurate near 0 and near pi.
+#[inline(always)]
 fn rotation_vector(r: &[[f64; 3]; 3]) -> V3 {
     let vee = [r[2][1] - r[1][2], r[0][2] - r[2][0], r[1][0] - r[0][1]];
     let sine2 = libm::sqrt(dot(vee, vee)); // 2 sin(angle)
     let cosine2 = r[0][0] + r[1][1] + r[2][2] - 1.0; // 2 cos(angle)
-    let angle = libm::atan2(sine2, cosine2);
+    let angle = crate::trig::atan2(sine2, cosine2);
     if cosine2 > -1.0 {
         // Away from a half turn: the skew part gives the axis.
         let scale = if sine2 > 1e-300 { angle / sine2 } else { 0.5 };
@@ -90,6 +91,7 @@ fn rotation_vector(r: &[[f64; 3]; 3]) -> V3 {
 
 /// The error twist from `reached` to `target`: position difference, then rotation vector of
 /// `R_target R_reached^T`, both in the base frame.
+#[inline(always)]
 fn error_twist(reached: &Pose<f64>, target: &Pose<f64>) -> [f64; 6] {
     let p = sub(target.translation, reached.translation);
     let t = &target.rotation;
@@ -104,9 +106,13 @@ fn error_twist(reached: &Pose<f64>, target: &Pose<f64>) -> [f64; 6] {
 const STALL_STEPS: usize = 10;
 
 /// Solves `a x = b` for a symmetric positive definite `a` by Cholesky, in place; `false` if `a`
-/// is not positive definite (to rounding).
+/// is not positive definite (to rounding). Each pivot's reciprocal is taken once and multiplied
+/// by (a division takes several times a multiplication's latency, and the factorisation and the
+/// two substitutions would make `N (N + 3) / 2` of them).
 #[allow(clippy::needless_range_loop, reason = "a factorisation reads as the index arithmetic it is")]
+#[inline(always)]
 fn cholesky_solve<const N: usize>(a: &mut [[f64; N]; N], b: &mut [f64; N]) -> bool {
+    let mut inverse = [0.0; N];
     for j in 0..N {
         let mut d = a[j][j];
         for k in 0..j {
@@ -117,12 +123,13 @@ fn cholesky_solve<const N: usize>(a: &mut [[f64; N]; N], b: &mut [f64; N]) -> bo
         }
         let d = libm::sqrt(d);
         a[j][j] = d;
+        inverse[j] = 1.0 / d;
         for i in j + 1..N {
             let mut s = a[i][j];
             for k in 0..j {
                 s -= a[i][k] * a[j][k];
             }
-            a[i][j] = s / d;
+            a[i][j] = s * inverse[j];
         }
     }
     for i in 0..N {
@@ -130,18 +137,19 @@ fn cholesky_solve<const N: usize>(a: &mut [[f64; N]; N], b: &mut [f64; N]) -> bo
         for k in 0..i {
             s -= a[i][k] * b[k];
         }
-        b[i] = s / a[i][i];
+        b[i] = s * inverse[i];
     }
     for i in (0..N).rev() {
         let mut s = b[i];
         for k in i + 1..N {
             s -= a[k][i] * b[k];
         }
-        b[i] = s / a[i][i];
+        b[i] = s * inverse[i];
     }
     true
 }
 
+#[inline(always)]
 fn clamp<const N: usize>(q: &mut [f64; N], limits: &[JointLimits; N]) {
     for (value, l) in q.iter_mut().zip(limits) {
         // Infinite limits clamp nothing; the model keeps lower <= upper.
@@ -158,6 +166,7 @@ fn clamp<const N: usize>(q: &mut [f64; N], limits: &[JointLimits; N]) {
 /// would step past it held still (their rows and columns dropped), so the others still take the
 /// step the error asks of them rather than a clamped remnant; `None` if the system is singular.
 #[allow(clippy::needless_range_loop, reason = "rows and columns of one matrix, by index")]
+#[inline(always)]
 fn bounded_step<const N: usize>(
     a: &[[f64; N]; N],
     g: &[f64; N],
@@ -225,6 +234,10 @@ impl Seeds {
 /// generated tip pose and geometric Jacobian (`LOCAL_WORLD_ALIGNED`, one column per entry of
 /// `q`), the configuration kept within `limits`; restarts from deterministic seeds within the
 /// limits when a start does not converge. Returns the best configuration found.
+// Always inlined: the generated `tip_ik_numeric_with` calls it inside `dispatch`, and only code
+// inlined there is compiled for the CPU's widest instruction set (called, it ran the baseline's:
+// the pose and Jacobian's `sin_cos` two lanes wide instead of four or eight).
+#[inline(always)]
 pub fn levenberg_marquardt<const N: usize>(
     target: &Pose<f64>,
     seed: &[f64; N],
@@ -336,6 +349,7 @@ pub fn levenberg_marquardt<const N: usize>(
     best
 }
 
+#[inline(always)]
 fn dot6(e: &[f64; 6]) -> f64 {
     e.iter().map(|x| x * x).sum()
 }

@@ -295,6 +295,12 @@ impl RemEuclidTau for f64 {
 /// (`2 asin(|Ra - Rb|_F / sqrt 8)`, accurate for small angles, where the trace formula loses half
 /// the digits). Non-finite entries give infinity.
 pub fn pose_errors(a: &Pose<f64>, b: &Pose<f64>) -> (f64, f64) {
+    pose_errors_inline(a, b)
+}
+
+/// [`pose_errors`], always inlined (into the numeric solver's dispatched body).
+#[inline(always)]
+pub(crate) fn pose_errors_inline(a: &Pose<f64>, b: &Pose<f64>) -> (f64, f64) {
     let (distance2, frobenius2) = squared_differences(a, b);
     errors_of_squares(IkReal::sqrt(distance2), frobenius2, IkReal::sqrt(frobenius2 / 8.0))
 }
