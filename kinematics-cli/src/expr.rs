@@ -162,6 +162,24 @@ fn ik_text(
     Ok(out)
 }
 
+/// An operation count without the kinds it has none of (`3 multiplications, 1 atan2`).
+fn ik_count_text(count: &kinematics_compiler::OpCount) -> String {
+    let parts: Vec<String> = [
+        (count.sin_cos, "sin/cos pairs"),
+        (count.mul, "multiplications"),
+        (count.add, "additions"),
+        (count.div, "divisions"),
+        (count.sqrt, "square roots"),
+        (count.atan2, "atan2"),
+        (count.select, "selects"),
+    ]
+    .into_iter()
+    .filter(|(n, _)| *n > 0)
+    .map(|(n, what)| format!("{n} {what}"))
+    .collect();
+    if parts.is_empty() { "nothing".to_owned() } else { parts.join(", ") }
+}
+
 /// What the compiler emits for a plan: the straight-line body's subproblems with what each adds
 /// to the operations before it, and the measure's cost; or the run time's function it calls.
 fn emitted_ik_text(
@@ -190,14 +208,14 @@ fn emitted_ik_text(
     let steps = body.step_counts();
     let width = steps.iter().map(|(label, _)| label.len()).max().unwrap_or(0);
     for (label, count) in &steps {
-        out += &format!("  {label:<width$}  {count}\n");
+        out += &format!("  {label:<width$}  {}\n", ik_count_text(count));
     }
-    out += &format!("  {:<width$}  {}\n", "total", body.op_count());
+    out += &format!("  {:<width$}  {}\n", "total", ik_count_text(&body.op_count()));
     let pose = kinematics_compiler::compile(tree, &kinematics_compiler::Request::tip(&plan.tip).with_base(&plan.base))?;
     out += &match kinematics_compiler::ik::Measure::of(&pose) {
         Some(measure) => format!(
             "measure: the generated pose at each joint's cosine and sine from the solver, per branch: {}\n",
-            measure.op_count()
+            ik_count_text(&measure.op_count())
         ),
         None => "measure: the generated pose at q (an angle of the chain is no sum of joint values)\n".to_owned(),
     };

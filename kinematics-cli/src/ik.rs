@@ -141,8 +141,20 @@ fn rows<const N: usize, const M: usize>(
         .collect()
 }
 
-/// The family's core solver on the plan's geometry, each solution measured by `forward`.
+/// The plan's solutions, as the derived code computes them: for a family the compiler composes,
+/// its body (the expressions `tip_ik` runs, evaluated branch by branch as the generated `f64` code
+/// computes them), else the family's core solver on the plan's geometry; each solution measured
+/// by `forward`.
 pub fn solve(plan: &IkPlan, target: &Pose<f64>, forward: &dyn Fn(&[f64]) -> Pose<f64>) -> Vec<Solution> {
+    if let Some(body) = kinematics_compiler::ik::IkBody::of(plan) {
+        return (0..plan.family.max_solutions())
+            .map(|branch| {
+                let value = body.eval(target, branch);
+                let (position_error, rotation_error) = kinematics::ik::pose_errors(&forward(&value.q), target);
+                Solution { q: value.q, exact: value.exact, singular: value.singular, position_error, rotation_error }
+            })
+            .collect();
+    }
     match &plan.geometry {
         IkGeometry::Six(six) => {
             let arm = Arm6 { axes: six.axes, offsets: six.offsets, tool_rotation: six.tool_rotation };
