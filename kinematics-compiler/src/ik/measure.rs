@@ -14,7 +14,7 @@ use quote::{format_ident, quote};
 
 use crate::emit::straight_line;
 use crate::request::Compiled;
-use crate::simplify::linear_form;
+use crate::simplify::{linear_form, sum_formula};
 use crate::stats::{OpCount, reachable};
 use crate::symbolic::graph::{ExprGraph, ExprId, Node};
 
@@ -93,15 +93,6 @@ fn sin_cos_of(g: &mut ExprGraph, angle: ExprId, dof: usize) -> Option<(ExprId, E
         Some(so_far) if constant == 0.0 => so_far,
         Some(so_far) => sum_formula(g, so_far, constant_sc),
     })
-}
-
-/// `(sin, cos)` of `x + y` from those of `x` and `y`.
-fn sum_formula(g: &mut ExprGraph, (sx, cx): (ExprId, ExprId), (sy, cy): (ExprId, ExprId)) -> (ExprId, ExprId) {
-    let (a, b) = (g.mul(sx, cy), g.mul(cx, sy));
-    let sin = g.add(a, b);
-    let (c, d) = (g.mul(cx, cy), g.mul(sx, sy));
-    let cos = g.sub(c, d);
-    (sin, cos)
 }
 
 /// The generic function computing the tip's pose from `q` (for prismatic joints) and every

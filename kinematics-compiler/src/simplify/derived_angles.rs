@@ -115,7 +115,11 @@ fn difference(a: &Terms, b: &Terms) -> Option<Terms> {
 }
 
 /// `(sin, cos)` of `x + y` from those of `x` and `y`.
-fn sum_formula(g: &mut ExprGraph, (sx, cx): (ExprId, ExprId), (sy, cy): (ExprId, ExprId)) -> (ExprId, ExprId) {
+pub(crate) fn sum_formula(
+    g: &mut ExprGraph,
+    (sx, cx): (ExprId, ExprId),
+    (sy, cy): (ExprId, ExprId),
+) -> (ExprId, ExprId) {
     let (a, b) = (g.mul(sx, cy), g.mul(cx, sy));
     let sin = g.add(a, b);
     let (c, d) = (g.mul(cx, cy), g.mul(sx, sy));

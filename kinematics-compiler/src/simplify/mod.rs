@@ -82,7 +82,7 @@ pub use angle_sum::ANGLE_SUM;
 pub use constant::CONSTANT_ROTATIONS;
 pub use cross_column::CROSS_COLUMN;
 pub use derived_angles::DERIVED_ANGLES;
-pub(crate) use derived_angles::{DERIVATION_COST, angle_terms, linear_form};
+pub(crate) use derived_angles::{DERIVATION_COST, angle_terms, linear_form, sum_formula};
 pub use factor::COMMON_FACTOR;
 pub use merge::{AXIS_SIGN, COMBINE_TRANSLATIONS, MERGE_ROTATIONS};
 pub use quarter_turn::{PUSH_QUARTER_TURNS, QUARTER_TURN};

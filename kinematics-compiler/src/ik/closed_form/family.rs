@@ -144,6 +144,21 @@ fn spherical_wrist(
     ([q4, q5, q6], quality)
 }
 
+/// The elbow of an arm whose third joint turns the forearm `p34` about `h3` at the end of the
+/// upper arm `p23`: `q3` by subproblem 3 (the forearm's end at `distance` squared from the
+/// elbow's base), recorded as a step, and the vector from the base of `p23` to the forearm's end.
+fn elbow(b: &mut Builder, arm: &Arm, distance: ExprId, sign: ExprId) -> (Turn, Quality, Vector) {
+    let [_, _, h3, ..] = arm.h;
+    let [_, _, p23, p34, ..] = arm.p;
+    let minus_one = b.constant(-1.0);
+    let back23 = b.scale(p23, minus_one);
+    let (q3, third) = b.rotation_to_distance(h3, p34, back23, distance, sign);
+    b.step("q3 by SP3", q3.nodes().into_iter().chain(third.nodes()));
+    let turned = b.rotate(q3, h3, p34);
+    let forearm = b.vadd(p23, turned);
+    (q3, third, forearm)
+}
+
 /// A spherical-wrist branch as joint values: every angle wrapped, `slide` in place of `q3` for
 /// a prismatic third joint.
 fn spherical_branch(
@@ -168,7 +183,7 @@ fn spherical_branch(
 /// Axes 2, 3 parallel (PUMA 560, IRB 120): `q1` by subproblem 4, `q3` by subproblem 3, `q2` by
 /// subproblem 1, then the wrist.
 fn spherical_two_parallel(b: &mut Builder, arm: &Arm, r06: &Matrix, v0: Vector, [s1, s2, s3]: [ExprId; 3]) -> Branch {
-    let [h1, h2, h3, ..] = arm.h;
+    let [h1, h2, ..] = arm.h;
     let [_, p12, p23, p34, ..] = arm.p;
     let reach = b.vadd(p12, p23);
     let reach = b.vadd(reach, p34);
@@ -178,12 +193,7 @@ fn spherical_two_parallel(b: &mut Builder, arm: &Arm, r06: &Matrix, v0: Vector, 
     let turned = b.rotate(t1, h1, v0);
     let v1 = b.vsub(turned, p12);
     let distance = b.norm_squared(v1);
-    let minus_one = b.constant(-1.0);
-    let back23 = b.scale(p23, minus_one);
-    let (q3, third) = b.rotation_to_distance(h3, p34, back23, distance, s2);
-    b.step("q3 by SP3", q3.nodes().into_iter().chain(third.nodes()));
-    let elbow = b.rotate(q3, h3, p34);
-    let forearm = b.vadd(p23, elbow);
+    let (q3, third, forearm) = elbow(b, arm, distance, s2);
     let (q2, second) = b.rotation_onto(h2, forearm, v1);
     b.step("q2 by SP1", q2.nodes().into_iter().chain(second.nodes()));
     let quality = b.both(first, third);
@@ -200,15 +210,9 @@ fn spherical_first_two_intersecting(
     v0: Vector,
     [s1, s2, s3]: [ExprId; 3],
 ) -> Branch {
-    let [h1, h2, h3, ..] = arm.h;
-    let [_, _, p23, p34, ..] = arm.p;
+    let [h1, h2, ..] = arm.h;
     let distance = b.norm_squared(v0);
-    let minus_one = b.constant(-1.0);
-    let back23 = b.scale(p23, minus_one);
-    let (q3, third) = b.rotation_to_distance(h3, p34, back23, distance, s1);
-    b.step("q3 by SP3", q3.nodes().into_iter().chain(third.nodes()));
-    let elbow = b.rotate(q3, h3, p34);
-    let u = b.vadd(p23, elbow);
+    let (q3, third, u) = elbow(b, arm, distance, s1);
     let (t1, q2, shoulder) = b.two_rotations(h1, v0, h2, u, s2);
     b.step("q1, q2 by SP2", t1.nodes().into_iter().chain(q2.nodes()).chain(shoulder.nodes()));
     let quality = b.both(third, shoulder);
@@ -320,7 +324,7 @@ fn parallel_elbow(
     sign: ExprId,
 ) -> Branch {
     let [h1, h, h3, h4, h5, h6] = arm.h;
-    let [_, p12, p23, p34, p45, p56, _] = arm.p;
+    let [_, p12, _, _, p45, p56, _] = arm.p;
     let (sign3, sign4) = (b.dot(h, h3), b.dot(h, h4));
     // A direction across `h`, rotated by the sum of the parallel joints' angles.
     let across = b.cross(h, h5);
@@ -344,12 +348,7 @@ fn parallel_elbow(
     let wrist = b.rotate(sum, h, wrist);
     let v = b.vsub(v1, wrist);
     let distance = b.norm_squared(v);
-    let minus_one = b.constant(-1.0);
-    let back23 = b.scale(p23, minus_one);
-    let (q3, third) = b.rotation_to_distance(h3, p34, back23, distance, sign);
-    b.step("q3 by SP3", q3.nodes().into_iter().chain(third.nodes()));
-    let elbow = b.rotate(q3, h3, p34);
-    let forearm = b.vadd(p23, elbow);
+    let (q3, third, forearm) = elbow(b, arm, distance, sign);
     let (q2, second) = b.rotation_onto(h, forearm, v);
     b.step("q2 by SP1", q2.nodes().into_iter().chain(second.nodes()));
     // q4 = sign4 (sum - q2 - sign3 q3), its cosine and sine by the angle-sum formulas (the signs
