@@ -111,3 +111,29 @@ fn one_sin_cos_call_for_every_angle_comes_first() {
     }
     assert!(checked >= 12, "only {checked} robots found");
 }
+
+/// A closed form's body (one branch, for any `IkReal` scalar) and its measure, as the derive emits
+/// them beside the robot's other functions.
+fn ik_source(file: &str, tip: &str) -> String {
+    let tree = common::robot(file);
+    let base = tree.link(tree.root()).name.clone();
+    let plan = kinematics_compiler::ik::classify(&tree, &base, tip).unwrap();
+    let body = kinematics_compiler::ik::IkBody::of(&plan).expect("a composed family");
+    let private = quote::quote!(::kinematics::__private);
+    let mut tokens = kinematics_compiler::ik::emit::emit_branch_body(&body, &private, " One branch.");
+    let pose = compile(&tree, &Request::tip(tip).with_base(&base)).unwrap();
+    if let Some(measure) = kinematics_compiler::ik::Measure::of(&pose) {
+        tokens.extend(kinematics_compiler::ik::measure::emit_measure(&measure, &private, tip, &base));
+    }
+    prettyplease::unparse(&syn::parse2(tokens).unwrap())
+}
+
+#[test]
+fn ur5_urdf_ik_branch_and_measure() {
+    insta::assert_snapshot!(ik_source("ur5.urdf", "tool0"));
+}
+
+#[test]
+fn stanford_arm_ik_branch_and_measure() {
+    insta::assert_snapshot!(ik_source("stanford_arm.toml", "link6"));
+}
