@@ -174,10 +174,10 @@ fn write_random_robots(out: &Path) -> Result<(), Box<dyn std::error::Error>> {
             format!("/// `random/{}` ({}).\n#[derive(Debug)]\npub struct {ty};\n{tokens}\n", robot.file, robot.shape);
         code += &item;
         let tips = robot.tips.len();
-        // Every sixth robot also gets its batch and lane-type functions checked (each is the whole
-        // robot again, on a lane type and, dispatched, once per instruction set: checking all of
-        // them took most of CI's compile time).
-        let lanes_checked = index % 6 == 0;
+        // Every robot's batch and lane-type functions are checked too: each is the whole robot
+        // again, on a lane type and, dispatched, once per instruction set. Unoptimised (see the
+        // workspace's profiles) that is about two minutes of compile time; optimised, checking
+        // only every sixth robot's took most of CI's.
         let typed = |on: bool, suffix: &str, t: &str| {
             if !on {
                 return "None".to_owned();
@@ -203,7 +203,6 @@ fn write_random_robots(out: &Path) -> Result<(), Box<dyn std::error::Error>> {
                 _ => (format!("Some(|q| {ty}::tip_poses{suffix}(arr(q)).to_vec())"), position("tip_positions")),
             };
             let tip_batch = match tips {
-                _ if !lanes_checked => "None".to_owned(),
                 0 => "None".to_owned(),
                 1 => format!(
                     "Some(|qs| batch(qs, {ty}::tip_pose_batch{suffix}).map(|v| v.into_iter().map(|p| vec![p]).collect()))"
@@ -213,21 +212,14 @@ fn write_random_robots(out: &Path) -> Result<(), Box<dyn std::error::Error>> {
                 ),
             };
             let tip_lanes = match tips {
-                _ if !lanes_checked => "None".to_owned(),
                 0 => "None".to_owned(),
                 1 => format!("Some(|qs| lanes::<{lanes}, _, _>(qs, |q| [{ty}::tip_pose_generic(q)]))"),
                 _ => format!("Some(|qs| lanes::<{lanes}, _, _>(qs, {ty}::tip_poses_generic))"),
             };
-            let (link_batch, link_lanes) = if lanes_checked {
-                (
-                    format!(
-                        "Some(|qs| batch(qs, {ty}::link_poses_batch{suffix}).map(|v| v.into_iter().map(|p| p.to_vec()).collect()))"
-                    ),
-                    format!("Some(|qs| lanes::<{lanes}, _, _>(qs, {ty}::link_poses_generic))"),
-                )
-            } else {
-                ("None".to_owned(), "None".to_owned())
-            };
+            let link_batch = format!(
+                "|qs| batch(qs, {ty}::link_poses_batch{suffix}).map(|v| v.into_iter().map(|p| p.to_vec()).collect())"
+            );
+            let link_lanes = format!("|qs| lanes::<{lanes}, _, _>(qs, {ty}::link_poses_generic)");
             format!(
                 "Some(Typed::<{t}> {{ link_poses: |q| {ty}::link_poses{suffix}(arr(q)).to_vec(), link_positions: {}, tip_poses: {tip_poses}, tip_positions: {tip_positions}, link_poses_batch: {link_batch}, tip_poses_batch: {tip_batch}, link_poses_lanes: {link_lanes}, tip_poses_lanes: {tip_lanes} }})",
                 position("link_positions")

@@ -106,13 +106,13 @@ pub struct Typed<T: 'static> {
     pub tip_poses: Option<PosesFn<T>>,
     /// `tip_position` or `tip_positions`.
     pub tip_positions: Option<PositionsFn<T>>,
-    /// `link_poses_batch` over the configurations given (any number); on every sixth robot.
-    pub link_poses_batch: Option<BatchFn<T>>,
+    /// `link_poses_batch` over the configurations given (any number).
+    pub link_poses_batch: BatchFn<T>,
     /// `tip_pose(s)_batch`.
     pub tip_poses_batch: Option<BatchFn<T>>,
     /// `link_poses_generic` on the lane type (`F64x4`, `F32x8`): exactly one lane's worth of
-    /// configurations; on every sixth robot.
-    pub link_poses_lanes: Option<LanesFn<T>>,
+    /// configurations.
+    pub link_poses_lanes: LanesFn<T>,
     /// `tip_pose(s)_generic` on the lane type.
     pub tip_poses_lanes: Option<LanesFn<T>>,
 }

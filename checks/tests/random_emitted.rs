@@ -375,15 +375,13 @@ fn check_batches_and_lanes(robot: &RandomRobot, tree: &KinematicTree, faults: &m
         qs: &[Vec<T>],
         faults: &mut Faults,
     ) {
-        if let (Some(batch), Some(lanes_fn)) = (f.link_poses_batch, f.link_poses_lanes) {
-            match batch(qs) {
-                Ok(got) => compare(&format!("link_poses_batch{suffix}"), f.link_poses, qs, &got, faults),
-                Err(e) => faults.fail(format!("link_poses_batch{suffix} fails: {e}")),
-            }
-            for chunk in qs.chunks_exact(lanes) {
-                let got = lanes_fn(chunk);
-                compare(&format!("link_poses_generic ({lanes} lanes)"), f.link_poses, chunk, &got, faults);
-            }
+        match (f.link_poses_batch)(qs) {
+            Ok(got) => compare(&format!("link_poses_batch{suffix}"), f.link_poses, qs, &got, faults),
+            Err(e) => faults.fail(format!("link_poses_batch{suffix} fails: {e}")),
+        }
+        for chunk in qs.chunks_exact(lanes) {
+            let got = (f.link_poses_lanes)(chunk);
+            compare(&format!("link_poses_generic ({lanes} lanes)"), f.link_poses, chunk, &got, faults);
         }
         if let (Some(batch), Some(lanes_fn), Some(typed)) = (f.tip_poses_batch, f.tip_poses_lanes, f.tip_poses) {
             match batch(qs) {
@@ -399,12 +397,12 @@ fn check_batches_and_lanes(robot: &RandomRobot, tree: &KinematicTree, faults: &m
     let mut checked = 0;
     if let Some(f) = &robot.f64 {
         one("", 4, f, &qs, faults);
-        checked += usize::from(f.link_poses_batch.is_some());
+        checked += 1;
     }
     if let Some(f) = &robot.f32 {
         let q32: Vec<Vec<f32>> = qs.iter().map(|q| q.iter().map(|&x| x as f32).collect()).collect();
         one("_f32", 8, f, &q32, faults);
-        checked += usize::from(f.link_poses_batch.is_some());
+        checked += 1;
     }
     checked
 }
