@@ -41,33 +41,16 @@ struct Irb120;
 struct Puma560;
 
 // A general spherical-wrist arm: axes 1, 2, 3 skew (offsets along both common normals, a twist
-// that is no quarter turn), a spherical wrist. Made up for the family; no maker's arm.
+// that is no quarter turn), a spherical wrist. Made up for the family (`tests/arms/`); no maker's
+// arm.
 #[derive(Kinematics)]
-#[kinematics(dh(
-    convention = "standard",
-    //   joint    a      alpha    d      theta
-    row("j1",   0.15,  "pi/2",  0.40,   0.0),
-    row("j2",   0.45,   1.1,    0.12,   0.3),
-    row("j3",   0.05, "-pi/2",  0.08,  -0.2),
-    row("j4",   0.0,   "pi/2",  0.42,   0.0),
-    row("j5",   0.0,  "-pi/2",  0.0,    0.0),
-    row("j6",   0.0,    0.0,    0.09,   0.0),
-), tip = "link6", ik, jacobians)]
+#[kinematics(dh = "tests/arms/skew_spherical.toml", tip = "link6", ik, jacobians)]
 struct SkewSpherical;
 
 // Axes 2, 3, 4 parallel and axes 5 and 6 apart (a UR whose wrist has a common normal of 0.06 m
-// between its last two axes). Made up for the family.
+// between its last two axes). Made up for the family (`tests/arms/`).
 #[derive(Kinematics)]
-#[kinematics(dh(
-    convention = "standard",
-    //   joint    a       alpha    d        theta
-    row("j1",   0.0,    "pi/2",  0.089,    0.0),
-    row("j2",  -0.425,   0.0,    0.0,      0.0),
-    row("j3",  -0.392,   0.0,    0.0,      0.0),
-    row("j4",   0.0,    "pi/2",  0.109,    0.0),
-    row("j5",   0.06,  "-pi/2",  0.095,    0.0),
-    row("j6",   0.0,     0.0,    0.082,    0.0),
-), tip = "link6", ik, jacobians)]
+#[kinematics(dh = "tests/arms/offset_wrist_ur.toml", tip = "link6", ik, jacobians)]
 struct OffsetWristUr;
 
 /// The functions of one derived robot the checks call.
@@ -274,21 +257,44 @@ fn the_ur5_reference_vectors() {
     }
 }
 
-/// At a wrist singularity (the fifth joint at zero: axes 4 and 6 in line) every branch through it
-/// is a representative of a continuum, flagged singular, and still reaches the target.
+/// At a wrist singularity (the fifth joint at zero or a half turn: axes 4 and 6 in line) the
+/// branches through it are representatives of a continuum, flagged singular, and the target is
+/// still reached: from many configurations of every arm with a wrist (the UR's representative
+/// with `q6 = 0` leaves the elbow out of reach for about one in twenty-five of them, where the
+/// solver moves it), some exact singular solution reaches the target by its own errors and by
+/// the runtime reference, and every exact singular one has errors within `1e-12`.
 #[test]
 fn wrist_singularities_give_flagged_representatives() {
-    for arm in [arm!(Ur5, "tool0"), arm!(Irb120, "tool0"), arm!(Puma560, "link6")] {
+    let mut rng = Uniform(5);
+    for arm in [
+        arm!(Ur5, "tool0"),
+        arm!(Ur10e, "tool0"),
+        arm!(Ur5Dh, "wrist_3_link"),
+        arm!(Irb120, "tool0"),
+        arm!(Puma560, "link6"),
+    ] {
         let (name, pose, ik) = (arm.name, arm.pose, arm.ik);
-        for q in [[0.3, -1.2, 1.0, 0.4, 0.0, 2.0], [-0.5, 0.2, 0.6, -1.0, 0.0, 0.0], [0.0; 6]] {
+        let reference = (arm.reference)().expect("the reference loads");
+        let reach = reference.tree().reach();
+        let fixed = [[0.3, -1.2, 1.0, 0.4, 0.0, 2.0], [-0.5, 0.2, 0.6, -1.0, 0.0, 0.0], [0.0; 6]];
+        let random = (0..300).map(|i| {
+            let mut q = rng.within(&arm.limits);
+            q[4] = if i % 2 == 0 { 0.0 } else { std::f64::consts::PI };
+            q
+        });
+        for q in fixed.into_iter().chain(random) {
             let target = pose(&q);
             let solutions = ik(&target).expect("a pose");
-            let singular: Vec<_> = solutions.iter().filter(|s| s.singular).collect();
-            assert!(!singular.is_empty(), "{name}: {q:?}: {solutions:#?}");
-            for s in singular.iter().filter(|s| s.exact) {
+            let mut reached = false;
+            for s in solutions.iter().filter(|s| s.singular && s.exact) {
                 assert!(s.q.iter().all(|x| x.is_finite()));
-                assert!(s.position_error < 1e-12 && s.rotation_error < 1e-12, "{name}: {q:?}: {s:?}");
+                assert!(s.position_error < 1e-12 * reach && s.rotation_error < 1e-12, "{name}: {q:?}: {s:?}");
+                let by_reference = Pose::from(reference.link_pose(&s.q, arm.tip).expect("six finite values"));
+                let (position, rotation) = kinematics::ik::pose_errors(&by_reference, &target);
+                assert!(position < 1e-12 * reach && rotation < 1e-12, "{name}: {q:?}: {s:?} by the reference");
+                reached = true;
             }
+            assert!(reached, "{name}: {q:?}: no exact singular solution: {solutions:#?}");
         }
     }
 }
@@ -363,13 +369,27 @@ fn nearest_and_within_limits() {
     }
 }
 
-/// `tip_ik` takes nalgebra's isometries through `Pose::from`.
+/// Every solver takes nalgebra's isometries as they are (`kinematics::ik::IkTarget`), and answers
+/// them as it answers the same pose; an isometry holding NaN is refused like a pose holding it.
 #[test]
 fn isometry_targets() {
     let q = [0.3, -1.2, 1.0, 0.4, -0.7, 2.0];
     let iso: nalgebra::Isometry3<f64> = Ur5::tip_pose(&q).into();
-    let solutions = Ur5::tip_ik(&Pose::from(iso)).expect("a pose");
+    let solutions = Ur5::tip_ik(&iso).expect("a pose");
     assert!(solutions.exact().any(|s| angle_distance(&s.q, &q) < 1e-9));
+    let from_pose = Ur5::tip_ik(&Pose::from(iso)).expect("a pose");
+    assert_eq!(solutions.as_slice(), from_pose.as_slice());
+    let seed = [0.31, -1.19, 1.0, 0.4, -0.7, 2.0];
+    let nearest = Ur5::tip_ik_nearest(&iso, &seed).expect("a pose").expect("solutions");
+    assert!(angle_distance(&nearest.q, &q) < 1e-9, "{nearest:?}");
+    assert_eq!(Ur5::tip_ik_within_limits(&iso).expect("a pose").len(), solutions.len());
+    let iiwa_q = [0.3, -0.5, 0.2, 1.1, -0.4, 0.6, 0.1];
+    let iiwa_target: nalgebra::Isometry3<f64> = Iiwa14::tip_pose(&iiwa_q).into();
+    let numeric = Iiwa14::tip_ik_numeric(&iiwa_target, &[0.0; 7]).expect("a pose");
+    assert!(numeric.converged, "{numeric:?}");
+    let mut broken = iso;
+    broken.translation.vector.x = f64::NAN;
+    assert_eq!(Ur5::tip_ik(&broken).err(), Some(IkError::NonFinite));
     assert_eq!(Ur5::IK_FAMILY, "axes 2, 3, 4 parallel, axes 5 and 6 meet");
     assert_eq!(Irb120::IK_FAMILY, "spherical wrist, axes 2 and 3 parallel");
     assert_eq!(SkewSpherical::IK_FAMILY, "spherical wrist");

@@ -379,18 +379,18 @@ pub fn stub(input: &syn::DeriveInput, options: Option<&KinematicsInput>, known: 
             functions.push(quote! {
                 pub const IK_FAMILY: &'static str = "";
                 #attrs
-                pub fn tip_ik<#(#params),*>(target: &#p::Pose<f64> #free) -> #all { ::core::unreachable!(#message) }
+                pub fn tip_ik<#(#params),*>(target: &impl #p::ik::IkTarget #free) -> #all { ::core::unreachable!(#message) }
                 #attrs
-                pub fn tip_ik_within_limits<#(#params),*>(target: &#p::Pose<f64> #free) -> #all { ::core::unreachable!(#message) }
+                pub fn tip_ik_within_limits<#(#params),*>(target: &impl #p::ik::IkTarget #free) -> #all { ::core::unreachable!(#message) }
                 #attrs
-                pub fn tip_ik_nearest<#(#params),*>(target: &#p::Pose<f64>, seed: &[f64; #dof]) -> #one { ::core::unreachable!(#message) }
+                pub fn tip_ik_nearest<#(#params),*>(target: &impl #p::ik::IkTarget, seed: &[f64; #dof]) -> #one { ::core::unreachable!(#message) }
             });
         }
         functions.push(quote! {
             #attrs
-            pub fn tip_ik_numeric<#(#params),*>(target: &#p::Pose<f64>, seed: &[f64; #dof]) -> #numeric { ::core::unreachable!(#message) }
+            pub fn tip_ik_numeric<#(#params),*>(target: &impl #p::ik::IkTarget, seed: &[f64; #dof]) -> #numeric { ::core::unreachable!(#message) }
             #attrs
-            pub fn tip_ik_numeric_with<#(#params),*>(target: &#p::Pose<f64>, seed: &[f64; #dof], options: &#p::ik::NumericOptions) -> #numeric {
+            pub fn tip_ik_numeric_with<#(#params),*>(target: &impl #p::ik::IkTarget, seed: &[f64; #dof], options: &#p::ik::NumericOptions) -> #numeric {
                 ::core::unreachable!(#message)
             }
         });

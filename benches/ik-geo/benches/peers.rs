@@ -35,31 +35,15 @@ struct Irb120;
 #[kinematics(dh = "../../robots/puma560.toml", tip = "link6", ik)]
 struct Puma560;
 
-// The two families whose first step is a quartic, on the made-up arms `tests/ik.rs` checks them
-// on (no maker's arm in `robots/` is of either family): axes 1, 2, 3 skew with a spherical wrist,
+// The two families whose first step is a quartic, on the made-up arms of `tests/arms/` that
+// `tests/ik.rs` checks them on (no maker's arm in `robots/` is of either family): axes 1, 2, 3 skew with a spherical wrist,
 // and a UR whose last two axes are 0.06 m apart.
 #[derive(Kinematics)]
-#[kinematics(dh(
-    convention = "standard",
-    row("j1", 0.15, "pi/2", 0.40, 0.0),
-    row("j2", 0.45, 1.1, 0.12, 0.3),
-    row("j3", 0.05, "-pi/2", 0.08, -0.2),
-    row("j4", 0.0, "pi/2", 0.42, 0.0),
-    row("j5", 0.0, "-pi/2", 0.0, 0.0),
-    row("j6", 0.0, 0.0, 0.09, 0.0),
-), tip = "link6", ik)]
+#[kinematics(dh = "../../tests/arms/skew_spherical.toml", tip = "link6", ik)]
 struct SkewSpherical;
 
 #[derive(Kinematics)]
-#[kinematics(dh(
-    convention = "standard",
-    row("j1", 0.0, "pi/2", 0.089, 0.0),
-    row("j2", -0.425, 0.0, 0.0, 0.0),
-    row("j3", -0.392, 0.0, 0.0, 0.0),
-    row("j4", 0.0, "pi/2", 0.109, 0.0),
-    row("j5", 0.06, "-pi/2", 0.095, 0.0),
-    row("j6", 0.0, 0.0, 0.082, 0.0),
-), tip = "link6", ik)]
+#[kinematics(dh = "../../tests/arms/offset_wrist_ur.toml", tip = "link6", ik)]
 struct OffsetWristUr;
 
 /// Random configurations (and so poses) per robot.

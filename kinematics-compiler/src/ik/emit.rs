@@ -268,7 +268,8 @@ pub fn emit_ik(
 
         #[doc = #doc_all]
         #[inline]
-        pub fn tip_ik(target: &#p::Pose<f64> #free_param) -> #all {
+        pub fn tip_ik(target: &impl #p::ik::IkTarget #free_param) -> #all {
+            let target = &#p::ik::IkTarget::target_pose(target);
             #p::ik::check_target(target)?;
             #free_check
             // Dispatched (`__private::dispatch`): the measure's forward kinematics runs with the
@@ -281,13 +282,14 @@ pub fn emit_ik(
         /// The solutions of [`Self::tip_ik`] inside `JOINT_LIMITS`, each angle moved by a whole
         /// turn into its limits where that fits.
         #[inline]
-        pub fn tip_ik_within_limits(target: &#p::Pose<f64> #free_param) -> #all {
+        pub fn tip_ik_within_limits(target: &impl #p::ik::IkTarget #free_param) -> #all {
             ::core::result::Result::Ok(Self::tip_ik(target #free_arg)?.within_limits(&Self::JOINT_LIMITS, &#mask))
         }
 
         #[doc = #doc_nearest]
         #[inline]
-        pub fn tip_ik_nearest(target: &#p::Pose<f64>, seed: &[f64; #n]) -> #one {
+        pub fn tip_ik_nearest(target: &impl #p::ik::IkTarget, seed: &[f64; #n]) -> #one {
+            let target = &#p::ik::IkTarget::target_pose(target);
             #p::ik::check_seed(seed)?;
             #p::ik::check_target(target)?;
             #nearest_free
@@ -324,13 +326,14 @@ pub fn emit_numeric(
     quote! {
         #[doc = #doc]
         #[inline]
-        pub fn tip_ik_numeric(target: &#p::Pose<f64>, seed: &[f64; #n]) -> #result {
+        pub fn tip_ik_numeric(target: &impl #p::ik::IkTarget, seed: &[f64; #n]) -> #result {
             Self::tip_ik_numeric_with(target, seed, &#p::ik::NumericOptions::default())
         }
 
         /// [`Self::tip_ik_numeric`] with the tolerance, steps and restarts given.
         #[inline]
-        pub fn tip_ik_numeric_with(target: &#p::Pose<f64>, seed: &[f64; #n], options: &#p::ik::NumericOptions) -> #result {
+        pub fn tip_ik_numeric_with(target: &impl #p::ik::IkTarget, seed: &[f64; #n], options: &#p::ik::NumericOptions) -> #result {
+            let target = &#p::ik::IkTarget::target_pose(target);
             #p::ik::check_target(target)?;
             #p::ik::check_seed(seed)?;
             // Dispatched: the iteration's pose and Jacobian run with the widest instruction set

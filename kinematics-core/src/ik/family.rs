@@ -14,8 +14,8 @@
 
 use super::solutions::{IkSolution, IkSolutions};
 use super::subproblem::{
-    Quality, Turn, rotation_onto, rotation_to_distance, rotation_to_height, rotation_to_height_on_great_circle,
-    three_rotations, two_heights, two_rotations,
+    Quality, Turn, distance_range, rotation_onto, rotation_to_distance, rotation_to_height,
+    rotation_to_height_on_great_circle, three_rotations, two_heights, two_rotations,
 };
 use super::vector::{M3, V3, add, cross, dot, mul, mul_by_transpose, norm_squared, scale, sub, wrap};
 use crate::pose::Pose;
@@ -196,7 +196,7 @@ pub fn three_parallel_two_intersecting(arm: &Arm6, target: &Pose<f64>) -> IkSolu
         let w = super::vector::mul_transposed(&r06, t1.back().rotate(h1, h));
         let (q5s, fifth) = rotation_to_height(h, h5, h6, dot(w, h6));
         for q5 in q5s {
-            parallel_elbow(arm, &r06, v0, t1, q5, first.and(fifth), &mut out);
+            parallel_elbow(arm, &r06, v0, t1, q5, first.and(fifth), 0.0, &mut out);
         }
     }
     out
@@ -221,7 +221,9 @@ pub fn three_parallel(arm: &Arm6, target: &Pose<f64>) -> IkSolutions<6, 8> {
         [dot(h, add(add(p12, p23), add(p34, p45))), 0.0],
     );
     for &(t1, q5) in pairs.as_slice() {
-        parallel_elbow(arm, &r06, v0, t1, q5, pairs.quality, &mut out);
+        // The quartic finds a double root (the wrist singularity) to about 1e-8 rad only, short of
+        // the sixth subproblem's own test: near it, an elbow out of reach counts as singular.
+        parallel_elbow(arm, &r06, v0, t1, q5, pairs.quality, NEAR_SINGULAR_SIXTH, &mut out);
     }
     out
 }
@@ -230,7 +232,17 @@ pub fn three_parallel(arm: &Arm6, target: &Pose<f64>) -> IkSolutions<6, 8> {
 /// `q6` by subproblem 1, the sum `q2 + q3 + q4` (with the axes' signs) by subproblem 1, then the
 /// planar elbow: `q3` by subproblem 3, `q2` by subproblem 1, `q4` from the sum. Two branches.
 #[inline(always)]
-fn parallel_elbow(arm: &Arm6, r06: &M3, v0: V3, t1: Turn, q5: Turn, quality: Quality, out: &mut IkSolutions<6, 8>) {
+#[allow(clippy::too_many_arguments, reason = "the steps before it, and how near the singularity counts")]
+fn parallel_elbow(
+    arm: &Arm6,
+    r06: &M3,
+    v0: V3,
+    t1: Turn,
+    q5: Turn,
+    quality: Quality,
+    near_singular: f64,
+    out: &mut IkSolutions<6, 8>,
+) {
     let [h1, h, h3, h4, h5, h6] = arm.axes;
     let [_, p12, p23, p34, p45, p56, _] = arm.offsets;
     let (sign3, sign4) = (dot(h, h3), dot(h, h4));
@@ -240,18 +252,79 @@ fn parallel_elbow(arm: &Arm6, r06: &M3, v0: V3, t1: Turn, q5: Turn, quality: Qua
     // `h` seen from the tool flange: R16^T h.
     let w = super::vector::mul_transposed(r06, q1.rotate(h1, h));
     let v1 = sub(t1.rotate(h1, v0), p12);
-    let (t6, sixth) = rotation_onto(h6, q5.back().rotate(h5, h), w);
+    let seen = q5.back().rotate(h5, h);
+    let (t6, sixth) = rotation_onto(h6, seen, w);
     let turned = t1.rotate(h1, mul(r06, t6.rotate(h6, q5.back().rotate(h5, across))));
     let (sum, summed) = rotation_onto(h, across, turned);
-    let v = sub(v1, sum.rotate(h, add(p45, q5.rotate(h5, p56))));
+    // The wrist's offset from the end of the forearm, turned with the sum.
+    let u = add(p45, q5.rotate(h5, p56));
+    let near = sixth.singular || norm_squared(cross(h6, seen)) <= near_singular * near_singular * norm_squared(seen);
+    let free = if near { free_sixth(arm, v1, u, sum, dot(h6, seen)) } else { None };
+    let (sum, q6, sixth) = match free {
+        Some((sum, moved)) => (sum, -t6.angle + moved.angle, Quality { exact: sixth.exact, singular: true }),
+        None => (sum, -t6.angle, sixth),
+    };
+    let v = sub(v1, sum.rotate(h, u));
     let (q3s, third) = rotation_to_distance(h3, p34, scale(p23, -1.0), norm_squared(v));
     for q3 in q3s {
         let (q2, second) = rotation_onto(h, add(p23, q3.rotate(h3, p34)), v);
         let q4 = sign4 * (sum.angle - q2.angle - sign3 * q3.angle);
         let all = quality.and(sixth).and(summed).and(third).and(second);
-        let q = [q1.angle, q2.angle, q3.angle, q4, q5.angle, -t6.angle];
+        let q = [q1.angle, q2.angle, q3.angle, q4, q5.angle, q6];
         out.push(IkSolution::unmeasured(q.map(wrap), all.exact, all.singular));
     }
+}
+
+/// How near the wrist's singularity (the sine of the angle between axis 6 and the parallel axes,
+/// as joint 5 turns them) the three-parallel arm's branches count as at it when the sum that the
+/// sixth joint's angle gives leaves the elbow out of reach: its quartic finds the double root
+/// there to about 1e-8 rad, short of the subproblem's `DEGENERATE`, and the sixth angle of such a
+/// root is noise. The branch is then flagged singular, and its errors (up to about this times
+/// the sixth angle's move, in rad) are measured like any other's.
+pub const NEAR_SINGULAR_SIXTH: f64 = 1e-6;
+
+/// The sum `q2 + q3 + q4` and `q6` at the wrist's singularity, where axis 6 is in line with the
+/// parallel axes (`R5^T h = e h6`, `e = +-1`: `seen_along`, the cosine between them): the rotation
+/// then fixes only `sum + e q6`, and the sum found with `q6 = 0` is one representative. The
+/// wrist's offset `u` turns with the sum, and the elbow must reach what it leaves (`v1 - rot(h,
+/// sum) u`), so where `q6 = 0` leaves the elbow out of reach the sum moves: to where the elbow's
+/// squared distance is the middle of what both the elbow and the turning offset can reach (so
+/// neither is at its limit), the root of that equation (subproblem 4) nearest the sum found, and
+/// `q6` takes up the difference: the new sum, and the turn to add to `q6`. `None` where the sum
+/// found serves, or where the offset has no part across the axes (the distance does not change
+/// with the sum).
+#[inline(always)]
+fn free_sixth(arm: &Arm6, v1: V3, u: V3, sum: Turn, seen_along: f64) -> Option<(Turn, Turn)> {
+    let [_, h, h3, ..] = arm.axes;
+    let [_, _, p23, p34, ..] = arm.offsets;
+    let back23 = scale(p23, -1.0);
+    let (_, reached) = rotation_to_distance(h3, p34, back23, norm_squared(sub(v1, sum.rotate(h, u))));
+    if reached.exact {
+        return None;
+    }
+    // The elbow's squared distances, and those of `v1 - rot(h, t) u` over every `t`.
+    let (elbow_lo, elbow_hi) = distance_range(h3, p34, back23);
+    let middle = norm_squared(v1) + norm_squared(u) - 2.0 * dot(h, v1) * dot(h, u);
+    let swing = 2.0 * libm::sqrt(norm_squared(cross(h, v1)) * norm_squared(cross(h, u)));
+    let lo = if elbow_lo > middle - swing { elbow_lo } else { middle - swing };
+    let hi = if elbow_hi < middle + swing { elbow_hi } else { middle + swing };
+    let goal = 0.5 * (lo + hi);
+    // |v1 - rot(h, t) u|^2 = goal: v1 . rot(h, t) u = (|v1|^2 + |u|^2 - goal) / 2.
+    let height = 0.5 * (norm_squared(v1) + norm_squared(u) - goal);
+    let ([plus, minus], moved) = rotation_to_height(v1, h, u, height);
+    if moved.singular {
+        return None;
+    }
+    let closeness = |t: Turn| t.cos * sum.cos + t.sin * sum.sin;
+    let new_sum = if closeness(plus) >= closeness(minus) { plus } else { minus };
+    // q6 moves by e (sum - new_sum), its cosine and sine by the angle-difference formulas.
+    let e = if seen_along > 0.0 { 1.0 } else { -1.0 };
+    let q6 = Turn {
+        angle: wrap(e * (sum.angle - new_sum.angle)),
+        cos: sum.cos * new_sum.cos + sum.sin * new_sum.sin,
+        sin: e * (sum.sin * new_sum.cos - sum.cos * new_sum.sin),
+    };
+    Some((new_sum, q6))
 }
 
 /// Spherical wrist (axes 4, 5, 6 meet, `p45 = p56 = 0`) with no two of axes 1, 2, 3 parallel or

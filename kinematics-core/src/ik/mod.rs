@@ -36,16 +36,18 @@ mod numeric;
 mod real;
 mod solutions;
 pub mod subproblem;
+mod target;
 mod vector;
 
 pub use family::{
-    Arm6, FreeArm6, ORTHOGONAL, PlanarArm, PlanarJoint, insert_free, spherical, spherical_first_two_intersecting,
-    spherical_last_two_intersecting, spherical_prismatic_third, spherical_two_parallel, three_parallel,
-    three_parallel_two_intersecting,
+    Arm6, FreeArm6, NEAR_SINGULAR_SIXTH, ORTHOGONAL, PlanarArm, PlanarJoint, insert_free, spherical,
+    spherical_first_two_intersecting, spherical_last_two_intersecting, spherical_prismatic_third,
+    spherical_two_parallel, three_parallel, three_parallel_two_intersecting,
 };
 pub use numeric::{NumericOptions, NumericSolution, levenberg_marquardt};
 pub use real::{BRANCH_SIGNS_8, IkBranch, IkReal, branch_signs, branch_signs_4, splat_pose};
 pub use solutions::{IkError, IkSolution, IkSolutions, ROTATION_TOLERANCE, check_seed, check_target, pose_errors};
+pub use target::IkTarget;
 
 use crate::pose::Pose;
 use vector::{add, rotate};

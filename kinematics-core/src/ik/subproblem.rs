@@ -162,6 +162,20 @@ pub fn rotation_to_distance(k: V3, p1: V3, p2: V3, d_squared: f64) -> ([Turn; 2]
     cos_sin_equation(a, b, c)
 }
 
+/// The squared distances subproblem 3 reaches exactly, `[lo, hi]`: `|rot(k, t) p1 - p2|^2` over
+/// every `t` (the same equation [`rotation_to_distance`] solves: `d^2` within them is exact, to its
+/// [`REACH_SLACK`]).
+#[inline(always)]
+pub fn distance_range(k: V3, p1: V3, p2: V3) -> (f64, f64) {
+    let along = dot(k, p1) * dot(k, p2);
+    let a = dot(p1, p2) - along;
+    let b = dot(k, cross(p1, p2));
+    // c = (|p1|^2 + |p2|^2 - d^2) / 2 - along, and |c| <= hypot(a, b).
+    let middle = norm_squared(p1) + norm_squared(p2) - 2.0 * along;
+    let swing = 2.0 * libm::sqrt(a * a + b * b);
+    (middle - swing, middle + swing)
+}
+
 /// Subproblem 4: the angles `t` with `h . rot(k, t) p = d`.
 #[inline(always)]
 pub fn rotation_to_height(h: V3, k: V3, p: V3, d: f64) -> ([Turn; 2], Quality) {
@@ -311,6 +325,24 @@ mod tests {
         // The farthest the rotated point gets from p2 is 3 (at t = pi).
         for t in angles {
             assert!((norm_squared(sub(rotate(k, t.angle, [1.0, 0.0, 0.0]), [2.0, 0.0, 0.0])) - 9.0).abs() < 1e-12);
+        }
+    }
+
+    #[test]
+    fn subproblem_3_reaches_exactly_its_distance_range() {
+        let k = unit([0.2, 1.0, 0.1]);
+        let (p1, p2) = ([0.5, 0.1, 0.3], [-0.2, 0.4, 0.9]);
+        let (lo, hi) = distance_range(k, p1, p2);
+        // Sampled over a turn, the squared distance stays within the range and comes to its ends.
+        let (mut least, mut most) = (f64::INFINITY, f64::NEG_INFINITY);
+        for i in 0..10_000 {
+            let d2 = norm_squared(sub(rotate(k, f64::from(i) * core::f64::consts::TAU / 10_000.0, p1), p2));
+            (least, most) = (least.min(d2), most.max(d2));
+        }
+        assert!(lo <= least + 1e-15 && most <= hi + 1e-15, "{lo} {least} {most} {hi}");
+        assert!(least - lo < 1e-6 && hi - most < 1e-6, "{lo} {least} {most} {hi}");
+        for (d2, exact) in [(lo, true), (hi, true), (0.5 * (lo + hi), true), (lo - 1e-6, false), (hi + 1e-6, false)] {
+            assert_eq!(rotation_to_distance(k, p1, p2, d2).1.exact, exact, "{d2} in [{lo}, {hi}]");
         }
     }
 

@@ -171,21 +171,57 @@ fn unreachable_targets_come_back_flagged_and_finite() {
     }
 }
 
+/// At a wrist singularity (axis 6 turned in line with axis 4, so joints 4 and 6 turn about the
+/// same axis and only a sum is fixed) every family returns branches flagged singular, and a pose
+/// the arm reaches is reached: some exact branch has it to rounding. For the families with axes
+/// 2, 3, 4 parallel the choice of representative decides that (the sum of the parallel joints
+/// moves the wrist's offset, and `q6 = 0` can leave the elbow out of reach), so every family is
+/// tried on random arms, each at its own singular angle of joint 5, from many configurations.
 #[test]
-fn a_wrist_singularity_gives_a_representative_flagged_singular() {
+fn a_wrist_singularity_gives_representatives_that_reach_the_pose() {
     let mut rng = Rng(11);
-    let mut arm = random_arm(&mut rng, Family::ThreeParallelTwoIntersecting);
-    // With h6 = rot(h5, 0.8) h, the fifth joint at -0.8 turns h6 onto h: joints 4 and 6 then
-    // turn about the same axis and only their sum is fixed.
-    let [_, h, _, _, h5, _] = arm.axes;
-    arm.axes[5] = super::vector::rotate(h5, 0.8, h);
-    let q = [0.2, -0.4, 0.9, 0.3, -0.8, -1.0];
-    let target = arm.pose(&q);
-    let mut solutions = three_parallel_two_intersecting(&arm, &target);
-    solutions.measure(&target, |q| arm.pose(q));
-    assert!(solutions.iter().any(|s| s.singular), "{solutions:?}");
-    for s in solutions.iter().filter(|s| s.exact) {
-        assert!(s.position_error < 1e-9 && s.rotation_error < 1e-9, "{s:?}");
+    for family in Family::ALL {
+        let (mut singular, mut missed) = (0, 0);
+        for _ in 0..40 {
+            let mut arm = random_arm(&mut rng, family);
+            // An orthogonal wrist (h5 square to h4) whose h6 = rot(h5, theta) h4: at q5 = -theta,
+            // R5 h6 = h4. (Oblique wrists solve q5 by a general subproblem 4, whose double root
+            // at the singularity costs up to `DOUBLE_ROOT`'s 1e-7 rad, as documented there.)
+            let theta = rng.uniform(-3.1, 3.1);
+            let h4 = arm.axes[3];
+            let across = cross(h4, rng.unit());
+            let h5 = scale(across, 1.0 / libm::sqrt(norm_squared(across)));
+            arm.axes[4] = h5;
+            arm.axes[5] = super::vector::rotate(h5, theta, h4);
+            for _ in 0..25 {
+                let mut q = [0; 6].map(|_| rng.uniform(-3.1, 3.1));
+                q[4] = -theta;
+                let target = arm.pose(&q);
+                let mut solutions = solve(family, &arm, &target);
+                solutions.measure(&target, |q| arm.pose(q));
+                singular += solutions.iter().filter(|s| s.singular).count();
+                let best =
+                    solutions.exact().map(|s| s.position_error.max(s.rotation_error)).fold(f64::INFINITY, f64::min);
+                // The three-parallel arm's quartic has a double root here, found to about 1e-7
+                // (`NEAR_SINGULAR_SIXTH`) or, for a few targets, not at all (documented in the
+                // guide: they come back as flagged least squares); every other family's first
+                // steps are exact.
+                let tolerance = if matches!(family, Family::ThreeParallel) { 1e-6 } else { 1e-10 };
+                for s in solutions.exact().filter(|s| s.singular) {
+                    assert!(s.position_error.max(s.rotation_error) < tolerance, "{family:?}: q {q:?}: {s:?}");
+                }
+                if matches!(family, Family::ThreeParallel) {
+                    missed += usize::from(best >= tolerance);
+                } else {
+                    assert!(
+                        best < tolerance,
+                        "{family:?}: q {q:?}: no exact solution reaches the pose: {solutions:#?}"
+                    );
+                }
+            }
+        }
+        assert!(singular > 0, "{family:?}: no branch flagged singular");
+        assert!(missed <= 50, "{family:?}: {missed} of 1,000 singular targets have no exact solution");
     }
 }
 

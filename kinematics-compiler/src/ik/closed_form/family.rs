@@ -24,8 +24,9 @@ pub(super) struct Branch {
 struct Arm {
     h: [Vector; 6],
     p: [Vector; 7],
-    /// The axes in numbers, for what is decided at compile time.
+    /// The axes and offsets in numbers, for what is decided at compile time.
     axes: [[f64; 3]; 6],
+    offsets: [[f64; 3]; 7],
 }
 
 /// The chain's geometry, the target (rotation rows, translation) and the branch signs.
@@ -43,6 +44,7 @@ pub(super) fn branch(b: &mut Builder, family: IkFamily, problem: &Problem<'_>) -
         h: problem.six.axes.map(|v| b.vector(v)),
         p: problem.six.offsets.map(|v| b.vector(v)),
         axes: problem.six.axes,
+        offsets: problem.six.offsets,
     };
     let (r06, v0) = wrist_target(b, &arm, problem);
     let [s1, s2, s3] = problem.signs;
@@ -343,9 +345,22 @@ fn parallel_elbow(
     let turned = b.rotate(t1, h1, in_base);
     let (sum, summed) = b.rotation_onto(h, across, turned);
     b.step("q2 + q3 + q4 by SP1", sum.nodes().into_iter().chain(summed.nodes()));
-    let wrist = b.rotate(q5, h5, p56);
-    let wrist = b.vadd(p45, wrist);
-    let wrist = b.rotate(sum, h, wrist);
+    // The wrist's offset from the end of the forearm, turned with the sum.
+    let u = b.rotate(q5, h5, p56);
+    let u = b.vadd(p45, u);
+    let seen_along = b.dot(h6, seen);
+    let free = free_sixth(b, arm, v1, u, sum, seen_along);
+    let moved = b.and(sixth.singular, free.moves);
+    let sum = b.select_turn(moved, free.sum, sum);
+    let t6 = b.back(t6);
+    let sixth_angle = wrap(b, t6.angle);
+    let t6 = b.select_turn(moved, free.sixth, t6);
+    let sixth_angle = b.select(moved, free.sixth.angle, sixth_angle);
+    b.step(
+        "at the wrist's singularity, the sum and q6 moved where q6 = 0 leaves the elbow out of reach",
+        sum.nodes().into_iter().chain(t6.nodes()).chain([sixth_angle]),
+    );
+    let wrist = b.rotate(sum, h, u);
     let v = b.vsub(v1, wrist);
     let distance = b.norm_squared(v);
     let (q3, third, forearm) = elbow(b, arm, distance, sign);
@@ -369,10 +384,94 @@ fn parallel_elbow(
     let quality = b.both(quality, summed);
     let quality = b.both(quality, third);
     let quality = b.both(quality, second);
-    let t6 = b.back(t6);
     let turns = [q1, q2, q3, t4, q5, t6];
     let [w1, w2, w3] = [q1.angle, q2.angle, q3.angle].map(|x| wrap(b, x));
     let w4 = wrap_sum(b, q4);
-    let [w5, w6] = [q5.angle, t6.angle].map(|x| wrap(b, x));
-    Branch { q: [w1, w2, w3, w4, w5, w6], cos: turns.map(|t| t.cos), sin: turns.map(|t| t.sin), quality }
+    let w5 = wrap(b, q5.angle);
+    Branch { q: [w1, w2, w3, w4, w5, sixth_angle], cos: turns.map(|t| t.cos), sin: turns.map(|t| t.sin), quality }
+}
+
+/// The run time's `free_sixth`, as expressions: at the wrist's singularity (axis 6 in line with
+/// the parallel axes) the rotation fixes only `sum + e q6` (`e` the sign of `seen_along`), and
+/// where the sum found with `q6 = 0` leaves the elbow out of reach, the sum moves to where the
+/// elbow's squared distance is the middle of what both the elbow and the turning wrist offset `u`
+/// can reach, the root of that subproblem 4 nearest the sum found, and `q6` takes up the
+/// difference.
+struct FreeSixth {
+    /// `1` where the sum moves (the elbow misses with the sum found, and the distance turns with
+    /// the sum), else `0`; the caller ands it with the singularity.
+    moves: ExprId,
+    /// The sum moved.
+    sum: Turn,
+    /// `q6` for it, its angle in `(-pi, pi]`.
+    sixth: Turn,
+}
+
+fn free_sixth(b: &mut Builder, arm: &Arm, v1: Vector, u: Vector, sum: Turn, seen_along: ExprId) -> FreeSixth {
+    let [_, h, h3, ..] = arm.h;
+    let [_, _, p23, p34, ..] = arm.p;
+    let minus_one = b.constant(-1.0);
+    let one = b.constant(1.0);
+    let back23 = b.scale(p23, minus_one);
+    let turned = b.rotate(sum, h, u);
+    let v = b.vsub(v1, turned);
+    let distance = b.norm_squared(v);
+    // Whether the elbow reaches does not depend on which of its roots: either sign serves.
+    let (_, reached) = b.rotation_to_distance(h3, p34, back23, distance, one);
+    // The elbow's squared distances (constants: the run time's `distance_range` of the same
+    // numbers), and those of `v1 - rot(h, t) u` over every `t`.
+    let minus = |v: [f64; 3]| v.map(|x| -x);
+    let (elbow_lo, elbow_hi) =
+        kinematics_core::ik::subproblem::distance_range(arm.axes[2], arm.offsets[3], minus(arm.offsets[2]));
+    let (elbow_lo, elbow_hi) = (b.constant(elbow_lo), b.constant(elbow_hi));
+    let (vv, uu) = (b.norm_squared(v1), b.norm_squared(u));
+    // Written as subproblem 4 below writes them (`v1 . h`, `h . u`, `h x u`), so they are its nodes.
+    let (hv, hu) = (b.dot(v1, h), b.dot(h, u));
+    let lengths = b.add(vv, uu);
+    let two = b.constant(2.0);
+    let twice = b.mul(two, hv);
+    let twice = b.mul(twice, hu);
+    let middle = b.sub(lengths, twice);
+    let (hxv, hxu) = (b.cross(h, v1), b.cross(h, u));
+    let (across_v, across_u) = (b.norm_squared(hxv), b.norm_squared(hxu));
+    let across = b.mul(across_v, across_u);
+    let root = b.sqrt(across);
+    let swing = b.mul(two, root);
+    let (least, most) = (b.sub(middle, swing), b.add(middle, swing));
+    let over = b.sub(elbow_lo, least);
+    let lo = b.select(over, elbow_lo, least);
+    let under = b.sub(most, elbow_hi);
+    let hi = b.select(under, elbow_hi, most);
+    let half = b.constant(0.5);
+    let goal = b.add(lo, hi);
+    let goal = b.mul(half, goal);
+    // |v1 - rot(h, t) u|^2 = goal: v1 . rot(h, t) u = (|v1|^2 + |u|^2 - goal) / 2.
+    let height = b.sub(lengths, goal);
+    let height = b.mul(half, height);
+    // The root nearest the sum found. The equation is `a cos t + b sin t = c` (subproblem 4's `a`
+    // and `b`, the same nodes), whose roots `t` have `cos(t - sum) = (c (a cos sum + b sin sum)
+    // +- w (a sin sum - b cos sum)) / (a^2 + b^2)` with `w >= 0`: the sign of `a sin sum - b cos
+    // sum` picks the nearer (the run time compares both cosines; the same root but at a tie).
+    let hu_along = b.mul(hv, hu);
+    let vu = b.dot(v1, u);
+    let a = b.sub(vu, hu_along);
+    let hxu_dot = b.dot(v1, hxu);
+    let (a_sin, b_cos) = (b.mul(a, sum.sin), b.mul(hxu_dot, sum.cos));
+    let nearer = b.sub(a_sin, b_cos);
+    let zero = b.constant(0.0);
+    let plus_nearer = b.at_most(zero, nearer);
+    let sign = b.select(plus_nearer, one, minus_one);
+    let (new_sum, moved) = b.rotation_to_height(v1, h, u, height, sign);
+    // q6 moves by e (sum - new sum), its cosine and sine by the angle-difference formulas.
+    let e = b.select(seen_along, one, minus_one);
+    let change = b.sub(sum.angle, new_sum.angle);
+    let change = b.mul(e, change);
+    let angle = wrap_sum(b, change);
+    let difference = b.difference(sum, new_sum);
+    let sin = b.mul(e, difference.sin);
+    let sixth = Turn { angle, cos: difference.cos, sin };
+    let missed = b.sub(one, reached.exact);
+    let regular = b.sub(one, moved.singular);
+    let moves = b.and(missed, regular);
+    FreeSixth { moves, sum: new_sum, sixth }
 }
