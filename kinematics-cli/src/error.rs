@@ -58,6 +58,20 @@ pub enum CliError {
         #[source]
         source: kinematics::ik::IkError,
     },
+    /// `ik --from-q`: the configuration given is none of the solutions of its own pose, and the
+    /// pose is at no singularity: the solver missed a solution.
+    #[error(
+        "{file}: round trip failed: --from-q is none of the solutions of its own pose (the nearest, solution \
+         {nearest}, differs by {difference:.1e} rad), and no solution is singular: the solver missed one"
+    )]
+    RoundTrip {
+        /// The description file.
+        file: String,
+        /// The nearest solution's number (from 1).
+        nearest: usize,
+        /// Its largest joint difference, modulo 2 pi (rad).
+        difference: f64,
+    },
     /// An option's value that cannot be used (the message names the option and why).
     #[error("{0}")]
     Usage(String),

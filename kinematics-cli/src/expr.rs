@@ -211,6 +211,13 @@ fn emitted_ik_text(
         out += &format!("  {label:<width$}  {}\n", ik_count_text(count));
     }
     out += &format!("  {:<width$}  {}\n", "total", ik_count_text(&body.op_count()));
+    if let Some(regular) = kinematics_compiler::ik::IkBody::regular(plan) {
+        out += &format!(
+            "tip_ik runs the body without its pass at the wrist's singularity first ({}), and the whole body only \
+             when a lane comes back singular and not exact\n",
+            ik_count_text(&regular.op_count())
+        );
+    }
     let pose = kinematics_compiler::compile(tree, &kinematics_compiler::Request::tip(&plan.tip).with_base(&plan.base))?;
     out += &match kinematics_compiler::ik::Measure::of(&pose) {
         Some(measure) => format!(

@@ -71,7 +71,8 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
         solutions.iter().filter(|s| s.exact).count(),
         if args.degrees { "degrees" } else { "radians" }
     )?;
-    writeln!(out, "  #  {:<66}  {:<16}  {:>10}  {:>10}", "q", "flags", "position", "rotation")?;
+    writeln!(out, "  #  {:<66}  {:<16}  {:<6}  {:>10}  {:>10}", "q", "flags", "limits", "position", "rotation")?;
+    let within = within_limits(fk.tree());
     for (i, s) in solutions.iter().enumerate() {
         let q: Vec<String> = s.q.iter().map(|v| format!("{:>9.5}", v * scale)).collect();
         let flags = match (s.exact, s.singular) {
@@ -80,9 +81,10 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
             (false, false) => "least squares",
             (false, true) => "l. sq., singular",
         };
+        let limits = if within(&s.q) { "within" } else { "beyond" };
         writeln!(
             out,
-            "  {}  ({})  {flags:<16}  {:>10.2e}  {:>10.2e}",
+            "  {}  ({})  {flags:<16}  {limits:<6}  {:>10.2e}  {:>10.2e}",
             i + 1,
             q.join(", "),
             s.position_error,
@@ -98,16 +100,54 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
                 .fold(0.0, |m: f64, d| if d > m || d.is_nan() { d } else { m })
         };
         let nearest = solutions.iter().enumerate().map(|(i, s)| (distance(&s.q), i)).min_by(|a, b| a.0.total_cmp(&b.0));
-        if let Some((d, i)) = nearest {
+        let Some((d, i)) = nearest else { return Ok(()) };
+        if d <= ROUND_TRIP_TOLERANCE {
             writeln!(
                 out,
                 "round trip: --from-q is solution {} (largest joint difference modulo 2 pi: {d:.1e} rad)",
                 i + 1
             )?;
+        } else if solutions.iter().any(|s| s.exact && s.singular) {
+            // At a singularity the solutions are representatives of a continuum, which need not
+            // hold the given angles: that they reach the pose is what counts (their errors above).
+            writeln!(
+                out,
+                "round trip: --from-q is at a singularity, where the solutions are representatives of a continuum \
+                 (those flagged singular, each with its errors above); the nearest, solution {}, differs by {d:.1e} \
+                 rad",
+                i + 1
+            )?;
+        } else {
+            return Err(CliError::RoundTrip { file: file.clone(), nearest: i + 1, difference: d });
         }
     }
     Ok(())
 }
+
+/// Whether a solution fits the joints' limits: each angle moved by whole turns where that brings
+/// it within them (as the derive's `tip_ik_within_limits` does), a slide as it is; joints without
+/// limits fit.
+fn within_limits(tree: &kinematics::KinematicTree) -> impl Fn(&[f64]) -> bool + '_ {
+    let limits = tree.dof_limits();
+    let revolute: Vec<bool> =
+        tree.dof_joints().iter().map(|&j| tree.joint(j).kind != kinematics::model::JointKind::Prismatic).collect();
+    move |q: &[f64]| {
+        q.iter().zip(&limits).zip(&revolute).all(|((&x, limits), &revolute)| {
+            let Some(l) = limits else { return true };
+            if !revolute {
+                return l.lower <= x && x <= l.upper;
+            }
+            // The smallest value of x + 2 pi k at or above the lower limit, then whether it is
+            // below the upper.
+            let tau = std::f64::consts::TAU;
+            let lifted = x + tau * ((l.lower - x) / tau).ceil();
+            lifted <= l.upper
+        })
+    }
+}
+
+/// Within this (rad, every joint, modulo 2 pi) a solution is the configuration `--from-q` gave.
+const ROUND_TRIP_TOLERANCE: f64 = 1e-9;
 
 /// One solution, whatever the arm's number of joints.
 pub struct Solution {

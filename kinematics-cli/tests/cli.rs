@@ -702,11 +702,13 @@ fn expr_of_a_1000_joint_chain_is_linear_in_size() {
 #[test]
 fn ik_round_trips_on_every_covered_robot() {
     let q = "0.3,-1.2,1.0,0.4,-0.7,2.0";
-    for (file, tip, family) in [
-        ("robots/ur5.urdf", "tool0", "axes 2, 3, 4 parallel, axes 5 and 6 meet"),
-        ("robots/ur10e.toml", "wrist_3_link", "axes 2, 3, 4 parallel, axes 5 and 6 meet"),
-        ("robots/irb120.urdf", "tool0", "spherical wrist, axes 2 and 3 parallel"),
-        ("robots/puma560.toml", "link6", "spherical wrist, axes 2 and 3 parallel"),
+    // The limits word the given configuration's row must carry: the PUMA's second joint turns from
+    // -45 degrees, and -1.2 rad is -69.
+    for (file, tip, family, limits) in [
+        ("robots/ur5.urdf", "tool0", "axes 2, 3, 4 parallel, axes 5 and 6 meet", "within"),
+        ("robots/ur10e.toml", "wrist_3_link", "axes 2, 3, 4 parallel, axes 5 and 6 meet", "within"),
+        ("robots/irb120.urdf", "tool0", "spherical wrist, axes 2 and 3 parallel", "within"),
+        ("robots/puma560.toml", "link6", "spherical wrist, axes 2 and 3 parallel", "beyond"),
     ] {
         let out = ok(&["ik", file, "--tip", tip, "--from-q", q]);
         assert!(out.contains(&format!("closed form: {family}")), "{out}");
@@ -714,14 +716,44 @@ fn ik_round_trips_on_every_covered_robot() {
         let line = out.lines().find(|l| l.starts_with("round trip: --from-q is solution")).expect("a round-trip line");
         let difference: f64 = line.rsplit(": ").next().unwrap().trim_end_matches(" rad)").parse().unwrap();
         assert!(difference < 1e-9, "{file}: {line}");
+        let number = line.split_whitespace().nth(5).unwrap();
+        let row = out.lines().find(|l| l.trim_start().starts_with(&format!("{number}  ("))).expect("its row");
+        assert!(row.contains(&format!("  {limits}  ")), "{file}: {row}");
         for row in out.lines().filter(|l| l.contains("  exact")) {
             let errors: Vec<f64> = row.split_whitespace().rev().take(2).map(|e| e.parse().unwrap()).collect();
             assert!(errors.iter().all(|e| *e < 1e-12), "{file}: {row}");
         }
     }
+    // Solutions the joints cannot take, even moved by whole turns, say so: the IRB 120's first
+    // joint turns within 165 degrees either way (solutions 1 to 4 have -168.5), its third from -110
+    // to 70 (solutions 5 and 6 have -131).
+    let out = ok(&["ik", "robots/irb120.urdf", "--from-q", "0.2,0.3,-0.4,0.5,0.6,0.7"]);
+    let words: Vec<&str> = out
+        .lines()
+        .filter(|l| l.contains("  exact  "))
+        .map(|l| if l.contains("  beyond  ") { "beyond" } else { "within" })
+        .collect();
+    assert_eq!(words, ["beyond", "beyond", "beyond", "beyond", "beyond", "beyond", "within", "within"], "{out}");
     // Degrees in, degrees out.
     let out = ok(&["ik", "robots/ur5.urdf", "--degrees", "--from-q", "10,-60,45,20,-30,90"]);
     assert!(out.contains("angles in degrees") && out.contains(" 90.00000)"), "{out}");
+}
+
+/// `ik --from-q` at the UR5's wrist singularity (`q5 = 0`), for a configuration whose pose the
+/// representative with `q6 = 0` cannot reach (the elbow would be out of reach; found by a new
+/// user's trial): exact singular solutions reach the pose, and the round trip says the solutions
+/// are representatives rather than claiming a solution 2 rad away is the configuration given.
+#[test]
+fn ik_round_trips_at_a_wrist_singularity() {
+    let q = "-5.018908040145822,-6.2591372179042715,-0.6672045709120269,-1.9140345437751227,0.0,4.4077715493666085";
+    let out = ok(&["ik", "robots/ur5.urdf", "--tip", "tool0", "--from-q", q]);
+    let singular: Vec<&str> = out.lines().filter(|l| l.contains("  exact, singular")).collect();
+    assert!(!singular.is_empty(), "{out}");
+    for row in singular {
+        let errors: Vec<f64> = row.split_whitespace().rev().take(2).map(|e| e.parse().unwrap()).collect();
+        assert!(errors.iter().all(|e| *e < 1e-12), "{row}");
+    }
+    assert!(out.contains("round trip: --from-q is at a singularity, where the solutions are representatives"), "{out}");
 }
 
 #[test]

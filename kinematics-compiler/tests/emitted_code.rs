@@ -120,7 +120,12 @@ fn ik_source(file: &str, tip: &str) -> String {
     let plan = kinematics_compiler::ik::classify(&tree, &base, tip).unwrap();
     let body = kinematics_compiler::ik::IkBody::of(&plan).expect("a composed family");
     let private = quote::quote!(::kinematics::__private);
-    let mut tokens = kinematics_compiler::ik::emit::emit_branch_body(&body, &private, " One branch.");
+    let mut tokens = kinematics_compiler::ik::emit::emit_branch_body(
+        &body,
+        &private,
+        kinematics_compiler::ik::emit::BRANCH_BODY,
+        " One branch.",
+    );
     let pose = compile(&tree, &Request::tip(tip).with_base(&base)).unwrap();
     if let Some(measure) = kinematics_compiler::ik::Measure::of(&pose) {
         tokens.extend(kinematics_compiler::ik::measure::emit_measure(&measure, &private, tip, &base));

@@ -108,7 +108,8 @@ fn robots_agree_with_the_run_time_including_singular_wrists() {
 /// representative with `q6 = 0` leaves the elbow out of reach for some targets the arm reaches
 /// (about one in twenty-five on the UR5); there the body moves the sum of the parallel joints and
 /// `q6` with it. On many such targets of every UR description, every branch agrees with the run
-/// time, and some exact branch reaches the target, by the compiled forward kinematics.
+/// time, some exact branch reaches the target, by the compiled forward kinematics, and the body
+/// without the pass is the body bit for bit but where the pass moved a branch.
 #[test]
 fn singular_ur_targets_are_reached() {
     let mut rng = Uniform(80);
@@ -121,12 +122,26 @@ fn singular_ur_targets_are_reached() {
         let body = IkBody::of(&plan).expect("composed");
         let compiled = compile(&tree, &Request::tip(tip)).expect("compiles");
         let reach = tree.reach();
+        let mut moved = 0;
         for sample in 0..400 {
             let mut q = [0; 6].map(|_| std::f64::consts::PI * (2.0 * rng.next() - 1.0));
             q[4] = if sample % 2 == 0 { 0.0 } else { std::f64::consts::PI };
             let target = Pose::from_entries(&compiled.eval(&q)[0]);
             let what = format!("{file} sample {sample}: {q:?}");
             agree(&plan, &body, &target, &what);
+            // The body without the pass (what `tip_ik` runs first) gives the same bits on every
+            // branch but those the pass is for, which it returns singular and not exact.
+            let regular = IkBody::regular(&plan).expect("the UR family has a pass");
+            for index in 0..8 {
+                let (full, first) = (body.eval(&target, index), regular.eval(&target, index));
+                if first.singular && !first.exact {
+                    moved += usize::from(full.exact);
+                } else {
+                    let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+                    assert_eq!(bits(&full.q), bits(&first.q), "{what}: branch {index}");
+                    assert_eq!((full.exact, full.singular), (first.exact, first.singular), "{what}: branch {index}");
+                }
+            }
             let reached = (0..8).map(|index| body.eval(&target, index)).filter(|b| b.exact).any(|b| {
                 let q: [f64; 6] = b.q.try_into().expect("six joints");
                 let (position, rotation) =
@@ -135,6 +150,8 @@ fn singular_ur_targets_are_reached() {
             });
             assert!(reached, "{what}: no exact branch reaches the target");
         }
+        // The pass was needed (a branch the body without it missed, solved with it).
+        assert!(moved > 0, "{file}: no target needed the singular pass");
     }
 }
 

@@ -17,6 +17,10 @@ use crate::robot::number;
 /// The name of the generic body of a compiled closed form (one branch per evaluation).
 pub const BRANCH_BODY: &str = "generic_tip_ik_branch";
 
+/// The name of the same body without its pass at the wrist's singularity ([`IkBody::regular`]),
+/// which `tip_ik` runs first.
+pub const REGULAR_BODY: &str = "generic_tip_ik_branch_regular";
+
 /// The body's inputs as the generated code names them: `r11 .. r33`, `px, py, pz`, `sign1 ..
 /// sign3`.
 fn input_names() -> Vec<Ident> {
@@ -28,7 +32,7 @@ fn input_names() -> Vec<Ident> {
 
 /// The generic body of `body`: one branch of the closed form, for any `IkReal` scalar, the
 /// branch picked by `signs`.
-pub fn emit_branch_body(body: &IkBody, private: &TokenStream, doc: &str) -> TokenStream {
+pub fn emit_branch_body(body: &IkBody, private: &TokenStream, name: &str, doc: &str) -> TokenStream {
     let p = private;
     let names = input_names();
     let line = straight_line(body.graph(), &body.outputs(), 0, &names, p);
@@ -47,7 +51,7 @@ pub fn emit_branch_body(body: &IkBody, private: &TokenStream, doc: &str) -> Toke
     let (q, cos, sin) = (&line.outputs[..dof], &line.outputs[dof..2 * dof], &line.outputs[2 * dof..3 * dof]);
     let (exact, singular) = (&line.outputs[3 * dof], &line.outputs[3 * dof + 1]);
     let n = Literal::usize_unsuffixed(dof);
-    let name = Ident::new(BRANCH_BODY, Span::call_site());
+    let name = Ident::new(name, Span::call_site());
     let cost = format!(" Cost per branch: {}.", body.op_count());
     quote! {
         #[doc = #doc]
@@ -93,6 +97,7 @@ pub fn emit_ik(
 ) -> IkItems {
     let p = private;
     let compiled = IkBody::of(plan);
+    let regular = IkBody::regular(plan);
     let family = plan.family.name();
     let capacity = Literal::usize_unsuffixed(plan.family.max_solutions());
     let (base, tip) = (&plan.base, &plan.tip);
@@ -220,7 +225,29 @@ pub fn emit_ik(
     let (solve_and_measure, branch_fn) = match &compiled {
         Some(body) => {
             let g = Ident::new(BRANCH_BODY, Span::call_site());
-            bodies.push(emit_branch_body(body, p, &branch_doc));
+            bodies.push(emit_branch_body(body, p, BRANCH_BODY, &branch_doc));
+            // Where the body has a pass at the wrist's singularity, the body without it first,
+            // and the whole body again only when some lane needed the pass.
+            let solve = match &regular {
+                Some(regular) => {
+                    let r = Ident::new(REGULAR_BODY, Span::call_site());
+                    let doc = format!(
+                        "`{BRANCH_BODY}` without its pass at the wrist's singularity (where `q6 = 0` leaves the \
+                         elbow out of reach, that pass moves the sum of the parallel joints): the same branches \
+                         but those, which it returns singular and not exact."
+                    );
+                    bodies.push(emit_branch_body(regular, p, REGULAR_BODY, &doc));
+                    quote! {
+                        let regular = #r(&lanes, &#p::ik::BRANCH_SIGNS_8);
+                        let branches = if regular.misses_at_a_singularity() {
+                            #g(&lanes, &#p::ik::BRANCH_SIGNS_8)
+                        } else {
+                            regular
+                        };
+                    }
+                }
+                None => quote!(let branches = #g(&lanes, &#p::ik::BRANCH_SIGNS_8);),
+            };
             // The solutions' poses, in the same lanes: from the cosines and sines the solver
             // computed where the chain allows, else at `q`.
             let reached = match measure {
@@ -235,7 +262,7 @@ pub fn emit_ik(
                 quote! {
                     // The eight branches side by side, one per lane.
                     let lanes = #p::ik::splat_pose::<#p::F64x8>(target);
-                    let branches = #g(&lanes, &#p::ik::BRANCH_SIGNS_8);
+                    #solve
                     let reached = #reached;
                     #p::ik::IkSolutions::from_lanes(&branches, &reached, target)
                 },

@@ -118,6 +118,20 @@ pub struct IkBranch<T, const N: usize> {
     pub singular: T,
 }
 
+impl<L: crate::lanes::Lanes<Scalar = f64>, const N: usize> IkBranch<L, N> {
+    /// Whether some lane is singular and not exact: a branch at a singularity whose equations
+    /// missed, which a body's pass at that singularity may still solve (the generated `tip_ik`
+    /// runs the full body again then).
+    #[inline(always)]
+    pub fn misses_at_a_singularity(&self) -> bool {
+        let mut missed = false;
+        for lane in 0..L::LANES {
+            missed |= self.singular.lane(lane) == 1.0 && self.exact.lane(lane) != 1.0;
+        }
+        missed
+    }
+}
+
 /// The branch signs of eight branches, one per lane of [`F64x8`]: lane `i` takes the first
 /// choice's `+` root when bit 2 of `i` is clear, the second's when bit 1 is, the third's when bit 0
 /// is, so the lanes run in the order of three nested loops over the roots, `+` first.

@@ -35,6 +35,9 @@ pub(super) struct Problem<'a> {
     pub rotation: Matrix,
     pub translation: Vector,
     pub signs: [ExprId; 3],
+    /// Whether the UR family's body moves the sum of the parallel joints where `q6 = 0` leaves
+    /// the elbow out of reach at the wrist's singularity (`IkBody::regular` leaves it out).
+    pub singular_pass: bool,
 }
 
 /// The family's branch, or `None` for a family this module does not compose (a quartic first
@@ -49,7 +52,9 @@ pub(super) fn branch(b: &mut Builder, family: IkFamily, problem: &Problem<'_>) -
     let (r06, v0) = wrist_target(b, &arm, problem);
     let [s1, s2, s3] = problem.signs;
     let branch = match family {
-        IkFamily::ThreeParallelTwoIntersecting => three_parallel_two_intersecting(b, &arm, &r06, v0, [s1, s2, s3]),
+        IkFamily::ThreeParallelTwoIntersecting => {
+            three_parallel_two_intersecting(b, &arm, &r06, v0, [s1, s2, s3], problem.singular_pass)
+        }
         IkFamily::SphericalTwoParallel => spherical_two_parallel(b, &arm, &r06, v0, [s1, s2, s3]),
         IkFamily::SphericalFirstTwoIntersecting => spherical_first_two_intersecting(b, &arm, &r06, v0, [s1, s2, s3]),
         IkFamily::SphericalLastTwoIntersecting => spherical_last_two_intersecting(b, &arm, &r06, v0, [s1, s2, s3]),
@@ -291,6 +296,7 @@ fn three_parallel_two_intersecting(
     r06: &Matrix,
     v0: Vector,
     [s1, s2, s3]: [ExprId; 3],
+    singular_pass: bool,
 ) -> Branch {
     let [h1, h, _, _, h5, h6] = arm.h;
     let [_, p12, p23, p34, p45, ..] = arm.p;
@@ -308,13 +314,13 @@ fn three_parallel_two_intersecting(
     let (q5, fifth) = b.rotation_to_height(h, h5, h6, height, s2);
     b.step("q5 by SP4", q5.nodes().into_iter().chain(fifth.nodes()));
     let quality = b.both(first, fifth);
-    parallel_elbow(b, arm, r06, v0, t1, q5, quality, s3)
+    parallel_elbow(b, arm, r06, v0, t1, q5, quality, s3, singular_pass)
 }
 
 /// The rest of an arm with axes 2, 3, 4 parallel, once `q1` (as `t1 = -q1`) and `q5` are known:
 /// `q6` and the sum `q2 + q3 + q4` by subproblem 1, `q3` by subproblem 3, `q2` by subproblem 1,
 /// `q4` by difference.
-#[allow(clippy::too_many_arguments, reason = "the run time's parallel_elbow, argument for argument")]
+#[allow(clippy::too_many_arguments, reason = "the run time's parallel_elbow, argument for argument, and the pass")]
 fn parallel_elbow(
     b: &mut Builder,
     arm: &Arm,
@@ -324,6 +330,7 @@ fn parallel_elbow(
     q5: Turn,
     quality: Quality,
     sign: ExprId,
+    singular_pass: bool,
 ) -> Branch {
     let [h1, h, h3, h4, h5, h6] = arm.h;
     let [_, p12, _, _, p45, p56, _] = arm.p;
@@ -348,18 +355,23 @@ fn parallel_elbow(
     // The wrist's offset from the end of the forearm, turned with the sum.
     let u = b.rotate(q5, h5, p56);
     let u = b.vadd(p45, u);
-    let seen_along = b.dot(h6, seen);
-    let free = free_sixth(b, arm, v1, u, sum, seen_along);
-    let moved = b.and(sixth.singular, free.moves);
-    let sum = b.select_turn(moved, free.sum, sum);
     let t6 = b.back(t6);
     let sixth_angle = wrap(b, t6.angle);
-    let t6 = b.select_turn(moved, free.sixth, t6);
-    let sixth_angle = b.select(moved, free.sixth.angle, sixth_angle);
-    b.step(
-        "at the wrist's singularity, the sum and q6 moved where q6 = 0 leaves the elbow out of reach",
-        sum.nodes().into_iter().chain(t6.nodes()).chain([sixth_angle]),
-    );
+    let (sum, t6, sixth_angle) = if singular_pass {
+        let seen_along = b.dot(h6, seen);
+        let free = free_sixth(b, arm, v1, u, sum, seen_along);
+        let moved = b.and(sixth.singular, free.moves);
+        let sum = b.select_turn(moved, free.sum, sum);
+        let t6 = b.select_turn(moved, free.sixth, t6);
+        let sixth_angle = b.select(moved, free.sixth.angle, sixth_angle);
+        b.step(
+            "at the wrist's singularity, the sum and q6 moved where q6 = 0 leaves the elbow out of reach",
+            sum.nodes().into_iter().chain(t6.nodes()).chain([sixth_angle]),
+        );
+        (sum, t6, sixth_angle)
+    } else {
+        (sum, t6, sixth_angle)
+    };
     let wrist = b.rotate(sum, h, u);
     let v = b.vsub(v1, wrist);
     let distance = b.norm_squared(v);

@@ -19,7 +19,7 @@ mod subproblem;
 
 use kinematics_core::Pose;
 
-use super::classify::{IkGeometry, IkPlan};
+use super::classify::{IkFamily, IkGeometry, IkPlan};
 use crate::stats::{OpCount, marginal_counts};
 use crate::symbolic::graph::{ExprGraph, ExprId};
 
@@ -66,6 +66,23 @@ impl IkBody {
     /// The body of `plan`'s family, or `None` where the family keeps the run time's solver (see
     /// the module doc).
     pub fn of(plan: &IkPlan) -> Option<IkBody> {
+        Self::build(plan, true)
+    }
+
+    /// The body without its pass at the wrist's singularity (the UR family's: where `q6 = 0`
+    /// leaves the elbow out of reach, the sum of the parallel joints moves), or `None` where the
+    /// family has no such pass or keeps the run time's solver. It is [`IkBody::of`] on every
+    /// branch but those at that singularity whose elbow misses, which it returns singular and not
+    /// exact: the generated `tip_ik` runs it, and the full body only when a lane comes back so
+    /// (the pass costs about a third of the body, for targets a random pose almost never is).
+    pub fn regular(plan: &IkPlan) -> Option<IkBody> {
+        if plan.family != IkFamily::ThreeParallelTwoIntersecting {
+            return None;
+        }
+        Self::build(plan, false)
+    }
+
+    fn build(plan: &IkPlan, singular_pass: bool) -> Option<IkBody> {
         let IkGeometry::Six(six) = &plan.geometry else { return None };
         if plan.free.is_some() {
             return None;
@@ -75,7 +92,7 @@ impl IkBody {
         let rotation = [0, 1, 2].map(|i| [0, 1, 2].map(|j| inputs[3 * i + j]));
         let translation = [inputs[9], inputs[10], inputs[11]];
         let signs = [inputs[FIRST_SIGN], inputs[FIRST_SIGN + 1], inputs[FIRST_SIGN + 2]];
-        let problem = family::Problem { six, rotation, translation, signs };
+        let problem = family::Problem { six, rotation, translation, signs, singular_pass };
         let branch = family::branch(&mut b, plan.family, &problem)?;
         let (q, cos, sin) = (branch.q.to_vec(), branch.cos.to_vec(), branch.sin.to_vec());
         b.step(
