@@ -258,11 +258,22 @@ pub struct ClosedIk {
     pub scalar: Option<f64>,
     /// The pose at `q` in the lanes of `F64x8` (measuring with `sin_cos` again).
     pub pose8: Option<f64>,
-    /// The compiled body's operations per branch, and the measure's (`kinematics expr --ik`).
-    pub ops: Option<(String, String)>,
+    /// The compiled body's operations per branch and the measure's (`kinematics expr --ik`).
+    pub ops: Option<IkOps>,
     /// Paired ratios (`kinematics-ik-paired.tsv`): `nearest/all`, `branches-scalar/branches-f64x8`,
     /// `branches-f64x4/branches-f64x8`, `solver/all`.
     pub paired: BTreeMap<String, f64>,
+}
+
+/// A compiled closed form's operations per branch, as `sin_cos/mul/add/div/sqrt/atan2/select`.
+pub struct IkOps {
+    /// The body `tip_ik` runs first: without the pass at the wrist's singularity, where the
+    /// family has one.
+    pub body: String,
+    /// The whole body (`tip_ik_branch_generic`), where it differs: with that pass.
+    pub with_pass: Option<String>,
+    /// The measure (each solution's pose at the solver's cosines and sines).
+    pub measure: String,
 }
 
 /// One numeric robot's IK medians and success counts.
@@ -319,9 +330,9 @@ pub fn read_ik(root: &Path, criterion: &Path) -> Option<Ik> {
     Some(Ik { closed, numeric, ik_geo })
 }
 
-/// The compiled closed form's operations per branch and its measure's, as `sin_cos/mul/add/div/
-/// sqrt/atan2/select`; `None` for a robot whose closed form is not compiled (or that does not load).
-fn ik_op_counts(root: &Path, file: &str, base: &str, tip: &str) -> Option<(String, String)> {
+/// The compiled closed form's operations per branch and its measure's; `None` for a robot whose
+/// closed form is not compiled (or that does not load).
+fn ik_op_counts(root: &Path, file: &str, base: &str, tip: &str) -> Option<IkOps> {
     let text = std::fs::read_to_string(root.join("robots").join(file)).ok()?;
     let tree = kinematics_model::parse_source(file, &text).ok()?;
     let plan = kinematics_compiler::ik::classify(&tree, base, tip).ok()?;
@@ -331,7 +342,14 @@ fn ik_op_counts(root: &Path, file: &str, base: &str, tip: &str) -> Option<(Strin
     let cells = |c: kinematics_compiler::OpCount| {
         format!("{}/{}/{}/{}/{}/{}/{}", c.sin_cos, c.mul, c.add, c.div, c.sqrt, c.atan2, c.select)
     };
-    Some((cells(body.op_count()), cells(measure.op_count())))
+    Some(match kinematics_compiler::ik::IkBody::regular(&plan) {
+        Some(regular) => IkOps {
+            body: cells(regular.op_count()),
+            with_pass: Some(cells(body.op_count())),
+            measure: cells(measure.op_count()),
+        },
+        None => IkOps { body: cells(body.op_count()), with_pass: None, measure: cells(measure.op_count()) },
+    })
 }
 
 /// One robot's paired ratios from `kinematics-ik-paired.tsv` (`robot, pair, ratio`), by pair.

@@ -72,14 +72,18 @@ pub fn ik_section(ik: Option<&Ik>, machine: &str) -> String {
         s,
         "\n`tip_ik` is the compiled body on eight lanes, then every solution's pose at the cosines and sines the\n\
          body computed (no `sin_cos`), its errors against the target, and the eight solutions unpacked; the\n\
-         quartic families' `tip_ik` calls the run-time family function instead. `pose at q` is what the measure\n\
-         would cost with `sin_cos`. Operations per branch (one per lane), `sin_cos/mul/add/div/sqrt/atan2/select`,\n\
-         from `kinematics expr --ik`:\n\n\
-         | robot | compiled body | measure |\n|---|---|---|"
+         quartic families' `tip_ik` calls the run-time family function instead. The UR family's body has a pass\n\
+         at the wrist's singularity (where `q6 = 0` leaves the elbow out of reach): `tip_ik` runs the body\n\
+         without it, and the whole body only when a lane comes back singular and not exact; `compiled body`\n\
+         above times the whole body (`tip_ik_branch_generic`). `pose at q` is what the measure would cost with\n\
+         `sin_cos`. Operations per branch (one per lane), `sin_cos/mul/add/div/sqrt/atan2/select`, from\n\
+         `kinematics expr --ik`:\n\n\
+         | robot | body `tip_ik` runs | whole body, with the singular pass | measure |\n|---|---|---|---|"
     );
     for r in &ik.closed {
-        if let Some((body, measure)) = &r.ops {
-            let _ = writeln!(s, "| {} | {body} | {measure} |", r.name);
+        if let Some(ops) = &r.ops {
+            let whole = ops.with_pass.as_deref().unwrap_or("the same");
+            let _ = writeln!(s, "| {} | {} | {whole} | {} |", r.name, ops.body, ops.measure);
         }
     }
     let _ = writeln!(
@@ -113,7 +117,7 @@ pub fn ik_section(ik: Option<&Ik>, machine: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::read::{ClosedIk, NumericIk};
+    use crate::read::{ClosedIk, IkOps, NumericIk};
 
     #[test]
     fn without_results_the_section_says_which_command_to_run() {
@@ -134,7 +138,11 @@ mod tests {
                 lanes4: None,
                 scalar: Some(800.0),
                 pose8: Some(250.0),
-                ops: Some(("0/1/2/3/4/5/6".to_owned(), "0/7/8/0/0/0/0".to_owned())),
+                ops: Some(IkOps {
+                    body: "0/1/2/3/4/5/6".to_owned(),
+                    with_pass: Some("0/2/3/4/5/6/7".to_owned()),
+                    measure: "0/7/8/0/0/0/0".to_owned(),
+                }),
                 paired: [("nearest/all".to_owned(), 1.1)].into_iter().collect(),
             }],
             numeric: vec![NumericIk {
@@ -149,7 +157,7 @@ mod tests {
         let s = ik_section(Some(&ik), "a machine");
         assert!(s.contains("\n| UR5 | 400 | 440 | 200 | n/a | 800 | 250 | 300 |\n"), "{s}");
         assert!(s.contains("\n| UR5 | 1.10 | n/a | n/a | n/a |\n"), "{s}");
-        assert!(s.contains("\n| UR5 | 0/1/2/3/4/5/6 | 0/7/8/0/0/0/0 |\n"), "{s}");
+        assert!(s.contains("\n| UR5 | 0/1/2/3/4/5/6 | 0/2/3/4/5/6/7 | 0/7/8/0/0/0/0 |\n"), "{s}");
         assert!(s.contains("\n| Panda | 25.0 us | n/a | n/a | 99.8% (499 of 500) | 60.0% (300 of 500) |\n"), "{s}");
         assert!(s.ends_with("\nNo ik-geo results: run `bash benches/ik-geo/run.sh`.\n"), "{s}");
     }
