@@ -194,12 +194,30 @@ pub fn three_parallel_two_intersecting(arm: &Arm6, target: &Pose<f64>) -> IkSolu
     for t1 in t1s {
         // `h` seen from the tool flange: R16^T h.
         let w = super::vector::mul_transposed(&r06, t1.back().rotate(h1, h));
-        let (q5s, fifth) = rotation_to_height(h, h5, h6, dot(w, h6));
+        let (q5s, fifth) = fifth_angle(h, h5, h6, w);
         for q5 in q5s {
             parallel_elbow(arm, &r06, v0, t1, q5, first.and(fifth), 0.0, &mut out);
         }
     }
     out
+}
+
+/// `q5` of an arm with axes 2, 3, 4 parallel (direction `h`): `h . rot(h5, q5) h6 = h6 . w` for
+/// `w = R16^T h` (subproblem 4). An orthogonal wrist (`h` and `h6` both square to `h5`: every UR;
+/// known at compile time, so the test folds away) takes it as `h6 . rot(h5, -q5) h = h6 . w` on the
+/// great circle, whose half-width's sine comes from `|h6 x w|`: near the wrist's singularity
+/// (`w` near `+-h6`) that keeps the digits of `q5` which the general form, through `sqrt(1 -
+/// height^2)`, loses (its error grows as 1e-16 over the distance to the singularity, and the
+/// pose's with it).
+#[inline(always)]
+fn fifth_angle(h: V3, h5: V3, h6: V3, w: V3) -> ([Turn; 2], Quality) {
+    let orthogonal = dot(h, h5).abs() <= ORTHOGONAL && dot(h6, h5).abs() <= ORTHOGONAL;
+    if orthogonal {
+        let [plus, minus] = rotation_to_height_on_great_circle(h6, h5, h, w);
+        ([plus.back(), minus.back()], Quality::EXACT)
+    } else {
+        rotation_to_height(h, h5, h6, dot(w, h6))
+    }
 }
 
 /// Axes 2, 3, 4 parallel (direction `h = h2`), no other two meeting: `q1` and `q5` together by

@@ -225,6 +225,47 @@ fn a_wrist_singularity_gives_representatives_that_reach_the_pose() {
     }
 }
 
+/// Near the wrist singularity (joint 5 within 1e-4 to 1e-8 rad of it) an orthogonal wrist keeps its
+/// digits: the UR family's `q5` on the great circle, as the spherical wrists', so every exact
+/// solution reaches the pose within 1e-12 (the general form of subproblem 4 lost them: errors grew
+/// as 1e-16 over the distance, 4e-10 rad at 1e-6 on the UR5) and the configuration is among them;
+/// within `DEGENERATE` (1e-10, 1e-12) the branch is the singular representative, off by about the
+/// distance.
+#[test]
+fn near_a_wrist_singularity_orthogonal_wrists_keep_their_digits() {
+    let mut rng = Rng(13);
+    for family in [Family::ThreeParallelTwoIntersecting, Family::SphericalTwoParallel] {
+        let mut worst: f64 = 0.0;
+        for _ in 0..40 {
+            let mut arm = random_arm(&mut rng, family);
+            let theta = rng.uniform(-3.1, 3.1);
+            let h4 = arm.axes[3];
+            let across = cross(h4, rng.unit());
+            let h5 = scale(across, 1.0 / libm::sqrt(norm_squared(across)));
+            arm.axes[4] = h5;
+            arm.axes[5] = super::vector::rotate(h5, theta, h4);
+            for distance in [1e-4, 1e-6, 1e-8, 1e-10, 1e-12] {
+                let mut q = [0; 6].map(|_| rng.uniform(-3.1, 3.1));
+                q[4] = -theta + rng.sign() * distance;
+                let target = arm.pose(&q);
+                let mut solutions = solve(family, &arm, &target);
+                solutions.measure(&target, |q| arm.pose(q));
+                // Within `DEGENERATE` of the singularity the branch is its representative, whose
+                // pose is off by about the distance (`q5` taken as at the singularity).
+                let bound = if distance > 1e-9 { 1e-12 } else { 4.0 * distance };
+                for s in solutions.exact() {
+                    worst = worst.max(s.position_error.max(s.rotation_error) / bound);
+                }
+                if distance > 1e-8 {
+                    let found = solutions.exact().any(|s| angle_distance(&s.q, &q) < 1e-6);
+                    assert!(found, "{family:?}: {q:?} not among {solutions:?}");
+                }
+            }
+        }
+        assert!(worst <= 1.0, "{family:?}: worst pose error near the singularity {worst:e} of its bound");
+    }
+}
+
 /// A random planar arm: revolute joints about +-h through random points, a prismatic joint along
 /// h where `slide` says.
 fn random_planar<const N: usize>(rng: &mut Rng, slide: Option<usize>) -> PlanarArm<N> {

@@ -310,8 +310,19 @@ fn three_parallel_two_intersecting(
     let q1 = b.back(t1);
     let turned = b.rotate(q1, h1, h);
     let w = b.mul_transposed(r06, turned);
-    let height = b.dot(w, h6);
-    let (q5, fifth) = b.rotation_to_height(h, h5, h6, height, s2);
+    // Decided here, at compile time, as the run time's `fifth_angle` decides it: an orthogonal
+    // wrist on the great circle (`h6 . rot(h5, -q5) h = h6 . w`), which keeps the digits of `q5`
+    // near the singularity.
+    let dot = |u: [f64; 3], v: [f64; 3]| u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+    let axes = &arm.axes;
+    let orthogonal = dot(axes[1], axes[4]).abs() <= ORTHOGONAL && dot(axes[5], axes[4]).abs() <= ORTHOGONAL;
+    let (q5, fifth) = if orthogonal {
+        let minus_q5 = b.rotation_to_height_on_great_circle(h6, h5, h, w, s2);
+        (b.back(minus_q5), b.exact())
+    } else {
+        let height = b.dot(w, h6);
+        b.rotation_to_height(h, h5, h6, height, s2)
+    };
     b.step("q5 by SP4", q5.nodes().into_iter().chain(fifth.nodes()));
     let quality = b.both(first, fifth);
     parallel_elbow(b, arm, r06, v0, t1, q5, quality, s3, singular_pass)
