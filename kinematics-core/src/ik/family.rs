@@ -239,7 +239,7 @@ pub fn three_parallel(arm: &Arm6, target: &Pose<f64>) -> IkSolutions<6, 8> {
         [dot(h, add(add(p12, p23), add(p34, p45))), 0.0],
     );
     for &(t1, q5) in pairs.as_slice() {
-        // The quartic finds a double root (the wrist singularity) to about 1e-8 rad only, short of
+        // The quartic finds a double root (the wrist singularity) to about 1e-7 rad only, short of
         // the sixth subproblem's own test: near it, an elbow out of reach counts as singular.
         parallel_elbow(arm, &r06, v0, t1, q5, pairs.quality, NEAR_SINGULAR_SIXTH, &mut out);
     }
@@ -296,14 +296,15 @@ fn parallel_elbow(
 /// How near the wrist's singularity (the sine of the angle between axis 6 and the parallel axes,
 /// as joint 5 turns them) the three-parallel arm's branches count as at it when the sum that the
 /// sixth joint's angle gives leaves the elbow out of reach: its quartic finds the double root
-/// there to about 1e-8 rad, short of the subproblem's `DEGENERATE`, and the sixth angle of such a
+/// there to about 1e-7 rad, short of the subproblem's `DEGENERATE`, and the sixth angle of such a
 /// root is noise. The branch is then flagged singular, and its errors (up to about this times
 /// the sixth angle's move, in rad) are measured like any other's.
 pub const NEAR_SINGULAR_SIXTH: f64 = 1e-6;
 
 /// The sum `q2 + q3 + q4` and `q6` at the wrist's singularity, where axis 6 is in line with the
 /// parallel axes (`R5^T h = e h6`, `e = +-1`: `seen_along`, the cosine between them): the rotation
-/// then fixes only `sum + e q6`, and the sum found with `q6 = 0` is one representative. The
+/// then fixes only `sum + e q6`, and the sum found (with `q6 = 0` at the singularity itself) is
+/// one representative. The
 /// wrist's offset `u` turns with the sum, and the elbow must reach what it leaves (`v1 - rot(h,
 /// sum) u`), so where `q6 = 0` leaves the elbow out of reach the sum moves: to where the elbow's
 /// squared distance is the middle of what both the elbow and the turning offset can reach (so
