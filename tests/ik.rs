@@ -458,6 +458,55 @@ fn numeric_ik_converges_on_seven_joint_arms() {
     }
 }
 
+// A tree: a torso (one waist joint) with two seven-joint arms and their grippers, 17 degrees of
+// freedom; the tip is the left arm's tool, whose chain holds eight of them.
+#[derive(Kinematics)]
+#[kinematics(urdf = "robots/dual_arm_torso.urdf", tip = "tool_l", ik = "numeric")]
+struct DualArmLeft;
+
+/// The numeric solver on a tree's tip: the whole configuration in, the joints off the tip's chain
+/// (the other arm, both grippers) left at the seed's values, the chain's moved within limits;
+/// random reachable targets from random seeds converge (at least 99% of them), each converged
+/// answer reaching its target by its own errors and by the runtime reference.
+#[test]
+fn numeric_ik_serves_a_tree_tip() {
+    let reference = DualArmLeft::reference().expect("loads");
+    let tree = reference.tree();
+    let chain: Vec<bool> = {
+        let on = tree.chain_dofs(&tree.chain("world", "tool_l").expect("a chain"));
+        (0..DualArmLeft::DOF).map(|i| on.contains(&i)).collect()
+    };
+    assert_eq!(chain.iter().filter(|&&c| c).count(), 8, "waist and seven arm joints");
+    let limits = DualArmLeft::JOINT_LIMITS;
+    let mut rng = Uniform(21);
+    let mut within = |rng: &mut Uniform| {
+        limits.map(|l| {
+            let (lo, hi) = if l.lower.is_finite() { (l.lower, l.upper) } else { (-3.1, 3.1) };
+            lo + (hi - lo) * rng.next()
+        })
+    };
+    let samples = 300;
+    let mut converged = 0;
+    for _ in 0..samples {
+        let target = DualArmLeft::tip_pose(&within(&mut rng));
+        let seed = within(&mut rng);
+        let found = DualArmLeft::tip_ik_numeric(&target, &seed).expect("a pose and a finite seed");
+        for (i, (q, s)) in found.q.iter().zip(&seed).enumerate() {
+            if !chain[i] {
+                assert_eq!(q.to_bits(), s.to_bits(), "joint {i} is off the chain: {found:?}");
+            }
+        }
+        assert!(found.q.iter().zip(&limits).all(|(q, l)| l.lower <= *q && *q <= l.upper), "{found:?}");
+        if found.converged {
+            converged += 1;
+            let reached = Pose::from(reference.link_pose(&found.q, "tool_l").expect("finite q"));
+            let (position, rotation) = kinematics::ik::pose_errors(&reached, &target);
+            assert!(position <= 1e-10 && rotation <= 1e-10, "the reference: {position:e}, {rotation:e}");
+        }
+    }
+    assert!(converged * 100 >= samples * 99, "{converged} of {samples} converged");
+}
+
 /// The numeric solver is the closed form's witness: from many seeds it finds no solution the
 /// closed form misses (each converged answer is one of the closed form's, modulo 2 pi).
 #[test]

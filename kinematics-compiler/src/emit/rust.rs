@@ -154,7 +154,11 @@ impl Writer<'_> {
                     _ => {
                         self.expr(a, out);
                         punct(out, '+');
-                        self.expr(b, out);
+                        // `a + (x + y)` is not `a + x + y`, which Rust reads as `(a + x) + y`: in
+                        // floating point they round differently, and the code must compute what
+                        // the graph says (the evaluator's value, bit for bit).
+                        let wrap = self.inline(b) && matches!(g.node(b), Node::Add(..));
+                        self.wrapped(b, wrap, out);
                     }
                 }
             }
@@ -162,7 +166,10 @@ impl Writer<'_> {
                 let (a, b) = if g.as_const(b).is_some() { (b, a) } else { (a, b) };
                 self.operand(a, out);
                 punct(out, '*');
-                self.operand(b, out);
+                // `a * (x * y)` likewise.
+                let wrap = self.inline(b)
+                    && matches!(g.node(b), Node::Add(..) | Node::Neg(..) | Node::Div(..) | Node::Mul(..));
+                self.wrapped(b, wrap, out);
             }
             Node::Input(i) => out.append(self.input(i)),
             Node::Div(a, b) => {
@@ -593,4 +600,48 @@ pub fn emit_module_source(compiled: &Compiled, options: &EmitOptions) -> Result<
     let tokens = emit_function(compiled, options);
     let file: syn::File = syn::parse2(tokens)?;
     Ok(prettyplease::unparse(&file))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The expression of one output of `g`, its inputs named `x0, x1, ...`.
+    fn written(g: &ExprGraph, output: ExprId, inputs: usize) -> String {
+        let names: Vec<Ident> = (0..inputs).map(|i| format_ident!("x{i}")).collect();
+        let line = straight_line(g, &[output], 0, &names, &quote!(p));
+        line.outputs[0].to_string()
+    }
+
+    /// A sum or product nested on the right is written with its parentheses: Rust reads `a + b + c`
+    /// as `(a + b) + c`, which rounds differently from `a + (b + c)`, and the code must compute
+    /// what the graph says (the evaluator's value, bit for bit).
+    #[test]
+    fn right_nested_sums_and_products_keep_their_parentheses() {
+        let mut g = ExprGraph::default();
+        let [x0, x1, x2] = [0, 1, 2].map(|i| g.input(i));
+        // Operands are ordered by id: the inner node, made last, lands on the right.
+        let inner = g.add(x1, x2);
+        let sum = g.add(x0, inner);
+        assert_eq!(written(&g, sum, 3), "x0 + (x1 + x2)");
+        let inner = g.mul(x1, x2);
+        let product = g.mul(x0, inner);
+        assert_eq!(written(&g, product, 3), "x0 * (x1 * x2)");
+        // Nested on the left, none are needed.
+        let left = g.add(x0, x1);
+        let later = g.input(3);
+        let sum = g.add(left, later);
+        assert_eq!(written(&g, sum, 4), "x0 + x1 + x3");
+        // Why it matters: with a = 1, b = 1e16, c = -1e16 the graph's a + (b + c) is 1, and
+        // (a + b) + c is 0 (1e16 + 1 rounds to 1e16).
+        let values = [1.0, 1e16, -1e16];
+        let mut cache = Vec::new();
+        let mut h = ExprGraph::default();
+        let [a, b, c] = [0, 1, 2].map(|i| h.input(i));
+        let bc = h.add(b, c);
+        let abc = h.add(a, bc);
+        assert_eq!(written(&h, abc, 3), "x0 + (x1 + x2)");
+        assert_eq!(h.eval_with_inputs(abc, &[], &values, &mut cache), 1.0);
+        assert_eq!(std::hint::black_box(1.0f64) + 1e16 + -1e16, 0.0);
+    }
 }

@@ -2,6 +2,7 @@
 //! pose and Jacobian, joint limits respected (joints at a limit that would step past it held
 //! still, steps clamped into them), restarts from deterministic seeds when a start does not
 //! converge or stalls (has not halved its error in ten steps), and no heap in the iteration.
+//! Joints that do not move the tip (a tree's other branches) keep the seed's values throughout.
 //!
 //! The error is the twist that takes the reached pose to the target: the position difference and
 //! the rotation vector of `R_target R^T`, both in the base frame, which is what the geometric
@@ -214,17 +215,20 @@ fn bounded_step<const N: usize>(
 struct Seeds(SplitMix);
 
 impl Seeds {
-    /// A configuration within the limits (within one turn either side of zero where a joint has
-    /// none).
-    fn within<const N: usize>(&mut self, limits: &[JointLimits; N]) -> [f64; N] {
-        let mut q = [0.0; N];
-        for (value, l) in q.iter_mut().zip(limits) {
+    /// `seed` with the joints marked in `moving` drawn anew within the limits (within one turn
+    /// either side of zero where a joint has none); the others keep the seed's values.
+    fn within<const N: usize>(&mut self, limits: &[JointLimits; N], seed: &[f64; N], moving: &[bool; N]) -> [f64; N] {
+        let mut q = *seed;
+        for ((value, l), &moves) in q.iter_mut().zip(limits).zip(moving) {
             let (lo, hi) = if l.lower.is_finite() && l.upper.is_finite() {
                 (l.lower, l.upper)
             } else {
                 (-core::f64::consts::PI, core::f64::consts::PI)
             };
-            *value = lo + (hi - lo) * self.0.next();
+            let drawn = lo + (hi - lo) * self.0.next();
+            if moves {
+                *value = drawn;
+            }
         }
         q
     }
@@ -249,11 +253,24 @@ pub fn levenberg_marquardt<const N: usize>(
     let mut best: Option<NumericSolution<N>> = None;
     let mut iterations = 0;
     let mut starts = 0;
+    // The joints that move the tip: a column of the Jacobian that is not zero (a revolute joint's
+    // holds its axis, a prismatic one's its direction, wherever the arm is). The others (a tree's
+    // other branches) never step, and restarts keep them at the seed's values too.
+    let mut moving = [false; N];
+    let first = {
+        let mut q = *seed;
+        clamp(&mut q, limits);
+        q
+    };
+    let at_seed = pose_and_jacobian(&first);
+    for (i, moves) in moving.iter_mut().enumerate() {
+        *moves = at_seed.1.iter().any(|row| row[i] != 0.0);
+    }
     for start in 0..=options.restarts {
         starts += 1;
-        let mut q = if start == 0 { *seed } else { seeds.within(limits) };
+        let mut q = if start == 0 { first } else { seeds.within(limits, &first, &moving) };
         clamp(&mut q, limits);
-        let (mut pose, mut jacobian) = pose_and_jacobian(&q);
+        let (mut pose, mut jacobian) = if start == 0 { at_seed } else { pose_and_jacobian(&q) };
         let mut error = error_twist(&pose, target);
         let mut cost = dot6(&error);
         let mut lambda = 1e-3;
