@@ -479,7 +479,7 @@ fn numeric_ik_serves_a_tree_tip() {
     assert_eq!(chain.iter().filter(|&&c| c).count(), 8, "waist and seven arm joints");
     let limits = DualArmLeft::JOINT_LIMITS;
     let mut rng = Uniform(21);
-    let mut within = |rng: &mut Uniform| {
+    let within = |rng: &mut Uniform| {
         limits.map(|l| {
             let (lo, hi) = if l.lower.is_finite() { (l.lower, l.upper) } else { (-3.1, 3.1) };
             lo + (hi - lo) * rng.next()
