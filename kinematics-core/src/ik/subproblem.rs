@@ -337,6 +337,7 @@ mod tests {
         let (mut least, mut most) = (f64::INFINITY, f64::NEG_INFINITY);
         for i in 0..10_000 {
             let d2 = norm_squared(sub(rotate(k, f64::from(i) * core::f64::consts::TAU / 10_000.0, p1), p2));
+            assert!(d2.is_finite(), "{d2}");
             (least, most) = (least.min(d2), most.max(d2));
         }
         assert!(lo <= least + 1e-15 && most <= hi + 1e-15, "{lo} {least} {most} {hi}");

@@ -117,6 +117,14 @@ fn solve(family: Family, arm: &Arm6, target: &Pose<f64>) -> IkSolutions<6, 8> {
 }
 
 /// The largest difference of two configurations' angles, modulo 2 pi.
+/// A solution's larger error, NaN counted as infinitely far (`f64::max` would drop it).
+fn error_of(s: &IkSolution<6>) -> f64 {
+    if s.position_error.is_nan() || s.rotation_error.is_nan() {
+        return f64::INFINITY;
+    }
+    s.position_error.max(s.rotation_error)
+}
+
 fn angle_distance(a: &[f64; 6], b: &[f64; 6]) -> f64 {
     a.iter().zip(b).map(|(x, y)| wrap(x - y).abs()).fold(0.0, |m, d| if d > m { d } else { m })
 }
@@ -144,7 +152,7 @@ fn every_family_round_trips_on_random_arms() {
                 assert!(solution.is_some_and(|s| s.exact), "{family:?}: q {q:?} not among {solutions:?}");
                 worst_match = worst_match.max(nearest);
                 for s in solutions.exact() {
-                    let error = s.position_error.max(s.rotation_error);
+                    let error = error_of(s);
                     assert!(error.is_finite(), "{family:?}: {s:?}");
                     worst_error = worst_error.max(error);
                 }
@@ -200,15 +208,14 @@ fn a_wrist_singularity_gives_representatives_that_reach_the_pose() {
                 let mut solutions = solve(family, &arm, &target);
                 solutions.measure(&target, |q| arm.pose(q));
                 singular += solutions.iter().filter(|s| s.singular).count();
-                let best =
-                    solutions.exact().map(|s| s.position_error.max(s.rotation_error)).fold(f64::INFINITY, f64::min);
+                let best = solutions.exact().map(error_of).fold(f64::INFINITY, f64::min);
                 // The three-parallel arm's quartic has a double root here, found to about 1e-7
                 // (`NEAR_SINGULAR_SIXTH`) or, for a few targets, not at all (documented in the
                 // guide: they come back as flagged least squares); every other family's first
                 // steps are exact.
                 let tolerance = if matches!(family, Family::ThreeParallel) { 1e-6 } else { 1e-10 };
                 for s in solutions.exact().filter(|s| s.singular) {
-                    assert!(s.position_error.max(s.rotation_error) < tolerance, "{family:?}: q {q:?}: {s:?}");
+                    assert!(error_of(s) < tolerance, "{family:?}: q {q:?}: {s:?}");
                 }
                 if matches!(family, Family::ThreeParallel) {
                     missed += usize::from(best >= tolerance);
@@ -254,7 +261,9 @@ fn near_a_wrist_singularity_orthogonal_wrists_keep_their_digits() {
                 // pose is off by about the distance (`q5` taken as at the singularity).
                 let bound = if distance > 1e-9 { 1e-12 } else { 4.0 * distance };
                 for s in solutions.exact() {
-                    worst = worst.max(s.position_error.max(s.rotation_error) / bound);
+                    let error = error_of(s) / bound;
+                    assert!(error <= 1.0, "{family:?}: q {q:?}: {s:?} (bound {bound:e})");
+                    worst = worst.max(error);
                 }
                 if distance > 1e-8 {
                     let found = solutions.exact().any(|s| angle_distance(&s.q, &q) < 1e-6);
