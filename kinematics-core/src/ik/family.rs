@@ -239,8 +239,9 @@ pub fn three_parallel(arm: &Arm6, target: &Pose<f64>) -> IkSolutions<6, 8> {
         [dot(h, add(add(p12, p23), add(p34, p45))), 0.0],
     );
     for &(t1, q5) in pairs.as_slice() {
-        // The quartic finds a double root (the wrist singularity) to about 1e-7 rad only, short of
-        // the sixth subproblem's own test: near it, an elbow out of reach counts as singular.
+        // Near the wrist singularity the quartic's two roots there (the wrist flips) are found to
+        // about 1e-7 rad, or as one at their tangency: short of the sixth subproblem's own test,
+        // so near it an elbow out of reach counts as singular.
         parallel_elbow(arm, &r06, v0, t1, q5, pairs.quality, NEAR_SINGULAR_SIXTH, &mut out);
     }
     out
@@ -295,9 +296,9 @@ fn parallel_elbow(
 
 /// How near the wrist's singularity (the sine of the angle between axis 6 and the parallel axes,
 /// as joint 5 turns them) the three-parallel arm's branches count as at it when the sum that the
-/// sixth joint's angle gives leaves the elbow out of reach: its quartic finds the double root
-/// there to about 1e-7 rad, short of the subproblem's `DEGENERATE`, and the sixth angle of such a
-/// root is noise. The branch is then flagged singular, and its errors (up to about this times
+/// sixth joint's angle gives leaves the elbow out of reach: near it its quartic's two roots (the
+/// wrist flips) are found to about 1e-7 rad, short of the subproblem's `DEGENERATE`, and the sixth
+/// angle of such a root is noise. The branch is then flagged singular, and its errors (up to about this times
 /// the sixth angle's move, in rad) are measured like any other's.
 pub const NEAR_SINGULAR_SIXTH: f64 = 1e-6;
 

@@ -94,7 +94,18 @@ fn trig_roots(k: &TrigQuadratic) -> ([(f64, f64); 4], usize) {
     let g2c = k[3] * phi2.0 + k[4] * phi2.1;
     let g2s = -k[3] * phi2.1 + k[4] * phi2.0;
     let quartic = [g0 + g1c + g2c, 2.0 * g1s + 4.0 * g2s, 2.0 * g0 - 6.0 * g2c, 2.0 * g1s - 4.0 * g2s, g0 - g1c + g2c];
-    let roots = real_roots(&quartic);
+    // What each coefficient is computed from: near a root at `tau = 0` the first two are small
+    // differences of `f`'s terms and carry those terms' rounding, so a tangency there is judged
+    // against these sizes.
+    let (size0, size1, size2) = (k[0].abs(), k[1].abs() + k[2].abs(), k[3].abs() + k[4].abs());
+    let sizes = [
+        size0 + size1 + size2,
+        2.0 * size1 + 4.0 * size2,
+        2.0 * size0 + 6.0 * size2,
+        2.0 * size1 + 4.0 * size2,
+        size0 + size1 + size2,
+    ];
+    let roots = real_roots(&quartic, &sizes);
     let mut out = [(1.0, 0.0); 4];
     let mut count = 0;
     for &u in roots.as_slice() {
@@ -293,6 +304,36 @@ mod tests {
             previous = value;
         }
         assert_eq!(changes, n);
+    }
+
+    /// `f(t) = (1 - cos(t - t0)) (alpha + beta cos(t - t1))` touches zero at `t0` (a double root)
+    /// and crosses it twice where `alpha + beta cos(t - t1) = 0`. With `t0` near an eighth turn the
+    /// half-angle quartic puts the double root near `u = 0`, where its first coefficients are small
+    /// differences of `f`'s terms: the tangency must still be found, on every such `f`.
+    #[test]
+    fn a_tangency_near_the_substitutions_origin_is_a_root() {
+        let mut missed = 0;
+        for i in 0..2000 {
+            let x = |j: u32| libm::sin(f64::from(i * 7 + j) * 12.9898) * 0.5 + 0.5;
+            let t0 = core::f64::consts::FRAC_PI_4 * f64::from(i % 8) + 0.02 * (x(0) - 0.5);
+            let (alpha, t1) = (0.2 + 5.0 * x(1), 6.0 * x(2));
+            // |beta| > alpha: the second factor crosses zero.
+            let beta = (alpha + 0.1 + 5.0 * x(4)) * if x(3) < 0.5 { -1.0 } else { 1.0 };
+            let k = [
+                alpha - 0.5 * beta * libm::cos(t1 - t0),
+                beta * libm::cos(t1) - alpha * libm::cos(t0),
+                beta * libm::sin(t1) - alpha * libm::sin(t0),
+                -0.5 * beta * libm::cos(t0 + t1),
+                -0.5 * beta * libm::sin(t0 + t1),
+            ];
+            let (roots, n) = trig_roots(&k);
+            let touching = roots[..n].iter().any(|&(c, s)| {
+                let away = libm::atan2(s * libm::cos(t0) - c * libm::sin(t0), c * libm::cos(t0) + s * libm::sin(t0));
+                away.abs() < 1e-6
+            });
+            missed += usize::from(!touching);
+        }
+        assert_eq!(missed, 0, "{missed} of 2,000 tangencies missed");
     }
 
     #[test]
