@@ -116,7 +116,6 @@ fn solve(family: Family, arm: &Arm6, target: &Pose<f64>) -> IkSolutions<6, 8> {
     }
 }
 
-/// The largest difference of two configurations' angles, modulo 2 pi.
 /// A solution's larger error, NaN counted as infinitely far (`f64::max` would drop it).
 fn error_of(s: &IkSolution<6>) -> f64 {
     if s.position_error.is_nan() || s.rotation_error.is_nan() {
@@ -125,8 +124,20 @@ fn error_of(s: &IkSolution<6>) -> f64 {
     s.position_error.max(s.rotation_error)
 }
 
+/// The largest difference of two configurations' angles, modulo 2 pi; a NaN angle counts as
+/// infinitely far.
 fn angle_distance(a: &[f64; 6], b: &[f64; 6]) -> f64 {
-    a.iter().zip(b).map(|(x, y)| wrap(x - y).abs()).fold(0.0, |m, d| if d > m { d } else { m })
+    let mut largest = 0.0;
+    for (x, y) in a.iter().zip(b) {
+        let d = wrap(x - y).abs();
+        if d.is_nan() {
+            return f64::INFINITY;
+        }
+        if d > largest {
+            largest = d;
+        }
+    }
+    largest
 }
 
 #[test]
@@ -179,6 +190,20 @@ fn unreachable_targets_come_back_flagged_and_finite() {
     }
 }
 
+/// A random arm of the family with an orthogonal wrist (h5 square to h4) whose
+/// `h6 = rot(h5, theta) h4`, and the angle of joint 5 at its wrist singularity: at `q5 = -theta`,
+/// `R5 h6 = h4`. (Oblique wrists solve q5 by a general subproblem 4, whose double root at the
+/// singularity costs up to `DOUBLE_ROOT`'s 1e-7 rad, as documented there.)
+fn with_singular_wrist(rng: &mut Rng, family: Family) -> (Arm6, f64) {
+    let mut arm = random_arm(rng, family);
+    let theta = rng.uniform(-3.1, 3.1);
+    let h4 = arm.axes[3];
+    let across = cross(h4, rng.unit());
+    arm.axes[4] = scale(across, 1.0 / libm::sqrt(norm_squared(across)));
+    arm.axes[5] = super::vector::rotate(arm.axes[4], theta, h4);
+    (arm, -theta)
+}
+
 /// At a wrist singularity (axis 6 turned in line with axis 4, so joints 4 and 6 turn about the
 /// same axis and only a sum is fixed) every family returns branches flagged singular, and a pose
 /// the arm reaches is reached: some exact branch has it to rounding. For the families with axes
@@ -191,19 +216,10 @@ fn a_wrist_singularity_gives_representatives_that_reach_the_pose() {
     for family in Family::ALL {
         let mut singular = 0;
         for _ in 0..40 {
-            let mut arm = random_arm(&mut rng, family);
-            // An orthogonal wrist (h5 square to h4) whose h6 = rot(h5, theta) h4: at q5 = -theta,
-            // R5 h6 = h4. (Oblique wrists solve q5 by a general subproblem 4, whose double root
-            // at the singularity costs up to `DOUBLE_ROOT`'s 1e-7 rad, as documented there.)
-            let theta = rng.uniform(-3.1, 3.1);
-            let h4 = arm.axes[3];
-            let across = cross(h4, rng.unit());
-            let h5 = scale(across, 1.0 / libm::sqrt(norm_squared(across)));
-            arm.axes[4] = h5;
-            arm.axes[5] = super::vector::rotate(h5, theta, h4);
+            let (arm, singular_q5) = with_singular_wrist(&mut rng, family);
             for _ in 0..25 {
                 let mut q = [0; 6].map(|_| rng.uniform(-3.1, 3.1));
-                q[4] = -theta;
+                q[4] = singular_q5;
                 let target = arm.pose(&q);
                 let mut solutions = solve(family, &arm, &target);
                 solutions.measure(&target, |q| arm.pose(q));
@@ -233,16 +249,10 @@ fn near_a_wrist_singularity_orthogonal_wrists_keep_their_digits() {
     for family in [Family::ThreeParallelTwoIntersecting, Family::SphericalTwoParallel] {
         let mut worst: f64 = 0.0;
         for _ in 0..40 {
-            let mut arm = random_arm(&mut rng, family);
-            let theta = rng.uniform(-3.1, 3.1);
-            let h4 = arm.axes[3];
-            let across = cross(h4, rng.unit());
-            let h5 = scale(across, 1.0 / libm::sqrt(norm_squared(across)));
-            arm.axes[4] = h5;
-            arm.axes[5] = super::vector::rotate(h5, theta, h4);
+            let (arm, singular_q5) = with_singular_wrist(&mut rng, family);
             for distance in [1e-4, 1e-6, 1e-8, 1e-10, 1e-12] {
                 let mut q = [0; 6].map(|_| rng.uniform(-3.1, 3.1));
-                q[4] = -theta + rng.sign() * distance;
+                q[4] = singular_q5 + rng.sign() * distance;
                 let target = arm.pose(&q);
                 let mut solutions = solve(family, &arm, &target);
                 solutions.measure(&target, |q| arm.pose(q));
@@ -274,16 +284,10 @@ fn near_a_wrist_singularity_orthogonal_wrists_keep_their_digits() {
 fn the_three_parallel_quartic_keeps_its_digits_from_a_thousandth_of_a_radian() {
     let mut rng = Rng(17);
     for _ in 0..100 {
-        let mut arm = random_arm(&mut rng, Family::ThreeParallel);
-        let theta = rng.uniform(-3.1, 3.1);
-        let h4 = arm.axes[3];
-        let across = cross(h4, rng.unit());
-        let h5 = scale(across, 1.0 / libm::sqrt(norm_squared(across)));
-        arm.axes[4] = h5;
-        arm.axes[5] = super::vector::rotate(h5, theta, h4);
+        let (arm, singular_q5) = with_singular_wrist(&mut rng, Family::ThreeParallel);
         for distance in [1e-1, 1e-2, 1e-3] {
             let mut q = [0; 6].map(|_| rng.uniform(-3.1, 3.1));
-            q[4] = -theta + rng.sign() * distance;
+            q[4] = singular_q5 + rng.sign() * distance;
             let target = arm.pose(&q);
             let mut solutions = solve(Family::ThreeParallel, &arm, &target);
             solutions.measure(&target, |q| arm.pose(q));
