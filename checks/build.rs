@@ -127,7 +127,8 @@ fn type_name(name: &str) -> String {
 /// Writes every random robot's description into `OUT_DIR/random/` and its compiled struct and
 /// registry entry into `OUT_DIR/random_robots.rs`.
 fn write_random_robots(out: &Path) -> Result<(), Box<dyn std::error::Error>> {
-    use kinematics_compiler::robot::{RobotSpec, Scalars, emit_robot};
+    use kinematics_compiler::options::{Options, Scalars, Trig};
+    use kinematics_compiler::robot::{RobotSpec, emit_robot};
     use kinematics_model::ExactAngles;
     let dir = out.join("random");
     // Start empty, so no file of an earlier set stays behind.
@@ -148,22 +149,19 @@ fn write_random_robots(out: &Path) -> Result<(), Box<dyn std::error::Error>> {
         // Every robot with tips and `f64` functions gets its tips' velocities, checked against the
         // runtime reference and dual numbers through its generated pose.
         let velocities = robot.f64 && !robot.tips.is_empty();
-        let spec = RobotSpec {
-            tree: &tree,
+        let options = Options {
             base: robot.base.clone(),
             tips: robot.tips.clone(),
-            links: Vec::new(),
             positions: robot.positions,
             jacobians: velocities,
-            ik: kinematics_compiler::robot::IkMode::Off,
-            floating_base: None,
             scalars: Scalars { f64: robot.f64, f32: robot.f32 },
+            trig: if trig == "Std" { Trig::Std } else { Trig::Fast },
+            exact_angles: ExactAngles::on(robot.exact_angles),
+            ..Options::default()
+        };
+        let spec = RobotSpec {
+            robot: options.check(&tree).map_err(|e| format!("random robot {}: {e}", robot.file))?,
             krate: "::kinematics".parse()?,
-            trig: if trig == "Std" {
-                kinematics_compiler::emit::Trig::Std
-            } else {
-                kinematics_compiler::emit::Trig::Fast
-            },
             source_label: robot.file.clone(),
             source_text: text_expr.parse()?,
             impl_generics: "".parse()?,

@@ -7,40 +7,24 @@
 //! the file is self-contained. A build script asks cargo to rerun when the description changes
 //! (`cargo:rerun-if-changed`, printed by `Robot::write_to_out_dir`).
 
-use kinematics_compiler::emit::Trig;
-use kinematics_compiler::robot::{RobotSpec, Scalars, emit_robot};
+use kinematics_compiler::options::Checked;
+use kinematics_compiler::robot::{RobotSpec, emit_robot};
 use proc_macro2::{Literal, TokenStream};
 use quote::quote;
 
 use crate::error::BuildError;
 use crate::source::Loaded;
 
-/// What to emit for a loaded robot (the builder's options, checked).
+/// What to emit for a loaded robot.
 pub(crate) struct Emit<'a> {
     /// The description.
     pub loaded: &'a Loaded,
+    /// The robot with the builder's options, checked.
+    pub robot: Checked<'a>,
     /// The struct's name (a Rust identifier).
     pub name: &'a str,
-    /// Base link (default: the root).
-    pub base: Option<String>,
-    /// Tip links.
-    pub tips: Vec<String>,
-    /// The links `link_poses` returns, in order (empty: every link but the base).
-    pub links: Vec<String>,
-    /// Position-only functions too.
-    pub positions: bool,
-    /// Velocity functions of the tips.
-    pub jacobians: bool,
-    /// Inverse kinematics of the tip.
-    pub ik: kinematics_compiler::robot::IkMode,
-    /// The free-flying root's link, if any.
-    pub floating_base: Option<String>,
-    /// `_f32` functions too.
-    pub f32: bool,
     /// Path of the `kinematics` crate.
     pub crate_path: &'a str,
-    /// Which sine and cosine the code calls.
-    pub trig: Trig,
 }
 
 /// The formatted Rust source: a header comment, then the struct and its impls.
@@ -53,17 +37,8 @@ pub(crate) fn emit_source(emit: &Emit<'_>) -> Result<String, BuildError> {
         .map_err(|_| BuildError::CratePath { file: file(), path: emit.crate_path.to_owned() })?;
     let text = text_literal(&loaded.text);
     let spec = RobotSpec {
-        tree: &loaded.tree,
-        base: emit.base.clone(),
-        tips: emit.tips.clone(),
-        links: emit.links.clone(),
-        positions: emit.positions,
-        jacobians: emit.jacobians,
-        ik: emit.ik.clone(),
-        floating_base: emit.floating_base.clone(),
-        scalars: Scalars { f64: true, f32: emit.f32 },
+        robot: emit.robot.clone(),
         krate: quote!(#krate),
-        trig: emit.trig,
         source_label: loaded.reference_label.clone(),
         source_text: quote!(#text),
         impl_generics: TokenStream::new(),

@@ -1,6 +1,7 @@
 //! Everything that can go wrong between a build script's call and the written file.
 
 use kinematics_compiler::CompileError;
+use kinematics_compiler::options::OptionFault;
 use kinematics_model::LoadError;
 
 /// Why a robot could not be generated or written. Messages name the description file as the
@@ -15,49 +16,16 @@ pub enum BuildError {
     /// model rule (every broken rule is listed).
     #[error(transparent)]
     Load(#[from] LoadError),
-    /// A base, tip or listed link (`links`) that the robot does not have.
-    #[error("{file}: {role} link `{link}` does not exist{}", suggestion.as_ref().map(|s| format!("; did you mean `{s}`?")).unwrap_or_default())]
-    UnknownLink {
+    /// Options that break the compiler's rules against this robot (every fault, each naming the
+    /// call that set the option): a link the robot does not have (with "did you mean"), a link
+    /// listed twice, `jacobians` without a tip, `ik` of a chain no family covers, a floating base
+    /// whose names clash.
+    #[error("{file}: {}", faults.iter().map(ToString::to_string).collect::<Vec<_>>().join("; "))]
+    Options {
         /// The description file.
         file: String,
-        /// `base`, `tip` or `listed` (an entry of `links`).
-        role: &'static str,
-        /// The link asked for.
-        link: String,
-        /// The closest link name, when it looks like a typo.
-        suggestion: Option<String>,
-    },
-    /// [`crate::Robot::links`] called with no link at all (leave it out for every link).
-    #[error("{file}: `links` lists no link (leave it out to have every link)")]
-    EmptyLinks {
-        /// The description file.
-        file: String,
-    },
-    /// A link listed twice in [`crate::Robot::links`].
-    #[error("{file}: link `{link}` is listed twice in `links`")]
-    DuplicateLink {
-        /// The description file.
-        file: String,
-        /// The link listed twice.
-        link: String,
-    },
-    /// A free-flying root whose link or joint name the description already has.
-    #[error(
-        "{file}: `floating_base` adds a root link `{link}` and a floating joint `root_joint`, but the description already has a {clash} (give the new root link another name)"
-    )]
-    FloatingBaseClash {
-        /// The description file.
-        file: String,
-        /// The new root link asked for.
-        link: String,
-        /// What clashes (`link `world``).
-        clash: String,
-    },
-    /// `jacobians` asked for with no tip.
-    #[error("{file}: `jacobians` needs a tip: the Jacobians are the tips' (call `.tip(\"link\")`)")]
-    JacobiansWithoutTip {
-        /// The description file.
-        file: String,
+        /// Every fault, in the order the rules run (never empty).
+        faults: Vec<CallFault>,
     },
     /// A struct name that is not a Rust identifier.
     #[error("{file}: struct name `{name}` is not a Rust identifier")]
@@ -113,4 +81,14 @@ impl std::fmt::Debug for BuildError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         std::fmt::Display::fmt(self, f)
     }
+}
+
+/// An option's fault, and the builder call that set the option.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("`{method}`: {fault}")]
+pub struct CallFault {
+    /// The builder call (`.links(..)`).
+    pub method: &'static str,
+    /// What is wrong.
+    pub fault: OptionFault,
 }

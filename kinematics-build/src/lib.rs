@@ -1,7 +1,7 @@
 //! Compiled forward kinematics from a build script: the build-time twin of `#[derive(Kinematics)]`.
 //!
 //! This crate owns generating a robot's Rust as a *file*: reading the description relative to the
-//! crate's `Cargo.toml` ([`Robot`]), checking the requested base and tips against it ([`find_link`]),
+//! crate's `Cargo.toml` ([`Robot`]), checking the options against it (the compiler's rules),
 //! emitting `pub struct Name;` with its impls through `kinematics_compiler::robot::emit_robot` (the
 //! very function the derive calls, so both give the same constants, functions and
 //! `kinematics::Kinematics` impl), formatting with prettyplease, and writing atomically
@@ -25,7 +25,7 @@
 //! and in the crate, `include!(concat!(env!("OUT_DIR"), "/ur5.rs"));` defines `Ur5` with
 //! `Ur5::tip_pose(&q)`, `Ur5::link_poses(&q)`, `Ur5::reference()` and the rest, exactly as the
 //! derive would. A build script's `main` may return [`BuildError`]: its `Debug` is its message, so
-//! cargo shows `robots/ur5.urdf: tip link `tool9` does not exist; did you mean `tool0`?`.
+//! cargo shows ``robots/ur5.urdf: `.tip(..)`: tip link `tool9` does not exist; did you mean `tool0`?``.
 //!
 //! [`Robot::generate`] returns the formatted source instead of writing it:
 //!
@@ -43,14 +43,12 @@
 
 mod emit;
 mod error;
-mod links;
 mod robot;
 mod source;
 mod write;
 
 pub use emit::default_struct_name;
-pub use error::BuildError;
+pub use error::{BuildError, CallFault};
 pub use kinematics_compiler::emit::Trig;
-pub use links::find_link;
 pub use robot::Robot;
 pub use write::write_atomic;

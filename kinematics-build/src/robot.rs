@@ -3,12 +3,11 @@
 use std::path::{Path, PathBuf};
 
 use kinematics_compiler::emit::Trig;
-use kinematics_compiler::robot::IkMode;
-use kinematics_model::{ExactAngles, FLOATING_BASE_JOINT, SourceKind};
+use kinematics_compiler::options::{IkMode, OptionFault, OptionKey, Options, floating_base_clash};
+use kinematics_model::{ExactAngles, SourceKind};
 
 use crate::emit::{Emit, default_struct_name, emit_source};
-use crate::error::BuildError;
-use crate::links::find_link;
+use crate::error::{BuildError, CallFault};
 use crate::source::{Loaded, load, resolve};
 use crate::write::write_atomic;
 
@@ -32,47 +31,23 @@ use crate::write::write_atomic;
 ///
 /// plus [`Robot::struct_name`] (default: the robot's name in UpperCamelCase, see
 /// [`default_struct_name`]). Paths are relative to `CARGO_MANIFEST_DIR` (the directory of the
-/// `Cargo.toml` whose build script runs), or to [`Robot::manifest_dir`].
+/// `Cargo.toml` whose build script runs), or to [`Robot::manifest_dir`]. The calls fill the
+/// compiler's one set of options ([`Options`]), checked by its rules when generating: the faults are
+/// [`BuildError::Options`], each naming the call to change.
 #[derive(Debug, Clone)]
 #[must_use]
 pub struct Robot {
     path: PathBuf,
     kind: SourceKind,
     dir: Option<PathBuf>,
-    base: Option<String>,
-    tips: Vec<String>,
-    /// `None` until [`Robot::links`] is called: every link.
-    links: Option<Vec<String>>,
-    positions: bool,
-    jacobians: bool,
-    ik: IkMode,
-    floating_base: Option<String>,
-    f32: bool,
+    options: Options,
     struct_name: Option<String>,
     crate_path: String,
-    exact_angles: bool,
-    trig: Trig,
 }
 
 impl Robot {
     fn new(path: PathBuf, kind: SourceKind) -> Self {
-        Robot {
-            path,
-            kind,
-            dir: None,
-            base: None,
-            tips: Vec::new(),
-            links: None,
-            positions: false,
-            jacobians: false,
-            ik: IkMode::Off,
-            floating_base: None,
-            f32: false,
-            struct_name: None,
-            crate_path: "::kinematics".to_owned(),
-            exact_angles: true,
-            trig: Trig::Fast,
-        }
+        Robot { path, kind, dir: None, options: Options::default(), struct_name: None, crate_path: "::kinematics".to_owned() }
     }
 
     /// A URDF file, whatever its extension.
@@ -99,13 +74,13 @@ impl Robot {
 
     /// The frame every pose is expressed in (default: the root link).
     pub fn base(mut self, link: &str) -> Self {
-        self.base = Some(link.to_owned());
+        self.options.base = Some(link.to_owned());
         self
     }
 
     /// Adds a tip: one tip gives `tip_pose`, several give `tip_poses` (in the order added).
     pub fn tip(mut self, link: &str) -> Self {
-        self.tips.push(link.to_owned());
+        self.options.tips.push(link.to_owned());
         self
     }
 
@@ -115,27 +90,26 @@ impl Robot {
         I: IntoIterator<Item = S>,
         S: AsRef<str>,
     {
-        self.tips.extend(links.into_iter().map(|l| l.as_ref().to_owned()));
+        self.options.tips.extend(links.into_iter().map(|l| l.as_ref().to_owned()));
         self
     }
 
     /// Only these links in `link_poses` (and `link_positions`, `LINK_NAMES`), in this order,
     /// instead of every link but the base: only their poses are computed. Each name must be a link
-    /// of the robot ([`BuildError::UnknownLink`], with "did you mean") and appear once
-    /// ([`BuildError::DuplicateLink`]). Calling it again adds to the list; a list that stays
-    /// empty is an error ([`BuildError::EmptyLinks`]), not every link.
+    /// of the robot and appear once. Calling it again adds to the list; a list that stays empty is
+    /// an error, not every link.
     pub fn links<I, S>(mut self, links: I) -> Self
     where
         I: IntoIterator<Item = S>,
         S: AsRef<str>,
     {
-        self.links.get_or_insert_with(Vec::new).extend(links.into_iter().map(|l| l.as_ref().to_owned()));
+        self.options.links.get_or_insert_with(Vec::new).extend(links.into_iter().map(|l| l.as_ref().to_owned()));
         self
     }
 
     /// Also generate position-only functions (`tip_position`, `link_positions`).
     pub fn positions(mut self) -> Self {
-        self.positions = true;
+        self.options.positions = true;
         self
     }
 
@@ -143,7 +117,7 @@ impl Robot {
     /// `tip_jacobian_local`, `tip_pose_and_jacobian`, `tip_twist`, `tip_twist_local` (and with
     /// [`Robot::positions`] `tip_position_jacobian`). Needs a tip.
     pub fn jacobians(mut self) -> Self {
-        self.jacobians = true;
+        self.options.jacobians = true;
         self
     }
 
@@ -152,7 +126,7 @@ impl Robot {
     /// `tip_ik_numeric_with`). Needs exactly one tip whose chain a closed-form family covers
     /// ([`Robot::generate`] says why not otherwise).
     pub fn ik(mut self) -> Self {
-        self.ik = IkMode::ClosedForm { free: None };
+        self.options.ik = IkMode::ClosedForm { free: None };
         self
     }
 
@@ -160,14 +134,14 @@ impl Robot {
     /// `tip_ik_within_limits`; `tip_ik_nearest` takes it from the seed), and the other six are
     /// solved in closed form.
     pub fn ik_free(mut self, joint: &str) -> Self {
-        self.ik = IkMode::ClosedForm { free: Some(joint.to_owned()) };
+        self.options.ik = IkMode::ClosedForm { free: Some(joint.to_owned()) };
         self
     }
 
     /// Also generate the numeric inverse kinematics of the tip only (`tip_ik_numeric`,
     /// `tip_ik_numeric_with`), for any chain. Needs exactly one tip.
     pub fn ik_numeric(mut self) -> Self {
-        self.ik = IkMode::Numeric;
+        self.options.ik = IkMode::Numeric;
         self
     }
 
@@ -175,13 +149,13 @@ impl Robot {
     /// the derive's bare `floating_base`) by a floating joint `root_joint`, whose seven entries
     /// start `q` (position, then quaternion `qx, qy, qz, qw`), as legged robots are modelled.
     pub fn floating_base(mut self, link: &str) -> Self {
-        self.floating_base = Some(link.to_owned());
+        self.options.floating_base = Some(link.to_owned());
         self
     }
 
     /// Also generate `f32` functions (`tip_pose_f32`, ...).
     pub fn f32(mut self) -> Self {
-        self.f32 = true;
+        self.options.scalars.f32 = true;
         self
     }
 
@@ -202,7 +176,7 @@ impl Robot {
     /// function in one call, side by side in SIMD lanes) or the platform's ([`Trig::Std`], one call
     /// per angle; the user's crate then needs the `kinematics` crate's `std` feature).
     pub fn trig(mut self, trig: Trig) -> Self {
-        self.trig = trig;
+        self.options.trig = trig;
         self
     }
 
@@ -210,8 +184,13 @@ impl Robot {
     /// (`true`, the default; see `kinematics_model::exactness`) or every angle as written
     /// (`false`). The generated `reference()` loads the description with the same policy.
     pub fn exact_angles(mut self, on: bool) -> Self {
-        self.exact_angles = on;
+        self.options.exact_angles = ExactAngles::on(on);
         self
+    }
+
+    /// The options the calls so far have set.
+    pub fn options(&self) -> &Options {
+        &self.options
     }
 
     /// The description file as the caller wrote it (the name in messages).
@@ -226,62 +205,53 @@ impl Robot {
 
     /// The formatted Rust source: a header comment, `pub struct Name;` and its impls.
     ///
-    /// Reads and validates the description, checks base and tips (with "did you mean"), compiles
-    /// and formats. Prints nothing: [`Robot::write_to_out_dir`] adds cargo's directives.
+    /// Reads and validates the description, checks the options against it (links with "did you
+    /// mean", the inverse kinematics' family), compiles and formats. Prints nothing:
+    /// [`Robot::write_to_out_dir`] adds cargo's directives.
     pub fn generate(&self) -> Result<String, BuildError> {
-        let label = self.label();
         let loaded = self.load()?;
-        if let Some(base) = &self.base {
-            find_link(&loaded.tree, &label, "base", base)?;
-        }
-        for tip in &self.tips {
-            find_link(&loaded.tree, &label, "tip", tip)?;
-        }
-        let links = self.links.as_deref().unwrap_or_default();
-        if self.links.as_ref().is_some_and(Vec::is_empty) {
-            return Err(BuildError::EmptyLinks { file: label });
-        }
-        for (i, link) in links.iter().enumerate() {
-            find_link(&loaded.tree, &label, "listed", link)?;
-            if links[..i].contains(link) {
-                return Err(BuildError::DuplicateLink { file: label, link: link.clone() });
-            }
-        }
-        if self.jacobians && self.tips.is_empty() {
-            return Err(BuildError::JacobiansWithoutTip { file: label });
-        }
+        let checked = self.options.check(&loaded.tree).map_err(|rejected| self.faults(rejected.faults))?;
         let name = self.struct_name.clone().unwrap_or_else(|| default_struct_name(loaded.tree.name()));
-        emit_source(&Emit {
-            loaded: &loaded,
-            name: &name,
-            base: self.base.clone(),
-            tips: self.tips.clone(),
-            links: links.to_vec(),
-            positions: self.positions,
-            jacobians: self.jacobians,
-            ik: self.ik.clone(),
-            floating_base: self.floating_base.clone(),
-            f32: self.f32,
-            crate_path: &self.crate_path,
-            trig: self.trig,
-        })
+        emit_source(&Emit { loaded: &loaded, robot: checked, name: &name, crate_path: &self.crate_path })
+    }
+
+    /// `faults` as the error naming this file and the calls that set the options.
+    fn faults(&self, faults: Vec<OptionFault>) -> BuildError {
+        let faults = faults.into_iter().map(|fault| CallFault { method: self.method(fault.key), fault }).collect();
+        BuildError::Options { file: self.label(), faults }
+    }
+
+    /// The call that sets `key`'s option.
+    fn method(&self, key: OptionKey) -> &'static str {
+        match key {
+            OptionKey::Base => ".base(..)",
+            OptionKey::Tip(_) => ".tip(..)",
+            OptionKey::Link(_) | OptionKey::Links => ".links(..)",
+            OptionKey::Positions => ".positions()",
+            OptionKey::Jacobians => ".jacobians()",
+            OptionKey::Ik => match self.options.ik {
+                IkMode::ClosedForm { free: Some(_) } => ".ik_free(..)",
+                IkMode::Numeric => ".ik_numeric()",
+                _ => ".ik()",
+            },
+            OptionKey::FloatingBase => ".floating_base(..)",
+            OptionKey::Scalars => ".f32()",
+            OptionKey::Trig => ".trig(..)",
+            OptionKey::ExactAngles => ".exact_angles(..)",
+        }
     }
 
     /// Reads and validates the description with this builder's format and exactness policy.
     pub(crate) fn load(&self) -> Result<Loaded, BuildError> {
-        let (label, path, policy) = (self.label(), self.source_path(), ExactAngles::on(self.exact_angles));
-        if let Some(link) = &self.floating_base {
+        let (label, path, policy) = (self.label(), self.source_path(), self.options.exact_angles);
+        if let Some(link) = &self.options.floating_base {
             // The new root link and joint must be new names.
             let plain = load(&label, path.clone(), self.kind, policy, None)?;
-            let clash =
-                plain.tree.link_id(link).map(|_| format!("link `{link}`")).or_else(|| {
-                    plain.tree.joint_id(FLOATING_BASE_JOINT).map(|_| format!("joint `{FLOATING_BASE_JOINT}`"))
-                });
-            if let Some(clash) = clash {
-                return Err(BuildError::FloatingBaseClash { file: label, link: link.clone(), clash });
+            if let Some(fault) = floating_base_clash(&plain.tree, link) {
+                return Err(self.faults(vec![fault]));
             }
         }
-        Ok(load(&label, path, self.kind, policy, self.floating_base.as_deref())?)
+        Ok(load(&label, path, self.kind, policy, self.options.floating_base.as_deref())?)
     }
 
     /// Generates and writes the code to `path` atomically (nothing half-written is left behind on
@@ -311,7 +281,7 @@ impl Robot {
 #[cfg(test)]
 mod tests {
     use super::{Robot, Trig};
-    use crate::error::BuildError;
+    use crate::error::{BuildError, CallFault};
     use kinematics_model::LoadErrorKind;
 
     /// A scratch directory holding `files`.

@@ -21,6 +21,7 @@
 pub mod emit;
 mod error;
 pub mod ik;
+pub mod options;
 mod request;
 pub mod robot;
 pub mod simplify;

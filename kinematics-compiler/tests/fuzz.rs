@@ -8,7 +8,8 @@
 use std::panic::catch_unwind;
 
 use kinematics_compiler::emit::{EmitOptions, emit_function};
-use kinematics_compiler::robot::{RobotSpec, Scalars, emit_robot};
+use kinematics_compiler::options::{Options, Scalars};
+use kinematics_compiler::robot::{RobotSpec, emit_robot};
 use kinematics_compiler::{Request, compile};
 use kinematics_model::parse_source;
 use proc_macro2::TokenStream;
@@ -45,18 +46,16 @@ fn compile_everything(label: &str, text: &str) -> Result<Vec<String>, String> {
         let compiled = compile(&tree, request).map_err(|e| format!("compile: {e}"))?;
         code.push(emit_function(&compiled, &EmitOptions::named("fk")).to_string());
     }
-    let spec = RobotSpec {
-        tree: &tree,
-        base: None,
+    let options = Options {
         tips: leaves,
-        links: Vec::new(),
         positions: true,
         jacobians: true,
-        ik: kinematics_compiler::robot::IkMode::Off,
-        floating_base: None,
         scalars: Scalars { f64: true, f32: true },
+        ..Options::default()
+    };
+    let spec = RobotSpec {
+        robot: options.check(&tree).map_err(|e| format!("emit_robot: options refused: {e}"))?,
         krate: quote!(::kinematics),
-        trig: kinematics_compiler::emit::Trig::Fast,
         source_label: label.to_owned(),
         source_text: quote!(""),
         impl_generics: TokenStream::new(),

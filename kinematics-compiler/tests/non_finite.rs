@@ -3,7 +3,8 @@
 //! the link whose pose holds the constant, never a panic and never code computing infinities.
 #![allow(clippy::panic, clippy::unwrap_used, clippy::expect_used)] // test helpers fail loudly
 
-use kinematics_compiler::robot::{RobotSpec, Scalars, emit_robot};
+use kinematics_compiler::options::{Options, Scalars};
+use kinematics_compiler::robot::{RobotSpec, emit_robot};
 use kinematics_compiler::{CompileError, Request, compile};
 use quote::quote;
 
@@ -34,19 +35,21 @@ const LARGEST: &str = r#"<robot name="largest">
     <axis xyz="0 0 1"/></joint>
 </robot>"#;
 
-fn spec(tree: &kinematics_model::KinematicTree) -> RobotSpec<'_> {
-    RobotSpec {
-        tree,
-        base: None,
+/// Tips, positions, Jacobians and both scalars: every function a robot can get but IK.
+fn options(tree: &kinematics_model::KinematicTree) -> Options {
+    Options {
         tips: vec![tree.links().last().unwrap().name.clone()],
-        links: Vec::new(),
         positions: true,
         jacobians: true,
-        ik: kinematics_compiler::robot::IkMode::Off,
-        floating_base: None,
         scalars: Scalars { f64: true, f32: true },
+        ..Options::default()
+    }
+}
+
+fn spec<'a>(tree: &'a kinematics_model::KinematicTree, options: &'a Options) -> RobotSpec<'a> {
+    RobotSpec {
+        robot: options.check(tree).unwrap(),
         krate: quote!(::kinematics),
-        trig: kinematics_compiler::emit::Trig::Fast,
         source_label: "x.urdf".to_owned(),
         source_text: quote!(""),
         impl_generics: quote!(),
@@ -65,7 +68,8 @@ fn outcome(text: &str) -> Result<Vec<CompileError>, kinematics_model::LoadError>
         }
     }
     errors.extend(compile(&tree, &Request::all_links()).err());
-    errors.extend(emit_robot(&quote!(Robot), &spec(&tree)).err());
+    let options = options(&tree);
+    errors.extend(emit_robot(&quote!(Robot), &spec(&tree, &options)).err());
     Ok(errors)
 }
 

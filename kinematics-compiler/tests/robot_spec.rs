@@ -2,7 +2,8 @@
 //! with the tree's own exactness policy, and the user's generics go on the impls.
 #![allow(clippy::panic, clippy::unwrap_used, clippy::expect_used)] // test helpers fail loudly
 
-use kinematics_compiler::robot::{RobotSpec, Scalars, emit_robot};
+use kinematics_compiler::options::Options;
+use kinematics_compiler::robot::{RobotSpec, emit_robot};
 use kinematics_model::{ExactAngles, KinematicTree};
 use quote::quote;
 
@@ -14,19 +15,15 @@ const ARM: &str = r#"<robot name="arm">
     <origin xyz="1 0 0"/></joint>
 </robot>"#;
 
-fn spec(tree: &KinematicTree) -> RobotSpec<'_> {
+/// The options every test here emits with: the tool's pose.
+fn options() -> Options {
+    Options { tips: vec!["tool".to_owned()], ..Options::default() }
+}
+
+fn spec<'a>(tree: &'a KinematicTree, options: &'a Options) -> RobotSpec<'a> {
     RobotSpec {
-        tree,
-        base: None,
-        tips: vec!["tool".to_owned()],
-        links: Vec::new(),
-        positions: false,
-        jacobians: false,
-        ik: kinematics_compiler::robot::IkMode::Off,
-        floating_base: None,
-        scalars: Scalars::default(),
+        robot: options.check(tree).unwrap(),
         krate: quote!(::kinematics),
-        trig: kinematics_compiler::emit::Trig::Fast,
         source_label: "arm.urdf".to_owned(),
         source_text: quote!("text"),
         impl_generics: quote!(),
@@ -43,13 +40,13 @@ fn reference_call(tokens: &str) -> &str {
 #[test]
 fn reference_loads_with_the_trees_policy() {
     let off = kinematics_model::parse_source_with("arm.urdf", ARM, ExactAngles::Off).unwrap();
-    let tokens = emit_robot(&quote!(Arm), &spec(&off)).unwrap().to_string();
+    let tokens = emit_robot(&quote!(Arm), &spec(&off, &options())).unwrap().to_string();
     assert_eq!(
         reference_call(&tokens),
         "parse_source_with (\"arm.urdf\" , \"text\" , :: kinematics :: __private :: ExactAngles :: Off)"
     );
     let on = kinematics_model::parse_source_with("arm.urdf", ARM, ExactAngles::Within(1e-9)).unwrap();
-    let tokens = emit_robot(&quote!(Arm), &spec(&on)).unwrap().to_string();
+    let tokens = emit_robot(&quote!(Arm), &spec(&on, &options())).unwrap().to_string();
     assert_eq!(
         reference_call(&tokens),
         "parse_source_with (\"arm.urdf\" , \"text\" , :: kinematics :: __private :: ExactAngles :: Within (0.000000001f64)"
@@ -59,7 +56,8 @@ fn reference_loads_with_the_trees_policy() {
 #[test]
 fn generics_go_on_both_impls_and_nowhere_else() {
     let tree = kinematics_model::parse_source("arm.urdf", ARM).unwrap();
-    let mut spec = spec(&tree);
+    let options = options();
+    let mut spec = spec(&tree, &options);
     spec.impl_generics = quote!(<'a, T: Clone, const N: usize>);
     spec.where_clause = quote!(where T: Default);
     let tokens = emit_robot(&quote!(Arm<'a, T, N>), &spec).unwrap().to_string();

@@ -49,8 +49,15 @@ impl KinematicTree {
 /// lengths, and a name this long is no typo of a link name.
 const LONGEST_SUGGESTED: usize = 256;
 
-/// The name in `candidates` closest to `wrong`, if it is close enough to be a likely typo.
-fn closest<'a>(wrong: &str, candidates: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
+/// The name in `candidates` closest to `wrong`, if it is close enough to be a likely typo (at most
+/// two edits, or a quarter of the name's length for long names): the "did you mean" of every
+/// unknown name, link or option word alike.
+///
+/// ```
+/// assert_eq!(kinematics_model::closest("lnk2", ["link1", "link2"]), Some("link2"));
+/// assert_eq!(kinematics_model::closest("gripper", ["link1", "link2"]), None);
+/// ```
+pub fn closest<'a>(wrong: &str, candidates: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
     let chars = |s: &str| s.chars().count();
     let wrong_chars = chars(wrong);
     if wrong_chars > LONGEST_SUGGESTED {

@@ -70,13 +70,43 @@ pub fn emit_branch_body(body: &IkBody, private: &TokenStream, name: &str, doc: &
     }
 }
 
-/// What [`emit_ik`] adds: generic bodies (for a composed family: its branch and its measure) and
-/// the items of the type's `impl`.
+/// What [`emit_ik`] adds: generic bodies (for a composed family: its branch and its measure) and,
+/// for each item of the type's `impl` the API surface lists
+/// ([`crate::robot::surface::Render::ik_items`], which gives the signatures), its attributes and
+/// its value or body.
 pub struct IkItems {
     /// The generic bodies.
     pub bodies: Vec<TokenStream>,
-    /// The constants and functions on the type.
-    pub typed: TokenStream,
+    /// Whether the family is compiled to a branch body (`tip_ik_branch_generic`).
+    pub branch: bool,
+    /// `IK_FAMILY`: its doc, and its value.
+    pub family: Part,
+    /// `IK_ARM`: its doc, and its value.
+    pub arm: Part,
+    /// `tip_ik`.
+    pub all: Part,
+    /// `tip_ik_branch_generic`, where the family is compiled.
+    pub branch_fn: Option<Part>,
+    /// `tip_ik_within_limits`.
+    pub within_limits: Part,
+    /// `tip_ik_nearest`.
+    pub nearest: Part,
+}
+
+/// One item's attributes (its doc first) and its value or body.
+pub struct Part {
+    /// The attributes.
+    pub attrs: TokenStream,
+    /// A constant's value, or a function's body (without its braces).
+    pub body: TokenStream,
+}
+
+/// The numeric solver's two functions.
+pub struct NumericItems {
+    /// `tip_ik_numeric`.
+    pub numeric: Part,
+    /// `tip_ik_numeric_with`.
+    pub with: Part,
 }
 
 fn vector(v: &[f64; 3]) -> TokenStream {
@@ -105,18 +135,16 @@ pub fn emit_ik(
     // The six-joint families' core functions (a planar arm solves by its method).
     let solver = || format_ident!("{}", plan.family.solver());
     let mask = quote!([#(#revolute),*]);
-    let (arm_ty, arm, solve, free_param, free_doc, free_value) = match (&plan.geometry, &plan.free) {
+    let (arm, solve, free_doc, free_value) = match (&plan.geometry, &plan.free) {
         (IkGeometry::Six(six), None) => {
             let (axes, offsets, rows) =
                 (six.axes.iter().map(vector), six.offsets.iter().map(vector), six.tool_rotation.iter().map(vector));
             (
-                quote!(#p::ik::Arm6),
                 quote!(#p::ik::Arm6 { axes: [#(#axes),*], offsets: [#(#offsets),*], tool_rotation: [#(#rows),*] }),
                 {
                     let solver = solver();
                     quote!(#p::ik::#solver(&Self::IK_ARM, target))
                 },
-                quote!(),
                 String::new(),
                 None,
             )
@@ -127,7 +155,6 @@ pub fn emit_ik(
             let (tip_point, free_axis, free_point) = (vector(&six.tip_point), vector(&free.axis), vector(&free.point));
             let index = Literal::usize_unsuffixed(free.index);
             (
-                quote!(#p::ik::FreeArm6),
                 quote!(#p::ik::FreeArm6 {
                     axes: [#(#axes),*],
                     points: [#(#points),*],
@@ -141,7 +168,6 @@ pub fn emit_ik(
                     let solver = solver();
                     quote!(#p::ik::insert_free(&#p::ik::#solver(&Self::IK_ARM.at(free), target), #index, free))
                 },
-                quote!(, free: f64),
                 format!(" with joint `{}` at `free` (`q` holds `free` as given)", free.name),
                 Some(index),
             )
@@ -160,10 +186,8 @@ pub fn emit_ik(
             let (axis, tip_point) = (vector(&planar.axis), vector(&planar.tip_point));
             let rows = planar.tool_rotation.iter().map(vector);
             (
-                quote!(#p::ik::PlanarArm<#n>),
                 quote!(#p::ik::PlanarArm { axis: #axis, joints: [#(#joints),*], tip_point: #tip_point, tool_rotation: [#(#rows),*] }),
                 quote!(Self::IK_ARM.solve(target)),
-                quote!(),
                 String::from(
                     ", reaching what the arm can: the position (two revolute joints), the rotation about the axes \
                      (three), the height (a prismatic joint)",
@@ -172,9 +196,6 @@ pub fn emit_ik(
             )
         }
     };
-    let result = |t: TokenStream| quote!(::core::result::Result<#t, #p::ik::IkError>);
-    let all = result(quote!(#p::ik::IkSolutions<#n, #capacity>));
-    let one = result(quote!(::core::option::Option<#p::ik::IkSolution<#n>>));
     let doc_family = format!("The closed-form inverse kinematics family of `{tip}` in `{base}`: {family}.");
     let measured = if compiled.is_some() && measure.is_some() {
         " (at the cosines and sines the solver computed for each angle, of which `q` is the `atan2`)"
@@ -266,13 +287,13 @@ pub fn emit_ik(
                     let reached = #reached;
                     #p::ik::IkSolutions::from_lanes(&branches, &reached, target)
                 },
-                quote! {
-                    #[doc = #branch_doc]
-                    #[inline]
-                    pub fn tip_ik_branch_generic<S: #p::ik::IkReal>(target: &#p::Pose<S>, signs: &[S; 3]) -> #p::ik::IkBranch<S, #n> {
-                        #g(target, signs)
-                    }
-                },
+                Some(Part {
+                    attrs: quote! {
+                        #[doc = #branch_doc]
+                        #[inline]
+                    },
+                    body: quote!(#g(target, signs)),
+                }),
             )
         }
         None => (
@@ -281,68 +302,71 @@ pub fn emit_ik(
                 solutions.measure(target, #[inline(always)] |q| #forward(q));
                 solutions
             },
-            quote!(),
+            None,
         ),
     };
-    let typed = quote! {
-        #[doc = #doc_family]
-        pub const IK_FAMILY: &'static str = #family;
-
-        /// The geometry the closed form solves (at the free joint's zero, for a seven-joint arm,
-        /// turned to its value at run time): the chain at `q = 0`, points on meeting axes placed
-        /// where they meet.
-        pub const IK_ARM: #arm_ty = #arm;
-
-        #[doc = #doc_all]
-        #[inline]
-        pub fn tip_ik(target: &impl #p::ik::IkTarget #free_param) -> #all {
-            let target = &#p::ik::IkTarget::target_pose(target);
-            #p::ik::check_target(target)?;
-            #free_check
-            // Dispatched (`__private::dispatch`): the measure's forward kinematics runs with the
-            // widest instruction set the CPU has.
-            ::core::result::Result::Ok(#p::dispatch(#[inline(always)] || { #solve_and_measure }))
-        }
-
-        #branch_fn
-
-        /// The solutions of [`Self::tip_ik`] inside `JOINT_LIMITS`, each angle moved by a whole
-        /// turn into its limits where that fits.
-        #[inline]
-        pub fn tip_ik_within_limits(target: &impl #p::ik::IkTarget #free_param) -> #all {
-            ::core::result::Result::Ok(Self::tip_ik(target #free_arg)?.within_limits(&Self::JOINT_LIMITS, &#mask))
-        }
-
-        #[doc = #doc_nearest]
-        #[inline]
-        pub fn tip_ik_nearest(target: &impl #p::ik::IkTarget, seed: &[f64; #n]) -> #one {
-            let target = &#p::ik::IkTarget::target_pose(target);
-            #p::ik::check_seed(seed)?;
-            #p::ik::check_target(target)?;
-            #nearest_free
-            // Solved, measured and chosen in one dispatched body.
-            ::core::result::Result::Ok(#p::dispatch(#[inline(always)] || {
-                let solutions: #p::ik::IkSolutions<#n, #capacity> = { #solve_and_measure };
-                solutions.nearest(seed, &#mask)
-            }))
-        }
-    };
-    IkItems { bodies, typed }
+    IkItems {
+        bodies,
+        branch: branch_fn.is_some(),
+        family: Part { attrs: quote!(#[doc = #doc_family]), body: quote!(#family) },
+        arm: Part {
+            attrs: quote! {
+                /// The geometry the closed form solves (at the free joint's zero, for a seven-joint arm,
+                /// turned to its value at run time): the chain at `q = 0`, points on meeting axes placed
+                /// where they meet.
+            },
+            body: arm,
+        },
+        all: Part {
+            attrs: quote! {
+                #[doc = #doc_all]
+                #[inline]
+            },
+            body: quote! {
+                let target = &#p::ik::IkTarget::target_pose(target);
+                #p::ik::check_target(target)?;
+                #free_check
+                // Dispatched (`__private::dispatch`): the measure's forward kinematics runs with the
+                // widest instruction set the CPU has.
+                ::core::result::Result::Ok(#p::dispatch(#[inline(always)] || { #solve_and_measure }))
+            },
+        },
+        branch_fn,
+        within_limits: Part {
+            attrs: quote! {
+                /// The solutions of [`Self::tip_ik`] inside `JOINT_LIMITS`, each angle moved by a whole
+                /// turn into its limits where that fits.
+                #[inline]
+            },
+            body: quote! {
+                ::core::result::Result::Ok(Self::tip_ik(target #free_arg)?.within_limits(&Self::JOINT_LIMITS, &#mask))
+            },
+        },
+        nearest: Part {
+            attrs: quote! {
+                #[doc = #doc_nearest]
+                #[inline]
+            },
+            body: quote! {
+                let target = &#p::ik::IkTarget::target_pose(target);
+                #p::ik::check_seed(seed)?;
+                #p::ik::check_target(target)?;
+                #nearest_free
+                // Solved, measured and chosen in one dispatched body.
+                ::core::result::Result::Ok(#p::dispatch(#[inline(always)] || {
+                    let solutions: #p::ik::IkSolutions<#n, #capacity> = { #solve_and_measure };
+                    solutions.nearest(seed, &#mask)
+                }))
+            },
+        },
+    }
 }
 
 /// The numeric solver's functions (inside the robot's `impl`): Levenberg-Marquardt on
 /// `pose_and_jacobian` (the generic function computing the tip's pose and `LOCAL_WORLD_ALIGNED`
 /// Jacobian), within `JOINT_LIMITS`.
-pub fn emit_numeric(
-    tip: &str,
-    base: &str,
-    dof: usize,
-    private: &TokenStream,
-    pose_and_jacobian: &TokenStream,
-) -> TokenStream {
+pub fn emit_numeric(tip: &str, base: &str, private: &TokenStream, pose_and_jacobian: &TokenStream) -> NumericItems {
     let p = private;
-    let n = Literal::usize_unsuffixed(dof);
-    let result = quote!(::core::result::Result<#p::ik::NumericSolution<#n>, #p::ik::IkError>);
     let doc = format!(
         "Numeric inverse kinematics of `{tip}` in `{base}`: Levenberg-Marquardt from `seed` on this robot's \
          generated pose and Jacobian, within `JOINT_LIMITS`, restarting from deterministic configurations \
@@ -350,28 +374,33 @@ pub fn emit_numeric(
          Returns the best configuration found and whether it converged. A target that is no pose, or a seed \
          with a non-finite entry, is an error."
     );
-    quote! {
-        #[doc = #doc]
-        #[inline]
-        pub fn tip_ik_numeric(target: &impl #p::ik::IkTarget, seed: &[f64; #n]) -> #result {
-            Self::tip_ik_numeric_with(target, seed, &#p::ik::NumericOptions::default())
-        }
-
-        /// [`Self::tip_ik_numeric`] with the tolerance, steps and restarts given.
-        #[inline]
-        pub fn tip_ik_numeric_with(target: &impl #p::ik::IkTarget, seed: &[f64; #n], options: &#p::ik::NumericOptions) -> #result {
-            let target = &#p::ik::IkTarget::target_pose(target);
-            #p::ik::check_target(target)?;
-            #p::ik::check_seed(seed)?;
-            // Dispatched: the iteration's pose and Jacobian run with the widest instruction set
-            // the CPU has.
-            ::core::result::Result::Ok(#p::dispatch(#[inline(always)] || #p::ik::levenberg_marquardt(
-                target,
-                seed,
-                &Self::JOINT_LIMITS,
-                options,
-                #[inline(always)] |q| #pose_and_jacobian(q),
-            )))
-        }
+    NumericItems {
+        numeric: Part {
+            attrs: quote! {
+                #[doc = #doc]
+                #[inline]
+            },
+            body: quote!(Self::tip_ik_numeric_with(target, seed, &#p::ik::NumericOptions::default())),
+        },
+        with: Part {
+            attrs: quote! {
+                /// [`Self::tip_ik_numeric`] with the tolerance, steps and restarts given.
+                #[inline]
+            },
+            body: quote! {
+                let target = &#p::ik::IkTarget::target_pose(target);
+                #p::ik::check_target(target)?;
+                #p::ik::check_seed(seed)?;
+                // Dispatched: the iteration's pose and Jacobian run with the widest instruction set
+                // the CPU has.
+                ::core::result::Result::Ok(#p::dispatch(#[inline(always)] || #p::ik::levenberg_marquardt(
+                    target,
+                    seed,
+                    &Self::JOINT_LIMITS,
+                    options,
+                    #[inline(always)] |q| #pose_and_jacobian(q),
+                )))
+            },
+        },
     }
 }

@@ -2,8 +2,9 @@
 //! in `impl Kinematics`.
 
 use proc_macro2::TokenStream;
-use quote::quote;
+use quote::{format_ident, quote};
 
+use super::surface::Constant;
 use super::{Context, number};
 
 /// `["a", "b"]`.
@@ -28,43 +29,71 @@ fn limits(cx: &Context<'_>) -> Vec<TokenStream> {
         .collect()
 }
 
-/// The constants of the type's own `impl`.
+/// The constants of the type's own `impl`: [`Constant::ALWAYS`], typed by the surface.
 pub(super) fn inherent(cx: &Context<'_>) -> TokenStream {
+    let items = Constant::ALWAYS.map(|constant| {
+        let (name, ty) = (format_ident!("{}", constant.name()), cx.render.constant_type(constant));
+        let docs = doc(constant).iter().map(|line| format!(" {line}"));
+        let value = value(cx, constant);
+        quote! {
+            #(#[doc = #docs])*
+            pub const #name: #ty = #value;
+        }
+    });
+    quote!(#(#items)*)
+}
+
+/// A constant's doc, line by line.
+fn doc(constant: Constant) -> &'static [&'static str] {
+    match constant {
+        Constant::Robot => &["Robot name."],
+        Constant::Base => &["The link every pose is expressed in."],
+        Constant::Dof => &["Degrees of freedom: the length of `q`."],
+        Constant::JointNames => &[
+            "Joint names, in the order of `q` (a planar joint's three entries and a floating",
+            "joint's seven are named after it: `.x`, `.y`, `.theta`; `.x`, `.y`, `.z`, `.qx`,",
+            "`.qy`, `.qz`, `.qw`).",
+        ],
+        Constant::VelocityDof => &[
+            "Velocities: a Jacobian's columns and the length of `qd` (`DOF` less one per",
+            "floating joint, whose six velocities are its child's in its own axes).",
+        ],
+        Constant::VelocityNames => &["Velocity names, in the order of a Jacobian's columns."],
+        Constant::JointLimits => &["Position limits, in the order of `q` (infinite for continuous joints)."],
+        Constant::LinkNames => &["The links `link_poses` returns, in order."],
+        Constant::Tips => &["The tip links."],
+    }
+}
+
+/// A constant's value.
+fn value(cx: &Context<'_>, constant: Constant) -> TokenStream {
     let tree = cx.tree();
-    let (p, robot, base, n_lit, nv_lit, m_lit, k_lit) =
-        (&cx.p, tree.name(), &cx.base, &cx.n_lit, &cx.nv_lit, &cx.m_lit, &cx.k_lit);
-    let (jn, vn, ln, tn) =
-        (strs(&tree.dof_names()), strs(&tree.velocity_names()), strs(&cx.link_names), strs(&cx.tips));
-    let limits = limits(cx);
-    quote! {
-            /// Robot name.
-            pub const ROBOT: &'static str = #robot;
-            /// The link every pose is expressed in.
-            pub const BASE: &'static str = #base;
-            /// Degrees of freedom: the length of `q`.
-            pub const DOF: usize = #n_lit;
-            /// Joint names, in the order of `q` (a planar joint's three entries and a floating
-            /// joint's seven are named after it: `.x`, `.y`, `.theta`; `.x`, `.y`, `.z`, `.qx`,
-            /// `.qy`, `.qz`, `.qw`).
-            pub const JOINT_NAMES: [&'static str; #n_lit] = #jn;
-            /// Velocities: a Jacobian's columns and the length of `qd` (`DOF` less one per
-            /// floating joint, whose six velocities are its child's in its own axes).
-            pub const VELOCITY_DOF: usize = #nv_lit;
-            /// Velocity names, in the order of a Jacobian's columns.
-            pub const VELOCITY_NAMES: [&'static str; #nv_lit] = #vn;
-            /// Position limits, in the order of `q` (infinite for continuous joints).
-            pub const JOINT_LIMITS: [#p::JointLimits; #n_lit] = [#(#limits),*];
-            /// The links `link_poses` returns, in order.
-            pub const LINK_NAMES: [&'static str; #m_lit] = #ln;
-            /// The tip links.
-            pub const TIPS: [&'static str; #k_lit] = #tn;
+    match constant {
+        Constant::Robot => {
+            let robot = tree.name();
+            quote!(#robot)
+        }
+        Constant::Base => {
+            let base = &cx.base;
+            quote!(#base)
+        }
+        Constant::Dof => cx.render.dof(),
+        Constant::JointNames => strs(&tree.dof_names()),
+        Constant::VelocityDof => cx.render.velocities(),
+        Constant::VelocityNames => strs(&tree.velocity_names()),
+        Constant::JointLimits => {
+            let limits = limits(cx);
+            quote!([#(#limits),*])
+        }
+        Constant::LinkNames => strs(&cx.link_names),
+        Constant::Tips => strs(&cx.tips),
     }
 }
 
 /// The constants of `impl Kinematics`.
 pub(super) fn of_trait(cx: &Context<'_>) -> TokenStream {
     let tree = cx.tree();
-    let (p, robot, base, n_lit) = (&cx.p, tree.name(), &cx.base, &cx.n_lit);
+    let (p, robot, base, n_lit) = (&cx.p, tree.name(), &cx.base, cx.render.dof());
     let (jn, ln, tn) = (joint_names(cx), strs(&cx.link_names), strs(&cx.tips));
     let limits = limits(cx);
     quote! {

@@ -2,7 +2,7 @@
 //! `reference()`), `impl Kinematics` and `impl ReferenceModel`.
 
 use kinematics_model::ExactAngles;
-use proc_macro2::TokenStream;
+use proc_macro2::{Literal, TokenStream};
 use quote::quote;
 
 use super::functions::Functions;
@@ -60,7 +60,8 @@ pub(super) fn robot_block(self_ty: &TokenStream, cx: &Context<'_>, out: &Functio
 /// `tip_poses_into` and `link_poses_into` of `impl Kinematics`: the slice checked against the
 /// robot's lengths, then the generic bodies' values copied in.
 fn trait_functions(cx: &Context<'_>) -> TokenStream {
-    let (p, robot, n_lit, m_lit, k_lit) = (&cx.p, cx.tree().name(), &cx.n_lit, &cx.m_lit, &cx.k_lit);
+    let (p, robot, n_lit) = (&cx.p, cx.tree().name(), cx.render.dof());
+    let (m_lit, k_lit) = (Literal::usize_unsuffixed(cx.link_names.len()), Literal::usize_unsuffixed(cx.tips.len()));
     let jn = constants::joint_names(cx);
     let tip_poses_body = if cx.tips.is_empty() {
         quote!(let _ = (q, out);)
@@ -93,7 +94,7 @@ fn reference(cx: &Context<'_>) -> TokenStream {
     let p = &cx.p;
     let (label, text) = (&cx.spec.source_label, &cx.spec.source_text);
     let policy = policy_tokens(p, cx.tree().exact_angles());
-    match &cx.spec.floating_base {
+    match &cx.options().floating_base {
         None => quote!(#p::parse_source_with(#label, #text, #policy)),
         Some(link) => quote!(#p::parse_source_floating(#label, #text, #policy, #link)),
     }

@@ -26,83 +26,32 @@ mod functions;
 mod ik;
 mod impls;
 mod poses;
+pub mod surface;
 mod velocities;
 
 use kinematics_model::KinematicTree;
 use proc_macro2::{Literal, TokenStream};
 use quote::{format_ident, quote};
 
-use crate::emit::{EmitOptions, Trig};
+use crate::emit::EmitOptions;
 use crate::error::CompileError;
+use crate::options::{Checked, Options};
 use crate::request::{Compiled, Request, compile};
 use functions::Functions;
+use surface::{Dims, Output, Render};
 
-/// Which scalar types get typed functions.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct Scalars {
-    /// `f64` functions (`tip_pose`).
-    pub f64: bool,
-    /// `f32` functions (`tip_pose_f32`).
-    pub f32: bool,
-}
-
-impl Default for Scalars {
-    fn default() -> Self {
-        Scalars { f64: true, f32: false }
-    }
-}
-
-/// Which inverse kinematics to emit (of the one tip).
-#[derive(Debug, Clone, PartialEq, Eq, Default)]
-pub enum IkMode {
-    /// None.
-    #[default]
-    Off,
-    /// The closed form of the tip's family (`tip_ik`, `tip_ik_nearest`, `tip_ik_within_limits`,
-    /// `IK_FAMILY`) and beside it the numeric solver (`tip_ik_numeric`); a chain no family covers
-    /// is an error naming why.
-    ClosedForm {
-        /// For a seven-joint arm, the joint whose value `tip_ik` takes as an input.
-        free: Option<String>,
-    },
-    /// The numeric solver only (`tip_ik_numeric`, `tip_ik_numeric_with`), for any chain.
-    Numeric,
-}
-
-/// Everything [`emit_robot`] needs.
+/// Everything [`emit_robot`] needs: the checked robot and how the output reaches the user's crate.
 #[derive(Debug, Clone)]
 pub struct RobotSpec<'a> {
-    /// The validated robot.
-    pub tree: &'a KinematicTree,
-    /// The frame poses are expressed in (default: the root link).
-    pub base: Option<String>,
-    /// Tip links (may be empty).
-    pub tips: Vec<String>,
-    /// The links `link_poses` (and `link_positions`, `LINK_NAMES`) return, in this order; empty
-    /// means every link but the base. The caller has checked the names (unknown ones are a
-    /// [`CompileError`]) and that none repeats.
-    pub links: Vec<String>,
-    /// Also emit position-only functions.
-    pub positions: bool,
-    /// Also emit the tips' velocities: geometric Jacobians in both frames, the pose with its
-    /// Jacobian, the twist `J * qd` (and, with `positions`, the position Jacobian).
-    pub jacobians: bool,
-    /// Also emit inverse kinematics of the tip (needs exactly one tip).
-    pub ik: IkMode,
-    /// Scalar types.
-    pub scalars: Scalars,
+    /// The robot and its options, checked ([`Options::check`]).
+    pub robot: Checked<'a>,
     /// Path to the `kinematics` crate in the user's crate (usually `::kinematics`); generated code
     /// reaches everything through its `__private` module.
     pub krate: TokenStream,
-    /// Which sine and cosine the code calls.
-    pub trig: Trig,
     /// The description's name in messages (the path as the user wrote it).
     pub source_label: String,
     /// An expression of type `&'static str` holding the description's text (e.g. `include_str!`).
     pub source_text: TokenStream,
-    /// The root link [`kinematics_model::Description::with_floating_base`] added, when the tree was
-    /// loaded with a free-flying root (`reference()` loads it the same way).
-    pub floating_base: Option<String>,
     /// The generic parameters of the impls, with their bounds (`<'a, T: Clone, const N: usize>`,
     /// syn's `impl_generics`); empty for a type without generics. `self_ty` carries the arguments.
     pub impl_generics: TokenStream,
@@ -121,32 +70,44 @@ pub struct RobotSpec<'a> {
 /// `reference()` and `impl ReferenceModel` are wrapped in the facade's `with_std!`, so they exist
 /// only with its `std` feature.
 ///
-/// Each kind of output has its own module: `poses` (link and tip poses and positions),
-/// `velocities` (Jacobians, pose and Jacobian, twists), `ik` (inverse kinematics),
-/// `constants` (the type's constants), `impls` (the block, the trait impls and `reference()`);
-/// `functions` turns one generic body into the typed, batch and lane functions. Adding a kind of
-/// output is adding a module and one call here.
+/// What is emitted, and every signature, is [`surface`]'s: the [`Output`]s the options ask for,
+/// each compiled by its module (`poses`: link and tip poses and positions; `velocities`:
+/// Jacobians, pose and Jacobian, twists), then `ik` (inverse kinematics); `constants` (the type's
+/// constants) and `impls` (the block, the trait impls and `reference()`) around them; `functions`
+/// turns one generic body into the typed, batch and lane functions. Adding a kind of output is
+/// adding it to [`surface`] and a module that compiles it.
 pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenStream, CompileError> {
-    let tree = spec.tree;
-    let base = spec.base.clone().unwrap_or_else(|| tree.link(tree.root()).name.clone());
+    let (tree, options) = (spec.robot.tree(), spec.robot.options());
+    let base = spec.robot.base().to_owned();
     let links = compile(tree, &link_request(spec, &base, false))?.into_link_list();
     let cx = Context::new(spec, base, &links);
     let mut out = Functions::default();
-    poses::link_poses(&cx, &links, &mut out)?;
-    if !cx.tips.is_empty() {
-        poses::tip_poses(&cx, &mut out)?;
-        if spec.jacobians {
-            velocities::velocities(&cx, &mut out)?;
-        }
+    for output in surface::outputs(options) {
+        let body = match output {
+            Output::LinkPoses => None,
+            Output::LinkPositions => Some(poses::link_positions(&cx)?),
+            Output::TipPoses => Some(poses::tip_poses(&cx)?),
+            Output::TipPositions => Some(poses::tip_positions(&cx)?),
+            Output::Jacobian(frame) => Some(velocities::jacobian(&cx, frame)?),
+            Output::PoseAndJacobian => Some(velocities::pose_and_jacobian(&cx)?),
+            Output::PositionJacobian => Some(velocities::position_jacobian(&cx)?),
+            Output::Twist(frame) => Some(velocities::twist(&cx, frame)?),
+        };
+        let (compiled, doc) = match &body {
+            Some((compiled, doc)) => (compiled, doc.clone()),
+            None => (&links, poses::link_poses_doc(&cx)),
+        };
+        out.body(&cx, compiled, &output.body(cx.one));
+        out.on_type(&cx, output, &doc);
     }
     ik::ik(&cx, &mut out)?;
     Ok(impls::robot_block(self_ty, &cx, &out))
 }
 
 /// The poses (or positions) `link_poses` (`link_positions`) returns: every link but the base, or
-/// the spec's list of links, in its order.
+/// the options' list of links, in its order.
 fn link_request(spec: &RobotSpec<'_>, base: &str, position_only: bool) -> Request {
-    Request { base: Some(base.to_owned()), tips: spec.links.clone(), position_only, velocity: None }
+    Request { base: Some(base.to_owned()), tips: spec.robot.listed_links().to_vec(), position_only, velocity: None }
 }
 
 /// What every kind of output needs: the spec, the paths and lengths as tokens, and the scalars.
@@ -163,86 +124,66 @@ struct Context<'a> {
     one: bool,
     /// The links `link_poses` returns, in order.
     link_names: Vec<String>,
-    /// `DOF`, `VELOCITY_DOF`, the number of links and of tips, as literals.
-    n_lit: Literal,
-    nv_lit: Literal,
-    m_lit: Literal,
-    k_lit: Literal,
-    /// (suffix, scalar, lane type, wide lane type) per scalar asked for: the batches run the
-    /// wide lanes where the CPU has AVX-512, the others elsewhere.
-    scalars: Vec<(&'static str, TokenStream, TokenStream, TokenStream)>,
-    /// The `*_generic` functions' scalar parameter and its bound.
-    scalar: TokenStream,
-    bound: TokenStream,
+    /// The signatures, with every length known.
+    render: Render,
     /// The tips' poses, in `base`: the request every tip function starts from.
     tip_request: Request,
 }
 
 impl<'a> Context<'a> {
     fn new(spec: &'a RobotSpec<'a>, base: String, links: &Compiled) -> Self {
-        let tree = spec.tree;
+        let (tree, options) = (spec.robot.tree(), spec.robot.options());
         let krate = &spec.krate;
         let p = quote!(#krate::__private);
         let link_names: Vec<String> = links.frames().iter().map(|f| f.link.clone()).collect();
-        let scalars = [
-            (spec.scalars.f64, "", quote!(f64), quote!(#p::F64x4), quote!(#p::F64x8)),
-            (spec.scalars.f32, "_f32", quote!(f32), quote!(#p::F32x8), quote!(#p::F32x16)),
-        ]
-        .into_iter()
-        .filter(|(on, ..)| *on)
-        .map(|(_, suffix, t, lanes, wide)| (suffix, t, lanes, wide))
-        .collect();
-        let tips = spec.tips.clone();
+        let tips = options.tips.clone();
         let tip_request =
             Request { base: Some(base.clone()), tips: tips.clone(), position_only: false, velocity: None };
-        Context {
-            spec,
+        let render = Render {
+            p: p.clone(),
+            scalars: options.scalars,
             scalar: scalar_parameter(&spec.impl_generics),
-            bound: spec.trig.bound(&p),
-            p,
-            base,
-            one: tips.len() == 1,
-            n_lit: Literal::usize_unsuffixed(tree.dof()),
-            nv_lit: Literal::usize_unsuffixed(tree.velocity_dof()),
-            m_lit: Literal::usize_unsuffixed(link_names.len()),
-            k_lit: Literal::usize_unsuffixed(tips.len()),
-            link_names,
-            tips,
-            scalars,
-            tip_request,
-        }
+            trig: options.trig,
+            dims: Dims {
+                dof: Some(tree.dof()),
+                velocities: Some(tree.velocity_dof()),
+                links: Some(link_names.len()),
+                tips: Some(tips.len()),
+            },
+        };
+        Context { spec, p, base, one: tips.len() == 1, link_names, tips, render, tip_request }
     }
 
     /// The tree.
     fn tree(&self) -> &'a KinematicTree {
-        self.spec.tree
+        self.spec.robot.tree()
+    }
+
+    /// The options.
+    fn options(&self) -> &'a Options {
+        self.spec.robot.options()
     }
 
     /// The links `link_poses` returns, for its doc: "every link but `base`", or the list's names.
     fn links_described(&self) -> String {
-        if self.spec.links.is_empty() {
+        let listed = self.spec.robot.listed_links();
+        if listed.is_empty() {
             format!("every link but `{}`", self.base)
         } else {
-            self.spec.links.iter().map(|l| format!("`{l}`")).collect::<Vec<_>>().join(", ")
+            listed.iter().map(|l| format!("`{l}`")).collect::<Vec<_>>().join(", ")
         }
     }
 
     /// How the generic body `name` is emitted: public in the block's private module `bodies`
-    /// (so the block can call it), with the spec's trig.
+    /// (so the block can call it), with the options' trig.
     fn body_options(&self, name: &str) -> EmitOptions {
-        EmitOptions { name: name.to_owned(), private: self.p.clone(), public: true, trig: self.spec.trig }
-    }
-
-    /// `Pose<t>`.
-    fn pose_ty(&self, t: &TokenStream) -> TokenStream {
-        let p = &self.p;
-        quote!(#p::Pose<#t>)
+        EmitOptions { name: name.to_owned(), private: self.p.clone(), public: true, trig: self.options().trig }
     }
 }
 
 /// The name of the `*_generic` functions' scalar parameter: `T`, unless the user's impl generics
 /// use that name (then `S`, `R`, or a name nobody writes), since they are in scope there.
-fn scalar_parameter(impl_generics: &TokenStream) -> TokenStream {
+pub fn scalar_parameter(impl_generics: &TokenStream) -> TokenStream {
     fn idents(tokens: &TokenStream, out: &mut Vec<String>) {
         for token in tokens.clone() {
             match token {

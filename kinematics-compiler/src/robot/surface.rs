@@ -1,0 +1,604 @@
+//! The API surface of a compiled robot as data: every constant and function its options imply,
+//! in the order they are emitted, with their signatures. [`super::emit_robot`] gives each item a
+//! body; the derive's error stub gives each `unreachable!()` (where a fault stops the build, it
+//! stands in so one fault does not cascade into "no function `tip_pose`" wherever the type is
+//! used). Both render signatures here, so the stub cannot drift from what the emitter writes; a
+//! test holds the two equal for every option set.
+//!
+//! Lengths the stub cannot know (the description did not load, a list could not be read) are
+//! [`None`] in [`Dims`]: the number of joints becomes a const parameter (`q: &[f64; N]`, which a
+//! call's `q` fixes), an array of links or tips an `UnknownLength` (which the stub defines, and
+//! which indexes and iterates as the array would), or in a batch a const parameter `out` fixes.
+
+use kinematics_model::JacobianFrame;
+use proc_macro2::{Ident, Literal, Span, TokenStream};
+use quote::{format_ident, quote};
+
+use crate::ik::{IkGeometry, IkPlan};
+use crate::options::{CheckedIk, IkMode, Options, Scalars, Trig};
+
+/// The lengths in the signatures: `None` where the stub cannot know them.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Dims {
+    /// Entries of `q`.
+    pub dof: Option<usize>,
+    /// Velocities (a Jacobian's columns, the entries of `qd`).
+    pub velocities: Option<usize>,
+    /// Links `link_poses` returns.
+    pub links: Option<usize>,
+    /// Tips.
+    pub tips: Option<usize>,
+}
+
+/// One computation on the type: a value of `q` (and for twists `qd`), as a function per scalar,
+/// a batch and a column batch per scalar (not for twists), and a generic one.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Output {
+    /// `link_poses`.
+    LinkPoses,
+    /// `link_positions`.
+    LinkPositions,
+    /// `tip_pose` or `tip_poses`.
+    TipPoses,
+    /// `tip_position` or `tip_positions`.
+    TipPositions,
+    /// `tip_jacobian` (`LOCAL_WORLD_ALIGNED`) or `tip_jacobian_local`, or `tip_jacobians*`.
+    Jacobian(JacobianFrame),
+    /// `tip_pose_and_jacobian` or `tip_poses_and_jacobians`.
+    PoseAndJacobian,
+    /// `tip_position_jacobian` or `tip_position_jacobians`.
+    PositionJacobian,
+    /// `tip_twist` or `tip_twist_local`, or `tip_twists*`.
+    Twist(JacobianFrame),
+}
+
+/// The two frames velocities come in, in the order emitted, with their names' suffixes.
+pub const VELOCITY_FRAMES: [(JacobianFrame, &str); 2] =
+    [(JacobianFrame::LocalWorldAligned, ""), (JacobianFrame::Local, "_local")];
+
+/// What [`Output`]s `options` ask for, in the order emitted: the links', then (with tips) the
+/// tips' poses, positions and velocities.
+pub fn outputs(options: &Options) -> Vec<Output> {
+    let mut out = vec![Output::LinkPoses];
+    if options.positions {
+        out.push(Output::LinkPositions);
+    }
+    if options.tips.is_empty() {
+        return out;
+    }
+    out.push(Output::TipPoses);
+    if options.positions {
+        out.push(Output::TipPositions);
+    }
+    if options.jacobians {
+        out.extend(VELOCITY_FRAMES.map(|(frame, _)| Output::Jacobian(frame)));
+        out.push(Output::PoseAndJacobian);
+        if options.positions {
+            out.push(Output::PositionJacobian);
+        }
+        out.extend(VELOCITY_FRAMES.map(|(frame, _)| Output::Twist(frame)));
+    }
+    out
+}
+
+/// The suffix of a velocity in `frame`.
+fn frame_suffix(frame: JacobianFrame) -> &'static str {
+    VELOCITY_FRAMES.iter().find(|(f, _)| *f == frame).map_or("", |(_, suffix)| suffix)
+}
+
+impl Output {
+    /// The function's name on the type (for one tip, or several).
+    pub fn name(self, one_tip: bool) -> String {
+        let (one, several) = match self {
+            Output::LinkPoses => ("link_poses", "link_poses"),
+            Output::LinkPositions => ("link_positions", "link_positions"),
+            Output::TipPoses => ("tip_pose", "tip_poses"),
+            Output::TipPositions => ("tip_position", "tip_positions"),
+            Output::Jacobian(frame) => return format!("tip_{}{}", plural(one_tip, "jacobian"), frame_suffix(frame)),
+            Output::PoseAndJacobian => ("tip_pose_and_jacobian", "tip_poses_and_jacobians"),
+            Output::PositionJacobian => ("tip_position_jacobian", "tip_position_jacobians"),
+            Output::Twist(frame) => return format!("tip_{}{}", plural(one_tip, "twist"), frame_suffix(frame)),
+        };
+        (if one_tip { one } else { several }).to_owned()
+    }
+
+    /// The name of the generic body (a free function in the block's module) the functions call.
+    pub fn body(self, one_tip: bool) -> String {
+        match self {
+            Output::LinkPoses => "generic_link_poses".to_owned(),
+            Output::LinkPositions => "generic_link_positions".to_owned(),
+            Output::TipPoses => "generic_tip_poses".to_owned(),
+            Output::TipPositions => "generic_tip_positions".to_owned(),
+            Output::PoseAndJacobian => "generic_pose_and_jacobian".to_owned(),
+            Output::PositionJacobian => "generic_position_jacobian".to_owned(),
+            Output::Jacobian(_) | Output::Twist(_) => format!("generic_{}", self.name(one_tip)),
+        }
+    }
+
+    /// Whether the functions take the joint rates `qd` too (and have no batches).
+    pub fn takes_rates(self) -> bool {
+        matches!(self, Output::Twist(_))
+    }
+
+    /// Whether it returns one value per link (else per tip).
+    fn per_link(self) -> bool {
+        matches!(self, Output::LinkPoses | Output::LinkPositions)
+    }
+
+    /// The type of one value for scalar `t`.
+    fn element(self, t: &TokenStream, p: &TokenStream, nv: &TokenStream) -> TokenStream {
+        match self {
+            Output::LinkPoses | Output::TipPoses => quote!(#p::Pose<#t>),
+            Output::LinkPositions | Output::TipPositions => quote!([#t; 3]),
+            Output::Jacobian(_) => quote!([[#t; #nv]; 6]),
+            Output::PoseAndJacobian => quote!((#p::Pose<#t>, [[#t; #nv]; 6])),
+            Output::PositionJacobian => quote!([[#t; #nv]; 3]),
+            Output::Twist(_) => quote!([#t; 6]),
+        }
+    }
+}
+
+/// `word`, or `word` + `s` for several tips.
+fn plural(one_tip: bool, word: &str) -> String {
+    if one_tip { word.to_owned() } else { format!("{word}s") }
+}
+
+/// One scalar type's functions: the name suffix, the type, and the lane types its batches run on
+/// (narrow, and wide where the CPU has AVX-512).
+#[derive(Debug, Clone)]
+pub struct ScalarType {
+    /// `""` or `"_f32"`.
+    pub suffix: &'static str,
+    /// `f64` or `f32`.
+    pub t: TokenStream,
+    /// `F64x4` or `F32x8`.
+    pub lanes: TokenStream,
+    /// `F64x8` or `F32x16`.
+    pub wide: TokenStream,
+}
+
+/// The form of one function of an [`Output`].
+#[derive(Debug, Clone)]
+pub enum Form {
+    /// `name` / `name_f32`: one configuration, dispatched.
+    Typed(ScalarType),
+    /// `name_batch`: slices of configurations in lanes.
+    Batch(ScalarType),
+    /// `name_batch_columns`: configurations given column-wise.
+    Columns(ScalarType),
+    /// `name_generic`: any scalar.
+    Generic,
+}
+
+/// One function's signature: `pub fn name<generics>(inputs) -> output`.
+#[derive(Debug, Clone)]
+pub struct Signature {
+    /// The function's name.
+    pub name: Ident,
+    /// Its generic parameters (none: no angle brackets).
+    pub generics: Vec<TokenStream>,
+    /// Its parameters.
+    pub inputs: TokenStream,
+    /// Its value's type.
+    pub output: TokenStream,
+}
+
+impl Signature {
+    /// `pub fn name<generics>(inputs) -> output`, the body to follow.
+    pub fn tokens(&self) -> TokenStream {
+        let Signature { name, generics, inputs, output } = self;
+        let generics = if generics.is_empty() { quote!() } else { quote!(<#(#generics),*>) };
+        quote!(pub fn #name #generics(#inputs) -> #output)
+    }
+}
+
+/// Renders signatures: the facade's private path, the scalars, the generic scalar parameter and
+/// its bound, and the lengths.
+#[derive(Debug, Clone)]
+pub struct Render {
+    /// `krate::__private`.
+    pub p: TokenStream,
+    /// The scalar types asked for.
+    pub scalars: Scalars,
+    /// The `_generic` functions' scalar parameter (`T` unless the user's generics take it).
+    pub scalar: TokenStream,
+    /// The sine and cosine the code calls (the generic scalar's bound).
+    pub trig: Trig,
+    /// The lengths.
+    pub dims: Dims,
+}
+
+/// The const parameter standing for an unknown number of joints, and for an unknown number of
+/// frames in a batch's `out`.
+const DOF_PARAMETER: &str = "__KINEMATICS_DOF";
+const FRAMES_PARAMETER: &str = "__KINEMATICS_FRAMES";
+
+/// The type the stub defines for an array whose length it cannot know.
+pub const UNKNOWN_LENGTH: &str = "UnknownLength";
+
+impl Render {
+    /// Each scalar asked for, `f64` first.
+    pub fn scalar_types(&self) -> Vec<ScalarType> {
+        let p = &self.p;
+        [
+            (self.scalars.f64, "", quote!(f64), quote!(#p::F64x4), quote!(#p::F64x8)),
+            (self.scalars.f32, "_f32", quote!(f32), quote!(#p::F32x8), quote!(#p::F32x16)),
+        ]
+        .into_iter()
+        .filter(|(on, ..)| *on)
+        .map(|(_, suffix, t, lanes, wide)| ScalarType { suffix, t, lanes, wide })
+        .collect()
+    }
+
+    /// The number of joints: a literal, or the const parameter.
+    pub fn dof(&self) -> TokenStream {
+        length(self.dims.dof, DOF_PARAMETER)
+    }
+
+    /// The number of velocities: a literal, or (unknown) as many as the joints.
+    pub fn velocities(&self) -> TokenStream {
+        match self.dims.velocities {
+            Some(n) => literal(n),
+            None => self.dof(),
+        }
+    }
+
+    /// The const parameter of the number of joints, when it is unknown.
+    fn dof_generics(&self) -> Vec<TokenStream> {
+        let name = format_ident!("{DOF_PARAMETER}");
+        self.dims.dof.is_none().then(|| quote!(const #name: usize)).into_iter().collect()
+    }
+
+    /// The generic scalar parameter with its bound.
+    fn generic_scalar(&self) -> TokenStream {
+        let (scalar, bound) = (&self.scalar, self.trig.bound(&self.p));
+        quote!(#scalar: #bound)
+    }
+
+    /// `output`'s value for scalar `t` (in a batch's `out`, where an unknown length is a const
+    /// parameter), and that const parameter, if any.
+    fn value(&self, output: Output, one_tip: bool, t: &TokenStream, batch: bool) -> (TokenStream, Option<TokenStream>) {
+        let element = output.element(t, &self.p, &self.velocities());
+        if !output.per_link() && one_tip {
+            return (element, None);
+        }
+        let count = if output.per_link() { self.dims.links } else { self.dims.tips };
+        match count {
+            Some(n) => {
+                let n = literal(n);
+                (quote!([#element; #n]), None)
+            }
+            None if batch => {
+                let name = format_ident!("{FRAMES_PARAMETER}");
+                (quote!([#element; #name]), Some(quote!(const #name: usize)))
+            }
+            None => {
+                let name = format_ident!("{UNKNOWN_LENGTH}");
+                (quote!(#name<#element>), None)
+            }
+        }
+    }
+
+    /// Every function of `output`, in the order emitted: per scalar the typed function and its two
+    /// batches (or, taking rates, the typed function alone), then the generic one.
+    pub fn functions(&self, output: Output, one_tip: bool) -> Vec<(Form, Signature)> {
+        let (p, n, nv) = (&self.p, self.dof(), self.velocities());
+        let name = output.name(one_tip);
+        let rates = output.takes_rates();
+        let error = quote!(::core::result::Result<(), #p::KinematicsError>);
+        let mut out = Vec::new();
+        for scalar in self.scalar_types() {
+            let (suffix, t) = (scalar.suffix, &scalar.t);
+            let qd = if rates { quote!(, qd: &[#t; #nv]) } else { quote!() };
+            let (value, _) = self.value(output, one_tip, t, false);
+            let typed = Signature {
+                name: format_ident!("{name}{suffix}"),
+                generics: self.dof_generics(),
+                inputs: quote!(q: &[#t; #n] #qd),
+                output: value,
+            };
+            let batches = [
+                (format_ident!("{name}_batch{suffix}"), quote!(qs: &[[#t; #n]])),
+                (format_ident!("{name}_batch_columns{suffix}"), quote!(columns: [&[#t]; #n])),
+            ]
+            .map(|(batch, input)| {
+                let (value, frames) = self.value(output, one_tip, t, true);
+                let mut generics = self.dof_generics();
+                generics.extend(frames);
+                Signature { name: batch, generics, inputs: quote!(#input, out: &mut [#value]), output: error.clone() }
+            });
+            out.push((Form::Typed(scalar.clone()), typed));
+            if !rates {
+                let [batch, columns] = batches;
+                out.push((Form::Batch(scalar.clone()), batch));
+                out.push((Form::Columns(scalar), columns));
+            }
+        }
+        let scalar = &self.scalar;
+        let qd = if rates { quote!(, qd: &[#scalar; #nv]) } else { quote!() };
+        let mut generics = vec![self.generic_scalar()];
+        generics.extend(self.dof_generics());
+        let (value, _) = self.value(output, one_tip, scalar, false);
+        out.push((
+            Form::Generic,
+            Signature {
+                name: format_ident!("{name}_generic"),
+                generics,
+                inputs: quote!(q: &[#scalar; #n] #qd),
+                output: value,
+            },
+        ));
+        out
+    }
+
+    /// The type of a constant: an array of the length when it is known, a slice otherwise.
+    pub fn constant_type(&self, constant: Constant) -> TokenStream {
+        let p = &self.p;
+        let (element, length) = match constant {
+            Constant::Robot | Constant::Base => return quote!(&'static str),
+            Constant::Dof | Constant::VelocityDof => return quote!(usize),
+            Constant::JointNames => (quote!(&'static str), self.dims.dof),
+            Constant::VelocityNames => (quote!(&'static str), self.dims.velocities.or(self.dims.dof)),
+            Constant::JointLimits => (quote!(#p::JointLimits), self.dims.dof),
+            Constant::LinkNames => (quote!(&'static str), self.dims.links),
+            Constant::Tips => (quote!(&'static str), self.dims.tips),
+        };
+        match length {
+            Some(n) => {
+                let n = literal(n);
+                quote!([#element; #n])
+            }
+            None => quote!(&'static [#element]),
+        }
+    }
+
+    /// The inverse kinematics' items, in the order emitted.
+    pub fn ik_items(&self, ik: &IkShape) -> Vec<IkItem> {
+        let p = &self.p;
+        let n = self.dof();
+        let target = quote!(target: &impl #p::ik::IkTarget);
+        let seed = quote!(seed: &[f64; #n]);
+        let result = |t: TokenStream| quote!(::core::result::Result<#t, #p::ik::IkError>);
+        let signature = |name: &str, generics: Vec<TokenStream>, inputs, output| Signature {
+            name: Ident::new(name, Span::call_site()),
+            generics,
+            inputs,
+            output,
+        };
+        let mut items = Vec::new();
+        if let Some(closed) = &ik.closed_form {
+            items.push(IkItem::Family);
+            if let Some(arm) = closed.arm {
+                let ty = match arm {
+                    ArmKind::Six => quote!(#p::ik::Arm6),
+                    ArmKind::FreeSix => quote!(#p::ik::FreeArm6),
+                    ArmKind::Planar => quote!(#p::ik::PlanarArm<#n>),
+                };
+                items.push(IkItem::Arm(ty));
+            }
+            let capacity = literal(closed.capacity);
+            let all = result(quote!(#p::ik::IkSolutions<#n, #capacity>));
+            let free = if closed.free { quote!(, free: f64) } else { quote!() };
+            items.push(IkItem::Function(
+                IkFunction::All,
+                signature("tip_ik", self.dof_generics(), quote!(#target #free), all.clone()),
+            ));
+            if closed.branch {
+                let mut generics = vec![quote!(S: #p::ik::IkReal)];
+                generics.extend(self.dof_generics());
+                items.push(IkItem::Function(
+                    IkFunction::Branch,
+                    signature(
+                        "tip_ik_branch_generic",
+                        generics,
+                        quote!(target: &#p::Pose<S>, signs: &[S; 3]),
+                        quote!(#p::ik::IkBranch<S, #n>),
+                    ),
+                ));
+            }
+            items.push(IkItem::Function(
+                IkFunction::WithinLimits,
+                signature("tip_ik_within_limits", self.dof_generics(), quote!(#target #free), all),
+            ));
+            items.push(IkItem::Function(
+                IkFunction::Nearest,
+                signature(
+                    "tip_ik_nearest",
+                    self.dof_generics(),
+                    quote!(#target, #seed),
+                    result(quote!(::core::option::Option<#p::ik::IkSolution<#n>>)),
+                ),
+            ));
+        }
+        let numeric = result(quote!(#p::ik::NumericSolution<#n>));
+        items.push(IkItem::Function(
+            IkFunction::Numeric,
+            signature("tip_ik_numeric", self.dof_generics(), quote!(#target, #seed), numeric.clone()),
+        ));
+        items.push(IkItem::Function(
+            IkFunction::NumericWith,
+            signature(
+                "tip_ik_numeric_with",
+                self.dof_generics(),
+                quote!(#target, #seed, options: &#p::ik::NumericOptions),
+                numeric,
+            ),
+        ));
+        items
+    }
+}
+
+/// A literal length, or the named const parameter.
+fn length(n: Option<usize>, parameter: &str) -> TokenStream {
+    match n {
+        Some(n) => literal(n),
+        None => {
+            let name = format_ident!("{parameter}");
+            quote!(#name)
+        }
+    }
+}
+
+/// `n` as an unsuffixed literal.
+fn literal(n: usize) -> TokenStream {
+    let n = Literal::usize_unsuffixed(n);
+    quote!(#n)
+}
+
+/// The type's own constants, in the order emitted (the inverse kinematics' are [`IkItem`]s).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Constant {
+    /// `ROBOT`.
+    Robot,
+    /// `BASE`.
+    Base,
+    /// `DOF`.
+    Dof,
+    /// `JOINT_NAMES`.
+    JointNames,
+    /// `VELOCITY_DOF`.
+    VelocityDof,
+    /// `VELOCITY_NAMES`.
+    VelocityNames,
+    /// `JOINT_LIMITS`.
+    JointLimits,
+    /// `LINK_NAMES`.
+    LinkNames,
+    /// `TIPS`.
+    Tips,
+}
+
+impl Constant {
+    /// Every constant every robot has, in the order emitted.
+    pub const ALWAYS: [Constant; 9] = [
+        Constant::Robot,
+        Constant::Base,
+        Constant::Dof,
+        Constant::JointNames,
+        Constant::VelocityDof,
+        Constant::VelocityNames,
+        Constant::JointLimits,
+        Constant::LinkNames,
+        Constant::Tips,
+    ];
+
+    /// Its name.
+    pub fn name(self) -> &'static str {
+        match self {
+            Constant::Robot => "ROBOT",
+            Constant::Base => "BASE",
+            Constant::Dof => "DOF",
+            Constant::JointNames => "JOINT_NAMES",
+            Constant::VelocityDof => "VELOCITY_DOF",
+            Constant::VelocityNames => "VELOCITY_NAMES",
+            Constant::JointLimits => "JOINT_LIMITS",
+            Constant::LinkNames => "LINK_NAMES",
+            Constant::Tips => "TIPS",
+        }
+    }
+}
+
+/// What the inverse kinematics' items look like.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct IkShape {
+    /// The closed form's items (none for the numeric solver alone).
+    pub closed_form: Option<ClosedFormShape>,
+}
+
+/// What the closed form's items look like.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ClosedFormShape {
+    /// The type of `IK_ARM` (unknown to a stub whose chain was not classified: no `IK_ARM`).
+    pub arm: Option<ArmKind>,
+    /// How many solutions `tip_ik` holds.
+    pub capacity: usize,
+    /// Whether `tip_ik` takes the free joint's value.
+    pub free: bool,
+    /// Whether the family is compiled to a branch body (`tip_ik_branch_generic`).
+    pub branch: bool,
+}
+
+/// The geometry type `IK_ARM` has.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ArmKind {
+    /// `Arm6`.
+    Six,
+    /// `FreeArm6`.
+    FreeSix,
+    /// `PlanarArm<N>`.
+    Planar,
+}
+
+/// The capacity a stub gives `tip_ik` when no plan says the family's: the six-joint families'.
+pub const UNKNOWN_CAPACITY: usize = 8;
+
+impl IkShape {
+    /// The shape of a checked robot's inverse kinematics (`None` when it has none); `branch`
+    /// says whether the closed form compiles to a branch body.
+    pub fn of(ik: &CheckedIk, branch: bool) -> Option<IkShape> {
+        match ik {
+            CheckedIk::Off => None,
+            CheckedIk::Numeric => Some(IkShape { closed_form: None }),
+            CheckedIk::ClosedForm(plan) => Some(IkShape { closed_form: Some(ClosedFormShape::of(plan, branch)) }),
+        }
+    }
+
+    /// The shape the options imply when the plan is known only if given: for a stub.
+    pub fn implied(options: &Options, plan: Option<&IkPlan>) -> Option<IkShape> {
+        match &options.ik {
+            IkMode::Off => None,
+            IkMode::Numeric => Some(IkShape { closed_form: None }),
+            IkMode::ClosedForm { free } => Some(IkShape {
+                closed_form: Some(match plan {
+                    Some(plan) => ClosedFormShape::of(plan, crate::ik::IkBody::of(plan).is_some()),
+                    None => ClosedFormShape {
+                        arm: None,
+                        capacity: UNKNOWN_CAPACITY,
+                        free: free.is_some(),
+                        branch: false,
+                    },
+                }),
+            }),
+        }
+    }
+}
+
+impl ClosedFormShape {
+    /// The shape of `plan`'s items.
+    fn of(plan: &IkPlan, branch: bool) -> Self {
+        let arm = match (&plan.geometry, &plan.free) {
+            (IkGeometry::Six(_), None) => ArmKind::Six,
+            (IkGeometry::Six(_), Some(_)) => ArmKind::FreeSix,
+            (IkGeometry::Planar(_), _) => ArmKind::Planar,
+        };
+        ClosedFormShape { arm: Some(arm), capacity: plan.family.max_solutions(), free: plan.free.is_some(), branch }
+    }
+}
+
+/// One of the inverse kinematics' items.
+#[derive(Debug, Clone)]
+pub enum IkItem {
+    /// `IK_FAMILY`.
+    Family,
+    /// `IK_ARM`, of this type.
+    Arm(TokenStream),
+    /// A function.
+    Function(IkFunction, Signature),
+}
+
+/// The inverse kinematics' functions.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum IkFunction {
+    /// `tip_ik`.
+    All,
+    /// `tip_ik_branch_generic`.
+    Branch,
+    /// `tip_ik_within_limits`.
+    WithinLimits,
+    /// `tip_ik_nearest`.
+    Nearest,
+    /// `tip_ik_numeric`.
+    Numeric,
+    /// `tip_ik_numeric_with`.
+    NumericWith,
+}
