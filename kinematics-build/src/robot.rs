@@ -282,6 +282,7 @@ impl Robot {
 mod tests {
     use super::{Robot, Trig};
     use crate::error::{BuildError, CallFault};
+    use kinematics_compiler::options::FaultKind;
     use kinematics_model::LoadErrorKind;
 
     /// A scratch directory holding `files`.
@@ -312,6 +313,11 @@ mod tests {
                 e.to_string()
             }
         }
+    }
+
+    /// Whether `e` is exactly one option fault, set by `method`, of a kind `is` accepts.
+    fn one_fault(e: &BuildError, method: &str, is: fn(&FaultKind) -> bool) -> bool {
+        matches!(e, BuildError::Options { faults, .. } if matches!(faults.as_slice(), [CallFault { method: m, fault }] if *m == method && is(&fault.kind)))
     }
 
     #[test]
@@ -393,17 +399,30 @@ mod tests {
         );
         let message = fails(
             &robot().links(["upper", "tool9"]),
-            |e| matches!(e, BuildError::UnknownLink { role: "listed", link, suggestion: Some(s), .. } if link == "tool9" && s == "tool0"),
+            |e| one_fault(e, ".links(..)", |f| matches!(f, FaultKind::UnknownLink(u) if u.role == "listed" && u.link == "tool9" && u.suggestion.as_deref() == Some("tool0"))),
         );
-        assert_eq!(message, "arm.urdf: listed link `tool9` does not exist; did you mean `tool0`?");
+        assert_eq!(message, "arm.urdf: `.links(..)`: listed link `tool9` does not exist; did you mean `tool0`?");
         let message = fails(
             &robot().links(["tool0", "upper", "tool0"]),
-            |e| matches!(e, BuildError::DuplicateLink { link, .. } if link == "tool0"),
+            |e| one_fault(e, ".links(..)", |f| matches!(f, FaultKind::DuplicateLink { link } if link == "tool0")),
         );
-        assert_eq!(message, "arm.urdf: link `tool0` is listed twice in `links`");
+        assert_eq!(message, "arm.urdf: `.links(..)`: link `tool0` is listed twice in `links`");
         // An empty list is what the user wrote, and lists nothing: refused, not every link.
-        let message = fails(&robot().links(Vec::<String>::new()), |e| matches!(e, BuildError::EmptyLinks { .. }));
-        assert_eq!(message, "arm.urdf: `links` lists no link (leave it out to have every link)");
+        let message =
+            fails(&robot().links(Vec::<String>::new()), |e| one_fault(e, ".links(..)", |f| *f == FaultKind::EmptyLinks));
+        assert_eq!(
+            message,
+            "arm.urdf: `.links(..)`: `links` lists no link: name at least one, or leave the option out for every link"
+        );
+        // Every fault at once, in the rules' order, each naming its call.
+        let message = fails(&robot().tip("tool9").links(["upper", "upper"]).jacobians().base("bse"), |e| {
+            matches!(e, BuildError::Options { faults, .. } if faults.len() == 3)
+        });
+        assert_eq!(
+            message,
+            "arm.urdf: `.base(..)`: base link `bse` does not exist; `.tip(..)`: tip link `tool9` \
+             does not exist; did you mean `tool0`?; `.links(..)`: link `upper` is listed twice in `links`"
+        );
     }
 
     #[test]
@@ -435,12 +454,12 @@ mod tests {
     fn unknown_links_are_named_with_a_suggestion() {
         let dir = fixture("links", &[("arm.urdf", ARM)]);
         let robot = || Robot::urdf("arm.urdf").manifest_dir(&dir);
-        let is = |e: &BuildError| matches!(e, BuildError::UnknownLink { .. });
+        let is = |e: &BuildError| matches!(e, BuildError::Options { .. });
         assert_eq!(
             fails(&robot().tip("tool9"), is),
-            "arm.urdf: tip link `tool9` does not exist; did you mean `tool0`?"
+            "arm.urdf: `.tip(..)`: tip link `tool9` does not exist; did you mean `tool0`?"
         );
-        assert_eq!(fails(&robot().base("gripper"), is), "arm.urdf: base link `gripper` does not exist");
+        assert_eq!(fails(&robot().base("gripper"), is), "arm.urdf: `.base(..)`: base link `gripper` does not exist");
     }
 
     #[test]
@@ -462,7 +481,7 @@ mod tests {
         let dir = fixture("write", &[("arm.urdf", ARM)]);
         let robot = Robot::urdf("arm.urdf").manifest_dir(&dir).tip("tool9");
         let out = dir.join("fk.rs");
-        assert!(matches!(robot.write_to(&out), Err(BuildError::UnknownLink { .. })));
+        assert!(matches!(robot.write_to(&out), Err(BuildError::Options { .. })));
         assert!(!out.exists());
         let missing = dir.join("no").join("fk.rs");
         let e = Robot::urdf("arm.urdf").manifest_dir(&dir).write_to(&missing).unwrap_err();

@@ -13,6 +13,24 @@ pub enum CliError {
     /// Generating or writing code failed, or a link name given on the command line is unknown.
     #[error(transparent)]
     Build(#[from] BuildError),
+    /// A link named by an option that the robot does not have (with "did you mean").
+    #[error("{file}: {source}")]
+    UnknownLink {
+        /// The description file.
+        file: String,
+        /// Which link, and the closest name.
+        #[source]
+        source: kinematics::model::UnknownLink,
+    },
+    /// `generate`: options that break the compiler's rules against this robot, each naming its
+    /// flag.
+    #[error("{file}: {}", faults.iter().map(ToString::to_string).collect::<Vec<_>>().join("; "))]
+    Options {
+        /// The description file.
+        file: String,
+        /// Every fault, in the order the rules run.
+        faults: Vec<FlagFault>,
+    },
     /// The runtime reference refused the query (a wrong number of joint values).
     #[error("{file}: {source}")]
     Runtime {
@@ -95,4 +113,14 @@ impl From<std::io::Error> for CliError {
     fn from(error: std::io::Error) -> Self {
         CliError::Output(error)
     }
+}
+
+/// An option's fault, and the flag that set the option.
+#[derive(Debug, thiserror::Error)]
+#[error("`{flag}`: {fault}")]
+pub struct FlagFault {
+    /// The flag (`--links`).
+    pub flag: &'static str,
+    /// What is wrong.
+    pub fault: kinematics_compiler::options::OptionFault,
 }

@@ -2,9 +2,10 @@
 
 use std::io::Write;
 
-use kinematics_build::{Robot, Trig};
+use kinematics_build::{BuildError, CallFault, Robot, Trig};
+use kinematics_compiler::options::OptionKey;
 
-use crate::error::CliError;
+use crate::error::{CliError, FlagFault};
 
 /// `--ik`'s kinds.
 #[derive(Clone, Copy, clap::ValueEnum)]
@@ -119,8 +120,33 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
         None => robot.generate().map(Some),
     };
     spinner.finish_and_clear();
-    if let Some(code) = generated? {
+    if let Some(code) = generated.map_err(flags)? {
         write!(out, "{code}")?;
     }
     Ok(())
+}
+
+/// A build error naming the builder's calls as the command's error naming its flags.
+fn flags(error: BuildError) -> CliError {
+    let BuildError::Options { file, faults } = error else { return CliError::Build(error) };
+    let faults = faults
+        .into_iter()
+        .map(|CallFault { fault, .. }| FlagFault {
+            flag: match fault.key {
+                OptionKey::Base => "--base",
+                OptionKey::Tip(_) => "--tip",
+                OptionKey::Link(_) | OptionKey::Links => "--links",
+                OptionKey::Positions => "--positions",
+                OptionKey::Jacobians => "--jacobians",
+                OptionKey::Ik => "--ik",
+                // `generate` has no flag for a free-flying root; the key is mapped all the same.
+                OptionKey::FloatingBase => "floating_base",
+                OptionKey::Scalars => "--f32",
+                OptionKey::Trig => "--trig",
+                OptionKey::ExactAngles => "--exact-angles",
+            },
+            fault,
+        })
+        .collect();
+    CliError::Options { file, faults }
 }

@@ -29,7 +29,7 @@ pub fn load(file: &str) -> Result<KinematicTree, CliError> {
 
 /// The link named by an option (`role` says which: `base`, `tip`, ...), or the error naming it.
 pub fn link(tree: &KinematicTree, file: &str, role: &'static str, name: &str) -> Result<LinkId, CliError> {
-    Ok(kinematics_build::find_link(tree, file, role, name)?)
+    tree.find_link(role, name).map_err(|source| CliError::UnknownLink { file: file.to_owned(), source })
 }
 
 /// `--q` and `--degrees`: a configuration on the command line (`fk`, `draw`).

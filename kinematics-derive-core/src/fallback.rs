@@ -2,180 +2,156 @@
 //! fault does not cascade into "no function `tip_pose`" and "trait `Kinematics` not implemented"
 //! errors wherever the struct is used (as thiserror's `fallback.rs` and serde_derive do).
 //!
-//! The stub never runs: the `compile_error!`s beside it stop the build. Its functions take and
-//! return arrays of the robot's lengths when the description loaded. Otherwise the number of
-//! joints is a const parameter (`q: &[f64; N]`, under a name the user's generics cannot take),
-//! which every call's `q` fixes, and an array of links or of tips no one could count is an
-//! `UnknownLength` that indexes, iterates and compares as the array would, so
-//! `let poses = Robot::link_poses(&q); poses[2]` adds no "type annotations needed" (a batch's
-//! `out` gives its length, so batches keep a const parameter). The fallible ones return errors;
-//! the infallible ones (`tip_pose`) have nothing to return and are `unreachable!`.
+//! The stub is the API surface the emitter writes ([`kinematics_compiler::robot::surface`]: the
+//! same list of items, the same signatures) with bodies that never run: the `compile_error!`s
+//! beside it stop the build. Its functions take and return arrays of the robot's lengths when the
+//! description loaded; lengths no one could know are the surface's stand-ins (a const parameter
+//! for the number of joints, `UnknownLength` for an array of links or tips). The fallible ones
+//! return errors; the infallible ones (`tip_pose`) have nothing to return and are
+//! `unreachable!`.
+
+use std::collections::BTreeSet;
 
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 use syn::punctuated::Punctuated;
 
 use crate::options::KinematicsInput;
-use kinematics_compiler::robot::IkMode;
+use kinematics_compiler::ik::IkPlan;
+use kinematics_compiler::options::{IkKind, IkMode, Options, Scalars, choose};
+use kinematics_compiler::robot::scalar_parameter;
+use kinematics_compiler::robot::surface::{Constant, Dims, IkItem, IkShape, Render, outputs};
+use kinematics_model::KinematicTree;
 
-/// The inverse kinematics functions the attribute implies.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum IkNames {
-    /// None.
-    Off,
-    /// `tip_ik(&target)` and the numeric solver.
-    ClosedForm,
-    /// `tip_ik(&target, free)` and the numeric solver.
-    Free,
-    /// The numeric solver only.
-    Numeric,
+/// What the stub knows: the options (as read, or as far as a lenient reading of the attribute
+/// goes), the lengths, and the inverse kinematics' plan if the chain was classified.
+#[derive(Debug, Clone)]
+pub struct Implied {
+    /// The options.
+    pub options: Options,
+    /// Whether the tips could be counted (else the stub has both `tip_pose` and `tip_poses`).
+    pub tips_counted: bool,
+    /// Whether `links` could be read (else `link_poses` returns `UnknownLength`).
+    pub links_read: bool,
+    /// The robot, when its description loaded.
+    pub dims: Dims,
+    /// The plan, when `ik` asked for a closed form and the chain has one.
+    pub ik_plan: Option<Box<IkPlan>>,
 }
 
-/// The function names the attribute implies.
-#[derive(Debug, Clone, Copy)]
-struct Names {
-    /// `tip_pose` (one tip).
-    one_tip: bool,
-    /// `tip_poses` (several tips).
-    several_tips: bool,
-    /// The position functions.
-    positions: bool,
-    /// The velocity functions (`tip_jacobian`, ...).
-    jacobians: bool,
-    /// Which inverse kinematics functions.
-    ik: IkNames,
-    /// `f64` functions (no suffix).
-    f64: bool,
-    /// `_f32` functions.
-    f32: bool,
-    /// How many tips, if they could be counted.
-    tips: Option<usize>,
-    /// Which links `link_poses` returns.
-    links: LinkCount,
-}
-
-/// How many links `link_poses` returns, as far as the attribute says.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum LinkCount {
-    /// Every link but the base (no `links` key): the description's count, if it loaded.
-    All,
-    /// The entries of `links`.
-    Listed(usize),
-    /// A `links` key that could not be read.
-    Unknown,
-}
-
-impl Names {
-    /// Every name the derive can emit: for an attribute that cannot be read at all.
-    const ALL: Names = Names {
-        one_tip: true,
-        several_tips: true,
-        positions: true,
-        jacobians: true,
-        ik: IkNames::ClosedForm,
-        f64: true,
-        f32: true,
-        tips: None,
-        links: LinkCount::Unknown,
-    };
-
-    /// From options darling parsed (the scalar list may still be wrong: then both scalar types).
-    fn from_options(options: &KinematicsInput) -> Self {
-        let tips = options.tips().len();
-        let (f64, f32) = match options.output().scalars() {
-            Ok(s) => (s.f64, s.f32),
-            Err(_) => (true, true),
-        };
-        Names {
-            one_tip: tips == 1,
-            several_tips: tips > 1,
-            positions: options.output().positions,
-            jacobians: options.output().jacobians.is_present(),
-            ik: match options.output().ik_mode() {
-                Ok(IkMode::Off) => IkNames::Off,
-                Ok(IkMode::ClosedForm { free: Some(_) }) => IkNames::Free,
-                Ok(IkMode::Numeric) => IkNames::Numeric,
-                // An unknown kind: the closed form's names, the most a user would call.
-                Ok(IkMode::ClosedForm { free: None }) | Err(_) => IkNames::ClosedForm,
-            },
-            f64,
-            f32,
-            tips: Some(tips),
-            links: match &options.keys.links {
-                Some(list) => LinkCount::Listed(list.as_ref().0.len()),
-                None => LinkCount::All,
-            },
-        }
+impl Implied {
+    /// From options darling read.
+    pub fn from_options(options: Options) -> Self {
+        Implied { options, tips_counted: true, links_read: true, dims: Dims::default(), ik_plan: None }
     }
 
-    /// From the attribute's keys alone, when darling could not parse it: only which keys are
-    /// there matters (`tip`, `tips(...)` and how many, `positions`, `scalars(...)`); whatever
-    /// cannot be read counts as present.
-    fn from_attributes(input: &syn::DeriveInput) -> Self {
-        let mut names = Names {
-            one_tip: false,
-            several_tips: false,
-            positions: false,
-            jacobians: false,
-            ik: IkNames::Off,
-            f64: true,
-            f32: false,
-            tips: None,
-            links: LinkCount::All,
-        };
-        let mut tips = 0usize;
+    /// From the attribute's keys alone, when darling could not read it: only which keys are there
+    /// matters (`tip`, `tips(...)` and how many, `links = [...]` and how many, `positions`,
+    /// `jacobians`, `ik` and its kind, `scalars(...)`); whatever cannot be read counts as present.
+    pub fn from_attributes(input: &syn::DeriveInput) -> Self {
+        let mut options = Options::default();
+        let (mut tips, mut tips_counted, mut links_read) = (0usize, true, true);
         for attr in input.attrs.iter().filter(|a| a.path().is_ident("kinematics")) {
             let Ok(items) = attr.parse_args_with(Punctuated::<syn::Meta, syn::Token![,]>::parse_terminated) else {
-                return Names::ALL;
+                return Implied::everything();
             };
             for item in items {
                 let path = item.path();
                 if path.is_ident("tip") {
                     tips += 1;
                 } else if path.is_ident("tips") {
-                    match &item {
+                    let list = match &item {
                         syn::Meta::List(list) => {
-                            match list.parse_args_with(Punctuated::<syn::Expr, syn::Token![,]>::parse_terminated) {
-                                Ok(list) => tips += list.len(),
-                                Err(_) => (names.one_tip, names.several_tips) = (true, true),
-                            }
+                            list.parse_args_with(Punctuated::<syn::Expr, syn::Token![,]>::parse_terminated).ok()
                         }
-                        _ => (names.one_tip, names.several_tips) = (true, true),
+                        _ => None,
+                    };
+                    match list {
+                        Some(list) => tips += list.len(),
+                        None => tips_counted = false,
                     }
                 } else if path.is_ident("links") {
-                    names.links = match &item {
+                    match &item {
                         syn::Meta::NameValue(syn::MetaNameValue { value: syn::Expr::Array(list), .. }) => {
-                            LinkCount::Listed(list.elems.len())
+                            options.links = Some(vec![String::new(); list.elems.len()]);
                         }
-                        _ => LinkCount::Unknown,
-                    };
+                        _ => links_read = false,
+                    }
                 } else if path.is_ident("positions") {
-                    names.positions = true;
+                    options.positions = true;
                 } else if path.is_ident("jacobians") {
-                    names.jacobians = true;
+                    options.jacobians = true;
                 } else if path.is_ident("ik") {
-                    names.ik = match &item {
-                        syn::Meta::List(_) => IkNames::Free,
-                        syn::Meta::NameValue(nv) if quote!(#nv).to_string().contains("\"numeric\"") => IkNames::Numeric,
-                        _ => IkNames::ClosedForm,
+                    options.ik = match &item {
+                        syn::Meta::List(_) => IkMode::ClosedForm { free: Some(String::new()) },
+                        syn::Meta::NameValue(syn::MetaNameValue {
+                            value: syn::Expr::Lit(syn::ExprLit { lit: syn::Lit::Str(kind), .. }),
+                            ..
+                        }) if choose::<IkKind>(&kind.value()) == Ok(IkKind::Numeric) => IkMode::Numeric,
+                        // An unknown kind: the closed form's names, the most a user would call.
+                        _ => IkMode::ClosedForm { free: None },
                     };
                 } else if path.is_ident("scalars") {
-                    let text = match &item {
-                        syn::Meta::List(list) => list.tokens.to_string(),
-                        _ => String::new(),
+                    let words = match &item {
+                        syn::Meta::List(list) => list
+                            .parse_args_with(Punctuated::<syn::Path, syn::Token![,]>::parse_terminated)
+                            .map(|paths| paths.iter().filter_map(|p| p.get_ident().map(ToString::to_string)).collect())
+                            .unwrap_or_default(),
+                        _ => Vec::new(),
                     };
-                    let words: Vec<&str> = text.split(|c: char| !c.is_alphanumeric()).collect();
-                    names.f32 = words.contains(&"f32") || !words.contains(&"f64");
-                    names.f64 = words.contains(&"f64") || !words.contains(&"f32");
+                    options.scalars = Scalars { f64: words.iter().any(|w| w == "f64"), f32: words.iter().any(|w| w == "f32") };
                 }
             }
         }
-        if !(names.one_tip || names.several_tips) {
-            names.tips = Some(tips);
+        // One tip for each counted, or both forms when they could not be counted.
+        options.tips = vec![String::new(); if tips_counted { tips } else { 2 }];
+        Implied { options, tips_counted, links_read, dims: Dims::default(), ik_plan: None }
+    }
+
+    /// Every name the derive can emit: for an attribute that cannot be read at all.
+    fn everything() -> Self {
+        let options = Options {
+            tips: vec![String::new(); 2],
+            positions: true,
+            jacobians: true,
+            ik: IkMode::ClosedForm { free: None },
+            scalars: Scalars { f64: true, f32: true },
+            ..Options::default()
+        };
+        Implied { options, tips_counted: false, links_read: false, dims: Dims::default(), ik_plan: None }
+    }
+
+    /// With the lengths of the robot that loaded (the fault was elsewhere): the stub's functions
+    /// then take and return arrays of the robot's own lengths.
+    pub fn with_robot(mut self, tree: &KinematicTree) -> Self {
+        let links = match &self.options.links {
+            Some(listed) => listed.len(),
+            // Every link but the base, whatever the base.
+            None => tree.links().len().saturating_sub(1),
+        };
+        self.dims = Dims {
+            dof: Some(tree.dof()),
+            velocities: Some(tree.velocity_dof()),
+            links: self.links_read.then_some(links),
+            tips: self.tips_counted.then_some(self.options.tips.len()),
+        };
+        self
+    }
+
+    /// With the inverse kinematics' plan, when the chain was classified.
+    pub fn with_plan(mut self, plan: Option<Box<IkPlan>>) -> Self {
+        self.ik_plan = plan;
+        self
+    }
+
+    /// The lengths as far as they are known without a robot.
+    fn dims(&self) -> Dims {
+        let listed = self.options.links.as_ref().map(Vec::len);
+        Dims {
+            links: self.dims.links.or(if self.links_read { listed } else { None }),
+            tips: self.dims.tips.or(self.tips_counted.then_some(self.options.tips.len())),
+            ..self.dims
         }
-        names.one_tip |= tips == 1;
-        names.several_tips |= tips > 1;
-        names
     }
 }
 
@@ -201,201 +177,60 @@ fn crate_path(input: &syn::DeriveInput, options: Option<&KinematicsInput>) -> To
     quote!(::kinematics)
 }
 
-/// What is known of the robot when its description loaded (the fault was elsewhere): the stub's
-/// functions then take and return arrays of the robot's own lengths.
-#[derive(Debug, Clone, Copy)]
-pub struct Known {
-    /// Degrees of freedom.
-    pub dof: usize,
-    /// Velocities (a Jacobian's columns).
-    pub velocities: usize,
-    /// Links but the base (whatever the base: every link but one).
-    pub links: usize,
-}
-
-/// How many values a stub function returns: one, or an array of them whose length is known or
-/// not.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Frames {
-    /// One value (`tip_pose`).
-    One,
-    /// An array (`link_poses`, `tip_poses`), of the length given if known.
-    Many(Option<usize>),
-}
-
-/// The stub: `impl Type { ... }` with the constants, the functions the attribute implies and
-/// `reference()`, and `impl Kinematics for Type`, in an anonymous block. Lengths not known (no
-/// description, or tips that could not be counted) are const parameters of the functions, which
-/// the call site infers.
-pub fn stub(input: &syn::DeriveInput, options: Option<&KinematicsInput>, known: Option<Known>) -> TokenStream {
-    let names = options.map_or_else(|| Names::from_attributes(input), Names::from_options);
+/// The stub: `impl Type { ... }` with the constants and functions the surface lists for the
+/// implied options and `reference()`, and `impl Kinematics for Type`, in an anonymous block.
+pub fn stub(input: &syn::DeriveInput, options: Option<&KinematicsInput>, implied: &Implied) -> TokenStream {
     let krate = crate_path(input, options);
     let p = quote!(#krate::__private);
     let ident = &input.ident;
     let (impl_generics, ty_generics, where_clause) = input.generics.split_for_impl();
     let message = "the derive failed: its compile errors say why";
-    let scalars: Vec<(&str, TokenStream)> = [(names.f64, "", quote!(f64)), (names.f32, "_f32", quote!(f32))]
-        .into_iter()
-        .filter(|(on, _, _)| *on)
-        .map(|(_, suffix, t)| (suffix, t))
-        .collect();
-    let (dof, dof_param) = match known {
-        Some(k) => {
-            let n = proc_macro2::Literal::usize_unsuffixed(k.dof);
-            (quote!(#n), None)
-        }
-        None => (quote!(__KINEMATICS_DOF), Some(quote!(const __KINEMATICS_DOF: usize))),
-    };
-    // Unknown, the velocities are taken to be as many as `q`'s entries (no floating joint), so a
-    // call fixes both.
-    let nv = match known {
-        Some(k) => {
-            let n = proc_macro2::Literal::usize_unsuffixed(k.velocities);
-            quote!(#n)
-        }
-        None => dof.clone(),
-    };
-    let links = match names.links {
-        LinkCount::All => known.map(|k| k.links),
-        LinkCount::Listed(n) => Some(n),
-        LinkCount::Unknown => None,
-    };
-    let tips = names.tips;
-    let array = |elem: TokenStream, frames: Frames, batch: bool| match frames {
-        Frames::One => elem,
-        Frames::Many(Some(n)) => {
-            let n = proc_macro2::Literal::usize_unsuffixed(n);
-            quote!([#elem; #n])
-        }
-        // A batch's `out` gives the length; a value nothing gives it to is `UnknownLength`.
-        Frames::Many(None) if batch => quote!([#elem; __KINEMATICS_FRAMES]),
-        Frames::Many(None) => quote!(UnknownLength<#elem>),
+    let mut scalars = implied.options.scalars;
+    if !scalars.f64 && !scalars.f32 {
+        // A list that named none (or none readably): both.
+        scalars = Scalars { f64: true, f32: true };
+    }
+    let render = Render {
+        p: p.clone(),
+        scalars,
+        scalar: scalar_parameter(&quote!(#impl_generics)),
+        trig: implied.options.trig,
+        dims: implied.dims(),
     };
     let attrs = quote!(#[allow(missing_docs, unused_variables, clippy::missing_panics_doc)]);
+    let constants = Constant::ALWAYS.map(|constant| {
+        let name = format_ident!("{}", constant.name());
+        let ty = render.constant_type(constant);
+        let value = constant_value(&render, constant, &p);
+        quote!(pub const #name: #ty = #value;)
+    });
     let mut functions = Vec::new();
-    // `name` (and its batch per scalar, and `name_generic`), returning `frames` values of `elem`'s
-    // type for the scalar; `rates`: the function takes the joint rates `qd` too (and has no batch).
-    let mut function = |name: &str, frames: Frames, rates: bool, elem: &dyn Fn(&TokenStream) -> TokenStream| {
-        let params: Vec<&TokenStream> = dof_param.iter().collect();
-        let frames_param = (frames == Frames::Many(None)).then(|| quote!(const __KINEMATICS_FRAMES: usize));
-        let batch_params: Vec<&TokenStream> = dof_param.iter().chain(&frames_param).collect();
-        let qd = |t: &TokenStream| if rates { quote!(, qd: &[#t; #nv]) } else { quote!() };
-        for (suffix, t) in &scalars {
-            let f = format_ident!("{name}{suffix}");
-            let (r, qd) = (array(elem(t), frames, false), qd(t));
-            functions.push(quote! {
-                #attrs
-                pub fn #f<#(#params),*>(q: &[#t; #dof] #qd) -> #r {
-                    ::core::unreachable!(#message)
+    let mut seen = BTreeSet::new();
+    // Tips that could not be counted: both the one tip's names and several tips'.
+    let one_tip = implied.options.tips.len() == 1;
+    let forms: &[bool] = if implied.tips_counted { &[one_tip][..] } else { &[true, false][..] };
+    for &one in forms {
+        for output in outputs(&implied.options) {
+            for (_, signature) in render.functions(output, one) {
+                if seen.insert(signature.name.to_string()) {
+                    let sig = signature.tokens();
+                    functions.push(quote!(#attrs #sig { ::core::unreachable!(#message) }));
+                }
+            }
+        }
+    }
+    if let Some(shape) = IkShape::implied(&implied.options, implied.ik_plan.as_deref()) {
+        for item in render.ik_items(&shape) {
+            functions.push(match item {
+                IkItem::Family => quote!(pub const IK_FAMILY: &'static str = "";),
+                IkItem::Arm(ty) => quote!(pub const IK_ARM: #ty = ::core::panic!(#message);),
+                IkItem::Function(_, signature) => {
+                    let sig = signature.tokens();
+                    quote!(#attrs #sig { ::core::unreachable!(#message) })
                 }
             });
-            if !rates {
-                let batch = format_ident!("{name}_batch{suffix}");
-                let r = array(elem(t), frames, true);
-                functions.push(quote! {
-                    #attrs
-                    pub fn #batch<#(#batch_params),*>(qs: &[[#t; #dof]], out: &mut [#r]) -> ::core::result::Result<(), #p::KinematicsError> {
-                        ::core::unreachable!(#message)
-                    }
-                });
-                let columns = format_ident!("{name}_batch_columns{suffix}");
-                functions.push(quote! {
-                    #attrs
-                    pub fn #columns<#(#batch_params),*>(columns: [&[#t]; #dof], out: &mut [#r]) -> ::core::result::Result<(), #p::KinematicsError> {
-                        ::core::unreachable!(#message)
-                    }
-                });
-            }
-        }
-        let f = format_ident!("{name}_generic");
-        let scalar = quote!(__KinematicsScalar);
-        let (r, qd) = (array(elem(&scalar), frames, false), qd(&scalar));
-        functions.push(quote! {
-            #attrs
-            pub fn #f<#scalar: #p::Real, #(#params),*>(q: &[#scalar; #dof] #qd) -> #r {
-                ::core::unreachable!(#message)
-            }
-        });
-    };
-    let pose = |t: &TokenStream| quote!(#p::Pose<#t>);
-    function("link_poses", Frames::Many(links), false, &pose);
-    if names.one_tip {
-        function("tip_pose", Frames::One, false, &pose);
-    }
-    if names.several_tips {
-        function("tip_poses", Frames::Many(tips), false, &pose);
-    }
-    if names.positions {
-        let position = |t: &TokenStream| quote!([#t; 3]);
-        function("link_positions", Frames::Many(links), false, &position);
-        if names.one_tip {
-            function("tip_position", Frames::One, false, &position);
-        }
-        if names.several_tips {
-            function("tip_positions", Frames::Many(tips), false, &position);
         }
     }
-    if names.jacobians {
-        // (one tip, several tips, rows)
-        let mut velocity = vec![("tip_jacobian", "tip_jacobians", 6), ("tip_jacobian_local", "tip_jacobians_local", 6)];
-        if names.positions {
-            velocity.push(("tip_position_jacobian", "tip_position_jacobians", 3));
-        }
-        for (one, several, rows) in velocity {
-            let rows = proc_macro2::Literal::usize_unsuffixed(rows);
-            let jacobian = |t: &TokenStream| quote!([[#t; #nv]; #rows]);
-            if names.one_tip {
-                function(one, Frames::One, false, &jacobian);
-            }
-            if names.several_tips {
-                function(several, Frames::Many(tips), false, &jacobian);
-            }
-        }
-        let pair = |t: &TokenStream| quote!((#p::Pose<#t>, [[#t; #nv]; 6]));
-        if names.one_tip {
-            function("tip_pose_and_jacobian", Frames::One, false, &pair);
-        }
-        if names.several_tips {
-            function("tip_poses_and_jacobians", Frames::Many(tips), false, &pair);
-        }
-        let twist = |t: &TokenStream| quote!([#t; 6]);
-        for (name, frames) in [("tip_twist", Frames::One), ("tip_twists", Frames::Many(tips))] {
-            if (frames == Frames::One && names.one_tip) || (frames != Frames::One && names.several_tips) {
-                function(name, frames, true, &twist);
-                function(&format!("{name}_local"), frames, true, &twist);
-            }
-        }
-    }
-    let dof_const = known.map_or(0, |k| k.dof);
-    if names.ik != IkNames::Off {
-        let attrs = quote!(#[allow(missing_docs, unused_variables, clippy::missing_panics_doc)]);
-        let params: Vec<&TokenStream> = dof_param.iter().collect();
-        let result = |t: TokenStream| quote!(::core::result::Result<#t, #p::ik::IkError>);
-        let all = result(quote!(#p::ik::IkSolutions<#dof, 8>));
-        let one = result(quote!(::core::option::Option<#p::ik::IkSolution<#dof>>));
-        let numeric = result(quote!(#p::ik::NumericSolution<#dof>));
-        let free = (names.ik == IkNames::Free).then(|| quote!(, free: f64));
-        if names.ik != IkNames::Numeric {
-            functions.push(quote! {
-                pub const IK_FAMILY: &'static str = "";
-                #attrs
-                pub fn tip_ik<#(#params),*>(target: &impl #p::ik::IkTarget #free) -> #all { ::core::unreachable!(#message) }
-                #attrs
-                pub fn tip_ik_within_limits<#(#params),*>(target: &impl #p::ik::IkTarget #free) -> #all { ::core::unreachable!(#message) }
-                #attrs
-                pub fn tip_ik_nearest<#(#params),*>(target: &impl #p::ik::IkTarget, seed: &[f64; #dof]) -> #one { ::core::unreachable!(#message) }
-            });
-        }
-        functions.push(quote! {
-            #attrs
-            pub fn tip_ik_numeric<#(#params),*>(target: &impl #p::ik::IkTarget, seed: &[f64; #dof]) -> #numeric { ::core::unreachable!(#message) }
-            #attrs
-            pub fn tip_ik_numeric_with<#(#params),*>(target: &impl #p::ik::IkTarget, seed: &[f64; #dof], options: &#p::ik::NumericOptions) -> #numeric {
-                ::core::unreachable!(#message)
-            }
-        });
-    }
-    let velocity_const = known.map_or(0, |k| k.velocities);
     let unknown_length = unknown_length(message);
     let load_error = quote! {
         ::core::result::Result::Err(#p::LoadError::new(
@@ -412,15 +247,7 @@ pub fn stub(input: &syn::DeriveInput, options: Option<&KinematicsInput>, known: 
 
             #[allow(dead_code, missing_docs)]
             impl #impl_generics #ident #ty_generics #where_clause {
-                pub const ROBOT: &'static str = "";
-                pub const BASE: &'static str = "";
-                pub const DOF: usize = #dof_const;
-                pub const VELOCITY_DOF: usize = #velocity_const;
-                pub const VELOCITY_NAMES: &'static [&'static str] = &[];
-                pub const JOINT_NAMES: &'static [&'static str] = &[];
-                pub const JOINT_LIMITS: &'static [#p::JointLimits] = &[];
-                pub const LINK_NAMES: &'static [&'static str] = &[];
-                pub const TIPS: &'static [&'static str] = &[];
+                #(#constants)*
                 #(#functions)*
                 #p::with_std! {
                     pub fn reference() -> ::core::result::Result<#p::ReferenceFk, #p::LoadError> {
@@ -455,6 +282,39 @@ pub fn stub(input: &syn::DeriveInput, options: Option<&KinematicsInput>, known: 
                 }
             }
         };
+    }
+}
+
+/// A stand-in value of a constant of the type the surface gives it: empty names, no limits, the
+/// robot's lengths where known (zero otherwise).
+fn constant_value(render: &Render, constant: Constant, p: &TokenStream) -> TokenStream {
+    let count = |n: Option<usize>, element: TokenStream| match n {
+        Some(n) => {
+            let n = proc_macro2::Literal::usize_unsuffixed(n);
+            quote!([#element; #n])
+        }
+        None => quote!(&[]),
+    };
+    let dims = render.dims;
+    let limits = quote!(#p::JointLimits {
+        lower: ::core::primitive::f64::NEG_INFINITY,
+        upper: ::core::primitive::f64::INFINITY,
+    });
+    match constant {
+        Constant::Robot | Constant::Base => quote!(""),
+        Constant::Dof => {
+            let n = proc_macro2::Literal::usize_unsuffixed(dims.dof.unwrap_or(0));
+            quote!(#n)
+        }
+        Constant::VelocityDof => {
+            let n = proc_macro2::Literal::usize_unsuffixed(dims.velocities.or(dims.dof).unwrap_or(0));
+            quote!(#n)
+        }
+        Constant::JointNames => count(dims.dof, quote!("")),
+        Constant::VelocityNames => count(dims.velocities.or(dims.dof), quote!("")),
+        Constant::JointLimits => count(dims.dof, limits),
+        Constant::LinkNames => count(dims.links, quote!("")),
+        Constant::Tips => count(dims.tips, quote!("")),
     }
 }
 
@@ -520,5 +380,117 @@ fn unknown_length(message: &str) -> TokenStream {
                 ::core::unreachable!(#message)
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    //! The stub lists what the emitter writes, signature for signature, for every option set.
+
+    use kinematics_compiler::options::{CheckedIk, IkMode, Options, Scalars, Trig};
+    use kinematics_compiler::robot::{RobotSpec, emit_robot};
+    use kinematics_model::{ExactAngles, KinematicTree, Source, SourceKind};
+    use quote::quote;
+
+    use super::{Implied, stub};
+
+    /// The inherent impl's items (a constant's type, a function's signature) in order, without
+    /// attributes, values or bodies; `with_std!` (the reference) left out.
+    fn surface(tokens: proc_macro2::TokenStream) -> Vec<String> {
+        let file: syn::File = syn::parse2(tokens).unwrap();
+        let mut items = Vec::new();
+        for item in file.items {
+            let syn::Item::Const(block) = item else { continue };
+            let syn::Expr::Block(block) = *block.expr else { continue };
+            for statement in block.block.stmts {
+                let syn::Stmt::Item(syn::Item::Impl(imp)) = statement else { continue };
+                if imp.trait_.is_some() {
+                    continue;
+                }
+                for item in imp.items {
+                    match item {
+                        syn::ImplItem::Const(c) => {
+                            let (name, ty) = (&c.ident, &c.ty);
+                            items.push(quote!(const #name: #ty).to_string());
+                        }
+                        syn::ImplItem::Fn(f) => {
+                            let sig = &f.sig;
+                            items.push(quote!(#sig).to_string());
+                        }
+                        _ => {}
+                    }
+                }
+            }
+        }
+        items
+    }
+
+    fn robot(file: &str) -> KinematicTree {
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../robots").join(file);
+        let source = Source::from_bytes(file, SourceKind::ByExtension, std::fs::read(path).unwrap()).unwrap();
+        source.load(ExactAngles::default()).unwrap()
+    }
+
+    /// Every combination of tips, positions, Jacobians, inverse kinematics and scalars on robots
+    /// of each kind of plan (a compiled six-joint body, the run time's solver, a planar arm, a
+    /// free joint, none), with the link list and trig alternating: the stub given the robot's
+    /// lengths (and the plan) lists exactly the emitted items.
+    #[test]
+    fn the_stub_lists_what_the_emitter_writes() {
+        let robots = [
+            ("ur5.urdf", ["tool0", "wrist_2_link"], None),
+            ("puma560.toml", ["link6", "link3"], None),
+            ("planar_3r.urdf", ["tool", "link2"], None),
+            ("iiwa14.urdf", ["iiwa_link_ee", "iiwa_link_3"], Some("iiwa_joint_3")),
+            ("humanoid.urdf", ["l_sole", "r_sole"], None),
+        ];
+        let mut compared = 0;
+        for (file, tips, free) in robots {
+            let tree = robot(file);
+            let links: Vec<String> = tree.links().iter().rev().take(2).map(|l| l.name.clone()).collect();
+            let mut case = 0;
+            for several in [false, true] {
+                for (positions, jacobians) in [(false, false), (true, false), (false, true), (true, true)] {
+                    for ik in [IkMode::Off, IkMode::ClosedForm { free: free.map(str::to_owned) }, IkMode::Numeric] {
+                        for scalars in [(true, false), (false, true), (true, true)] {
+                            case += 1;
+                            let options = Options {
+                                tips: tips[..if several { 2 } else { 1 }].iter().map(|t| (*t).to_owned()).collect(),
+                                positions,
+                                jacobians,
+                                ik: ik.clone(),
+                                scalars: Scalars { f64: scalars.0, f32: scalars.1 },
+                                links: (case % 3 == 0).then(|| links.clone()),
+                                trig: if case % 2 == 0 { Trig::Std } else { Trig::Fast },
+                                ..Options::default()
+                            };
+                            let Ok(checked) = options.check(&tree) else { continue };
+                            let plan = match checked.ik() {
+                                CheckedIk::ClosedForm(plan) => Some(plan.clone()),
+                                _ => None,
+                            };
+                            let spec = RobotSpec {
+                                robot: checked,
+                                krate: quote!(::kinematics),
+                                source_label: file.to_owned(),
+                                source_text: quote!(""),
+                                impl_generics: quote!(),
+                                where_clause: quote!(),
+                            };
+                            let emitted = emit_robot(&quote!(Robot), &spec).unwrap();
+                            let input: syn::DeriveInput = syn::parse2(quote!(struct Robot;)).unwrap();
+                            let implied = Implied::from_options(options.clone()).with_robot(&tree).with_plan(plan);
+                            let stubbed = stub(&input, None, &implied);
+                            assert_eq!(surface(stubbed), surface(emitted), "{file}: {options:?}");
+                            compared += 1;
+                        }
+                    }
+                }
+            }
+        }
+        // Per robot and scalar list, the four position and Jacobian choices: with one tip, `ik` off
+        // and numeric, with two, `ik` off (the rules refuse `ik` of two tips); and with one tip
+        // the closed form on the four robots that have one (the humanoid's leg has none).
+        assert_eq!(compared, 3 * 4 * (5 * (2 + 1) + 4), "option sets compared");
     }
 }

@@ -13,10 +13,12 @@ pub mod options;
 mod source;
 
 use darling::FromDeriveInput;
-use proc_macro2::TokenStream;
+use proc_macro2::{Span, TokenStream};
 use quote::quote;
 
-use kinematics_compiler::robot::{IkMode, RobotSpec, emit_robot};
+use fallback::Implied;
+use kinematics_compiler::options::{OptionKey, Options, Rejected};
+use kinematics_compiler::robot::{RobotSpec, emit_robot};
 use options::KinematicsInput;
 
 /// Expands `#[derive(Kinematics)]` on `input`: the impls, or the errors as `compile_error!`s
@@ -27,20 +29,31 @@ pub fn expand(input: TokenStream) -> TokenStream {
         Err(e) => return e.to_compile_error(),
     };
     let mut errors = darling::Error::accumulator();
-    let (options, known, robot) = match KinematicsInput::from_derive_input(&input) {
+    let (options, implied, robot) = match KinematicsInput::from_derive_input(&input) {
         Ok(options) => {
-            let (known, robot) = expand_options(&options, &mut errors);
-            (Some(options), known, robot)
+            let (implied, robot) = expand_options(&options, &mut errors);
+            (Some(options), implied, robot)
         }
         Err(e) => {
             errors.push(e);
             // A key darling cannot read fails the whole attribute; the description may still be
-            // readable, and its faults belong beside that key's (the stub gets its sizes too).
-            let loaded = match options::DescriptionKeys::from_derive_input(&input) {
-                Ok(keys) if keys.names_a_description() => read_and_check(&keys.source(), &mut errors).0,
-                _ => None,
+            // readable, and its faults (and those of the links it names) belong beside that
+            // key's (the stub gets its sizes too).
+            let implied = Implied::from_attributes(&input);
+            let implied = match options::DescriptionKeys::from_derive_input(&input) {
+                Ok(keys) if keys.names_a_description() => match errors.handle(source::read(&keys.source())) {
+                    Some(loaded) => {
+                        let options = keys.options();
+                        if let Err(rejected) = options.check(&loaded.tree) {
+                            report(&rejected, &loaded, &mut errors, |key| keys.span_of(key));
+                        }
+                        implied.with_robot(&loaded.tree)
+                    }
+                    None => implied,
+                },
+                _ => implied,
             };
-            (None, loaded.as_ref().map(known), None)
+            (None, implied, None)
         }
     };
     match (errors.finish(), robot) {
@@ -54,88 +67,46 @@ pub fn expand(input: TokenStream) -> TokenStream {
                     "kinematics derive: internal error: no code and no fault (the derive's invariant broke; please report)"
                 );),
             };
-            let stub = fallback::stub(&input, options.as_ref(), known);
+            let stub = fallback::stub(&input, options.as_ref(), &implied);
             quote!(#errors #stub)
         }
     }
 }
 
-/// Reads the description and checks the links asked for, each fault into `errors`: the robot if
-/// it could be read (so the stub knows its sizes even when a link name is wrong), and whether the
-/// links are all there.
-fn read_and_check(
-    options: &options::SourceOptions<'_>,
+/// Every fault of `rejected` into `errors`, each on the span `span_of` gives its option and
+/// naming the description.
+fn report(
+    rejected: &Rejected,
+    loaded: &source::Loaded,
     errors: &mut darling::error::Accumulator,
-) -> (Option<source::Loaded>, bool) {
-    let loaded = errors.handle(source::read(options));
-    let links_ok = loaded.as_ref().is_some_and(|l| errors.handle(source::check_links(l, options)).is_some());
-    (loaded, links_ok)
+    span_of: impl Fn(OptionKey) -> Span,
+) {
+    for fault in &rejected.faults {
+        errors.push(darling::Error::custom(format!("{}: {fault}", loaded.written)).with_span(&span_of(fault.key)));
+    }
 }
 
-/// Why `ik` cannot be emitted for this robot and these options, if it cannot: not exactly one
-/// tip, or a chain no closed-form family covers.
-fn ik_fault(options: &KinematicsInput, mode: &IkMode, loaded: &source::Loaded) -> Option<String> {
-    let tips = options.tips();
-    let tree = &loaded.tree;
-    let base = options.keys.base.as_ref().map_or_else(|| tree.link(tree.root()).name.clone(), |b| b.as_ref().clone());
-    if tree.dof() != tree.velocity_dof() {
-        return Some("`ik` of a robot with a floating joint is not supported yet".to_owned());
-    }
-    match tips.as_slice() {
-        [_] if *mode == IkMode::Numeric => None,
-        [tip] => {
-            let free = match mode {
-                IkMode::ClosedForm { free } => free.as_deref(),
-                _ => None,
-            };
-            kinematics_compiler::ik::classify_with(tree, &base, tip.as_ref(), free).err().map(|e| e.to_string())
+/// Loads the description, checks the options against it (the compiler's rules) and emits the
+/// robot, gathering every fault in `errors` (the load errors and the option faults side by side):
+/// the robot if there was none, and what the stub needs otherwise.
+fn expand_options(options: &KinematicsInput, errors: &mut darling::error::Accumulator) -> (Implied, Option<TokenStream>) {
+    let loaded = errors.handle(source::read(&options.source()));
+    let robot_options: Options = options.options(errors);
+    let implied = Implied::from_options(robot_options.clone());
+    let Some(loaded) = loaded else {
+        // The rules that need no robot still speak.
+        for fault in robot_options.check_alone() {
+            errors.push(darling::Error::custom(fault.to_string()).with_span(&options.span_of(fault.key)));
         }
-        _ => Some(format!(
-            "`ik` needs exactly one `tip = \"link\"`: the inverse kinematics is the tip's ({} tips given)",
-            tips.len()
-        )),
-    }
-}
-
-/// What the stub needs to know of a loaded robot.
-fn known(loaded: &source::Loaded) -> fallback::Known {
-    fallback::Known {
-        dof: loaded.tree.dof(),
-        velocities: loaded.tree.velocity_dof(),
-        links: loaded.tree.links().len().saturating_sub(1),
-    }
-}
-
-/// Loads the description, checks the options and emits the robot, gathering every fault in
-/// `errors` (the load errors and the option errors side by side): the robot if there was none,
-/// and what is known of it for the stub otherwise.
-fn expand_options(
-    options: &KinematicsInput,
-    errors: &mut darling::error::Accumulator,
-) -> (Option<fallback::Known>, Option<TokenStream>) {
-    let (loaded, links_ok) = read_and_check(&options.source(), errors);
-    let scalars = errors.handle(options.output().scalars());
-    if options.output().jacobians.is_present() && options.tips().is_empty() {
-        errors.push(
-            darling::Error::custom(
-                "`jacobians` needs `tip = \"link\"` or `tips(...)`: the Jacobians are the tips' (add the link whose \
-                 velocity you want)",
-            )
-            .with_span(&options.output().jacobians.span()),
-        );
-        return (loaded.as_ref().map(known), None);
-    }
-    let ik = errors.handle(options.output().ik_mode());
-    if let (Some(mode), Some(key), true, Some(loaded)) = (&ik, &options.output().ik, links_ok, &loaded)
-        && let Some(fault) = ik_fault(options, mode, loaded)
-    {
-        errors.push(darling::Error::custom(format!("{}: {fault}", loaded.label)).with_span(&key.span()));
-        return (Some(known(loaded)), None);
-    }
-    let trig = errors.handle(options.output().trig());
-    let known = loaded.as_ref().map(known);
-    let (Some(loaded), Some(scalars), Some(trig), Some(ik), true) = (loaded, scalars, trig, ik, links_ok) else {
-        return (known, None);
+        return (implied, None);
+    };
+    let implied = implied.with_robot(&loaded.tree);
+    let checked = match robot_options.check(&loaded.tree) {
+        Ok(checked) => checked,
+        Err(rejected) => {
+            report(&rejected, &loaded, errors, |key| options.span_of(key));
+            return (implied.with_plan(rejected.ik_plan), None);
+        }
     };
     let krate = match &options.output().krate {
         Some(path) => quote!(#path),
@@ -144,17 +115,8 @@ fn expand_options(
     let ident = &options.ident;
     let (impl_generics, ty_generics, where_clause) = options.generics.split_for_impl();
     let spec = RobotSpec {
-        tree: &loaded.tree,
-        base: options.keys.base.as_ref().map(|b| b.as_ref().clone()),
-        tips: options.tips().into_iter().map(|t| t.as_ref().clone()).collect(),
-        links: options.keys.links().into_iter().map(|l| l.as_ref().clone()).collect(),
-        positions: options.output().positions,
-        jacobians: options.output().jacobians.is_present(),
-        ik,
-        floating_base: options.source().floating_base.map(|f| f.as_ref().clone()),
-        scalars,
+        robot: checked,
         krate,
-        trig,
         source_label: loaded.label.clone(),
         source_text: loaded.text_expr.clone(),
         impl_generics: quote!(#impl_generics),
@@ -162,5 +124,5 @@ fn expand_options(
     };
     let emitted = emit_robot(&quote!(#ident #ty_generics), &spec)
         .map_err(|e| darling::Error::custom(format!("{}: {e}", loaded.label)).with_span(ident));
-    (known, errors.handle(emitted))
+    (implied, errors.handle(emitted))
 }

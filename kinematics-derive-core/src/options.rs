@@ -19,8 +19,7 @@ use darling::util::{Override, PathList, SpannedValue};
 use darling::{Error, FromDeriveInput, FromMeta};
 
 use crate::inline_dh::InlineDh;
-use kinematics_compiler::emit::Trig;
-use kinematics_compiler::robot::{IkMode, Scalars};
+use kinematics_compiler::options::{Choice, IkKind, IkMode, OptionKey, Options, Scalars, Trig, choose};
 use kinematics_model::ExactAngles;
 
 /// The options of one derive.
@@ -96,7 +95,7 @@ pub struct OutputKeys {
     /// `trig = "std"`: call the platform's `sin_cos` (one call per angle) instead of ours (the
     /// default, `trig = "fast"`: every angle of a function in one call, side by side in SIMD lanes).
     #[darling(default)]
-    pub trig: Option<SpannedValue<String>>,
+    pub trig: Option<SpannedValue<Word<Trig>>>,
     /// `crate = "path"` for a renamed dependency.
     #[darling(default, rename = "crate")]
     pub krate: Option<syn::Path>,
@@ -117,9 +116,24 @@ impl FromMeta for SkippedKeys {
 #[derive(Debug, Clone)]
 pub enum IkKey {
     /// `ik = "..."`.
-    Kind(String),
+    Kind(IkKind),
     /// `ik(free = "joint")`.
     Free(String),
+}
+
+/// A key whose value is one of a few words ([`Choice`]: `trig = "std"`): read by the compiler's
+/// one list of the words, an unknown word refused with the choices and a "did you mean".
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Word<C>(pub C);
+
+impl<C: Choice> FromMeta for Word<C> {
+    fn from_value(value: &syn::Lit) -> darling::Result<Self> {
+        match value {
+            syn::Lit::Str(word) => choose(&word.value()).map(Word).map_err(|e| Error::custom(e).with_span(word)),
+            other => Err(Error::custom(format!("expected a word in quotes, like `{} = \"{}\"`", C::KEY.name(), C::CHOICES[0].0))
+                .with_span(other)),
+        }
+    }
 }
 
 /// The list form of `ik(...)`.
@@ -129,8 +143,8 @@ struct IkList {
 }
 
 impl FromMeta for IkKey {
-    fn from_string(value: &str) -> darling::Result<Self> {
-        Ok(IkKey::Kind(value.to_owned()))
+    fn from_value(value: &syn::Lit) -> darling::Result<Self> {
+        Word::<IkKind>::from_value(value).map(|Word(kind)| IkKey::Kind(kind))
     }
 
     fn from_list(items: &[NestedMeta]) -> darling::Result<Self> {
@@ -149,8 +163,8 @@ fn floating_base(key: Option<&SpannedValue<Override<String>>>) -> Option<Spanned
     })
 }
 
-/// What the crate-private `source::read` needs: the keys that name the description, its exactness policy
-/// and the links asked for.
+/// What the crate-private `source::read` needs: the keys that name the description, its
+/// exactness policy and its free-flying root.
 #[derive(Debug)]
 pub struct SourceOptions<'a> {
     /// The struct (errors with no key of their own are spanned on it).
@@ -159,12 +173,6 @@ pub struct SourceOptions<'a> {
     pub urdf: Option<&'a SpannedValue<String>>,
     /// `dh = ...`.
     pub dh: Option<&'a SpannedValue<DhSource>>,
-    /// `base = "link"`.
-    pub base: Option<&'a SpannedValue<String>>,
-    /// `tip` and `tips`, in that order.
-    pub tips: Vec<SpannedValue<String>>,
-    /// The entries of `links`, in order (empty when the key is absent).
-    pub links: Vec<SpannedValue<String>>,
     /// `exact_angles`.
     pub exact_angles: ExactAngles,
     /// `floating_base`: the new root link's name, spanned on the key.
@@ -183,6 +191,16 @@ pub struct DescriptionKeys {
 }
 
 impl DescriptionKeys {
+    /// The options the description's keys set.
+    pub fn options(&self) -> Options {
+        self.keys.options()
+    }
+
+    /// Where the option `key` is written (the struct's name where these keys do not say).
+    pub fn span_of(&self, key: OptionKey) -> proc_macro2::Span {
+        self.keys.span_of(key).unwrap_or_else(|| self.ident.span())
+    }
+
     /// Whether a description is named at all (a misspelt `urdf` or `dh` is the other key's fault,
     /// not a second one to report).
     pub fn names_a_description(&self) -> bool {
@@ -218,15 +236,37 @@ impl<Rest> SourceKeys<Rest> {
         }
     }
 
+    /// The options these keys set (every other option at its default).
+    pub fn options(&self) -> Options {
+        Options {
+            base: self.base.as_ref().map(|b| b.as_ref().clone()),
+            tips: self.tips().into_iter().map(|t| t.as_ref().clone()).collect(),
+            links: self.links.as_ref().map(|l| l.as_ref().0.iter().map(|l| l.as_ref().clone()).collect()),
+            floating_base: floating_base(self.floating_base.as_ref()).map(|f| f.as_ref().clone()),
+            exact_angles: self.exact_angles(),
+            ..Options::default()
+        }
+    }
+
+    /// Where one of these keys' options is written, if it is one of them and written: a link's
+    /// own name for a listed link or a tip.
+    pub fn span_of(&self, key: OptionKey) -> Option<proc_macro2::Span> {
+        match key {
+            OptionKey::Base => self.base.as_ref().map(SpannedValue::span),
+            OptionKey::Tip(i) => self.tips().get(i).map(SpannedValue::span),
+            OptionKey::Link(i) => self.links().get(i).map(SpannedValue::span),
+            OptionKey::Links => self.links.as_ref().map(SpannedValue::span),
+            OptionKey::FloatingBase => self.floating_base.as_ref().map(SpannedValue::span),
+            _ => None,
+        }
+    }
+
     /// What loading needs, `ident` being the struct's name.
     pub fn source<'a>(&'a self, ident: &'a syn::Ident) -> SourceOptions<'a> {
         SourceOptions {
             ident,
             urdf: self.urdf.as_ref(),
             dh: self.dh.as_ref(),
-            base: self.base.as_ref(),
-            tips: self.tips(),
-            links: self.links(),
             exact_angles: self.exact_angles(),
             floating_base: floating_base(self.floating_base.as_ref()),
         }
@@ -252,38 +292,25 @@ impl KinematicsInput {
 
 impl OutputKeys {
     /// The sine and cosine asked for (ours by default).
-    pub fn trig(&self) -> darling::Result<Trig> {
-        match self.trig.as_ref().map(|t| (t.as_str(), t.span())) {
-            None | Some(("fast", _)) => Ok(Trig::Fast),
-            Some(("std", _)) => Ok(Trig::Std),
-            Some((other, span)) => Err(Error::custom(format!(
-                "unknown trig `{other}`: expected \"fast\" (our sin/cos, the default) or \"std\" (the platform's)"
-            ))
-            .with_span(&span)),
-        }
+    pub fn trig(&self) -> Trig {
+        self.trig.as_ref().map_or_else(Trig::default, |t| t.as_ref().0)
     }
 
     /// The inverse kinematics asked for.
-    pub fn ik_mode(&self) -> darling::Result<IkMode> {
-        let Some(key) = &self.ik else { return Ok(IkMode::Off) };
+    pub fn ik_mode(&self) -> IkMode {
+        let Some(key) = &self.ik else { return IkMode::Off };
         match key.as_ref() {
-            Override::Inherit => Ok(IkMode::ClosedForm { free: None }),
-            Override::Explicit(IkKey::Free(joint)) => Ok(IkMode::ClosedForm { free: Some(joint.clone()) }),
-            Override::Explicit(IkKey::Kind(kind)) if kind == "closed_form" => Ok(IkMode::ClosedForm { free: None }),
-            Override::Explicit(IkKey::Kind(kind)) if kind == "numeric" => Ok(IkMode::Numeric),
-            Override::Explicit(IkKey::Kind(other)) => Err(Error::custom(format!(
-                "unknown ik `{other}`: expected `ik` or `ik = \"closed_form\"` (the closed form of the tip's family, \
-                 and the numeric solver) or `ik = \"numeric\"` (the numeric solver only, for any chain)"
-            ))
-            .with_span(&key.span())),
+            Override::Inherit | Override::Explicit(IkKey::Kind(IkKind::ClosedForm)) => IkMode::ClosedForm { free: None },
+            Override::Explicit(IkKey::Free(joint)) => IkMode::ClosedForm { free: Some(joint.clone()) },
+            Override::Explicit(IkKey::Kind(IkKind::Numeric)) => IkMode::Numeric,
         }
     }
 
-    /// The scalar types asked for (`f64` by default).
-    pub fn scalars(&self) -> darling::Result<Scalars> {
-        let Some(list) = &self.scalars else { return Ok(Scalars::default()) };
+    /// The scalar types asked for (`f64` by default), an entry that is neither into `errors`
+    /// (none at all is the compiler's rule's).
+    pub fn scalars(&self, errors: &mut darling::error::Accumulator) -> Scalars {
+        let Some(list) = &self.scalars else { return Scalars::default() };
         let mut scalars = Scalars { f64: false, f32: false };
-        let mut errors = Error::accumulator();
         for path in list.iter() {
             match path.get_ident().map(ToString::to_string).as_deref() {
                 Some("f64") => scalars.f64 = true,
@@ -291,13 +318,39 @@ impl OutputKeys {
                 _ => errors.push(Error::custom("expected `f64` or `f32`").with_span(path)),
             }
         }
-        if !scalars.f64 && !scalars.f32 {
-            errors.push(
-                Error::custom("name at least one scalar type: `scalars(f64)`, `scalars(f32)` or both")
-                    .with_span(&list.span()),
-            );
+        scalars
+    }
+}
+
+impl KinematicsInput {
+    /// The compiler's options these keys set, an entry of `scalars` that names no scalar type
+    /// into `errors` (the rules between options are the compiler's, [`Options::check`]).
+    pub fn options(&self, errors: &mut darling::error::Accumulator) -> Options {
+        let output = &self.keys.rest;
+        Options {
+            positions: output.positions,
+            jacobians: output.jacobians.is_present(),
+            ik: output.ik_mode(),
+            scalars: output.scalars(errors),
+            trig: output.trig(),
+            ..self.keys.options()
         }
-        errors.finish_with(scalars)
+    }
+
+    /// Where the option `key` is written: its key's span (a link's own name for a listed link or
+    /// a tip), or the struct's name for an option without one.
+    pub fn span_of(&self, key: OptionKey) -> proc_macro2::Span {
+        let output = &self.keys.rest;
+        let span = match key {
+            OptionKey::Jacobians => output.jacobians.is_present().then(|| output.jacobians.span()),
+            OptionKey::Ik => output.ik.as_ref().map(SpannedValue::span),
+            OptionKey::Scalars => output.scalars.as_ref().map(SpannedValue::span),
+            OptionKey::Trig => output.trig.as_ref().map(SpannedValue::span),
+            // A bare word has no span of its own.
+            OptionKey::Positions => None,
+            source => self.keys.span_of(source),
+        };
+        span.unwrap_or_else(|| self.ident.span())
     }
 }
 
@@ -322,8 +375,8 @@ impl FromMeta for Tips {
     }
 }
 
-/// `links = ["a", "b"]`: string literals in an array, each with its span. An empty list is an
-/// error (it would be a robot without link poses; leave the key out for every link).
+/// `links = ["a", "b"]`: string literals in an array, each with its span (an empty list is read,
+/// and refused by the compiler's rule).
 #[derive(Debug, Clone)]
 pub struct Links(pub Vec<SpannedValue<String>>);
 
@@ -345,12 +398,6 @@ impl FromMeta for Links {
                 }
                 other => errors.push(Error::custom(LINKS_SYNTAX).with_span(other)),
             }
-        }
-        if array.elems.is_empty() {
-            errors.push(
-                Error::custom("`links = []` lists no link: name at least one, or leave the key out for every link")
-                    .with_span(expr),
-            );
         }
         errors.finish_with(Links(links))
     }

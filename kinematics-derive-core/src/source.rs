@@ -5,9 +5,8 @@ use std::path::PathBuf;
 
 use darling::Error;
 use darling::util::SpannedValue;
-use kinematics_model::{
-    ExactAngles, FLOATING_BASE_JOINT, KinematicTree, LoadError, LoadErrorKind, Source, SourceFormat, SourceKind,
-};
+use kinematics_compiler::options::floating_base_clash;
+use kinematics_model::{ExactAngles, KinematicTree, LoadError, LoadErrorKind, Source, SourceFormat, SourceKind};
 use proc_macro2::{Span, TokenStream};
 use quote::quote;
 
@@ -28,7 +27,7 @@ pub struct Loaded {
     pub text_expr: TokenStream,
 }
 
-/// Reads the description and checks the tree (not yet the links asked for).
+/// Reads the description and checks the tree (the options against it are the compiler's rules).
 pub fn read(options: &SourceOptions<'_>) -> darling::Result<Loaded> {
     let policy = (options.exact_angles, options.floating_base.as_ref());
     let loaded = match (options.urdf, options.dh) {
@@ -50,50 +49,17 @@ pub fn read(options: &SourceOptions<'_>) -> darling::Result<Loaded> {
     Ok(loaded)
 }
 
-/// Checks that the base, tips and listed links are links of the loaded robot and that no listed
-/// link repeats, each fault spanned on its name.
-pub fn check_links(loaded: &Loaded, options: &SourceOptions<'_>) -> darling::Result<()> {
-    let mut errors = Error::accumulator();
-    let mut links: Vec<(&'static str, SpannedValue<String>)> =
-        options.base.iter().map(|&b| ("base", b.clone())).collect();
-    links.extend(options.tips.iter().map(|t| ("tip", t.clone())));
-    links.extend(options.links.iter().map(|l| ("listed", l.clone())));
-    for (role, link) in &links {
-        if let Err(e) = loaded.tree.find_link(role, link) {
-            errors.push(Error::custom(format!("{}: {e}", loaded.written)).with_span(&link.span()));
-        }
-    }
-    for (i, link) in options.links.iter().enumerate() {
-        if options.links[..i].iter().any(|earlier| earlier.as_ref() == link.as_ref()) {
-            errors.push(
-                Error::custom(format!("link `{}` is listed twice in `links`", link.as_ref())).with_span(&link.span()),
-            );
-        }
-    }
-    errors.finish()
-}
-
 /// The exactness policy, and the free-flying root's link name if `floating_base` was given.
 type Policy<'a> = (ExactAngles, Option<&'a SpannedValue<String>>);
 
 /// Loads `source`, with a free-flying root when asked: the new root link and its joint must not
-/// clash with the description's names (a clash is an error on the `floating_base` key).
+/// clash with the description's names (the compiler's rule; a clash is an error on the
+/// `floating_base` key).
 fn load(source: &Source, (exact_angles, floating): Policy<'_>, span: Span) -> darling::Result<KinematicTree> {
     let tree = source.load(exact_angles).map_err(|e| spanned(&e, span))?;
     let Some(link) = floating else { return Ok(tree) };
-    let clash = if tree.link_id(link).is_some() {
-        Some(format!("link `{}`", link.as_ref()))
-    } else {
-        tree.joint_id(FLOATING_BASE_JOINT).map(|_| format!("joint `{FLOATING_BASE_JOINT}`"))
-    };
-    if let Some(clash) = clash {
-        return Err(Error::custom(format!(
-            "{}: `floating_base` adds a root link `{}` and a floating joint `{FLOATING_BASE_JOINT}`, but the description \
-             already has a {clash} (name the new root link: `floating_base = \"...\"`)",
-            source.label,
-            link.as_ref()
-        ))
-        .with_span(&link.span()));
+    if let Some(fault) = floating_base_clash(&tree, link.as_ref()) {
+        return Err(Error::custom(format!("{}: {fault}", source.label)).with_span(&link.span()));
     }
     source.load_with_floating_base(exact_angles, Some(link.as_ref())).map_err(|e| spanned(&e, span))
 }
@@ -156,8 +122,14 @@ mod tests {
         .unwrap();
         let options = KinematicsInput::from_derive_input(&input)?;
         let loaded = super::read(&options.source())?;
-        super::check_links(&loaded, &options.source())?;
-        Ok(loaded)
+        let mut errors = darling::Error::accumulator();
+        let checked = options.options(&mut errors);
+        if let Err(rejected) = checked.check(&loaded.tree) {
+            for fault in rejected.faults {
+                errors.push(darling::Error::custom(format!("{}: {fault}", loaded.written)));
+            }
+        }
+        errors.finish_with(loaded)
     }
 
     /// The number of angles the loaded tree recognised as exact.
