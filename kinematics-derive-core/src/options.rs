@@ -91,7 +91,7 @@ pub struct OutputKeys {
     pub ik: Option<SpannedValue<Override<IkKey>>>,
     /// `scalars(f64, f32)`.
     #[darling(default)]
-    pub scalars: Option<SpannedValue<PathList>>,
+    pub scalars: Option<ScalarList>,
     /// `trig = "std"`: call the platform's `sin_cos` (one call per angle) instead of ours (the
     /// default, `trig = "fast"`: every angle of a function in one call, side by side in SIMD lanes).
     #[darling(default)]
@@ -311,7 +311,7 @@ impl OutputKeys {
     pub fn scalars(&self, errors: &mut darling::error::Accumulator) -> Scalars {
         let Some(list) = &self.scalars else { return Scalars::default() };
         let mut scalars = Scalars { f64: false, f32: false };
-        for path in list.iter() {
+        for path in &list.paths {
             match path.get_ident().map(ToString::to_string).as_deref() {
                 Some("f64") => scalars.f64 = true,
                 Some("f32") => scalars.f32 = true,
@@ -344,13 +344,30 @@ impl KinematicsInput {
         let span = match key {
             OptionKey::Jacobians => output.jacobians.is_present().then(|| output.jacobians.span()),
             OptionKey::Ik => output.ik.as_ref().map(SpannedValue::span),
-            OptionKey::Scalars => output.scalars.as_ref().map(SpannedValue::span),
+            OptionKey::Scalars => output.scalars.as_ref().map(|list| list.span),
             OptionKey::Trig => output.trig.as_ref().map(SpannedValue::span),
             // A bare word has no span of its own.
             OptionKey::Positions => None,
             source => self.keys.span_of(source),
         };
         span.unwrap_or_else(|| self.ident.span())
+    }
+}
+
+/// `scalars(f64, f32)`: the paths listed, and where the key is (darling's span of a list is the
+/// macro's call site, so an empty list's fault would point at the derive).
+#[derive(Debug, Clone)]
+pub struct ScalarList {
+    /// The entries.
+    pub paths: Vec<syn::Path>,
+    /// The key's own span.
+    pub span: proc_macro2::Span,
+}
+
+impl FromMeta for ScalarList {
+    fn from_meta(item: &syn::Meta) -> darling::Result<Self> {
+        let paths = PathList::from_meta(item)?;
+        Ok(ScalarList { paths: paths.to_vec(), span: syn::spanned::Spanned::span(item.path()) })
     }
 }
 

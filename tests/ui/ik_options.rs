@@ -15,4 +15,9 @@ struct UnknownKind;
 #[kinematics(urdf = "../../../../robots/iiwa14.urdf", tip = "iiwa_link_ee", ik(free = "iiwa_joint_9"))]
 struct NoSuchJoint;
 
+// A misspelt kind: the kinds, and the one meant.
+#[derive(Kinematics)]
+#[kinematics(urdf = "../../../../robots/ur5.urdf", tip = "tool0", ik = "numerc")]
+struct MisspeltKind;
+
 fn main() {}
