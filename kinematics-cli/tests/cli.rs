@@ -315,9 +315,19 @@ fn generate_lists_the_links_asked_for() {
     assert_eq!(out, expected);
     assert!(out.contains(r#"pub const LINK_NAMES: [&'static str; 2] = ["r_sole", "l_sole"];"#));
     let message = fails(&["generate", "robots/humanoid.urdf", "--links", "r_sole,l_sol"]);
-    assert_eq!(message, "error: robots/humanoid.urdf: listed link `l_sol` does not exist; did you mean `l_sole`?");
+    assert_eq!(
+        message,
+        "error: robots/humanoid.urdf: `--links`: listed link `l_sol` does not exist; did you mean `l_sole`?"
+    );
     let message = fails(&["generate", "robots/humanoid.urdf", "--links", "r_sole,r_sole"]);
-    assert_eq!(message, "error: robots/humanoid.urdf: link `r_sole` is listed twice in `links`");
+    assert_eq!(message, "error: robots/humanoid.urdf: `--links`: link `r_sole` is listed twice in `links`");
+    // Every fault at once, each naming its flag.
+    let message = fails(&["generate", "robots/humanoid.urdf", "--links", "r_sole,r_sole", "--tip", "l_sol", "--jacobians"]);
+    assert_eq!(
+        message,
+        "error: robots/humanoid.urdf: `--tip`: tip link `l_sol` does not exist; did you mean `l_sole`?; `--links`: link \
+         `r_sole` is listed twice in `links`"
+    );
 }
 
 #[test]
@@ -331,7 +341,7 @@ fn generate_writes_a_file_atomically() {
     // A failing run leaves the old file as it was and nothing beside it.
     std::fs::write(&path, "old").unwrap();
     let message = fails(&["generate", "robots/ur5.urdf", "--tip", "tool9", "-o", target]);
-    assert_eq!(message, "error: robots/ur5.urdf: tip link `tool9` does not exist; did you mean `tool0`?");
+    assert_eq!(message, "error: robots/ur5.urdf: `--tip`: tip link `tool9` does not exist; did you mean `tool0`?");
     assert_eq!(std::fs::read_to_string(&path).unwrap(), "old");
     assert_eq!(entries(&dir), ["fk.rs"]);
     // And creates none when there was none.
@@ -464,7 +474,11 @@ fn malformed_descriptions_are_named_with_the_fault() {
 fn unknown_links_are_named_with_a_suggestion() {
     let hint = "error: robots/ur5.urdf: tip link `tool9` does not exist; did you mean `tool0`?";
     assert_eq!(fails(&["expr", "robots/ur5.urdf", "--tip", "tool9"]), hint);
-    assert_eq!(fails(&["generate", "robots/ur5.urdf", "--tip", "tool9"]), hint);
+    // `generate` checks its options by the compiler's rules, each fault naming its flag.
+    assert_eq!(
+        fails(&["generate", "robots/ur5.urdf", "--tip", "tool9"]),
+        "error: robots/ur5.urdf: `--tip`: tip link `tool9` does not exist; did you mean `tool0`?"
+    );
     assert_eq!(
         fails(&["expr", "robots/ur5.urdf", "--base", "bse"]),
         "error: robots/ur5.urdf: base link `bse` does not exist; did you mean `base`?"
