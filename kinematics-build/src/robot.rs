@@ -47,7 +47,14 @@ pub struct Robot {
 
 impl Robot {
     fn new(path: PathBuf, kind: SourceKind) -> Self {
-        Robot { path, kind, dir: None, options: Options::default(), struct_name: None, crate_path: "::kinematics".to_owned() }
+        Robot {
+            path,
+            kind,
+            dir: None,
+            options: Options::default(),
+            struct_name: None,
+            crate_path: "::kinematics".to_owned(),
+        }
     }
 
     /// A URDF file, whatever its extension.
@@ -397,27 +404,31 @@ mod tests {
             robot().links(["tool0"]).links(["upper"]).generate().unwrap(),
             robot().links(["tool0", "upper"]).generate().unwrap()
         );
-        let message = fails(
-            &robot().links(["upper", "tool9"]),
-            |e| one_fault(e, ".links(..)", |f| matches!(f, FaultKind::UnknownLink(u) if u.role == "listed" && u.link == "tool9" && u.suggestion.as_deref() == Some("tool0"))),
-        );
+        let message = fails(&robot().links(["upper", "tool9"]), |e| {
+            one_fault(
+                e,
+                ".links(..)",
+                |f| matches!(f, FaultKind::UnknownLink(u) if u.role == "listed" && u.link == "tool9" && u.suggestion.as_deref() == Some("tool0")),
+            )
+        });
         assert_eq!(message, "arm.urdf: `.links(..)`: listed link `tool9` does not exist; did you mean `tool0`?");
-        let message = fails(
-            &robot().links(["tool0", "upper", "tool0"]),
-            |e| one_fault(e, ".links(..)", |f| matches!(f, FaultKind::DuplicateLink { link } if link == "tool0")),
-        );
+        let message = fails(&robot().links(["tool0", "upper", "tool0"]), |e| {
+            one_fault(e, ".links(..)", |f| matches!(f, FaultKind::DuplicateLink { link } if link == "tool0"))
+        });
         assert_eq!(message, "arm.urdf: `.links(..)`: link `tool0` is listed twice in `links`");
         // An empty list is what the user wrote, and lists nothing: refused, not every link.
-        let message =
-            fails(&robot().links(Vec::<String>::new()), |e| one_fault(e, ".links(..)", |f| *f == FaultKind::EmptyLinks));
+        let message = fails(&robot().links(Vec::<String>::new()), |e| {
+            one_fault(e, ".links(..)", |f| *f == FaultKind::EmptyLinks)
+        });
         assert_eq!(
             message,
             "arm.urdf: `.links(..)`: `links` lists no link: name at least one, or leave the option out for every link"
         );
         // Every fault at once, in the rules' order, each naming its call.
-        let message = fails(&robot().tip("tool9").links(["upper", "upper"]).jacobians().base("bse"), |e| {
-            matches!(e, BuildError::Options { faults, .. } if faults.len() == 3)
-        });
+        let message = fails(
+            &robot().tip("tool9").links(["upper", "upper"]).jacobians().base("bse"),
+            |e| matches!(e, BuildError::Options { faults, .. } if faults.len() == 3),
+        );
         assert_eq!(
             message,
             "arm.urdf: `.base(..)`: base link `bse` does not exist; `.tip(..)`: tip link `tool9` \

@@ -322,7 +322,8 @@ fn generate_lists_the_links_asked_for() {
     let message = fails(&["generate", "robots/humanoid.urdf", "--links", "r_sole,r_sole"]);
     assert_eq!(message, "error: robots/humanoid.urdf: `--links`: link `r_sole` is listed twice in `links`");
     // Every fault at once, each naming its flag.
-    let message = fails(&["generate", "robots/humanoid.urdf", "--links", "r_sole,r_sole", "--tip", "l_sol", "--jacobians"]);
+    let message =
+        fails(&["generate", "robots/humanoid.urdf", "--links", "r_sole,r_sole", "--tip", "l_sol", "--jacobians"]);
     assert_eq!(
         message,
         "error: robots/humanoid.urdf: `--tip`: tip link `l_sol` does not exist; did you mean `l_sole`?; `--links`: link \

@@ -321,7 +321,11 @@ fn links_unique(options: &Options) -> Vec<OptionFault> {
 /// Rule: `links`, when given, lists at least one link (an empty list would be a robot without
 /// link poses; leaving the option out means every link).
 fn links_not_empty(options: &Options) -> Option<OptionFault> {
-    options.links.as_ref().is_some_and(Vec::is_empty).then_some(OptionFault { key: OptionKey::Links, kind: FaultKind::EmptyLinks })
+    options
+        .links
+        .as_ref()
+        .is_some_and(Vec::is_empty)
+        .then_some(OptionFault { key: OptionKey::Links, kind: FaultKind::EmptyLinks })
 }
 
 /// Rule: `jacobians` needs a tip (the Jacobians are the tips').
@@ -368,7 +372,10 @@ pub fn floating_base_clash(plain: &KinematicTree, link: &str) -> Option<OptionFa
     } else {
         plain.joint_id(FLOATING_BASE_JOINT).map(|_| format!("joint `{FLOATING_BASE_JOINT}`"))?
     };
-    Some(OptionFault { key: OptionKey::FloatingBase, kind: FaultKind::FloatingBaseClash { link: link.to_owned(), clash } })
+    Some(OptionFault {
+        key: OptionKey::FloatingBase,
+        kind: FaultKind::FloatingBaseClash { link: link.to_owned(), clash },
+    })
 }
 
 /// An option whose value is one of a few words (`trig = "std"`, `ik = "numeric"`): the words, what

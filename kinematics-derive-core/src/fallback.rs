@@ -99,7 +99,8 @@ impl Implied {
                             .unwrap_or_default(),
                         _ => Vec::new(),
                     };
-                    options.scalars = Scalars { f64: words.iter().any(|w| w == "f64"), f32: words.iter().any(|w| w == "f32") };
+                    options.scalars =
+                        Scalars { f64: words.iter().any(|w| w == "f64"), f32: words.iter().any(|w| w == "f32") };
                 }
             }
         }
@@ -222,7 +223,9 @@ pub fn stub(input: &syn::DeriveInput, options: Option<&KinematicsInput>, implied
     if let Some(shape) = IkShape::implied(&implied.options, implied.ik_plan.as_deref()) {
         for item in render.ik_items(&shape) {
             functions.push(match item {
-                IkItem::Family => quote!(pub const IK_FAMILY: &'static str = "";),
+                IkItem::Family => quote!(
+                    pub const IK_FAMILY: &'static str = "";
+                ),
                 IkItem::Arm(ty) => quote!(pub const IK_ARM: #ty = ::core::panic!(#message);),
                 IkItem::Function(_, signature) => {
                     let sig = signature.tokens();
@@ -478,7 +481,10 @@ mod tests {
                                 where_clause: quote!(),
                             };
                             let emitted = emit_robot(&quote!(Robot), &spec).unwrap();
-                            let input: syn::DeriveInput = syn::parse2(quote!(struct Robot;)).unwrap();
+                            let input: syn::DeriveInput = syn::parse2(quote!(
+                                struct Robot;
+                            ))
+                            .unwrap();
                             let implied = Implied::from_options(options.clone()).with_robot(&tree).with_plan(plan);
                             let stubbed = stub(&input, None, &implied);
                             assert_eq!(surface(stubbed), surface(emitted), "{file}: {options:?}");

@@ -89,7 +89,10 @@ fn report(
 /// Loads the description, checks the options against it (the compiler's rules) and emits the
 /// robot, gathering every fault in `errors` (the load errors and the option faults side by side):
 /// the robot if there was none, and what the stub needs otherwise.
-fn expand_options(options: &KinematicsInput, errors: &mut darling::error::Accumulator) -> (Implied, Option<TokenStream>) {
+fn expand_options(
+    options: &KinematicsInput,
+    errors: &mut darling::error::Accumulator,
+) -> (Implied, Option<TokenStream>) {
     let loaded = errors.handle(source::read(&options.source()));
     let robot_options: Options = options.options(errors);
     let implied = Implied::from_options(robot_options.clone());

@@ -130,8 +130,12 @@ impl<C: Choice> FromMeta for Word<C> {
     fn from_value(value: &syn::Lit) -> darling::Result<Self> {
         match value {
             syn::Lit::Str(word) => choose(&word.value()).map(Word).map_err(|e| Error::custom(e).with_span(word)),
-            other => Err(Error::custom(format!("expected a word in quotes, like `{} = \"{}\"`", C::KEY.name(), C::CHOICES[0].0))
-                .with_span(other)),
+            other => Err(Error::custom(format!(
+                "expected a word in quotes, like `{} = \"{}\"`",
+                C::KEY.name(),
+                C::CHOICES[0].0
+            ))
+            .with_span(other)),
         }
     }
 }
@@ -300,7 +304,9 @@ impl OutputKeys {
     pub fn ik_mode(&self) -> IkMode {
         let Some(key) = &self.ik else { return IkMode::Off };
         match key.as_ref() {
-            Override::Inherit | Override::Explicit(IkKey::Kind(IkKind::ClosedForm)) => IkMode::ClosedForm { free: None },
+            Override::Inherit | Override::Explicit(IkKey::Kind(IkKind::ClosedForm)) => {
+                IkMode::ClosedForm { free: None }
+            }
             Override::Explicit(IkKey::Free(joint)) => IkMode::ClosedForm { free: Some(joint.clone()) },
             Override::Explicit(IkKey::Kind(IkKind::Numeric)) => IkMode::Numeric,
         }

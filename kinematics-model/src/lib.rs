@@ -51,8 +51,8 @@ pub use error::{Element, LoadError, LoadErrorKind, ModelError, ModelErrors, Seve
 pub use exactness::{ExactAngles, RecognisedAngle};
 pub use frame::JacobianFrame;
 pub use joint::{Joint, JointKind, JointMotion, Limits, Link};
-pub use suggest::closest;
 pub use source::{Source, SourceFormat, SourceKind, parse_source, parse_source_floating, parse_source_with};
+pub use suggest::closest;
 pub use transform::{Axis, Elementary, FixedTransform};
 pub use tree::{Chain, JointId, KinematicTree, LinkId};
 /// The urdf-rs this crate converts from (feature `urdf-rs`: [`Description::from_urdf_rs`],

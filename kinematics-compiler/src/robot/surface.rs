@@ -551,12 +551,9 @@ impl IkShape {
             IkMode::ClosedForm { free } => Some(IkShape {
                 closed_form: Some(match plan {
                     Some(plan) => ClosedFormShape::of(plan, crate::ik::IkBody::of(plan).is_some()),
-                    None => ClosedFormShape {
-                        arm: None,
-                        capacity: UNKNOWN_CAPACITY,
-                        free: free.is_some(),
-                        branch: false,
-                    },
+                    None => {
+                        ClosedFormShape { arm: None, capacity: UNKNOWN_CAPACITY, free: free.is_some(), branch: false }
+                    }
                 }),
             }),
         }
