@@ -1,5 +1,6 @@
 //! The unvalidated description: what a URDF document or DH table says, before any rule is checked.
 
+use crate::collision::Collision;
 use crate::error::Element;
 use crate::transform::FixedTransform;
 
@@ -15,6 +16,19 @@ pub struct Description {
     pub links: Vec<String>,
     /// Joints, in file order.
     pub joints: Vec<JointDescription>,
+    /// Links' collision geometry, in file order.
+    pub collisions: Vec<CollisionDescription>,
+}
+
+/// One `<collision>` element as the description states it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CollisionDescription {
+    /// The link it belongs to.
+    pub link: String,
+    /// The element's line in its file, when read from one (for messages).
+    pub line: Option<usize>,
+    /// The geometry.
+    pub collision: Collision,
 }
 
 /// The name of the floating joint [`Description::with_floating_base`] adds (Pinocchio's name for

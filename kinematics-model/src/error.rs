@@ -93,6 +93,17 @@ pub enum ModelError {
         /// The joint.
         element: Element,
     },
+    /// Collision geometry whose sizes break its shape's rule (a negative or non-finite radius, a
+    /// zero box).
+    #[error("link `{link}`{}: <collision>: {fault}", line.map(|l| format!(" (line {l})")).unwrap_or_default())]
+    Geometry {
+        /// The link.
+        link: String,
+        /// The element's line, when read from a file.
+        line: Option<usize>,
+        /// What is wrong.
+        fault: String,
+    },
     /// A NaN or infinity where a finite number is needed.
     #[error("{element}: {field} is not a finite number")]
     NonFinite {

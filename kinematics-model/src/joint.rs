@@ -1,5 +1,6 @@
 //! Links and joints of a validated tree.
 
+use crate::collision::Collision;
 use crate::transform::FixedTransform;
 use crate::tree::{JointId, LinkId};
 
@@ -12,6 +13,8 @@ pub struct Link {
     pub parent_joint: Option<JointId>,
     /// Joints whose parent this link is, in description order.
     pub child_joints: Vec<JointId>,
+    /// Its collision geometry (`<collision>` elements), in description order.
+    pub collisions: Vec<Collision>,
 }
 
 /// How a joint moves.

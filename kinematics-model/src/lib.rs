@@ -27,6 +27,7 @@
 #![cfg_attr(docsrs, feature(doc_cfg))]
 
 mod angle;
+pub mod collision;
 mod description;
 pub mod dh;
 mod error;
@@ -34,6 +35,7 @@ pub mod exactness;
 mod frame;
 mod joint;
 mod source;
+pub mod srdf;
 mod suggest;
 pub mod synthetic;
 mod transform;
@@ -45,7 +47,8 @@ mod validate;
 
 pub use angle::{Angle, PiRational};
 pub use description::{
-    Description, FLOATING_BASE_JOINT, JointDescription, JointTypeDescription, LimitsDescription, MimicDescription,
+    CollisionDescription, Description, FLOATING_BASE_JOINT, JointDescription, JointTypeDescription, LimitsDescription,
+    MimicDescription,
 };
 pub use error::{Element, LoadError, LoadErrorKind, ModelError, ModelErrors, SeveralValues, UnknownLink};
 pub use exactness::{ExactAngles, RecognisedAngle};

@@ -35,6 +35,8 @@ pub struct KinematicTree {
     pub(crate) dof_joints: Vec<JointId>,
     pub(crate) exact_angles: ExactAngles,
     pub(crate) recognised: Vec<RecognisedAngle>,
+    /// Fixed joints whose `<mimic>` of another fixed joint was read and had nothing to do.
+    pub(crate) vacuous_mimics: Vec<String>,
     /// Links by name, for lookups in O(log n).
     link_index: BTreeMap<String, LinkId>,
     /// Joints by name.
@@ -72,6 +74,7 @@ impl KinematicTree {
             dof_joints,
             exact_angles: ExactAngles::Off,
             recognised: Vec::new(),
+            vacuous_mimics: Vec::new(),
             link_index,
             joint_index,
             depth,
@@ -104,6 +107,13 @@ impl KinematicTree {
     /// Every angle the exactness policy changed, in description order.
     pub fn recognised_angles(&self) -> &[RecognisedAngle] {
         &self.recognised
+    }
+
+    /// Fixed joints whose `<mimic>` names another fixed joint: both say the joint does not move,
+    /// so the mimic has nothing to do (urdfdom reads such files, VAMP's Panda has one); listed
+    /// here rather than applied or refused. A fixed joint that mimics a moving one is refused.
+    pub fn vacuous_mimics(&self) -> &[String] {
+        &self.vacuous_mimics
     }
 
     /// Robot name.

@@ -4,7 +4,10 @@
 //!
 //! - the root element is `<robot name>`; its `<link name>` and `<joint>` children are read, every
 //!   other element (materials, `<transmission>`, `<gazebo>`, xacro leftovers) is ignored, as are a
-//!   link's meshes and inertials;
+//!   link's `<visual>` and `<inertial>`;
+//! - a link's `<collision>` elements are read: an `<origin xyz rpy>` and a `<geometry>` with one
+//!   `<box size>`, `<cylinder radius length>`, `<sphere radius>`, `<capsule radius length>` or
+//!   `<mesh filename scale>` (the mesh named, never opened);
 //! - a joint needs `name`, `type` (`revolute`, `continuous`, `prismatic`, `fixed`, `floating`,
 //!   `planar`), `<parent link>` and `<child link>`;
 //! - `<origin xyz rpy>` defaults to zeros, `<axis xyz>` to `1 0 0`; a joint origin's
@@ -25,7 +28,10 @@
 use roxmltree::{Document, Node};
 
 use crate::angle::Angle;
-use crate::description::{Description, JointDescription, JointTypeDescription, LimitsDescription, MimicDescription};
+use crate::collision::{Collision, Shape};
+use crate::description::{
+    CollisionDescription, Description, JointDescription, JointTypeDescription, LimitsDescription, MimicDescription,
+};
 use crate::error::{Element, LoadErrorKind};
 use crate::transform::FixedTransform;
 
@@ -44,14 +50,91 @@ pub fn parse_urdf(text: &str) -> Result<Description, LoadErrorKind> {
     let name = at.required(robot, "name")?.to_owned();
     let mut links = Vec::new();
     let mut joints = Vec::new();
+    let mut collisions = Vec::new();
     for child in robot.children().filter(|c| c.is_element() && c.tag_name().namespace() == namespace) {
         match child.tag_name().name() {
-            "link" => links.push(at.required(child, "name")?.to_owned()),
+            "link" => {
+                let link = at.required(child, "name")?.to_owned();
+                collisions.extend(link_collisions(&doc, child, &link)?);
+                links.push(link);
+            }
             "joint" => joints.push(joint(&doc, child)?),
             _ => {}
         }
     }
-    Ok(Description { name, links, joints })
+    Ok(Description { name, links, joints, collisions })
+}
+
+/// A `<link>`'s `<collision>` elements: each an `<origin>` (zeros by default) and a `<geometry>`
+/// holding one shape (`box`, `cylinder`, `sphere`, `capsule`, `mesh`). Sizes are checked by
+/// validation, which names the link and the line.
+fn link_collisions(
+    doc: &Document<'_>,
+    node: Node<'_, '_>,
+    link: &str,
+) -> Result<Vec<CollisionDescription>, LoadErrorKind> {
+    let at = At { doc, element: Some(Element::Link(link.to_owned())) };
+    let namespace = node.tag_name().namespace();
+    let mut out = Vec::new();
+    for element in node
+        .children()
+        .filter(|c| c.is_element() && c.tag_name().namespace() == namespace && c.tag_name().name() == "collision")
+    {
+        let start = element.range().start;
+        let origin = match at.single(element, "origin")? {
+            Some(origin) => {
+                if let Some(byte) = attribute_start(origin, "quat_xyzw") {
+                    return Err(at.error(
+                        byte,
+                        "<origin quat_xyzw> (URDF 1.1) is not read: write the rotation as `rpy`".to_owned(),
+                    ));
+                }
+                let (xyz, rpy) =
+                    (at.vector(origin, "xyz")?.unwrap_or([0.0; 3]), at.vector(origin, "rpy")?.unwrap_or([0.0; 3]));
+                FixedTransform::from_xyz_rpy(xyz, rpy.map(Angle::Radians))
+            }
+            None => FixedTransform::identity(),
+        };
+        let Some(geometry) = at.single(element, "geometry")? else {
+            return Err(at.error(start, "<collision> needs a <geometry> element".to_owned()));
+        };
+        let mut shapes = geometry.children().filter(|c| c.is_element() && c.tag_name().namespace() == namespace);
+        let (Some(shape), None) = (shapes.next(), shapes.next()) else {
+            return Err(at.error(
+                geometry.range().start,
+                "<geometry> needs exactly one of <box>, <cylinder>, <sphere>, <capsule>, <mesh>".to_owned(),
+            ));
+        };
+        let shape = match shape.tag_name().name() {
+            "sphere" => Shape::Sphere { radius: at.required_number(shape, "radius")? },
+            "box" => Shape::Box { size: at.vector(shape, "size")?.ok_or_else(|| at.missing(shape, "size"))? },
+            "cylinder" => Shape::Cylinder {
+                radius: at.required_number(shape, "radius")?,
+                length: at.required_number(shape, "length")?,
+            },
+            "capsule" => Shape::Capsule {
+                radius: at.required_number(shape, "radius")?,
+                length: at.required_number(shape, "length")?,
+            },
+            "mesh" => Shape::Mesh {
+                filename: at.required(shape, "filename")?.to_owned(),
+                scale: at.vector(shape, "scale")?.unwrap_or([1.0; 3]),
+            },
+            other => {
+                return Err(at.error(
+                    shape.range().start,
+                    format!("unknown geometry <{other}> (expected box, cylinder, sphere, capsule or mesh)"),
+                ));
+            }
+        };
+        let line = row(doc.text_pos_at(start));
+        out.push(CollisionDescription {
+            link: link.to_owned(),
+            line: Some(line),
+            collision: Collision { origin, shape },
+        });
+    }
+    Ok(out)
 }
 
 /// One `<joint>`.
@@ -167,13 +250,13 @@ impl UrdfJoint {
 }
 
 /// Where errors are reported: the document (for lines) and the element being read.
-struct At<'d, 'input> {
-    doc: &'d Document<'input>,
-    element: Option<Element>,
+pub(crate) struct At<'d, 'input> {
+    pub(crate) doc: &'d Document<'input>,
+    pub(crate) element: Option<Element>,
 }
 
 impl<'input> At<'_, 'input> {
-    fn error(&self, byte: usize, message: String) -> LoadErrorKind {
+    pub(crate) fn error(&self, byte: usize, message: String) -> LoadErrorKind {
         let line = row(self.doc.text_pos_at(byte));
         LoadErrorKind::Located { element: self.element.clone(), line, message }
     }
@@ -192,7 +275,7 @@ impl<'input> At<'_, 'input> {
     }
 
     /// The attribute `name` of `node`, which URDF requires.
-    fn required<'a>(&self, node: Node<'a, 'input>, name: &str) -> Result<&'a str, LoadErrorKind> {
+    pub(crate) fn required<'a>(&self, node: Node<'a, 'input>, name: &str) -> Result<&'a str, LoadErrorKind> {
         node.attribute(name).ok_or_else(|| self.missing(node, name))
     }
 
@@ -246,7 +329,7 @@ fn attribute_start(node: Node<'_, '_>, name: &str) -> Option<usize> {
 
 /// Malformed XML: the parser's message, at the parser's line (the last line when the text ends
 /// too early, where the parser has no position to give).
-fn xml_error(text: &str, error: &roxmltree::Error) -> LoadErrorKind {
+pub(crate) fn xml_error(text: &str, error: &roxmltree::Error) -> LoadErrorKind {
     let last_line = text.lines().count().max(1);
     let (line, message) = match error {
         roxmltree::Error::NoRootNode if text.trim().is_empty() => (None, "the file is empty".to_owned()),
@@ -283,6 +366,6 @@ fn starts_element(text: &str, pos: roxmltree::TextPos) -> bool {
 }
 
 /// The 1-based line of a parser position (`u32` to `usize` loses nothing where `std` runs).
-fn row(pos: roxmltree::TextPos) -> usize {
+pub(crate) fn row(pos: roxmltree::TextPos) -> usize {
     pos.row as usize
 }

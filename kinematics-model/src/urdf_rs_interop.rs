@@ -13,9 +13,14 @@
 
 use urdf_rs::{JointLimit, JointType};
 
-use crate::description::{Description, JointDescription, JointTypeDescription, LimitsDescription, MimicDescription};
+use crate::angle::Angle;
+use crate::collision::{Collision, Shape};
+use crate::description::{
+    CollisionDescription, Description, JointDescription, JointTypeDescription, LimitsDescription, MimicDescription,
+};
 use crate::error::{Element, LoadErrorKind};
 use crate::exactness::ExactAngles;
+use crate::transform::FixedTransform;
 use crate::tree::KinematicTree;
 use crate::urdf::{UrdfJoint, needs_limit};
 
@@ -62,8 +67,33 @@ impl Description {
             name: robot.name.clone(),
             links: robot.links.iter().map(|l| l.name.clone()).collect(),
             joints: robot.joints.iter().map(joint).collect::<Result<_, _>>()?,
+            collisions: robot.links.iter().flat_map(collisions).collect(),
         })
     }
+}
+
+/// A link's collision geometry as the built-in reader gives it (no line: urdf-rs keeps none).
+fn collisions(link: &urdf_rs::Link) -> Vec<CollisionDescription> {
+    link.collision
+        .iter()
+        .map(|c| {
+            let (xyz, rpy) = (c.origin.xyz.0, c.origin.rpy.0);
+            let shape = match &c.geometry {
+                urdf_rs::Geometry::Sphere { radius } => Shape::Sphere { radius: *radius },
+                urdf_rs::Geometry::Box { size } => Shape::Box { size: size.0 },
+                urdf_rs::Geometry::Cylinder { radius, length } => Shape::Cylinder { radius: *radius, length: *length },
+                urdf_rs::Geometry::Capsule { radius, length } => Shape::Capsule { radius: *radius, length: *length },
+                urdf_rs::Geometry::Mesh { filename, scale } => {
+                    Shape::Mesh { filename: filename.clone(), scale: scale.map_or([1.0; 3], |s| s.0) }
+                }
+            };
+            CollisionDescription {
+                link: link.name.clone(),
+                line: None,
+                collision: Collision { origin: FixedTransform::from_xyz_rpy(xyz, rpy.map(Angle::Radians)), shape },
+            }
+        })
+        .collect()
 }
 
 impl KinematicTree {

@@ -10,13 +10,44 @@
 
 use std::collections::{BTreeMap, BTreeSet};
 
-use crate::description::{Description, JointDescription, JointTypeDescription};
+use crate::description::{CollisionDescription, Description, JointDescription, JointTypeDescription};
 use crate::error::{ModelError, ModelErrors, SeveralValues};
 use crate::joint::{Joint, JointKind, JointMotion, Limits, Link, unit_axis};
+use crate::transform::Elementary;
 use crate::tree::{JointId, KinematicTree, LinkId};
 
 /// Checks `d` and builds the tree.
 pub(crate) fn build(d: &Description) -> Result<KinematicTree, ModelErrors> {
+    let (owned, vacuous) = without_vacuous_mimics(d);
+    let d = owned.as_ref().unwrap_or(d);
+    let mut tree = build_checked(d)?;
+    tree.vacuous_mimics = vacuous;
+    Ok(tree)
+}
+
+/// The description without the `<mimic>` of each fixed joint whose source is a fixed joint too
+/// (both say it does not move), and those joints' names; `None` when there is none.
+fn without_vacuous_mimics(d: &Description) -> (Option<Description>, Vec<String>) {
+    let fixed: BTreeSet<&str> =
+        d.joints.iter().filter(|j| j.kind == JointTypeDescription::Fixed).map(|j| j.name.as_str()).collect();
+    let vacuous = |j: &JointDescription| {
+        j.kind == JointTypeDescription::Fixed && j.mimic.as_ref().is_some_and(|m| fixed.contains(m.joint.as_str()))
+    };
+    let names: Vec<String> = d.joints.iter().filter(|j| vacuous(j)).map(|j| j.name.clone()).collect();
+    if names.is_empty() {
+        return (None, names);
+    }
+    let mut owned = d.clone();
+    for j in &mut owned.joints {
+        if vacuous(j) {
+            j.mimic = None;
+        }
+    }
+    (Some(owned), names)
+}
+
+/// [`build`] once vacuous mimics are set aside: every rule, then the tree.
+fn build_checked(d: &Description) -> Result<KinematicTree, ModelErrors> {
     let mut errors = Vec::new();
     check_not_empty(d, &mut errors);
     check_unique_names(d, &mut errors);
@@ -25,6 +56,10 @@ pub(crate) fn build(d: &Description) -> Result<KinematicTree, ModelErrors> {
         check_finite(joint, &mut errors);
         check_axis(joint, &mut errors);
         check_limits(joint, &mut errors);
+    }
+    let links: BTreeSet<&str> = d.links.iter().map(String::as_str).collect();
+    for collision in &d.collisions {
+        check_geometry(collision, &links, &mut errors);
     }
     let names_ok = errors.is_empty();
     check_links_exist(d, &mut errors);
@@ -48,6 +83,23 @@ pub(crate) fn build(d: &Description) -> Result<KinematicTree, ModelErrors> {
     match ModelErrors::from_vec(errors) {
         Some(errors) => Err(errors),
         None => Ok(tree),
+    }
+}
+
+/// Rule: collision geometry has finite, positive sizes (a capsule's length may be zero) and a
+/// finite origin.
+fn check_geometry(c: &CollisionDescription, links: &BTreeSet<&str>, errors: &mut Vec<ModelError>) {
+    if !links.contains(c.link.as_str()) {
+        errors.push(ModelError::Geometry { link: c.link.clone(), line: c.line, fault: "no such link".to_owned() });
+        return;
+    }
+    let origin_finite = c.collision.origin.steps().iter().all(|step| match step {
+        Elementary::Translation(v) => v.iter().all(|x| x.is_finite()),
+        Elementary::Rotation(_, angle) => angle.radians().is_finite(),
+    });
+    let fault = c.collision.shape.fault().or_else(|| (!origin_finite).then(|| "<origin> is not finite".to_owned()));
+    if let Some(fault) = fault {
+        errors.push(ModelError::Geometry { link: c.link.clone(), line: c.line, fault });
     }
 }
 
@@ -132,7 +184,8 @@ fn check_axis(j: &JointDescription, errors: &mut Vec<ModelError>) {
     }
 }
 
-/// Rule: a lower limit is not above the upper one; a fixed joint does not mimic.
+/// Rule: a lower limit is not above the upper one; a fixed joint does not mimic (a moving joint:
+/// the mimic of a fixed one was set aside before the rules).
 fn check_limits(j: &JointDescription, errors: &mut Vec<ModelError>) {
     if let Some(l) = &j.limits
         && l.lower > l.upper
@@ -348,13 +401,19 @@ fn assemble(d: &Description, root: usize) -> KinematicTree {
     for j in &d.joints {
         below.entry(j.parent.as_str()).or_default().push(j);
     }
+    // Each link's collision geometry, in description order: one pass.
+    let mut geometry: BTreeMap<&str, Vec<crate::collision::Collision>> = BTreeMap::new();
+    for c in &d.collisions {
+        geometry.entry(c.link.as_str()).or_default().push(c.collision.clone());
+    }
     // Depth-first pre-order from the root, children in description order; a joint takes its place
     // when its child link is visited, so joints follow the same pre-order as links.
     let mut links: Vec<Link> = Vec::new();
     let mut order: Vec<&JointDescription> = Vec::new();
     let mut stack: Vec<(&str, Option<&JointDescription>)> = vec![(d.links[root].as_str(), None)];
     while let Some((name, via)) = stack.pop() {
-        links.push(Link { name: name.to_owned(), parent_joint: None, child_joints: Vec::new() });
+        let collisions = geometry.remove(name).unwrap_or_default();
+        links.push(Link { name: name.to_owned(), parent_joint: None, child_joints: Vec::new(), collisions });
         order.extend(via);
         for j in below.get(name).into_iter().flatten().rev() {
             stack.push((j.child.as_str(), Some(j)));

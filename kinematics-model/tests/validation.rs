@@ -129,6 +129,63 @@ fn mimic_of_fixed_joint() {
 }
 
 #[test]
+fn a_fixed_joint_mimicking_a_fixed_one_is_listed_and_one_mimicking_a_moving_one_refused() {
+    // VAMP's Panda: both fingers fixed, the second with a <mimic> of the first.
+    let text = urdf(
+        &["a", "b", "c"],
+        &[joint("finger1", "fixed", "a", "b", ""), joint("finger2", "fixed", "a", "c", "<mimic joint=\"finger1\"/>")]
+            .concat(),
+    );
+    let tree = parse_source("ok.urdf", &text).unwrap();
+    assert_eq!(tree.vacuous_mimics(), ["finger2"]);
+    assert_eq!(tree.dof(), 0);
+    let text = urdf(
+        &["a", "b", "c"],
+        &[
+            joint("finger1", "revolute", "a", "b", ""),
+            joint("finger2", "fixed", "a", "c", "<mimic joint=\"finger1\"/>"),
+        ]
+        .concat(),
+    );
+    check(&text, &[&["joint `finger2`", "a fixed joint cannot mimic"]]);
+}
+
+#[test]
+fn bad_collision_geometry_names_the_link_and_the_line() {
+    let geometry = |shape: &str| {
+        format!(
+            "<robot name=\"r\">\n<link name=\"a\">\n<collision><geometry>{shape}</geometry></collision>\n</link>\n</robot>"
+        )
+    };
+    for (shape, fault) in [
+        ("<sphere radius=\"-0.1\"/>", "<sphere radius> is -0.1"),
+        ("<sphere radius=\"nan\"/>", "<sphere radius> is NaN"),
+        ("<box size=\"0.1 0 0.1\"/>", "<box size y> is 0"),
+        ("<cylinder radius=\"0.1\" length=\"inf\"/>", "<cylinder length> is inf"),
+        ("<capsule radius=\"0\" length=\"0.1\"/>", "<capsule radius> is 0"),
+    ] {
+        check(&geometry(shape), &[&["link `a` (line 3): <collision>: ", fault]]);
+    }
+    // Malformed elements are syntax errors with their line.
+    for (shape, fault) in [
+        ("", "<geometry> needs exactly one of"),
+        ("<sphere/>", "<sphere> needs a `radius` attribute"),
+        ("<cone radius=\"1\"/>", "unknown geometry <cone>"),
+    ] {
+        let message = load_err("bad.urdf", &geometry(shape)).to_string();
+        assert!(message.starts_with("bad.urdf: link `a` (line 3): ") && message.contains(fault), "{message}");
+    }
+    // Good geometry is kept, in order, on its link.
+    let text = geometry("<mesh filename=\"a.stl\"/>").replace(
+        "</collision>",
+        "</collision><collision><origin xyz=\"0 0 1\"/><geometry><capsule radius=\"0.1\" length=\"0\"/></geometry></collision>",
+    );
+    let tree = parse_source("ok.urdf", &text).unwrap();
+    let shapes: Vec<&str> = tree.link(tree.root()).collisions.iter().map(|c| c.shape.name()).collect();
+    assert_eq!(shapes, ["mesh", "capsule"]);
+}
+
+#[test]
 fn mimic_loop() {
     let text = urdf(
         &["a", "b", "c", "d"],
