@@ -3,7 +3,9 @@
 use std::path::{Path, PathBuf};
 
 use kinematics_compiler::emit::Trig;
-use kinematics_compiler::options::{IkMode, OptionFault, OptionKey, Options, floating_base_clash};
+use kinematics_compiler::options::{
+    CollisionOptions, IkMode, Meshes, OptionFault, OptionKey, Options, floating_base_clash,
+};
 use kinematics_model::{ExactAngles, SourceKind};
 
 use crate::emit::{Emit, default_struct_name, emit_source};
@@ -28,6 +30,7 @@ use crate::write::write_atomic;
 /// | `crate = "path"` | [`Robot::crate_path`] |
 /// | `exact_angles = false` | [`Robot::exact_angles`] |
 /// | `trig = "std"` | [`Robot::trig`] |
+/// | `collision` / `collision(sphere_cover = 0.02, meshes = "skip")` | [`Robot::collision`] / [`Robot::sphere_cover`], [`Robot::skip_meshes`] |
 ///
 /// plus [`Robot::struct_name`] (default: the robot's name in UpperCamelCase, see
 /// [`default_struct_name`]). Paths are relative to `CARGO_MANIFEST_DIR` (the directory of the
@@ -195,6 +198,26 @@ impl Robot {
         self
     }
 
+    /// Also generate collision checking from the links' `<collision>` geometry, covered by
+    /// spheres (`sphere_centers`, `SPHERE_RADII`, `SPHERE_LINKS`). A mesh is refused unless
+    /// [`Robot::skip_meshes`].
+    pub fn collision(mut self) -> Self {
+        self.options.collision.get_or_insert_with(CollisionOptions::default);
+        self
+    }
+
+    /// [`Robot::collision`] with the sphere cover's largest overshoot `metres` (default 1 cm).
+    pub fn sphere_cover(mut self, metres: f64) -> Self {
+        self.options.collision.get_or_insert_with(CollisionOptions::default).sphere_cover = metres;
+        self
+    }
+
+    /// [`Robot::collision`] leaving meshes out (they are refused otherwise).
+    pub fn skip_meshes(mut self) -> Self {
+        self.options.collision.get_or_insert_with(CollisionOptions::default).meshes = Meshes::Skip;
+        self
+    }
+
     /// The options the calls so far have set.
     pub fn options(&self) -> &Options {
         &self.options
@@ -245,6 +268,7 @@ impl Robot {
             OptionKey::Scalars => ".f32()",
             OptionKey::Trig => ".trig(..)",
             OptionKey::ExactAngles => ".exact_angles(..)",
+            OptionKey::Collision => ".collision()",
         }
     }
 

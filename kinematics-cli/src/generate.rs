@@ -48,6 +48,15 @@ pub struct Args {
     /// Also generate `f32` functions.
     #[arg(long)]
     f32: bool,
+    /// Also generate collision checking from the links' `<collision>` geometry, as spheres.
+    #[arg(long)]
+    collision: bool,
+    /// With `--collision`, the sphere cover's largest overshoot in metres (default 0.01).
+    #[arg(long, requires = "collision")]
+    sphere_cover: Option<f64>,
+    /// With `--collision`, leave meshes out (they are refused otherwise).
+    #[arg(long, requires = "collision")]
+    skip_meshes: bool,
     /// Which sine and cosine the code calls: `fast` (ours, every angle in one call) or `std` (the
     /// platform's, one call per angle).
     #[arg(long, value_enum, default_value_t = TrigArg::Fast)]
@@ -106,6 +115,15 @@ pub fn builder(args: &Args) -> Result<Robot, CliError> {
     if args.f32 {
         robot = robot.f32();
     }
+    if args.collision {
+        robot = robot.collision();
+    }
+    if let Some(metres) = args.sphere_cover {
+        robot = robot.sphere_cover(metres);
+    }
+    if args.skip_meshes {
+        robot = robot.skip_meshes();
+    }
     Ok(robot)
 }
 
@@ -144,6 +162,7 @@ fn flags(error: BuildError) -> CliError {
                 OptionKey::Scalars => "--f32",
                 OptionKey::Trig => "--trig",
                 OptionKey::ExactAngles => "--exact-angles",
+                OptionKey::Collision => "--collision",
             },
             fault,
         })

@@ -9,6 +9,9 @@
 //! ([`crate::robot::emit_robot`]), and it carries what the checks found (the inverse kinematics'
 //! plan), so nothing is worked out twice.
 
+pub use kinematics_model::collision::Meshes;
+use kinematics_model::collision::{CollisionPairs, LinkSphere, MeshRefused, collision_pairs, link_spheres};
+use kinematics_model::srdf::Srdf;
 use kinematics_model::{ExactAngles, FLOATING_BASE_JOINT, KinematicTree, UnknownLink};
 
 use crate::CompileError;
@@ -82,6 +85,29 @@ pub struct Options {
     pub trig: Trig,
     /// The exactness policy the description is read with.
     pub exact_angles: ExactAngles,
+    /// Also emit collision checking: the robot's geometry as spheres.
+    pub collision: Option<CollisionOptions>,
+}
+
+/// How a robot's collision geometry becomes spheres, and which links are checked against which.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CollisionOptions {
+    /// The sphere cover's largest overshoot in metres (`sphere_cover`; [`DEFAULT_SPHERE_COVER`]
+    /// unless given): how far a sphere may reach beyond the primitive it covers.
+    pub sphere_cover: f64,
+    /// What to do with meshes: refused (the default) or left out.
+    pub meshes: Meshes,
+    /// An SRDF's disabled pairs (MoveIt's `<disable_collisions>`), read by the front end.
+    pub srdf: Option<Srdf>,
+}
+
+/// The sphere cover's largest overshoot when none is given: 1 cm.
+pub const DEFAULT_SPHERE_COVER: f64 = 0.01;
+
+impl Default for CollisionOptions {
+    fn default() -> Self {
+        CollisionOptions { sphere_cover: DEFAULT_SPHERE_COVER, meshes: Meshes::default(), srdf: None }
+    }
 }
 
 /// An option, as the fault it caused names it. Each front end maps it to where the user wrote it
@@ -110,6 +136,8 @@ pub enum OptionKey {
     Trig,
     /// `exact_angles`.
     ExactAngles,
+    /// `collision` (its cover, its meshes, its SRDF).
+    Collision,
 }
 
 impl OptionKey {
@@ -126,6 +154,7 @@ impl OptionKey {
             OptionKey::Scalars => "scalars",
             OptionKey::Trig => "trig",
             OptionKey::ExactAngles => "exact_angles",
+            OptionKey::Collision => "collision",
         }
     }
 }
@@ -186,6 +215,18 @@ pub enum FaultKind {
     /// is not in it.
     #[error("{0}")]
     NoIkFamily(Box<CompileError>),
+    /// `collision` of a robot with a mesh, meshes not left out.
+    #[error(transparent)]
+    Mesh(MeshRefused),
+    /// `sphere_cover` that is no positive finite length.
+    #[error("`sphere_cover` is {0} (must be a finite positive length in metres)")]
+    SphereCover(f64),
+    /// `collision` of a robot with no collision geometry (or only meshes, left out).
+    #[error("`collision` of a robot with no collision geometry: no link has a <collision> element the check can read")]
+    NoGeometry,
+    /// An SRDF whose disabled pairs name a link the robot does not have.
+    #[error("srdf: {0}")]
+    Srdf(String),
 }
 
 /// Options that passed every rule against their robot: the only thing
@@ -196,6 +237,17 @@ pub struct Checked<'a> {
     options: &'a Options,
     base: String,
     ik: CheckedIk,
+    collision: Option<CollisionPlan>,
+}
+
+/// A robot's collision geometry as the check uses it: every sphere, in the robot's sphere order,
+/// and the link pairs its self-collision check tests.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CollisionPlan {
+    /// The spheres.
+    pub spheres: Vec<LinkSphere>,
+    /// The pairs.
+    pub pairs: CollisionPairs,
 }
 
 /// The inverse kinematics a checked robot gets.
@@ -230,6 +282,11 @@ impl<'a> Checked<'a> {
         &self.ik
     }
 
+    /// The collision geometry, when `collision` is asked for.
+    pub fn collision(&self) -> Option<&CollisionPlan> {
+        self.collision.as_ref()
+    }
+
     /// The links `link_poses` returns as the options list them (empty for every link).
     pub fn listed_links(&self) -> &'a [String] {
         self.options.links.as_deref().unwrap_or_default()
@@ -259,7 +316,10 @@ impl Options {
     /// Runs every rule that needs no robot: the faults a front end can report even when the
     /// description did not load.
     pub fn check_alone(&self) -> Vec<OptionFault> {
-        [links_not_empty(self), jacobians_need_a_tip(self), some_scalar(self)].into_iter().flatten().collect()
+        [links_not_empty(self), jacobians_need_a_tip(self), some_scalar(self), sphere_cover_positive(self)]
+            .into_iter()
+            .flatten()
+            .collect()
     }
 
     /// Runs every rule against `tree` (loaded with [`Options::floating_base`] when it is set):
@@ -280,9 +340,16 @@ impl Options {
                 }
             }
         };
+        let collision = match collision_applies(self, tree) {
+            Ok(plan) => plan,
+            Err(fault) => {
+                faults.push(fault);
+                None
+            }
+        };
         let base = self.base.clone().unwrap_or_else(|| tree.link(tree.root()).name.clone());
         match ik {
-            Some(ik) if faults.is_empty() => Ok(Checked { tree, options: self, base, ik }),
+            Some(ik) if faults.is_empty() => Ok(Checked { tree, options: self, base, ik, collision }),
             ik => Err(Rejected {
                 faults,
                 ik_plan: match ik {
@@ -364,6 +431,35 @@ fn ik_applies(options: &Options, tree: &KinematicTree) -> Result<CheckedIk, Opti
         .map_err(|e| fault(FaultKind::NoIkFamily(Box::new(e))))
 }
 
+/// Rule: the sphere cover's overshoot is a finite positive length.
+fn sphere_cover_positive(options: &Options) -> Option<OptionFault> {
+    let cover = options.collision.as_ref()?.sphere_cover;
+    (!(cover.is_finite() && cover > 0.0))
+        .then_some(OptionFault { key: OptionKey::Collision, kind: FaultKind::SphereCover(cover) })
+}
+
+/// Rule: `collision` needs geometry the cover can read (a mesh is refused unless meshes are left
+/// out) and an SRDF naming links of the robot; the spheres and pairs are kept for emission.
+fn collision_applies(options: &Options, tree: &KinematicTree) -> Result<Option<CollisionPlan>, OptionFault> {
+    let Some(collision) = &options.collision else { return Ok(None) };
+    let fault = |kind| OptionFault { key: OptionKey::Collision, kind };
+    if sphere_cover_positive(options).is_some() {
+        // Reported by `check_alone`.
+        return Ok(None);
+    }
+    let spheres = link_spheres(tree, collision.sphere_cover, collision.meshes).map_err(|e| fault(FaultKind::Mesh(e)))?;
+    if spheres.is_empty() {
+        return Err(fault(FaultKind::NoGeometry));
+    }
+    let disabled = match &collision.srdf {
+        Some(srdf) => Some(srdf.disabled_pairs(tree).map_err(|e| fault(FaultKind::Srdf(e.to_string())))?),
+        None => None,
+    };
+    let has: std::collections::BTreeSet<_> = spheres.iter().map(|s| s.link).collect();
+    let pairs = collision_pairs(tree, &|l| has.contains(&l), disabled.as_ref());
+    Ok(Some(CollisionPlan { spheres, pairs }))
+}
+
 /// Rule: `floating_base`'s new root link and joint are names `plain` (the description loaded
 /// without a floating base) does not have.
 pub fn floating_base_clash(plain: &KinematicTree, link: &str) -> Option<OptionFault> {
@@ -405,6 +501,14 @@ impl Choice for IkKind {
     const CHOICES: &'static [(&'static str, Self, &'static str)] = &[
         ("closed_form", IkKind::ClosedForm, "the closed form of the tip's family, and the numeric solver"),
         ("numeric", IkKind::Numeric, "the numeric solver only, for any chain"),
+    ];
+}
+
+impl Choice for Meshes {
+    const KEY: OptionKey = OptionKey::Collision;
+    const CHOICES: &'static [(&'static str, Self, &'static str)] = &[
+        ("refuse", Meshes::Refuse, "a mesh is an error naming its link; the default"),
+        ("skip", Meshes::Skip, "meshes are left out of the check"),
     ];
 }
 

@@ -583,6 +583,27 @@ impl Compiled {
         (0..self.frames.len()).flat_map(|i| self.frame_outputs(i)).collect()
     }
 
+    /// Points fixed in the links of the frames, in the base frame: for each `(frame, p)`, the
+    /// expressions of `R p + t` with that frame's rotation `R` and translation `t`, built in the
+    /// graph (constants fold, so a zero coordinate of `p` needs no column of `R`).
+    pub fn points(&mut self, points: &[(usize, [f64; 3])]) -> Vec<[ExprId; 3]> {
+        points
+            .iter()
+            .map(|&(frame, p)| {
+                let t = self.frames[frame].transform.clone();
+                [0, 1, 2].map(|i| {
+                    let mut sum = t.p[i];
+                    for (k, &coordinate) in p.iter().enumerate() {
+                        let c = self.graph.constant(coordinate);
+                        let term = self.graph.mul(t.r[i][k], c);
+                        sum = self.graph.add(sum, term);
+                    }
+                    sum
+                })
+            })
+            .collect()
+    }
+
     /// Operation counts of everything computed.
     pub fn op_count(&self) -> OpCount {
         OpCount::of(&self.graph, self.outputs())

@@ -20,7 +20,8 @@ use crate::options::KinematicsInput;
 use kinematics_compiler::ik::IkPlan;
 use kinematics_compiler::options::{IkKind, IkMode, Options, Scalars, choose};
 use kinematics_compiler::robot::scalar_parameter;
-use kinematics_compiler::robot::surface::{Constant, Dims, IkItem, IkShape, Render, outputs};
+use kinematics_compiler::robot::surface::{Constant, Dims, IkItem, IkShape, Render, constants, outputs};
+use kinematics_model::collision::link_spheres;
 use kinematics_model::KinematicTree;
 
 /// What the stub knows: the options (as read, or as far as a lenient reading of the attribute
@@ -135,6 +136,11 @@ impl Implied {
             velocities: Some(tree.velocity_dof()),
             links: self.links_read.then_some(links),
             tips: self.tips_counted.then_some(self.options.tips.len()),
+            // The cover's count, when it can be made (a mesh refused leaves it unknown).
+            spheres: self.options.collision.as_ref().and_then(|c| {
+                let cover = c.sphere_cover.is_finite() && c.sphere_cover > 0.0;
+                cover.then(|| link_spheres(tree, c.sphere_cover, c.meshes).ok().map(|s| s.len())).flatten()
+            }),
         };
         self
     }
@@ -199,7 +205,7 @@ pub fn stub(input: &syn::DeriveInput, options: Option<&KinematicsInput>, implied
         dims: implied.dims(),
     };
     let attrs = quote!(#[allow(missing_docs, unused_variables, clippy::missing_panics_doc)]);
-    let constants = Constant::ALWAYS.map(|constant| {
+    let constants = constants(&implied.options).into_iter().map(|constant| {
         let name = format_ident!("{}", constant.name());
         let ty = render.constant_type(constant);
         let value = constant_value(&render, constant, &p);
@@ -318,6 +324,8 @@ fn constant_value(render: &Render, constant: Constant, p: &TokenStream) -> Token
         Constant::JointLimits => count(dims.dof, limits),
         Constant::LinkNames => count(dims.links, quote!("")),
         Constant::Tips => count(dims.tips, quote!("")),
+        Constant::SphereRadii => count(dims.spheres, quote!(0.0)),
+        Constant::SphereLinks => count(dims.spheres, quote!("")),
     }
 }
 

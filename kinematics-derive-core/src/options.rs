@@ -19,7 +19,9 @@ use darling::util::{Override, PathList, SpannedValue};
 use darling::{Error, FromDeriveInput, FromMeta};
 
 use crate::inline_dh::InlineDh;
-use kinematics_compiler::options::{Choice, IkKind, IkMode, OptionKey, Options, Scalars, Trig, choose};
+use kinematics_compiler::options::{
+    Choice, CollisionOptions, IkKind, IkMode, Meshes, OptionKey, Options, Scalars, Trig, choose,
+};
 use kinematics_model::ExactAngles;
 
 /// The options of one derive.
@@ -96,9 +98,24 @@ pub struct OutputKeys {
     /// default, `trig = "fast"`: every angle of a function in one call, side by side in SIMD lanes).
     #[darling(default)]
     pub trig: Option<SpannedValue<Word<Trig>>>,
+    /// `collision` (or `collision(sphere_cover = 0.02, meshes = "skip")`): also emit collision
+    /// checking's functions from the links' `<collision>` geometry, covered by spheres.
+    #[darling(default)]
+    pub collision: Option<SpannedValue<Override<CollisionKey>>>,
     /// `crate = "path"` for a renamed dependency.
     #[darling(default, rename = "crate")]
     pub krate: Option<syn::Path>,
+}
+
+/// The list form of `collision(...)`.
+#[derive(Debug, Clone, FromMeta)]
+pub struct CollisionKey {
+    /// The cover's largest overshoot in metres.
+    #[darling(default)]
+    pub sphere_cover: Option<f64>,
+    /// `meshes = "skip"` (leave meshes out) or `"refuse"` (the default).
+    #[darling(default)]
+    pub meshes: Option<Word<Meshes>>,
 }
 
 /// Every key beyond [`SourceKeys`]', skipped (for [`DescriptionKeys`]).
@@ -339,6 +356,14 @@ impl KinematicsInput {
             ik: output.ik_mode(),
             scalars: output.scalars(errors),
             trig: output.trig(),
+            collision: output.collision.as_ref().map(|key| match key.as_ref() {
+                Override::Inherit => CollisionOptions::default(),
+                Override::Explicit(key) => CollisionOptions {
+                    sphere_cover: key.sphere_cover.unwrap_or(CollisionOptions::default().sphere_cover),
+                    meshes: key.meshes.map_or_else(Meshes::default, |Word(m)| m),
+                    srdf: None,
+                },
+            }),
             ..self.keys.options()
         }
     }
@@ -352,6 +377,7 @@ impl KinematicsInput {
             OptionKey::Ik => output.ik.as_ref().map(SpannedValue::span),
             OptionKey::Scalars => output.scalars.as_ref().map(|list| list.span),
             OptionKey::Trig => output.trig.as_ref().map(SpannedValue::span),
+            OptionKey::Collision => output.collision.as_ref().map(SpannedValue::span),
             // A bare word has no span of its own.
             OptionKey::Positions => None,
             source => self.keys.span_of(source),

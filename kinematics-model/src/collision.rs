@@ -290,6 +290,61 @@ fn subdivide(
     out
 }
 
+/// What to do with mesh geometry, which the cover cannot read.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Meshes {
+    /// A mesh is an error naming its link and file (the default: a mesh left out is a part of the
+    /// robot no check sees).
+    #[default]
+    Refuse,
+    /// Meshes are left out (the robot's other geometry is checked; a spherized URDF has none).
+    Skip,
+}
+
+/// One sphere of a robot's cover: its link, which of the link's `<collision>` elements it covers
+/// (its origin places the centre in the link's frame), and the sphere in that element's frame.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LinkSphere {
+    /// The link.
+    pub link: LinkId,
+    /// The index of the `<collision>` element in the link's list.
+    pub collision: usize,
+    /// The sphere, in the element's own frame.
+    pub sphere: Sphere,
+}
+
+/// A mesh where spheres are asked for and meshes are not skipped.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("link `{link}`: <collision> is a mesh (`{filename}`), which is not read: give the link primitives or spheres (a spherized URDF), or leave meshes out")]
+pub struct MeshRefused {
+    /// The link.
+    pub link: String,
+    /// The mesh file as written.
+    pub filename: String,
+}
+
+/// Every sphere of `tree`'s collision geometry covered with the largest overshoot `overshoot`
+/// (finite and positive): links in tree order, each link's elements in order, each element's
+/// cover in order. This order is the robot's sphere order everywhere (generated code, the
+/// reference).
+pub fn link_spheres(tree: &KinematicTree, overshoot: f64, meshes: Meshes) -> Result<Vec<LinkSphere>, MeshRefused> {
+    let mut out = Vec::new();
+    for (i, link) in tree.links().iter().enumerate() {
+        for (k, collision) in link.collisions.iter().enumerate() {
+            match (collision.shape.cover(overshoot), &collision.shape) {
+                (Some(spheres), _) => {
+                    out.extend(spheres.into_iter().map(|sphere| LinkSphere { link: LinkId(i), collision: k, sphere }));
+                }
+                (None, Shape::Mesh { filename, .. }) if meshes == Meshes::Refuse => {
+                    return Err(MeshRefused { link: link.name.clone(), filename: filename.clone() });
+                }
+                (None, _) => {}
+            }
+        }
+    }
+    Ok(out)
+}
+
 /// The rigid bodies of `tree`: links joined by fixed joints only share a body. `body[link]` is
 /// the index of the first link (in tree order) of its body.
 pub fn rigid_bodies(tree: &KinematicTree) -> Vec<usize> {

@@ -5,6 +5,7 @@ use quote::{ToTokens as _, TokenStreamExt as _, format_ident, quote};
 
 use super::schedule::{Item, Schedule};
 use crate::request::{Compiled, VelocityForm};
+use crate::stats::OpCount;
 use crate::symbolic::graph::{ExprGraph, ExprId, Node};
 
 /// Which sine and cosine generated code calls.
@@ -368,38 +369,7 @@ pub fn emit_function(compiled: &Compiled, options: &EmitOptions) -> TokenStream 
     let n_lit = Literal::usize_unsuffixed(n);
     let nv_lit = Literal::usize_unsuffixed(nv);
     let twist = compiled.velocity.is_some_and(|v| v.form == VelocityForm::Twist);
-    let mut body = TokenStream::new();
-    let mut inputs = vec![(quote!(q), 0, n)];
-    if twist {
-        inputs.push((quote!(qd), n, nv));
-    }
-    for &(ref input, first, len) in &inputs {
-        if len == 0 {
-            body.extend(quote!(let _ = #input;));
-        } else {
-            let vars = (first..first + len).map(|i| {
-                if schedule.used_vars.contains(&i) { var_ident(i, (n, nv)).into_token_stream() } else { quote!(_) }
-            });
-            body.extend(quote!(let [#(#vars),*] = *#input;));
-        }
-    }
-    // Each floating joint's rotation, from its quaternion in `q`, before anything uses it.
-    for (k, &start) in compiled.floating_quaternions.iter().enumerate() {
-        let first = n + nv + 9 * k;
-        if !(first..first + 9).any(|i| schedule.used_vars.contains(&i)) {
-            continue;
-        }
-        let rows = (0..3).map(|r| {
-            let entries = (0..3).map(|c| {
-                let i = first + 3 * r + c;
-                if schedule.used_vars.contains(&i) { var_ident(i, (n, nv)).into_token_stream() } else { quote!(_) }
-            });
-            quote!([#(#entries),*])
-        });
-        let [x, y, z, qw] = [start, start + 1, start + 2, start + 3].map(Literal::usize_unsuffixed);
-        body.extend(quote!(let [#(#rows),*] = #private::quaternion_matrix(q[#x], q[#y], q[#z], q[#qw]);));
-    }
-    w.items(options.trig, &mut body);
+    let mut body = prologue(compiled, &w, twist, options.trig);
     let layout = Layout::of(compiled);
     let array = compiled.returns_array();
     let mut value = TokenStream::new();
@@ -438,6 +408,89 @@ pub fn emit_function(compiled: &Compiled, options: &EmitOptions) -> TokenStream 
         #[inline(always)]
         #[allow(clippy::approx_constant)] // a robot's own decimals may resemble pi; they are kept as given
         #vis fn #name<T: #bound>(#params) -> #ret {
+            #body
+        }
+    }
+}
+
+/// The statements every body opens with: `q` (and with `rates` `qd`) unpacked into the variables
+/// the schedule uses, each floating joint's rotation from its quaternion, then the sines and
+/// cosines and every `let` of the schedule.
+fn prologue(compiled: &Compiled, w: &Writer<'_>, rates: bool, trig: Trig) -> TokenStream {
+    let (schedule, private) = (w.schedule, w.private);
+    let (n, nv) = (compiled.dof(), compiled.velocity_dof());
+    let mut body = TokenStream::new();
+    let mut inputs = vec![(quote!(q), 0, n)];
+    if rates {
+        inputs.push((quote!(qd), n, nv));
+    }
+    for &(ref input, first, len) in &inputs {
+        if len == 0 {
+            body.extend(quote!(let _ = #input;));
+        } else {
+            let vars = (first..first + len).map(|i| {
+                if schedule.used_vars.contains(&i) { var_ident(i, (n, nv)).into_token_stream() } else { quote!(_) }
+            });
+            body.extend(quote!(let [#(#vars),*] = *#input;));
+        }
+    }
+    // Each floating joint's rotation, from its quaternion in `q`, before anything uses it.
+    for (k, &start) in compiled.floating_quaternions.iter().enumerate() {
+        let first = n + nv + 9 * k;
+        if !(first..first + 9).any(|i| schedule.used_vars.contains(&i)) {
+            continue;
+        }
+        let rows = (0..3).map(|r| {
+            let entries = (0..3).map(|c| {
+                let i = first + 3 * r + c;
+                if schedule.used_vars.contains(&i) { var_ident(i, (n, nv)).into_token_stream() } else { quote!(_) }
+            });
+            quote!([#(#entries),*])
+        });
+        let [x, y, z, qw] = [start, start + 1, start + 2, start + 3].map(Literal::usize_unsuffixed);
+        body.extend(quote!(let [#(#rows),*] = #private::quaternion_matrix(q[#x], q[#y], q[#z], q[#qw]);));
+    }
+    w.items(trig, &mut body);
+    body
+}
+
+/// One function, generic over `T: Real`, computing `points` (each three expressions of
+/// `compiled`'s graph, typically points fixed in its frames' links) from `q`, returning
+/// `[[T; 3]; points.len()]`: only what the points need of the frames is computed.
+pub fn emit_points(compiled: &Compiled, points: &[[ExprId; 3]], options: &EmitOptions, doc: &str) -> TokenStream {
+    let g = compiled.graph();
+    let outputs: Vec<ExprId> = points.iter().flatten().copied().collect();
+    let schedule = Schedule::new(g, &outputs);
+    let private = &options.private;
+    let n = compiled.dof();
+    let w = Writer { g, schedule: &schedule, private, sizes: (n, compiled.velocity_dof()), inputs: &[] };
+    let mut body = prologue(compiled, &w, false, options.trig);
+    let values = points.iter().map(|point| {
+        let mut value = TokenStream::new();
+        let mut entries = TokenStream::new();
+        for (k, &id) in point.iter().enumerate() {
+            if k > 0 {
+                punct(&mut entries, ',');
+            }
+            w.expr(id, &mut entries);
+        }
+        group(&mut value, Delimiter::Bracket, entries);
+        value
+    });
+    body.extend(quote!([#(#values),*]));
+    let (n_lit, m) = (Literal::usize_unsuffixed(n), Literal::usize_unsuffixed(points.len()));
+    let name = Ident::new(&options.name, Span::call_site());
+    let vis = if options.public { quote!(pub) } else { quote!() };
+    let bound = options.trig.bound(private);
+    let cost = format!(" Cost: {}.", OpCount::of(g, outputs.iter().copied()));
+    quote! {
+        #[doc = #doc]
+        #[doc = ""]
+        #[doc = #cost]
+        #[allow(clippy::inline_always)]
+        #[inline(always)]
+        #[allow(clippy::approx_constant)] // a robot's own decimals may resemble pi; they are kept as given
+        #vis fn #name<T: #bound>(q: &[T; #n_lit]) -> [[T; 3]; #m] {
             #body
         }
     }

@@ -31,7 +31,7 @@ fn limits(cx: &Context<'_>) -> Vec<TokenStream> {
 
 /// The constants of the type's own `impl`: [`Constant::ALWAYS`], typed by the surface.
 pub(super) fn inherent(cx: &Context<'_>) -> TokenStream {
-    let items = Constant::ALWAYS.map(|constant| {
+    let items = super::surface::constants(cx.options()).into_iter().map(|constant| {
         let (name, ty) = (format_ident!("{}", constant.name()), cx.render.constant_type(constant));
         let docs = doc(constant).iter().map(|line| format!(" {line}"));
         let value = value(cx, constant);
@@ -62,6 +62,8 @@ fn doc(constant: Constant) -> &'static [&'static str] {
         Constant::JointLimits => &["Position limits, in the order of `q` (infinite for continuous joints)."],
         Constant::LinkNames => &["The links `link_poses` returns, in order."],
         Constant::Tips => &["The tip links."],
+        Constant::SphereRadii => &["The collision spheres' radii (m), in the order of `sphere_centers`."],
+        Constant::SphereLinks => &["The link each collision sphere moves with, in the order of `sphere_centers`."],
     }
 }
 
@@ -87,6 +89,14 @@ fn value(cx: &Context<'_>, constant: Constant) -> TokenStream {
         }
         Constant::LinkNames => strs(&cx.link_names),
         Constant::Tips => strs(&cx.tips),
+        Constant::SphereRadii => {
+            let radii = cx.spheres().iter().map(|s| number(s.sphere.radius));
+            quote!([#(#radii),*])
+        }
+        Constant::SphereLinks => {
+            let names: Vec<String> = cx.spheres().iter().map(|s| tree.link(s.link).name.clone()).collect();
+            strs(&names)
+        }
     }
 }
 

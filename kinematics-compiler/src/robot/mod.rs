@@ -21,6 +21,7 @@
 //! [`RobotSpec::krate`], so that path must name it from any module (an absolute path, a
 //! `crate::` path or a dependency's name), as the `crate` option's renamed dependency does.
 
+mod collision;
 mod constants;
 mod functions;
 mod ik;
@@ -84,6 +85,12 @@ pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenSt
     let mut out = Functions::default();
     for output in surface::outputs(options) {
         let body = match output {
+            Output::SphereCenters => {
+                let (body, doc) = collision::sphere_centers(&cx, &output.body(cx.one))?;
+                out.generic.push(body);
+                out.on_type(&cx, output, &doc);
+                continue;
+            }
             Output::LinkPoses => None,
             Output::LinkPositions => Some(poses::link_positions(&cx)?),
             Output::TipPoses => Some(poses::tip_poses(&cx)?),
@@ -149,6 +156,7 @@ impl<'a> Context<'a> {
                 velocities: Some(tree.velocity_dof()),
                 links: Some(link_names.len()),
                 tips: Some(tips.len()),
+                spheres: spec.robot.collision().map(|c| c.spheres.len()),
             },
         };
         Context { spec, p, base, one: tips.len() == 1, link_names, tips, render, tip_request }
@@ -162,6 +170,11 @@ impl<'a> Context<'a> {
     /// The options.
     fn options(&self) -> &'a Options {
         self.spec.robot.options()
+    }
+
+    /// The collision spheres (none without `collision`).
+    fn spheres(&self) -> &'a [kinematics_model::collision::LinkSphere] {
+        self.spec.robot.collision().map_or(&[], |c| c.spheres.as_slice())
     }
 
     /// The links `link_poses` returns, for its doc: "every link but `base`", or the list's names.

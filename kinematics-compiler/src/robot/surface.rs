@@ -28,6 +28,8 @@ pub struct Dims {
     pub links: Option<usize>,
     /// Tips.
     pub tips: Option<usize>,
+    /// Collision spheres.
+    pub spheres: Option<usize>,
 }
 
 /// One computation on the type: a value of `q` (and for twists `qd`), as a function per scalar,
@@ -50,6 +52,8 @@ pub enum Output {
     PositionJacobian,
     /// `tip_twist` or `tip_twist_local`, or `tip_twists*`.
     Twist(JacobianFrame),
+    /// `sphere_centers`: every collision sphere's centre.
+    SphereCenters,
 }
 
 /// The two frames velocities come in, in the order emitted, with their names' suffixes.
@@ -57,8 +61,13 @@ pub const VELOCITY_FRAMES: [(JacobianFrame, &str); 2] =
     [(JacobianFrame::LocalWorldAligned, ""), (JacobianFrame::Local, "_local")];
 
 /// What [`Output`]s `options` ask for, in the order emitted: the links', then (with tips) the
-/// tips' poses, positions and velocities.
+/// tips' poses, positions and velocities, then (with `collision`) the sphere centres.
 pub fn outputs(options: &Options) -> Vec<Output> {
+    collision_outputs(options, tip_outputs(options))
+}
+
+/// The links' and the tips' outputs.
+fn tip_outputs(options: &Options) -> Vec<Output> {
     let mut out = vec![Output::LinkPoses];
     if options.positions {
         out.push(Output::LinkPositions);
@@ -81,6 +90,14 @@ pub fn outputs(options: &Options) -> Vec<Output> {
     out
 }
 
+/// [`tip_outputs`]'s outputs then, with `collision`, the sphere centres.
+fn collision_outputs(options: &Options, mut out: Vec<Output>) -> Vec<Output> {
+    if options.collision.is_some() {
+        out.push(Output::SphereCenters);
+    }
+    out
+}
+
 /// The suffix of a velocity in `frame`.
 fn frame_suffix(frame: JacobianFrame) -> &'static str {
     VELOCITY_FRAMES.iter().find(|(f, _)| *f == frame).map_or("", |(_, suffix)| suffix)
@@ -98,6 +115,7 @@ impl Output {
             Output::PoseAndJacobian => ("tip_pose_and_jacobian", "tip_poses_and_jacobians"),
             Output::PositionJacobian => ("tip_position_jacobian", "tip_position_jacobians"),
             Output::Twist(frame) => return format!("tip_{}{}", plural(one_tip, "twist"), frame_suffix(frame)),
+            Output::SphereCenters => ("sphere_centers", "sphere_centers"),
         };
         (if one_tip { one } else { several }).to_owned()
     }
@@ -111,6 +129,7 @@ impl Output {
             Output::TipPositions => "generic_tip_positions".to_owned(),
             Output::PoseAndJacobian => "generic_pose_and_jacobian".to_owned(),
             Output::PositionJacobian => "generic_position_jacobian".to_owned(),
+            Output::SphereCenters => "generic_sphere_centers".to_owned(),
             Output::Jacobian(_) | Output::Twist(_) => format!("generic_{}", self.name(one_tip)),
         }
     }
@@ -120,16 +139,20 @@ impl Output {
         matches!(self, Output::Twist(_))
     }
 
-    /// Whether it returns one value per link (else per tip).
-    fn per_link(self) -> bool {
-        matches!(self, Output::LinkPoses | Output::LinkPositions)
+    /// How many values it returns: one per link, per tip or per sphere.
+    fn count(self, dims: &Dims) -> (Option<usize>, bool) {
+        match self {
+            Output::LinkPoses | Output::LinkPositions => (dims.links, true),
+            Output::SphereCenters => (dims.spheres, true),
+            _ => (dims.tips, false),
+        }
     }
 
     /// The type of one value for scalar `t`.
     fn element(self, t: &TokenStream, p: &TokenStream, nv: &TokenStream) -> TokenStream {
         match self {
             Output::LinkPoses | Output::TipPoses => quote!(#p::Pose<#t>),
-            Output::LinkPositions | Output::TipPositions => quote!([#t; 3]),
+            Output::LinkPositions | Output::TipPositions | Output::SphereCenters => quote!([#t; 3]),
             Output::Jacobian(_) => quote!([[#t; #nv]; 6]),
             Output::PoseAndJacobian => quote!((#p::Pose<#t>, [[#t; #nv]; 6])),
             Output::PositionJacobian => quote!([[#t; #nv]; 3]),
@@ -259,10 +282,10 @@ impl Render {
     /// parameter), and that const parameter, if any.
     fn value(&self, output: Output, one_tip: bool, t: &TokenStream, batch: bool) -> (TokenStream, Option<TokenStream>) {
         let element = output.element(t, &self.p, &self.velocities());
-        if !output.per_link() && one_tip {
+        let (count, always_array) = output.count(&self.dims);
+        if !always_array && one_tip {
             return (element, None);
         }
-        let count = if output.per_link() { self.dims.links } else { self.dims.tips };
         match count {
             Some(n) => {
                 let n = literal(n);
@@ -342,6 +365,8 @@ impl Render {
             Constant::JointLimits => (quote!(#p::JointLimits), self.dims.dof),
             Constant::LinkNames => (quote!(&'static str), self.dims.links),
             Constant::Tips => (quote!(&'static str), self.dims.tips),
+            Constant::SphereRadii => (quote!(f64), self.dims.spheres),
+            Constant::SphereLinks => (quote!(&'static str), self.dims.spheres),
         };
         match length {
             Some(n) => {
@@ -466,6 +491,20 @@ pub enum Constant {
     LinkNames,
     /// `TIPS`.
     Tips,
+    /// `SPHERE_RADII` (with `collision`).
+    SphereRadii,
+    /// `SPHERE_LINKS` (with `collision`).
+    SphereLinks,
+}
+
+/// The type's own constants for `options`, in the order emitted: [`Constant::ALWAYS`], then with
+/// `collision` the spheres' radii and links.
+pub fn constants(options: &Options) -> Vec<Constant> {
+    let mut out = Constant::ALWAYS.to_vec();
+    if options.collision.is_some() {
+        out.extend([Constant::SphereRadii, Constant::SphereLinks]);
+    }
+    out
 }
 
 impl Constant {
@@ -494,6 +533,8 @@ impl Constant {
             Constant::JointLimits => "JOINT_LIMITS",
             Constant::LinkNames => "LINK_NAMES",
             Constant::Tips => "TIPS",
+            Constant::SphereRadii => "SPHERE_RADII",
+            Constant::SphereLinks => "SPHERE_LINKS",
         }
     }
 }
