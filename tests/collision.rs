@@ -58,7 +58,14 @@ fn agrees<const N: usize, const S: usize>(
 
 #[test]
 fn sphere_centers_agree_with_the_reference() {
-    agrees(Panda::sphere_centers, &Panda::SPHERE_RADII, &Panda::SPHERE_LINKS, &Panda::reference().unwrap(), Panda::BASE, 0.01);
+    agrees(
+        Panda::sphere_centers,
+        &Panda::SPHERE_RADII,
+        &Panda::SPHERE_LINKS,
+        &Panda::reference().unwrap(),
+        Panda::BASE,
+        0.01,
+    );
     agrees(Ur5::sphere_centers, &Ur5::SPHERE_RADII, &Ur5::SPHERE_LINKS, &Ur5::reference().unwrap(), Ur5::BASE, 0.01);
     agrees(
         Ur5Primitives::sphere_centers,

@@ -447,7 +447,8 @@ fn collision_applies(options: &Options, tree: &KinematicTree) -> Result<Option<C
         // Reported by `check_alone`.
         return Ok(None);
     }
-    let spheres = link_spheres(tree, collision.sphere_cover, collision.meshes).map_err(|e| fault(FaultKind::Mesh(e)))?;
+    let spheres =
+        link_spheres(tree, collision.sphere_cover, collision.meshes).map_err(|e| fault(FaultKind::Mesh(e)))?;
     if spheres.is_empty() {
         return Err(fault(FaultKind::NoGeometry));
     }

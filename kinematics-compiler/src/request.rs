@@ -590,7 +590,7 @@ impl Compiled {
         points
             .iter()
             .map(|&(frame, p)| {
-                let t = self.frames[frame].transform.clone();
+                let t = self.frames[frame].transform;
                 [0, 1, 2].map(|i| {
                     let mut sum = t.p[i];
                     for (k, &coordinate) in p.iter().enumerate() {

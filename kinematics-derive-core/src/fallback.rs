@@ -21,8 +21,8 @@ use kinematics_compiler::ik::IkPlan;
 use kinematics_compiler::options::{IkKind, IkMode, Options, Scalars, choose};
 use kinematics_compiler::robot::scalar_parameter;
 use kinematics_compiler::robot::surface::{Constant, Dims, IkItem, IkShape, Render, constants, outputs};
-use kinematics_model::collision::link_spheres;
 use kinematics_model::KinematicTree;
+use kinematics_model::collision::link_spheres;
 
 /// What the stub knows: the options (as read, or as far as a lenient reading of the attribute
 /// goes), the lengths, and the inverse kinematics' plan if the chain was classified.
@@ -398,7 +398,7 @@ fn unknown_length(message: &str) -> TokenStream {
 mod tests {
     //! The stub lists what the emitter writes, signature for signature, for every option set.
 
-    use kinematics_compiler::options::{CheckedIk, IkMode, Options, Scalars, Trig};
+    use kinematics_compiler::options::{CheckedIk, CollisionOptions, IkMode, Options, Scalars, Trig};
     use kinematics_compiler::robot::{RobotSpec, emit_robot};
     use kinematics_model::{ExactAngles, KinematicTree, Source, SourceKind};
     use quote::quote;
@@ -454,6 +454,7 @@ mod tests {
             ("planar_3r.urdf", ["tool", "link2"], None),
             ("iiwa14.urdf", ["iiwa_link_ee", "iiwa_link_3"], Some("iiwa_joint_3")),
             ("humanoid.urdf", ["l_sole", "r_sole"], None),
+            ("ur5_primitives.urdf", ["tool0", "wrist_2_link"], None),
         ];
         let mut compared = 0;
         for (file, tips, free) in robots {
@@ -473,6 +474,9 @@ mod tests {
                                 scalars: Scalars { f64: scalars.0, f32: scalars.1 },
                                 links: (case % 3 == 0).then(|| links.clone()),
                                 trig: if case % 2 == 0 { Trig::Std } else { Trig::Fast },
+                                // The arm with primitive geometry gets its sphere centres.
+                                collision: (file == "ur5_primitives.urdf")
+                                    .then(|| CollisionOptions { sphere_cover: 0.03, ..CollisionOptions::default() }),
                                 ..Options::default()
                             };
                             let Ok(checked) = options.check(&tree) else { continue };
@@ -504,7 +508,7 @@ mod tests {
         }
         // Per robot and scalar list, the four position and Jacobian choices: with one tip, `ik` off
         // and numeric, with two, `ik` off (the rules refuse `ik` of two tips); and with one tip
-        // the closed form on the four robots that have one (the humanoid's leg has none).
-        assert_eq!(compared, 3 * 4 * (5 * (2 + 1) + 4), "option sets compared");
+        // the closed form on the five robots that have one (the humanoid's leg has none).
+        assert_eq!(compared, 3 * 4 * (6 * (2 + 1) + 5), "option sets compared");
     }
 }

@@ -315,7 +315,9 @@ pub struct LinkSphere {
 
 /// A mesh where spheres are asked for and meshes are not skipped.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-#[error("link `{link}`: <collision> is a mesh (`{filename}`), which is not read: give the link primitives or spheres (a spherized URDF), or leave meshes out")]
+#[error(
+    "link `{link}`: <collision> is a mesh (`{filename}`), which is not read: give the link primitives or spheres (a spherized URDF), or leave meshes out"
+)]
 pub struct MeshRefused {
     /// The link.
     pub link: String,
