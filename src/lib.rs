@@ -87,8 +87,8 @@
 
 pub use kinematics_core::{
     AGREEMENT_TOLERANCE, AGREEMENT_TOLERANCE_F32, F32x8, F32x16, F64x4, F64x8, JointLimits, Kinematics,
-    KinematicsError, LaneValue, Lanes, OrientationError, Pose, Real, dispatch, dispatched_level, ik, quaternion_matrix,
-    trig,
+    KinematicsError, LaneValue, Lanes, OrientationError, Pose, Real, collision, dispatch, dispatched_level, ik,
+    quaternion_matrix, trig,
 };
 pub use kinematics_derive::Kinematics;
 

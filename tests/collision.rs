@@ -109,3 +109,154 @@ fn batches_lanes_and_f32_equal_the_scalar_centres() {
         }
     }
 }
+
+use kinematics::collision::{BoxObstacle, CapsuleObstacle, CylinderObstacle, Environment, SphereObstacle};
+use kinematics::runtime::ReferenceObstacles;
+use kinematics::runtime::kinematics_model::collision::collision_pairs;
+
+/// A deterministic stream of numbers in [0, 1) (splitmix64).
+struct Stream(u64);
+
+impl Stream {
+    fn next(&mut self) -> f64 {
+        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
+    }
+
+    fn within(&mut self, half: f64) -> f64 {
+        (2.0 * self.next() - 1.0) * half
+    }
+
+    fn point(&mut self, half: f64) -> [f64; 3] {
+        [self.within(half), self.within(half), self.within(half).abs()]
+    }
+
+    /// A rotation's rows: a random unit quaternion's matrix.
+    fn rotation(&mut self) -> [[f64; 3]; 3] {
+        let q = [self.within(1.0), self.within(1.0), self.within(1.0), self.within(1.0)];
+        let n = q.iter().map(|x| x * x).sum::<f64>().sqrt().max(1e-3);
+        let [x, y, z, w] = q.map(|v| v / n);
+        [
+            [1.0 - 2.0 * (y * y + z * z), 2.0 * (x * y - z * w), 2.0 * (x * z + y * w)],
+            [2.0 * (x * y + z * w), 1.0 - 2.0 * (x * x + z * z), 2.0 * (y * z - x * w)],
+            [2.0 * (x * z - y * w), 2.0 * (y * z + x * w), 1.0 - 2.0 * (x * x + y * y)],
+        ]
+    }
+}
+
+/// Obstacles of every kind within `reach` of the base, sizes 2 to 20 cm, in a shuffled order.
+struct Obstacles {
+    spheres: Vec<SphereObstacle>,
+    capsules: Vec<CapsuleObstacle>,
+    cylinders: Vec<CylinderObstacle>,
+    boxes: Vec<BoxObstacle>,
+}
+
+fn obstacles(stream: &mut Stream, reach: f64, each: usize) -> Obstacles {
+    let mut o = Obstacles { spheres: Vec::new(), capsules: Vec::new(), cylinders: Vec::new(), boxes: Vec::new() };
+    for _ in 0..each {
+        let size = |s: &mut Stream| 0.02 + 0.18 * s.next();
+        o.spheres.push(SphereObstacle { center: stream.point(reach), radius: size(stream) });
+        let a = stream.point(reach);
+        let b = [a[0] + stream.within(0.3), a[1] + stream.within(0.3), a[2] + stream.within(0.3)];
+        o.capsules.push(CapsuleObstacle { a, b, radius: size(stream) });
+        let a = stream.point(reach);
+        let b = [a[0] + stream.within(0.3), a[1] + stream.within(0.3), a[2] + 0.05 + stream.next() * 0.3];
+        o.cylinders.push(CylinderObstacle { a, b, radius: size(stream) });
+        let (rotation, center) = (stream.rotation(), stream.point(reach));
+        o.boxes.push(BoxObstacle::from_pose(rotation, center, [size(stream), size(stream), size(stream)]));
+    }
+    // Shuffled: the answer must not depend on the order.
+    o.spheres.reverse();
+    o.boxes.rotate_left(each / 2);
+    o
+}
+
+/// `collides` and `self_collides` against the reference's signed distances (parry3d-f64 on the
+/// reference's own sphere centres) on every configuration whose distance is farther than 1e-9 m
+/// from zero; those within are counted, not judged. Both verdicts must occur.
+fn checks<const N: usize>(
+    collides: impl Fn(&[f64; N], &Environment<'_>) -> bool,
+    self_collides: impl Fn(&[f64; N]) -> bool,
+    reference: &kinematics::ReferenceFk,
+    cover: f64,
+    seed: u64,
+) -> (usize, usize) {
+    let tree = reference.tree();
+    let spheres = link_spheres(tree, cover, Meshes::Refuse).unwrap();
+    let with: std::collections::BTreeSet<_> = spheres.iter().map(|s| s.link).collect();
+    let pairs = collision_pairs(tree, &|l| with.contains(&l), None).pairs;
+    let mut stream = Stream(seed);
+    let (mut hits, mut free, mut banded, mut self_hits, mut self_free) = (0, 0, 0, 0, 0);
+    for round in 0..4 {
+        let o = obstacles(&mut stream, 0.8, 2 + round);
+        let env = Environment::new(&o.spheres, &o.capsules, &o.cylinders, &o.boxes).unwrap();
+        let reference_obstacles = ReferenceObstacles::new(&o.spheres, &o.capsules, &o.cylinders, &o.boxes);
+        for q in Configurations::new(tree).skip(100 * round).take(300) {
+            let q: [f64; N] = q.try_into().unwrap();
+            let d = reference.obstacle_distance(&q, &spheres, &reference_obstacles).unwrap();
+            assert!(!d.is_nan(), "the reference measured nothing at {q:?}");
+            if d.abs() <= 1e-9 {
+                banded += 1;
+            } else {
+                assert_eq!(collides(&q, &env), d < 0.0, "collides at {q:?}: reference distance {d:e}");
+                if d < 0.0 { hits += 1 } else { free += 1 }
+            }
+            if round == 0 {
+                let s = reference.self_distance(&q, &spheres, &pairs).unwrap();
+                if s.abs() > 1e-9 {
+                    assert_eq!(self_collides(&q), s < 0.0, "self_collides at {q:?}: reference distance {s:e}");
+                    if s < 0.0 { self_hits += 1 } else { self_free += 1 }
+                }
+            }
+        }
+        // With no obstacle, only the robot itself can collide.
+        let empty = Environment::empty();
+        assert!(Configurations::new(tree).take(50).all(|q| !collides(&q.try_into().unwrap(), &empty)));
+    }
+    eprintln!(
+        "{}: {hits} colliding, {free} free, {banded} within 1e-9 m of contact; self: {self_hits} colliding, {self_free} free",
+        tree.name()
+    );
+    assert!(hits > 0 && free > 0, "{hits} colliding, {free} free: the environments test one verdict only");
+    (self_hits, self_free)
+}
+
+/// The arms without an SRDF: pairs less adjacent bodies. Obstacles are in `BASE`'s frame, the
+/// root here, as the reference's distances are.
+#[derive(Kinematics)]
+#[kinematics(urdf = "robots/ur5_spherized.urdf", collision)]
+pub struct Ur5Checked;
+
+/// The primitives arm from its root, covered to 2 cm.
+#[derive(Kinematics)]
+#[kinematics(urdf = "robots/ur5_primitives.urdf", collision(sphere_cover = 0.02))]
+pub struct Ur5PrimitivesChecked;
+
+#[test]
+fn collides_and_self_collides_agree_with_the_reference() {
+    let ur5 = checks(Ur5Checked::collides, Ur5Checked::self_collides, &Ur5Checked::reference().unwrap(), 0.01, 1);
+    let panda = checks(Panda::collides, Panda::self_collides, &Panda::reference().unwrap(), 0.01, 2);
+    // Without an SRDF the primitives arm's wrist links (two joints apart, covered to 2 cm) touch
+    // at every configuration: its self check is compared, but only the others show both verdicts.
+    checks(
+        Ur5PrimitivesChecked::collides,
+        Ur5PrimitivesChecked::self_collides,
+        &Ur5PrimitivesChecked::reference().unwrap(),
+        0.02,
+        3,
+    );
+    for (self_hits, self_free) in [ur5, panda] {
+        assert!(self_hits > 0 && self_free > 0, "{self_hits} self-colliding, {self_free} free");
+    }
+}
+
+#[test]
+fn a_nan_obstacle_is_refused_where_the_environment_is_built() {
+    let nan = [SphereObstacle { center: [0.0, f64::NAN, 0.0], radius: 0.1 }];
+    let error = Environment::new(&nan, &[], &[], &[]).unwrap_err();
+    assert_eq!(error.to_string(), "sphere obstacle 0 has a number that is not finite (it would never collide)");
+}

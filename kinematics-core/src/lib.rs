@@ -22,6 +22,7 @@
 extern crate std;
 
 mod batch;
+pub mod collision;
 mod dispatch;
 mod error;
 mod floating;

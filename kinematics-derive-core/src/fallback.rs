@@ -240,6 +240,12 @@ pub fn stub(input: &syn::DeriveInput, options: Option<&KinematicsInput>, implied
             });
         }
     }
+    if implied.options.collision.is_some() {
+        for (_, signature) in render.collision_items() {
+            let sig = signature.tokens();
+            functions.push(quote!(#attrs #sig { ::core::unreachable!(#message) }));
+        }
+    }
     let unknown_length = unknown_length(message);
     let load_error = quote! {
         ::core::result::Result::Err(#p::LoadError::new(

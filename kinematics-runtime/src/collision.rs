@@ -24,3 +24,119 @@ impl ReferenceFk {
             .collect())
     }
 }
+
+use kinematics_core::collision::{BoxObstacle, CapsuleObstacle, CylinderObstacle, SphereObstacle};
+use kinematics_model::LinkId;
+use parry3d_f64::math::{Matrix, Pose, Rotation, Vector};
+use parry3d_f64::query;
+use parry3d_f64::shape::{Ball, Capsule, Cuboid, Cylinder, Shape};
+
+/// Obstacles as the reference checks them: each a parry shape at its pose, built from the core's
+/// obstacle types by the reference's own reading of them (a cylinder is parry's, along its y axis,
+/// turned onto the segment; a box is parry's cuboid turned by the box's axes).
+pub struct ReferenceObstacles {
+    shapes: Vec<(Pose, Box<dyn Shape>)>,
+}
+
+impl std::fmt::Debug for ReferenceObstacles {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("ReferenceObstacles").field("count", &self.shapes.len()).finish()
+    }
+}
+
+fn vector(v: [f64; 3]) -> Vector {
+    Vector::new(v[0], v[1], v[2])
+}
+
+impl ReferenceObstacles {
+    /// The reference's shapes of these obstacles (every kind, any order).
+    pub fn new(
+        spheres: &[SphereObstacle],
+        capsules: &[CapsuleObstacle],
+        cylinders: &[CylinderObstacle],
+        boxes: &[BoxObstacle],
+    ) -> Self {
+        let mut shapes: Vec<(Pose, Box<dyn Shape>)> = Vec::new();
+        for s in spheres {
+            shapes.push((Pose::from_translation(vector(s.center)), Box::new(Ball::new(s.radius))));
+        }
+        for c in capsules {
+            shapes.push((Pose::IDENTITY, Box::new(Capsule::new(vector(c.a), vector(c.b), c.radius))));
+        }
+        for c in cylinders {
+            let (a, b) = (vector(c.a), vector(c.b));
+            let axis = b - a;
+            let rotation = Rotation::from_rotation_arc(Vector::Y, axis.normalize());
+            let pose = Pose::from_parts((a + b) * 0.5, rotation);
+            shapes.push((pose, Box::new(Cylinder::new(axis.length() / 2.0, c.radius))));
+        }
+        for b in boxes {
+            // The box's axis `i` is row `i` of its rotation: the columns of its frame's matrix.
+            let frame = Matrix::from_cols(vector(b.rotation[0]), vector(b.rotation[1]), vector(b.rotation[2]));
+            let pose = Pose::from_parts(vector(b.center), Rotation::from_mat3(&frame));
+            shapes.push((pose, Box::new(Cuboid::new(vector(b.half_extents)))));
+        }
+        ReferenceObstacles { shapes }
+    }
+}
+
+/// The signed distance between a ball and a shape: parry's distance where they are apart, minus
+/// the penetration depth of parry's contact where they touch or overlap.
+fn signed_distance(ball_at: &Pose, ball: &Ball, pose: &Pose, shape: &dyn Shape) -> f64 {
+    let apart = query::distance(ball_at, ball, pose, shape).map(|d| d.distance).unwrap_or(f64::NAN);
+    if apart > 0.0 {
+        return apart;
+    }
+    match query::contact(ball_at, ball, pose, shape, 0.0) {
+        Ok(Some(contact)) => contact.dist.min(0.0),
+        Ok(None) => 0.0,
+        Err(_) => f64::NAN,
+    }
+}
+
+impl ReferenceFk {
+    /// The smallest signed distance (m) between the robot's `spheres` at `q` and `obstacles`
+    /// (negative: overlapping by that much; infinite with no obstacle; NaN if parry could not
+    /// measure a pair, which no check may take for free).
+    pub fn obstacle_distance(
+        &self,
+        q: &[f64],
+        spheres: &[LinkSphere],
+        obstacles: &ReferenceObstacles,
+    ) -> Result<f64, RuntimeError> {
+        let centers = self.sphere_centers(q, spheres)?;
+        let mut least = f64::INFINITY;
+        for (s, c) in spheres.iter().zip(&centers) {
+            let at = Pose::from_translation(Vector::new(c.x, c.y, c.z));
+            let ball = Ball::new(s.sphere.radius);
+            for (pose, shape) in &obstacles.shapes {
+                let d = signed_distance(&at, &ball, pose, shape.as_ref());
+                least = if d.is_nan() { f64::NAN } else { least.min(d) };
+            }
+        }
+        Ok(least)
+    }
+
+    /// The smallest signed distance (m) between spheres of the links of each pair in `pairs` at
+    /// `q` (infinite with no pair).
+    pub fn self_distance(
+        &self,
+        q: &[f64],
+        spheres: &[LinkSphere],
+        pairs: &[(LinkId, LinkId)],
+    ) -> Result<f64, RuntimeError> {
+        let centers = self.sphere_centers(q, spheres)?;
+        let mut least = f64::INFINITY;
+        for &(a, b) in pairs {
+            for (sa, ca) in spheres.iter().zip(&centers).filter(|(s, _)| s.link == a) {
+                for (sb, cb) in spheres.iter().zip(&centers).filter(|(s, _)| s.link == b) {
+                    let at = |c: &Point3<f64>| Pose::from_translation(Vector::new(c.x, c.y, c.z));
+                    let d =
+                        signed_distance(&at(ca), &Ball::new(sa.sphere.radius), &at(cb), &Ball::new(sb.sphere.radius));
+                    least = if d.is_nan() { f64::NAN } else { least.min(d) };
+                }
+            }
+        }
+        Ok(least)
+    }
+}

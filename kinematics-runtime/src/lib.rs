@@ -32,6 +32,7 @@ mod fk;
 mod jacobian;
 mod sample;
 
+pub use collision::ReferenceObstacles;
 pub use compiled::ReferenceModel;
 pub use error::RuntimeError;
 pub use fk::{ReferenceFk, fixed_isometry};

@@ -1,46 +1,220 @@
 //! Collision: every sphere's centre in the base frame (`sphere_centers`), from the poses of the
 //! links that carry spheres, each centre `R p + t` of its link's pose with `p` its place in the
 //! link's frame (the `<collision>` element's origin applied to the cover's centre): only what the
-//! centres need of the poses is computed.
+//! centres need of the poses is computed. For the checks (`collides`, `self_collides`), the same
+//! body also computes each link's bounding sphere (enclosing its spheres, found at compile time
+//! in the link's frame), and the block holds the tables the core's checks read.
 
-use proc_macro2::TokenStream;
+use proc_macro2::{Literal, TokenStream};
+use quote::quote;
 
 use super::Context;
+use super::functions::Functions;
+use super::surface::CollisionFunction;
 use crate::emit::emit_points;
 use crate::error::CompileError;
 use crate::ik::geometry::transform_point;
-use crate::request::{Request, compile};
+use crate::request::{Compiled, Request, compile};
 
-/// The generic body of `sphere_centers`, named `name`, and its function's doc.
-pub(super) fn sphere_centers(cx: &Context<'_>, name: &str) -> Result<(TokenStream, String), CompileError> {
-    let tree = cx.tree();
-    let spheres = cx.spheres();
+/// The name of the body computing the spheres' centres then the links' bounding spheres'.
+const CHECK_BODY: &str = "generic_collision_centers";
+
+/// The links with spheres (tree order), each sphere's place in its link's frame, and each link's
+/// bounding sphere there.
+struct LinkFrame {
+    /// Link indices, sorted.
+    links: Vec<usize>,
+    /// Per sphere: its link's position in `links` and its centre in the link's frame.
+    points: Vec<(usize, [f64; 3])>,
+    /// Per link of `links`: its bounding sphere's centre (link frame) and radius.
+    bounds: Vec<([f64; 3], f64)>,
+}
+
+fn link_frame(cx: &Context<'_>) -> LinkFrame {
+    let (tree, spheres) = (cx.tree(), cx.spheres());
     let mut links: Vec<usize> = spheres.iter().map(|s| s.link.0).collect();
     links.sort_unstable();
     links.dedup();
-    let request = Request {
-        base: Some(cx.base.clone()),
-        tips: links.iter().map(|&l| tree.links()[l].name.clone()).collect(),
-        position_only: false,
-        velocity: None,
-    };
-    let mut compiled = compile(tree, &request)?;
     let points: Vec<(usize, [f64; 3])> = spheres
         .iter()
         .map(|s| {
-            // Spheres come in tree order of their links, so `links` is sorted.
             #[allow(clippy::expect_used, reason = "invariant: every sphere's link is in `links`")]
             let frame = links.binary_search(&s.link.0).expect("the links are those of the spheres");
             let origin = &tree.link(s.link).collisions[s.collision].origin;
             (frame, transform_point(origin, s.sphere.center))
         })
         .collect();
-    let centers = compiled.points(&points);
+    let bounds = (0..links.len())
+        .map(|frame| {
+            let balls: Vec<([f64; 3], f64)> = points
+                .iter()
+                .zip(spheres)
+                .filter(|((f, _), _)| *f == frame)
+                .map(|((_, p), s)| (*p, s.sphere.radius))
+                .collect();
+            enclosing_sphere(&balls)
+        })
+        .collect();
+    LinkFrame { links, points, bounds }
+}
+
+/// A sphere containing every ball of `balls` (centre, radius; at least one), near the smallest:
+/// Badoiu and Clarkson's iteration (step `k` moves the centre `1/(k+1)` of the way to the point of
+/// the farthest ball farthest from it), then the radius that contains every ball exactly.
+fn enclosing_sphere(balls: &[([f64; 3], f64)]) -> ([f64; 3], f64) {
+    if let [only] = balls {
+        return *only;
+    }
+    let reach = |c: [f64; 3], (p, r): ([f64; 3], f64)| distance(c, p) + r;
+    #[allow(clippy::cast_precision_loss)]
+    let mut c = [0, 1, 2].map(|i| balls.iter().map(|(p, _)| p[i]).sum::<f64>() / balls.len() as f64);
+    for k in 1..=2000u32 {
+        let Some(&(p, r)) = balls.iter().max_by(|a, b| reach(c, **a).total_cmp(&reach(c, **b))) else { break };
+        let d = distance(c, p);
+        let far = if d > 0.0 { [0, 1, 2].map(|i| p[i] + (p[i] - c[i]) / d * r) } else { [p[0] + r, p[1], p[2]] };
+        let step = 1.0 / f64::from(k + 1);
+        c = [0, 1, 2].map(|i| c[i] + (far[i] - c[i]) * step);
+    }
+    let radius = balls.iter().map(|&b| reach(c, b)).fold(0.0, f64::max);
+    (c, radius)
+}
+
+fn distance(a: [f64; 3], b: [f64; 3]) -> f64 {
+    ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt()
+}
+
+/// The links' poses, compiled (every point is built on them).
+fn compiled_links(cx: &Context<'_>, frame: &LinkFrame) -> Result<Compiled, CompileError> {
+    let tree = cx.tree();
+    let request = Request {
+        base: Some(cx.base.clone()),
+        tips: frame.links.iter().map(|&l| tree.links()[l].name.clone()).collect(),
+        position_only: false,
+        velocity: None,
+    };
+    compile(tree, &request)
+}
+
+/// The generic body of `sphere_centers`, named `name`, and its function's doc.
+pub(super) fn sphere_centers(cx: &Context<'_>, name: &str) -> Result<(TokenStream, String), CompileError> {
+    let frame = link_frame(cx);
+    let mut compiled = compiled_links(cx, &frame)?;
+    let centers = compiled.points(&frame.points);
     let doc = format!(
         "The centres of the robot's {} collision spheres in `{}` (radii in `SPHERE_RADII`, links in `SPHERE_LINKS`)",
-        spheres.len(),
+        frame.points.len(),
         cx.base
     );
     let body_doc = format!(" {doc}.");
     Ok((emit_points(&compiled, &centers, &cx.body_options(name), &body_doc), doc))
+}
+
+/// `collides` and `self_collides` on the type (as the surface lists them), their body computing
+/// the spheres' and the bounding spheres' centres, and the tables the core's checks read.
+pub(super) fn checks(cx: &Context<'_>, out: &mut Functions) -> Result<(), CompileError> {
+    let Some(plan) = cx.spec.robot.collision() else { return Ok(()) };
+    let frame = link_frame(cx);
+    let mut compiled = compiled_links(cx, &frame)?;
+    let mut points = frame.points.clone();
+    points.extend(frame.bounds.iter().enumerate().map(|(f, (c, _))| (f, *c)));
+    let centers = compiled.points(&points);
+    let body_doc =
+        " Every collision sphere's centre, then each link's bounding sphere's (links with spheres in tree order).";
+    out.generic.push(emit_points(&compiled, &centers, &cx.body_options(CHECK_BODY), body_doc));
+    let p = &cx.p;
+    let mut start = 0;
+    let links = frame.links.iter().zip(&frame.bounds).map(|(&link, &(_, radius))| {
+        let count = frame.points.iter().filter(|(f, _)| frame.links[*f] == link).count();
+        let (s, e) = (Literal::usize_unsuffixed(start), Literal::usize_unsuffixed(start + count));
+        start += count;
+        let radius = super::number(radius);
+        quote!((#s, #e, #radius))
+    });
+    let links: Vec<TokenStream> = links.collect();
+    let index = |l: kinematics_model::LinkId| {
+        #[allow(clippy::expect_used, reason = "invariant: pairs are of links with spheres")]
+        let i = frame.links.binary_search(&l.0).expect("a paired link has spheres");
+        Literal::usize_unsuffixed(i)
+    };
+    let pairs = plan.pairs.pairs.iter().map(|&(a, b)| {
+        let (a, b) = (index(a), index(b));
+        quote!((#a, #b))
+    });
+    out.generic.push(quote! {
+        /// The collision tables: each link with spheres (its spheres' range, its bounding
+        /// sphere's radius), the spheres' radii, the link pairs the self-collision check tests.
+        #[allow(clippy::approx_constant, clippy::unreadable_literal)] // radii are kept as given
+        pub const COLLISION_TABLES: #p::collision::CollisionTables<'static> = #p::collision::CollisionTables {
+            links: &[#(#links),*],
+            radii: &RADII,
+            pairs: &[#(#pairs),*],
+        };
+    });
+    let radii = cx.spheres().iter().map(|s| super::number(s.sphere.radius));
+    let count = Literal::usize_unsuffixed(cx.spheres().len());
+    out.generic.push(quote! {
+        #[allow(clippy::approx_constant, clippy::unreadable_literal)] // radii are kept as given
+        const RADII: [f64; #count] = [#(#radii),*];
+    });
+    let g = proc_macro2::Ident::new(CHECK_BODY, proc_macro2::Span::call_site());
+    let pairs_rule = match plan.pairs.rule {
+        kinematics_model::collision::PairRule::Srdf => "less the SRDF's disabled pairs",
+        kinematics_model::collision::PairRule::Adjacent => {
+            "less the links of bodies joined by one joint (no SRDF given)"
+        }
+    };
+    for (function, signature) in cx.render.collision_items() {
+        let sig = signature.tokens();
+        out.typed.push(match function {
+            CollisionFunction::Collides => {
+                let doc = format!(
+                    "Whether the robot at `q` touches or overlaps an obstacle of `environment` (its {} spheres; each \
+                     link's bounding sphere tested first, the first hit ending the check; any order of obstacles).",
+                    cx.spheres().len()
+                );
+                quote! {
+                    #[doc = #doc]
+                    #[inline]
+                    #[allow(clippy::redundant_closure)]
+                    #sig {
+                        let centers = #p::dispatch(#[inline(always)] || #g(q));
+                        COLLISION_TABLES.collides(&centers, environment)
+                    }
+                }
+            }
+            CollisionFunction::SelfCollides => {
+                let doc = format!(
+                    "Whether two links of the robot at `q` touch ({} pairs: links with spheres on different rigid bodies, \
+                     {pairs_rule}).",
+                    plan.pairs.pairs.len()
+                );
+                quote! {
+                    #[doc = #doc]
+                    #[inline]
+                    #[allow(clippy::redundant_closure)]
+                    #sig {
+                        let centers = #p::dispatch(#[inline(always)] || #g(q));
+                        COLLISION_TABLES.self_collides(&centers)
+                    }
+                }
+            }
+        });
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{distance, enclosing_sphere};
+
+    #[test]
+    fn the_enclosing_sphere_holds_every_ball_and_is_near_the_smallest() {
+        // Two balls on a line: the smallest encloser is known exactly.
+        let (c, r) = enclosing_sphere(&[([0.0; 3], 1.0), ([4.0, 0.0, 0.0], 1.0)]);
+        assert!((r - 3.0).abs() < 0.05, "{c:?} {r}");
+        let balls = [([0.0, 0.0, 0.0], 0.1), ([0.3, 0.1, 0.0], 0.05), ([0.1, 0.4, 0.2], 0.2), ([0.0, 0.0, 0.0], 0.3)];
+        let (c, r) = enclosing_sphere(&balls);
+        assert!(balls.iter().all(|&(p, q)| distance(c, p) + q <= r));
+        assert_eq!(enclosing_sphere(&[([1.0, 2.0, 3.0], 0.5)]), ([1.0, 2.0, 3.0], 0.5));
+    }
 }

@@ -108,6 +108,7 @@ pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenSt
         out.on_type(&cx, output, &doc);
     }
     ik::ik(&cx, &mut out)?;
+    collision::checks(&cx, &mut out)?;
     Ok(impls::robot_block(self_ty, &cx, &out))
 }
 

@@ -613,6 +613,42 @@ impl ClosedFormShape {
     }
 }
 
+/// The collision checks' functions.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum CollisionFunction {
+    /// `collides(&q, &environment)`.
+    Collides,
+    /// `self_collides(&q)`.
+    SelfCollides,
+}
+
+impl Render {
+    /// The collision checks' functions (with `collision`), in the order emitted: `f64` only.
+    pub fn collision_items(&self) -> Vec<(CollisionFunction, Signature)> {
+        let (p, n) = (&self.p, self.dof());
+        vec![
+            (
+                CollisionFunction::Collides,
+                Signature {
+                    name: Ident::new("collides", Span::call_site()),
+                    generics: self.dof_generics(),
+                    inputs: quote!(q: &[f64; #n], environment: &#p::collision::Environment<'_>),
+                    output: quote!(bool),
+                },
+            ),
+            (
+                CollisionFunction::SelfCollides,
+                Signature {
+                    name: Ident::new("self_collides", Span::call_site()),
+                    generics: self.dof_generics(),
+                    inputs: quote!(q: &[f64; #n]),
+                    output: quote!(bool),
+                },
+            ),
+        ]
+    }
+}
+
 /// One of the inverse kinematics' items.
 #[derive(Debug, Clone)]
 pub enum IkItem {
