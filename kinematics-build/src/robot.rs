@@ -6,7 +6,8 @@ use kinematics_compiler::emit::Trig;
 use kinematics_compiler::options::{
     CollisionOptions, IkMode, Meshes, OptionFault, OptionKey, Options, floating_base_clash,
 };
-use kinematics_model::{ExactAngles, SourceKind};
+use kinematics_model::srdf::parse_srdf;
+use kinematics_model::{ExactAngles, LoadError, LoadErrorKind, SourceKind};
 
 use crate::emit::{Emit, default_struct_name, emit_source};
 use crate::error::{BuildError, CallFault};
@@ -30,7 +31,7 @@ use crate::write::write_atomic;
 /// | `crate = "path"` | [`Robot::crate_path`] |
 /// | `exact_angles = false` | [`Robot::exact_angles`] |
 /// | `trig = "std"` | [`Robot::trig`] |
-/// | `collision` / `collision(sphere_cover = 0.02, meshes = "skip")` | [`Robot::collision`] / [`Robot::sphere_cover`], [`Robot::skip_meshes`] |
+/// | `collision` / `collision(sphere_cover = 0.02, meshes = "skip", srdf = "path")` | [`Robot::collision`] / [`Robot::sphere_cover`], [`Robot::skip_meshes`], [`Robot::srdf`] |
 ///
 /// plus [`Robot::struct_name`] (default: the robot's name in UpperCamelCase, see
 /// [`default_struct_name`]). Paths are relative to `CARGO_MANIFEST_DIR` (the directory of the
@@ -44,6 +45,8 @@ pub struct Robot {
     kind: SourceKind,
     dir: Option<PathBuf>,
     options: Options,
+    /// The SRDF file [`Robot::srdf`] names, read when generating.
+    srdf: Option<PathBuf>,
     struct_name: Option<String>,
     crate_path: String,
 }
@@ -55,6 +58,7 @@ impl Robot {
             kind,
             dir: None,
             options: Options::default(),
+            srdf: None,
             struct_name: None,
             crate_path: "::kinematics".to_owned(),
         }
@@ -218,6 +222,15 @@ impl Robot {
         self
     }
 
+    /// [`Robot::collision`] with MoveIt's semantic description at `path` (relative as the
+    /// description's is): its `<disable_collisions>` pairs are left out of `self_collides`. Read
+    /// when generating; a link it names that the robot does not have is an error.
+    pub fn srdf(mut self, path: impl Into<PathBuf>) -> Self {
+        self.options.collision.get_or_insert_with(CollisionOptions::default);
+        self.srdf = Some(path.into());
+        self
+    }
+
     /// The options the calls so far have set.
     pub fn options(&self) -> &Options {
         &self.options
@@ -240,7 +253,16 @@ impl Robot {
     /// [`Robot::write_to_out_dir`] adds cargo's directives.
     pub fn generate(&self) -> Result<String, BuildError> {
         let loaded = self.load()?;
-        let checked = self.options.check(&loaded.tree).map_err(|rejected| self.faults(rejected.faults))?;
+        let mut options = self.options.clone();
+        if let (Some(path), Some(collision)) = (&self.srdf, options.collision.as_mut()) {
+            let label = path.display().to_string();
+            let text = std::fs::read_to_string(resolve(path, self.dir.as_deref()))
+                .map_err(|e| LoadError::new(label.clone(), LoadErrorKind::Io(e)))?;
+            let mut srdf = parse_srdf(&text).map_err(|e| LoadError::new(label.clone(), e))?;
+            srdf.file = label;
+            collision.srdf = Some(srdf);
+        }
+        let checked = options.check(&loaded.tree).map_err(|rejected| self.faults(rejected.faults))?;
         let name = self.struct_name.clone().unwrap_or_else(|| default_struct_name(loaded.tree.name()));
         emit_source(&Emit { loaded: &loaded, robot: checked, name: &name, crate_path: &self.crate_path })
     }
@@ -302,6 +324,9 @@ impl Robot {
     /// write `include!(concat!(env!("OUT_DIR"), "/<file_name>"));`.
     pub fn write_to_out_dir(&self, file_name: &str) -> Result<PathBuf, BuildError> {
         println!("cargo:rerun-if-changed={}", self.source_path().display());
+        if let Some(srdf) = &self.srdf {
+            println!("cargo:rerun-if-changed={}", resolve(srdf, self.dir.as_deref()).display());
+        }
         let out = std::env::var_os("OUT_DIR").ok_or(BuildError::NoOutDir)?;
         let path = Path::new(&out).join(file_name);
         self.write_to(&path)?;
@@ -525,6 +550,37 @@ mod tests {
         let mut left: Vec<_> = std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().file_name()).collect();
         left.sort();
         assert_eq!(left, ["arm.urdf"]);
+    }
+
+    #[test]
+    fn collision_reads_the_srdf_and_refuses_what_it_cannot_check() {
+        let spheres = ARM.replace(
+            "<link name=\"upper\"/>",
+            "<link name=\"upper\"><collision><geometry><sphere radius=\"0.1\"/></geometry></collision></link>",
+        );
+        let srdf = "<robot name=\"arm\">\n<disable_collisions link1=\"upper\" link2=\"tool9\"/>\n</robot>";
+        let dir = fixture("collision", &[("arm.urdf", &spheres), ("arm.srdf", srdf), ("plain.urdf", ARM)]);
+        let robot = || Robot::urdf("arm.urdf").manifest_dir(&dir);
+        let source = robot().collision().generate().unwrap();
+        assert!(source.contains("pub fn sphere_centers(q: &[f64; 2]) -> [[f64; 3]; 1]"), "{source}");
+        assert!(source.contains("pub fn collides(") && source.contains("pub fn self_collides("), "{source}");
+        let message = fails(&robot().srdf("arm.srdf"), |e| matches!(e, BuildError::Options { .. }));
+        assert_eq!(
+            message,
+            "arm.urdf: `.collision()`: arm.srdf: line 2: <disable_collisions link2=\"tool9\">: link `tool9` does not \
+             exist; did you mean `tool0`?"
+        );
+        let message = fails(&robot().sphere_cover(f64::NAN), |e| matches!(e, BuildError::Options { .. }));
+        assert_eq!(
+            message,
+            "arm.urdf: `.collision()`: `sphere_cover` is NaN (must be a finite positive length in metres)"
+        );
+        let message = fails(&Robot::urdf("plain.urdf").manifest_dir(&dir).collision(), |e| {
+            matches!(e, BuildError::Options { .. })
+        });
+        assert!(message.contains("no collision geometry"), "{message}");
+        let missing = fails(&robot().srdf("none.srdf"), |e| matches!(e, BuildError::Load(_)));
+        assert!(missing.starts_with("none.srdf: cannot read the file"), "{missing}");
     }
 
     #[test]

@@ -57,6 +57,9 @@ pub struct Args {
     /// With `--collision`, leave meshes out (they are refused otherwise).
     #[arg(long, requires = "collision")]
     skip_meshes: bool,
+    /// With `--collision`, MoveIt's SRDF whose disabled pairs `self_collides` leaves out.
+    #[arg(long, requires = "collision")]
+    srdf: Option<String>,
     /// Which sine and cosine the code calls: `fast` (ours, every angle in one call) or `std` (the
     /// platform's, one call per angle).
     #[arg(long, value_enum, default_value_t = TrigArg::Fast)]
@@ -123,6 +126,9 @@ pub fn builder(args: &Args) -> Result<Robot, CliError> {
     }
     if args.skip_meshes {
         robot = robot.skip_meshes();
+    }
+    if let Some(srdf) = &args.srdf {
+        robot = robot.srdf(srdf);
     }
     Ok(robot)
 }

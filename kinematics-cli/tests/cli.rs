@@ -304,6 +304,28 @@ fn generate_prints_what_the_build_api_writes() {
 }
 
 #[test]
+fn generate_emits_collision_checking_as_the_build_api_does() {
+    let out = ok(&["generate", "robots/panda_spherized.urdf", "--collision", "--srdf", "robots/panda.srdf"]);
+    let expected = kinematics_build::Robot::file("robots/panda_spherized.urdf")
+        .manifest_dir(root())
+        .srdf("robots/panda.srdf")
+        .generate()
+        .unwrap();
+    assert_eq!(out, expected);
+    assert!(out.contains("pub fn self_collides(q: &[f64; 7]) -> bool"), "{out}");
+    let covered = ok(&["generate", "robots/ur5_primitives.urdf", "--collision", "--sphere-cover", "0.05"]);
+    assert!(covered.contains("pub const SPHERE_RADII"), "{covered}");
+    let message = fails(&["generate", "robots/ur5.urdf", "--collision"]);
+    assert!(
+        message.starts_with("error: robots/ur5.urdf: `--collision`: link `base_link`: <collision> is a mesh"),
+        "{message}"
+    );
+    // Meshes left out, the UR5 keeps the small box on its `ee_link`: one sphere.
+    let skipped = ok(&["generate", "robots/ur5.urdf", "--collision", "--skip-meshes"]);
+    assert!(skipped.contains(r#"pub const SPHERE_LINKS: [&'static str; 1] = ["ee_link"];"#), "{skipped}");
+}
+
+#[test]
 fn generate_lists_the_links_asked_for() {
     let out = ok(&["generate", "robots/humanoid.urdf", "--links", "r_sole,l_sole", "--positions"]);
     let expected = kinematics_build::Robot::file("robots/humanoid.urdf")

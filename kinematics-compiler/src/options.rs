@@ -225,7 +225,7 @@ pub enum FaultKind {
     #[error("`collision` of a robot with no collision geometry: no link has a <collision> element the check can read")]
     NoGeometry,
     /// An SRDF whose disabled pairs name a link the robot does not have.
-    #[error("srdf: {0}")]
+    #[error("{0}")]
     Srdf(String),
 }
 
@@ -453,7 +453,9 @@ fn collision_applies(options: &Options, tree: &KinematicTree) -> Result<Option<C
         return Err(fault(FaultKind::NoGeometry));
     }
     let disabled = match &collision.srdf {
-        Some(srdf) => Some(srdf.disabled_pairs(tree).map_err(|e| fault(FaultKind::Srdf(e.to_string())))?),
+        Some(srdf) => {
+            Some(srdf.disabled_pairs(tree).map_err(|e| fault(FaultKind::Srdf(format!("{}: {e}", srdf.file))))?)
+        }
         None => None,
     };
     let has: std::collections::BTreeSet<_> = spheres.iter().map(|s| s.link).collect();
@@ -480,6 +482,8 @@ pub fn floating_base_clash(plain: &KinematicTree, link: &str) -> Option<OptionFa
 pub trait Choice: Copy + PartialEq + 'static {
     /// The option (`trig`).
     const KEY: OptionKey;
+    /// The word's own name in messages (`trig`, `meshes`).
+    const NAME: &'static str;
     /// Each word, its value and what it means, the default first where there is one.
     const CHOICES: &'static [(&'static str, Self, &'static str)];
 
@@ -491,6 +495,7 @@ pub trait Choice: Copy + PartialEq + 'static {
 
 impl Choice for Trig {
     const KEY: OptionKey = OptionKey::Trig;
+    const NAME: &'static str = "trig";
     const CHOICES: &'static [(&'static str, Self, &'static str)] = &[
         ("fast", Trig::Fast, "our sin/cos, every angle in one call; the default"),
         ("std", Trig::Std, "the platform's, one call per angle"),
@@ -499,6 +504,7 @@ impl Choice for Trig {
 
 impl Choice for IkKind {
     const KEY: OptionKey = OptionKey::Ik;
+    const NAME: &'static str = "ik";
     const CHOICES: &'static [(&'static str, Self, &'static str)] = &[
         ("closed_form", IkKind::ClosedForm, "the closed form of the tip's family, and the numeric solver"),
         ("numeric", IkKind::Numeric, "the numeric solver only, for any chain"),
@@ -507,6 +513,7 @@ impl Choice for IkKind {
 
 impl Choice for Meshes {
     const KEY: OptionKey = OptionKey::Collision;
+    const NAME: &'static str = "meshes";
     const CHOICES: &'static [(&'static str, Self, &'static str)] = &[
         ("refuse", Meshes::Refuse, "a mesh is an error naming its link; the default"),
         ("skip", Meshes::Skip, "meshes are left out of the check"),
@@ -542,7 +549,7 @@ pub fn choose<C: Choice>(word: &str) -> Result<C, UnknownChoice> {
     }
     let expected: Vec<String> = C::CHOICES.iter().map(|(w, _, what)| format!("\"{w}\" ({what})")).collect();
     Err(UnknownChoice {
-        key: C::KEY.name(),
+        key: C::NAME,
         word: word.to_owned(),
         suggestion: kinematics_model::closest(word, C::CHOICES.iter().map(|(w, ..)| *w)),
         expected: expected.join(" or "),

@@ -94,7 +94,15 @@ fn expand_options(
     errors: &mut darling::error::Accumulator,
 ) -> (Implied, Option<TokenStream>) {
     let loaded = errors.handle(source::read(&options.source()));
-    let robot_options: Options = options.options(errors);
+    let mut robot_options: Options = options.options(errors);
+    // The SRDF's pairs, read here (the compiler does no IO); its faults beside the others.
+    let mut rebuild = TokenStream::new();
+    if let (Some(path), Some(collision)) = (options.output().srdf(), robot_options.collision.as_mut())
+        && let Some((srdf, include)) = errors.handle(source::read_srdf(path))
+    {
+        collision.srdf = Some(srdf);
+        rebuild = include;
+    }
     let implied = Implied::from_options(robot_options.clone());
     let Some(loaded) = loaded else {
         // The rules that need no robot still speak.
@@ -126,6 +134,7 @@ fn expand_options(
         where_clause: quote!(#where_clause),
     };
     let emitted = emit_robot(&quote!(#ident #ty_generics), &spec)
+        .map(|robot| quote!(#robot #rebuild))
         .map_err(|e| darling::Error::custom(format!("{}: {e}", loaded.label)).with_span(ident));
     (implied, errors.handle(emitted))
 }

@@ -116,6 +116,20 @@ pub struct CollisionKey {
     /// `meshes = "skip"` (leave meshes out) or `"refuse"` (the default).
     #[darling(default)]
     pub meshes: Option<Word<Meshes>>,
+    /// `srdf = "path"`: MoveIt's semantic description, whose `<disable_collisions>` pairs the
+    /// self-collision check leaves out (relative to `CARGO_MANIFEST_DIR`).
+    #[darling(default)]
+    pub srdf: Option<SpannedValue<String>>,
+}
+
+impl OutputKeys {
+    /// The `srdf` path given in `collision(...)`, if any.
+    pub fn srdf(&self) -> Option<&SpannedValue<String>> {
+        match self.collision.as_ref()?.as_ref() {
+            Override::Explicit(key) => key.srdf.as_ref(),
+            Override::Inherit => None,
+        }
+    }
 }
 
 /// Every key beyond [`SourceKeys`]', skipped (for [`DescriptionKeys`]).

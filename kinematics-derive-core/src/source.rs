@@ -86,6 +86,27 @@ fn from_inline(table: &InlineDh, span: Span, policy: Policy<'_>) -> darling::Res
     Ok(Loaded { tree, label: "inline_dh.toml".to_owned(), written: LABEL.to_owned(), text_expr: quote!(#text) })
 }
 
+/// The SRDF at `path` (relative to `CARGO_MANIFEST_DIR`), parsed, and an item that makes the
+/// crate rebuild when it changes (an `include_bytes!` of its absolute path); a file that cannot be
+/// read or parsed is an error on the key naming the file (and the line).
+pub fn read_srdf(path: &SpannedValue<String>) -> darling::Result<(kinematics_model::srdf::Srdf, TokenStream)> {
+    let label = path.as_ref().clone();
+    let root = std::env::var("CARGO_MANIFEST_DIR").map(PathBuf::from).unwrap_or_default();
+    let absolute = root.join(&label);
+    let text = std::fs::read_to_string(&absolute)
+        .map_err(|e| spanned(&LoadError::new(label.clone(), LoadErrorKind::Io(e)), path.span()))?;
+    let mut srdf = kinematics_model::srdf::parse_srdf(&text)
+        .map_err(|e| spanned(&LoadError::new(label.clone(), e), path.span()))?;
+    srdf.file = label;
+    let absolute = absolute.to_string_lossy().into_owned();
+    Ok((
+        srdf,
+        quote!(
+            const _: &[u8] = include_bytes!(#absolute);
+        ),
+    ))
+}
+
 /// A load error as compile errors on `span`: one per broken model rule, so all are shown.
 fn spanned(error: &LoadError, span: Span) -> Error {
     match error.model_errors() {

@@ -14,6 +14,8 @@ use crate::urdf::{At, row, xml_error};
 /// What an SRDF document says about collisions.
 #[derive(Debug, Clone, PartialEq, Eq, Default)]
 pub struct Srdf {
+    /// The file as the user named it (set by whoever read it; empty when parsed from text).
+    pub file: String,
     /// The robot it describes (`<robot name>`).
     pub robot: String,
     /// The disabled pairs, in file order.

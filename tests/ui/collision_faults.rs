@@ -1,0 +1,33 @@
+use kinematics::Kinematics;
+
+// Collision geometry that is meshes, without leaving meshes out.
+#[derive(Kinematics)]
+#[kinematics(urdf = "../../../../robots/ur5.urdf", collision)]
+struct Meshes;
+
+// An SRDF naming a link the robot does not have.
+#[derive(Kinematics)]
+#[kinematics(urdf = "../../../../robots/ur5_spherized.urdf", collision(srdf = "../../../../tests/ui/fixtures/unknown_link.srdf"))]
+struct UnknownSrdfLink;
+
+// A cover that is no positive length.
+#[derive(Kinematics)]
+#[kinematics(urdf = "../../../../robots/ur5_spherized.urdf", collision(sphere_cover = -0.01))]
+struct NegativeCover;
+
+// A misspelt mesh policy.
+#[derive(Kinematics)]
+#[kinematics(urdf = "../../../../robots/ur5.urdf", collision(meshes = "skp"))]
+struct MisspeltMeshes;
+
+// A negative radius: the model refuses the file, naming the link and the line.
+#[derive(Kinematics)]
+#[kinematics(urdf = "../../../../tests/ui/fixtures/negative_radius.urdf", collision)]
+struct NegativeRadius;
+
+fn main() {
+    // The stub keeps the collision functions: no cascade.
+    let _ = Meshes::collides(&[0.0; 6], &kinematics::collision::Environment::empty());
+    let _ = UnknownSrdfLink::self_collides(&[0.0; 6]);
+    let _ = NegativeCover::sphere_centers(&[0.0; 6]);
+}
