@@ -13,11 +13,59 @@ pub struct Args {
     file: String,
 }
 
-/// Prints the tree of `args.file`.
+/// Prints the tree of `args.file`, then its collision geometry.
 pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
     let tree = crate::robot::load(&args.file)?;
     write!(out, "{}", describe(&tree))?;
+    write!(out, "{}", collision(&tree))?;
     Ok(())
+}
+
+/// The links' collision geometry: each link's shapes and how many spheres cover them (at the
+/// default cover), meshes listed as not read, and how many link pairs a self-collision check
+/// without an SRDF tests; fixed joints whose mimic had nothing to do.
+pub fn collision(tree: &KinematicTree) -> String {
+    use kinematics::model::collision::{LinkSphere, Meshes, collision_pairs, link_spheres};
+    let cover = kinematics_compiler::options::DEFAULT_SPHERE_COVER;
+    let mut out = String::new();
+    if !tree.vacuous_mimics().is_empty() {
+        out +=
+            &format!("fixed joints whose mimic of a fixed joint does nothing: {}\n", tree.vacuous_mimics().join(", "));
+    }
+    let with: Vec<_> = tree.links().iter().filter(|l| !l.collisions.is_empty()).collect();
+    if with.is_empty() {
+        out += "collision geometry: none\n";
+        return out;
+    }
+    // Meshes are left out here (and listed): the derive refuses them unless told to leave them out.
+    let spheres: Vec<LinkSphere> = link_spheres(tree, cover, Meshes::Skip).unwrap_or_default();
+    out += &format!(
+        "collision geometry: {} elements on {} links, {} spheres at a cover of {} m (meshes are not read)\n",
+        with.iter().map(|l| l.collisions.len()).sum::<usize>(),
+        with.len(),
+        spheres.len(),
+        short(cover)
+    );
+    let width = column_width(with.iter().map(|l| l.name.as_str()));
+    for link in with {
+        let shapes: Vec<String> = link
+            .collisions
+            .iter()
+            .map(|c| match &c.shape {
+                kinematics::model::collision::Shape::Mesh { filename, .. } => format!("mesh {filename}"),
+                shape => shape.name().to_owned(),
+            })
+            .collect();
+        let count = spheres.iter().filter(|s| tree.link(s.link).name == link.name).count();
+        out += &format!("  {}  {count} spheres: {}\n", pad(&link.name, width), shapes.join(", "));
+    }
+    let has: std::collections::BTreeSet<_> = spheres.iter().map(|s| s.link).collect();
+    let pairs = collision_pairs(tree, &|l| has.contains(&l), None);
+    out += &format!(
+        "self-collision pairs without an SRDF: {} (links with spheres on different rigid bodies, less those of bodies joined by one joint)\n",
+        pairs.pairs.len()
+    );
+    out
 }
 
 /// A number in at most 6 decimals, without trailing zeros (`1`, `-0.5`, `0.707107`).
