@@ -292,6 +292,25 @@ fn collides_and_self_collides_agree_with_the_reference() {
 }
 
 #[test]
+fn a_configuration_that_is_not_finite_is_never_free() {
+    let table =
+        [BoxObstacle::from_pose([[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]], [5.0, 5.0, 5.0], [0.1, 0.1, 0.1])];
+    let ball = [SphereObstacle { center: [5.0, -5.0, 5.0], radius: 0.1 }];
+    let env = Environment::new(&ball, &[], &[], &table).unwrap();
+    let only_ball = Environment::new(&ball, &[], &[], &[]).unwrap();
+    let q = [0.0, -1.57, 0.0, -1.57, 0.0, 0.0];
+    // Free, and free of itself, as written: the faults below are the NaN's.
+    assert!(!Ur5Checked::collides(&q, &env) && !Ur5Checked::self_collides(&q));
+    for bad in [f64::NAN, f64::INFINITY] {
+        let mut q = q;
+        q[2] = bad;
+        assert!(Ur5Checked::collides(&q, &env), "{q:?}");
+        assert!(Ur5Checked::collides(&q, &only_ball), "{q:?}");
+        assert!(Ur5Checked::self_collides(&q), "{q:?}");
+    }
+}
+
+#[test]
 fn a_nan_obstacle_is_refused_where_the_environment_is_built() {
     let nan = [SphereObstacle { center: [0.0, f64::NAN, 0.0], radius: 0.1 }];
     let error = Environment::new(&nan, &[], &[], &[]).unwrap_err();

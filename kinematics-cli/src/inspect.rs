@@ -38,7 +38,8 @@ pub fn collision(tree: &KinematicTree) -> String {
         return out;
     }
     // Meshes are left out here (and listed): the derive refuses them unless told to leave them out.
-    let spheres: Vec<LinkSphere> = link_spheres(tree, cover, Meshes::Skip).unwrap_or_default();
+    #[allow(clippy::expect_used, reason = "invariant: with meshes skipped the cover refuses nothing")]
+    let spheres: Vec<LinkSphere> = link_spheres(tree, cover, Meshes::Skip).expect("skipped meshes are no fault");
     out += &format!(
         "collision geometry: {} elements on {} links, {} spheres at a cover of {} m (meshes are not read)\n",
         with.iter().map(|l| l.collisions.len()).sum::<usize>(),

@@ -180,13 +180,18 @@ impl<'a> Environment<'a> {
         self.len() == 0
     }
 
-    /// Whether the sphere of `center` and `radius` touches or overlaps any obstacle.
+    /// Whether the sphere of `center` and `radius` touches or overlaps any obstacle. A centre
+    /// with a NaN or infinite coordinate (a configuration that is not finite) touches every
+    /// obstacle: it is never free.
     #[inline]
     pub fn hits(&self, center: Vec3, radius: f64) -> bool {
-        self.spheres.iter().any(|s| sphere_distance(s, center) <= radius)
-            || self.capsules.iter().any(|c| capsule_distance(c, center) <= radius)
-            || self.cylinders.iter().any(|c| cylinder_distance(c, center) <= radius)
-            || self.boxes.iter().any(|b| box_distance(b, center) <= radius)
+        // `!(d > r)`, not `d <= r`: a NaN distance is a hit.
+        let within = |d: f64| !(d > radius);
+        (!finite(&center) && !self.is_empty())
+            || self.spheres.iter().any(|s| within(sphere_distance(s, center)))
+            || self.capsules.iter().any(|c| within(capsule_distance(c, center)))
+            || self.cylinders.iter().any(|c| within(cylinder_distance(c, center)))
+            || self.boxes.iter().any(|b| within(box_distance(b, center)))
     }
 }
 
@@ -273,9 +278,10 @@ impl CollisionTables<'_> {
     /// spheres pair by pair; the first hit ends the check.
     pub fn self_collides(&self, centers: &[Vec3]) -> bool {
         let bounds = &centers[self.radii.len()..];
+        // `!(d > r)`: a NaN distance (a configuration that is not finite) is a touch.
         let touch = |a: Vec3, ra: f64, b: Vec3, rb: f64| {
             let d = sub(a, b);
-            dot(d, d) <= (ra + rb) * (ra + rb)
+            !(dot(d, d) > (ra + rb) * (ra + rb))
         };
         self.pairs.iter().any(|&(i, j)| {
             let ((sa, ea, ra), (sb, eb, rb)) = (self.links[i], self.links[j]);
@@ -332,6 +338,32 @@ mod tests {
         let flat = [CylinderObstacle { a: [0.0; 3], b: [0.0; 3], radius: 1.0 }];
         assert!(Environment::new(&[], &[], &flat, &[]).is_err());
         assert!(Environment::new(&[], &[], &[], &[]).unwrap().is_empty());
+    }
+
+    #[test]
+    fn a_centre_that_is_not_finite_is_never_free() {
+        let boxes = [BoxObstacle {
+            center: [9.0; 3],
+            rotation: [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],
+            half_extents: [1.0; 3],
+        }];
+        let spheres = [SphereObstacle { center: [9.0; 3], radius: 1.0 }];
+        let capsules = [CapsuleObstacle { a: [9.0; 3], b: [9.0, 9.0, 10.0], radius: 1.0 }];
+        for env in [
+            Environment::new(&[], &[], &[], &boxes).unwrap(),
+            Environment::new(&spheres, &[], &[], &[]).unwrap(),
+            Environment::new(&[], &capsules, &[], &[]).unwrap(),
+        ] {
+            assert!(!env.hits([0.0; 3], 0.1));
+            for bad in [[f64::NAN, 0.0, 0.0], [0.0, f64::INFINITY, 0.0], [0.0, 0.0, f64::NEG_INFINITY]] {
+                assert!(env.hits(bad, 0.1), "{bad:?}");
+            }
+        }
+        let tables = CollisionTables { links: &[(0, 1, 0.1), (1, 2, 0.1)], radii: &[0.1, 0.1], pairs: &[(0, 1)] };
+        let far = [[0.0; 3], [5.0, 0.0, 0.0], [0.0; 3], [5.0, 0.0, 0.0]];
+        assert!(!tables.self_collides(&far));
+        let nan = [[f64::NAN; 3], [5.0, 0.0, 0.0], [f64::NAN; 3], [5.0, 0.0, 0.0]];
+        assert!(tables.self_collides(&nan));
     }
 
     #[test]
