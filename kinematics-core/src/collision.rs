@@ -185,8 +185,8 @@ impl<'a> Environment<'a> {
     /// obstacle: it is never free.
     #[inline]
     pub fn hits(&self, center: Vec3, radius: f64) -> bool {
-        // `!(d > r)`, not `d <= r`: a NaN distance is a hit.
-        let within = |d: f64| !(d > radius);
+        // A NaN distance is a hit.
+        let within = |d: f64| d <= radius || d.is_nan();
         (!finite(&center) && !self.is_empty())
             || self.spheres.iter().any(|s| within(sphere_distance(s, center)))
             || self.capsules.iter().any(|c| within(capsule_distance(c, center)))
@@ -278,10 +278,11 @@ impl CollisionTables<'_> {
     /// spheres pair by pair; the first hit ends the check.
     pub fn self_collides(&self, centers: &[Vec3]) -> bool {
         let bounds = &centers[self.radii.len()..];
-        // `!(d > r)`: a NaN distance (a configuration that is not finite) is a touch.
+        // A NaN distance (a configuration that is not finite) is a touch.
         let touch = |a: Vec3, ra: f64, b: Vec3, rb: f64| {
             let d = sub(a, b);
-            !(dot(d, d) > (ra + rb) * (ra + rb))
+            let squared = dot(d, d);
+            squared <= (ra + rb) * (ra + rb) || squared.is_nan()
         };
         self.pairs.iter().any(|&(i, j)| {
             let ((sa, ea, ra), (sb, eb, rb)) = (self.links[i], self.links[j]);
