@@ -112,7 +112,7 @@ fn batches_lanes_and_f32_equal_the_scalar_centres() {
 
 use kinematics::collision::{BoxObstacle, CapsuleObstacle, CylinderObstacle, Environment, SphereObstacle};
 use kinematics::runtime::ReferenceObstacles;
-use kinematics::runtime::kinematics_model::collision::collision_pairs;
+use kinematics::runtime::kinematics_model::collision::sphere_pairs;
 
 /// A deterministic stream of numbers in [0, 1) (splitmix64).
 struct Stream(u64);
@@ -188,12 +188,11 @@ fn checks<const N: usize>(
 ) -> (usize, usize) {
     let tree = reference.tree();
     let spheres = link_spheres(tree, cover, Meshes::Refuse).unwrap();
-    let with: std::collections::BTreeSet<_> = spheres.iter().map(|s| s.link).collect();
     let disabled = srdf.map(|file| {
         let text = std::fs::read_to_string(format!("{}/{file}", env!("CARGO_MANIFEST_DIR"))).unwrap();
         kinematics::model::srdf::parse_srdf(&text).unwrap().disabled_pairs(tree).unwrap()
     });
-    let pairs = collision_pairs(tree, &|l| with.contains(&l), disabled.as_ref()).pairs;
+    let pairs = sphere_pairs(tree, &spheres, disabled.as_ref()).pairs;
     let mut stream = Stream(seed);
     let (mut hits, mut free, mut banded, mut self_hits, mut self_free) = (0, 0, 0, 0, 0);
     for round in 0..4 {

@@ -25,7 +25,7 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
 /// default cover), meshes listed as not read, and how many link pairs a self-collision check
 /// without an SRDF tests; fixed joints whose mimic had nothing to do.
 pub fn collision(tree: &KinematicTree) -> String {
-    use kinematics::model::collision::{LinkSphere, Meshes, collision_pairs, link_spheres};
+    use kinematics::model::collision::{LinkSphere, Meshes, link_spheres, sphere_pairs};
     let cover = kinematics_compiler::options::DEFAULT_SPHERE_COVER;
     let mut out = String::new();
     if !tree.vacuous_mimics().is_empty() {
@@ -60,8 +60,7 @@ pub fn collision(tree: &KinematicTree) -> String {
         let count = spheres.iter().filter(|s| tree.link(s.link).name == link.name).count();
         out += &format!("  {}  {count} spheres: {}\n", pad(&link.name, width), shapes.join(", "));
     }
-    let has: std::collections::BTreeSet<_> = spheres.iter().map(|s| s.link).collect();
-    let pairs = collision_pairs(tree, &|l| has.contains(&l), None);
+    let pairs = sphere_pairs(tree, &spheres, None);
     out += &format!(
         "self-collision pairs without an SRDF: {} (links with spheres on different rigid bodies, less those of bodies joined by one joint)\n",
         pairs.pairs.len()

@@ -10,7 +10,7 @@
 //! plan), so nothing is worked out twice.
 
 pub use kinematics_model::collision::Meshes;
-use kinematics_model::collision::{CollisionPairs, LinkSphere, MeshRefused, collision_pairs, link_spheres};
+use kinematics_model::collision::{CollisionPairs, LinkSphere, MeshRefused, link_spheres, sphere_pairs};
 use kinematics_model::srdf::Srdf;
 use kinematics_model::{ExactAngles, FLOATING_BASE_JOINT, KinematicTree, UnknownLink};
 
@@ -458,8 +458,7 @@ fn collision_applies(options: &Options, tree: &KinematicTree) -> Result<Option<C
         }
         None => None,
     };
-    let has: std::collections::BTreeSet<_> = spheres.iter().map(|s| s.link).collect();
-    let pairs = collision_pairs(tree, &|l| has.contains(&l), disabled.as_ref());
+    let pairs = sphere_pairs(tree, &spheres, disabled.as_ref());
     Ok(Some(CollisionPlan { spheres, pairs }))
 }
 

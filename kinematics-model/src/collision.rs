@@ -420,6 +420,17 @@ pub fn collision_pairs(
     CollisionPairs { pairs, rule: if disabled.is_some() { PairRule::Srdf } else { PairRule::Adjacent } }
 }
 
+/// [`collision_pairs`] of the links that carry `spheres` (a link whose geometry is all meshes
+/// left out has none, and is in no pair).
+pub fn sphere_pairs(
+    tree: &KinematicTree,
+    spheres: &[LinkSphere],
+    disabled: Option<&BTreeSet<(LinkId, LinkId)>>,
+) -> CollisionPairs {
+    let with: BTreeSet<LinkId> = spheres.iter().map(|s| s.link).collect();
+    collision_pairs(tree, &|l| with.contains(&l), disabled)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -83,7 +83,8 @@ fn distance(a: [f64; 3], b: [f64; 3]) -> f64 {
     ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt()
 }
 
-/// The links' poses, compiled (every point is built on them).
+/// The links' poses, compiled once: the sphere centres and the bounding spheres' centres are both
+/// built on them.
 fn compiled_links(cx: &Context<'_>, frame: &LinkFrame) -> Result<Compiled, CompileError> {
     let tree = cx.tree();
     let request = Request {
@@ -95,67 +96,81 @@ fn compiled_links(cx: &Context<'_>, frame: &LinkFrame) -> Result<Compiled, Compi
     compile(tree, &request)
 }
 
-/// The generic body of `sphere_centers`, named `name`, and its function's doc.
-pub(super) fn sphere_centers(cx: &Context<'_>, name: &str) -> Result<(TokenStream, String), CompileError> {
+/// Every generic item collision needs, from one compile of the links' poses: the body of
+/// `sphere_centers` (named `name`), the checks' body (the spheres' centres, then the links'
+/// bounding spheres'), and the tables the core's checks read; and `sphere_centers`' doc.
+pub(super) fn bodies(cx: &Context<'_>, name: &str) -> Result<(Vec<TokenStream>, String), CompileError> {
     let frame = link_frame(cx);
     let mut compiled = compiled_links(cx, &frame)?;
     let centers = compiled.points(&frame.points);
+    let bound_points: Vec<(usize, [f64; 3])> = frame.bounds.iter().enumerate().map(|(f, (c, _))| (f, *c)).collect();
+    let mut with_bounds = centers.clone();
+    with_bounds.extend(compiled.points(&bound_points));
     let doc = format!(
         "The centres of the robot's {} collision spheres in `{}` (radii in `SPHERE_RADII`, links in `SPHERE_LINKS`)",
         frame.points.len(),
         cx.base
     );
     let body_doc = format!(" {doc}.");
-    Ok((emit_points(&compiled, &centers, &cx.body_options(name), &body_doc), doc))
+    let checks_doc =
+        " Every collision sphere's centre, then each link's bounding sphere's (links with spheres in tree order).";
+    let mut items = vec![
+        emit_points(&compiled, &centers, &cx.body_options(name), &body_doc),
+        emit_points(&compiled, &with_bounds, &cx.body_options(CHECK_BODY), checks_doc),
+    ];
+    items.extend(tables(cx, &frame));
+    Ok((items, doc))
 }
 
-/// `collides` and `self_collides` on the type (as the surface lists them), their body computing
-/// the spheres' and the bounding spheres' centres, and the tables the core's checks read.
-pub(super) fn checks(cx: &Context<'_>, out: &mut Functions) -> Result<(), CompileError> {
-    let Some(plan) = cx.spec.robot.collision() else { return Ok(()) };
-    let frame = link_frame(cx);
-    let mut compiled = compiled_links(cx, &frame)?;
-    let mut points = frame.points.clone();
-    points.extend(frame.bounds.iter().enumerate().map(|(f, (c, _))| (f, *c)));
-    let centers = compiled.points(&points);
-    let body_doc =
-        " Every collision sphere's centre, then each link's bounding sphere's (links with spheres in tree order).";
-    out.generic.push(emit_points(&compiled, &centers, &cx.body_options(CHECK_BODY), body_doc));
+/// The collision tables (each link's spheres' range and bounding sphere's radius, the radii, the
+/// link pairs the self-collision check tests), as constants of the block's `bodies` module.
+fn tables(cx: &Context<'_>, frame: &LinkFrame) -> Vec<TokenStream> {
     let p = &cx.p;
+    let pairs = cx.spec.robot.collision().map_or(&[][..], |plan| plan.pairs.pairs.as_slice());
     let mut start = 0;
-    let links = frame.links.iter().zip(&frame.bounds).map(|(&link, &(_, radius))| {
-        let count = frame.points.iter().filter(|(f, _)| frame.links[*f] == link).count();
-        let (s, e) = (Literal::usize_unsuffixed(start), Literal::usize_unsuffixed(start + count));
-        start += count;
-        let radius = super::number(radius);
-        quote!((#s, #e, #radius))
-    });
-    let links: Vec<TokenStream> = links.collect();
+    let links: Vec<TokenStream> = (0..frame.links.len())
+        .map(|f| {
+            let count = frame.points.iter().filter(|(g, _)| *g == f).count();
+            let (s, e) = (Literal::usize_unsuffixed(start), Literal::usize_unsuffixed(start + count));
+            start += count;
+            let radius = super::number(frame.bounds[f].1);
+            quote!((#s, #e, #radius))
+        })
+        .collect();
     let index = |l: kinematics_model::LinkId| {
         #[allow(clippy::expect_used, reason = "invariant: pairs are of links with spheres")]
         let i = frame.links.binary_search(&l.0).expect("a paired link has spheres");
         Literal::usize_unsuffixed(i)
     };
-    let pairs = plan.pairs.pairs.iter().map(|&(a, b)| {
+    let pairs = pairs.iter().map(|&(a, b)| {
         let (a, b) = (index(a), index(b));
         quote!((#a, #b))
     });
-    out.generic.push(quote! {
-        /// The collision tables: each link with spheres (its spheres' range, its bounding
-        /// sphere's radius), the spheres' radii, the link pairs the self-collision check tests.
-        #[allow(clippy::approx_constant, clippy::unreadable_literal)] // radii are kept as given
-        pub const COLLISION_TABLES: #p::collision::CollisionTables<'static> = #p::collision::CollisionTables {
-            links: &[#(#links),*],
-            radii: &RADII,
-            pairs: &[#(#pairs),*],
-        };
-    });
     let radii = cx.spheres().iter().map(|s| super::number(s.sphere.radius));
     let count = Literal::usize_unsuffixed(cx.spheres().len());
-    out.generic.push(quote! {
-        #[allow(clippy::approx_constant, clippy::unreadable_literal)] // radii are kept as given
-        const RADII: [f64; #count] = [#(#radii),*];
-    });
+    vec![
+        quote! {
+            /// The collision tables: each link with spheres (its spheres' range, its bounding
+            /// sphere's radius), the spheres' radii, the link pairs the self-collision check tests.
+            #[allow(clippy::approx_constant, clippy::unreadable_literal)] // radii are kept as given
+            pub const COLLISION_TABLES: #p::collision::CollisionTables<'static> = #p::collision::CollisionTables {
+                links: &[#(#links),*],
+                radii: &RADII,
+                pairs: &[#(#pairs),*],
+            };
+        },
+        quote! {
+            #[allow(clippy::approx_constant, clippy::unreadable_literal)] // radii are kept as given
+            const RADII: [f64; #count] = [#(#radii),*];
+        },
+    ]
+}
+
+/// `collides` and `self_collides` on the type, as the surface lists them, on the checks' body and
+/// tables ([`bodies`]).
+pub(super) fn checks(cx: &Context<'_>, out: &mut Functions) {
+    let Some(plan) = cx.spec.robot.collision() else { return };
+    let p = &cx.p;
     let g = proc_macro2::Ident::new(CHECK_BODY, proc_macro2::Span::call_site());
     let pairs_rule = match plan.pairs.rule {
         kinematics_model::collision::PairRule::Srdf => "less the SRDF's disabled pairs",
@@ -165,42 +180,34 @@ pub(super) fn checks(cx: &Context<'_>, out: &mut Functions) -> Result<(), Compil
     };
     for (function, signature) in cx.render.collision_items() {
         let sig = signature.tokens();
-        out.typed.push(match function {
-            CollisionFunction::Collides => {
-                let doc = format!(
+        let (doc, check) = match function {
+            CollisionFunction::Collides => (
+                format!(
                     "Whether the robot at `q` touches or overlaps an obstacle of `environment` (its {} spheres; each \
                      link's bounding sphere tested first, the first hit ending the check; any order of obstacles).",
                     cx.spheres().len()
-                );
-                quote! {
-                    #[doc = #doc]
-                    #[inline]
-                    #[allow(clippy::redundant_closure)]
-                    #sig {
-                        let centers = #p::dispatch(#[inline(always)] || #g(q));
-                        COLLISION_TABLES.collides(&centers, environment)
-                    }
-                }
-            }
-            CollisionFunction::SelfCollides => {
-                let doc = format!(
+                ),
+                quote!(COLLISION_TABLES.collides(&centers, environment)),
+            ),
+            CollisionFunction::SelfCollides => (
+                format!(
                     "Whether two links of the robot at `q` touch ({} pairs: links with spheres on different rigid bodies, \
                      {pairs_rule}).",
                     plan.pairs.pairs.len()
-                );
-                quote! {
-                    #[doc = #doc]
-                    #[inline]
-                    #[allow(clippy::redundant_closure)]
-                    #sig {
-                        let centers = #p::dispatch(#[inline(always)] || #g(q));
-                        COLLISION_TABLES.self_collides(&centers)
-                    }
-                }
+                ),
+                quote!(COLLISION_TABLES.self_collides(&centers)),
+            ),
+        };
+        out.typed.push(quote! {
+            #[doc = #doc]
+            #[inline]
+            #[allow(clippy::redundant_closure)]
+            #sig {
+                let centers = #p::dispatch(#[inline(always)] || #g(q));
+                #check
             }
         });
     }
-    Ok(())
 }
 
 #[cfg(test)]

@@ -86,8 +86,8 @@ pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenSt
     for output in surface::outputs(options) {
         let body = match output {
             Output::SphereCenters => {
-                let (body, doc) = collision::sphere_centers(&cx, &output.body(cx.one))?;
-                out.generic.push(body);
+                let (bodies, doc) = collision::bodies(&cx, &output.body(cx.one))?;
+                out.generic.extend(bodies);
                 out.on_type(&cx, output, &doc);
                 continue;
             }
@@ -108,7 +108,7 @@ pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenSt
         out.on_type(&cx, output, &doc);
     }
     ik::ik(&cx, &mut out)?;
-    collision::checks(&cx, &mut out)?;
+    collision::checks(&cx, &mut out);
     Ok(impls::robot_block(self_ty, &cx, &out))
 }
 
