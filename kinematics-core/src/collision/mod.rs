@@ -1,0 +1,25 @@
+//! Collision checking at run time, for generated code: obstacles (spheres, capsules, cylinders,
+//! oriented boxes), an environment borrowing slices of them, and the checks a compiled robot's
+//! `collides` and `self_collides` run on its sphere centres and the tables the compiler wrote,
+//! on one configuration or on lanes of them, each with its own verdict.
+//!
+//! No heap: an [`Environment`] borrows the caller's slices. A NaN or infinite obstacle never makes
+//! a configuration free: [`Environment::new`] refuses it (and a negative or zero size), so a
+//! check never meets one; a configuration with a NaN or infinite entry is colliding. Touching
+//! counts as colliding. The answer does not depend on the order of the obstacles: every obstacle
+//! is tested until one is hit.
+
+mod obstacles;
+mod tables;
+mod verdicts;
+
+pub use obstacles::{
+    BoxObstacle, CapsuleObstacle, CylinderObstacle, Environment, ObstacleError, SphereObstacle, Vec3,
+};
+pub use tables::CollisionTables;
+pub use verdicts::{CheckLanes, Flags, Flags32x8, Flags32x16, Flags64x4, Flags64x8, LaneMask, non_finite};
+#[doc(hidden)]
+#[inline(always)]
+pub fn box_hits<L: CheckLanes>(b: &BoxObstacle, c: &[L; 3], r: L) -> L::Flags {
+    obstacles::Obstacle::hits(b, c, r)
+}
