@@ -16,11 +16,11 @@ use kinematics::model::collision::{Meshes, link_spheres};
 use kinematics::{Configurations, Kinematics};
 
 #[derive(Kinematics)]
-#[kinematics(urdf = "robots/panda_spherized.urdf", collision(srdf = "robots/panda.srdf"))]
+#[kinematics(urdf = "robots/panda_spherized.urdf", collision(srdf = "robots/panda.srdf"), scalars(f64, f32))]
 struct Panda;
 
 #[derive(Kinematics)]
-#[kinematics(urdf = "robots/ur5_spherized.urdf", collision)]
+#[kinematics(urdf = "robots/ur5_spherized.urdf", collision, scalars(f64, f32))]
 struct Ur5;
 
 const IDENTITY: [[f64; 3]; 3] = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
@@ -95,6 +95,36 @@ macro_rules! robot {
                 k = (k + 1) % qs.len();
                 black_box(<$robot>::self_collides(black_box(&qs[k])))
             })
+        });
+        // Batches: per configuration, each with its own verdict (criterion's throughput).
+        let qs32: Vec<[f32; $n]> = qs.iter().map(|q| q.map(|x| x as f32)).collect();
+        let free32: Vec<[f32; $n]> = free.iter().map(|q| q.map(|x| x as f32)).collect();
+        let mut centers64 = vec![[[0.0; 3]; <$robot>::SPHERE_RADII.len()]; qs.len()];
+        let mut centers32 = vec![[[0.0f32; 3]; <$robot>::SPHERE_RADII.len()]; qs.len()];
+        let mut verdicts = vec![false; qs.len()];
+        group.throughput(criterion::Throughput::Elements(qs.len() as u64));
+        group.bench_function("sphere_centers_batch", |b| {
+            b.iter(|| <$robot>::sphere_centers_batch(black_box(&qs), &mut centers64).unwrap())
+        });
+        group.bench_function("sphere_centers_batch_f32", |b| {
+            b.iter(|| <$robot>::sphere_centers_batch_f32(black_box(&qs32), &mut centers32).unwrap())
+        });
+        group.bench_function("collides_tabletop_batch", |b| {
+            b.iter(|| <$robot>::collides_batch(black_box(&qs), &scene, &mut verdicts).unwrap())
+        });
+        group.bench_function("collides_tabletop_batch_f32", |b| {
+            b.iter(|| <$robot>::collides_batch_f32(black_box(&qs32), &scene, &mut verdicts).unwrap())
+        });
+        group.bench_function("self_collides_batch_f32", |b| {
+            b.iter(|| <$robot>::self_collides_batch_f32(black_box(&qs32), &mut verdicts).unwrap())
+        });
+        group.throughput(criterion::Throughput::Elements(free.len() as u64));
+        let mut free_verdicts = vec![false; free.len()];
+        group.bench_function("collides_tabletop_all_free_batch", |b| {
+            b.iter(|| <$robot>::collides_batch(black_box(&free), &scene, &mut free_verdicts).unwrap())
+        });
+        group.bench_function("collides_tabletop_all_free_batch_f32", |b| {
+            b.iter(|| <$robot>::collides_batch_f32(black_box(&free32), &scene, &mut free_verdicts).unwrap())
         });
         group.finish();
     }};

@@ -175,17 +175,87 @@ fn obstacles(stream: &mut Stream, reach: f64, each: usize) -> Obstacles {
     o
 }
 
-/// `collides` and `self_collides` against the reference's signed distances (parry3d-f64 on the
-/// reference's own sphere centres) on every configuration whose distance is farther than 1e-9 m
-/// from zero; those within are counted, not judged. Both verdicts must occur.
-fn checks<const N: usize>(
-    collides: impl Fn(&[f64; N], &Environment<'_>) -> bool,
-    self_collides: impl Fn(&[f64; N]) -> bool,
-    reference: &kinematics::ReferenceFk,
-    cover: f64,
-    seed: u64,
-    srdf: Option<&str>,
-) -> (usize, usize) {
+/// A derived robot's checks, every form, on one configuration or a batch of them.
+trait Checks<const N: usize> {
+    fn reference() -> kinematics::ReferenceFk;
+    fn collides(q: &[f64; N], env: &Environment<'_>) -> bool;
+    fn self_collides(q: &[f64; N]) -> bool;
+    /// `collides` and `self_collides` by their batches, column batches and generic forms on
+    /// `F64x4` and `F64x8`, each form's verdicts checked equal to the others'.
+    fn batches(qs: &[[f64; N]], env: &Environment<'_>) -> (Vec<bool>, Vec<bool>);
+}
+
+/// The verdicts of every batch form, held equal to each other.
+macro_rules! checks {
+    ($robot:ty, $n:literal) => {
+        impl Checks<$n> for $robot {
+            fn reference() -> kinematics::ReferenceFk {
+                <$robot>::reference().unwrap()
+            }
+            fn collides(q: &[f64; $n], env: &Environment<'_>) -> bool {
+                <$robot>::collides(q, env)
+            }
+            fn self_collides(q: &[f64; $n]) -> bool {
+                <$robot>::self_collides(q)
+            }
+            fn batches(qs: &[[f64; $n]], env: &Environment<'_>) -> (Vec<bool>, Vec<bool>) {
+                let mut verdicts = [vec![false; qs.len()], vec![false; qs.len()]];
+                <$robot>::collides_batch(qs, env, &mut verdicts[0]).unwrap();
+                <$robot>::self_collides_batch(qs, &mut verdicts[1]).unwrap();
+                let columns: Vec<Vec<f64>> = (0..$n).map(|j| qs.iter().map(|q| q[j]).collect()).collect();
+                let columns: [&[f64]; $n] = std::array::from_fn(|j| columns[j].as_slice());
+                let mut by_columns = [vec![false; qs.len()], vec![false; qs.len()]];
+                <$robot>::collides_batch_columns(columns, env, &mut by_columns[0]).unwrap();
+                <$robot>::self_collides_batch_columns(columns, &mut by_columns[1]).unwrap();
+                assert_eq!(by_columns, verdicts, "column batches");
+                // The generic form on both lane widths, a pack at a time (the tail repeats the last).
+                fn packs<L: kinematics::Lanes<Scalar = f64> + kinematics::collision::CheckLanes, const N: usize>(
+                    qs: &[[f64; N]],
+                    check: impl Fn(&[L; N]) -> kinematics::collision::LaneMask,
+                ) -> Vec<bool> {
+                    let mut out = Vec::new();
+                    for start in (0..qs.len()).step_by(L::LANES) {
+                        let lanes: [L; N] =
+                            std::array::from_fn(|j| L::from_fn(|i| qs[(start + i).min(qs.len() - 1)][j]));
+                        let mask = check(&lanes);
+                        out.extend((0..L::LANES).map(|i| mask.lane(i)).take(qs.len() - start));
+                    }
+                    out
+                }
+                let four = [
+                    packs::<F64x4, $n>(qs, |q| <$robot>::collides_generic(q, env)),
+                    packs::<F64x4, $n>(qs, |q| <$robot>::self_collides_generic(q)),
+                ];
+                let eight = [
+                    packs::<kinematics::F64x8, $n>(qs, |q| <$robot>::collides_generic(q, env)),
+                    packs::<kinematics::F64x8, $n>(qs, |q| <$robot>::self_collides_generic(q)),
+                ];
+                assert_eq!(four, verdicts, "four lanes");
+                assert_eq!(eight, verdicts, "eight lanes");
+                let [collides, itself] = verdicts;
+                (collides, itself)
+            }
+        }
+    };
+}
+
+/// What `checks` saw: configurations judged colliding and free, and within 1e-9 m of contact,
+/// for `collides` and for `self_collides`.
+#[derive(Debug, Default)]
+struct Seen {
+    hits: usize,
+    free: usize,
+    banded: usize,
+    self_hits: usize,
+    self_free: usize,
+}
+
+/// `collides` (obstacles and self) and `self_collides` against the reference's signed distances
+/// (parry3d-f64 on the reference's own sphere centres) on every configuration whose verdict the
+/// distances decide by more than 1e-9 m; those within are counted, not judged. The batches and
+/// the lanes equal the functions on one configuration.
+fn checks<R: Checks<N>, const N: usize>(cover: f64, seed: u64, srdf: Option<&str>) -> Seen {
+    let reference = R::reference();
     let tree = reference.tree();
     let spheres = link_spheres(tree, cover, Meshes::Refuse).unwrap();
     let disabled = srdf.map(|file| {
@@ -194,40 +264,46 @@ fn checks<const N: usize>(
     });
     let pairs = sphere_pairs(tree, &spheres, disabled.as_ref()).pairs;
     let mut stream = Stream(seed);
-    let (mut hits, mut free, mut banded, mut self_hits, mut self_free) = (0, 0, 0, 0, 0);
+    let mut seen = Seen::default();
     for round in 0..4 {
         let o = obstacles(&mut stream, 0.8, 2 + round);
         let env = Environment::new(&o.spheres, &o.capsules, &o.cylinders, &o.boxes).unwrap();
         let reference_obstacles = ReferenceObstacles::new(&o.spheres, &o.capsules, &o.cylinders, &o.boxes);
-        for q in Configurations::new(tree).skip(100 * round).take(300) {
-            let q: [f64; N] = q.try_into().unwrap();
-            let d = reference.obstacle_distance(&q, &spheres, &reference_obstacles).unwrap();
-            assert!(!d.is_nan(), "the reference measured nothing at {q:?}");
-            if d.abs() <= 1e-9 {
-                banded += 1;
-            } else {
-                assert_eq!(collides(&q, &env), d < 0.0, "collides at {q:?}: reference distance {d:e}");
-                if d < 0.0 { hits += 1 } else { free += 1 }
+        let qs: Vec<[f64; N]> =
+            Configurations::new(tree).skip(100 * round).take(301).map(|q| q.try_into().unwrap()).collect();
+        let (collides, itself) = R::batches(&qs, &env);
+        for (k, q) in qs.iter().enumerate() {
+            assert_eq!((collides[k], itself[k]), (R::collides(q, &env), R::self_collides(q)), "batch at {q:?}");
+            let d = reference.obstacle_distance(q, &spheres, &reference_obstacles).unwrap();
+            let s = reference.self_distance(q, &spheres, &pairs).unwrap();
+            assert!(!d.is_nan() && !s.is_nan(), "the reference measured nothing at {q:?}");
+            if s.abs() > 1e-9 {
+                assert_eq!(itself[k], s < 0.0, "self_collides at {q:?}: reference distance {s:e}");
+                if s < 0.0 { seen.self_hits += 1 } else { seen.self_free += 1 }
             }
-            if round == 0 {
-                let s = reference.self_distance(&q, &spheres, &pairs).unwrap();
-                if s.abs() > 1e-9 {
-                    assert_eq!(self_collides(&q), s < 0.0, "self_collides at {q:?}: reference distance {s:e}");
-                    if s < 0.0 { self_hits += 1 } else { self_free += 1 }
-                }
+            let nearest = d.min(s);
+            if d < -1e-9 || s < -1e-9 || nearest > 1e-9 {
+                assert_eq!(collides[k], nearest < 0.0, "collides at {q:?}: distances {d:e}, self {s:e}");
+                if nearest < 0.0 { seen.hits += 1 } else { seen.free += 1 }
+            } else {
+                seen.banded += 1;
             }
         }
         // With no obstacle, only the robot itself can collide.
         let empty = Environment::empty();
-        assert!(Configurations::new(tree).take(50).all(|q| !collides(&q.try_into().unwrap(), &empty)));
+        for q in qs.iter().take(50) {
+            assert_eq!(R::collides(q, &empty), R::self_collides(q), "{q:?}");
+        }
     }
-    eprintln!(
-        "{}: {hits} colliding, {free} free, {banded} within 1e-9 m of contact; self: {self_hits} colliding, {self_free} free",
-        tree.name()
-    );
-    assert!(hits > 0 && free > 0, "{hits} colliding, {free} free: the environments test one verdict only");
-    (self_hits, self_free)
+    eprintln!("{}: {seen:?}", tree.name());
+    seen
 }
+
+checks!(Ur5Checked, 6);
+checks!(Panda, 7);
+checks!(PandaSrdf, 7);
+checks!(Ur5Srdf, 6);
+checks!(Ur5PrimitivesChecked, 6);
 
 /// The arms without an SRDF: pairs less adjacent bodies. Obstacles are in `BASE`'s frame, the
 /// root here, as the reference's distances are.
@@ -252,42 +328,67 @@ pub struct Ur5PrimitivesChecked;
 
 #[test]
 fn collides_and_self_collides_agree_with_the_reference() {
-    let ur5 = checks(Ur5Checked::collides, Ur5Checked::self_collides, &Ur5Checked::reference().unwrap(), 0.01, 1, None);
-    let panda = checks(Panda::collides, Panda::self_collides, &Panda::reference().unwrap(), 0.01, 2, None);
+    let ur5 = checks::<Ur5Checked, 6>(0.01, 1, None);
+    let panda = checks::<Panda, 7>(0.01, 2, None);
     // With the SRDFs' disabled pairs.
-    let panda_srdf = checks(
-        PandaSrdf::collides,
-        PandaSrdf::self_collides,
-        &PandaSrdf::reference().unwrap(),
-        0.01,
-        4,
-        Some("robots/panda.srdf"),
-    );
-    let ur5_srdf = checks(
-        Ur5Srdf::collides,
-        Ur5Srdf::self_collides,
-        &Ur5Srdf::reference().unwrap(),
-        0.01,
-        5,
-        Some("robots/ur5.srdf"),
-    );
+    let panda_srdf = checks::<PandaSrdf, 7>(0.01, 4, Some("robots/panda.srdf"));
+    let ur5_srdf = checks::<Ur5Srdf, 6>(0.01, 5, Some("robots/ur5.srdf"));
     // Without an SRDF the primitives arm's wrist links (two joints apart, covered to 2 cm) touch
-    // at every configuration: its self check is compared, but only the others show both verdicts.
-    checks(
-        Ur5PrimitivesChecked::collides,
-        Ur5PrimitivesChecked::self_collides,
-        &Ur5PrimitivesChecked::reference().unwrap(),
-        0.02,
-        3,
-        None,
-    );
-    for (self_hits, self_free) in [ur5, panda, panda_srdf] {
-        assert!(self_hits > 0 && self_free > 0, "{self_hits} self-colliding, {self_free} free");
+    // at every configuration: its checks are compared, but only the others show both verdicts.
+    let primitives = checks::<Ur5PrimitivesChecked, 6>(0.02, 3, None);
+    for seen in [&ur5, &panda, &panda_srdf] {
+        assert!(seen.hits > 0 && seen.free > 0, "{seen:?}: the environments test one verdict only");
+        assert!(seen.self_hits > 0 && seen.self_free > 0, "{seen:?}: the configurations test one verdict only");
     }
     // VAMP's UR5 SRDF disables wrist_2_link against wrist_3_link but not against fts_robotside,
     // which is bolted to wrist_3_link, and their spheres overlap by 1.25 cm at every
     // configuration: with that SRDF the arm always self-collides (the reference agrees).
-    assert_eq!(ur5_srdf.1, 0, "{ur5_srdf:?}");
+    for seen in [&ur5_srdf, &primitives] {
+        assert!(seen.self_free == 0 && seen.free == 0 && seen.hits > 0, "{seen:?}");
+    }
+}
+
+/// `f32` checks against the reference with a band of 1e-4 m, and their batches and lanes equal
+/// to the `f32` function on one configuration.
+#[test]
+fn f32_checks_agree_with_the_reference() {
+    let reference = Ur5::reference().unwrap();
+    let tree = reference.tree();
+    let spheres = link_spheres(tree, 0.01, Meshes::Refuse).unwrap();
+    let pairs = sphere_pairs(tree, &spheres, None).pairs;
+    let mut stream = Stream(11);
+    let (mut judged, mut banded) = (0, 0);
+    for round in 0..3 {
+        let o = obstacles(&mut stream, 0.8, 2 + round);
+        let env = Environment::new(&o.spheres, &o.capsules, &o.cylinders, &o.boxes).unwrap();
+        let reference_obstacles = ReferenceObstacles::new(&o.spheres, &o.capsules, &o.cylinders, &o.boxes);
+        let qs: Vec<[f32; 6]> =
+            Configurations::new(tree).skip(50 * round).take(203).map(|q| std::array::from_fn(|j| q[j] as f32)).collect();
+        let mut verdicts = [vec![false; qs.len()], vec![false; qs.len()]];
+        Ur5::collides_batch_f32(&qs, &env, &mut verdicts[0]).unwrap();
+        Ur5::self_collides_batch_f32(&qs, &mut verdicts[1]).unwrap();
+        for (k, q) in qs.iter().enumerate() {
+            assert_eq!(verdicts[0][k], Ur5::collides_f32(q, &env), "batch at {q:?}");
+            assert_eq!(verdicts[1][k], Ur5::self_collides_f32(q), "batch at {q:?}");
+            let lanes: [kinematics::F32x16; 6] = std::array::from_fn(|j| kinematics::F32x16::splat(q[j]));
+            assert_eq!(Ur5::collides_generic(&lanes, &env).bits(), if verdicts[0][k] { 0xffff } else { 0 });
+            let q64 = q.map(f64::from);
+            let d = reference.obstacle_distance(&q64, &spheres, &reference_obstacles).unwrap();
+            let s = reference.self_distance(&q64, &spheres, &pairs).unwrap();
+            if s.abs() > 1e-4 {
+                assert_eq!(verdicts[1][k], s < 0.0, "self_collides_f32 at {q:?}: reference distance {s:e}");
+            }
+            let nearest = d.min(s);
+            if d < -1e-4 || s < -1e-4 || nearest > 1e-4 {
+                assert_eq!(verdicts[0][k], nearest < 0.0, "collides_f32 at {q:?}: distances {d:e}, self {s:e}");
+                judged += 1;
+            } else {
+                banded += 1;
+            }
+        }
+    }
+    eprintln!("f32: {judged} judged, {banded} within 1e-4 m of contact");
+    assert!(judged > 500, "{judged} judged");
 }
 
 #[test]
@@ -306,6 +407,26 @@ fn a_configuration_that_is_not_finite_is_never_free() {
         assert!(Ur5Checked::collides(&q, &env), "{q:?}");
         assert!(Ur5Checked::collides(&q, &only_ball), "{q:?}");
         assert!(Ur5Checked::self_collides(&q), "{q:?}");
+        assert!(Ur5::collides_f32(&q.map(|x| x as f32), &env) && Ur5::self_collides_f32(&q.map(|x| x as f32)));
+        // In a batch, only its own lane: the others are free.
+        let mut qs = vec![[0.0, -1.57, 0.0, -1.57, 0.0, 0.0]; 11];
+        qs[6] = q;
+        let mut out = vec![false; 11];
+        Ur5Checked::collides_batch(&qs, &env, &mut out).unwrap();
+        assert_eq!(out.iter().positions(), vec![6]);
+        Ur5Checked::self_collides_batch(&qs, &mut out).unwrap();
+        assert_eq!(out.iter().positions(), vec![6]);
+    }
+}
+
+/// The indices of the `true` entries.
+trait Positions {
+    fn positions(self) -> Vec<usize>;
+}
+
+impl<'a, I: Iterator<Item = &'a bool>> Positions for I {
+    fn positions(self) -> Vec<usize> {
+        self.enumerate().filter(|(_, b)| **b).map(|(i, _)| i).collect()
     }
 }
 

@@ -241,7 +241,7 @@ pub fn stub(input: &syn::DeriveInput, options: Option<&KinematicsInput>, implied
         }
     }
     if implied.options.collision.is_some() {
-        for (_, signature) in render.collision_items() {
+        for (_, _, signature) in render.collision_items() {
             let sig = signature.tokens();
             functions.push(quote!(#attrs #sig { ::core::unreachable!(#message) }));
         }

@@ -10,14 +10,14 @@ use quote::quote;
 
 use super::Context;
 use super::functions::Functions;
-use super::surface::CollisionFunction;
-use crate::emit::emit_points;
+use super::surface::{CollisionFunction, Form, ScalarType};
+use crate::emit::{emit_function, emit_points};
 use crate::error::CompileError;
 use crate::ik::geometry::transform_point;
 use crate::request::{Compiled, Request, compile};
 
-/// The name of the body computing the spheres' centres then the links' bounding spheres'.
-const CHECK_BODY: &str = "generic_collision_centers";
+/// The name of the body computing the poses of the links with spheres, which the checks take.
+const CHECK_BODY: &str = "generic_collision_poses";
 
 /// The links with spheres (tree order), each sphere's place in its link's frame, and each link's
 /// bounding sphere there.
@@ -97,44 +97,44 @@ fn compiled_links(cx: &Context<'_>, frame: &LinkFrame) -> Result<Compiled, Compi
 }
 
 /// Every generic item collision needs, from one compile of the links' poses: the body of
-/// `sphere_centers` (named `name`), the checks' body (the spheres' centres, then the links'
-/// bounding spheres'), and the tables the core's checks read; and `sphere_centers`' doc.
+/// `sphere_centers` (named `name`), the checks' body (the poses of the links with spheres), and
+/// the tables the core's checks read; and `sphere_centers`' doc.
 pub(super) fn bodies(cx: &Context<'_>, name: &str) -> Result<(Vec<TokenStream>, String), CompileError> {
     let frame = link_frame(cx);
     let mut compiled = compiled_links(cx, &frame)?;
     let centers = compiled.points(&frame.points);
-    let bound_points: Vec<(usize, [f64; 3])> = frame.bounds.iter().enumerate().map(|(f, (c, _))| (f, *c)).collect();
-    let mut with_bounds = centers.clone();
-    with_bounds.extend(compiled.points(&bound_points));
     let doc = format!(
         "The centres of the robot's {} collision spheres in `{}` (radii in `SPHERE_RADII`, links in `SPHERE_LINKS`)",
         frame.points.len(),
         cx.base
     );
     let body_doc = format!(" {doc}.");
-    let checks_doc =
-        " Every collision sphere's centre, then each link's bounding sphere's (links with spheres in tree order).";
     let mut items = vec![
         emit_points(&compiled, &centers, &cx.body_options(name), &body_doc),
-        emit_points(&compiled, &with_bounds, &cx.body_options(CHECK_BODY), checks_doc),
+        emit_function(&compiled, &cx.body_options(CHECK_BODY)),
     ];
     items.extend(tables(cx, &frame));
     Ok((items, doc))
 }
 
-/// The collision tables (each link's spheres' range and bounding sphere's radius, the radii, the
-/// link pairs the self-collision check tests), as constants of the block's `bodies` module.
+/// The collision tables (each link's spheres' range and bounding sphere, each sphere's centre in
+/// its link's frame and radius, the link pairs the self-collision check tests), as constants of
+/// the block's `bodies` module.
 fn tables(cx: &Context<'_>, frame: &LinkFrame) -> Vec<TokenStream> {
     let p = &cx.p;
     let pairs = cx.spec.robot.collision().map_or(&[][..], |plan| plan.pairs.pairs.as_slice());
+    let point = |v: &[f64; 3]| {
+        let [x, y, z] = v.map(super::number);
+        quote!([#x, #y, #z])
+    };
     let mut start = 0;
     let links: Vec<TokenStream> = (0..frame.links.len())
         .map(|f| {
             let count = frame.points.iter().filter(|(g, _)| *g == f).count();
             let (s, e) = (Literal::usize_unsuffixed(start), Literal::usize_unsuffixed(start + count));
             start += count;
-            let radius = super::number(frame.bounds[f].1);
-            quote!((#s, #e, #radius))
+            let (center, radius) = (point(&frame.bounds[f].0), super::number(frame.bounds[f].1));
+            quote!((#s, #e, #center, #radius))
         })
         .collect();
     let index = |l: kinematics_model::LinkId| {
@@ -146,15 +146,18 @@ fn tables(cx: &Context<'_>, frame: &LinkFrame) -> Vec<TokenStream> {
         let (a, b) = (index(a), index(b));
         quote!((#a, #b))
     });
+    let centers = frame.points.iter().map(|(_, p)| point(p));
     let radii = cx.spheres().iter().map(|s| super::number(s.sphere.radius));
     let count = Literal::usize_unsuffixed(cx.spheres().len());
     vec![
         quote! {
             /// The collision tables: each link with spheres (its spheres' range, its bounding
-            /// sphere's radius), the spheres' radii, the link pairs the self-collision check tests.
+            /// sphere's centre in its frame and radius), each sphere's centre in its link's frame
+            /// and radius, the link pairs the self-collision check tests.
             #[allow(clippy::approx_constant, clippy::unreadable_literal)] // radii are kept as given
             pub const COLLISION_TABLES: #p::collision::CollisionTables<'static> = #p::collision::CollisionTables {
                 links: &[#(#links),*],
+                centers: &CENTERS,
                 radii: &RADII,
                 pairs: &[#(#pairs),*],
             };
@@ -163,50 +166,118 @@ fn tables(cx: &Context<'_>, frame: &LinkFrame) -> Vec<TokenStream> {
             #[allow(clippy::approx_constant, clippy::unreadable_literal)] // radii are kept as given
             const RADII: [f64; #count] = [#(#radii),*];
         },
+        quote! {
+            #[allow(clippy::approx_constant, clippy::unreadable_literal)]
+            const CENTERS: [[f64; 3]; #count] = [#(#centers),*];
+        },
     ]
 }
 
 /// `collides` and `self_collides` on the type, as the surface lists them, on the checks' body and
-/// tables ([`bodies`]).
+/// tables ([`bodies`]): per scalar on one configuration (dispatched) and in batches (lanes of the
+/// width the CPU fills), and on any lane type.
 pub(super) fn checks(cx: &Context<'_>, out: &mut Functions) {
     let Some(plan) = cx.spec.robot.collision() else { return };
     let p = &cx.p;
+    let n = cx.render.dof();
     let g = proc_macro2::Ident::new(CHECK_BODY, proc_macro2::Span::call_site());
+    // One link with spheres: the body returns its pose alone.
+    let poses = if link_frame(cx).links.len() == 1 { quote!(&[#g(q)]) } else { quote!(&#g(q)) };
     let pairs_rule = match plan.pairs.rule {
         kinematics_model::collision::PairRule::Srdf => "less the SRDF's disabled pairs",
         kinematics_model::collision::PairRule::Adjacent => {
             "less the links of bodies joined by one joint (no SRDF given)"
         }
     };
-    for (function, signature) in cx.render.collision_items() {
+    for (function, form, signature) in cx.render.collision_items() {
         let sig = signature.tokens();
-        let (doc, check) = match function {
+        let (what, check) = match function {
             CollisionFunction::Collides => (
                 format!(
-                    "Whether the robot at `q` touches or overlaps an obstacle of `environment` (its {} spheres; each \
-                     link's bounding sphere tested first, the first hit ending the check; any order of obstacles).",
+                    "Whether the robot at `q` touches an obstacle of `environment` or itself (its {} spheres; \
+                     each link's bounding sphere tested first, the first hit ending the check; any order of \
+                     obstacles; the pairs as in `self_collides`)",
                     cx.spheres().len()
                 ),
-                quote!(COLLISION_TABLES.collides(&centers, environment)),
+                quote!(COLLISION_TABLES.collides(q, #poses, environment)),
             ),
             CollisionFunction::SelfCollides => (
                 format!(
-                    "Whether two links of the robot at `q` touch ({} pairs: links with spheres on different rigid bodies, \
-                     {pairs_rule}).",
+                    "Whether two links of the robot at `q` touch ({} pairs: links with spheres on different rigid \
+                     bodies, {pairs_rule})",
                     plan.pairs.pairs.len()
                 ),
-                quote!(COLLISION_TABLES.self_collides(&centers)),
+                quote!(COLLISION_TABLES.self_collides(q, #poses)),
             ),
         };
-        out.typed.push(quote! {
-            #[doc = #doc]
-            #[inline]
-            #[allow(clippy::redundant_closure)]
-            #sig {
-                let centers = #p::dispatch(#[inline(always)] || #g(q));
-                #check
+        let never_free = "A configuration with a NaN or infinite entry is colliding.";
+        let item = match form {
+            Form::Typed(ScalarType { t, .. }) => {
+                let doc = format!("{what} (`{t}`). {never_free}");
+                quote! {
+                    #[doc = #doc]
+                    #[inline]
+                    #[allow(clippy::redundant_closure)]
+                    #sig { #p::dispatch(#[inline(always)] || #check).any() }
+                }
             }
-        });
+            Form::Batch(scalar) => {
+                let ScalarType { suffix, lanes, wide, .. } = &scalar;
+                let ((narrow, _), (wide_name, _)) = scalar.lane_names();
+                let doc = format!(
+                    "[`Self::{}{suffix}`] for every configuration of `qs`, into `out` (one verdict each), in SIMD \
+                     lanes (`{}`, or `{}` where the CPU has AVX-512), each lane with its own verdict and a pack \
+                     ending when all of its lanes collide. An `out` of another length than `qs` is an error, \
+                     and nothing is written.",
+                    function.name(),
+                    narrow,
+                    wide_name,
+                );
+                quote! {
+                    #[doc = #doc]
+                    #[inline]
+                    #[allow(clippy::redundant_closure)]
+                    #sig {
+                        #p::batch_wide::<#lanes, #wide, #n, _, _>(
+                            Self::ROBOT, qs, out, #[inline(always)] |q| #check, #[inline(always)] |q| #check,
+                        )
+                    }
+                }
+            }
+            Form::Columns(ScalarType { suffix, lanes, wide, .. }) => {
+                let doc = format!(
+                    "[`Self::{}_batch{suffix}`] on configurations given column-wise: `columns[j][i]` is joint \
+                     `j`'s value (in the order of `JOINT_NAMES`) in configuration `i`. A column of another \
+                     length than `out` is an error naming its joint, and nothing is written.",
+                    function.name()
+                );
+                quote! {
+                    #[doc = #doc]
+                    #[inline]
+                    #[allow(clippy::redundant_closure)]
+                    #sig {
+                        #p::batch_columns::<#lanes, #wide, #n, _, _>(
+                            Self::ROBOT, &Self::JOINT_NAMES, columns, out,
+                            #[inline(always)] |q| #check, #[inline(always)] |q| #check,
+                        )
+                    }
+                }
+            }
+            Form::Generic => {
+                let doc = format!(
+                    "{what}, on any lane type (`F64x4`, `F64x8`, `F32x8`, `F32x16`; `f64` and `f32` are one \
+                     lane): bit `i` of the mask is configuration `i`'s verdict, each lane's check ending when \
+                     every lane collides. {never_free} Not dispatched: wrap a loop of calls in \
+                     `kinematics::dispatch` to run it with the widest instruction set the CPU has."
+                );
+                quote! {
+                    #[doc = #doc]
+                    #[inline]
+                    #sig { #check }
+                }
+            }
+        };
+        out.typed.push(item);
     }
 }
 

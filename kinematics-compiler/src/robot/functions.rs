@@ -59,10 +59,10 @@ impl Functions {
                         #sig { #p::dispatch(#[inline(always)] || #g(q)) }
                     }
                 }
-                Form::Batch(ScalarType { suffix, lanes, wide, .. }) => {
+                Form::Batch(scalar) => {
+                    let ScalarType { suffix, lanes, wide, .. } = &scalar;
                     let typed = format_ident!("{}{suffix}", output.name(cx.one));
-                    let (narrow, wide_count, lanes_name, wide_name) =
-                        if suffix.is_empty() { (4, 8, "F64x4", "F64x8") } else { (8, 16, "F32x8", "F32x16") };
+                    let ((lanes_name, narrow), (wide_name, wide_count)) = scalar.lane_names();
                     let many = format!(
                         "[`Self::{typed}`] for every configuration of `qs`, into `out` (one each), {narrow} at a \
                          time in SIMD lanes (`{lanes_name}`; {wide_count} in `{wide_name}` where the CPU has \

@@ -180,6 +180,13 @@ pub struct ScalarType {
     pub wide: TokenStream,
 }
 
+impl ScalarType {
+    /// The names of the lane types its batches run on (narrow, wide) and how many lanes each has.
+    pub fn lane_names(&self) -> ((&'static str, usize), (&'static str, usize)) {
+        if self.suffix.is_empty() { (("F64x4", 4), ("F64x8", 8)) } else { (("F32x8", 8), ("F32x16", 16)) }
+    }
+}
+
 /// The form of one function of an [`Output`].
 #[derive(Debug, Clone)]
 pub enum Form {
@@ -623,29 +630,82 @@ pub enum CollisionFunction {
 }
 
 impl Render {
-    /// The collision checks' functions (with `collision`), in the order emitted: `f64` only.
-    pub fn collision_items(&self) -> Vec<(CollisionFunction, Signature)> {
+    /// The collision checks' functions (with `collision`), in the order emitted: for `collides`
+    /// then `self_collides`, per scalar the function on one configuration and its two batches
+    /// (verdicts into `out: &mut [bool]`), then the generic one on any lane type (a verdict mask).
+    pub fn collision_items(&self) -> Vec<(CollisionFunction, Form, Signature)> {
         let (p, n) = (&self.p, self.dof());
-        vec![
-            (
-                CollisionFunction::Collides,
-                Signature {
-                    name: Ident::new("collides", Span::call_site()),
+        let error = quote!(::core::result::Result<(), #p::KinematicsError>);
+        let mut out = Vec::new();
+        for function in [CollisionFunction::Collides, CollisionFunction::SelfCollides] {
+            let name = function.name();
+            let environment = match function {
+                CollisionFunction::Collides => quote!(, environment: &#p::collision::Environment<'_>),
+                CollisionFunction::SelfCollides => quote!(),
+            };
+            for scalar in self.scalar_types() {
+                let (suffix, t) = (scalar.suffix, &scalar.t);
+                let signature = |name: String, inputs: TokenStream, output: TokenStream| Signature {
+                    name: Ident::new(&name, Span::call_site()),
                     generics: self.dof_generics(),
-                    inputs: quote!(q: &[f64; #n], environment: &#p::collision::Environment<'_>),
-                    output: quote!(bool),
-                },
-            ),
-            (
-                CollisionFunction::SelfCollides,
+                    inputs,
+                    output,
+                };
+                out.push((
+                    function,
+                    Form::Typed(scalar.clone()),
+                    signature(format!("{name}{suffix}"), quote!(q: &[#t; #n] #environment), quote!(bool)),
+                ));
+                out.push((
+                    function,
+                    Form::Batch(scalar.clone()),
+                    signature(
+                        format!("{name}_batch{suffix}"),
+                        quote!(qs: &[[#t; #n]] #environment, out: &mut [bool]),
+                        error.clone(),
+                    ),
+                ));
+                out.push((
+                    function,
+                    Form::Columns(scalar.clone()),
+                    signature(
+                        format!("{name}_batch_columns{suffix}"),
+                        quote!(columns: [&[#t]; #n] #environment, out: &mut [bool]),
+                        error.clone(),
+                    ),
+                ));
+            }
+            let scalar = &self.scalar;
+            let mut generics = vec![self.collision_scalar()];
+            generics.extend(self.dof_generics());
+            out.push((
+                function,
+                Form::Generic,
                 Signature {
-                    name: Ident::new("self_collides", Span::call_site()),
-                    generics: self.dof_generics(),
-                    inputs: quote!(q: &[f64; #n]),
-                    output: quote!(bool),
+                    name: format_ident!("{name}_generic"),
+                    generics,
+                    inputs: quote!(q: &[#scalar; #n] #environment),
+                    output: quote!(#p::collision::LaneMask),
                 },
-            ),
-        ]
+            ));
+        }
+        out
+    }
+
+    /// The generic scalar parameter of the collision checks: the trig bound and the checks'.
+    fn collision_scalar(&self) -> TokenStream {
+        let (p, scalar, bound) = (&self.p, &self.scalar, self.trig.bound(&self.p));
+        quote!(#scalar: #bound + #p::collision::CheckLanes)
+    }
+}
+
+impl CollisionFunction {
+    /// The function's name on the type (a batch's and the generic one's stem).
+    pub fn name(self) -> &'static str {
+        match self {
+            CollisionFunction::Collides => "collides",
+            CollisionFunction::SelfCollides => "self_collides",
+        }
     }
 }
 

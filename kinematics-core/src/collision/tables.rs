@@ -1,38 +1,48 @@
 //! The checks a compiled robot runs on its sphere centres: against an [`Environment`]'s obstacles
 //! and against itself, on any [`CheckLanes`] type, each configuration (lane) with its own verdict.
 //!
-//! Each link's bounding sphere is tested first and its spheres only where that hits, then only
-//! on the lanes it hits; a lane found colliding is not tested again, and a check ends as soon as
+//! Each link's bounding sphere is tested first and its spheres (placed by its pose only when
+//! tested) only where that hits, then only on the lanes it hits; a lane found colliding is not tested again, and a check ends as soon as
 //! every lane is colliding. Every obstacle is tested until one is hit, so the order of the
 //! obstacles does not change an answer.
 
-use super::obstacles::{Environment, Obstacle};
+use super::obstacles::{Environment, Obstacle, Vec3};
+use crate::pose::Pose;
 use super::verdicts::{CheckLanes, Flags, LaneMask, non_finite};
 
 /// A compiled robot's collision tables, as its generated code holds them: each link with spheres
-/// (its range of spheres and its bounding sphere's radius), the spheres' radii, and the link pairs
-/// its self-collision check tests.
+/// (its range of spheres, its bounding sphere's centre in the link's frame and radius), each
+/// sphere's centre in its link's frame and radius, and the link pairs its self-collision check
+/// tests.
 ///
-/// The centres a check takes are the spheres' (in the order of `radii`) followed by the links'
-/// bounding spheres' (in the order of `links`), as the generated `generic_collision_centers`
-/// returns them.
+/// A check takes the poses of the links with spheres (in the order of `links`), as the generated
+/// `generic_collision_poses` returns them, and places a sphere (`R p + t`) only when it is
+/// tested: a link's spheres only where its bounding sphere hits.
 ///
 /// ```
 /// use kinematics_core::collision::{CollisionTables, Environment, SphereObstacle};
-/// // Two links of one sphere each, 1 m apart, bounding spheres equal to their spheres.
-/// let tables = CollisionTables { links: &[(0, 1, 0.1), (1, 2, 0.1)], radii: &[0.1, 0.1], pairs: &[(0, 1)] };
-/// let centers = [[0.0; 3], [1.0, 0.0, 0.0], [0.0; 3], [1.0, 0.0, 0.0]];
+/// use kinematics_core::Pose;
+/// // Two links of one sphere each at their origins, bounding spheres equal to their spheres.
+/// let tables = CollisionTables {
+///     links: &[(0, 1, [0.0; 3], 0.1), (1, 2, [0.0; 3], 0.1)],
+///     centers: &[[0.0; 3], [0.0; 3]],
+///     radii: &[0.1, 0.1],
+///     pairs: &[(0, 1)],
+/// };
+/// let poses = [Pose::from_rpy([0.0; 3], [0.0; 3]), Pose::from_rpy([0.0; 3], [1.0, 0.0, 0.0])];
 /// let ball = [SphereObstacle { center: [1.0, 0.3, 0.0], radius: 0.25 }];
 /// let env = Environment::new(&ball, &[], &[], &[])?;
-/// assert!(tables.collides(&[0.0_f64], &centers, &env).any());
-/// assert!(!tables.self_collides(&[0.0_f64], &centers).any());
+/// assert!(tables.collides(&[0.0_f64], &poses, &env).any());
+/// assert!(!tables.self_collides(&[0.0_f64], &poses).any());
 /// # Ok::<(), kinematics_core::collision::ObstacleError>(())
 /// ```
 #[derive(Debug, Clone, Copy)]
 pub struct CollisionTables<'a> {
     /// Per link with spheres: its spheres `start..end` in the sphere order, and its bounding
-    /// sphere's radius (its centre follows the spheres' in the centres array, in link order).
-    pub links: &'a [(usize, usize, f64)],
+    /// sphere's centre (in the link's frame) and radius.
+    pub links: &'a [(usize, usize, Vec3, f64)],
+    /// Each sphere's centre in its link's frame.
+    pub centers: &'a [Vec3],
     /// Each sphere's radius.
     pub radii: &'a [f64],
     /// The pairs of links (indices into `links`) the self-collision check tests.
@@ -40,42 +50,64 @@ pub struct CollisionTables<'a> {
 }
 
 impl CollisionTables<'_> {
-    /// The lanes where the robot at `q`, with these centres, touches an obstacle of `env` or
-    /// itself: the obstacles first, then the pairs, each only on the lanes still free. A lane
-    /// whose `q` is not finite is colliding.
+    /// The lanes where the robot at `q`, its links with spheres at `poses`, touches an obstacle
+    /// of `env` or itself: the obstacles first, then the pairs, each only on the lanes still
+    /// free. A lane whose `q` is not finite is colliding.
     #[inline(always)]
-    pub fn collides<L: CheckLanes, const N: usize>(
+    pub fn collides<L: CheckLanes, const N: usize, const K: usize>(
         &self,
         q: &[L; N],
-        centers: &[[L; 3]],
+        poses: &[Pose<L>; K],
         env: &Environment<'_>,
     ) -> LaneMask {
-        let hit = self.obstacle_hits(centers, env, non_finite(q));
+        let bounds = self.bounds(poses);
+        let hit = self.obstacle_hits(poses, &bounds, env, non_finite(q));
         if hit.all() {
             return hit.bits();
         }
-        self.self_hits(centers, hit).bits()
+        self.self_hits(poses, &bounds, hit).bits()
     }
 
     /// The lanes where two links of a checked pair of the robot at `q` touch. A lane whose `q` is
     /// not finite is colliding.
     #[inline(always)]
-    pub fn self_collides<L: CheckLanes, const N: usize>(&self, q: &[L; N], centers: &[[L; 3]]) -> LaneMask {
-        self.self_hits(centers, non_finite(q)).bits()
+    pub fn self_collides<L: CheckLanes, const N: usize, const K: usize>(
+        &self,
+        q: &[L; N],
+        poses: &[Pose<L>; K],
+    ) -> LaneMask {
+        let bounds = self.bounds(poses);
+        self.self_hits(poses, &bounds, non_finite(q)).bits()
+    }
+
+    /// Each link's bounding sphere's centre.
+    #[inline(always)]
+    fn bounds<L: CheckLanes, const K: usize>(&self, poses: &[Pose<L>; K]) -> [[L; 3]; K] {
+        let mut bounds = [[L::from_f64(0.0); 3]; K];
+        for ((bound, pose), link) in bounds.iter_mut().zip(poses).zip(self.links) {
+            *bound = place(pose, link.2);
+        }
+        bounds
     }
 
     /// `hit` and the lanes where a sphere touches an obstacle.
     #[inline(always)]
-    fn obstacle_hits<L: CheckLanes>(&self, centers: &[[L; 3]], env: &Environment<'_>, mut hit: L::Flags) -> L::Flags {
+    fn obstacle_hits<L: CheckLanes>(
+        &self,
+        poses: &[Pose<L>],
+        bounds: &[[L; 3]],
+        env: &Environment<'_>,
+        mut hit: L::Flags,
+    ) -> L::Flags {
         if hit.all() || env.is_empty() {
             return hit;
         }
-        let bounds = &centers[self.radii.len()..];
-        for (&(start, end, radius), bound) in self.links.iter().zip(bounds) {
+        for ((&(start, end, _, radius), bound), pose) in self.links.iter().zip(bounds).zip(poses) {
             let link = Link {
+                pose,
                 bound,
                 radius: L::from_f64(radius),
-                centers: &centers[start..end],
+                centers: &self.centers[start..end],
                 radii: &self.radii[start..end],
             };
             hit = link.against(env.spheres, hit);
@@ -91,30 +123,36 @@ impl CollisionTables<'_> {
 
     /// `hit` and the lanes where two links of a checked pair touch: their bounding spheres first,
     /// then each sphere of the first against the second's bounding sphere, then sphere against
-    /// sphere.
+    /// sphere (the second link's spheres placed a few at a time).
     #[inline(always)]
-    fn self_hits<L: CheckLanes>(&self, centers: &[[L; 3]], mut hit: L::Flags) -> L::Flags {
-        let bounds = &centers[self.radii.len()..];
+    fn self_hits<L: CheckLanes>(&self, poses: &[Pose<L>], bounds: &[[L; 3]], mut hit: L::Flags) -> L::Flags {
         for &(i, j) in self.pairs {
             if hit.all() {
                 return hit;
             }
-            let ((sa, ea, ra), (sb, eb, rb)) = (self.links[i], self.links[j]);
-            let (ra, rb) = (L::from_f64(ra), L::from_f64(rb));
-            let near = touch(&bounds[i], ra, &bounds[j], rb).and_not(hit);
+            let ((sa, ea, _, ra), (sb, eb, _, rb)) = (self.links[i], self.links[j]);
+            let rb = L::from_f64(rb);
+            let near = touch(&bounds[i], L::from_f64(ra), &bounds[j], rb).and_not(hit);
             if !near.any() {
                 continue;
             }
-            'spheres: for a in sa..ea {
-                let r = L::from_f64(self.radii[a]);
-                let close = touch(&centers[a], r, &bounds[j], rb) & near;
-                if !close.any() {
-                    continue;
+            let mut placed = [[L::from_f64(0.0); 3]; CHUNK];
+            'pair: for chunk in (sb..eb).step_by(CHUNK) {
+                let chunk = chunk..eb.min(chunk + CHUNK);
+                for (slot, b) in placed.iter_mut().zip(chunk.clone()) {
+                    *slot = place(&poses[j], self.centers[b]);
                 }
-                for b in sb..eb {
-                    hit = hit | (touch(&centers[a], r, &centers[b], L::from_f64(self.radii[b])) & close);
-                    if !near.and_not(hit).any() {
-                        break 'spheres;
+                for a in sa..ea {
+                    let (center, r) = (place(&poses[i], self.centers[a]), L::from_f64(self.radii[a]));
+                    let close = touch(&center, r, &bounds[j], rb) & near;
+                    if !close.any() {
+                        continue;
+                    }
+                    for (other, b) in placed.iter().zip(chunk.clone()) {
+                        hit = hit | (touch(&center, r, other, L::from_f64(self.radii[b])) & close);
+                        if !near.and_not(hit).any() {
+                            break 'pair;
+                        }
                     }
                 }
             }
@@ -123,18 +161,34 @@ impl CollisionTables<'_> {
     }
 }
 
-/// One link's part of a check: its bounding sphere and its spheres.
+/// How many of a link's spheres the self check places at a time.
+const CHUNK: usize = 16;
+
+/// `p` (in a link's frame) in the base frame: `R p + t`.
+#[inline(always)]
+fn place<L: CheckLanes>(pose: &Pose<L>, p: Vec3) -> [L; 3] {
+    let (r, t) = (&pose.rotation, &pose.translation);
+    let p = [L::from_f64(p[0]), L::from_f64(p[1]), L::from_f64(p[2])];
+    [
+        r[0][0] * p[0] + r[0][1] * p[1] + r[0][2] * p[2] + t[0],
+        r[1][0] * p[0] + r[1][1] * p[1] + r[1][2] * p[2] + t[1],
+        r[2][0] * p[0] + r[2][1] * p[1] + r[2][2] * p[2] + t[2],
+    ]
+}
+
+/// One link's part of a check: its pose, its bounding sphere, and its spheres in its frame.
 struct Link<'c, L> {
+    pose: &'c Pose<L>,
     bound: &'c [L; 3],
     radius: L,
-    centers: &'c [[L; 3]],
+    centers: &'c [Vec3],
     radii: &'c [f64],
 }
 
 impl<L: CheckLanes> Link<'_, L> {
     /// `hit` and the lanes where one of the link's spheres touches one of `obstacles`: per
-    /// obstacle, the bounding sphere first, then the spheres on the lanes it hits until each of
-    /// them is decided.
+    /// obstacle, the bounding sphere first, then the spheres (placed as they are tested) on the
+    /// lanes it hits until each of them is decided.
     #[inline(always)]
     fn against<O: Obstacle>(&self, obstacles: &[O], mut hit: L::Flags) -> L::Flags {
         for obstacle in obstacles {
@@ -142,8 +196,8 @@ impl<L: CheckLanes> Link<'_, L> {
             if !near.any() {
                 continue;
             }
-            for (center, &radius) in self.centers.iter().zip(self.radii) {
-                hit = hit | (obstacle.hits(center, L::from_f64(radius)) & near);
+            for (&center, &radius) in self.centers.iter().zip(self.radii) {
+                hit = hit | (obstacle.hits(&place(self.pose, center), L::from_f64(radius)) & near);
                 if !near.and_not(hit).any() {
                     break;
                 }
@@ -167,12 +221,22 @@ mod tests {
     use crate::collision::SphereObstacle;
     use crate::{F64x4, Lanes, Real};
 
-    const TABLES: CollisionTables<'static> =
-        CollisionTables { links: &[(0, 1, 0.1), (1, 2, 0.1)], radii: &[0.1, 0.1], pairs: &[(0, 1)] };
+    /// Two links of one sphere each at their origins.
+    const TABLES: CollisionTables<'static> = CollisionTables {
+        links: &[(0, 1, [0.0; 3], 0.1), (1, 2, [0.0; 3], 0.1)],
+        centers: &[[0.0; 3], [0.0; 3]],
+        radii: &[0.1, 0.1],
+        pairs: &[(0, 1)],
+    };
+
+    fn at<T: Real>(x: T) -> Pose<T> {
+        let (zero, one) = (T::from_f64(0.0), T::from_f64(1.0));
+        Pose { rotation: [[one, zero, zero], [zero, one, zero], [zero, zero, one]], translation: [x, zero, zero] }
+    }
 
     #[test]
     fn a_configuration_that_is_not_finite_is_never_free() {
-        let far = [[0.0; 3], [5.0, 0.0, 0.0], [0.0; 3], [5.0, 0.0, 0.0]];
+        let far = [at(0.0), at(5.0)];
         assert!(!TABLES.self_collides(&[0.0_f64], &far).any());
         assert!(TABLES.self_collides(&[f64::NAN], &far).any());
         assert!(TABLES.collides(&[f64::INFINITY], &far, &Environment::empty()).any());
@@ -187,15 +251,12 @@ mod tests {
         let env = Environment::new(&ball, &[], &[], &[]).unwrap();
         for (offset, expected) in [(0.0, 0b0111), (0.4, 0b1110)] {
             let x = F64x4::from_fn(|k| offset + 0.1 * k as f64);
-            let zero = F64x4::from_f64(0.0);
-            let link1 = [x, zero, zero];
-            let centers = [[zero; 3], link1, [zero; 3], link1];
-            let q = [zero];
-            let collides = TABLES.collides(&q, &centers, &env);
-            let itself = TABLES.self_collides(&q, &centers);
+            let poses = [at(F64x4::from_f64(0.0)), at(x)];
+            let q = [F64x4::from_f64(0.0)];
+            let collides = TABLES.collides(&q, &poses, &env);
+            let itself = TABLES.self_collides(&q, &poses);
             for k in 0..4 {
-                let at = [offset + 0.1 * k as f64, 0.0, 0.0];
-                let scalar = [[0.0; 3], at, [0.0; 3], at];
+                let scalar = [at(0.0), at(offset + 0.1 * k as f64)];
                 assert_eq!(itself.lane(k), TABLES.self_collides(&[0.0], &scalar).any(), "lane {k}");
                 assert_eq!(collides.lane(k), TABLES.collides(&[0.0], &scalar, &env).any(), "lane {k}");
             }
