@@ -122,8 +122,8 @@ impl CollisionTables<'_> {
     }
 
     /// `hit` and the lanes where two links of a checked pair touch: their bounding spheres first,
-    /// then each sphere of the first against the second's bounding sphere, then sphere against
-    /// sphere (the second link's spheres placed a few at a time).
+    /// then each link's spheres against the other's bounding sphere, then sphere against sphere
+    /// among those (the second link's spheres placed a chunk at a time).
     #[inline(always)]
     fn self_hits<L: CheckLanes>(&self, poses: &[Pose<L>], bounds: &[[L; 3]], mut hit: L::Flags) -> L::Flags {
         for &(i, j) in self.pairs {
@@ -131,16 +131,25 @@ impl CollisionTables<'_> {
                 return hit;
             }
             let ((sa, ea, _, ra), (sb, eb, _, rb)) = (self.links[i], self.links[j]);
-            let rb = L::from_f64(rb);
-            let near = touch(&bounds[i], L::from_f64(ra), &bounds[j], rb).and_not(hit);
+            let (ra, rb) = (L::from_f64(ra), L::from_f64(rb));
+            let near = touch(&bounds[i], ra, &bounds[j], rb).and_not(hit);
             if !near.any() {
                 continue;
             }
-            let mut placed = [[L::from_f64(0.0); 3]; CHUNK];
+            // The second link's spheres a chunk at a time, only those within the first link's
+            // bounding sphere on some lane still near.
+            let mut placed = [([L::from_f64(0.0); 3], L::from_f64(0.0)); CHUNK];
             'pair: for chunk in (sb..eb).step_by(CHUNK) {
-                let chunk = chunk..eb.min(chunk + CHUNK);
-                for (slot, b) in placed.iter_mut().zip(chunk.clone()) {
-                    *slot = place(&poses[j], self.centers[b]);
+                let mut count = 0;
+                for b in chunk..eb.min(chunk + CHUNK) {
+                    let (center, r) = (place(&poses[j], self.centers[b]), L::from_f64(self.radii[b]));
+                    if (touch(&center, r, &bounds[i], ra) & near).any() {
+                        placed[count] = (center, r);
+                        count += 1;
+                    }
+                }
+                if count == 0 {
+                    continue;
                 }
                 for a in sa..ea {
                     let (center, r) = (place(&poses[i], self.centers[a]), L::from_f64(self.radii[a]));
@@ -148,8 +157,8 @@ impl CollisionTables<'_> {
                     if !close.any() {
                         continue;
                     }
-                    for (other, b) in placed.iter().zip(chunk.clone()) {
-                        hit = hit | (touch(&center, r, other, L::from_f64(self.radii[b])) & close);
+                    for (other, r_other) in &placed[..count] {
+                        hit = hit | (touch(&center, r, other, *r_other) & close);
                         if !near.and_not(hit).any() {
                             break 'pair;
                         }
