@@ -143,6 +143,30 @@ macro_rules! __kinematics_with_std {
 
 #[cfg(feature = "std")]
 #[cfg_attr(docsrs, doc(cfg(feature = "std")))]
+pub use kinematics_runtime::SceneObstacles;
+
+#[cfg(feature = "std")]
+#[cfg_attr(docsrs, doc(cfg(feature = "std")))]
+/// Reads a scene file (`.toml` or `.json`: obstacles with poses and sizes, the format on the
+/// guide's collision page) into the obstacles a compiled robot's `collides` is checked against.
+///
+/// Errors name the file, the obstacle (its number, its name, in TOML its line) and the fault.
+///
+/// ```
+/// let file = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/tabletop.toml");
+/// let scene = kinematics::load_scene(file)?;
+/// assert_eq!((scene.boxes.len(), scene.names[0].as_str()), (12, "table"));
+/// let environment = scene.environment()?;
+/// assert!(environment.hits([0.6, 0.0, 0.0], 0.01)); // on the table
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn load_scene(path: impl AsRef<std::path::Path>) -> Result<SceneObstacles, LoadError> {
+    let scene = kinematics_model::scene::Scene::load(path)?;
+    Ok(SceneObstacles::from_scene(&scene))
+}
+
+#[cfg(feature = "std")]
+#[cfg_attr(docsrs, doc(cfg(feature = "std")))]
 /// Reads and validates a robot description file: `.urdf`/`.xml` (URDF), `.toml` or `.json` (DH table).
 ///
 /// Errors name the file as given, the element (joint, link, DH row) and the fault. Decimal angles

@@ -20,6 +20,13 @@ pub enum Element {
     },
     /// The fixed base or tool transform of a DH table.
     DhSection(&'static str),
+    /// An obstacle of a scene file (1-based), with its name if it has one.
+    Obstacle {
+        /// 1-based place in the file.
+        number: usize,
+        /// Its `name`.
+        name: Option<String>,
+    },
 }
 
 impl fmt::Display for Element {
@@ -30,6 +37,8 @@ impl fmt::Display for Element {
             Element::Joint(name) => write!(f, "joint `{name}`"),
             Element::DhRow { row, joint } => write!(f, "DH row {row} (joint `{joint}`)"),
             Element::DhSection(section) => write!(f, "DH `{section}` transform"),
+            Element::Obstacle { number, name: None } => write!(f, "obstacle {number}"),
+            Element::Obstacle { number, name: Some(name) } => write!(f, "obstacle {number} (`{name}`)"),
         }
     }
 }

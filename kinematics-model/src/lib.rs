@@ -35,6 +35,7 @@ pub mod exactness;
 mod frame;
 mod joint;
 mod source;
+pub mod scene;
 pub mod srdf;
 mod suggest;
 pub mod synthetic;

@@ -31,6 +31,7 @@ mod error;
 mod fk;
 mod jacobian;
 mod sample;
+mod scene;
 
 pub use collision::ReferenceObstacles;
 pub use compiled::ReferenceModel;
@@ -42,3 +43,4 @@ pub use kinematics_core::{
 };
 pub use kinematics_model;
 pub use sample::{Configurations, SPECIAL_ANGLES};
+pub use scene::SceneObstacles;
