@@ -362,8 +362,11 @@ fn f32_checks_agree_with_the_reference() {
         let o = obstacles(&mut stream, 0.8, 2 + round);
         let env = Environment::new(&o.spheres, &o.capsules, &o.cylinders, &o.boxes).unwrap();
         let reference_obstacles = ReferenceObstacles::new(&o.spheres, &o.capsules, &o.cylinders, &o.boxes);
-        let qs: Vec<[f32; 6]> =
-            Configurations::new(tree).skip(50 * round).take(203).map(|q| std::array::from_fn(|j| q[j] as f32)).collect();
+        let qs: Vec<[f32; 6]> = Configurations::new(tree)
+            .skip(50 * round)
+            .take(203)
+            .map(|q| std::array::from_fn(|j| q[j] as f32))
+            .collect();
         let mut verdicts = [vec![false; qs.len()], vec![false; qs.len()]];
         Ur5::collides_batch_f32(&qs, &env, &mut verdicts[0]).unwrap();
         Ur5::self_collides_batch_f32(&qs, &mut verdicts[1]).unwrap();

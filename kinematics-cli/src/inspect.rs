@@ -11,22 +11,50 @@ use crate::error::CliError;
 pub struct Args {
     /// A URDF file (.urdf, .xml) or DH table (.toml, .json).
     file: String,
+    /// The sphere cover's largest overshoot (metres) the collision geometry is listed at.
+    #[arg(long, value_name = "METRES", default_value_t = kinematics_compiler::options::DEFAULT_SPHERE_COVER)]
+    sphere_cover: f64,
+    /// An SRDF whose disabled pairs the self-collision pairs leave out.
+    #[arg(long, value_name = "FILE")]
+    srdf: Option<String>,
+    /// List every collision sphere (its centre in its link's frame and its radius).
+    #[arg(long)]
+    spheres: bool,
 }
 
 /// Prints the tree of `args.file`, then its collision geometry.
 pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
     let tree = crate::robot::load(&args.file)?;
     write!(out, "{}", describe(&tree))?;
-    write!(out, "{}", collision(&tree))?;
+    let srdf = match &args.srdf {
+        Some(path) => Some((path.clone(), crate::robot::load_srdf(path, &tree)?)),
+        None => None,
+    };
+    let view = CollisionView { cover: args.sphere_cover, srdf: srdf.as_ref(), spheres: args.spheres };
+    write!(out, "{}", collision(&tree, &view).map_err(|fault| CliError::Usage(format!("`--sphere-cover`: {fault}")))?)?;
     Ok(())
 }
 
-/// The links' collision geometry: each link's shapes and how many spheres cover them (at the
-/// default cover), meshes listed as not read, and how many link pairs a self-collision check
-/// without an SRDF tests; fixed joints whose mimic had nothing to do.
-pub fn collision(tree: &KinematicTree) -> String {
-    use kinematics::model::collision::{LinkSphere, Meshes, link_spheres, sphere_pairs};
-    let cover = kinematics_compiler::options::DEFAULT_SPHERE_COVER;
+/// How `inspect` shows collision geometry: at which cover, with which SRDF's disabled pairs,
+/// and whether every sphere is listed.
+pub struct CollisionView<'a> {
+    /// The cover's largest overshoot (m).
+    pub cover: f64,
+    /// The SRDF read, with its file name, and its disabled pairs.
+    pub srdf: Option<&'a (String, std::collections::BTreeSet<(kinematics::model::LinkId, kinematics::model::LinkId)>)>,
+    /// Whether to list every sphere.
+    pub spheres: bool,
+}
+
+/// The links' collision geometry: each link's shapes, how many spheres cover them and its
+/// bounding sphere (and with `spheres` each sphere), meshes listed as not read, and the link
+/// pairs a self-collision check tests; fixed joints whose mimic had nothing to do. A cover that
+/// is not a positive length is the error returned.
+pub fn collision(tree: &KinematicTree, view: &CollisionView<'_>) -> Result<String, String> {
+    use kinematics::model::collision::{LinkSphere, Meshes, link_bounds, link_spheres, sphere_pairs};
+    if !(view.cover.is_finite() && view.cover > 0.0) {
+        return Err(format!("{} is no finite positive length in metres", view.cover));
+    }
     let mut out = String::new();
     if !tree.vacuous_mimics().is_empty() {
         out +=
@@ -35,37 +63,63 @@ pub fn collision(tree: &KinematicTree) -> String {
     let with: Vec<_> = tree.links().iter().filter(|l| !l.collisions.is_empty()).collect();
     if with.is_empty() {
         out += "collision geometry: none\n";
-        return out;
+        return Ok(out);
     }
     // Meshes are left out here (and listed): the derive refuses them unless told to leave them out.
     #[allow(clippy::expect_used, reason = "invariant: with meshes skipped the cover refuses nothing")]
-    let spheres: Vec<LinkSphere> = link_spheres(tree, cover, Meshes::Skip).expect("skipped meshes are no fault");
+    let spheres: Vec<LinkSphere> = link_spheres(tree, view.cover, Meshes::Skip).expect("skipped meshes are no fault");
+    let bounds = link_bounds(tree, &spheres);
     out += &format!(
         "collision geometry: {} elements on {} links, {} spheres at a cover of {} m (meshes are not read)\n",
         with.iter().map(|l| l.collisions.len()).sum::<usize>(),
         with.len(),
         spheres.len(),
-        short(cover)
+        short(view.cover)
     );
     let width = column_width(with.iter().map(|l| l.name.as_str()));
+    let point = |p: [f64; 3]| format!("({}, {}, {})", short(p[0]), short(p[1]), short(p[2]));
     for link in with {
-        let shapes: Vec<String> = link
-            .collisions
-            .iter()
-            .map(|c| match &c.shape {
+        // Each kind once, with how many of it (meshes by file).
+        let mut shapes: Vec<(String, usize)> = Vec::new();
+        for c in &link.collisions {
+            let name = match &c.shape {
                 kinematics::model::collision::Shape::Mesh { filename, .. } => format!("mesh {filename}"),
                 shape => shape.name().to_owned(),
-            })
-            .collect();
-        let count = spheres.iter().filter(|s| tree.link(s.link).name == link.name).count();
-        out += &format!("  {}  {count} spheres: {}\n", pad(&link.name, width), shapes.join(", "));
+            };
+            match shapes.iter_mut().find(|(n, _)| *n == name) {
+                Some((_, count)) => *count += 1,
+                None => shapes.push((name, 1)),
+            }
+        }
+        let shapes: Vec<String> =
+            shapes.into_iter().map(|(n, k)| if k == 1 { n } else { format!("{k} x {n}") }).collect();
+        let own: Vec<&LinkSphere> = spheres.iter().filter(|s| tree.link(s.link).name == link.name).collect();
+        let bound = match bounds.iter().find(|b| tree.link(b.link).name == link.name) {
+            Some(b) => format!("; bounding sphere {} m at {}", short(b.radius), point(b.center)),
+            None => String::new(),
+        };
+        let count = if own.len() == 1 { "1 sphere".to_owned() } else { format!("{} spheres", own.len()) };
+        out += &format!("  {}  {count}: {}{bound}\n", pad(&link.name, width), shapes.join(", "));
+        if view.spheres {
+            for s in own {
+                let center = link.collisions[s.collision].origin.apply(s.sphere.center);
+                out += &format!("    {} m at {}\n", short(s.sphere.radius), point(center));
+            }
+        }
     }
-    let pairs = sphere_pairs(tree, &spheres, None);
+    let pairs = sphere_pairs(tree, &spheres, view.srdf.map(|(_, disabled)| disabled));
+    let rule = match view.srdf {
+        Some((file, _)) => format!("less the pairs {file} disables"),
+        None => "less those of bodies joined by one joint, no SRDF given".to_owned(),
+    };
+    let names: Vec<String> =
+        pairs.pairs.iter().map(|&(a, b)| format!("{}-{}", tree.link(a).name, tree.link(b).name)).collect();
     out += &format!(
-        "self-collision pairs without an SRDF: {} (links with spheres on different rigid bodies, less those of bodies joined by one joint)\n",
-        pairs.pairs.len()
+        "self-collision pairs: {} (links with spheres on different rigid bodies, {rule}): {}\n",
+        pairs.pairs.len(),
+        names.join(", ")
     );
-    out
+    Ok(out)
 }
 
 /// A number in at most 6 decimals, without trailing zeros (`1`, `-0.5`, `0.707107`).

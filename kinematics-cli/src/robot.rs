@@ -21,6 +21,17 @@ pub fn exact_angles_on() -> bool {
     EXACT_ANGLES.load(Ordering::Relaxed)
 }
 
+/// The pairs the SRDF at `path` disables on `tree` (an unknown link refused with a suggestion).
+pub fn load_srdf(
+    path: &str,
+    tree: &KinematicTree,
+) -> Result<std::collections::BTreeSet<(kinematics::model::LinkId, kinematics::model::LinkId)>, CliError> {
+    let error = |kind| CliError::Load(kinematics::LoadError::new(path, kind));
+    let text = std::fs::read_to_string(path).map_err(|e| error(kinematics::LoadErrorKind::Io(e)))?;
+    let srdf = kinematics::model::srdf::parse_srdf(&text).map_err(error)?;
+    srdf.disabled_pairs(tree).map_err(error)
+}
+
 /// Reads and validates the description `file` (the path as the user typed it names it in errors),
 /// with the exactness policy of `--exact-angles`.
 pub fn load(file: &str) -> Result<KinematicTree, CliError> {

@@ -13,9 +13,7 @@ mod obstacles;
 mod tables;
 mod verdicts;
 
-pub use obstacles::{
-    BoxObstacle, CapsuleObstacle, CylinderObstacle, Environment, ObstacleError, SphereObstacle, Vec3,
-};
+pub use obstacles::{BoxObstacle, CapsuleObstacle, CylinderObstacle, Environment, ObstacleError, SphereObstacle, Vec3};
 pub use tables::CollisionTables;
 pub use verdicts::{CheckLanes, Flags, Flags32x8, Flags32x16, Flags64x4, Flags64x8, LaneMask, non_finite};
 #[doc(hidden)]

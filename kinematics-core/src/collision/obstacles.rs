@@ -377,7 +377,8 @@ mod tests {
         at_distance(&b, [4.0, 0.0, 0.0], 3.0);
         at_distance(&b, [4.0, 6.0, 0.0], 5.0);
         at_distance(&b, [0.5, 0.5, 0.5], 0.0);
-        let turned = BoxObstacle::from_pose([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]], [1.0; 3], [2.0, 4.0, 6.0]);
+        let turned =
+            BoxObstacle::from_pose([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]], [1.0; 3], [2.0, 4.0, 6.0]);
         // Turned a quarter about z: its 4 m edge lies along x.
         at_distance(&turned, [4.0, 1.0, 1.0], 1.0);
         at_distance(&turned, [1.0, 3.0, 1.0], 1.0);

@@ -7,8 +7,8 @@
 //! obstacles does not change an answer.
 
 use super::obstacles::{Environment, Obstacle, Vec3};
-use crate::pose::Pose;
 use super::verdicts::{CheckLanes, Flags, LaneMask, non_finite};
+use crate::pose::Pose;
 
 /// A compiled robot's collision tables, as its generated code holds them: each link with spheres
 /// (its range of spheres, its bounding sphere's centre in the link's frame and radius), each

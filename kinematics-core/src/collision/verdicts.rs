@@ -366,7 +366,8 @@ mod tests {
         assert_eq!(F32x16::splat(-1.5).abs(), F32x16::splat(1.5));
         let q = [F64x4::new([0.0, 1.0, f64::NAN, 2.0]), F64x4::new([f64::INFINITY, 0.0, 0.0, 0.0])];
         assert_eq!(non_finite(&q).bits().bits(), 0b0101);
-        let (some, none) = (F32x16::splat(0.0).not_above(F32x16::splat(1.0)), F32x16::splat(2.0).not_above(F32x16::splat(1.0)));
+        let (some, none) =
+            (F32x16::splat(0.0).not_above(F32x16::splat(1.0)), F32x16::splat(2.0).not_above(F32x16::splat(1.0)));
         assert!(some.all() && some.any() && !none.any() && !none.all() && (some & none) == Flags32x16::NONE);
         assert_eq!(some.and_not(none).bits(), LaneMask::full(16));
         assert!(LaneMask::full(32).is_full(32) && LaneMask::full(16).count() == 16);
