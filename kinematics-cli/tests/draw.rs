@@ -347,3 +347,46 @@ fn names_are_escaped_and_read_back() {
     assert!(svg.contains(">base &lt;0&gt;</text>") && svg.contains("<title>robot r&amp;d drawn"), "{svg}");
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn draw_shows_the_collision_spheres_and_a_scenes_obstacles() {
+    let file = "robots/panda_spherized.urdf";
+    let fk = ReferenceFk::new(kinematics::load(root().join(file)).unwrap());
+    let q = configuration(7);
+    let svg = ok(&["draw", file, "--q", &joined(&q), "--scene", "scenes/shelf.toml"]);
+    let elements = elements(&svg);
+    let scale = elements[0].number("data-scale");
+    let spheres = kinematics::model::collision::link_spheres(
+        fk.tree(),
+        kinematics_compiler::options::DEFAULT_SPHERE_COVER,
+        kinematics::model::collision::Meshes::Refuse,
+    )
+    .unwrap();
+    let centers = fk.sphere_centers(&q, &spheres).unwrap();
+    // Every sphere once per view, where the reference puts it, as wide as it is on the scale.
+    let drawn: Vec<&Element> = elements.iter().filter(|e| e.class() == "sphere").collect();
+    assert_eq!(drawn.len(), 3 * spheres.len());
+    for (k, circle) in drawn.iter().enumerate() {
+        let (center, sphere) = (centers[k % spheres.len()], &spheres[k % spheres.len()]);
+        assert!(close(point(circle), [center.x, center.y, center.z], 1e-12), "{circle:?}");
+        assert_eq!(circle.number("data-r"), sphere.sphere.radius);
+        assert!(on_screen(circle.number("r"), sphere.sphere.radius * scale), "{circle:?}");
+    }
+    // Every obstacle of the scene once per view, each kind its outline.
+    let scene = kinematics::load_scene(root().join("scenes/shelf.toml")).unwrap();
+    let outlines: Vec<&Element> = elements.iter().filter(|e| e.attributes.contains_key("data-obstacle")).collect();
+    assert_eq!(outlines.len(), 3 * scene.len());
+    for name in &scene.names {
+        assert_eq!(outlines.iter().filter(|e| e.get("data-obstacle") == name).count(), 3, "{name}");
+    }
+    let boxes = outlines.iter().filter(|e| e.name == "path").count();
+    assert_eq!(boxes, 3 * scene.boxes.len());
+    // A bad scene is refused naming its obstacle, and nothing is written.
+    let dir = scratch("scene");
+    let bad = dir.join("bad.toml");
+    std::fs::write(&bad, "[[obstacle]]\nname = \"post\"\ncylinder = { radius = 0.1, length = -1.0 }\n").unwrap();
+    let message = fails(&["draw", file, "--scene", bad.to_str().unwrap(), "-o", dir.join("out.svg").to_str().unwrap()]);
+    assert!(message.contains("obstacle 1 (`post`) (line 1): <cylinder length> is -1"), "{message}");
+    assert_eq!(entries(&dir), ["bad.toml"]);
+    std::fs::remove_dir_all(&dir).unwrap();
+}

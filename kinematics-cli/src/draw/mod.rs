@@ -1,14 +1,18 @@
-//! `kinematics draw FILE --q ... [-o robot.svg]`: a picture of the robot at a configuration, so a
-//! user can see that the robot they loaded is the one they meant.
+//! `kinematics draw FILE --q ... [--scene SCENE] [-o robot.svg]`: a picture of the robot at a
+//! configuration, so a user can see that the robot they loaded is the one they meant: its links,
+//! its joints' axes, its collision spheres (when it has `<collision>` geometry) and the obstacles
+//! of a scene file.
 //!
-//! The geometry comes from the runtime reference (`ReferenceFk::link_poses`, the numbers `fk`
-//! prints); `svg.rs` projects it into three orthographic views and writes the SVG by hand.
+//! The geometry comes from the runtime reference (`ReferenceFk::link_poses` and
+//! `sphere_centers`, the numbers `fk` prints); `svg.rs` projects it into three orthographic views
+//! and writes the SVG by hand.
 
 mod svg;
 
 use std::io::Write;
 
 use kinematics::ReferenceFk;
+use kinematics::model::collision::{Meshes, link_spheres};
 use kinematics::model::{JointKind, KinematicTree};
 use nalgebra::Vector3;
 
@@ -24,6 +28,12 @@ pub struct Args {
     /// Write the SVG to this file (atomically) instead of standard output.
     #[arg(short, long)]
     output: Option<std::path::PathBuf>,
+    /// A scene file (.toml or .json) whose obstacles are drawn with the robot.
+    #[arg(long, value_name = "FILE")]
+    scene: Option<String>,
+    /// The sphere cover's largest overshoot (metres) the collision spheres are drawn at.
+    #[arg(long, value_name = "METRES", default_value_t = kinematics_compiler::options::DEFAULT_SPHERE_COVER)]
+    sphere_cover: f64,
 }
 
 /// Draws the robot and prints or writes the SVG.
@@ -31,7 +41,18 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
     let file = &args.file;
     let fk = ReferenceFk::new(crate::robot::load(file)?);
     let q = args.configuration.resolve(fk.tree());
-    let scene = Scene::new(&fk, &q).map_err(|source| CliError::Runtime { file: file.clone(), source })?;
+    if !(args.sphere_cover.is_finite() && args.sphere_cover > 0.0) {
+        return Err(CliError::Usage(format!(
+            "`--sphere-cover` is {} (must be a finite positive length in metres)",
+            args.sphere_cover
+        )));
+    }
+    let mut scene =
+        Scene::new(&fk, &q, args.sphere_cover).map_err(|source| CliError::Runtime { file: file.clone(), source })?;
+    if let Some(path) = &args.scene {
+        let obstacles = kinematics::model::scene::Scene::load(path)?;
+        scene.obstacles = obstacles.obstacles.iter().map(Obstacle::of).collect();
+    }
     let text = svg::render(&scene);
     match &args.output {
         Some(path) => kinematics_build::write_atomic(path, &text).map_err(|source| CliError::Write {
@@ -101,7 +122,92 @@ pub struct JointMark {
     pub axis: Option<([f64; 3], [f64; 3], AxisStyle)>,
 }
 
-/// What is drawn: every link's origin and every joint, in the tree's order.
+/// A collision sphere at the configuration drawn.
+pub struct Ball {
+    /// Its link's name.
+    pub link: String,
+    /// Its centre (metres, root frame).
+    pub center: [f64; 3],
+    /// Its radius.
+    pub radius: f64,
+}
+
+/// An obstacle as drawn: its outline in every view.
+pub struct Obstacle {
+    /// Its name.
+    pub name: String,
+    /// Its shape, placed.
+    pub shape: ObstacleShape,
+}
+
+/// An obstacle's shape, placed in the root frame.
+pub enum ObstacleShape {
+    /// A sphere: a circle in every view.
+    Sphere {
+        /// Centre.
+        center: [f64; 3],
+        /// Radius.
+        radius: f64,
+    },
+    /// A cylinder or capsule: its axis drawn as thick as it is wide (round ends for a capsule).
+    Round {
+        /// One end of the axis.
+        a: [f64; 3],
+        /// The other.
+        b: [f64; 3],
+        /// Radius.
+        radius: f64,
+        /// Whether the ends are hemispheres.
+        capsule: bool,
+    },
+    /// A box: its twelve edges.
+    Box {
+        /// Its eight corners (bit `k` of the index picks the sign along the box's axis `k`).
+        corners: [[f64; 3]; 8],
+    },
+}
+
+impl Obstacle {
+    /// A scene file's obstacle, placed.
+    fn of(obstacle: &kinematics::model::scene::SceneObstacle) -> Self {
+        use kinematics::model::collision::Shape;
+        let pose = kinematics::runtime::fixed_isometry(&obstacle.origin());
+        let place = |p: Vector3<f64>| array(&(pose * nalgebra::Point3::from(p)).coords);
+        let axis = |length: f64| (place(Vector3::z() * (-length / 2.0)), place(Vector3::z() * (length / 2.0)));
+        let shape = match obstacle.shape {
+            Shape::Sphere { radius } => ObstacleShape::Sphere { center: place(Vector3::zeros()), radius },
+            Shape::Cylinder { radius, length } => {
+                let (a, b) = axis(length);
+                ObstacleShape::Round { a, b, radius, capsule: false }
+            }
+            Shape::Capsule { radius, length } => {
+                let (a, b) = axis(length);
+                ObstacleShape::Round { a, b, radius, capsule: true }
+            }
+            Shape::Box { size } => ObstacleShape::Box {
+                corners: std::array::from_fn(|k| {
+                    let sign = |bit: usize| if k >> bit & 1 == 1 { 0.5 } else { -0.5 };
+                    place(Vector3::new(sign(0) * size[0], sign(1) * size[1], sign(2) * size[2]))
+                }),
+            },
+            // A scene file has no meshes: its reader refuses every other key.
+            Shape::Mesh { .. } => ObstacleShape::Sphere { center: place(Vector3::zeros()), radius: 0.0 },
+        };
+        Obstacle { name: obstacle.name.clone(), shape }
+    }
+
+    /// The points and radius that bound it, for the drawing's extent.
+    fn extent(&self) -> Vec<([f64; 3], f64)> {
+        match &self.shape {
+            ObstacleShape::Sphere { center, radius } => vec![(*center, *radius)],
+            ObstacleShape::Round { a, b, radius, .. } => vec![(*a, *radius), (*b, *radius)],
+            ObstacleShape::Box { corners } => corners.iter().map(|&c| (c, 0.0)).collect(),
+        }
+    }
+}
+
+/// What is drawn: every link's origin and every joint, in the tree's order, the collision
+/// spheres and the obstacles.
 pub struct Scene {
     /// The robot's name.
     pub robot: String,
@@ -111,6 +217,21 @@ pub struct Scene {
     pub links: Vec<LinkMark>,
     /// The joints, in the tree's joint order.
     pub joints: Vec<JointMark>,
+    /// The collision spheres (meshes left out), in the robot's sphere order.
+    pub spheres: Vec<Ball>,
+    /// The obstacles of the scene file, in its order.
+    pub obstacles: Vec<Obstacle>,
+}
+
+impl Scene {
+    /// Every point drawn with the radius around it (0 for a point), for the drawing's extent.
+    pub fn extent(&self) -> Vec<([f64; 3], f64)> {
+        let mut out: Vec<([f64; 3], f64)> = self.links.iter().map(|l| (l.origin, 0.0)).collect();
+        out.extend(self.joints.iter().flat_map(|j| j.points.iter().map(|&p| (p, 0.0))));
+        out.extend(self.spheres.iter().map(|s| (s.center, s.radius)));
+        out.extend(self.obstacles.iter().flat_map(Obstacle::extent));
+        out
+    }
 }
 
 fn array(v: &Vector3<f64>) -> [f64; 3] {
@@ -119,8 +240,8 @@ fn array(v: &Vector3<f64>) -> [f64; 3] {
 
 impl Scene {
     /// The robot at `q` by the runtime reference (which refuses a wrong count or a value that is
-    /// not a finite number).
-    pub fn new(fk: &ReferenceFk, q: &[f64]) -> Result<Self, kinematics::RuntimeError> {
+    /// not a finite number), its collision spheres at the cover `cover` (finite and positive).
+    pub fn new(fk: &ReferenceFk, q: &[f64], cover: f64) -> Result<Self, kinematics::RuntimeError> {
         let tree: &KinematicTree = fk.tree();
         let poses = fk.link_poses(q)?;
         let links = tree
@@ -155,6 +276,19 @@ impl Scene {
                 }
             })
             .collect();
-        Ok(Scene { robot: tree.name().to_owned(), q: q.to_vec(), links, joints })
+        // Meshes are left out (the footnote says so): the cover reads the other shapes.
+        #[allow(clippy::expect_used, reason = "invariant: with meshes skipped the cover refuses nothing")]
+        let covered = link_spheres(tree, cover, Meshes::Skip).expect("skipped meshes are no fault");
+        let spheres = fk
+            .sphere_centers(q, &covered)?
+            .iter()
+            .zip(&covered)
+            .map(|(center, s)| Ball {
+                link: tree.link(s.link).name.clone(),
+                center: array(&center.coords),
+                radius: s.sphere.radius,
+            })
+            .collect();
+        Ok(Scene { robot: tree.name().to_owned(), q: q.to_vec(), links, joints, spheres, obstacles: Vec::new() })
     }
 }

@@ -10,7 +10,7 @@
 
 use std::fmt::Write as _;
 
-use super::{AxisStyle, Scene};
+use super::{AxisStyle, ObstacleShape, Scene};
 
 /// Side of a view's square panel, in pixels.
 const PANEL: f64 = 360.0;
@@ -99,13 +99,12 @@ impl Placed<'_> {
     }
 }
 
-/// The bounding box of every drawn point: per coordinate, smallest and largest.
+/// The bounding box of everything drawn: per coordinate, smallest and largest.
 fn bounds(scene: &Scene) -> [(f64, f64); 3] {
-    let points = scene.links.iter().map(|l| l.origin).chain(scene.joints.iter().flat_map(|j| j.points.clone()));
     let mut bounds = [(f64::INFINITY, f64::NEG_INFINITY); 3];
-    for p in points {
+    for (p, r) in scene.extent() {
         for (b, x) in bounds.iter_mut().zip(p) {
-            *b = (b.0.min(x), b.1.max(x));
+            *b = (b.0.min(x - r), b.1.max(x + r));
         }
     }
     bounds
@@ -167,6 +166,9 @@ pub fn render(scene: &Scene) -> String {
         ".planar { stroke: #2e8b57; stroke-dasharray: 1 2; }\n",
         ".label { font-size: 9px; fill: #444; }\n",
         ".scale-bar { stroke: #222; stroke-width: 1.5; }\n",
+        ".sphere { fill: #e8a33d; fill-opacity: 0.25; stroke: #c07a12; stroke-width: 0.6; }\n",
+        ".obstacle { fill: #8a8fa3; fill-opacity: 0.3; stroke: #4d5266; stroke-width: 1; }\n",
+        ".obstacle-edge { stroke: #4d5266; stroke-width: 1; }\n",
         "</style>\n"
     )
     .to_owned());
@@ -236,9 +238,19 @@ pub fn render(scene: &Scene) -> String {
         x += 130.0;
     }
     w(format!(
-        "<text x=\"{}\" y=\"{}\" font-size=\"11\">links grey, origins as dots; fixed and floating joints have no axis</text>\n",
+        "<text x=\"{}\" y=\"{}\" font-size=\"11\">links grey, origins as dots; fixed and floating joints have no axis{}{}</text>\n",
         px(x),
-        px(y + 4.0)
+        px(y + 4.0),
+        if scene.spheres.is_empty() {
+            String::new()
+        } else {
+            format!("; {} collision spheres orange (meshes not drawn)", scene.spheres.len())
+        },
+        if scene.obstacles.is_empty() {
+            String::new()
+        } else {
+            format!("; {} obstacles blue-grey", scene.obstacles.len())
+        }
     ));
     out.push_str("</svg>\n");
     out
@@ -263,6 +275,20 @@ fn view_group(scene: &Scene, placed: &Placed, left: f64) -> String {
         px(HEADER + 18.0),
         view.name
     );
+    out.push_str(&obstacles(scene, placed));
+    for ball in &scene.spheres {
+        let (x, y) = placed.screen(ball.center);
+        let _ = writeln!(
+            out,
+            "<circle class=\"sphere\" data-link=\"{}\" {} data-r=\"{}\" cx=\"{}\" cy=\"{}\" r=\"{}\"/>",
+            escape(&ball.link),
+            point_data(ball.center),
+            ball.radius,
+            px(x),
+            px(y),
+            px(ball.radius * placed.scale)
+        );
+    }
     for joint in &scene.joints {
         let points: Vec<String> = joint
             .points
@@ -331,6 +357,60 @@ fn view_group(scene: &Scene, placed: &Placed, left: f64) -> String {
         }
     }
     out.push_str("</g>\n");
+    out
+}
+
+/// The obstacles' outlines in one view: spheres as circles, cylinders and capsules as their axis
+/// drawn as wide as they are (round ends for capsules), boxes as their twelve edges.
+fn obstacles(scene: &Scene, placed: &Placed) -> String {
+    let mut out = String::new();
+    for obstacle in &scene.obstacles {
+        let name = escape(&obstacle.name);
+        match &obstacle.shape {
+            ObstacleShape::Sphere { center, radius } => {
+                let (x, y) = placed.screen(*center);
+                let _ = writeln!(
+                    out,
+                    "<circle class=\"obstacle\" data-obstacle=\"{name}\" cx=\"{}\" cy=\"{}\" r=\"{}\"><title>{name}</title></circle>",
+                    px(x),
+                    px(y),
+                    px(radius * placed.scale)
+                );
+            }
+            ObstacleShape::Round { a, b, radius, capsule } => {
+                let ((x1, y1), (x2, y2)) = (placed.screen(*a), placed.screen(*b));
+                let cap = if *capsule { "round" } else { "butt" };
+                let _ = writeln!(
+                    out,
+                    "<line class=\"obstacle-edge\" data-obstacle=\"{name}\" x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" \
+                     stroke-opacity=\"0.3\" stroke-linecap=\"{cap}\" stroke-width=\"{}\"><title>{name}</title></line>",
+                    px(x1),
+                    px(y1),
+                    px(x2),
+                    px(y2),
+                    px(2.0 * radius * placed.scale)
+                );
+            }
+            ObstacleShape::Box { corners } => {
+                let mut path = String::new();
+                // The edges join corners that differ in one bit.
+                for (i, &c) in corners.iter().enumerate() {
+                    for bit in 0..3 {
+                        let j = i | 1 << bit;
+                        if j != i {
+                            let ((x1, y1), (x2, y2)) = (placed.screen(c), placed.screen(corners[j]));
+                            let _ = write!(path, "M{},{} L{},{} ", px(x1), px(y1), px(x2), px(y2));
+                        }
+                    }
+                }
+                let _ = writeln!(
+                    out,
+                    "<path class=\"obstacle-edge\" data-obstacle=\"{name}\" d=\"{}\"><title>{name}</title></path>",
+                    path.trim_end()
+                );
+            }
+        }
+    }
     out
 }
 
