@@ -1,8 +1,18 @@
-//! Collision checking (issue 30): per configuration, the generated `sphere_centers` against the
-//! runtime reference's, and `collides` in a tabletop scene of 12 boxes (mixed free and colliding
-//! configurations, the fraction free printed) and on all-free configurations (no early exit),
-//! and `self_collides`, on VAMP's spherized Panda and UR5. `cargo bench --bench collision`
-//! measures; under `cargo test` every body runs once and its answers are checked.
+//! Collision checking (issue 30), per configuration, on VAMP's spherized Panda and UR5:
+//!
+//! - `sphere_centers` (one configuration, and batches of 1,024 in lanes, f64 and f32) against the
+//!   runtime reference's;
+//! - `collides` in the tabletop (12 boxes) and shelf (18 boxes, capsules and cylinders) scenes of
+//!   `scenes/`, each configuration with its own verdict (the fraction free printed), and on
+//!   all-free configurations (no early exit), one at a time and in batches (lanes);
+//! - `self_collides`, one at a time and in batches;
+//! - the baselines a user has without `collision`: our generated link poses plus a hand loop over
+//!   the spheres, and the same centres with parry3d-f64's intersection tests (the reference's
+//!   shapes).
+//!
+//! Batches report their throughput (configurations per second): the time per configuration is its
+//! inverse. `cargo bench --bench collision` measures; under `cargo test` every body runs once and
+//! its answers are checked.
 #![allow(missing_docs, clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 #[allow(dead_code)] // the helpers the fk and ik benchmarks use and this one does not
@@ -11,9 +21,10 @@ mod common;
 use std::hint::black_box;
 use std::time::Duration;
 
-use kinematics::collision::{BoxObstacle, Environment};
+use criterion::Throughput;
+use kinematics::collision::Environment;
 use kinematics::model::collision::{Meshes, link_spheres};
-use kinematics::{Configurations, Kinematics};
+use kinematics::{Configurations, Kinematics, SceneObstacles};
 
 #[derive(Kinematics)]
 #[kinematics(urdf = "robots/panda_spherized.urdf", collision(srdf = "robots/panda.srdf"), scalars(f64, f32))]
@@ -23,47 +34,126 @@ struct Panda;
 #[kinematics(urdf = "robots/ur5_spherized.urdf", collision, scalars(f64, f32))]
 struct Ur5;
 
-const IDENTITY: [[f64; 3]; 3] = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
-
-/// A table under the arm and eleven boxes on and around it (a tabletop scene of 12 boxes).
-fn tabletop() -> Vec<BoxObstacle> {
-    let mut boxes = vec![BoxObstacle::from_pose(IDENTITY, [0.6, 0.0, -0.05], [0.8, 1.4, 0.1])];
-    for k in 0..11 {
-        let (x, y) = (0.35 + 0.05 * f64::from(k % 4) * 2.0, -0.6 + 0.12 * f64::from(k));
-        boxes.push(BoxObstacle::from_pose(IDENTITY, [x, y, 0.08], [0.06, 0.06, 0.16]));
-    }
-    boxes
-}
-
 /// 1,024 configurations of `N` joints within the limits.
 fn inputs<const N: usize>(limits: &[kinematics::JointLimits]) -> Vec<[f64; N]> {
     Configurations::within(limits).skip(5).take(1024).map(|q| q.try_into().unwrap()).collect()
 }
 
+fn scene(name: &str) -> SceneObstacles {
+    kinematics::load_scene(format!("{}/scenes/{name}.toml", env!("CARGO_MANIFEST_DIR"))).unwrap()
+}
+
 macro_rules! robot {
     ($c:expr, $name:literal, $robot:ty, $n:literal) => {{
+        let mut criterion: Option<&mut criterion::Criterion> = $c;
+        const S: usize = <$robot>::SPHERE_RADII.len();
         let qs: Vec<[f64; $n]> = inputs(&<$robot>::JOINT_LIMITS);
-        let boxes = tabletop();
-        let scene = Environment::new(&[], &[], &[], &boxes).unwrap();
-        let free: Vec<[f64; $n]> = qs.iter().copied().filter(|q| !<$robot>::collides(q, &scene)).collect();
+        let qs32: Vec<[f32; $n]> = qs.iter().map(|q| q.map(|x| x as f32)).collect();
         let reference = <$robot>::reference().unwrap();
         let spheres = link_spheres(reference.tree(), 0.01, Meshes::Refuse).unwrap();
-        let Some(c) = $c else {
-            // Check mode: the centres against the reference's, the verdicts against a plain loop.
-            let q = qs[0];
-            let generated = <$robot>::sphere_centers(&q);
-            for (g, r) in generated.iter().zip(reference.sphere_centers(&q, &spheres).unwrap()) {
-                assert!((0..3).all(|i| (g[i] - r[i]).abs() < 1e-12), "{}", $name);
+        // Each sphere's link's index in `link_poses` and its centre in that link's frame.
+        let local: Vec<(usize, [f64; 3])> = spheres
+            .iter()
+            .map(|s| {
+                let link = reference.tree().link(s.link);
+                let index = <$robot>::LINK_NAMES.iter().position(|n| *n == link.name).unwrap();
+                (index, link.collisions[s.collision].origin.apply(s.sphere.center))
+            })
+            .collect();
+        let hand_centers = |q: &[f64; $n]| -> [[f64; 3]; S] {
+            let poses = <$robot>::link_poses(q);
+            let mut out = [[0.0; 3]; S];
+            for (c, (link, p)) in out.iter_mut().zip(&local) {
+                let (r, t) = (&poses[*link].rotation, &poses[*link].translation);
+                *c = [0, 1, 2].map(|i| r[i][0] * p[0] + r[i][1] * p[1] + r[i][2] * p[2] + t[i]);
             }
-            for q in &qs {
-                let plain =
-                    <$robot>::sphere_centers(q).iter().zip(<$robot>::SPHERE_RADII).any(|(c, r)| scene.hits(*c, r));
-                assert_eq!(<$robot>::collides(q, &scene), plain, "{}", $name);
-            }
-            assert!(!free.is_empty() && free.len() < qs.len(), "{}: {} free of {}", $name, free.len(), qs.len());
-            return;
+            out
         };
-        println!("{}: {} of {} configurations free in the tabletop scene", $name, free.len(), qs.len());
+        for scene_name in ["tabletop", "shelf"] {
+            let obstacles = scene(scene_name);
+            let env: Environment<'_> = obstacles.environment().unwrap();
+            let shapes = obstacles.reference();
+            let free: Vec<[f64; $n]> = qs.iter().copied().filter(|q| !<$robot>::collides(q, &env)).collect();
+            let free32: Vec<[f32; $n]> = free.iter().map(|q| q.map(|x| x as f32)).collect();
+            // The baselines: generated link poses, then the spheres by hand against the same
+            // environment (`Environment::hits`) or against parry's shapes; self-collision
+            // through `self_collides`, as a user without a check of their own would.
+            let hand = |q: &[f64; $n]| {
+                hand_centers(q).iter().zip(<$robot>::SPHERE_RADII).any(|(c, r)| env.hits(*c, r))
+                    || <$robot>::self_collides(q)
+            };
+            let parry = |q: &[f64; $n]| {
+                hand_centers(q).iter().zip(<$robot>::SPHERE_RADII).any(|(c, r)| shapes.intersects(*c, r))
+                    || <$robot>::self_collides(q)
+            };
+            let Some(c) = criterion.as_deref_mut() else {
+                // Check mode: the centres against the reference's, every form's verdicts against
+                // the one-configuration function, the baselines against it (they agree but at
+                // touching contact, which these configurations do not meet).
+                for q in qs.iter().take(8) {
+                    let generated = <$robot>::sphere_centers(q);
+                    for (g, r) in generated.iter().zip(reference.sphere_centers(q, &spheres).unwrap()) {
+                        assert!((0..3).all(|i| (g[i] - r[i]).abs() < 1e-12), "{}", $name);
+                    }
+                    for (g, h) in generated.iter().zip(hand_centers(q)) {
+                        assert!((0..3).all(|i| (g[i] - h[i]).abs() < 1e-12), "{}", $name);
+                    }
+                }
+                let mut verdicts = vec![false; qs.len()];
+                <$robot>::collides_batch(&qs, &env, &mut verdicts).unwrap();
+                for (q, v) in qs.iter().zip(&verdicts) {
+                    let one = <$robot>::collides(q, &env);
+                    assert_eq!((*v, hand(q), parry(q)), (one, one, one), "{} in the {scene_name} scene", $name);
+                }
+                assert!(!free.is_empty() && free.len() < qs.len(), "{}: {} free of {}", $name, free.len(), qs.len());
+                continue;
+            };
+            println!("{}: {} of {} configurations free in the {scene_name} scene", $name, free.len(), qs.len());
+            let mut group = c.benchmark_group(format!("{}/{scene_name}", $name));
+            let mut k = 0;
+            group.bench_function("collides", |b| {
+                b.iter(|| {
+                    k = (k + 1) % qs.len();
+                    black_box(<$robot>::collides(black_box(&qs[k]), &env))
+                })
+            });
+            group.bench_function("collides_all_free", |b| {
+                b.iter(|| {
+                    k = (k + 1) % free.len();
+                    black_box(<$robot>::collides(black_box(&free[k]), &env))
+                })
+            });
+            group.bench_function("link_poses_and_hand_loop", |b| {
+                b.iter(|| {
+                    k = (k + 1) % qs.len();
+                    black_box(hand(black_box(&qs[k])))
+                })
+            });
+            group.bench_function("link_poses_and_parry", |b| {
+                b.iter(|| {
+                    k = (k + 1) % qs.len();
+                    black_box(parry(black_box(&qs[k])))
+                })
+            });
+            let mut verdicts = vec![false; qs.len()];
+            group.throughput(Throughput::Elements(qs.len() as u64));
+            group.bench_function("collides_batch", |b| {
+                b.iter(|| <$robot>::collides_batch(black_box(&qs), &env, &mut verdicts).unwrap())
+            });
+            group.bench_function("collides_batch_f32", |b| {
+                b.iter(|| <$robot>::collides_batch_f32(black_box(&qs32), &env, &mut verdicts).unwrap())
+            });
+            let mut free_verdicts = vec![false; free.len()];
+            group.throughput(Throughput::Elements(free.len() as u64));
+            group.bench_function("collides_all_free_batch", |b| {
+                b.iter(|| <$robot>::collides_batch(black_box(&free), &env, &mut free_verdicts).unwrap())
+            });
+            group.bench_function("collides_all_free_batch_f32", |b| {
+                b.iter(|| <$robot>::collides_batch_f32(black_box(&free32), &env, &mut free_verdicts).unwrap())
+            });
+            group.finish();
+        }
+        let Some(c) = criterion else { return };
         let mut group = c.benchmark_group($name);
         let mut k = 0;
         group.bench_function("sphere_centers", |b| {
@@ -78,16 +168,10 @@ macro_rules! robot {
                 black_box(reference.sphere_centers(black_box(&qs[k]), &spheres).unwrap())
             })
         });
-        group.bench_function("collides_tabletop", |b| {
+        group.bench_function("link_poses_and_hand_centers", |b| {
             b.iter(|| {
                 k = (k + 1) % qs.len();
-                black_box(<$robot>::collides(black_box(&qs[k]), &scene))
-            })
-        });
-        group.bench_function("collides_tabletop_all_free", |b| {
-            b.iter(|| {
-                k = (k + 1) % free.len();
-                black_box(<$robot>::collides(black_box(&free[k]), &scene))
+                black_box(hand_centers(black_box(&qs[k])))
             })
         });
         group.bench_function("self_collides", |b| {
@@ -96,35 +180,21 @@ macro_rules! robot {
                 black_box(<$robot>::self_collides(black_box(&qs[k])))
             })
         });
-        // Batches: per configuration, each with its own verdict (criterion's throughput).
-        let qs32: Vec<[f32; $n]> = qs.iter().map(|q| q.map(|x| x as f32)).collect();
-        let free32: Vec<[f32; $n]> = free.iter().map(|q| q.map(|x| x as f32)).collect();
-        let mut centers64 = vec![[[0.0; 3]; <$robot>::SPHERE_RADII.len()]; qs.len()];
-        let mut centers32 = vec![[[0.0f32; 3]; <$robot>::SPHERE_RADII.len()]; qs.len()];
+        let mut centers64 = vec![[[0.0; 3]; S]; qs.len()];
+        let mut centers32 = vec![[[0.0f32; 3]; S]; qs.len()];
         let mut verdicts = vec![false; qs.len()];
-        group.throughput(criterion::Throughput::Elements(qs.len() as u64));
+        group.throughput(Throughput::Elements(qs.len() as u64));
         group.bench_function("sphere_centers_batch", |b| {
             b.iter(|| <$robot>::sphere_centers_batch(black_box(&qs), &mut centers64).unwrap())
         });
         group.bench_function("sphere_centers_batch_f32", |b| {
             b.iter(|| <$robot>::sphere_centers_batch_f32(black_box(&qs32), &mut centers32).unwrap())
         });
-        group.bench_function("collides_tabletop_batch", |b| {
-            b.iter(|| <$robot>::collides_batch(black_box(&qs), &scene, &mut verdicts).unwrap())
-        });
-        group.bench_function("collides_tabletop_batch_f32", |b| {
-            b.iter(|| <$robot>::collides_batch_f32(black_box(&qs32), &scene, &mut verdicts).unwrap())
+        group.bench_function("self_collides_batch", |b| {
+            b.iter(|| <$robot>::self_collides_batch(black_box(&qs), &mut verdicts).unwrap())
         });
         group.bench_function("self_collides_batch_f32", |b| {
             b.iter(|| <$robot>::self_collides_batch_f32(black_box(&qs32), &mut verdicts).unwrap())
-        });
-        group.throughput(criterion::Throughput::Elements(free.len() as u64));
-        let mut free_verdicts = vec![false; free.len()];
-        group.bench_function("collides_tabletop_all_free_batch", |b| {
-            b.iter(|| <$robot>::collides_batch(black_box(&free), &scene, &mut free_verdicts).unwrap())
-        });
-        group.bench_function("collides_tabletop_all_free_batch_f32", |b| {
-            b.iter(|| <$robot>::collides_batch_f32(black_box(&free32), &scene, &mut free_verdicts).unwrap())
         });
         group.finish();
     }};

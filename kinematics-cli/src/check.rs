@@ -1,4 +1,5 @@
-//! `kinematics check FILE`: the compiled expressions against the runtime reference.
+//! `kinematics check FILE`: the compiled expressions against the runtime reference, and with
+//! `--collision` the collision checks against the reference's distances.
 
 use std::io::Write;
 
@@ -13,11 +14,33 @@ pub struct Args {
     /// How many configurations (the first five put every joint at 0, pi/2, -pi/2, pi, -pi).
     #[arg(long, default_value_t = 10_000, value_parser = crate::agreement::sample_count)]
     samples: usize,
+    /// Check the collision checks too (`self_collides`, and with `--scene` `collides`), on the
+    /// robot's `<collision>` geometry (meshes left out) against the reference's distances.
+    #[arg(long)]
+    collision: bool,
+    /// How many configurations the collision checks are run on.
+    #[arg(long, default_value_t = 1_000, value_parser = crate::agreement::sample_count)]
+    collision_samples: usize,
+    /// The sphere cover's largest overshoot (metres).
+    #[arg(long, value_name = "METRES", default_value_t = kinematics_compiler::options::DEFAULT_SPHERE_COVER)]
+    sphere_cover: f64,
+    /// An SRDF whose disabled pairs the self-collision check leaves out (implies `--collision`).
+    #[arg(long, value_name = "FILE")]
+    srdf: Option<String>,
+    /// A scene file whose obstacles `collides` is checked against (implies `--collision`).
+    #[arg(long, value_name = "FILE")]
+    scene: Option<String>,
 }
 
 /// Prints the largest error of every link; fails past the tolerance.
 pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
     let tree = crate::robot::load(&args.file)?;
+    // The collision inputs are read first: a bad SRDF or scene fails before anything is printed.
+    let collision = if args.collision || args.srdf.is_some() || args.scene.is_some() {
+        Some(crate::collision::setup(&tree, args.sphere_cover, args.srdf.as_deref(), args.scene.as_deref())?)
+    } else {
+        None
+    };
     let errors = check_graph(&tree, &args.file, args.samples)?;
     writeln!(
         out,
@@ -45,5 +68,12 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
             worst.error, worst.link
         )?;
     }
-    verdict(&args.file, &errors)
+    verdict(&args.file, &errors)?;
+    if let Some(setup) = &collision {
+        match crate::collision::check(&tree, &args.file, args.collision_samples, setup)? {
+            Some(report) => write!(out, "{}", crate::collision::text(&report, args.collision_samples))?,
+            None => writeln!(out, "collision: no <collision> geometry the cover reads (meshes are not read)")?,
+        }
+    }
+    Ok(())
 }

@@ -108,7 +108,30 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
              `kinematics generate {file}` or the build API in your crate, and time it there."
         )?;
     }
-    velocities(args, out, &tree, &file, (&base, &tip), built_in, &inputs)
+    velocities(args, out, &tree, &file, (&base, &tip), built_in, &inputs)?;
+    collision(args, out, &tree, &file)
+}
+
+/// The scene the demo checks `collides` against, when it is there.
+const DEMO_SCENE: &str = "scenes/tabletop.toml";
+
+/// Step 7: the robot's collision geometry as spheres, and the checks a `collision` robot gets,
+/// against the runtime reference's distances (in the tabletop scene when it is at hand).
+fn collision(args: &Args, out: &mut dyn Write, tree: &KinematicTree, file: &str) -> Result<(), CliError> {
+    writeln!(out, "\n7. Collision: the `<collision>` geometry as spheres (`kinematics check --collision`)\n")?;
+    let scene = Path::new(DEMO_SCENE).exists().then_some(DEMO_SCENE);
+    let cover = kinematics_compiler::options::DEFAULT_SPHERE_COVER;
+    let setup = crate::collision::setup(tree, cover, None, scene)?;
+    let samples = args.samples.clamp(1, 1_000);
+    match crate::collision::check(tree, file, samples, &setup)? {
+        Some(report) => write!(out, "{}", crate::collision::text(&report, samples))?,
+        None => writeln!(
+            out,
+            "  no <collision> geometry the cover reads (meshes are not read); try `kinematics demo \
+             robots/panda_spherized.urdf`"
+        )?,
+    }
+    Ok(())
 }
 
 /// Step 6: the tip's geometric Jacobian, what its functions cost, and for the built-in UR5 its

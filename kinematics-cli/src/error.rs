@@ -61,6 +61,23 @@ pub enum CliError {
         /// The tolerance.
         tolerance: f64,
     },
+    /// `check`: a collision verdict that is not the reference's, outside the band about contact.
+    #[error(
+        "{file}: `{check}` says {} at q = {q:?}, but the reference's distance is {distance:e} m",
+        if *verdict { "colliding" } else { "free" }
+    )]
+    CollisionDisagrees {
+        /// The description file.
+        file: String,
+        /// `collides` or `self_collides`.
+        check: String,
+        /// The configuration.
+        q: Vec<f64>,
+        /// The reference's signed distance.
+        distance: f64,
+        /// The check's verdict.
+        verdict: bool,
+    },
     /// `check`: the robot has no link besides the root, so no pose can be compared.
     #[error("{file}: nothing to check: the robot has no link besides its root")]
     NothingToCheck {

@@ -15,6 +15,7 @@
 
 mod agreement;
 mod check;
+mod collision;
 mod demo;
 mod draw;
 mod error;

@@ -854,3 +854,41 @@ fn expr_ik_prints_the_family_its_subproblems_and_its_geometry() {
     let error = fails(&["expr", "robots/panda.toml", "--ik"]);
     assert!(error.contains("the chain has 7 moving joints"), "{error}");
 }
+
+#[test]
+fn check_runs_the_collision_checks_against_the_reference() {
+    let out = ok(&[
+        "check",
+        "robots/panda_spherized.urdf",
+        "--samples",
+        "20",
+        "--collision-samples",
+        "200",
+        "--srdf",
+        "robots/panda.srdf",
+        "--scene",
+        "scenes/shelf.toml",
+    ]);
+    assert!(
+        out.contains(
+            "collision: 59 spheres on 11 links at a cover of 0.01 m, 21 self-collision pairs (less the pairs \
+             robots/panda.srdf disables); scene scenes/shelf.toml (18 obstacles)"
+        ),
+        "{out}"
+    );
+    // Both verdicts occur, and every one outside the band is the reference's (or the run fails).
+    for check in ["self_collides", "collides (obstacles and self)"] {
+        let line = out.lines().find(|l| l.trim_start().starts_with(&format!("{check}:"))).unwrap();
+        let numbers: Vec<usize> = line
+            .split(|c: char| !c.is_ascii_digit())
+            .filter(|w| !w.is_empty())
+            .filter_map(|w| w.parse().ok())
+            .collect();
+        let (colliding, free) = (numbers[1], numbers[2]);
+        assert!(colliding > 0 && free > 0 && colliding + free <= 200, "{line}");
+    }
+    let none = ok(&["check", "robots/planar_3r.urdf", "--samples", "5", "--collision"]);
+    assert!(none.ends_with("collision: no <collision> geometry the cover reads (meshes are not read)\n"), "{none}");
+    let message = fails(&["check", "robots/ur5_spherized.urdf", "--samples", "5", "--srdf", "robots/panda.srdf"]);
+    assert!(message.contains("robots/panda.srdf: line 51:"), "{message}");
+}

@@ -78,6 +78,15 @@ impl ReferenceObstacles {
         }
         ReferenceObstacles { shapes }
     }
+
+    /// Whether the ball of `center` and `radius` touches or overlaps one of the shapes (parry's
+    /// intersection test; a pair parry cannot test counts as touching).
+    pub fn intersects(&self, center: [f64; 3], radius: f64) -> bool {
+        let (at, ball) = (Pose::from_translation(vector(center)), Ball::new(radius));
+        self.shapes
+            .iter()
+            .any(|(pose, shape)| query::intersection_test(&at, &ball, pose, shape.as_ref()).unwrap_or(true))
+    }
 }
 
 /// The signed distance between a ball and a shape: parry's distance where they are apart, minus

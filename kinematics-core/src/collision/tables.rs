@@ -54,58 +54,42 @@ impl CollisionTables<'_> {
     /// of `env` or itself: the obstacles first, then the pairs, each only on the lanes still
     /// free. A lane whose `q` is not finite is colliding.
     #[inline(always)]
-    pub fn collides<L: CheckLanes, const N: usize, const K: usize>(
+    pub fn collides<L: CheckLanes, const N: usize>(
         &self,
         q: &[L; N],
-        poses: &[Pose<L>; K],
+        poses: &[Pose<L>],
         env: &Environment<'_>,
     ) -> LaneMask {
-        let bounds = self.bounds(poses);
-        let hit = self.obstacle_hits(poses, &bounds, env, non_finite(q));
+        let hit = self.obstacle_hits(poses, env, non_finite(q));
         if hit.all() {
             return hit.bits();
         }
-        self.self_hits(poses, &bounds, hit).bits()
+        self.self_hits(poses, hit).bits()
     }
 
     /// The lanes where two links of a checked pair of the robot at `q` touch. A lane whose `q` is
     /// not finite is colliding.
     #[inline(always)]
-    pub fn self_collides<L: CheckLanes, const N: usize, const K: usize>(
-        &self,
-        q: &[L; N],
-        poses: &[Pose<L>; K],
-    ) -> LaneMask {
-        let bounds = self.bounds(poses);
-        self.self_hits(poses, &bounds, non_finite(q)).bits()
+    pub fn self_collides<L: CheckLanes, const N: usize>(&self, q: &[L; N], poses: &[Pose<L>]) -> LaneMask {
+        self.self_hits(poses, non_finite(q)).bits()
     }
 
-    /// Each link's bounding sphere's centre.
+    /// Link `k`'s bounding sphere's centre.
     #[inline(always)]
-    fn bounds<L: CheckLanes, const K: usize>(&self, poses: &[Pose<L>; K]) -> [[L; 3]; K] {
-        let mut bounds = [[L::from_f64(0.0); 3]; K];
-        for ((bound, pose), link) in bounds.iter_mut().zip(poses).zip(self.links) {
-            *bound = place(pose, link.2);
-        }
-        bounds
+    fn bound<L: CheckLanes>(&self, poses: &[Pose<L>], k: usize) -> [L; 3] {
+        place(&poses[k], self.links[k].2)
     }
 
     /// `hit` and the lanes where a sphere touches an obstacle.
     #[inline(always)]
-    fn obstacle_hits<L: CheckLanes>(
-        &self,
-        poses: &[Pose<L>],
-        bounds: &[[L; 3]],
-        env: &Environment<'_>,
-        mut hit: L::Flags,
-    ) -> L::Flags {
+    fn obstacle_hits<L: CheckLanes>(&self, poses: &[Pose<L>], env: &Environment<'_>, mut hit: L::Flags) -> L::Flags {
         if hit.all() || env.is_empty() {
             return hit;
         }
-        for ((&(start, end, _, radius), bound), pose) in self.links.iter().zip(bounds).zip(poses) {
+        for (k, (&(start, end, _, radius), pose)) in self.links.iter().zip(poses).enumerate() {
             let link = Link {
                 pose,
-                bound,
+                bound: self.bound(poses, k),
                 radius: L::from_f64(radius),
                 centers: &self.centers[start..end],
                 radii: &self.radii[start..end],
@@ -125,14 +109,15 @@ impl CollisionTables<'_> {
     /// then each link's spheres against the other's bounding sphere, then sphere against sphere
     /// among those (the second link's spheres placed a chunk at a time).
     #[inline(always)]
-    fn self_hits<L: CheckLanes>(&self, poses: &[Pose<L>], bounds: &[[L; 3]], mut hit: L::Flags) -> L::Flags {
+    fn self_hits<L: CheckLanes>(&self, poses: &[Pose<L>], mut hit: L::Flags) -> L::Flags {
         for &(i, j) in self.pairs {
             if hit.all() {
                 return hit;
             }
             let ((sa, ea, _, ra), (sb, eb, _, rb)) = (self.links[i], self.links[j]);
             let (ra, rb) = (L::from_f64(ra), L::from_f64(rb));
-            let near = touch(&bounds[i], ra, &bounds[j], rb).and_not(hit);
+            let (bound_i, bound_j) = (self.bound(poses, i), self.bound(poses, j));
+            let near = touch(&bound_i, ra, &bound_j, rb).and_not(hit);
             if !near.any() {
                 continue;
             }
@@ -143,7 +128,7 @@ impl CollisionTables<'_> {
                 let mut count = 0;
                 for b in chunk..eb.min(chunk + CHUNK) {
                     let (center, r) = (place(&poses[j], self.centers[b]), L::from_f64(self.radii[b]));
-                    if (touch(&center, r, &bounds[i], ra) & near).any() {
+                    if (touch(&center, r, &bound_i, ra) & near).any() {
                         placed[count] = (center, r);
                         count += 1;
                     }
@@ -153,7 +138,7 @@ impl CollisionTables<'_> {
                 }
                 for a in sa..ea {
                     let (center, r) = (place(&poses[i], self.centers[a]), L::from_f64(self.radii[a]));
-                    let close = touch(&center, r, &bounds[j], rb) & near;
+                    let close = touch(&center, r, &bound_j, rb) & near;
                     if !close.any() {
                         continue;
                     }
@@ -188,7 +173,7 @@ fn place<L: CheckLanes>(pose: &Pose<L>, p: Vec3) -> [L; 3] {
 /// One link's part of a check: its pose, its bounding sphere, and its spheres in its frame.
 struct Link<'c, L> {
     pose: &'c Pose<L>,
-    bound: &'c [L; 3],
+    bound: [L; 3],
     radius: L,
     centers: &'c [Vec3],
     radii: &'c [f64],
@@ -201,7 +186,7 @@ impl<L: CheckLanes> Link<'_, L> {
     #[inline(always)]
     fn against<O: Obstacle>(&self, obstacles: &[O], mut hit: L::Flags) -> L::Flags {
         for obstacle in obstacles {
-            let near = obstacle.hits(self.bound, self.radius).and_not(hit);
+            let near = obstacle.hits(&self.bound, self.radius).and_not(hit);
             if !near.any() {
                 continue;
             }

@@ -1,0 +1,201 @@
+//! The collision checks of `check` and `demo`: the core's checks (`CollisionTables`, what a
+//! generated `collides` and `self_collides` run) on the compiled link poses, against the runtime
+//! reference's signed distances (parry3d-f64 on its own sphere centres), configuration by
+//! configuration. No Rust is compiled: the tables are built here from the model as the compiler
+//! writes them, and the poses are the compiled expressions evaluated.
+
+use std::collections::BTreeSet;
+
+use kinematics::collision::CollisionTables;
+use kinematics::model::collision::{LinkSphere, Meshes, link_bounds, link_spheres, sphere_pairs};
+use kinematics::model::{KinematicTree, LinkId};
+use kinematics::{Pose, ReferenceFk, SceneObstacles};
+use kinematics_compiler::{Request, compile};
+
+use crate::agreement::Configurations;
+use crate::error::CliError;
+
+/// Configurations within this distance of contact (m) are counted, not judged: there the two
+/// computations may round either way.
+pub const BAND: f64 = 1e-9;
+
+/// What the collision check is run on: the cover, the SRDF's disabled pairs, the scene.
+pub struct Setup<'a> {
+    /// The cover's largest overshoot (m).
+    pub cover: f64,
+    /// The SRDF file and its disabled pairs, if one was given.
+    pub srdf: Option<(&'a str, BTreeSet<(LinkId, LinkId)>)>,
+    /// The scene file and its obstacles, if one was given.
+    pub scene: Option<(&'a str, SceneObstacles)>,
+}
+
+/// One check's counts.
+#[derive(Debug, Default, Clone, Copy)]
+pub struct Counts {
+    /// Configurations the reference says collide, and the check agreed.
+    pub colliding: usize,
+    /// Configurations the reference says are free, and the check agreed.
+    pub free: usize,
+    /// Configurations within [`BAND`] of contact.
+    pub banded: usize,
+}
+
+/// The collision check's report.
+pub struct Report {
+    /// The spheres, their links, the pairs.
+    pub summary: String,
+    /// `self_collides`'s counts.
+    pub itself: Counts,
+    /// `collides`'s counts, with a scene.
+    pub obstacles: Option<Counts>,
+}
+
+/// The robot's collision geometry checked on `samples` configurations, or `None` if it has none
+/// the cover reads (meshes are left out). A verdict that differs from the reference's outside
+/// the band is the error returned.
+pub fn check(tree: &KinematicTree, file: &str, samples: usize, setup: &Setup<'_>) -> Result<Option<Report>, CliError> {
+    #[allow(clippy::expect_used, reason = "invariant: with meshes skipped the cover refuses nothing")]
+    let spheres: Vec<LinkSphere> = link_spheres(tree, setup.cover, Meshes::Skip).expect("skipped meshes are no fault");
+    if spheres.is_empty() {
+        return Ok(None);
+    }
+    let runtime = |source| CliError::Runtime { file: file.to_owned(), source };
+    // The tables, as the compiler writes them: links with spheres in tree order, each with its
+    // spheres' range and bounding sphere; each sphere's centre in its link's frame.
+    let bounds = link_bounds(tree, &spheres);
+    let mut links = Vec::new();
+    let mut start = 0;
+    for b in &bounds {
+        let count = spheres.iter().filter(|s| s.link == b.link).count();
+        links.push((start, start + count, b.center, b.radius));
+        start += count;
+    }
+    let centers: Vec<[f64; 3]> =
+        spheres.iter().map(|s| tree.link(s.link).collisions[s.collision].origin.apply(s.sphere.center)).collect();
+    let radii: Vec<f64> = spheres.iter().map(|s| s.sphere.radius).collect();
+    let plan = sphere_pairs(tree, &spheres, setup.srdf.as_ref().map(|(_, d)| d));
+    let index = |l: LinkId| bounds.iter().position(|b| b.link == l);
+    let pairs: Vec<(usize, usize)> = plan.pairs.iter().filter_map(|&(a, b)| Some((index(a)?, index(b)?))).collect();
+    let tables = CollisionTables { links: &links, centers: &centers, radii: &radii, pairs: &pairs };
+
+    let request = Request {
+        base: Some(tree.link(tree.root()).name.clone()),
+        tips: bounds.iter().map(|b| tree.link(b.link).name.clone()).collect(),
+        position_only: false,
+        velocity: None,
+    };
+    let compiled = compile(tree, &request).map_err(|source| CliError::Compile { file: file.to_owned(), source })?;
+    let fk = ReferenceFk::new(tree.clone());
+    let environment = match &setup.scene {
+        Some((_, obstacles)) => Some((
+            obstacles.environment().map_err(|e| CliError::Usage(format!("the scene: {e}")))?,
+            obstacles.reference(),
+        )),
+        None => None,
+    };
+    let (mut itself, mut against) = (Counts::default(), Counts::default());
+    let bar = crate::progress::bar(samples as u64, "checking collisions");
+    for q in Configurations::new(tree).take(samples) {
+        let poses: Vec<Pose<f64>> = compiled.eval(&q).iter().map(|e| Pose::from_entries(e)).collect();
+        let s = fk.self_distance(&q, &spheres, &plan.pairs).map_err(runtime)?;
+        let verdict = tables.self_collides(&[0.0], &poses).any();
+        tally(&mut itself, s, verdict, file, "self_collides", &q)?;
+        if let Some((env, reference)) = &environment {
+            let d = fk.obstacle_distance(&q, &spheres, reference).map_err(runtime)?;
+            let verdict = tables.collides(&[0.0], &poses, env).any();
+            // `collides` is obstacles and self: the nearer decides.
+            tally(&mut against, d.min(s), verdict, file, "collides", &q)?;
+        }
+        bar.inc(1);
+    }
+    bar.finish_and_clear();
+    let pairs_from = match &setup.srdf {
+        Some((srdf, _)) => format!("less the pairs {srdf} disables"),
+        None => "less those of bodies joined by one joint, no SRDF given".to_owned(),
+    };
+    let scene = match &setup.scene {
+        Some((path, obstacles)) => format!("; scene {path} ({} obstacles)", obstacles.len()),
+        None => "; no scene given (`--scene FILE` checks `collides` too)".to_owned(),
+    };
+    let summary = format!(
+        "{} on {} at a cover of {} m, {} ({pairs_from}){scene}",
+        counted(spheres.len(), "sphere"),
+        counted(bounds.len(), "link"),
+        crate::inspect::short(setup.cover),
+        counted(pairs.len(), "self-collision pair")
+    );
+    Ok(Some(Report { summary, itself, obstacles: environment.map(|_| against) }))
+}
+
+/// `n thing` or `n things`.
+fn counted(n: usize, thing: &str) -> String {
+    if n == 1 { format!("1 {thing}") } else { format!("{n} {thing}s") }
+}
+
+/// Counts one verdict against the reference's distance, or fails outside the band.
+fn tally(
+    counts: &mut Counts,
+    distance: f64,
+    verdict: bool,
+    file: &str,
+    check: &str,
+    q: &[f64],
+) -> Result<(), CliError> {
+    if distance.is_nan() || (distance.abs() > BAND && verdict != (distance < 0.0)) {
+        return Err(CliError::CollisionDisagrees {
+            file: file.to_owned(),
+            check: check.to_owned(),
+            q: q.to_vec(),
+            distance,
+            verdict,
+        });
+    }
+    if distance.abs() <= BAND {
+        counts.banded += 1;
+    } else if verdict {
+        counts.colliding += 1;
+    } else {
+        counts.free += 1;
+    }
+    Ok(())
+}
+
+/// The report's lines.
+pub fn text(report: &Report, samples: usize) -> String {
+    let mut out = format!("collision: {}\n", report.summary);
+    let line = |name: &str, c: &Counts| {
+        format!(
+            "  {name}: {} configurations, {} colliding, {} free, {} within {BAND:e} m of contact: every other verdict \
+             as the reference's\n",
+            samples, c.colliding, c.free, c.banded
+        )
+    };
+    out += &line("self_collides", &report.itself);
+    if let Some(c) = &report.obstacles {
+        out += &line("collides (obstacles and self)", c);
+    }
+    out
+}
+
+/// Reads `--srdf` and `--scene` into a [`Setup`].
+pub fn setup<'a>(
+    tree: &KinematicTree,
+    cover: f64,
+    srdf: Option<&'a str>,
+    scene: Option<&'a str>,
+) -> Result<Setup<'a>, CliError> {
+    if !(cover.is_finite() && cover > 0.0) {
+        return Err(CliError::Usage(format!(
+            "`--sphere-cover` is {cover} (must be a finite positive length in metres)"
+        )));
+    }
+    let srdf = match srdf {
+        Some(path) => Some((path, crate::robot::load_srdf(path, tree)?)),
+        None => None,
+    };
+    let scene = match scene {
+        Some(path) => Some((path, kinematics::load_scene(path)?)),
+        None => None,
+    };
+    Ok(Setup { cover, srdf, scene })
+}
