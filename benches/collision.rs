@@ -51,12 +51,13 @@ macro_rules! robot {
         let qs32: Vec<[f32; $n]> = qs.iter().map(|q| q.map(|x| x as f32)).collect();
         let reference = <$robot>::reference().unwrap();
         let spheres = link_spheres(reference.tree(), 0.01, Meshes::Refuse).unwrap();
-        // Each sphere's link's index in `link_poses` and its centre in that link's frame.
-        let local: Vec<(usize, [f64; 3])> = spheres
+        // Each sphere's link's index in `link_poses` (none for the base, which it leaves out) and
+        // its centre in that link's frame.
+        let local: Vec<(Option<usize>, [f64; 3])> = spheres
             .iter()
             .map(|s| {
                 let link = reference.tree().link(s.link);
-                let index = <$robot>::LINK_NAMES.iter().position(|n| *n == link.name).unwrap();
+                let index = <$robot>::LINK_NAMES.iter().position(|n| *n == link.name);
                 (index, link.collisions[s.collision].origin.apply(s.sphere.center))
             })
             .collect();
@@ -64,8 +65,13 @@ macro_rules! robot {
             let poses = <$robot>::link_poses(q);
             let mut out = [[0.0; 3]; S];
             for (c, (link, p)) in out.iter_mut().zip(&local) {
-                let (r, t) = (&poses[*link].rotation, &poses[*link].translation);
-                *c = [0, 1, 2].map(|i| r[i][0] * p[0] + r[i][1] * p[1] + r[i][2] * p[2] + t[i]);
+                *c = match link {
+                    Some(link) => {
+                        let (r, t) = (&poses[*link].rotation, &poses[*link].translation);
+                        [0, 1, 2].map(|i| r[i][0] * p[0] + r[i][1] * p[1] + r[i][2] * p[2] + t[i])
+                    }
+                    None => *p,
+                };
             }
             out
         };

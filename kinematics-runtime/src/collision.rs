@@ -83,9 +83,9 @@ impl ReferenceObstacles {
     /// intersection test; a pair parry cannot test counts as touching).
     pub fn intersects(&self, center: [f64; 3], radius: f64) -> bool {
         let (at, ball) = (Pose::from_translation(vector(center)), Ball::new(radius));
-        self.shapes
-            .iter()
-            .any(|(pose, shape)| query::intersection_test(&at, &ball, pose, shape.as_ref()).unwrap_or(true))
+        self.shapes.iter().any(|(pose, shape)| {
+            query::intersection_test(&at, &ball, pose, shape.as_ref()).map_or(true, |i| i.intersecting)
+        })
     }
 }
 
