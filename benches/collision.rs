@@ -58,7 +58,8 @@ macro_rules! robot {
             .map(|s| {
                 let link = reference.tree().link(s.link);
                 let index = <$robot>::LINK_NAMES.iter().position(|n| *n == link.name);
-                (index, link.collisions[s.collision].origin.apply(s.sphere.center))
+                let origin = kinematics::runtime::fixed_isometry(&link.collisions[s.collision].origin);
+                (index, (origin * nalgebra::Point3::from(s.sphere.center)).coords.into())
             })
             .collect();
         let hand_centers = |q: &[f64; $n]| -> [[f64; 3]; S] {

@@ -161,8 +161,23 @@ pub use kinematics_runtime::SceneObstacles;
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 pub fn load_scene(path: impl AsRef<std::path::Path>) -> Result<SceneObstacles, LoadError> {
-    let scene = kinematics_model::scene::Scene::load(path)?;
-    Ok(SceneObstacles::from_scene(&scene))
+    Ok(SceneObstacles::from_scene(&read_scene(path)?))
+}
+
+#[cfg(feature = "std")]
+#[cfg_attr(docsrs, doc(cfg(feature = "std")))]
+/// Reads a scene file as written (each obstacle's name, shape, `xyz` and `rpy`), its format by its
+/// extension; [`load_scene`] turns it into obstacles.
+pub fn read_scene(path: impl AsRef<std::path::Path>) -> Result<model::scene::Scene, LoadError> {
+    use kinematics_model::scene::{SceneFormat, parse_scene};
+    let path = path.as_ref();
+    let file = path.display().to_string();
+    let Some(format) = SceneFormat::from_file_name(&file) else {
+        let message = "a scene file is .toml or .json".to_owned();
+        return Err(LoadError::new(file, LoadErrorKind::Syntax { line: None, message }));
+    };
+    let text = std::fs::read_to_string(path).map_err(|e| LoadError::new(&file, LoadErrorKind::Io(e)))?;
+    parse_scene(&text, format).map_err(|kind| LoadError::new(file, kind))
 }
 
 #[cfg(feature = "std")]

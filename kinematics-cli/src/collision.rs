@@ -7,9 +7,10 @@
 use std::collections::BTreeSet;
 
 use kinematics::collision::CollisionTables;
-use kinematics::model::collision::{LinkSphere, Meshes, link_bounds, link_spheres, sphere_pairs};
+use kinematics::model::collision::{LinkSphere, Meshes, link_spheres, sphere_pairs};
 use kinematics::model::{KinematicTree, LinkId};
 use kinematics::{Pose, ReferenceFk, SceneObstacles};
+use kinematics_compiler::collision_layout::CollisionLayout;
 use kinematics_compiler::{Request, compile};
 
 use crate::agreement::Configurations;
@@ -62,25 +63,19 @@ pub fn check(tree: &KinematicTree, file: &str, samples: usize, setup: &Setup<'_>
     let runtime = |source| CliError::Runtime { file: file.to_owned(), source };
     // The tables, as the compiler writes them: links with spheres in tree order, each with its
     // spheres' range and bounding sphere; each sphere's centre in its link's frame.
-    let bounds = link_bounds(tree, &spheres);
-    let mut links = Vec::new();
-    let mut start = 0;
-    for b in &bounds {
-        let count = spheres.iter().filter(|s| s.link == b.link).count();
-        links.push((start, start + count, b.center, b.radius));
-        start += count;
-    }
-    let centers: Vec<[f64; 3]> =
-        spheres.iter().map(|s| tree.link(s.link).collisions[s.collision].origin.apply(s.sphere.center)).collect();
+    let layout = CollisionLayout::new(tree, &spheres);
+    let links: Vec<(usize, usize, [f64; 3], f64)> =
+        layout.ranges().into_iter().zip(&layout.bounds).map(|((s, e), &(c, r))| (s, e, c, r)).collect();
+    let centers: Vec<[f64; 3]> = layout.points.iter().map(|&(_, p)| p).collect();
     let radii: Vec<f64> = spheres.iter().map(|s| s.sphere.radius).collect();
     let plan = sphere_pairs(tree, &spheres, setup.srdf.as_ref().map(|(_, d)| d));
-    let index = |l: LinkId| bounds.iter().position(|b| b.link == l);
+    let index = |l: LinkId| layout.links.iter().position(|&k| k == l);
     let pairs: Vec<(usize, usize)> = plan.pairs.iter().filter_map(|&(a, b)| Some((index(a)?, index(b)?))).collect();
     let tables = CollisionTables { links: &links, centers: &centers, radii: &radii, pairs: &pairs };
 
     let request = Request {
         base: Some(tree.link(tree.root()).name.clone()),
-        tips: bounds.iter().map(|b| tree.link(b.link).name.clone()).collect(),
+        tips: layout.links.iter().map(|&l| tree.link(l).name.clone()).collect(),
         position_only: false,
         velocity: None,
     };
@@ -120,7 +115,7 @@ pub fn check(tree: &KinematicTree, file: &str, samples: usize, setup: &Setup<'_>
     let summary = format!(
         "{} on {} at a cover of {} m, {} ({pairs_from}){scene}",
         counted(spheres.len(), "sphere"),
-        counted(bounds.len(), "link"),
+        counted(layout.links.len(), "link"),
         crate::inspect::short(setup.cover),
         counted(pairs.len(), "self-collision pair")
     );

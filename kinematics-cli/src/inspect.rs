@@ -51,7 +51,7 @@ pub struct CollisionView<'a> {
 /// pairs a self-collision check tests; fixed joints whose mimic had nothing to do. A cover that
 /// is not a positive length is the error returned.
 pub fn collision(tree: &KinematicTree, view: &CollisionView<'_>) -> Result<String, String> {
-    use kinematics::model::collision::{LinkSphere, Meshes, link_bounds, link_spheres, sphere_pairs};
+    use kinematics::model::collision::{LinkSphere, Meshes, link_spheres, sphere_pairs};
     if !(view.cover.is_finite() && view.cover > 0.0) {
         return Err(format!("{} is no finite positive length in metres", view.cover));
     }
@@ -68,7 +68,7 @@ pub fn collision(tree: &KinematicTree, view: &CollisionView<'_>) -> Result<Strin
     // Meshes are left out here (and listed): the derive refuses them unless told to leave them out.
     #[allow(clippy::expect_used, reason = "invariant: with meshes skipped the cover refuses nothing")]
     let spheres: Vec<LinkSphere> = link_spheres(tree, view.cover, Meshes::Skip).expect("skipped meshes are no fault");
-    let bounds = link_bounds(tree, &spheres);
+    let layout = kinematics_compiler::collision_layout::CollisionLayout::new(tree, &spheres);
     out += &format!(
         "collision geometry: {} elements on {} links, {} spheres at a cover of {} m (meshes are not read)\n",
         with.iter().map(|l| l.collisions.len()).sum::<usize>(),
@@ -93,17 +93,17 @@ pub fn collision(tree: &KinematicTree, view: &CollisionView<'_>) -> Result<Strin
         }
         let shapes: Vec<String> =
             shapes.into_iter().map(|(n, k)| if k == 1 { n } else { format!("{k} x {n}") }).collect();
-        let own: Vec<&LinkSphere> = spheres.iter().filter(|s| tree.link(s.link).name == link.name).collect();
-        let bound = match bounds.iter().find(|b| tree.link(b.link).name == link.name) {
-            Some(b) => format!("; bounding sphere {} m at {}", short(b.radius), point(b.center)),
+        let frame = layout.links.iter().position(|&l| tree.link(l).name == link.name);
+        let own: Vec<usize> = (0..spheres.len()).filter(|&k| Some(layout.points[k].0) == frame).collect();
+        let bound = match frame {
+            Some(f) => format!("; bounding sphere {} m at {}", short(layout.bounds[f].1), point(layout.bounds[f].0)),
             None => String::new(),
         };
         let count = if own.len() == 1 { "1 sphere".to_owned() } else { format!("{} spheres", own.len()) };
         out += &format!("  {}  {count}: {}{bound}\n", pad(&link.name, width), shapes.join(", "));
         if view.spheres {
-            for s in own {
-                let center = link.collisions[s.collision].origin.apply(s.sphere.center);
-                out += &format!("    {} m at {}\n", short(s.sphere.radius), point(center));
+            for k in own {
+                out += &format!("    {} m at {}\n", short(spheres[k].sphere.radius), point(layout.points[k].1));
             }
         }
     }

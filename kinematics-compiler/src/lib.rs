@@ -18,6 +18,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+pub mod collision_layout;
 pub mod emit;
 mod error;
 pub mod ik;

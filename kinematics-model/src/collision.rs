@@ -347,69 +347,6 @@ pub fn link_spheres(tree: &KinematicTree, overshoot: f64, meshes: Meshes) -> Res
     Ok(out)
 }
 
-/// One link's bounding sphere: a sphere containing all of the link's collision spheres, in the
-/// link's frame, which a check tests before the spheres.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct LinkBound {
-    /// The link.
-    pub link: LinkId,
-    /// Its centre in the link's frame.
-    pub center: [f64; 3],
-    /// Its radius.
-    pub radius: f64,
-}
-
-/// Each link with spheres (in tree order) and its bounding sphere ([`enclosing_sphere`] of its
-/// spheres, each placed in the link's frame by its element's origin).
-pub fn link_bounds(tree: &KinematicTree, spheres: &[LinkSphere]) -> Vec<LinkBound> {
-    let mut links: Vec<LinkId> = spheres.iter().map(|s| s.link).collect();
-    links.sort_unstable();
-    links.dedup();
-    links
-        .into_iter()
-        .map(|link| {
-            let balls: Vec<([f64; 3], f64)> = spheres
-                .iter()
-                .filter(|s| s.link == link)
-                .map(|s| (tree.link(link).collisions[s.collision].origin.apply(s.sphere.center), s.sphere.radius))
-                .collect();
-            let (center, radius) = enclosing_sphere(&balls);
-            LinkBound { link, center, radius }
-        })
-        .collect()
-}
-
-/// A sphere containing every ball of `balls` (centre, radius; at least one), near the smallest:
-/// Badoiu and Clarkson's iteration (step `k` moves the centre `1/(k+1)` of the way to the point of
-/// the ball farthest from it), then the radius that contains every ball exactly. Deterministic.
-///
-/// ```
-/// use kinematics_model::collision::enclosing_sphere;
-/// let (c, r) = enclosing_sphere(&[([0.0; 3], 1.0), ([4.0, 0.0, 0.0], 1.0)]);
-/// assert!((r - 3.0).abs() < 0.05 && (c[0] - 2.0).abs() < 0.05);
-/// ```
-pub fn enclosing_sphere(balls: &[([f64; 3], f64)]) -> ([f64; 3], f64) {
-    if let [only] = balls {
-        return *only;
-    }
-    let reach = |c: [f64; 3], (p, r): ([f64; 3], f64)| distance(c, p) + r;
-    #[allow(clippy::cast_precision_loss)]
-    let mut c = [0, 1, 2].map(|i| balls.iter().map(|(p, _)| p[i]).sum::<f64>() / balls.len() as f64);
-    for k in 1..=2000u32 {
-        let Some(&(p, r)) = balls.iter().max_by(|a, b| reach(c, **a).total_cmp(&reach(c, **b))) else { break };
-        let d = distance(c, p);
-        let far = if d > 0.0 { [0, 1, 2].map(|i| p[i] + (p[i] - c[i]) / d * r) } else { [p[0] + r, p[1], p[2]] };
-        let step = 1.0 / f64::from(k + 1);
-        c = [0, 1, 2].map(|i| c[i] + (far[i] - c[i]) * step);
-    }
-    let radius = balls.iter().map(|&b| reach(c, b)).fold(0.0, f64::max);
-    (c, radius)
-}
-
-fn distance(a: [f64; 3], b: [f64; 3]) -> f64 {
-    ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt()
-}
-
 /// The rigid bodies of `tree`: links joined by fixed joints only share a body. `body[link]` is
 /// the index of the first link (in tree order) of its body.
 pub fn rigid_bodies(tree: &KinematicTree) -> Vec<usize> {
@@ -496,17 +433,6 @@ pub fn sphere_pairs(
 
 #[cfg(test)]
 mod tests {
-
-    #[test]
-    fn the_enclosing_sphere_holds_every_ball_and_is_near_the_smallest() {
-        // Two balls on a line: the smallest encloser is known exactly.
-        let (c, r) = enclosing_sphere(&[([0.0; 3], 1.0), ([4.0, 0.0, 0.0], 1.0)]);
-        assert!((r - 3.0).abs() < 0.05, "{c:?} {r}");
-        let balls = [([0.0, 0.0, 0.0], 0.1), ([0.3, 0.1, 0.0], 0.05), ([0.1, 0.4, 0.2], 0.2), ([0.0, 0.0, 0.0], 0.3)];
-        let (c, r) = enclosing_sphere(&balls);
-        assert!(balls.iter().all(|&(p, q)| distance(c, p) + q <= r));
-        assert_eq!(enclosing_sphere(&[([1.0, 2.0, 3.0], 0.5)]), ([1.0, 2.0, 3.0], 0.5));
-    }
 
     use super::*;
 

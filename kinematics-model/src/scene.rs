@@ -28,7 +28,7 @@ use serde::Deserialize;
 
 use crate::angle::Angle;
 use crate::collision::Shape;
-use crate::error::{Element, LoadError, LoadErrorKind};
+use crate::error::{Element, LoadErrorKind};
 use crate::transform::FixedTransform;
 
 /// The obstacles of a scene file, in file order.
@@ -67,24 +67,14 @@ pub enum SceneFormat {
     Json,
 }
 
-impl Scene {
-    /// Reads a scene file, its format chosen by its extension (`.toml` or `.json`). Errors name
-    /// the file.
-    pub fn load(path: impl AsRef<Path>) -> Result<Scene, LoadError> {
-        let path = path.as_ref();
-        let file = path.display().to_string();
-        let format = match path.extension().and_then(|e| e.to_str()) {
-            Some("toml") => SceneFormat::Toml,
-            Some("json") => SceneFormat::Json,
-            _ => {
-                return Err(LoadError::new(
-                    file,
-                    LoadErrorKind::Syntax { line: None, message: "a scene file is .toml or .json".to_owned() },
-                ));
-            }
-        };
-        let text = std::fs::read_to_string(path).map_err(|e| LoadError::new(&file, LoadErrorKind::Io(e)))?;
-        parse_scene(&text, format).map_err(|kind| LoadError::new(file, kind))
+impl SceneFormat {
+    /// The format of a file by its extension (`.toml`, `.json`), or `None`.
+    pub fn from_file_name(name: &str) -> Option<Self> {
+        match Path::new(name).extension().and_then(|e| e.to_str()) {
+            Some("toml") => Some(SceneFormat::Toml),
+            Some("json") => Some(SceneFormat::Json),
+            _ => None,
+        }
     }
 }
 

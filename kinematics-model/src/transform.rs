@@ -71,32 +71,6 @@ impl FixedTransform {
         &self.steps
     }
 
-    /// The point `p` (in the frame after the transform) in the frame before it.
-    ///
-    /// ```
-    /// use kinematics_model::{Angle, Axis, FixedTransform};
-    /// let t = FixedTransform::identity().translate([1.0, 0.0, 0.0]).rotate(Axis::Z, Angle::Radians(std::f64::consts::FRAC_PI_2));
-    /// let p = t.apply([1.0, 0.0, 0.0]);
-    /// assert!((p[0] - 1.0).abs() < 1e-15 && (p[1] - 1.0).abs() < 1e-15 && p[2] == 0.0);
-    /// ```
-    pub fn apply(&self, p: [f64; 3]) -> [f64; 3] {
-        self.steps.iter().rev().fold(p, |p, step| match *step {
-            Elementary::Translation(v) => [p[0] + v[0], p[1] + v[1], p[2] + v[2]],
-            Elementary::Rotation(axis, angle) => {
-                let (s, c) = angle.radians().sin_cos();
-                let (i, j) = match axis {
-                    Axis::X => (1, 2),
-                    Axis::Y => (2, 0),
-                    Axis::Z => (0, 1),
-                };
-                let mut out = p;
-                out[i] = c * p[i] - s * p[j];
-                out[j] = s * p[i] + c * p[j];
-                out
-            }
-        })
-    }
-
     /// Whether this is the identity (no steps).
     pub fn is_identity(&self) -> bool {
         self.steps.is_empty()

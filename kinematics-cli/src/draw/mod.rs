@@ -50,7 +50,7 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
     let mut scene =
         Scene::new(&fk, &q, args.sphere_cover).map_err(|source| CliError::Runtime { file: file.clone(), source })?;
     if let Some(path) = &args.scene {
-        let obstacles = kinematics::model::scene::Scene::load(path)?;
+        let obstacles = kinematics::read_scene(path)?;
         scene.obstacles = obstacles.obstacles.iter().map(Obstacle::of).collect();
     }
     let text = svg::render(&scene);

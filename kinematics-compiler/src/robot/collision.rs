@@ -1,9 +1,10 @@
 //! Collision: every sphere's centre in the base frame (`sphere_centers`), from the poses of the
 //! links that carry spheres, each centre `R p + t` of its link's pose with `p` its place in the
 //! link's frame (the `<collision>` element's origin applied to the cover's centre): only what the
-//! centres need of the poses is computed. For the checks (`collides`, `self_collides`), the same
-//! body also computes each link's bounding sphere (enclosing its spheres, found at compile time
-//! in the link's frame), and the block holds the tables the core's checks read.
+//! centres need of the poses is computed. For the checks (`collides`, `self_collides`), a second
+//! body from the same compile returns the poses of the links with spheres, and the block holds
+//! the tables the core's checks read (each sphere in its link's frame, each link's bounding
+//! sphere: [`crate::collision_layout`]).
 
 use proc_macro2::{Literal, TokenStream};
 use quote::quote;
@@ -11,60 +12,25 @@ use quote::quote;
 use super::Context;
 use super::functions::Functions;
 use super::surface::{CollisionFunction, Form, ScalarType};
+use crate::collision_layout::CollisionLayout;
 use crate::emit::{emit_function, emit_points};
 use crate::error::CompileError;
-use crate::ik::geometry::transform_point;
 use crate::request::{Compiled, Request, compile};
 
 /// The name of the body computing the poses of the links with spheres, which the checks take.
 const CHECK_BODY: &str = "generic_collision_poses";
 
-/// The links with spheres (tree order), each sphere's place in its link's frame, and each link's
-/// bounding sphere there.
-struct LinkFrame {
-    /// Link indices, sorted.
-    links: Vec<usize>,
-    /// Per sphere: its link's position in `links` and its centre in the link's frame.
-    points: Vec<(usize, [f64; 3])>,
-    /// Per link of `links`: its bounding sphere's centre (link frame) and radius.
-    bounds: Vec<([f64; 3], f64)>,
-}
-
-fn link_frame(cx: &Context<'_>) -> LinkFrame {
-    let (tree, spheres) = (cx.tree(), cx.spheres());
-    let mut links: Vec<usize> = spheres.iter().map(|s| s.link.0).collect();
-    links.sort_unstable();
-    links.dedup();
-    let points: Vec<(usize, [f64; 3])> = spheres
-        .iter()
-        .map(|s| {
-            #[allow(clippy::expect_used, reason = "invariant: every sphere's link is in `links`")]
-            let frame = links.binary_search(&s.link.0).expect("the links are those of the spheres");
-            let origin = &tree.link(s.link).collisions[s.collision].origin;
-            (frame, transform_point(origin, s.sphere.center))
-        })
-        .collect();
-    let bounds = (0..links.len())
-        .map(|frame| {
-            let balls: Vec<([f64; 3], f64)> = points
-                .iter()
-                .zip(spheres)
-                .filter(|((f, _), _)| *f == frame)
-                .map(|((_, p), s)| (*p, s.sphere.radius))
-                .collect();
-            kinematics_model::collision::enclosing_sphere(&balls)
-        })
-        .collect();
-    LinkFrame { links, points, bounds }
+fn link_frame(cx: &Context<'_>) -> CollisionLayout {
+    CollisionLayout::new(cx.tree(), cx.spheres())
 }
 
 /// The links' poses, compiled once: the sphere centres and the bounding spheres' centres are both
 /// built on them.
-fn compiled_links(cx: &Context<'_>, frame: &LinkFrame) -> Result<Compiled, CompileError> {
+fn compiled_links(cx: &Context<'_>, frame: &CollisionLayout) -> Result<Compiled, CompileError> {
     let tree = cx.tree();
     let request = Request {
         base: Some(cx.base.clone()),
-        tips: frame.links.iter().map(|&l| tree.links()[l].name.clone()).collect(),
+        tips: frame.links.iter().map(|&l| tree.link(l).name.clone()).collect(),
         position_only: false,
         velocity: None,
     };
@@ -95,26 +61,26 @@ pub(super) fn bodies(cx: &Context<'_>, name: &str) -> Result<(Vec<TokenStream>, 
 /// The collision tables (each link's spheres' range and bounding sphere, each sphere's centre in
 /// its link's frame and radius, the link pairs the self-collision check tests), as constants of
 /// the block's `bodies` module.
-fn tables(cx: &Context<'_>, frame: &LinkFrame) -> Vec<TokenStream> {
+fn tables(cx: &Context<'_>, frame: &CollisionLayout) -> Vec<TokenStream> {
     let p = &cx.p;
     let pairs = cx.spec.robot.collision().map_or(&[][..], |plan| plan.pairs.pairs.as_slice());
     let point = |v: &[f64; 3]| {
         let [x, y, z] = v.map(super::number);
         quote!([#x, #y, #z])
     };
-    let mut start = 0;
-    let links: Vec<TokenStream> = (0..frame.links.len())
-        .map(|f| {
-            let count = frame.points.iter().filter(|(g, _)| *g == f).count();
-            let (s, e) = (Literal::usize_unsuffixed(start), Literal::usize_unsuffixed(start + count));
-            start += count;
+    let links: Vec<TokenStream> = frame
+        .ranges()
+        .into_iter()
+        .enumerate()
+        .map(|(f, (start, end))| {
+            let (s, e) = (Literal::usize_unsuffixed(start), Literal::usize_unsuffixed(end));
             let (center, radius) = (point(&frame.bounds[f].0), super::number(frame.bounds[f].1));
             quote!((#s, #e, #center, #radius))
         })
         .collect();
     let index = |l: kinematics_model::LinkId| {
         #[allow(clippy::expect_used, reason = "invariant: pairs are of links with spheres")]
-        let i = frame.links.binary_search(&l.0).expect("a paired link has spheres");
+        let i = frame.links.binary_search(&l).expect("a paired link has spheres");
         Literal::usize_unsuffixed(i)
     };
     let pairs = pairs.iter().map(|&(a, b)| {
