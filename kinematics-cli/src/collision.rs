@@ -91,7 +91,7 @@ pub fn check(tree: &KinematicTree, file: &str, samples: usize, setup: &Setup<'_>
     let (mut itself, mut against) = (Counts::default(), Counts::default());
     let bar = crate::progress::bar(samples as u64, "checking collisions");
     for q in Configurations::new(tree).take(samples) {
-        let poses: Vec<Pose<f64>> = compiled.eval(&q).iter().map(|e| Pose::from_entries(e)).collect();
+        let poses: Vec<Pose<f64>> = compiled.eval(&q).iter().map(Pose::from_entries).collect();
         let s = fk.self_distance(&q, &spheres, &plan.pairs).map_err(runtime)?;
         let verdict = tables.self_collides(&[0.0], &poses).any();
         tally(&mut itself, s, verdict, file, "self_collides", &q)?;

@@ -20,13 +20,10 @@ pub enum Element {
     },
     /// The fixed base or tool transform of a DH table.
     DhSection(&'static str),
-    /// An obstacle of a scene file (1-based), with its name if it has one.
-    Obstacle {
-        /// 1-based place in the file.
-        number: usize,
-        /// Its `name`.
-        name: Option<String>,
-    },
+    /// An obstacle of a scene file: its 1-based place in the file and, if it has one, its name,
+    /// as shown (`3`, or ``3 (`table`)``). One `String`, so the enum (held by every model
+    /// error) stays the size it was.
+    Obstacle(String),
 }
 
 impl fmt::Display for Element {
@@ -37,8 +34,7 @@ impl fmt::Display for Element {
             Element::Joint(name) => write!(f, "joint `{name}`"),
             Element::DhRow { row, joint } => write!(f, "DH row {row} (joint `{joint}`)"),
             Element::DhSection(section) => write!(f, "DH `{section}` transform"),
-            Element::Obstacle { number, name: None } => write!(f, "obstacle {number}"),
-            Element::Obstacle { number, name: Some(name) } => write!(f, "obstacle {number} (`{name}`)"),
+            Element::Obstacle(label) => write!(f, "obstacle {label}"),
         }
     }
 }

@@ -169,7 +169,10 @@ fn line_of(text: &str, offset: usize) -> usize {
 }
 
 fn obstacle(index: usize, entry: Entry, line: Option<usize>) -> Result<SceneObstacle, LoadErrorKind> {
-    let element = Element::Obstacle { number: index + 1, name: entry.name.clone() };
+    let element = Element::Obstacle(match &entry.name {
+        Some(name) => format!("{} (`{name}`)", index + 1),
+        None => (index + 1).to_string(),
+    });
     let fault = |message: String| match line {
         Some(line) => LoadErrorKind::Located { element: Some(element.clone()), line, message },
         None => LoadErrorKind::Value { element: element.clone(), message },

@@ -197,7 +197,8 @@ macro_rules! scalar_check {
             }
             #[inline(always)]
             fn not_above(self, limit: Self) -> bool {
-                !(self > limit)
+                // Not above: below, equal, or unordered (a NaN on either side).
+                self.partial_cmp(&limit) != Some(core::cmp::Ordering::Greater)
             }
             #[inline(always)]
             fn non_finite(self) -> bool {
