@@ -236,12 +236,48 @@ fn check(numbers: &[f64], sizes_ok: bool, kind: &'static str, index: usize) -> R
     Ok(())
 }
 
-/// An obstacle a sphere can be tested against, on any [`CheckLanes`] type: the lanes where the
-/// sphere of `center` and `radius` touches or overlaps it. Centres must be finite (the checks mark
-/// configurations that are not before testing); a NaN distance would count as a hit.
+/// An obstacle a sphere can be tested against, on any [`CheckLanes`] type: prepared once per
+/// check as constants of the lane type, then tested against each sphere.
 pub(crate) trait Obstacle {
-    /// The lanes where the sphere touches the obstacle.
-    fn hits<L: CheckLanes>(&self, center: &[L; 3], radius: L) -> L::Flags;
+    /// Calls `visit` with the obstacle's constants in lanes (converted once: a check tests every
+    /// link against it). Each kind of prepared obstacle is its own type, so the tests a visitor
+    /// runs are compiled for it alone, with no branch on the kind inside them.
+    fn prepare<L: CheckLanes, V: Visit<L>>(&self, visit: &mut V);
+
+    /// The lanes where the sphere of `center` and `radius` touches the obstacle.
+    #[inline(always)]
+    fn hits<L: CheckLanes>(&self, center: &[L; 3], radius: L) -> L::Flags {
+        let mut one = One { center, radius, hit: L::Flags::NONE };
+        self.prepare(&mut one);
+        one.hit
+    }
+}
+
+/// What a check does with a prepared obstacle.
+pub(crate) trait Visit<L: CheckLanes> {
+    /// Tests with `obstacle`.
+    fn visit<P: Prepared<L>>(&mut self, obstacle: &P);
+}
+
+/// A prepared obstacle: the lanes where a sphere touches it. Centres must be finite (the checks
+/// mark configurations that are not before testing); a NaN distance would count as a hit.
+pub(crate) trait Prepared<L: CheckLanes> {
+    /// The lanes where the sphere of `center` and `radius` touches the obstacle.
+    fn hits(&self, center: &[L; 3], radius: L) -> L::Flags;
+}
+
+/// One sphere against one obstacle.
+struct One<'a, L: CheckLanes> {
+    center: &'a [L; 3],
+    radius: L,
+    hit: L::Flags,
+}
+
+impl<L: CheckLanes> Visit<L> for One<'_, L> {
+    #[inline(always)]
+    fn visit<P: Prepared<L>>(&mut self, obstacle: &P) {
+        self.hit = obstacle.hits(self.center, self.radius);
+    }
 }
 
 #[inline(always)]
@@ -261,35 +297,93 @@ fn lane_sub<L: CheckLanes>(a: &[L; 3], b: &[L; 3]) -> [L; 3] {
 
 // Every test compares squared distances: no square root per lane.
 
+/// A sphere obstacle in lanes.
+pub(crate) struct PreparedSphere<L> {
+    center: [L; 3],
+    radius: L,
+}
+
 impl Obstacle for SphereObstacle {
+    #[inline(always)]
+    fn prepare<L: CheckLanes, V: Visit<L>>(&self, visit: &mut V) {
+        visit.visit(&PreparedSphere { center: splat::<L>(self.center), radius: L::from_f64(self.radius) });
+    }
+}
+
+impl<L: CheckLanes> Prepared<L> for PreparedSphere<L> {
     /// Centres within the sum of the radii.
     #[inline(always)]
-    fn hits<L: CheckLanes>(&self, center: &[L; 3], radius: L) -> L::Flags {
-        let d = lane_sub(center, &splat(self.center));
-        let reach = radius + L::from_f64(self.radius);
+    fn hits(&self, center: &[L; 3], radius: L) -> L::Flags {
+        let d = lane_sub(center, &self.center);
+        let reach = radius + self.radius;
         lane_dot(&d, &d).not_above(reach * reach)
     }
 }
 
+/// A capsule obstacle in lanes: one end, the axis, the axis's inverse squared length.
+pub(crate) struct PreparedCapsule<L> {
+    a: [L; 3],
+    axis: [L; 3],
+    inverse: L,
+    radius: L,
+}
+
 impl Obstacle for CapsuleObstacle {
-    /// The centre within the sum of the radii of the axis segment's nearest point.
     #[inline(always)]
-    fn hits<L: CheckLanes>(&self, center: &[L; 3], radius: L) -> L::Flags {
+    fn prepare<L: CheckLanes, V: Visit<L>>(&self, visit: &mut V) {
         let axis = sub(self.b, self.a);
         let length = dot(axis, axis);
         // A capsule of zero length is a sphere about `a`: every parameter is 0.
         let inverse = if length > 0.0 { 1.0 / length } else { 0.0 };
-        let ab = splat::<L>(axis);
-        let ap = lane_sub(center, &splat(self.a));
+        visit.visit(&PreparedCapsule {
+            a: splat::<L>(self.a),
+            axis: splat(axis),
+            inverse: L::from_f64(inverse),
+            radius: L::from_f64(self.radius),
+        });
+    }
+}
+
+impl<L: CheckLanes> Prepared<L> for PreparedCapsule<L> {
+    /// The centre within the sum of the radii of the axis segment's nearest point.
+    #[inline(always)]
+    fn hits(&self, center: &[L; 3], radius: L) -> L::Flags {
+        let ab = &self.axis;
+        let ap = lane_sub(center, &self.a);
         let (zero, one) = (L::from_f64(0.0), L::from_f64(1.0));
-        let t = (lane_dot(&ap, &ab) * L::from_f64(inverse)).max(zero).min(one);
+        let t = (lane_dot(&ap, ab) * self.inverse).max(zero).min(one);
         let d = [ap[0] - ab[0] * t, ap[1] - ab[1] * t, ap[2] - ab[2] * t];
-        let reach = radius + L::from_f64(self.radius);
+        let reach = radius + self.radius;
         lane_dot(&d, &d).not_above(reach * reach)
     }
 }
 
+/// A cylinder obstacle in lanes: one cap's centre, the unit axis, the length, `R^2` and `4 R^2`.
+pub(crate) struct PreparedCylinder<L> {
+    a: [L; 3],
+    unit: [L; 3],
+    length: L,
+    radius_squared: L,
+    four_radius_squared: L,
+}
+
 impl Obstacle for CylinderObstacle {
+    #[inline(always)]
+    fn prepare<L: CheckLanes, V: Visit<L>>(&self, visit: &mut V) {
+        let axis = sub(self.b, self.a);
+        // Positive: `Environment::new` refuses a cylinder without an axis.
+        let length = sqrt(dot(axis, axis));
+        visit.visit(&PreparedCylinder {
+            a: splat::<L>(self.a),
+            unit: splat(axis.map(|x| x / length)),
+            length: L::from_f64(length),
+            radius_squared: L::from_f64(self.radius * self.radius),
+            four_radius_squared: L::from_f64(4.0 * self.radius * self.radius),
+        });
+    }
+}
+
+impl<L: CheckLanes> Prepared<L> for PreparedCylinder<L> {
     /// With `rho` the centre's distance from the axis, `over` its distance beyond the nearer cap
     /// (0 between the caps) and `R` the cylinder's radius, the sphere of radius `r` touches when
     /// `max(rho - R, 0)^2 + over^2 <= r^2`. With `u = r^2 - over^2`, that is `u >= 0` and
@@ -297,37 +391,73 @@ impl Obstacle for CylinderObstacle {
     /// `rho^2 - R^2 - u <= 2 R sqrt(u)`: true when the left side is not positive, and otherwise
     /// exactly when its square is at most `4 R^2 u`. No root is taken.
     #[inline(always)]
-    fn hits<L: CheckLanes>(&self, center: &[L; 3], radius: L) -> L::Flags {
-        let axis = sub(self.b, self.a);
-        // Positive: `Environment::new` refuses a cylinder without an axis.
-        let length = sqrt(dot(axis, axis));
-        let unit = splat::<L>(axis.map(|x| x / length));
-        let ap = lane_sub(center, &splat(self.a));
-        let along = lane_dot(&ap, &unit);
+    fn hits(&self, center: &[L; 3], radius: L) -> L::Flags {
+        let ap = lane_sub(center, &self.a);
+        let along = lane_dot(&ap, &self.unit);
         let rho_squared = lane_dot(&ap, &ap) - along * along;
         let zero = L::from_f64(0.0);
-        let over = (-along).max(along - L::from_f64(length)).max(zero);
+        let over = (-along).max(along - self.length).max(zero);
         let u = radius * radius - over * over;
-        let big_r = L::from_f64(self.radius);
-        let left = rho_squared - big_r * big_r - u;
-        let four_r_squared = L::from_f64(4.0 * self.radius * self.radius);
-        (-u).not_above(zero) & (left.not_above(zero) | (left * left).not_above(four_r_squared * u))
+        let left = rho_squared - self.radius_squared - u;
+        (-u).not_above(zero) & (left.not_above(zero) | (left * left).not_above(self.four_radius_squared * u))
     }
 }
 
+/// A box obstacle whose axes are the world's, in lanes: its centre and half extents.
+pub(crate) struct AlignedBox<L> {
+    center: [L; 3],
+    half: [L; 3],
+}
+
+/// A turned box obstacle in lanes: its centre, its axes (rows), its half extents.
+pub(crate) struct TurnedBox<L> {
+    center: [L; 3],
+    rows: [[L; 3]; 3],
+    half: [L; 3],
+}
+
 impl Obstacle for BoxObstacle {
-    /// The squared distance from the centre to the box (its coordinates beyond the half extents,
-    /// in the box's frame) within the radius squared.
     #[inline(always)]
-    fn hits<L: CheckLanes>(&self, center: &[L; 3], radius: L) -> L::Flags {
-        let d = lane_sub(center, &splat(self.center));
-        let zero = L::from_f64(0.0);
-        let mut sum = zero;
-        for i in 0..3 {
-            let over = (lane_dot(&splat(self.rotation[i]), &d).abs() - L::from_f64(self.half_extents[i])).max(zero);
-            sum = sum + over * over;
+    fn prepare<L: CheckLanes, V: Visit<L>>(&self, visit: &mut V) {
+        const WORLD: [Vec3; 3] = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+        let (center, half) = (splat::<L>(self.center), splat::<L>(self.half_extents));
+        // Axes exactly the world's (most scenes' boxes): the box coordinates are the offset's,
+        // and the nine products a turned box needs are skipped.
+        if self.rotation == WORLD {
+            visit.visit(&AlignedBox { center, half });
+        } else {
+            visit.visit(&TurnedBox { center, rows: self.rotation.map(splat), half });
         }
-        sum.not_above(radius * radius)
+    }
+}
+
+/// Within `radius` of the box of half extents `half`, `local` being the centre's offset in the
+/// box's frame: the squared distance to the box (the coordinates beyond the half extents) within
+/// the radius squared.
+#[inline(always)]
+fn box_hits<L: CheckLanes>(local: [L; 3], half: &[L; 3], radius: L) -> L::Flags {
+    let zero = L::from_f64(0.0);
+    let mut sum = zero;
+    for i in 0..3 {
+        let over = (local[i].abs() - half[i]).max(zero);
+        sum = sum + over * over;
+    }
+    sum.not_above(radius * radius)
+}
+
+impl<L: CheckLanes> Prepared<L> for AlignedBox<L> {
+    #[inline(always)]
+    fn hits(&self, center: &[L; 3], radius: L) -> L::Flags {
+        box_hits(lane_sub(center, &self.center), &self.half, radius)
+    }
+}
+
+impl<L: CheckLanes> Prepared<L> for TurnedBox<L> {
+    #[inline(always)]
+    fn hits(&self, center: &[L; 3], radius: L) -> L::Flags {
+        let d = lane_sub(center, &self.center);
+        let rows = &self.rows;
+        box_hits([lane_dot(&rows[0], &d), lane_dot(&rows[1], &d), lane_dot(&rows[2], &d)], &self.half, radius)
     }
 }
 

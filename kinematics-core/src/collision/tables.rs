@@ -6,7 +6,7 @@
 //! every lane is colliding. Every obstacle is tested until one is hit, so the order of the
 //! obstacles does not change an answer.
 
-use super::obstacles::{Environment, Obstacle, Vec3};
+use super::obstacles::{Environment, Obstacle, Prepared, Vec3, Visit};
 use super::verdicts::{CheckLanes, Flags, LaneMask, non_finite};
 use crate::pose::Pose;
 
@@ -80,24 +80,25 @@ impl CollisionTables<'_> {
         place(&poses[k], self.links[k].2)
     }
 
-    /// `hit` and the lanes where a sphere touches an obstacle.
+    /// `hit` and the lanes where a sphere touches an obstacle: a few links at a time (their
+    /// bounding spheres placed once), each obstacle prepared once in lanes and tested against
+    /// each link's bounding sphere, then against its spheres only where that hits.
     #[inline(always)]
     fn obstacle_hits<L: CheckLanes>(&self, poses: &[Pose<L>], env: &Environment<'_>, mut hit: L::Flags) -> L::Flags {
         if hit.all() || env.is_empty() {
             return hit;
         }
-        for (k, (&(start, end, _, radius), pose)) in self.links.iter().zip(poses).enumerate() {
-            let link = Link {
-                pose,
-                bound: self.bound(poses, k),
-                radius: L::from_f64(radius),
-                centers: &self.centers[start..end],
-                radii: &self.radii[start..end],
-            };
-            hit = link.against(env.spheres, hit);
-            hit = link.against(env.capsules, hit);
-            hit = link.against(env.cylinders, hit);
-            hit = link.against(env.boxes, hit);
+        let mut bounds = [([L::from_f64(0.0); 3], L::from_f64(0.0)); CHUNK];
+        for first in (0..self.links.len()).step_by(CHUNK) {
+            let links = first..self.links.len().min(first + CHUNK);
+            for (slot, k) in bounds.iter_mut().zip(links.clone()) {
+                *slot = (self.bound(poses, k), L::from_f64(self.links[k].3));
+            }
+            let chunk = Chunk { tables: self, poses, first, bounds: &bounds[..links.len()] };
+            hit = chunk.against(env.spheres, hit);
+            hit = chunk.against(env.capsules, hit);
+            hit = chunk.against(env.cylinders, hit);
+            hit = chunk.against(env.boxes, hit);
             if hit.all() {
                 return hit;
             }
@@ -110,6 +111,8 @@ impl CollisionTables<'_> {
     /// among those (the second link's spheres placed a chunk at a time).
     #[inline(always)]
     fn self_hits<L: CheckLanes>(&self, poses: &[Pose<L>], mut hit: L::Flags) -> L::Flags {
+        // Filled anew for each chunk; made once (zeroing it per pair was measured).
+        let mut placed = [([L::from_f64(0.0); 3], L::from_f64(0.0)); CHUNK];
         for &(i, j) in self.pairs {
             if hit.all() {
                 return hit;
@@ -123,7 +126,6 @@ impl CollisionTables<'_> {
             }
             // The second link's spheres a chunk at a time, only those within the first link's
             // bounding sphere on some lane still near.
-            let mut placed = [([L::from_f64(0.0); 3], L::from_f64(0.0)); CHUNK];
             'pair: for chunk in (sb..eb).step_by(CHUNK) {
                 let mut count = 0;
                 for b in chunk..eb.min(chunk + CHUNK) {
@@ -155,7 +157,8 @@ impl CollisionTables<'_> {
     }
 }
 
-/// How many of a link's spheres the self check places at a time.
+/// How many links' bounding spheres the obstacle check places at a time, and how many of a
+/// link's spheres the self check places at a time.
 const CHUNK: usize = 16;
 
 /// `p` (in a link's frame) in the base frame: `R p + t`.
@@ -170,34 +173,61 @@ fn place<L: CheckLanes>(pose: &Pose<L>, p: Vec3) -> [L; 3] {
     ]
 }
 
-/// One link's part of a check: its pose, its bounding sphere, and its spheres in its frame.
-struct Link<'c, L> {
-    pose: &'c Pose<L>,
-    bound: [L; 3],
-    radius: L,
-    centers: &'c [Vec3],
-    radii: &'c [f64],
+/// A few consecutive links of a check (from `first`), their bounding spheres placed.
+#[derive(Clone, Copy)]
+struct Chunk<'c, 't, L> {
+    tables: &'c CollisionTables<'t>,
+    poses: &'c [Pose<L>],
+    first: usize,
+    bounds: &'c [([L; 3], L)],
 }
 
-impl<L: CheckLanes> Link<'_, L> {
-    /// `hit` and the lanes where one of the link's spheres touches one of `obstacles`: per
-    /// obstacle, the bounding sphere first, then the spheres (placed as they are tested) on the
-    /// lanes it hits until each of them is decided.
+impl<L: CheckLanes> Chunk<'_, '_, L> {
+    /// `hit` and the lanes where one of the links' spheres touches one of `obstacles`: per
+    /// obstacle (prepared once), each link's bounding sphere first, then its spheres (placed as
+    /// they are tested) on the lanes it hits until each of them is decided.
     #[inline(always)]
-    fn against<O: Obstacle>(&self, obstacles: &[O], mut hit: L::Flags) -> L::Flags {
+    fn against<O: Obstacle>(&self, obstacles: &[O], hit: L::Flags) -> L::Flags {
+        let mut visit = Against { chunk: self, hit };
         for obstacle in obstacles {
-            let near = obstacle.hits(&self.bound, self.radius).and_not(hit);
+            obstacle.prepare(&mut visit);
+            if visit.hit.all() {
+                break;
+            }
+        }
+        visit.hit
+    }
+}
+
+/// A chunk of links tested against one prepared obstacle after another.
+struct Against<'a, 'c, 't, L: CheckLanes> {
+    chunk: &'a Chunk<'c, 't, L>,
+    hit: L::Flags,
+}
+
+impl<L: CheckLanes> Visit<L> for Against<'_, '_, '_, L> {
+    #[inline(always)]
+    fn visit<P: Prepared<L>>(&mut self, prepared: &P) {
+        let Chunk { tables, poses, first, bounds } = *self.chunk;
+        let mut hit = self.hit;
+        for (k, (bound, radius)) in bounds.iter().enumerate() {
+            let near = prepared.hits(bound, *radius).and_not(hit);
             if !near.any() {
                 continue;
             }
-            for (&center, &radius) in self.centers.iter().zip(self.radii) {
-                hit = hit | (obstacle.hits(&place(self.pose, center), L::from_f64(radius)) & near);
+            let (start, end, ..) = tables.links[first + k];
+            for s in start..end {
+                let center = place(&poses[first + k], tables.centers[s]);
+                hit = hit | (prepared.hits(&center, L::from_f64(tables.radii[s])) & near);
                 if !near.and_not(hit).any() {
                     break;
                 }
             }
+            if hit.all() {
+                break;
+            }
         }
-        hit
+        self.hit = hit;
     }
 }
 
