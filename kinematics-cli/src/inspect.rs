@@ -107,6 +107,14 @@ pub fn collision(tree: &KinematicTree, view: &CollisionView<'_>) -> Result<Strin
             }
         }
     }
+    let root = &tree.link(tree.root()).name;
+    match layout.op_counts(tree, root) {
+        Ok((centers, poses)) => {
+            out += &format!("operations of `sphere_centers` in `{root}`: {centers}\n");
+            out += &format!("operations of the links' poses the checks take: {poses}\n");
+        }
+        Err(e) => out += &format!("operations: not compiled ({e})\n"),
+    }
     let pairs = sphere_pairs(tree, &spheres, view.srdf.map(|(_, disabled)| disabled));
     let rule = match view.srdf {
         Some((file, _)) => format!("less the pairs {file} disables"),

@@ -7,7 +7,10 @@ use kinematics_model::KinematicTree;
 use kinematics_model::LinkId;
 use kinematics_model::collision::LinkSphere;
 
+use crate::error::CompileError;
 use crate::ik::geometry::transform_point;
+use crate::request::{Request, compile};
+use crate::stats::OpCount;
 
 /// The links with spheres, each sphere's place in its link's frame, and each link's bounding
 /// sphere there.
@@ -49,6 +52,23 @@ impl CollisionLayout {
             })
             .collect();
         CollisionLayout { links, points, bounds }
+    }
+
+    /// What the generated code computes, in `base`'s frame: every sphere's centre
+    /// (`sphere_centers`, each `R p + t` in the graph, only what the centres need of the poses),
+    /// and the poses of the links with spheres (the collision checks' body, which places the
+    /// spheres it tests itself).
+    pub fn op_counts(&self, tree: &KinematicTree, base: &str) -> Result<(OpCount, OpCount), CompileError> {
+        let request = Request {
+            base: Some(base.to_owned()),
+            tips: self.links.iter().map(|&l| tree.link(l).name.clone()).collect(),
+            position_only: false,
+            velocity: None,
+        };
+        let mut compiled = compile(tree, &request)?;
+        let poses = compiled.op_count();
+        let centers = compiled.points(&self.points);
+        Ok((OpCount::of(compiled.graph(), centers.into_iter().flatten()), poses))
     }
 
     /// Each link's range of spheres (they come link by link, in the links' order).
