@@ -291,6 +291,8 @@ impl Robot {
             OptionKey::Trig => ".trig(..)",
             OptionKey::ExactAngles => ".exact_angles(..)",
             OptionKey::Collision => ".collision()",
+            OptionKey::SphereCover => ".sphere_cover(..)",
+            OptionKey::Srdf => ".srdf(..)",
         }
     }
 
@@ -567,13 +569,13 @@ mod tests {
         let message = fails(&robot().srdf("arm.srdf"), |e| matches!(e, BuildError::Options { .. }));
         assert_eq!(
             message,
-            "arm.urdf: `.collision()`: arm.srdf: line 2: <disable_collisions link2=\"tool9\">: link `tool9` does not \
+            "arm.urdf: `.srdf(..)`: arm.srdf: line 2: <disable_collisions link2=\"tool9\">: link `tool9` does not \
              exist; did you mean `tool0`?"
         );
         let message = fails(&robot().sphere_cover(f64::NAN), |e| matches!(e, BuildError::Options { .. }));
         assert_eq!(
             message,
-            "arm.urdf: `.collision()`: `sphere_cover` is NaN (must be a finite positive length in metres)"
+            "arm.urdf: `.sphere_cover(..)`: `sphere_cover` is NaN (must be a finite positive length in metres)"
         );
         let message = fails(&Robot::urdf("plain.urdf").manifest_dir(&dir).collision(), |e| {
             matches!(e, BuildError::Options { .. })

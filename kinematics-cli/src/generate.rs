@@ -169,6 +169,8 @@ fn flags(error: BuildError) -> CliError {
                 OptionKey::Trig => "--trig",
                 OptionKey::ExactAngles => "--exact-angles",
                 OptionKey::Collision => "--collision",
+                OptionKey::SphereCover => "--sphere-cover",
+                OptionKey::Srdf => "--srdf",
             },
             fault,
         })

@@ -320,6 +320,18 @@ fn generate_emits_collision_checking_as_the_build_api_does() {
         message.starts_with("error: robots/ur5.urdf: `--collision`: link `base_link`: <collision> is a mesh"),
         "{message}"
     );
+    // Each fault names the flag that caused it.
+    let message = fails(&["generate", "robots/ur5_spherized.urdf", "--collision", "--sphere-cover", "0"]);
+    assert_eq!(
+        message,
+        "error: robots/ur5_spherized.urdf: `--sphere-cover`: `sphere_cover` is 0 (must be a finite positive length in \
+         metres)"
+    );
+    let message = fails(&["generate", "robots/ur5_spherized.urdf", "--collision", "--srdf", "robots/panda.srdf"]);
+    assert!(
+        message.starts_with("error: robots/ur5_spherized.urdf: `--srdf`: robots/panda.srdf: line 51:"),
+        "{message}"
+    );
     // Meshes left out, the UR5 keeps the small box on its `ee_link`: one sphere.
     let skipped = ok(&["generate", "robots/ur5.urdf", "--collision", "--skip-meshes"]);
     assert!(skipped.contains(r#"pub const SPHERE_LINKS: [&'static str; 1] = ["ee_link"];"#), "{skipped}");

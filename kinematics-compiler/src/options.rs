@@ -136,8 +136,12 @@ pub enum OptionKey {
     Trig,
     /// `exact_angles`.
     ExactAngles,
-    /// `collision` (its cover, its meshes, its SRDF).
+    /// `collision` (its geometry, its meshes).
     Collision,
+    /// `collision`'s `sphere_cover`.
+    SphereCover,
+    /// `collision`'s `srdf`.
+    Srdf,
 }
 
 impl OptionKey {
@@ -155,6 +159,8 @@ impl OptionKey {
             OptionKey::Trig => "trig",
             OptionKey::ExactAngles => "exact_angles",
             OptionKey::Collision => "collision",
+            OptionKey::SphereCover => "sphere_cover",
+            OptionKey::Srdf => "srdf",
         }
     }
 }
@@ -435,7 +441,7 @@ fn ik_applies(options: &Options, tree: &KinematicTree) -> Result<CheckedIk, Opti
 fn sphere_cover_positive(options: &Options) -> Option<OptionFault> {
     let cover = options.collision.as_ref()?.sphere_cover;
     (!(cover.is_finite() && cover > 0.0))
-        .then_some(OptionFault { key: OptionKey::Collision, kind: FaultKind::SphereCover(cover) })
+        .then_some(OptionFault { key: OptionKey::SphereCover, kind: FaultKind::SphereCover(cover) })
 }
 
 /// Rule: `collision` needs geometry the cover can read (a mesh is refused unless meshes are left
@@ -454,7 +460,9 @@ fn collision_applies(options: &Options, tree: &KinematicTree) -> Result<Option<C
     }
     let disabled = match &collision.srdf {
         Some(srdf) => {
-            Some(srdf.disabled_pairs(tree).map_err(|e| fault(FaultKind::Srdf(format!("{}: {e}", srdf.file))))?)
+            let srdf_fault =
+                |e| OptionFault { key: OptionKey::Srdf, kind: FaultKind::Srdf(format!("{}: {e}", srdf.file)) };
+            Some(srdf.disabled_pairs(tree).map_err(srdf_fault)?)
         }
         None => None,
     };

@@ -391,7 +391,13 @@ impl KinematicsInput {
             OptionKey::Ik => output.ik.as_ref().map(SpannedValue::span),
             OptionKey::Scalars => output.scalars.as_ref().map(|list| list.span),
             OptionKey::Trig => output.trig.as_ref().map(SpannedValue::span),
-            OptionKey::Collision => output.collision.as_ref().map(SpannedValue::span),
+            // The span darling keeps of `collision(...)` is its first entry's (`sphere_cover`
+            // when it is given: the cover's fault is spanned there).
+            OptionKey::Collision | OptionKey::SphereCover => output.collision.as_ref().map(SpannedValue::span),
+            // The path's own span, else (the fault found without it) the `collision` key's.
+            OptionKey::Srdf => {
+                output.srdf().map(SpannedValue::span).or_else(|| output.collision.as_ref().map(SpannedValue::span))
+            }
             // A bare word has no span of its own.
             OptionKey::Positions => None,
             source => self.keys.span_of(source),
