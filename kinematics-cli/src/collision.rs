@@ -62,16 +62,17 @@ pub fn check(tree: &KinematicTree, file: &str, samples: usize, setup: &Setup<'_>
     }
     let runtime = |source| CliError::Runtime { file: file.to_owned(), source };
     // The tables, as the compiler writes them: links with spheres in tree order, each with its
-    // spheres' range and bounding sphere; each sphere's centre in its link's frame.
+    // groups and bounding sphere; each group's spheres and bounding sphere; each sphere's centre
+    // in its link's frame, in the checks' order.
     let layout = CollisionLayout::new(tree, &spheres);
     let links: Vec<(usize, usize, [f64; 3], f64)> =
-        layout.ranges().into_iter().zip(&layout.bounds).map(|((s, e), &(c, r))| (s, e, c, r)).collect();
-    let centers: Vec<[f64; 3]> = layout.points.iter().map(|&(_, p)| p).collect();
-    let radii: Vec<f64> = spheres.iter().map(|s| s.sphere.radius).collect();
+        layout.link_groups.iter().zip(&layout.bounds).map(|(&(s, e), &(c, r))| (s, e, c, r)).collect();
+    let centers: Vec<[f64; 3]> = layout.order.iter().map(|&k| layout.points[k].1).collect();
+    let radii: Vec<f64> = layout.order.iter().map(|&k| spheres[k].sphere.radius).collect();
     let plan = sphere_pairs(tree, &spheres, setup.srdf.as_ref().map(|(_, d)| d));
     let index = |l: LinkId| layout.links.iter().position(|&k| k == l);
     let pairs: Vec<(usize, usize)> = plan.pairs.iter().filter_map(|&(a, b)| Some((index(a)?, index(b)?))).collect();
-    let tables = CollisionTables { links: &links, centers: &centers, radii: &radii, pairs: &pairs };
+    let tables = CollisionTables { links: &links, groups: &layout.groups, centers: &centers, radii: &radii, pairs: &pairs };
 
     let request = Request {
         base: Some(tree.link(tree.root()).name.clone()),

@@ -1,7 +1,9 @@
 //! Where a compiled robot's collision spheres sit: the links that carry spheres (tree order),
 //! each sphere's centre in its link's frame (its `<collision>` element's origin applied to the
-//! cover's centre), and each link's bounding sphere there. The emitter writes its tables from
-//! this layout, and `kinematics check` and `inspect` read the same one.
+//! cover's centre), each link's bounding sphere there, and the groups of a few neighbouring
+//! spheres each link's are split into (each with its bounding sphere: a check tests a link, then
+//! its groups, then their spheres). The emitter writes its tables from this layout, and
+//! `kinematics check` and `inspect` read the same one.
 
 use kinematics_model::KinematicTree;
 use kinematics_model::LinkId;
@@ -23,6 +25,37 @@ pub struct CollisionLayout {
     pub points: Vec<(usize, [f64; 3])>,
     /// Per link of `links`: its bounding sphere's centre (link frame) and radius.
     pub bounds: Vec<([f64; 3], f64)>,
+    /// The checks' order of the spheres: link by link, each link's group by group; entry `k` is
+    /// the index (in the spheres' order) of the `k`-th sphere in the checks' order.
+    pub order: Vec<usize>,
+    /// Per link of `links`: the range of its groups in `groups`.
+    pub link_groups: Vec<(usize, usize)>,
+    /// Per group: the range of its spheres in the checks' order, and its bounding sphere's centre
+    /// (link frame) and radius.
+    pub groups: Vec<(usize, usize, [f64; 3], f64)>,
+}
+
+/// The most spheres a group holds: a link's spheres are halved across their widest extent until
+/// each part has at most this many.
+pub const GROUP: usize = 4;
+
+/// `members` (indices into `balls`) halved across the widest extent of their centres (ties by
+/// index, so the split is the same on every run) until each part has at most [`GROUP`].
+fn split(members: Vec<usize>, balls: &[([f64; 3], f64)], out: &mut Vec<Vec<usize>>) {
+    if members.len() <= GROUP {
+        out.push(members);
+        return;
+    }
+    let extent = |axis: usize| {
+        let values = members.iter().map(|&m| balls[m].0[axis]);
+        values.clone().fold(f64::NEG_INFINITY, f64::max) - values.fold(f64::INFINITY, f64::min)
+    };
+    let axis = (0..3).max_by(|&a, &b| extent(a).total_cmp(&extent(b)).then(b.cmp(&a))).unwrap_or(0);
+    let mut sorted = members;
+    sorted.sort_by(|&a, &b| balls[a].0[axis].total_cmp(&balls[b].0[axis]).then(a.cmp(&b)));
+    let upper = sorted.split_off(sorted.len() / 2);
+    split(sorted, balls, out);
+    split(upper, balls, out);
 }
 
 impl CollisionLayout {
@@ -40,18 +73,24 @@ impl CollisionLayout {
                 (frame, transform_point(origin, s.sphere.center))
             })
             .collect();
-        let bounds = (0..links.len())
-            .map(|frame| {
-                let balls: Vec<([f64; 3], f64)> = points
-                    .iter()
-                    .zip(spheres)
-                    .filter(|((f, _), _)| *f == frame)
-                    .map(|((_, p), s)| (*p, s.sphere.radius))
-                    .collect();
-                enclosing_sphere(&balls)
-            })
-            .collect();
-        CollisionLayout { links, points, bounds }
+        let balls: Vec<([f64; 3], f64)> = points.iter().zip(spheres).map(|((_, p), s)| (*p, s.sphere.radius)).collect();
+        let (mut bounds, mut order, mut link_groups, mut groups) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+        for frame in 0..links.len() {
+            let members: Vec<usize> = (0..points.len()).filter(|&k| points[k].0 == frame).collect();
+            let own: Vec<([f64; 3], f64)> = members.iter().map(|&k| balls[k]).collect();
+            bounds.push(enclosing_sphere(&own));
+            let mut parts = Vec::new();
+            split(members, &balls, &mut parts);
+            let first = groups.len();
+            for part in parts {
+                let (start, part_balls): (usize, Vec<([f64; 3], f64)>) = (order.len(), part.iter().map(|&k| balls[k]).collect());
+                order.extend(&part);
+                let (center, radius) = enclosing_sphere(&part_balls);
+                groups.push((start, order.len(), center, radius));
+            }
+            link_groups.push((first, groups.len()));
+        }
+        CollisionLayout { links, points, bounds, order, link_groups, groups }
     }
 
     /// What the generated code computes, in `base`'s frame: every sphere's centre
@@ -69,18 +108,6 @@ impl CollisionLayout {
         let poses = compiled.op_count();
         let centers = compiled.points(&self.points);
         Ok((OpCount::of(compiled.graph(), centers.into_iter().flatten()), poses))
-    }
-
-    /// Each link's range of spheres (they come link by link, in the links' order).
-    pub fn ranges(&self) -> Vec<(usize, usize)> {
-        let mut start = 0;
-        (0..self.links.len())
-            .map(|f| {
-                let count = self.points.iter().filter(|(g, _)| *g == f).count();
-                start += count;
-                (start - count, start)
-            })
-            .collect()
     }
 }
 
@@ -128,5 +155,57 @@ mod tests {
         let (c, r) = enclosing_sphere(&balls);
         assert!(balls.iter().all(|&(p, q)| distance(c, p) + q <= r));
         assert_eq!(enclosing_sphere(&[([1.0, 2.0, 3.0], 0.5)]), ([1.0, 2.0, 3.0], 0.5));
+    }
+}
+
+#[cfg(test)]
+mod layout_tests {
+    use super::*;
+    use kinematics_model::collision::{Meshes, link_spheres};
+
+    /// On every robot of `robots/` with collision geometry: the checks' order is a permutation
+    /// keeping each link's spheres together, the groups partition each link's spheres into parts
+    /// of at most `GROUP`, and every bounding sphere (link, group) holds its spheres.
+    #[test]
+    fn groups_partition_each_links_spheres_and_their_bounds_hold_them() {
+        let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../robots");
+        let mut checked = 0;
+        for entry in std::fs::read_dir(dir).unwrap() {
+            let path = entry.unwrap().path();
+            let name = path.display().to_string();
+            if kinematics_model::SourceFormat::from_file_name(&name).is_none() {
+                continue;
+            }
+            let text = std::fs::read_to_string(&path).unwrap();
+            let tree = kinematics_model::parse_source(&name, &text).unwrap();
+            let Ok(spheres) = link_spheres(&tree, 0.02, Meshes::Skip) else { continue };
+            if spheres.is_empty() {
+                continue;
+            }
+            let layout = CollisionLayout::new(&tree, &spheres);
+            let mut sorted = layout.order.clone();
+            sorted.sort_unstable();
+            assert_eq!(sorted, (0..spheres.len()).collect::<Vec<_>>(), "{name}");
+            let holds = |(c, r): ([f64; 3], f64), k: usize| {
+                let (p, q) = (layout.points[k].1, spheres[k].sphere.radius);
+                let d = ((p[0] - c[0]).powi(2) + (p[1] - c[1]).powi(2) + (p[2] - c[2]).powi(2)).sqrt();
+                d + q <= r * (1.0 + 1e-12)
+            };
+            for (f, &(g0, g1)) in layout.link_groups.iter().enumerate() {
+                let mut members = Vec::new();
+                for &(s0, s1, c, r) in &layout.groups[g0..g1] {
+                    assert!(s1 > s0 && s1 - s0 <= GROUP, "{name}");
+                    for &k in &layout.order[s0..s1] {
+                        assert_eq!(layout.points[k].0, f, "{name}: sphere {k} in another link's group");
+                        assert!(holds((c, r), k) && holds(layout.bounds[f], k), "{name}: sphere {k}");
+                        members.push(k);
+                    }
+                }
+                let own = layout.points.iter().filter(|(g, _)| *g == f).count();
+                assert_eq!(members.len(), own, "{name}: link {f}");
+            }
+            checked += 1;
+        }
+        assert!(checked >= 3, "{checked} robots with collision geometry");
     }
 }

@@ -58,9 +58,9 @@ pub(super) fn bodies(cx: &Context<'_>, name: &str) -> Result<(Vec<TokenStream>, 
     Ok((items, doc))
 }
 
-/// The collision tables (each link's spheres' range and bounding sphere, each sphere's centre in
-/// its link's frame and radius, the link pairs the self-collision check tests), as constants of
-/// the block's `bodies` module.
+/// The collision tables (each link's groups and bounding sphere, each group's spheres and
+/// bounding sphere, each sphere's centre in its link's frame and radius in the checks' order, the
+/// link pairs the self-collision check tests), as constants of the block's `bodies` module.
 fn tables(cx: &Context<'_>, frame: &CollisionLayout) -> Vec<TokenStream> {
     let p = &cx.p;
     let pairs = cx.spec.robot.collision().map_or(&[][..], |plan| plan.pairs.pairs.as_slice());
@@ -68,16 +68,13 @@ fn tables(cx: &Context<'_>, frame: &CollisionLayout) -> Vec<TokenStream> {
         let [x, y, z] = v.map(super::number);
         quote!([#x, #y, #z])
     };
-    let links: Vec<TokenStream> = frame
-        .ranges()
-        .into_iter()
-        .enumerate()
-        .map(|(f, (start, end))| {
-            let (s, e) = (Literal::usize_unsuffixed(start), Literal::usize_unsuffixed(end));
-            let (center, radius) = (point(&frame.bounds[f].0), super::number(frame.bounds[f].1));
-            quote!((#s, #e, #center, #radius))
-        })
-        .collect();
+    let entry = |(start, end): (usize, usize), center: &[f64; 3], radius: f64| {
+        let (s, e) = (Literal::usize_unsuffixed(start), Literal::usize_unsuffixed(end));
+        let (center, radius) = (point(center), super::number(radius));
+        quote!((#s, #e, #center, #radius))
+    };
+    let links = frame.link_groups.iter().zip(&frame.bounds).map(|(&range, (c, r))| entry(range, c, *r));
+    let groups = frame.groups.iter().map(|&(s, e, c, r)| entry((s, e), &c, r));
     let index = |l: kinematics_model::LinkId| {
         #[allow(clippy::expect_used, reason = "invariant: pairs are of links with spheres")]
         let i = frame.links.binary_search(&l).expect("a paired link has spheres");
@@ -87,17 +84,19 @@ fn tables(cx: &Context<'_>, frame: &CollisionLayout) -> Vec<TokenStream> {
         let (a, b) = (index(a), index(b));
         quote!((#a, #b))
     });
-    let centers = frame.points.iter().map(|(_, p)| point(p));
-    let radii = cx.spheres().iter().map(|s| super::number(s.sphere.radius));
+    let centers = frame.order.iter().map(|&k| point(&frame.points[k].1));
+    let radii = frame.order.iter().map(|&k| super::number(cx.spheres()[k].sphere.radius));
     let count = Literal::usize_unsuffixed(cx.spheres().len());
     vec![
         quote! {
-            /// The collision tables: each link with spheres (its spheres' range, its bounding
-            /// sphere's centre in its frame and radius), each sphere's centre in its link's frame
-            /// and radius, the link pairs the self-collision check tests.
+            /// The collision tables: each link with spheres (its groups, its bounding sphere's
+            /// centre in its frame and radius), each group (its spheres, its bounding sphere),
+            /// each sphere's centre in its link's frame and radius, the link pairs the
+            /// self-collision check tests.
             #[allow(clippy::approx_constant, clippy::unreadable_literal)] // radii are kept as given
             pub const COLLISION_TABLES: #p::collision::CollisionTables<'static> = #p::collision::CollisionTables {
                 links: &[#(#links),*],
+                groups: &[#(#groups),*],
                 centers: &CENTERS,
                 radii: &RADII,
                 pairs: &[#(#pairs),*],

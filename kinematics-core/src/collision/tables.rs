@@ -1,8 +1,9 @@
 //! The checks a compiled robot runs on its sphere centres: against an [`Environment`]'s obstacles
 //! and against itself, on any [`CheckLanes`] type, each configuration (lane) with its own verdict.
 //!
-//! Each link's bounding sphere is tested first and its spheres (placed by its pose only when
-//! tested) only where that hits, then only on the lanes it hits; a lane found colliding is not tested again, and a check ends as soon as
+//! Each link's bounding sphere is tested first, then its groups' (a few neighbouring spheres
+//! each), and a group's spheres (placed by the link's pose only when tested) only where that
+//! hits, then only on the lanes it hits; a lane found colliding is not tested again, and a check ends as soon as
 //! every lane is colliding. Every obstacle is tested until one is hit, so the order of the
 //! obstacles does not change an answer.
 
@@ -11,9 +12,9 @@ use super::verdicts::{CheckLanes, Flags, LaneMask, non_finite};
 use crate::pose::Pose;
 
 /// A compiled robot's collision tables, as its generated code holds them: each link with spheres
-/// (its range of spheres, its bounding sphere's centre in the link's frame and radius), each
-/// sphere's centre in its link's frame and radius, and the link pairs its self-collision check
-/// tests.
+/// (its range of groups, its bounding sphere's centre in the link's frame and radius), each group
+/// of a few neighbouring spheres (its range of spheres, its bounding sphere), each sphere's centre
+/// in its link's frame and radius, and the link pairs its self-collision check tests.
 ///
 /// A check takes the poses of the links with spheres (in the order of `links`), as the generated
 /// `generic_collision_poses` returns them, and places a sphere (`R p + t`) only when it is
@@ -25,6 +26,7 @@ use crate::pose::Pose;
 /// // Two links of one sphere each at their origins, bounding spheres equal to their spheres.
 /// let tables = CollisionTables {
 ///     links: &[(0, 1, [0.0; 3], 0.1), (1, 2, [0.0; 3], 0.1)],
+///     groups: &[(0, 1, [0.0; 3], 0.1), (1, 2, [0.0; 3], 0.1)],
 ///     centers: &[[0.0; 3], [0.0; 3]],
 ///     radii: &[0.1, 0.1],
 ///     pairs: &[(0, 1)],
@@ -38,9 +40,12 @@ use crate::pose::Pose;
 /// ```
 #[derive(Debug, Clone, Copy)]
 pub struct CollisionTables<'a> {
-    /// Per link with spheres: its spheres `start..end` in the sphere order, and its bounding
-    /// sphere's centre (in the link's frame) and radius.
+    /// Per link with spheres: its groups `start..end` in `groups`, and its bounding sphere's
+    /// centre (in the link's frame) and radius.
     pub links: &'a [(usize, usize, Vec3, f64)],
+    /// Per group: its spheres `start..end` in `centers` and `radii`, and its bounding sphere's
+    /// centre (in its link's frame) and radius.
+    pub groups: &'a [(usize, usize, Vec3, f64)],
     /// Each sphere's centre in its link's frame.
     pub centers: &'a [Vec3],
     /// Each sphere's radius.
@@ -107,47 +112,61 @@ impl CollisionTables<'_> {
     }
 
     /// `hit` and the lanes where two links of a checked pair touch: their bounding spheres first,
-    /// then each link's spheres against the other's bounding sphere, then sphere against sphere
-    /// among those (the second link's spheres placed a chunk at a time).
+    /// then each group of the first against the second's bounding sphere, then group against
+    /// group, then the spheres of two touching groups (each against the other group's bounding
+    /// sphere first).
     #[inline(always)]
     fn self_hits<L: CheckLanes>(&self, poses: &[Pose<L>], mut hit: L::Flags) -> L::Flags {
-        // Filled anew for each chunk; made once (zeroing it per pair was measured).
+        // Filled anew for each pair of groups; made once (zeroing it per pair was measured).
         let mut placed = [([L::from_f64(0.0); 3], L::from_f64(0.0)); CHUNK];
         for &(i, j) in self.pairs {
             if hit.all() {
                 return hit;
             }
-            let ((sa, ea, _, ra), (sb, eb, _, rb)) = (self.links[i], self.links[j]);
-            let (ra, rb) = (L::from_f64(ra), L::from_f64(rb));
+            let ((ga, ea, ..), (gb, eb, ..)) = (self.links[i], self.links[j]);
             let (bound_i, bound_j) = (self.bound(poses, i), self.bound(poses, j));
+            let (ra, rb) = (L::from_f64(self.links[i].3), L::from_f64(self.links[j].3));
             let near = touch(&bound_i, ra, &bound_j, rb).and_not(hit);
             if !near.any() {
                 continue;
             }
-            // The second link's spheres a chunk at a time, only those within the first link's
-            // bounding sphere on some lane still near.
-            'pair: for chunk in (sb..eb).step_by(CHUNK) {
-                let mut count = 0;
-                for b in chunk..eb.min(chunk + CHUNK) {
-                    let (center, r) = (place(&poses[j], self.centers[b]), L::from_f64(self.radii[b]));
-                    if (touch(&center, r, &bound_i, ra) & near).any() {
-                        placed[count] = (center, r);
-                        count += 1;
-                    }
-                }
-                if count == 0 {
+            'pair: for a in ga..ea {
+                let (a0, a1, ca, ra) = self.groups[a];
+                let (ca, ra) = (place(&poses[i], ca), L::from_f64(ra));
+                let close_a = touch(&ca, ra, &bound_j, rb) & near;
+                if !close_a.any() {
                     continue;
                 }
-                for a in sa..ea {
-                    let (center, r) = (place(&poses[i], self.centers[a]), L::from_f64(self.radii[a]));
-                    let close = touch(&center, r, &bound_j, rb) & near;
+                for b in gb..eb {
+                    let (b0, b1, cb, rg) = self.groups[b];
+                    let (cb, rg) = (place(&poses[j], cb), L::from_f64(rg));
+                    let close = touch(&ca, ra, &cb, rg) & close_a;
                     if !close.any() {
                         continue;
                     }
-                    for (other, r_other) in &placed[..count] {
-                        hit = hit | (touch(&center, r, other, *r_other) & close);
-                        if !near.and_not(hit).any() {
-                            break 'pair;
+                    // The second group's spheres within the first group's bound, a chunk at a
+                    // time (a group holds a few).
+                    for first in (b0..b1).step_by(CHUNK) {
+                        let mut count = 0;
+                        for t in first..b1.min(first + CHUNK) {
+                            let (center, r) = (place(&poses[j], self.centers[t]), L::from_f64(self.radii[t]));
+                            if (touch(&center, r, &ca, ra) & close).any() {
+                                placed[count] = (center, r);
+                                count += 1;
+                            }
+                        }
+                        for s in a0..a1 {
+                            let (center, r) = (place(&poses[i], self.centers[s]), L::from_f64(self.radii[s]));
+                            let close_s = touch(&center, r, &cb, rg) & close;
+                            if !close_s.any() {
+                                continue;
+                            }
+                            for (other, r_other) in &placed[..count] {
+                                hit = hit | (touch(&center, r, other, *r_other) & close_s);
+                                if !near.and_not(hit).any() {
+                                    break 'pair;
+                                }
+                            }
                         }
                     }
                 }
@@ -215,10 +234,26 @@ impl<L: CheckLanes> Visit<L> for Against<'_, '_, '_, L> {
             if !near.any() {
                 continue;
             }
-            let (start, end, ..) = tables.links[first + k];
-            for s in start..end {
-                let center = place(&poses[first + k], tables.centers[s]);
-                hit = hit | (prepared.hits(&center, L::from_f64(tables.radii[s])) & near);
+            let (g0, g1, ..) = tables.links[first + k];
+            let pose = &poses[first + k];
+            for g in g0..g1 {
+                let (start, end, center, group_radius) = tables.groups[g];
+                // A link of one group: its bound is the group's, already hit.
+                let group_near = if g1 - g0 > 1 {
+                    prepared.hits(&place(pose, center), L::from_f64(group_radius)) & near
+                } else {
+                    near
+                };
+                if !group_near.and_not(hit).any() {
+                    continue;
+                }
+                for s in start..end {
+                    let center = place(pose, tables.centers[s]);
+                    hit = hit | (prepared.hits(&center, L::from_f64(tables.radii[s])) & group_near);
+                    if !group_near.and_not(hit).any() {
+                        break;
+                    }
+                }
                 if !near.and_not(hit).any() {
                     break;
                 }
@@ -248,6 +283,7 @@ mod tests {
     /// Two links of one sphere each at their origins.
     const TABLES: CollisionTables<'static> = CollisionTables {
         links: &[(0, 1, [0.0; 3], 0.1), (1, 2, [0.0; 3], 0.1)],
+        groups: &[(0, 1, [0.0; 3], 0.1), (1, 2, [0.0; 3], 0.1)],
         centers: &[[0.0; 3], [0.0; 3]],
         radii: &[0.1, 0.1],
         pairs: &[(0, 1)],
