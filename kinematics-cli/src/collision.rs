@@ -72,7 +72,8 @@ pub fn check(tree: &KinematicTree, file: &str, samples: usize, setup: &Setup<'_>
     let plan = sphere_pairs(tree, &spheres, setup.srdf.as_ref().map(|(_, d)| d));
     let index = |l: LinkId| layout.links.iter().position(|&k| k == l);
     let pairs: Vec<(usize, usize)> = plan.pairs.iter().filter_map(|&(a, b)| Some((index(a)?, index(b)?))).collect();
-    let tables = CollisionTables { links: &links, groups: &layout.groups, centers: &centers, radii: &radii, pairs: &pairs };
+    let tables =
+        CollisionTables { links: &links, groups: &layout.groups, centers: &centers, radii: &radii, pairs: &pairs };
 
     let request = Request {
         base: Some(tree.link(tree.root()).name.clone()),

@@ -83,7 +83,8 @@ impl CollisionLayout {
             split(members, &balls, &mut parts);
             let first = groups.len();
             for part in parts {
-                let (start, part_balls): (usize, Vec<([f64; 3], f64)>) = (order.len(), part.iter().map(|&k| balls[k]).collect());
+                let (start, part_balls): (usize, Vec<([f64; 3], f64)>) =
+                    (order.len(), part.iter().map(|&k| balls[k]).collect());
                 order.extend(&part);
                 let (center, radius) = enclosing_sphere(&part_balls);
                 groups.push((start, order.len(), center, radius));
