@@ -100,8 +100,10 @@ pub fn check(tree: &KinematicTree, file: &str, samples: usize, setup: &Setup<'_>
         if let Some((env, reference)) = &environment {
             let d = fk.obstacle_distance(&q, &spheres, reference).map_err(runtime)?;
             let verdict = tables.collides(&[0.0], &poses, env).any();
-            // `collides` is obstacles and self: the nearer decides.
-            tally(&mut against, d.min(s), verdict, file, "collides", &q)?;
+            // `collides` is obstacles and self: the nearer decides (a NaN, which `min` would drop,
+            // stays a NaN and fails).
+            let nearest = if d.is_nan() || s.is_nan() { f64::NAN } else { d.min(s) };
+            tally(&mut against, nearest, verdict, file, "collides", &q)?;
         }
         bar.inc(1);
     }

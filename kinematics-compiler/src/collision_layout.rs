@@ -50,7 +50,8 @@ fn split(members: Vec<usize>, balls: &[([f64; 3], f64)], out: &mut Vec<Vec<usize
         let values = members.iter().map(|&m| balls[m].0[axis]);
         values.clone().fold(f64::NEG_INFINITY, f64::max) - values.fold(f64::INFINITY, f64::min)
     };
-    let axis = (0..3).max_by(|&a, &b| extent(a).total_cmp(&extent(b)).then(b.cmp(&a))).unwrap_or(0);
+    #[allow(clippy::expect_used, reason = "invariant: 0..3 is not empty")]
+    let axis = (0..3).max_by(|&a, &b| extent(a).total_cmp(&extent(b)).then(b.cmp(&a))).expect("three axes");
     let mut sorted = members;
     sorted.sort_by(|&a, &b| balls[a].0[axis].total_cmp(&balls[b].0[axis]).then(a.cmp(&b)));
     let upper = sorted.split_off(sorted.len() / 2);

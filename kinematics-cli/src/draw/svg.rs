@@ -217,7 +217,14 @@ pub fn render(scene: &Scene) -> String {
         px(x1 + 6.0),
         px(y + 4.0)
     ));
-    let mut x = x1 + 90.0;
+    w(legend(scene, x1 + 90.0, y));
+    out.push_str("</svg>\n");
+    out
+}
+
+/// The legend from `x` along the line at `y`: each axis style, then what else is drawn.
+fn legend(scene: &Scene, mut x: f64, y: f64) -> String {
+    let mut out = String::new();
     for style in [AxisStyle::Revolute, AxisStyle::Prismatic, AxisStyle::Planar] {
         let class = style.class();
         let text = match style {
@@ -225,34 +232,33 @@ pub fn render(scene: &Scene) -> String {
             AxisStyle::Prismatic => "prismatic axis",
             AxisStyle::Planar => "planar normal",
         };
-        w(format!(
+        let _ = writeln!(
+            out,
             "<g class=\"legend\"><line class=\"axis {class}\" x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" \
-             marker-end=\"url(#head-{class})\"/><text x=\"{}\" y=\"{}\" font-size=\"11\">{text}</text></g>\n",
+             marker-end=\"url(#head-{class})\"/><text x=\"{}\" y=\"{}\" font-size=\"11\">{text}</text></g>",
             px(x),
             px(y),
             px(x + AXIS_PX),
             px(y),
             px(x + AXIS_PX + 6.0),
             px(y + 4.0)
-        ));
+        );
         x += 130.0;
     }
-    w(format!(
-        "<text x=\"{}\" y=\"{}\" font-size=\"11\">links grey, origins as dots; fixed and floating joints have no axis{}{}</text>\n",
+    let spheres = match scene.spheres.len() {
+        0 => String::new(),
+        n => format!("; {n} collision spheres orange (meshes not drawn)"),
+    };
+    let obstacles = match scene.obstacles.len() {
+        0 => String::new(),
+        n => format!("; {n} obstacles blue-grey"),
+    };
+    let _ = writeln!(
+        out,
+        "<text x=\"{}\" y=\"{}\" font-size=\"11\">links grey, origins as dots; fixed and floating joints have no axis{spheres}{obstacles}</text>",
         px(x),
-        px(y + 4.0),
-        if scene.spheres.is_empty() {
-            String::new()
-        } else {
-            format!("; {} collision spheres orange (meshes not drawn)", scene.spheres.len())
-        },
-        if scene.obstacles.is_empty() {
-            String::new()
-        } else {
-            format!("; {} obstacles blue-grey", scene.obstacles.len())
-        }
-    ));
-    out.push_str("</svg>\n");
+        px(y + 4.0)
+    );
     out
 }
 
