@@ -80,13 +80,42 @@ fn sphere_centers_agree_with_the_reference() {
 }
 
 #[test]
-fn batches_lanes_and_f32_equal_the_scalar_centres() {
+fn batches_lanes_and_f32_agree_with_the_scalar_centres() {
     let reference = Ur5::reference().unwrap();
+    let reach = reference.tree().reach();
     let qs: Vec<[f64; 6]> = Configurations::new(reference.tree()).take(37).map(|q| q.try_into().unwrap()).collect();
-    let mut out = vec![[[0.0; 3]; 40]; qs.len()];
+    let qs32: Vec<[f32; 6]> = qs.iter().map(|q| q.map(|x| x as f32)).collect();
+    // The batches place each sphere by its link's pose (`collision::place_spheres`), the other
+    // forms run the straight-line body: the same products associated differently, so they agree
+    // to rounding, not bit for bit.
+    let (mut out, mut out32) = (vec![[[0.0; 3]; 40]; qs.len()], vec![[[0.0_f32; 3]; 40]; qs.len()]);
     Ur5::sphere_centers_batch(&qs, &mut out).unwrap();
-    for (q, batch) in qs.iter().zip(&out) {
-        assert_eq!(*batch, Ur5::sphere_centers(q));
+    Ur5::sphere_centers_batch_f32(&qs32, &mut out32).unwrap();
+    let mut columns32 = vec![[[0.0_f32; 3]; 40]; qs.len()];
+    let joint = |j: usize| qs32.iter().map(|q| q[j]).collect::<Vec<f32>>();
+    let (c0, c1, c2, c3, c4, c5) = (joint(0), joint(1), joint(2), joint(3), joint(4), joint(5));
+    Ur5::sphere_centers_batch_columns_f32([&c0, &c1, &c2, &c3, &c4, &c5], &mut columns32).unwrap();
+    assert_eq!(columns32, out32);
+    for ((q, batch), batch32) in qs.iter().zip(&out).zip(&out32) {
+        let scalar = Ur5::sphere_centers(q);
+        for k in 0..40 {
+            for i in 0..3 {
+                let (error, error32) = ((batch[k][i] - scalar[k][i]).abs(), (f64::from(batch32[k][i]) - scalar[k][i]).abs());
+                assert!(error <= AGREEMENT_TOLERANCE * reach, "sphere {k}: {error:e}");
+                assert!(error32 <= AGREEMENT_TOLERANCE_F32 * reach, "sphere {k} (f32): {error32:e}");
+            }
+        }
+    }
+    // The Panda (59 spheres on 11 links, groups of several links' spheres) too.
+    let panda: Vec<[f64; 7]> =
+        Configurations::within(&Panda::JOINT_LIMITS).take(19).map(|q| q.try_into().unwrap()).collect();
+    let mut centers = vec![[[0.0; 3]; 59]; panda.len()];
+    Panda::sphere_centers_batch(&panda, &mut centers).unwrap();
+    for (q, batch) in panda.iter().zip(&centers) {
+        let scalar = Panda::sphere_centers(q);
+        for k in 0..59 {
+            assert!((0..3).all(|i| (batch[k][i] - scalar[k][i]).abs() <= AGREEMENT_TOLERANCE), "Panda sphere {k}");
+        }
     }
     let lanes: [F64x4; 6] = std::array::from_fn(|j| F64x4::new(std::array::from_fn(|l| qs[l][j])));
     let centers = Ur5::sphere_centers_generic(&lanes);

@@ -33,6 +33,26 @@ impl<T: Copy> Pose<T> {
     }
 }
 
+impl<T: crate::Real> Pose<T> {
+    /// `p` (a point in this pose's frame) in the frame the pose is expressed in: `R p + t`.
+    ///
+    /// ```
+    /// use kinematics_core::Pose;
+    /// let quarter_turn = Pose { rotation: [[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]], translation: [1.0, 2.0, 3.0] };
+    /// assert_eq!(quarter_turn.place([1.0, 0.0, 0.5]), [1.0, 3.0, 3.5]);
+    /// ```
+    #[inline(always)]
+    pub fn place(&self, p: [f64; 3]) -> [T; 3] {
+        let (r, t) = (&self.rotation, &self.translation);
+        let p = [T::from_f64(p[0]), T::from_f64(p[1]), T::from_f64(p[2])];
+        [
+            r[0][0] * p[0] + r[0][1] * p[1] + r[0][2] * p[2] + t[0],
+            r[1][0] * p[0] + r[1][1] * p[1] + r[1][2] * p[2] + t[1],
+            r[2][0] * p[0] + r[2][1] * p[1] + r[2][2] * p[2] + t[2],
+        ]
+    }
+}
+
 /// Agreement required of generated `f64` code against the runtime reference, as a pose deviation
 /// (`Pose::deviation`, with the `nalgebra` feature): translations within this times the reach,
 /// rotation entries within this. Every agreement check (tests, `kinematics check`, the examples,

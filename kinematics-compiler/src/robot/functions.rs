@@ -32,6 +32,7 @@ impl Functions {
         let p = &cx.p;
         let n_lit = cx.render.dof();
         let g = format_ident!("{}", output.body(cx.one));
+        let lanes_g = format_ident!("{}", output.lanes_body(cx.one));
         let rates = output.takes_rates();
         for (form, signature) in cx.render.functions(output, cx.one) {
             let sig = signature.tokens();
@@ -74,7 +75,7 @@ impl Functions {
                         #[allow(clippy::redundant_closure)]
                         #sig {
                             #p::batch_wide::<#lanes, #wide, #n_lit, _, _>(
-                                Self::ROBOT, qs, out, #[inline(always)] |q| #g(q), #[inline(always)] |q| #g(q),
+                                Self::ROBOT, qs, out, #[inline(always)] |q| #lanes_g(q), #[inline(always)] |q| #lanes_g(q),
                             )
                         }
                     }
@@ -95,7 +96,7 @@ impl Functions {
                         #sig {
                             #p::batch_columns::<#lanes, #wide, #n_lit, _, _>(
                                 Self::ROBOT, &Self::JOINT_NAMES, columns, out,
-                                #[inline(always)] |q| #g(q), #[inline(always)] |q| #g(q),
+                                #[inline(always)] |q| #lanes_g(q), #[inline(always)] |q| #lanes_g(q),
                             )
                         }
                     }

@@ -14,7 +14,7 @@ mod tables;
 mod verdicts;
 
 pub use obstacles::{BoxObstacle, CapsuleObstacle, CylinderObstacle, Environment, ObstacleError, SphereObstacle, Vec3};
-pub use tables::CollisionTables;
+pub use tables::{CollisionTables, place_spheres};
 pub use verdicts::{CheckLanes, Flags, Flags32x8, Flags32x16, Flags64x4, Flags64x8, LaneMask, non_finite};
 #[doc(hidden)]
 #[inline(always)]

@@ -375,7 +375,7 @@ impl Obstacle for CylinderObstacle {
         let length = sqrt(dot(axis, axis));
         visit.visit(&PreparedCylinder {
             a: splat::<L>(self.a),
-            unit: splat(axis.map(|x| x / length)),
+            unit: splat([axis[0] / length, axis[1] / length, axis[2] / length]),
             length: L::from_f64(length),
             radius_squared: L::from_f64(self.radius * self.radius),
             four_radius_squared: L::from_f64(4.0 * self.radius * self.radius),
@@ -426,7 +426,8 @@ impl Obstacle for BoxObstacle {
         if self.rotation == WORLD {
             visit.visit(&AlignedBox { center, half });
         } else {
-            visit.visit(&TurnedBox { center, rows: self.rotation.map(splat), half });
+            let [x, y, z] = self.rotation;
+            visit.visit(&TurnedBox { center, rows: [splat(x), splat(y), splat(z)], half });
         }
     }
 }

@@ -65,6 +65,7 @@ impl CollisionTables<'_> {
         poses: &[Pose<L>],
         env: &Environment<'_>,
     ) -> LaneMask {
+        let poses = fence(poses);
         let hit = self.obstacle_hits(poses, env, non_finite(q));
         if hit.all() {
             return hit.bits();
@@ -76,13 +77,13 @@ impl CollisionTables<'_> {
     /// not finite is colliding.
     #[inline(always)]
     pub fn self_collides<L: CheckLanes, const N: usize>(&self, q: &[L; N], poses: &[Pose<L>]) -> LaneMask {
-        self.self_hits(poses, non_finite(q)).bits()
+        self.self_hits(fence(poses), non_finite(q)).bits()
     }
 
     /// Link `k`'s bounding sphere's centre.
     #[inline(always)]
     fn bound<L: CheckLanes>(&self, poses: &[Pose<L>], k: usize) -> [L; 3] {
-        place(&poses[k], self.links[k].2)
+        poses[k].place(self.links[k].2)
     }
 
     /// `hit` and the lanes where a sphere touches an obstacle: a few links at a time (their
@@ -118,7 +119,7 @@ impl CollisionTables<'_> {
     #[inline(always)]
     fn self_hits<L: CheckLanes>(&self, poses: &[Pose<L>], mut hit: L::Flags) -> L::Flags {
         // Filled anew for each pair of groups; made once (zeroing it per pair was measured).
-        let mut placed = [([L::from_f64(0.0); 3], L::from_f64(0.0)); CHUNK];
+        let mut placed = [([L::from_f64(0.0); 3], L::from_f64(0.0)); PLACED];
         for &(i, j) in self.pairs {
             if hit.all() {
                 return hit;
@@ -132,31 +133,31 @@ impl CollisionTables<'_> {
             }
             'pair: for a in ga..ea {
                 let (a0, a1, ca, ra) = self.groups[a];
-                let (ca, ra) = (place(&poses[i], ca), L::from_f64(ra));
+                let (ca, ra) = (poses[i].place(ca), L::from_f64(ra));
                 let close_a = touch(&ca, ra, &bound_j, rb) & near;
                 if !close_a.any() {
                     continue;
                 }
                 for b in gb..eb {
                     let (b0, b1, cb, rg) = self.groups[b];
-                    let (cb, rg) = (place(&poses[j], cb), L::from_f64(rg));
+                    let (cb, rg) = (poses[j].place(cb), L::from_f64(rg));
                     let close = touch(&ca, ra, &cb, rg) & close_a;
                     if !close.any() {
                         continue;
                     }
                     // The second group's spheres within the first group's bound, a chunk at a
                     // time (a group holds a few).
-                    for first in (b0..b1).step_by(CHUNK) {
+                    for first in (b0..b1).step_by(PLACED) {
                         let mut count = 0;
-                        for t in first..b1.min(first + CHUNK) {
-                            let (center, r) = (place(&poses[j], self.centers[t]), L::from_f64(self.radii[t]));
+                        for t in first..b1.min(first + PLACED) {
+                            let (center, r) = (poses[j].place(self.centers[t]), L::from_f64(self.radii[t]));
                             if (touch(&center, r, &ca, ra) & close).any() {
                                 placed[count] = (center, r);
                                 count += 1;
                             }
                         }
                         for s in a0..a1 {
-                            let (center, r) = (place(&poses[i], self.centers[s]), L::from_f64(self.radii[s]));
+                            let (center, r) = (poses[i].place(self.centers[s]), L::from_f64(self.radii[s]));
                             let close_s = touch(&center, r, &cb, rg) & close;
                             if !close_s.any() {
                                 continue;
@@ -176,20 +177,42 @@ impl CollisionTables<'_> {
     }
 }
 
-/// How many links' bounding spheres the obstacle check places at a time, and how many of a
-/// link's spheres the self check places at a time.
+/// How many links' bounding spheres the obstacle check places at a time.
 const CHUNK: usize = 16;
 
-/// `p` (in a link's frame) in the base frame: `R p + t`.
+/// How many spheres of a group the self check places at a time: the compiler's groups hold at
+/// most four (a larger group is taken four at a time).
+const PLACED: usize = 4;
+
+/// `poses`, after which the compiler computes nothing of them ahead (a `black_box`): inlined
+/// together, the straight-line poses and the work on them made one block too large for LLVM's
+/// vectorizer to schedule whole, and parts of it ran in 4-lane pieces (measured: the Panda's
+/// `collides` in `F32x16` lanes 1.15x slower without it).
 #[inline(always)]
-fn place<L: CheckLanes>(pose: &Pose<L>, p: Vec3) -> [L; 3] {
-    let (r, t) = (&pose.rotation, &pose.translation);
-    let p = [L::from_f64(p[0]), L::from_f64(p[1]), L::from_f64(p[2])];
-    [
-        r[0][0] * p[0] + r[0][1] * p[1] + r[0][2] * p[2] + t[0],
-        r[1][0] * p[0] + r[1][1] * p[1] + r[1][2] * p[2] + t[1],
-        r[2][0] * p[0] + r[2][1] * p[1] + r[2][2] * p[2] + t[2],
-    ]
+fn fence<T: ?Sized>(poses: &T) -> &T {
+    core::hint::black_box(poses)
+}
+
+/// Each sphere's centre: `places[k]` is sphere `k`'s link (its index in `poses`) and its centre in
+/// that link's frame, placed by the link's pose (`R p + t`). Generated `sphere_centers` batches
+/// run this on the link poses rather than their straight-line body: in 8 or 16 lanes that body
+/// (every centre's few products, one block) is beyond what LLVM's vectorizer schedules, and ran
+/// in scalar pieces (measured: the Panda's `sphere_centers_batch_f32` about 4x slower).
+///
+/// ```
+/// use kinematics_core::{collision::place_spheres, Pose};
+/// let at = |x: f64| Pose { rotation: [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]], translation: [x, 0.0, 0.0] };
+/// let centers = place_spheres(&[at(1.0), at(2.0)], &[(0, [0.0, 0.5, 0.0]), (1, [0.0, 0.0, 0.5])]);
+/// assert_eq!(centers, [[1.0, 0.5, 0.0], [2.0, 0.0, 0.5]]);
+/// ```
+#[inline(always)]
+pub fn place_spheres<T: crate::Real, const S: usize>(poses: &[Pose<T>], places: &[(usize, Vec3); S]) -> [[T; 3]; S] {
+    let poses = fence(poses);
+    let mut centers = [[T::from_f64(0.0); 3]; S];
+    for (center, &(link, p)) in centers.iter_mut().zip(places) {
+        *center = poses[link].place(p);
+    }
+    centers
 }
 
 /// A few consecutive links of a check (from `first`), their bounding spheres placed.
@@ -240,7 +263,7 @@ impl<L: CheckLanes> Visit<L> for Against<'_, '_, '_, L> {
             let (start, end) = (tables.groups[g0].0, tables.groups[g1 - 1].1);
             let pose = &poses[first + k];
             for s in start..end {
-                let center = place(pose, tables.centers[s]);
+                let center = pose.place(tables.centers[s]);
                 hit = hit | (prepared.hits(&center, L::from_f64(tables.radii[s])) & near);
                 if !near.and_not(hit).any() {
                     break;
