@@ -100,7 +100,8 @@ fn batches_lanes_and_f32_agree_with_the_scalar_centres() {
         let scalar = Ur5::sphere_centers(q);
         for k in 0..40 {
             for i in 0..3 {
-                let (error, error32) = ((batch[k][i] - scalar[k][i]).abs(), (f64::from(batch32[k][i]) - scalar[k][i]).abs());
+                let (error, error32) =
+                    ((batch[k][i] - scalar[k][i]).abs(), (f64::from(batch32[k][i]) - scalar[k][i]).abs());
                 assert!(error <= AGREEMENT_TOLERANCE * reach, "sphere {k}: {error:e}");
                 assert!(error32 <= AGREEMENT_TOLERANCE_F32 * reach, "sphere {k} (f32): {error32:e}");
             }
