@@ -4,7 +4,7 @@ use core::fmt;
 
 /// A call whose slices do not fit the robot. Every field is `'static` or a number: building one
 /// allocates nothing.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 #[non_exhaustive]
 pub enum KinematicsError {
     /// `q` does not have one entry per degree of freedom.
@@ -38,6 +38,13 @@ pub enum KinematicsError {
         /// Length of the column.
         got: usize,
     },
+    /// A motion's resolution (`motion_collides`) that is not positive and finite.
+    BadResolution {
+        /// Robot name.
+        robot: &'static str,
+        /// The resolution given.
+        resolution: f64,
+    },
 }
 
 impl fmt::Display for KinematicsError {
@@ -59,6 +66,11 @@ impl fmt::Display for KinematicsError {
             KinematicsError::WrongColumnLength { robot, joint, expected, got } => write!(
                 f,
                 "robot `{robot}`: the column of joint `{joint}` holds {got} values, but the output holds {expected}"
+            ),
+            KinematicsError::BadResolution { robot, resolution } => write!(
+                f,
+                "robot `{robot}`: a motion's resolution must be positive and finite (the largest joint step \
+                 between checked configurations), not {resolution}"
             ),
         }
     }

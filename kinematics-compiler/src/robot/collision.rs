@@ -182,6 +182,10 @@ pub(super) fn checks(cx: &Context<'_>, out: &mut Functions) {
                 ),
                 quote!(COLLISION_TABLES.self_collides(q, #poses)),
             ),
+            CollisionFunction::MotionCollides => {
+                out.typed.push(motion(cx, form, &sig, &poses));
+                continue;
+            }
         };
         let never_free = "A configuration with a NaN or infinite entry is colliding.";
         let item = match form {
@@ -251,5 +255,38 @@ pub(super) fn checks(cx: &Context<'_>, out: &mut Functions) {
             }
         };
         out.typed.push(item);
+    }
+}
+
+/// `motion_collides` (per scalar): the motion's configurations checked by `collides` in the
+/// lanes the CPU fills (`collision::motion_wide`).
+fn motion(cx: &Context<'_>, form: Form, sig: &TokenStream, poses: &TokenStream) -> TokenStream {
+    let p = &cx.p;
+    let n = cx.render.dof();
+    let Form::Typed(ScalarType { t, lanes, wide, .. }) = form else {
+        unreachable!("invariant: the surface gives motion_collides one typed form per scalar")
+    };
+    let check = quote!(COLLISION_TABLES.collides(q, #poses, environment));
+    let doc = format!(
+        "Where the straight motion from `q0` to `q1` first collides (as `collides`: obstacles and self), \
+         checked at `resolution`: the configurations `(1 - t) q0 + t q1` at `t = k / steps`, `k = 0..=steps`, \
+         `steps` the fewest keeping every joint's move between two checked configurations within `resolution` \
+         (radians or metres), both ends included (`{t}`). `Ok(Some(t))`: the first colliding configuration's \
+         fraction `t`, as checking them one by one in order would find; `Ok(None)`: every one is free. \
+         Several points of the motion are checked at once in SIMD lanes, spread along it, so a collision \
+         anywhere ends the search early. A resolution that is not positive and finite is an error; a \
+         configuration with a NaN or infinite entry is colliding. What lies between two checked \
+         configurations is not checked: the guide's collision page says what a resolution guarantees."
+    );
+    quote! {
+        #[doc = #doc]
+        #[inline]
+        #[allow(clippy::redundant_closure)]
+        #sig {
+            let motion = #p::collision::Motion::new(Self::ROBOT, *q0, *q1, resolution)?;
+            ::core::result::Result::Ok(#p::collision::motion_wide::<#lanes, #wide, #n>(
+                &motion, #[inline(always)] |q| #check, #[inline(always)] |q| #check,
+            ))
+        }
     }
 }

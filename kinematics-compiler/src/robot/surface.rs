@@ -637,12 +637,15 @@ pub enum CollisionFunction {
     Collides,
     /// `self_collides(&q)`.
     SelfCollides,
+    /// `motion_collides(&q0, &q1, &environment, resolution)`: one form per scalar.
+    MotionCollides,
 }
 
 impl Render {
     /// The collision checks' functions (with `collision`), in the order emitted: for `collides`
     /// then `self_collides`, per scalar the function on one configuration and its two batches
-    /// (verdicts into `out: &mut [bool]`), then the generic one on any lane type (a verdict mask).
+    /// (verdicts into `out: &mut [bool]`), then the generic one on any lane type (a verdict mask);
+    /// then `motion_collides` per scalar (the first colliding fraction of a straight motion).
     pub fn collision_items(&self) -> Vec<(CollisionFunction, Form, Signature)> {
         let (p, n) = (&self.p, self.dof());
         let error = quote!(::core::result::Result<(), #p::KinematicsError>);
@@ -650,7 +653,9 @@ impl Render {
         for function in [CollisionFunction::Collides, CollisionFunction::SelfCollides] {
             let name = function.name();
             let environment = match function {
-                CollisionFunction::Collides => quote!(, environment: &#p::collision::Environment<'_>),
+                CollisionFunction::Collides | CollisionFunction::MotionCollides => {
+                    quote!(, environment: &#p::collision::Environment<'_>)
+                }
                 CollisionFunction::SelfCollides => quote!(),
             };
             for scalar in self.scalar_types() {
@@ -699,6 +704,21 @@ impl Render {
                 },
             ));
         }
+        for scalar in self.scalar_types() {
+            let (suffix, t) = (scalar.suffix, &scalar.t);
+            out.push((
+                CollisionFunction::MotionCollides,
+                Form::Typed(scalar.clone()),
+                Signature {
+                    name: format_ident!("motion_collides{suffix}"),
+                    generics: self.dof_generics(),
+                    inputs: quote!(
+                        q0: &[#t; #n], q1: &[#t; #n], environment: &#p::collision::Environment<'_>, resolution: f64
+                    ),
+                    output: quote!(::core::result::Result<::core::option::Option<f64>, #p::KinematicsError>),
+                },
+            ));
+        }
         out
     }
 
@@ -715,6 +735,7 @@ impl CollisionFunction {
         match self {
             CollisionFunction::Collides => "collides",
             CollisionFunction::SelfCollides => "self_collides",
+            CollisionFunction::MotionCollides => "motion_collides",
         }
     }
 }

@@ -9,10 +9,12 @@
 //! counts as colliding. The answer does not depend on the order of the obstacles: every obstacle
 //! is tested until one is hit.
 
+mod motion;
 mod obstacles;
 mod tables;
 mod verdicts;
 
+pub use motion::{Motion, motion_wide};
 pub use obstacles::{BoxObstacle, CapsuleObstacle, CylinderObstacle, Environment, ObstacleError, SphereObstacle, Vec3};
 pub use tables::{CollisionTables, place_spheres};
 pub use verdicts::{CheckLanes, Flags, Flags32x8, Flags32x16, Flags64x4, Flags64x8, LaneMask, non_finite};

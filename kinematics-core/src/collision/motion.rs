@@ -1,0 +1,205 @@
+//! Straight motions in joint space, checked at a resolution: the configurations along the segment
+//! from `q0` to `q1`, so close that no joint moves more than the resolution between two checked
+//! ones, checked in lanes, several points of the segment at once, for the first that collides.
+//!
+//! The lanes take the segment in runs (lane `i` the `i`-th run of consecutive configurations, all
+//! lanes one step along their run at a time), so a collision anywhere is met within a few
+//! checks, VAMP's way; once one is met, only the configurations before it are still checked, and
+//! the answer is the first colliding one, as checking them one by one in order would give.
+
+use crate::error::KinematicsError;
+use crate::lanes::Lanes;
+use crate::real::Real;
+#[cfg(feature = "dispatch")]
+use core::marker::PhantomData;
+
+use super::verdicts::LaneMask;
+
+/// A straight motion from `q0` to `q1` checked at a resolution: configurations `k = 0..=steps`
+/// at fractions `k / steps`, `steps` the fewest that keep every joint's move between two checked
+/// configurations within the resolution (at least one: both ends are checked).
+///
+/// ```
+/// use kinematics_core::collision::Motion;
+/// let motion = Motion::new("demo", [0.0_f64, 1.0], [0.25, 0.0], 0.1)?;
+/// assert_eq!(motion.steps(), 10); // the second joint moves 1.0
+/// assert_eq!(motion.configuration(0), [0.0, 1.0]);
+/// assert_eq!(motion.configuration(10), [0.25, 0.0]);
+/// assert_eq!(motion.fraction(4), 0.4);
+/// assert!(Motion::new("demo", [0.0_f64], [1.0], 0.0).is_err());
+/// # Ok::<(), kinematics_core::KinematicsError>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Motion<S, const N: usize> {
+    q0: [S; N],
+    q1: [S; N],
+    steps: usize,
+}
+
+impl<S: Real + Into<f64>, const N: usize> Motion<S, N> {
+    /// The motion from `q0` to `q1` at `resolution` (radians or metres per joint, positive and
+    /// finite, else an error naming the robot). A NaN or infinite entry in `q0` or `q1` gives one
+    /// step (both ends checked, and a configuration that is not finite is colliding).
+    pub fn new(robot: &'static str, q0: [S; N], q1: [S; N], resolution: f64) -> Result<Self, KinematicsError> {
+        if !(resolution.is_finite() && resolution > 0.0) {
+            return Err(KinematicsError::BadResolution { robot, resolution });
+        }
+        let mut span = 0.0_f64;
+        for j in 0..N {
+            let step = (q1[j].into() - q0[j].into()).abs();
+            // A NaN step makes `span` NaN rather than being skipped (as `f64::max` would).
+            if step.is_nan() || step > span {
+                span = step;
+            }
+        }
+        let steps = libm::ceil(span / resolution);
+        // `as` saturates: a span beyond `usize::MAX` resolutions asks for what it asks for.
+        let steps = if steps.is_finite() { (steps as usize).max(1) } else { 1 };
+        Ok(Motion { q0, q1, steps })
+    }
+
+    /// How many steps the motion is checked in (`steps + 1` configurations).
+    pub fn steps(&self) -> usize {
+        self.steps
+    }
+
+    /// The fraction of the motion configuration `k` sits at: `k / steps`.
+    pub fn fraction(&self, k: usize) -> f64 {
+        k as f64 / self.steps as f64
+    }
+
+    /// Configuration `k` (`0..=steps`): `(1 - t) q0 + t q1` at `t = k / steps`, exactly `q0` and
+    /// `q1` at the ends.
+    #[inline(always)]
+    pub fn configuration(&self, k: usize) -> [S; N] {
+        let mut q = self.q0;
+        for (j, x) in q.iter_mut().enumerate() {
+            *x = self.joint(k, j);
+        }
+        q
+    }
+
+    #[inline(always)]
+    fn joint(&self, k: usize, j: usize) -> S {
+        // The ends as given: `0 * q1` is NaN where `q1` is infinite.
+        if k == 0 {
+            return self.q0[j];
+        }
+        if k >= self.steps {
+            return self.q1[j];
+        }
+        let t = S::from_f64(self.fraction(k));
+        (S::from_f64(1.0) - t) * self.q0[j] + t * self.q1[j]
+    }
+
+    /// The first colliding configuration's index (`None`: every one is free), `check` answering
+    /// for `L::LANES` configurations at a time.
+    #[inline(always)]
+    pub fn first_collision<L: Lanes<Scalar = S>>(&self, check: impl Fn(&[L; N]) -> LaneMask) -> Option<usize> {
+        let count = self.steps + 1;
+        // Lane `i` takes configurations `i * run..(i + 1) * run`, one per round.
+        let run = count.div_ceil(L::LANES);
+        let mut first = count;
+        for step in 0..run {
+            let index = |i: usize| i * run + step;
+            // Lanes past the end, or past a collision already found, are not asked.
+            let mut asked = 0u32;
+            for i in 0..L::LANES {
+                if index(i) < first {
+                    asked |= 1 << i;
+                }
+            }
+            if asked == 0 {
+                break;
+            }
+            let mut q = [L::from_fn(|_| self.q0[0]); N];
+            for (j, lanes) in q.iter_mut().enumerate() {
+                *lanes = L::from_fn(|i| self.joint(index(i).min(first - 1), j));
+            }
+            let hits = check(&q).bits() & asked;
+            if hits != 0 {
+                // Within a round the index grows with the lane: the lowest hit is the first.
+                first = index(hits.trailing_zeros() as usize);
+            }
+        }
+        (first < count).then_some(first)
+    }
+}
+
+/// [`Motion::first_collision`] in the lanes that fill the CPU's registers, as the batches choose
+/// them ([`crate::batch_wide`]): `wide` (`W`) where the CPU has AVX-512, `narrow` (`L`)
+/// elsewhere, each compiled for the instruction set it runs on. The first colliding
+/// configuration's fraction of the motion, or `None` when every one is free.
+///
+/// ```
+/// use kinematics_core::collision::{motion_wide, LaneMask, Motion};
+/// use kinematics_core::{F64x4, F64x8, Lanes};
+/// // A "robot" colliding wherever its one joint is beyond 0.62.
+/// fn beyond<L: Lanes<Scalar = f64>>(q: &[L; 1]) -> LaneMask {
+///     let mut bits = 0;
+///     for i in 0..L::LANES {
+///         bits |= u32::from(q[0].lane(i) > 0.62) << i;
+///     }
+///     LaneMask::from_bits(bits)
+/// }
+/// let motion = Motion::new("demo", [0.0], [1.0], 0.05)?;
+/// assert_eq!(motion_wide::<F64x4, F64x8, 1>(&motion, beyond, beyond), Some(0.65));
+/// # Ok::<(), kinematics_core::KinematicsError>(())
+/// ```
+#[inline(always)]
+pub fn motion_wide<L, W, const N: usize>(
+    motion: &Motion<L::Scalar, N>,
+    narrow: impl Fn(&[L; N]) -> LaneMask,
+    wide: impl Fn(&[W; N]) -> LaneMask,
+) -> Option<f64>
+where
+    L: Lanes,
+    W: Lanes<Scalar = L::Scalar>,
+    L::Scalar: Real + Into<f64>,
+{
+    #[cfg(all(feature = "dispatch", target_arch = "x86_64", not(target_feature = "avx512f")))]
+    let first = {
+        use pulp::Simd;
+        match pulp::Arch::new() {
+            pulp::Arch::V4(simd) => Simd::vectorize(simd, Search { motion, check: &wide, lanes: PhantomData }),
+            pulp::Arch::V3(simd) => Simd::vectorize(simd, Search { motion, check: &narrow, lanes: PhantomData }),
+            _ => motion.first_collision(narrow),
+        }
+    };
+    #[cfg(all(feature = "dispatch", not(target_arch = "x86_64"), not(target_feature = "avx512f")))]
+    let first = {
+        let _ = wide;
+        pulp::Arch::new().dispatch(Search { motion, check: &narrow, lanes: PhantomData })
+    };
+    // Without dispatch, or with a target that already has AVX-512, the lanes the build's own
+    // target fills.
+    #[cfg(any(not(feature = "dispatch"), target_feature = "avx512f"))]
+    let first = if cfg!(target_feature = "avx512f") {
+        let _ = narrow;
+        motion.first_collision(wide)
+    } else {
+        let _ = wide;
+        motion.first_collision(narrow)
+    };
+    first.map(|k| motion.fraction(k))
+}
+
+/// [`Motion::first_collision`] as pulp's operation (a closure's shim would not be inlined into
+/// pulp's `#[target_feature]` function; see the batches').
+#[cfg(feature = "dispatch")]
+struct Search<'a, S, const N: usize, L, F> {
+    motion: &'a Motion<S, N>,
+    check: &'a F,
+    lanes: PhantomData<fn() -> L>,
+}
+
+#[cfg(feature = "dispatch")]
+impl<S: Real + Into<f64>, const N: usize, L: Lanes<Scalar = S>, F: Fn(&[L; N]) -> LaneMask> pulp::WithSimd
+    for Search<'_, S, N, L, F>
+{
+    type Output = Option<usize>;
+    #[inline(always)]
+    fn with_simd<Q: pulp::Simd>(self, _: Q) -> Option<usize> {
+        self.motion.first_collision(self.check)
+    }
+}
