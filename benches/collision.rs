@@ -6,6 +6,8 @@
 //!   `scenes/`, each configuration with its own verdict (the fraction free printed), and on
 //!   all-free configurations (no early exit), one at a time and in batches (lanes);
 //! - `self_collides`, one at a time and in batches;
+//! - `motion_collides` (`f64` and `f32`) on motions between consecutive free configurations at
+//!   0.05 rad, per motion (the fraction colliding and the configurations a motion printed);
 //! - the baselines a user has without `collision`: our generated link poses plus a hand loop over
 //!   the spheres, and the same centres with parry3d-f64's intersection tests (the reference's
 //!   shapes).
@@ -38,6 +40,10 @@ struct Ur5;
 fn inputs<const N: usize>(limits: &[kinematics::JointLimits]) -> Vec<[f64; N]> {
     Configurations::within(limits).skip(5).take(1024).map(|q| q.try_into().unwrap()).collect()
 }
+
+/// The resolution motions are checked at (radians): the largest joint step between checked
+/// configurations.
+const RESOLUTION: f64 = 0.05;
 
 fn scene(name: &str) -> SceneObstacles {
     kinematics::load_scene(format!("{}/scenes/{name}.toml", env!("CARGO_MANIFEST_DIR"))).unwrap()
@@ -82,6 +88,9 @@ macro_rules! robot {
             let shapes = obstacles.reference();
             let free: Vec<[f64; $n]> = qs.iter().copied().filter(|q| !<$robot>::collides(q, &env)).collect();
             let free32: Vec<[f32; $n]> = free.iter().map(|q| q.map(|x| x as f32)).collect();
+            // Motions between free configurations, as a planner's edges: consecutive pairs.
+            let motions: Vec<([f64; $n], [f64; $n])> = free.chunks_exact(2).map(|m| (m[0], m[1])).collect();
+            let motions32: Vec<([f32; $n], [f32; $n])> = free32.chunks_exact(2).map(|m| (m[0], m[1])).collect();
             // The baselines: generated link poses, then the spheres by hand against the same
             // environment (`Environment::hits`) or against parry's shapes; self-collision
             // through `self_collides`, as a user without a check of their own would.
@@ -113,6 +122,15 @@ macro_rules! robot {
                     assert_eq!((*v, hand(q), parry(q)), (one, one, one), "{} in the {scene_name} scene", $name);
                 }
                 assert!(!free.is_empty() && free.len() < qs.len(), "{}: {} free of {}", $name, free.len(), qs.len());
+                // A motion's answer is a configuration that collides, or its ends are free.
+                for m in motions.iter().take(8) {
+                    match <$robot>::motion_collides(&m.0, &m.1, &env, RESOLUTION).unwrap() {
+                        Some(t) => {
+                            assert!(<$robot>::collides(&std::array::from_fn(|j| (1.0 - t) * m.0[j] + t * m.1[j]), &env))
+                        }
+                        None => assert!(!<$robot>::collides(&m.0, &env) && !<$robot>::collides(&m.1, &env)),
+                    }
+                }
                 continue;
             };
             println!("{}: {} of {} configurations free in the {scene_name} scene", $name, free.len(), qs.len());
@@ -157,6 +175,34 @@ macro_rules! robot {
             });
             group.bench_function("collides_all_free_batch_f32", |b| {
                 b.iter(|| <$robot>::collides_batch_f32(black_box(&free32), &env, &mut free_verdicts).unwrap())
+            });
+            let colliding = motions
+                .iter()
+                .filter(|m| <$robot>::motion_collides(&m.0, &m.1, &env, RESOLUTION).unwrap().is_some())
+                .count();
+            let checked: usize = motions
+                .iter()
+                .map(|m| kinematics::collision::Motion::new("bench", m.0, m.1, RESOLUTION).unwrap().steps() + 1)
+                .sum();
+            println!(
+                "{}: {colliding} of {} motions between free configurations collide in the {scene_name} scene \
+                 ({:.0} configurations a motion at {RESOLUTION} rad)",
+                $name,
+                motions.len(),
+                checked as f64 / motions.len() as f64
+            );
+            group.throughput(Throughput::Elements(1));
+            group.bench_function("motion_collides", |b| {
+                b.iter(|| {
+                    k = (k + 1) % motions.len();
+                    black_box(<$robot>::motion_collides(&motions[k].0, &motions[k].1, &env, RESOLUTION))
+                })
+            });
+            group.bench_function("motion_collides_f32", |b| {
+                b.iter(|| {
+                    k = (k + 1) % motions32.len();
+                    black_box(<$robot>::motion_collides_f32(&motions32[k].0, &motions32[k].1, &env, RESOLUTION))
+                })
             });
             group.finish();
         }
