@@ -34,6 +34,7 @@ mod error;
 pub mod exactness;
 mod frame;
 mod joint;
+pub mod mjcf;
 pub mod scene;
 mod source;
 pub mod srdf;
