@@ -123,7 +123,11 @@ pub(crate) fn z_axis(z: [f64; 3]) -> Option<Steps> {
     norm(z)?;
     let about = [-z[1], z[0], 0.0];
     if about == [0.0; 3] {
-        return Some(if z[2] > 0.0 { Vec::new() } else { vec![(Axis::X, Angle::Exact(crate::PiRational::new(1, 1)?))] });
+        return Some(if z[2] > 0.0 {
+            Vec::new()
+        } else {
+            vec![(Axis::X, Angle::Exact(crate::PiRational::new(1, 1)?))]
+        });
     }
     let angle = norm(about)?.atan2(z[2]);
     axis_angle(about, Angle::Radians(angle))
