@@ -164,6 +164,7 @@ fn write_random_robots(out: &Path) -> Result<(), Box<dyn std::error::Error>> {
             krate: "::kinematics".parse()?,
             source_label: robot.file.clone(),
             source_text: text_expr.parse()?,
+            source_files: None,
             impl_generics: "".parse()?,
             where_clause: "".parse()?,
         };

@@ -120,7 +120,9 @@ pub mod __private {
     pub use crate::__kinematics_with_std as with_std;
     pub use kinematics_core::*;
     #[cfg(feature = "std")]
-    pub use kinematics_model::{ExactAngles, LoadError, LoadErrorKind, parse_source_floating, parse_source_with};
+    pub use kinematics_model::{
+        ExactAngles, LoadError, LoadErrorKind, parse_source_files, parse_source_floating, parse_source_with,
+    };
     #[cfg(feature = "std")]
     pub use kinematics_runtime::{ReferenceFk, ReferenceModel};
 }

@@ -19,6 +19,7 @@ use crate::write::write_atomic;
 /// | derive key | builder |
 /// |---|---|
 /// | `urdf = "path"` | [`Robot::urdf`] |
+/// | `mjcf = "path"` | [`Robot::mjcf`] |
 /// | `dh = "path"` | [`Robot::dh`] |
 /// | `base = "link"` | [`Robot::base`] |
 /// | `tip = "link"` / `tips(..)` | [`Robot::tip`] (once per tip) / [`Robot::tips`] |
@@ -69,13 +70,19 @@ impl Robot {
         Self::new(path.into(), SourceKind::Urdf)
     }
 
+    /// An MJCF file (MuJoCo's XML), whatever its extension; the files it names (`<include>`,
+    /// `<model file>`) are read relative to its directory and embedded in the generated code.
+    pub fn mjcf(path: impl Into<PathBuf>) -> Self {
+        Self::new(path.into(), SourceKind::Mjcf)
+    }
+
     /// A DH table: JSON if the name ends in `.json`, TOML otherwise.
     pub fn dh(path: impl Into<PathBuf>) -> Self {
         Self::new(path.into(), SourceKind::Dh)
     }
 
-    /// A description whose format the extension names (`.urdf`/`.xml`, `.toml`, `.json`); any
-    /// other extension is an error when generating.
+    /// A description whose format the extension names (`.urdf`, `.xml` (URDF or MJCF by its
+    /// root element), `.mjcf`, `.toml`, `.json`); any other extension is an error when generating.
     pub fn file(path: impl Into<PathBuf>) -> Self {
         Self::new(path.into(), SourceKind::ByExtension)
     }

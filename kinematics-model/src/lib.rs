@@ -56,7 +56,9 @@ pub use error::{Element, LoadError, LoadErrorKind, ModelError, ModelErrors, Seve
 pub use exactness::{ExactAngles, RecognisedAngle};
 pub use frame::JacobianFrame;
 pub use joint::{Joint, JointKind, JointMotion, Limits, Link};
-pub use source::{Source, SourceFormat, SourceKind, parse_source, parse_source_floating, parse_source_with};
+pub use source::{
+    Source, SourceFormat, SourceKind, parse_source, parse_source_files, parse_source_floating, parse_source_with,
+};
 pub use suggest::closest;
 pub use transform::{Axis, Elementary, FixedTransform};
 pub use tree::{Chain, JointId, KinematicTree, LinkId};

@@ -263,6 +263,22 @@ pub fn parse_source_floating(
         .load_with_floating_base(exact_angles, Some(floating_base))
 }
 
+/// [`parse_source_with`] (or [`parse_source_floating`] when `floating_base` names a root) for a
+/// description that names other files (an MJCF `<include>` or `<model file>`): `files` holds
+/// each as (path as written, text), as generated `reference()` functions embed them.
+pub fn parse_source_files(
+    file: &str,
+    text: &str,
+    files: &[(&str, &str)],
+    exact_angles: ExactAngles,
+    floating_base: Option<&str>,
+) -> Result<KinematicTree, LoadError> {
+    let read = |path: &str| {
+        files.iter().find(|(p, _)| *p == path).map(|(_, t)| (*t).to_owned()).ok_or_else(|| "not embedded".to_owned())
+    };
+    Source::from_file_name(file, SourceKind::ByExtension, text)?.load_reading(exact_angles, floating_base, &read)
+}
+
 /// [`parse_source`] with the exactness policy `exact_angles`.
 pub fn parse_source_with(file: &str, text: &str, exact_angles: ExactAngles) -> Result<KinematicTree, LoadError> {
     Source::from_file_name(file, SourceKind::ByExtension, text)?.load(exact_angles)
