@@ -514,7 +514,7 @@ mod tests {
             &Robot::file("arm.xacro").manifest_dir(&dir),
             |e| matches!(e, BuildError::Load(l) if matches!(l.kind, LoadErrorKind::UnknownFormat)),
         );
-        assert_eq!(message, "arm.xacro: unknown description format (expected .urdf, .xml, .toml or .json)");
+        assert_eq!(message, "arm.xacro: unknown description format (expected .urdf, .xml, .mjcf, .toml or .json)");
         // Named as URDF explicitly, the same file is fine.
         assert!(Robot::urdf("arm.xacro").manifest_dir(&dir).generate().is_ok());
     }
