@@ -640,4 +640,19 @@ mod tests {
         assert!(source.contains("pub struct Pendulum;"), "{source}");
         assert!(source.contains("\"pendulum.table.toml\""), "{source}");
     }
+
+    #[test]
+    fn an_mjcf_file_and_the_files_it_includes_are_embedded() {
+        let main = r#"<mujoco model="arm"><include file="parts.xml"/>
+            <worldbody><body name="link1"><joint name="j"/><site name="tcp" pos="0 0 1"/></body></worldbody></mujoco>"#;
+        let parts = r#"<mujoco><default><joint axis="0 1 0" range="-90 90"/></default></mujoco>"#;
+        let dir = fixture("mjcf", &[("arm.model", main), ("parts.xml", parts)]);
+        let source = Robot::mjcf("arm.model").manifest_dir(&dir).tip("tcp").generate().unwrap();
+        // `reference()` reads the main text and the included one from the generated file.
+        assert!(source.contains("parse_source_files("), "{source}");
+        assert!(source.contains("\"parts.xml\""), "{source}");
+        assert!(source.contains(r#"<joint axis="0 1 0" range="-90 90"/>"#), "{source}");
+        // By extension a `.model` file is no description; `Robot::file` refuses it.
+        assert!(Robot::file("arm.model").manifest_dir(&dir).generate().is_err());
+    }
 }

@@ -1,7 +1,7 @@
 //! Robot descriptions and the validated kinematic tree.
 //!
-//! This crate owns the first two stages of the pipeline: *description* (reading a URDF document or a
-//! Denavit-Hartenberg table from text into a [`Description`]) and *model* (checking that description
+//! This crate owns the first two stages of the pipeline: *description* (reading a URDF document, an
+//! MJCF document or a Denavit-Hartenberg table from text into a [`Description`]) and *model* (checking that description
 //! against every rule and building a [`KinematicTree`] that is valid by construction: one root, no
 //! cycles, unit axes, finite numbers, mimic joints resolved to their independent source). It does no
 //! file IO and no numeric transform math: the runtime reference (`kinematics-runtime`) and the

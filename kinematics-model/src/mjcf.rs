@@ -607,7 +607,7 @@ impl<'d, 't> Reader<'d, 't> {
             Some(t) => t.word("type", &element, &["hinge", "slide", "ball", "free"])?,
         };
         let here = |message: String| place.error(node, element.clone(), message);
-        if !free_element && node.attribute("name").is_none() {
+        if kind != "free" && node.attribute("name").is_none() {
             return Err(here("a <joint> needs a `name` (it names a degree of freedom)".to_owned()));
         }
         let mut description = JointDescription {
