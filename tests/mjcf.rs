@@ -1,5 +1,6 @@
 //! MJCF (issue 33): the reader against hand-worked poses, the walker against its URDF twin, the
 //! MJCF UR5 against the URDF one, includes and attachments, and errors naming element and line.
+#![allow(clippy::panic, clippy::unwrap_used, clippy::expect_used)] // test helpers fail loudly
 
 use std::f64::consts::FRAC_PI_2;
 

@@ -127,8 +127,8 @@ fn number(x: f64) -> String {
     match x {
         f64::INFINITY => "inf".to_owned(),
         f64::NEG_INFINITY => "-inf".to_owned(),
-        // -0 reads back as 0 for every use here.
-        x if x == 0.0 => "0".to_owned(),
+        // -0 too (the pattern compares as `==` does): it reads back as 0 for every use here.
+        0.0 => "0".to_owned(),
         x => format!("{x}"),
     }
 }

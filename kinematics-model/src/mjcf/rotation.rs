@@ -214,6 +214,7 @@ mod tests {
     }
 
     #[test]
+    #[allow(clippy::approx_constant)] // 0.7071068 is what MJCF files write for cos 45, on purpose
     fn quaternions_are_normalised_and_single_axis_ones_give_one_rotation() {
         // (cos 45, 0, 0, sin 45) to 7 digits: 2 atan2(s, c) with s = c is pi/2 to the last bit.
         assert_eq!(quaternion([0.7071068, 0.0, 0.0, 0.7071068]), Some(vec![(Axis::Z, Angle::Radians(FRAC_PI_2))]));
