@@ -436,3 +436,34 @@ fn xml_files_are_urdf_or_mjcf_by_their_root_element_and_explicit_kinds_are_obeye
         "r.xml: line 1: the root element is <robot>, not <mujoco>"
     );
 }
+
+/// The UR5 as MJCF derives like the URDF one, its site `tool0` the tip of every function, the
+/// closed-form inverse kinematics included.
+#[derive(kinematics::Kinematics)]
+#[kinematics(mjcf = "robots/ur5_mjcf.xml", base = "base_link", tip = "tool0", jacobians, ik)]
+struct Ur5Mjcf;
+
+#[derive(kinematics::Kinematics)]
+#[kinematics(urdf = "robots/ur5.urdf", base = "base_link", tip = "tool0", jacobians, ik)]
+struct Ur5Urdf;
+
+#[test]
+fn a_site_is_the_tip_of_every_function_inverse_kinematics_included() {
+    let q = [0.3, -1.2, 1.0, 0.4, -0.7, 2.0];
+    let (pose, urdf) = (Ur5Mjcf::tip_pose(&q), Ur5Urdf::tip_pose(&q));
+    for i in 0..3 {
+        assert!((pose.translation[i] - urdf.translation[i]).abs() < 1e-14);
+        for j in 0..3 {
+            assert!((pose.rotation[i][j] - urdf.rotation[i][j]).abs() < 1e-14);
+        }
+    }
+    let reference = Ur5Mjcf::reference().unwrap().relative_pose(&q, "base_link", "tool0").unwrap();
+    assert!((pose.to_isometry().to_homogeneous() - reference.to_homogeneous()).abs().max() < 1e-14);
+    let jacobian = Ur5Mjcf::tip_jacobian(&q);
+    assert!(
+        jacobian.iter().flatten().zip(Ur5Urdf::tip_jacobian(&q).iter().flatten()).all(|(a, b)| (a - b).abs() < 1e-14)
+    );
+    let solutions = Ur5Mjcf::tip_ik(&pose).unwrap();
+    assert_eq!(solutions.exact().count(), 8);
+    assert!(solutions.exact().any(|s| s.q.iter().zip(&q).all(|(a, b)| (a - b).abs() < 1e-9)));
+}

@@ -4,7 +4,8 @@
 //! MJCF document or a Denavit-Hartenberg table from text into a [`Description`]) and *model* (checking that description
 //! against every rule and building a [`KinematicTree`] that is valid by construction: one root, no
 //! cycles, unit axes, finite numbers, mimic joints resolved to their independent source). It does no
-//! file IO and no numeric transform math: the runtime reference (`kinematics-runtime`) and the
+//! file IO (an MJCF file's includes come through the caller's [`mjcf::ReadFile`]) and no numeric
+//! transform math beyond writing MJCF's orientations as elementary rotations: the runtime reference (`kinematics-runtime`) and the
 //! compiler both start from the tree built here, and neither shares the other's math.
 //!
 //! ```

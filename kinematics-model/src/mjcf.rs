@@ -27,7 +27,7 @@
 //!   both named as the site or frame, so they can be tips; a frame's transform applies to
 //!   everything inside it. Unnamed sites are skipped (nothing could name them as a tip).
 //! - Orientation: `quat`, `axisangle`, `euler` (with `<compiler eulerseq>`), `xyaxes`, `zaxis`,
-//!   and a site's `fromto`, mapped onto elementary rotations as [`rotation`] says. Angles are
+//!   and a site's `fromto`, mapped onto elementary rotations as the `rotation` module says. Angles are
 //!   degrees unless `<compiler angle="radian">`; whole degrees are exact multiples of pi.
 //! - `<default>` classes (nested, `class` and `childclass`) give joints, sites and equality
 //!   constraints their attributes, as MuJoCo's Modeling chapter, "Default settings", describes.
@@ -956,7 +956,7 @@ fn site_pose(
     Ok(steps.into_iter().fold(FixedTransform::identity().translate(mid), |t, (axis, a)| t.rotate(axis, a)))
 }
 
-/// The one orientation form written, as elementary rotations ([`rotation`]).
+/// The one orientation form written, as elementary rotations (the `rotation` module).
 fn orientation(
     model: &Model,
     attributes: &BTreeMap<String, Written>,
