@@ -467,3 +467,51 @@ fn a_site_is_the_tip_of_every_function_inverse_kinematics_included() {
     assert_eq!(solutions.exact().count(), 8);
     assert!(solutions.exact().any(|s| s.q.iter().zip(&q).all(|(a, b)| (a - b).abs() < 1e-9)));
 }
+
+/// mjcf-rs (dimforge's MJCF reader, which folds frames and orientation forms into each body's
+/// pose by code of its own) as a second witness: every body's and named site's frame in its
+/// parent body's, at `q = 0`, equal to ours by the runtime reference.
+#[test]
+fn mjcf_rs_reads_the_same_body_and_site_frames() {
+    use nalgebra::{Isometry3, Quaternion, Translation3, UnitQuaternion};
+    let iso = |p: &mjcf_rs::Pose| {
+        let (r, t) = (p.rotation, p.translation);
+        let rotation = UnitQuaternion::from_quaternion(Quaternion::new(r.w, r.x, r.y, r.z));
+        Isometry3::from_parts(Translation3::new(t.x, t.y, t.z), rotation)
+    };
+    for file in ["ur5_mjcf.xml", "walker.xml"] {
+        let model = mjcf_rs::Model::from_file(robot(file)).unwrap();
+        let tree = kinematics::load(robot(file)).unwrap();
+        let fk = ReferenceFk::new(tree.clone());
+        let mut q = vec![0.0; tree.dof()];
+        for j in tree.floating_joints() {
+            if let kinematics::model::JointMotion::Dof(start) = tree.joint(j).motion {
+                q[start + 6] = 1.0; // the identity quaternion: a free body's pose is q's, not the file's
+            }
+        }
+        let name = |i: usize| model.bodies[i].body.name.clone().unwrap_or_else(|| "world".to_owned());
+        let mut compared = 0;
+        for (i, entry) in model.bodies.iter().enumerate() {
+            let body = name(i);
+            let free = entry.body.joints.iter().any(|j| j.type_ == mjcf_rs::body::JointType::Free);
+            if let Some(parent) = entry.parent
+                && !free
+            {
+                let ours = fk.relative_pose(&q, &name(parent), &body).unwrap();
+                let theirs = iso(&entry.body.pose);
+                assert!((ours.to_homogeneous() - theirs.to_homogeneous()).abs().max() < 1e-12, "{file}: body {body}");
+                compared += 1;
+            }
+            for site in &entry.body.sites {
+                let Some(site_name) = &site.name else { continue };
+                let ours = fk.relative_pose(&q, &body, site_name).unwrap();
+                assert!(
+                    (ours.to_homogeneous() - iso(&site.pose).to_homogeneous()).abs().max() < 1e-12,
+                    "{file}: {site_name}"
+                );
+                compared += 1;
+            }
+        }
+        assert!(compared >= 10, "{file}: {compared}");
+    }
+}
