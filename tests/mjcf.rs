@@ -332,7 +332,8 @@ fn includes_and_attached_models_are_read_relative_to_the_main_file() {
             (
                 "gripper.xml",
                 r#"<mujoco><compiler angle="radian"/><default><joint axis="1 0 0" range="-2 2"/></default>
-                   <worldbody><body name="palm" pos="0 0 1"><joint name="roll"/></body></worldbody></mujoco>"#,
+                   <worldbody><body name="palm" pos="0 0 1"><joint name="roll"/></body></worldbody>
+                   <equality><weld body1="palm"/></equality></mujoco>"#,
             ),
         ],
     );
@@ -344,6 +345,10 @@ fn includes_and_attached_models_are_read_relative_to_the_main_file() {
     assert_eq!((roll.axis, roll.limits.map(|l| l.upper)), ([1.0, 0.0, 0.0], Some(2.0)));
     assert_pose(&tree, &[0.0, 0.0], "tcp", I, [0.0, 0.0, 0.5]);
     assert_pose(&tree, &[0.0, 0.0], "g_palm", I, [0.0, 0.0, 1.0]);
+    assert_eq!(
+        tree.ignored(),
+        ["<equality> (line 3 of `gripper.xml`, attached as `gripper`): an attached model's constraints are not read"]
+    );
     // Without a file reader an include is refused, naming its line.
     let text = std::fs::read_to_string(dir.join("main.xml")).unwrap();
     let error = load(&text).unwrap_err();

@@ -35,7 +35,8 @@
 //!   [`ReadFile`]; paths as written, for the caller to resolve relative to the main file's
 //!   directory, as MuJoCo does); `<attach model body prefix>` attaches body `body` of the
 //!   `<asset><model file>` named `model`, with every name prefixed and that file's own compiler
-//!   settings and classes.
+//!   settings and classes (its `<equality>` constraints are listed in [`Description::ignored`],
+//!   not read).
 //! - `<equality><joint joint1 joint2 polycoef>` with a linear polynomial makes `joint1` a mimic of
 //!   `joint2`: MuJoCo's constraint `y - y0 = a0 + a1 (x - x0)` (y0, x0 the joints' `ref`) is
 //!   `multiplier = a1`, `offset = a0 + y0 - a1 x0`. Every other equality (connect, weld, tendon,
@@ -765,7 +766,14 @@ impl<'d, 't> Reader<'d, 't> {
             return Err(place.error(node, None, format!("no <asset><model name=\"{asset}\" file=...> to attach")));
         };
         let attached = self.settings(&file, prefix)?;
-        for (p, top) in self.top_level(&file, &mut Vec::new())? {
+        let top_level = self.top_level(&file, &mut Vec::new())?;
+        for (p, equality) in top_level.iter().filter(|(_, n)| n.tag_name().name() == "equality") {
+            let line = p.line(equality.range().start);
+            self.description.ignored.push(format!(
+                "<equality> (line {line} of `{file}`, attached as `{asset}`): an attached model's constraints are not read"
+            ));
+        }
+        for (p, top) in top_level {
             if top.tag_name().name() != "worldbody" {
                 continue;
             }
