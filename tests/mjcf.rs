@@ -300,6 +300,13 @@ fn defaults_classes_and_childclass() {
     assert_eq!((j("j1").axis, j("j1").kind), ([1.0, 0.0, 0.0], JointKind::Revolute));
     assert_eq!((j("j2").axis, j("j2").kind), ([0.0, 1.0, 0.0], JointKind::Revolute));
     assert_eq!((j("j3").axis, j("j3").kind), ([1.0, 0.0, 0.0], JointKind::Continuous));
+    // Two top-level <default>s both fill class `main`.
+    let tree = mjcf(
+        r#"<mujoco><default><joint axis="1 0 0"/></default><default><joint range="-1 1"/></default>
+             <worldbody><body name="a"><joint name="j"/></body></worldbody></mujoco>"#,
+    );
+    let j = tree.joint_by_name("j").unwrap();
+    assert_eq!((j.axis, j.kind), ([1.0, 0.0, 0.0], JointKind::Revolute));
 }
 
 /// A directory of its own under the system's temporary one, for files that include others.
@@ -410,6 +417,10 @@ fn errors_name_the_element_and_the_line() {
     check(
         r#"<body name="b"><joint name="j" class="arm"/></body>"#,
         "t.xml: joint `j` (line 3): default class `arm` does not exist",
+    );
+    assert_eq!(
+        load("<mujoco/>\n<mujoco/>").unwrap_err(),
+        "t.xml: line 2: a second root element: an MJCF file holds one <mujoco>"
     );
     let bad_sequence = "<mujoco>\n  <compiler eulerseq=\"xyw\"/>\n</mujoco>";
     assert_eq!(load(bad_sequence).unwrap_err(), "t.xml: line 2: `eulerseq=\"xyw\"`: only x, y, z, X, Y, Z name axes");

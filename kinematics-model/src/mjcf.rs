@@ -88,10 +88,11 @@ pub fn parse_mjcf_with(text: &str, read: ReadFile<'_>) -> Result<Description, Lo
     let mut docs = BTreeMap::new();
     for (file, text) in &texts {
         let options = roxmltree::ParsingOptions { allow_dtd: true, ..roxmltree::ParsingOptions::default() };
-        let doc = Document::parse_with_options(text, options).map_err(|e| in_file(file, xml_error(text, &e)))?;
+        let doc = Document::parse_with_options(text, options).map_err(|e| in_file(file, mjcf_xml_error(text, &e)))?;
         docs.insert(file.clone(), doc);
     }
-    let main = &docs[MAIN];
+    #[allow(clippy::expect_used, reason = "invariant: `gather` starts from the main text")]
+    let main = docs.get(MAIN).expect("invariant: the main file is among the documents");
     let root = main.root_element();
     let place = Place { file: MAIN, doc: main };
     if root.tag_name().name() != "mujoco" {
@@ -123,9 +124,10 @@ fn gather(text: &str, read: ReadFile<'_>) -> Result<BTreeMap<String, String>, Lo
     let mut texts = BTreeMap::from([(MAIN.to_owned(), text.to_owned())]);
     let mut pending = vec![MAIN.to_owned()];
     while let Some(file) = pending.pop() {
-        let text = &texts[&file];
+        #[allow(clippy::expect_used, reason = "invariant: a file is pending once its text is in `texts`")]
+        let text = texts.get(&file).expect("invariant: a pending file was read");
         let options = roxmltree::ParsingOptions { allow_dtd: true, ..roxmltree::ParsingOptions::default() };
-        let doc = Document::parse_with_options(text, options).map_err(|e| in_file(&file, xml_error(text, &e)))?;
+        let doc = Document::parse_with_options(text, options).map_err(|e| in_file(&file, mjcf_xml_error(text, &e)))?;
         let place = Place { file: &file, doc: &doc };
         let mut found = Vec::new();
         for node in doc.descendants().filter(|n| n.is_element()) {
@@ -151,6 +153,16 @@ fn gather(text: &str, read: ReadFile<'_>) -> Result<BTreeMap<String, String>, Lo
         }
     }
     Ok(texts)
+}
+
+/// Malformed XML, as the URDF reader words it, a second root element named as MJCF's.
+fn mjcf_xml_error(text: &str, error: &roxmltree::Error) -> LoadErrorKind {
+    match xml_error(text, error) {
+        LoadErrorKind::Syntax { line, message } if message.starts_with("a second root element") => {
+            LoadErrorKind::Syntax { line, message: "a second root element: an MJCF file holds one <mujoco>".to_owned() }
+        }
+        other => other,
+    }
 }
 
 /// An error in file `file` (the main one or one it names).
@@ -391,7 +403,12 @@ impl<'d, 't> Reader<'d, 't> {
         if model.classes.contains_key(&name) && !(name == "main" && parent.is_none()) {
             return Err(place.error(node, None, format!("default class `{name}` is defined more than once")));
         }
-        let mut class = Class { parent: parent.map(str::to_owned), prototypes: BTreeMap::new() };
+        // A second top-level <default> adds to class `main` (a prototype written again replaces
+        // the earlier one's attributes it repeats).
+        let mut class = match model.classes.remove(&name) {
+            Some(main) => main,
+            None => Class { parent: parent.map(str::to_owned), prototypes: BTreeMap::new() },
+        };
         for (place, child) in self.expand(place, node, &mut Vec::new())? {
             let tag = child.tag_name().name();
             if tag == "default" {
@@ -407,7 +424,7 @@ impl<'d, 't> Reader<'d, 't> {
                 }
                 attributes.insert(a.name().to_owned(), place.written(child, a.name(), a.value()));
             }
-            class.prototypes.insert(tag, attributes);
+            class.prototypes.entry(tag).or_default().extend(attributes);
         }
         model.classes.insert(name.clone(), class);
         for (place, child) in self.expand(place, node, &mut Vec::new())? {
