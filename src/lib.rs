@@ -1,4 +1,4 @@
-//! Forward kinematics for robots, from a URDF file or a Denavit-Hartenberg table, compiled to
+//! Forward kinematics for robots, from a URDF file, an MJCF file or a Denavit-Hartenberg table, compiled to
 //! closed-form Rust.
 //!
 //! Most users meet it as a derive:
