@@ -410,6 +410,11 @@ fn errors_name_the_element_and_the_line() {
         "t.xml: body `b` (line 3): more than one orientation (`quat` and `euler`): write one",
     );
     check(r#"<body name="b" colour="red"/>"#, "t.xml: body `b` (line 3): <body>: unknown attribute `colour`");
+    check(r#"<body name="b"><jiont name="j"/></body>"#, "t.xml: line 3: unknown element <jiont> in <body>");
+    assert_eq!(
+        load("<mujoco>\n<worldbdy/>\n</mujoco>").unwrap_err(),
+        "t.xml: line 2: unknown element <worldbdy> in <mujoco>"
+    );
     check(
         r#"<body name="a"><body name="b"><freejoint/></body></body>"#,
         "t.xml: joint `root_joint` (line 3): a free joint must be the only joint of a body whose parent is the world body",

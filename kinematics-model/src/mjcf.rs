@@ -43,7 +43,8 @@
 //!   a joint polynomial of higher degree, an inactive one, one without `joint2`) is listed in
 //!   [`Description::ignored`] and not applied.
 //! - Geometry, inertia, actuators, sensors, tendons, contacts, keyframes, cameras and lights are
-//!   not kinematics and are ignored. On the elements read (`body`, `joint`, `freejoint`, `site`,
+//!   not kinematics and are ignored; an element MuJoCo does not define, in `<mujoco>` or among a
+//!   body's, frame's or the world body's children, is refused. On the elements read (`body`, `joint`, `freejoint`, `site`,
 //!   `frame`, `compiler`, `equality/joint`), every attribute is either used, or one of MuJoCo's
 //!   that has no kinematic effect (damping, `rgba`, ...), or refused naming the element and line.
 //!
@@ -102,6 +103,7 @@ pub fn parse_mjcf_with(text: &str, read: ReadFile<'_>) -> Result<Description, Lo
     reader.description.name = root.attribute("model").unwrap_or("MuJoCo Model").to_owned();
     reader.description.links.push(WORLD.to_owned());
     let model = reader.settings(MAIN, String::new())?;
+    reader.check_sections(MAIN)?;
     for (place, node) in reader.top_level(MAIN, &mut Vec::new())? {
         if node.tag_name().name() == "worldbody" {
             reader.children(&model, place, node, WORLD, &FixedTransform::identity(), None, true)?;
@@ -368,6 +370,38 @@ impl<'d, 't> Reader<'d, 't> {
         self.expand(place, place.doc.root_element(), stack)
     }
 
+    /// Refuses an element of `<mujoco>` that MuJoCo's XML reference does not define (a misspelt
+    /// `<worldbdy>` is an error, not a robot without bodies); the sections that hold no
+    /// kinematics are ignored.
+    fn check_sections(&self, file: &str) -> Result<(), LoadErrorKind> {
+        const SECTIONS: [&str; 17] = [
+            "compiler",
+            "option",
+            "size",
+            "visual",
+            "statistic",
+            "default",
+            "extension",
+            "custom",
+            "asset",
+            "worldbody",
+            "contact",
+            "deformable",
+            "equality",
+            "tendon",
+            "actuator",
+            "sensor",
+            "keyframe",
+        ];
+        for (place, node) in self.top_level(file, &mut Vec::new())? {
+            let tag = node.tag_name().name();
+            if !SECTIONS.contains(&tag) {
+                return Err(place.error(node, None, format!("unknown element <{tag}> in <mujoco>")));
+            }
+        }
+        Ok(())
+    }
+
     /// The compiler settings and default classes of model file `file`.
     fn settings(&self, file: &str, prefix: String) -> Result<Model, LoadErrorKind> {
         let mut model = Model { compiler: Compiler::default(), classes: BTreeMap::new(), prefix };
@@ -531,7 +565,11 @@ impl<'d, 't> Reader<'d, 't> {
                     return Err(place.error(child, None, message));
                 }
                 // Joints are the body's; geometry, inertia, cameras, lights and plugins are not kinematics.
-                _ => {}
+                "joint" | "freejoint" | "geom" | "inertial" | "camera" | "light" | "plugin" => {}
+                other => {
+                    let message = format!("unknown element <{other}> in <{}>", node.tag_name().name());
+                    return Err(place.error(child, None, message));
+                }
             }
         }
         Ok(())
@@ -783,6 +821,7 @@ impl<'d, 't> Reader<'d, 't> {
             return Err(place.error(node, None, format!("no <asset><model name=\"{asset}\" file=...> to attach")));
         };
         let attached = self.settings(&file, prefix)?;
+        self.check_sections(&file)?;
         let top_level = self.top_level(&file, &mut Vec::new())?;
         for (p, equality) in top_level.iter().filter(|(_, n)| n.tag_name().name() == "equality") {
             let line = p.line(equality.range().start);
