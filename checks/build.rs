@@ -65,7 +65,13 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                  jacobian_by_duals: |q, d| dual::jacobian::<{n}, {nv}>({module}::{pose_fn}::<dual::Dual<{nv}>>, q, d) }},"
             )?;
         }
-        let key = if file.ends_with(".urdf") { "urdf" } else { "dh" };
+        let text = std::fs::read_to_string(&path)?;
+        let key = match kinematics_model::SourceFormat::detect(&file, kinematics_model::SourceKind::ByExtension, &text)
+        {
+            Some(kinematics_model::SourceFormat::Urdf) => "urdf",
+            Some(kinematics_model::SourceFormat::Mjcf) => "mjcf",
+            _ => "dh",
+        };
         let leaf_list = leaves.iter().map(|l| format!("{l:?}")).collect::<Vec<_>>().join(", ");
         let mut sources = vec![(format!("{key} = \"../robots/{file}\""), "file")];
         if key == "dh" && file.ends_with(".toml") {
@@ -164,6 +170,7 @@ fn write_random_robots(out: &Path) -> Result<(), Box<dyn std::error::Error>> {
             krate: "::kinematics".parse()?,
             source_label: robot.file.clone(),
             source_text: text_expr.parse()?,
+            source_files: None,
             impl_generics: "".parse()?,
             where_clause: "".parse()?,
         };

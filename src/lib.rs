@@ -1,4 +1,4 @@
-//! Forward kinematics for robots, from a URDF file or a Denavit-Hartenberg table, compiled to
+//! Forward kinematics for robots, from a URDF file, an MJCF file or a Denavit-Hartenberg table, compiled to
 //! closed-form Rust.
 //!
 //! Most users meet it as a derive:
@@ -120,7 +120,9 @@ pub mod __private {
     pub use crate::__kinematics_with_std as with_std;
     pub use kinematics_core::*;
     #[cfg(feature = "std")]
-    pub use kinematics_model::{ExactAngles, LoadError, LoadErrorKind, parse_source_floating, parse_source_with};
+    pub use kinematics_model::{
+        ExactAngles, LoadError, LoadErrorKind, parse_source_files, parse_source_floating, parse_source_with,
+    };
     #[cfg(feature = "std")]
     pub use kinematics_runtime::{ReferenceFk, ReferenceModel};
 }
@@ -182,7 +184,9 @@ pub fn read_scene(path: impl AsRef<std::path::Path>) -> Result<model::scene::Sce
 
 #[cfg(feature = "std")]
 #[cfg_attr(docsrs, doc(cfg(feature = "std")))]
-/// Reads and validates a robot description file: `.urdf`/`.xml` (URDF), `.toml` or `.json` (DH table).
+/// Reads and validates a robot description file: `.urdf` (URDF), `.xml` (URDF or MJCF, as its root
+/// element says), `.mjcf`, `.toml` or `.json` (DH table). The files an MJCF file names (`<include>`,
+/// `<model file>`) are read relative to its directory.
 ///
 /// Errors name the file as given, the element (joint, link, DH row) and the fault. Decimal angles
 /// are read by the default exactness policy ([`ExactAngles::default`]); [`load_with`] takes
@@ -209,7 +213,11 @@ pub fn load_with(path: impl AsRef<std::path::Path>, exact_angles: ExactAngles) -
     let path = path.as_ref();
     let label = path.display().to_string();
     let bytes = std::fs::read(path).map_err(|e| LoadError::new(label.clone(), LoadErrorKind::Io(e)))?;
-    kinematics_model::Source::from_bytes(label, kinematics_model::SourceKind::ByExtension, bytes)?.load(exact_angles)
+    let source = kinematics_model::Source::from_bytes(label, kinematics_model::SourceKind::ByExtension, bytes)?;
+    // MJCF's `<include>` and `<model file>` paths are relative to the main file's directory.
+    let dir = path.parent().map(std::path::Path::to_path_buf).unwrap_or_default();
+    let read = move |file: &str| std::fs::read_to_string(dir.join(file)).map_err(|e| e.to_string());
+    source.load_reading(exact_angles, None, &read)
 }
 
 /// The validated tree of a robot urdf-rs has read (`urdf_rs::read_file`, or the robot `k` and

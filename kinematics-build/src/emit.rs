@@ -41,6 +41,10 @@ pub(crate) fn emit_source(emit: &Emit<'_>) -> Result<String, BuildError> {
         krate: quote!(#krate),
         source_label: loaded.reference_label.clone(),
         source_text: quote!(#text),
+        source_files: (!loaded.files.is_empty()).then(|| {
+            let (paths, texts): (Vec<_>, Vec<_>) = loaded.files.iter().map(|(p, t)| (p, text_literal(t))).unzip();
+            quote!(&[#((#paths, #texts)),*])
+        }),
         impl_generics: TokenStream::new(),
         where_clause: TokenStream::new(),
     };

@@ -19,6 +19,7 @@ use crate::write::write_atomic;
 /// | derive key | builder |
 /// |---|---|
 /// | `urdf = "path"` | [`Robot::urdf`] |
+/// | `mjcf = "path"` | [`Robot::mjcf`] |
 /// | `dh = "path"` | [`Robot::dh`] |
 /// | `base = "link"` | [`Robot::base`] |
 /// | `tip = "link"` / `tips(..)` | [`Robot::tip`] (once per tip) / [`Robot::tips`] |
@@ -69,13 +70,19 @@ impl Robot {
         Self::new(path.into(), SourceKind::Urdf)
     }
 
+    /// An MJCF file (MuJoCo's XML), whatever its extension; the files it names (`<include>`,
+    /// `<model file>`) are read relative to its directory and embedded in the generated code.
+    pub fn mjcf(path: impl Into<PathBuf>) -> Self {
+        Self::new(path.into(), SourceKind::Mjcf)
+    }
+
     /// A DH table: JSON if the name ends in `.json`, TOML otherwise.
     pub fn dh(path: impl Into<PathBuf>) -> Self {
         Self::new(path.into(), SourceKind::Dh)
     }
 
-    /// A description whose format the extension names (`.urdf`/`.xml`, `.toml`, `.json`); any
-    /// other extension is an error when generating.
+    /// A description whose format the extension names (`.urdf`, `.xml` (URDF or MJCF by its
+    /// root element), `.mjcf`, `.toml`, `.json`); any other extension is an error when generating.
     pub fn file(path: impl Into<PathBuf>) -> Self {
         Self::new(path.into(), SourceKind::ByExtension)
     }
@@ -507,7 +514,7 @@ mod tests {
             &Robot::file("arm.xacro").manifest_dir(&dir),
             |e| matches!(e, BuildError::Load(l) if matches!(l.kind, LoadErrorKind::UnknownFormat)),
         );
-        assert_eq!(message, "arm.xacro: unknown description format (expected .urdf, .xml, .toml or .json)");
+        assert_eq!(message, "arm.xacro: unknown description format (expected .urdf, .xml, .mjcf, .toml or .json)");
         // Named as URDF explicitly, the same file is fine.
         assert!(Robot::urdf("arm.xacro").manifest_dir(&dir).generate().is_ok());
     }
@@ -632,5 +639,20 @@ mod tests {
         let source = Robot::dh("pendulum.table").manifest_dir(&dir).generate().unwrap();
         assert!(source.contains("pub struct Pendulum;"), "{source}");
         assert!(source.contains("\"pendulum.table.toml\""), "{source}");
+    }
+
+    #[test]
+    fn an_mjcf_file_and_the_files_it_includes_are_embedded() {
+        let main = r#"<mujoco model="arm"><include file="parts.xml"/>
+            <worldbody><body name="link1"><joint name="j"/><site name="tcp" pos="0 0 1"/></body></worldbody></mujoco>"#;
+        let parts = r#"<mujoco><default><joint axis="0 1 0" range="-90 90"/></default></mujoco>"#;
+        let dir = fixture("mjcf", &[("arm.model", main), ("parts.xml", parts)]);
+        let source = Robot::mjcf("arm.model").manifest_dir(&dir).tip("tcp").generate().unwrap();
+        // `reference()` reads the main text and the included one from the generated file.
+        assert!(source.contains("parse_source_files("), "{source}");
+        assert!(source.contains("\"parts.xml\""), "{source}");
+        assert!(source.contains(r#"<joint axis="0 1 0" range="-90 90"/>"#), "{source}");
+        // By extension a `.model` file is no description; `Robot::file` refuses it.
+        assert!(Robot::file("arm.model").manifest_dir(&dir).generate().is_err());
     }
 }

@@ -17,6 +17,9 @@ pub(crate) struct Loaded {
     pub reference_label: String,
     /// The description's text, as read (the generated code embeds it for `reference()`).
     pub text: String,
+    /// The files the description names (an MJCF `<include>` or `<model file>`), each as (path
+    /// as written, text), embedded beside it.
+    pub files: Vec<(String, String)>,
 }
 
 /// Where a relative path is read from: `dir` if given, else `CARGO_MANIFEST_DIR` (set for build
@@ -43,6 +46,16 @@ pub(crate) fn load(
 ) -> Result<Loaded, LoadError> {
     let bytes = std::fs::read(&absolute).map_err(|e| LoadError::new(label, LoadErrorKind::Io(e)))?;
     let source = Source::from_bytes(label, kind, bytes)?;
-    let tree = source.load_with_floating_base(exact_angles, floating_base)?;
-    Ok(Loaded { tree, label: label.to_owned(), reference_label: source.file_name(), text: source.text })
+    // MJCF's `<include>` and `<model file>` paths are relative to the main file's directory;
+    // each file read is kept, for the generated code to embed.
+    let dir = absolute.parent().map(Path::to_path_buf).unwrap_or_default();
+    let files = std::cell::RefCell::new(Vec::new());
+    let read = |file: &str| {
+        let text = std::fs::read_to_string(dir.join(file)).map_err(|e| e.to_string())?;
+        files.borrow_mut().push((file.to_owned(), text.clone()));
+        Ok(text)
+    };
+    let tree = source.load_reading(exact_angles, floating_base, &read)?;
+    let (reference_label, text, files) = (source.file_name(), source.text, files.into_inner());
+    Ok(Loaded { tree, label: label.to_owned(), reference_label, text, files })
 }

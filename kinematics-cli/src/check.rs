@@ -9,7 +9,7 @@ use crate::error::CliError;
 /// Arguments of `check`.
 #[derive(clap::Args)]
 pub struct Args {
-    /// A URDF file (.urdf, .xml) or DH table (.toml, .json).
+    /// A URDF file (.urdf, .xml), MJCF file (.xml, .mjcf) or DH table (.toml, .json).
     file: String,
     /// How many configurations (the first five put every joint at 0, pi/2, -pi/2, pi, -pi).
     #[arg(long, default_value_t = 10_000, value_parser = crate::agreement::sample_count)]

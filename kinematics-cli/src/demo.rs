@@ -19,7 +19,7 @@ const DEFAULT_FILE: &str = "robots/ur5.urdf";
 /// Arguments of `demo`.
 #[derive(clap::Args)]
 pub struct Args {
-    /// A URDF file or DH table (default: `robots/ur5.urdf`, or the copy built into this binary).
+    /// A URDF file, MJCF file or DH table (default: `robots/ur5.urdf`, or the copy built into this binary).
     file: Option<String>,
     /// Configurations checked against the runtime reference (at least 1).
     #[arg(long, default_value_t = 10_000, value_parser = crate::agreement::sample_count)]

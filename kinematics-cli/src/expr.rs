@@ -13,7 +13,7 @@ use crate::error::CliError;
 /// Arguments of `expr`.
 #[derive(clap::Args)]
 pub struct Args {
-    /// A URDF file (.urdf, .xml) or DH table (.toml, .json).
+    /// A URDF file (.urdf, .xml), MJCF file (.xml, .mjcf) or DH table (.toml, .json).
     file: String,
     /// The frame the pose is expressed in (default: the root link).
     #[arg(long)]

@@ -11,7 +11,7 @@ use crate::error::CliError;
 /// Arguments of `fk`.
 #[derive(clap::Args)]
 pub struct Args {
-    /// A URDF file (.urdf, .xml) or DH table (.toml, .json).
+    /// A URDF file (.urdf, .xml), MJCF file (.xml, .mjcf) or DH table (.toml, .json).
     file: String,
     #[command(flatten)]
     configuration: crate::robot::ConfigurationArgs,

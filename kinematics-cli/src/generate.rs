@@ -17,7 +17,7 @@ enum IkKind {
 /// Arguments of `generate`.
 #[derive(clap::Args)]
 pub struct Args {
-    /// A URDF file (.urdf, .xml) or DH table (.toml, .json).
+    /// A URDF file (.urdf, .xml), MJCF file (.xml, .mjcf) or DH table (.toml, .json).
     file: String,
     /// The frame poses are expressed in (default: the root link).
     #[arg(long)]
@@ -81,13 +81,18 @@ pub enum TrigArg {
 /// The builder for these arguments: the file relative to the current directory; `--free` with
 /// `--ik numeric` is a usage error (the free joint is a closed form's).
 pub fn builder(args: &Args) -> Result<Robot, CliError> {
+    let file = &args.file;
+    let robot = match crate::robot::format() {
+        crate::robot::Format::Auto => Robot::file(file),
+        crate::robot::Format::Urdf => Robot::urdf(file),
+        crate::robot::Format::Mjcf => Robot::mjcf(file),
+        crate::robot::Format::Dh => Robot::dh(file),
+    };
     let mut robot =
-        Robot::file(&args.file).manifest_dir(".").tips(&args.tip).exact_angles(crate::robot::exact_angles_on()).trig(
-            match args.trig {
-                TrigArg::Fast => Trig::Fast,
-                TrigArg::Std => Trig::Std,
-            },
-        );
+        robot.manifest_dir(".").tips(&args.tip).exact_angles(crate::robot::exact_angles_on()).trig(match args.trig {
+            TrigArg::Fast => Trig::Fast,
+            TrigArg::Std => Trig::Std,
+        });
     if let Some(base) = &args.base {
         robot = robot.base(base);
     }

@@ -15,7 +15,7 @@ use crate::inspect::short;
 /// Arguments of `ik`.
 #[derive(clap::Args)]
 pub struct Args {
-    /// A URDF file (.urdf, .xml) or DH table (.toml, .json).
+    /// A URDF file (.urdf, .xml), MJCF file (.xml, .mjcf) or DH table (.toml, .json).
     file: String,
     /// The base link (default: the root).
     #[arg(long)]

@@ -9,7 +9,7 @@ use crate::error::CliError;
 /// Arguments of `inspect`.
 #[derive(clap::Args)]
 pub struct Args {
-    /// A URDF file (.urdf, .xml) or DH table (.toml, .json).
+    /// A URDF file (.urdf, .xml), MJCF file (.xml, .mjcf) or DH table (.toml, .json).
     file: String,
     /// The sphere cover's largest overshoot (metres) the collision geometry is listed at.
     #[arg(long, value_name = "METRES", default_value_t = kinematics_compiler::options::DEFAULT_SPHERE_COVER)]
@@ -224,6 +224,12 @@ pub fn describe(tree: &KinematicTree) -> String {
     let dofs: Vec<String> = tree.dof_names().iter().enumerate().map(|(i, n)| format!("q[{i}] {n}")).collect();
     out += &format!("DoF order: {}\n", if dofs.is_empty() { "none".to_owned() } else { dofs.join(", ") });
     out += &recognised_angles(tree);
+    if !tree.ignored().is_empty() {
+        out += &format!("not applied ({}):\n", tree.ignored().len());
+        for item in tree.ignored() {
+            out += &format!("  {item}\n");
+        }
+    }
     out += "chains from the root to each leaf:\n";
     for leaf in tree.leaves() {
         let link = tree.link(leaf);

@@ -16,6 +16,7 @@
 mod agreement;
 mod check;
 mod collision;
+mod convert;
 mod demo;
 mod draw;
 mod error;
@@ -36,8 +37,8 @@ use clap::{Parser, Subcommand};
 
 use crate::error::CliError;
 
-/// Forward kinematics of robots described by URDF files or DH tables: inspect, evaluate, print
-/// symbolically, check and generate Rust.
+/// Forward kinematics of robots described by URDF files, MJCF files or DH tables: inspect,
+/// evaluate, print symbolically, check, generate Rust and convert to URDF.
 #[derive(Parser)]
 #[command(name = "kinematics", version, about)]
 struct Cli {
@@ -45,6 +46,10 @@ struct Cli {
     /// exact multiple (`on`), or every angle as written (`off`).
     #[arg(long, global = true, value_enum, value_name = "on|off", default_value = "on")]
     exact_angles: Switch,
+    /// The description's format: by its extension (`auto`: .urdf, .mjcf, .toml, .json, and .xml
+    /// as its root element says, `<robot>` or `<mujoco>`), or as named.
+    #[arg(long, global = true, value_enum, default_value = "auto")]
+    format: robot::Format,
     #[command(subcommand)]
     command: Command,
 }
@@ -79,6 +84,9 @@ enum Command {
     /// Every closed-form inverse kinematics solution of the tip for a pose (or for the pose at
     /// given joint values), each with its flags and its errors by the runtime reference.
     Ik(ik::Args),
+    /// Write the robot's kinematics as URDF (links, joints, origins, axes, limits, mimic
+    /// relations; geometry left out), e.g. from an MJCF file.
+    Convert(convert::Args),
     /// The whole pipeline on one robot: tree, symbolic pose, operation counts, agreement with the
     /// runtime reference, and timing.
     Demo(demo::Args),
@@ -87,6 +95,7 @@ enum Command {
 fn main() -> ExitCode {
     let cli = Cli::parse();
     robot::set_exact_angles(cli.exact_angles == Switch::On);
+    robot::set_format(cli.format);
     let stdout = std::io::stdout();
     let mut out = stdout.lock();
     let result = match cli.command {
@@ -98,6 +107,7 @@ fn main() -> ExitCode {
         Command::Check(args) => check::run(&args, &mut out),
         Command::Graph(args) => graph::run(&args, &mut out),
         Command::Draw(args) => draw::run(&args, &mut out),
+        Command::Convert(args) => convert::run(&args, &mut out),
         Command::Demo(args) => demo::run(&args, &mut out),
     };
     let result = result.and_then(|()| out.flush().map_err(CliError::Output));

@@ -1,9 +1,9 @@
 //! Loading a description and choosing links: by name (checked, with "did you mean") or by depth.
 
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicU8, Ordering};
 
-use kinematics::ExactAngles;
-use kinematics::model::{KinematicTree, LinkId};
+use kinematics::model::{KinematicTree, LinkId, Source, SourceKind};
+use kinematics::{ExactAngles, LoadError, LoadErrorKind};
 
 use crate::error::CliError;
 
@@ -34,8 +34,56 @@ pub fn load_srdf(
 
 /// Reads and validates the description `file` (the path as the user typed it names it in errors),
 /// with the exactness policy of `--exact-angles`.
+/// The files an MJCF file names (`<include>`, `<model file>`) are read relative to its directory.
 pub fn load(file: &str) -> Result<KinematicTree, CliError> {
-    Ok(kinematics::load_with(file, ExactAngles::on(exact_angles_on()))?)
+    let bytes = std::fs::read(file).map_err(|e| LoadError::new(file, LoadErrorKind::Io(e)))?;
+    let source = Source::from_bytes(file, format().kind(), bytes)?;
+    let dir = std::path::Path::new(file).parent().map(std::path::Path::to_path_buf).unwrap_or_default();
+    let read = move |path: &str| std::fs::read_to_string(dir.join(path)).map_err(|e| e.to_string());
+    Ok(source.load_reading(ExactAngles::on(exact_angles_on()), None, &read)?)
+}
+
+/// The global `--format` option.
+#[derive(Clone, Copy, PartialEq, Eq, Debug, clap::ValueEnum)]
+pub enum Format {
+    /// By the extension (and a `.xml` file's root element).
+    Auto,
+    /// URDF, whatever the extension.
+    Urdf,
+    /// MJCF (MuJoCo's XML), whatever the extension.
+    Mjcf,
+    /// A DH table: JSON if the name ends in `.json`, TOML otherwise.
+    Dh,
+}
+
+impl Format {
+    /// The model's kind of source.
+    pub fn kind(self) -> SourceKind {
+        match self {
+            Format::Auto => SourceKind::ByExtension,
+            Format::Urdf => SourceKind::Urdf,
+            Format::Mjcf => SourceKind::Mjcf,
+            Format::Dh => SourceKind::Dh,
+        }
+    }
+}
+
+/// `--format`, as `main` set it (the order of [`Format`]'s variants).
+static FORMAT: AtomicU8 = AtomicU8::new(0);
+
+/// Sets the format every description this run loads is read in (`main`, from the options).
+pub fn set_format(format: Format) {
+    FORMAT.store(format as u8, Ordering::Relaxed);
+}
+
+/// `--format`.
+pub fn format() -> Format {
+    match FORMAT.load(Ordering::Relaxed) {
+        1 => Format::Urdf,
+        2 => Format::Mjcf,
+        3 => Format::Dh,
+        _ => Format::Auto,
+    }
 }
 
 /// The link named by an option (`role` says which: `base`, `tip`, ...), or the error naming it.

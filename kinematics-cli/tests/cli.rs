@@ -80,7 +80,8 @@ fn inspect_prints_the_tree_of_every_robot() {
         let tree = load(&file);
         let out = ok(&["inspect", &file]);
         assert!(out.starts_with(&format!("robot `{}`: {} links", tree.name(), tree.links().len())), "{file}:\n{out}");
-        assert!(out.contains(&format!("{} degrees of freedom", tree.dof())), "{file}");
+        // A floating base's seven entries of `q` are six degrees of freedom.
+        assert!(out.contains(&format!("{} degrees of freedom", tree.velocity_dof())), "{file}");
         assert!(out.contains(&format!("root link: {}\n", tree.link(tree.root()).name)), "{file}");
         for joint in tree.joints() {
             let line = out.lines().find(|l| l.trim_start().starts_with(&format!("{} ", joint.name)));
@@ -231,7 +232,7 @@ fn expr_jacobian_prints_every_entry_and_the_velocity_costs() {
         for frame in ["local-world-aligned", "local"] {
             let out = ok(&["expr", &file, "--jacobian", "--frame", frame]);
             let entries = out.lines().filter(|l| l.starts_with("J[")).count();
-            assert_eq!(entries, 6 * tree.dof(), "{file} {frame}:\n{out}");
+            assert_eq!(entries, 6 * tree.velocity_dof(), "{file} {frame}:\n{out}");
             for what in
                 ["Jacobian of", "pose and Jacobian of", "position Jacobian of", "twist of", "J * qd with J formed"]
             {
@@ -470,7 +471,7 @@ fn a_missing_file_is_named_by_every_subcommand() {
     for command in ["inspect", "generate"] {
         assert_eq!(
             fails(&[command, xacro]),
-            format!("error: {xacro}: unknown description format (expected .urdf, .xml, .toml or .json)")
+            format!("error: {xacro}: unknown description format (expected .urdf, .xml, .mjcf, .toml or .json)")
         );
     }
     std::fs::remove_dir_all(&dir).unwrap();
@@ -903,4 +904,68 @@ fn check_runs_the_collision_checks_against_the_reference() {
     assert!(none.ends_with("collision: no <collision> geometry the cover reads (meshes are not read)\n"), "{none}");
     let message = fails(&["check", "robots/ur5_spherized.urdf", "--samples", "5", "--srdf", "robots/panda.srdf"]);
     assert!(message.contains("robots/panda.srdf: line 51:"), "{message}");
+}
+
+/// Issue 33: `inspect` of an MJCF file shows MJCF's names; `--format` overrides the extension.
+#[test]
+fn mjcf_files_are_read_by_their_root_element_or_as_format_says() {
+    let text = ok(&["inspect", "robots/ur5_mjcf.xml"]);
+    assert!(text.starts_with("robot `ur5`: 11 links, 10 joints, 6 degrees of freedom\nroot link: world\n"), "{text}");
+    assert!(text.contains("  joint `tool0`: -1.5707963267948966 -> -pi/2 (the nearest f64 to it)"), "{text}");
+    assert_eq!(ok(&["--format", "mjcf", "inspect", "robots/ur5_mjcf.xml"]), text);
+    assert_eq!(
+        fails(&["--format", "urdf", "inspect", "robots/ur5_mjcf.xml"]),
+        "error: robots/ur5_mjcf.xml: line 11: the root element is <mujoco>, not <robot>"
+    );
+    let dir = scratch("mjcf-format");
+    let renamed = dir.join("arm.model");
+    std::fs::copy(root().join("robots/ur5_mjcf.xml"), &renamed).unwrap();
+    let renamed = renamed.to_string_lossy().into_owned();
+    assert!(fails(&["inspect", &renamed]).contains("unknown description format"));
+    assert!(ok(&["--format", "mjcf", "fk", &renamed]).contains("tool0"));
+    // What MJCF says and is not applied is listed.
+    let coupled = dir.join("coupled.xml");
+    std::fs::write(
+        &coupled,
+        "<mujoco><worldbody><body name=\"a\"><joint name=\"j\"/><body name=\"b\"><joint name=\"k\"/></body></body>\
+         </worldbody><equality><weld body1=\"a\" body2=\"b\"/></equality></mujoco>",
+    )
+    .unwrap();
+    let text = ok(&["inspect", &coupled.to_string_lossy()]);
+    assert!(
+        text.contains("not applied (1):\n  <equality><weld> (line 1): not kinematics of a tree, not applied\n"),
+        "{text}"
+    );
+}
+
+/// Issue 33: `convert` writes the URDF of an MJCF file's kinematics, which reads back as the
+/// same robot (every link's pose at many configurations), a hinge off its body's origin
+/// included.
+#[test]
+fn convert_writes_urdf_that_reads_back_as_the_same_robot() {
+    let dir = scratch("convert");
+    let off = dir.join("off.xml");
+    std::fs::write(
+        &off,
+        "<mujoco><worldbody><body name=\"b\" pos=\"1 0 0\" quat=\"0.9 0.1 0.3 0.2\">\
+         <joint name=\"h\" pos=\"0 0.5 0\" axis=\"1 1 0\" range=\"-90 90\"/>\
+         <body name=\"c\" pos=\"0 0 1\"><joint name=\"s\" type=\"slide\" ref=\"0.2\"/></body></body></worldbody></mujoco>",
+    )
+    .unwrap();
+    for file in ["robots/walker.xml".to_owned(), "robots/ur5_mjcf.xml".to_owned(), off.to_string_lossy().into_owned()] {
+        let out = dir.join("robot.urdf");
+        assert_eq!(ok(&["convert", &file, "-o", &out.to_string_lossy()]), "");
+        let urdf = std::fs::read_to_string(&out).unwrap();
+        assert!(urdf.contains("Geometry, inertia, actuators and everything else the source says\n     are left out"));
+        let (a, b) = (ReferenceFk::new(load(&file)), ReferenceFk::new(kinematics::load(&out).unwrap()));
+        assert_eq!(a.tree().dof(), b.tree().dof(), "{file}");
+        for k in 0..20 {
+            let q: Vec<f64> = (0..a.tree().dof()).map(|i| ((i * 7 + k * 3) % 11) as f64 / 11.0 - 0.4).collect();
+            for link in a.tree().links() {
+                let (p, r) = (a.link_pose(&q, &link.name).unwrap(), b.link_pose(&q, &link.name).unwrap());
+                assert!((p.to_homogeneous() - r.to_homogeneous()).abs().max() < 1e-12, "{file}: {}", link.name);
+            }
+        }
+    }
+    assert!(ok(&["convert", &off.to_string_lossy()]).contains("<link name=\"h.frame\"/>"));
 }

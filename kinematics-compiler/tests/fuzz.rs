@@ -58,6 +58,7 @@ fn compile_everything(label: &str, text: &str) -> Result<Vec<String>, String> {
         krate: quote!(::kinematics),
         source_label: label.to_owned(),
         source_text: quote!(""),
+        source_files: None,
         impl_generics: TokenStream::new(),
         where_clause: TokenStream::new(),
     };

@@ -39,10 +39,13 @@ const EXPECTED: &[(&str, Result<IkFamily, &str>)] = &[
     ("ur10e.urdf", Ok(IkFamily::ThreeParallelTwoIntersecting)),
     ("ur5.toml", Ok(IkFamily::ThreeParallelTwoIntersecting)),
     ("ur5.urdf", Ok(IkFamily::ThreeParallelTwoIntersecting)),
+    ("ur5_mjcf.xml", Ok(IkFamily::ThreeParallelTwoIntersecting)),
     ("ur5_modified.toml", Ok(IkFamily::ThreeParallelTwoIntersecting)),
     ("ur5_primitives.urdf", Ok(IkFamily::ThreeParallelTwoIntersecting)),
     ("ur5_ros.urdf", Ok(IkFamily::ThreeParallelTwoIntersecting)),
     ("ur5_spherized.urdf", Ok(IkFamily::ThreeParallelTwoIntersecting)),
+    ("walker.urdf", Err("the chain has 5 moving joints")),
+    ("walker.xml", Err("joint `root_joint` is a floating joint")),
 ];
 
 #[test]

@@ -52,6 +52,7 @@ fn spec<'a>(tree: &'a kinematics_model::KinematicTree, options: &'a Options) -> 
         krate: quote!(::kinematics),
         source_label: "x.urdf".to_owned(),
         source_text: quote!(""),
+        source_files: None,
         impl_generics: quote!(),
         where_clause: quote!(),
     }

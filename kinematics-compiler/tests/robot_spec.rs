@@ -26,6 +26,7 @@ fn spec<'a>(tree: &'a KinematicTree, options: &'a Options) -> RobotSpec<'a> {
         krate: quote!(::kinematics),
         source_label: "arm.urdf".to_owned(),
         source_text: quote!("text"),
+        source_files: None,
         impl_generics: quote!(),
         where_clause: quote!(),
     }

@@ -70,6 +70,12 @@ fn velocities_agree_with_the_pose_and_with_each_other() {
     let mut checked = 0;
     for file in robots() {
         let tree = common::robot(&file);
+        // A floating joint's seven entries of `q` give six columns, which differences of `q`'s
+        // entries cannot show: `tests/floating_base.rs` and the checks crate's Jacobians (every
+        // robot, `walker.xml`'s free joint included) hold those against the runtime reference.
+        if tree.floating_joints().next().is_some() {
+            continue;
+        }
         let n = tree.dof();
         let reach = tree.reach().max(1.0);
         let qs = configurations(n, 4);

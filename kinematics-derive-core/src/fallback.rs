@@ -495,6 +495,7 @@ mod tests {
                                 krate: quote!(::kinematics),
                                 source_label: file.to_owned(),
                                 source_text: quote!(""),
+                                source_files: None,
                                 impl_generics: quote!(),
                                 where_clause: quote!(),
                             };

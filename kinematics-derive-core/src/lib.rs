@@ -130,6 +130,7 @@ fn expand_options(
         krate,
         source_label: loaded.label.clone(),
         source_text: loaded.text_expr.clone(),
+        source_files: loaded.files_expr.clone(),
         impl_generics: quote!(#impl_generics),
         where_clause: quote!(#where_clause),
     };

@@ -46,6 +46,9 @@ pub struct SourceKeys<Rest> {
     /// `urdf = "path"`.
     #[darling(default)]
     pub urdf: Option<SpannedValue<String>>,
+    /// `mjcf = "path"` (MuJoCo's XML).
+    #[darling(default)]
+    pub mjcf: Option<SpannedValue<String>>,
     /// `dh = "path"` or an inline `dh(...)` table.
     #[darling(default)]
     pub dh: Option<SpannedValue<DhSource>>,
@@ -206,6 +209,8 @@ pub struct SourceOptions<'a> {
     pub ident: &'a syn::Ident,
     /// `urdf = "path"`.
     pub urdf: Option<&'a SpannedValue<String>>,
+    /// `mjcf = "path"`.
+    pub mjcf: Option<&'a SpannedValue<String>>,
     /// `dh = ...`.
     pub dh: Option<&'a SpannedValue<DhSource>>,
     /// `exact_angles`.
@@ -239,7 +244,7 @@ impl DescriptionKeys {
     /// Whether a description is named at all (a misspelt `urdf` or `dh` is the other key's fault,
     /// not a second one to report).
     pub fn names_a_description(&self) -> bool {
-        self.keys.urdf.is_some() || self.keys.dh.is_some()
+        self.keys.urdf.is_some() || self.keys.mjcf.is_some() || self.keys.dh.is_some()
     }
 
     /// What loading needs.
@@ -301,6 +306,7 @@ impl<Rest> SourceKeys<Rest> {
         SourceOptions {
             ident,
             urdf: self.urdf.as_ref(),
+            mjcf: self.mjcf.as_ref(),
             dh: self.dh.as_ref(),
             exact_angles: self.exact_angles(),
             floating_base: floating_base(self.floating_base.as_ref()),

@@ -25,25 +25,35 @@ pub struct Loaded {
     /// An expression of type `&'static str` with the text, which also makes the crate rebuild when
     /// the file changes (`include_str!` of its absolute path).
     pub text_expr: TokenStream,
+    /// For an MJCF file that names others (`<include>`, `<model file>`), the expression of type
+    /// `&'static [(&'static str, &'static str)]` holding each (path as written,
+    /// `include_str!` of it), for `reference()`; `None` when it names none.
+    pub files_expr: Option<TokenStream>,
 }
 
 /// Reads the description and checks the tree (the options against it are the compiler's rules).
 pub fn read(options: &SourceOptions<'_>) -> darling::Result<Loaded> {
     let policy = (options.exact_angles, options.floating_base.as_ref());
-    let loaded = match (options.urdf, options.dh) {
-        (Some(path), None) => from_file(path, SourceKind::Urdf, policy)?,
-        (None, Some(dh)) => match dh.as_ref() {
+    let loaded = match (options.urdf, options.mjcf, options.dh) {
+        (Some(path), None, None) => from_file(path, SourceKind::Urdf, policy)?,
+        (None, Some(path), None) => from_file(path, SourceKind::Mjcf, policy)?,
+        (None, None, Some(dh)) => match dh.as_ref() {
             DhSource::File(path) => from_file(&SpannedValue::new(path.clone(), dh.span()), SourceKind::Dh, policy)?,
             DhSource::Inline(table) => from_inline(table, dh.span(), policy)?,
         },
-        (Some(_), Some(dh)) => {
-            return Err(Error::custom("give one description: `urdf` or `dh`, not both").with_span(&dh.span()));
-        }
-        (None, None) => {
+        (None, None, None) => {
             return Err(Error::custom(
-                "name the robot's description: `urdf = \"path\"`, `dh = \"path\"` or an inline `dh(...)` table",
+                "name the robot's description: `urdf = \"path\"`, `mjcf = \"path\"`, `dh = \"path\"` or an inline `dh(...)` table",
             )
             .with_span(options.ident));
+        }
+        (urdf, mjcf, dh) => {
+            // The second key written is the fault (darling reads them in this order).
+            let span = match (urdf, mjcf) {
+                (Some(_), Some(m)) => m.span(),
+                _ => dh.map_or_else(|| options.ident.span(), |d| d.span()),
+            };
+            return Err(Error::custom("give one description: `urdf`, `mjcf` or `dh`, not several").with_span(&span));
         }
     };
     Ok(loaded)
@@ -55,13 +65,18 @@ type Policy<'a> = (ExactAngles, Option<&'a SpannedValue<String>>);
 /// Loads `source`, with a free-flying root when asked: the new root link and its joint must not
 /// clash with the description's names (the compiler's rule; a clash is an error on the
 /// `floating_base` key).
-fn load(source: &Source, (exact_angles, floating): Policy<'_>, span: Span) -> darling::Result<KinematicTree> {
-    let tree = source.load(exact_angles).map_err(|e| spanned(&e, span))?;
+fn load(
+    source: &Source,
+    (exact_angles, floating): Policy<'_>,
+    span: Span,
+    read: kinematics_model::mjcf::ReadFile<'_>,
+) -> darling::Result<KinematicTree> {
+    let tree = source.load_reading(exact_angles, None, read).map_err(|e| spanned(&e, span))?;
     let Some(link) = floating else { return Ok(tree) };
     if let Some(fault) = floating_base_clash(&tree, link.as_ref()) {
         return Err(Error::custom(format!("{}: {fault}", source.label)).with_span(&link.span()));
     }
-    source.load_with_floating_base(exact_angles, Some(link.as_ref())).map_err(|e| spanned(&e, span))
+    source.load_reading(exact_angles, Some(link.as_ref()), read).map_err(|e| spanned(&e, span))
 }
 
 fn from_file(path: &SpannedValue<String>, kind: SourceKind, policy: Policy<'_>) -> darling::Result<Loaded> {
@@ -72,9 +87,25 @@ fn from_file(path: &SpannedValue<String>, kind: SourceKind, policy: Policy<'_>) 
     let bytes =
         std::fs::read(&absolute).map_err(|e| spanned(&LoadError::new(label.clone(), LoadErrorKind::Io(e)), span))?;
     let source = Source::from_bytes(label, kind, bytes).map_err(|e| spanned(&e, span))?;
-    let tree = load(&source, policy, span)?;
+    // MJCF's `<include>` and `<model file>` paths are relative to the main file's directory;
+    // each file read is embedded by `include_str!`, so editing it rebuilds the crate too.
+    let dir = absolute.parent().map(std::path::Path::to_path_buf).unwrap_or_default();
+    let files = std::cell::RefCell::new(Vec::new());
+    let read = |file: &str| {
+        let path = dir.join(file);
+        let text = std::fs::read_to_string(&path).map_err(|e| e.to_string())?;
+        files.borrow_mut().push((file.to_owned(), path.to_string_lossy().into_owned()));
+        Ok(text)
+    };
+    let tree = load(&source, policy, span, &read)?;
+    let files = files.into_inner();
+    let files_expr = (!files.is_empty()).then(|| {
+        let (written, paths): (Vec<_>, Vec<_>) = files.into_iter().unzip();
+        quote!(&[#((#written, include_str!(#paths))),*])
+    });
     let absolute = absolute.to_string_lossy().into_owned();
-    Ok(Loaded { tree, label: source.file_name(), written: source.label, text_expr: quote!(include_str!(#absolute)) })
+    let text_expr = quote!(include_str!(#absolute));
+    Ok(Loaded { tree, label: source.file_name(), written: source.label, text_expr, files_expr })
 }
 
 fn from_inline(table: &InlineDh, span: Span, policy: Policy<'_>) -> darling::Result<Loaded> {
@@ -82,8 +113,10 @@ fn from_inline(table: &InlineDh, span: Span, policy: Policy<'_>) -> darling::Res
     // The table as the DH file it stands for: loaded by the one loader, and the text
     // `reference()` parses, so both read the very same robot.
     let text = table.to_toml().map_err(|e| spanned(&LoadError::new(LABEL, e), span))?;
-    let tree = load(&Source::new(SourceFormat::DhToml, LABEL, text.clone()), policy, span)?;
-    Ok(Loaded { tree, label: "inline_dh.toml".to_owned(), written: LABEL.to_owned(), text_expr: quote!(#text) })
+    let no_files = |_: &str| Err(String::new());
+    let tree = load(&Source::new(SourceFormat::DhToml, LABEL, text.clone()), policy, span, &no_files)?;
+    let (label, written) = ("inline_dh.toml".to_owned(), LABEL.to_owned());
+    Ok(Loaded { tree, label, written, text_expr: quote!(#text), files_expr: None })
 }
 
 /// The SRDF at `path` (relative to `CARGO_MANIFEST_DIR`), parsed, and an item that makes the

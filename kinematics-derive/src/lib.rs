@@ -1,4 +1,4 @@
-//! `#[derive(Kinematics)]`: reads a URDF file or DH table at compile time and gives the struct its
+//! `#[derive(Kinematics)]`: reads a URDF file, an MJCF file or a DH table at compile time and gives the struct its
 //! closed-form forward kinematics. A shim: all logic is in `kinematics-derive-core`. Use it through
 //! the `kinematics` crate, which re-exports it with the trait of the same name.
 

@@ -18,6 +18,10 @@ pub struct Description {
     pub joints: Vec<JointDescription>,
     /// Links' collision geometry, in file order.
     pub collisions: Vec<CollisionDescription>,
+    /// What the file says that is not applied, each with its element and line (an MJCF
+    /// `<equality>` other than a linear joint coupling); the tree keeps the list
+    /// ([`crate::KinematicTree::ignored`]).
+    pub ignored: Vec<String>,
 }
 
 /// One `<collision>` element as the description states it.

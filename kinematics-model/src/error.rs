@@ -20,6 +20,12 @@ pub enum Element {
     },
     /// The fixed base or tool transform of a DH table.
     DhSection(&'static str),
+    /// An MJCF `<body>`.
+    Body(String),
+    /// An MJCF `<site>`.
+    Site(String),
+    /// An MJCF `<frame>`.
+    Frame(String),
     /// An obstacle of a scene file: its 1-based place in the file and, if it has one, its name,
     /// as shown (`3`, or ``3 (`table`)``). One `String`, so the enum (held by every model
     /// error) stays the size it was.
@@ -34,6 +40,9 @@ impl fmt::Display for Element {
             Element::Joint(name) => write!(f, "joint `{name}`"),
             Element::DhRow { row, joint } => write!(f, "DH row {row} (joint `{joint}`)"),
             Element::DhSection(section) => write!(f, "DH `{section}` transform"),
+            Element::Body(name) => write!(f, "body `{name}`"),
+            Element::Site(name) => write!(f, "site `{name}`"),
+            Element::Frame(name) => write!(f, "frame `{name}`"),
             Element::Obstacle(label) => write!(f, "obstacle {label}"),
         }
     }
@@ -269,7 +278,7 @@ pub enum LoadErrorKind {
     #[error("cannot read the file: {0}")]
     Io(#[source] std::io::Error),
     /// The file extension names no format we read.
-    #[error("unknown description format (expected .urdf, .xml, .toml or .json)")]
+    #[error("unknown description format (expected .urdf, .xml, .mjcf, .toml or .json)")]
     UnknownFormat,
     /// The text is not well-formed for its format.
     #[error("{}{message}", line.map(|l| format!("line {l}: ")).unwrap_or_default())]
@@ -303,6 +312,15 @@ pub enum LoadErrorKind {
     /// The description breaks model rules.
     #[error("{0}")]
     Model(ModelErrors),
+    /// An error in a file the description names (an MJCF `<include>` or `<model>`), displayed as
+    /// ``in `parts.xml`: joint `elbow` (line 3): ...``.
+    #[error("in `{file}`: {error}")]
+    Included {
+        /// The file, as the including element names it.
+        file: String,
+        /// What is wrong there.
+        error: Box<LoadErrorKind>,
+    },
 }
 
 /// A description that could not be loaded, with the file as the user named it.

@@ -1,10 +1,11 @@
 //! Robot descriptions and the validated kinematic tree.
 //!
-//! This crate owns the first two stages of the pipeline: *description* (reading a URDF document or a
-//! Denavit-Hartenberg table from text into a [`Description`]) and *model* (checking that description
+//! This crate owns the first two stages of the pipeline: *description* (reading a URDF document, an
+//! MJCF document or a Denavit-Hartenberg table from text into a [`Description`]) and *model* (checking that description
 //! against every rule and building a [`KinematicTree`] that is valid by construction: one root, no
 //! cycles, unit axes, finite numbers, mimic joints resolved to their independent source). It does no
-//! file IO and no numeric transform math: the runtime reference (`kinematics-runtime`) and the
+//! file IO (an MJCF file's includes come through the caller's [`mjcf::ReadFile`]) and no numeric
+//! transform math beyond writing MJCF's orientations as elementary rotations: the runtime reference (`kinematics-runtime`) and the
 //! compiler both start from the tree built here, and neither shares the other's math.
 //!
 //! ```
@@ -34,6 +35,7 @@ mod error;
 pub mod exactness;
 mod frame;
 mod joint;
+pub mod mjcf;
 pub mod scene;
 mod source;
 pub mod srdf;
@@ -55,7 +57,9 @@ pub use error::{Element, LoadError, LoadErrorKind, ModelError, ModelErrors, Seve
 pub use exactness::{ExactAngles, RecognisedAngle};
 pub use frame::JacobianFrame;
 pub use joint::{Joint, JointKind, JointMotion, Limits, Link};
-pub use source::{Source, SourceFormat, SourceKind, parse_source, parse_source_floating, parse_source_with};
+pub use source::{
+    Source, SourceFormat, SourceKind, parse_source, parse_source_files, parse_source_floating, parse_source_with,
+};
 pub use suggest::closest;
 pub use transform::{Axis, Elementary, FixedTransform};
 pub use tree::{Chain, JointId, KinematicTree, LinkId};

@@ -4,11 +4,15 @@
 //! Every entry point (the `kinematics::load` facade, the build API, the derive, the command line)
 //! reads the file's bytes, builds a [`Source`] and calls [`Source::load`] with its exactness
 //! policy; none of them picks a format or parses on its own. The format is chosen here, in
-//! [`SourceFormat::choose`]: from the file name's extension, or as the caller's kind says.
+//! [`SourceFormat::choose`]: from the file name's extension, or as the caller's kind says; a
+//! `.xml` file is URDF or MJCF as its root element (`<robot>` or `<mujoco>`) says
+//! ([`SourceFormat::detect`]). An MJCF file may name others (`<include>`, `<model file>`): the
+//! caller reads them ([`Source::load_reading`] takes a [`ReadFile`]), since this crate does no IO.
 
 use crate::description::Description;
 use crate::error::{LoadError, LoadErrorKind};
 use crate::exactness::ExactAngles;
+use crate::mjcf::ReadFile;
 use crate::tree::KinematicTree;
 
 /// The description formats this crate reads.
@@ -16,6 +20,8 @@ use crate::tree::KinematicTree;
 pub enum SourceFormat {
     /// URDF (XML).
     Urdf,
+    /// MJCF, MuJoCo's XML ([`crate::mjcf`]).
+    Mjcf,
     /// DH table in TOML.
     DhToml,
     /// DH table in JSON.
@@ -25,21 +31,26 @@ pub enum SourceFormat {
 /// What the caller knows of a file's format before looking at its name.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum SourceKind {
-    /// Nothing: the extension decides (`.urdf`/`.xml`, `.toml`, `.json`; anything else is refused).
+    /// Nothing: the extension decides (`.urdf`, `.xml` (URDF or MJCF by its root element),
+    /// `.mjcf`, `.toml`, `.json`; anything else is refused).
     #[default]
     ByExtension,
     /// A URDF document, whatever its name.
     Urdf,
+    /// An MJCF document, whatever its name.
+    Mjcf,
     /// A DH table: JSON if the name ends in `.json`, TOML otherwise.
     Dh,
 }
 
 impl SourceFormat {
-    /// The format a file name's extension names: `.urdf`/`.xml`, `.toml`, `.json`.
+    /// The format a file name's extension names: `.urdf`, `.mjcf`, `.toml`, `.json`, and
+    /// `.xml` as URDF (whose text may say MJCF instead: [`SourceFormat::detect`]).
     pub fn from_file_name(name: &str) -> Option<Self> {
         let ext = name.rsplit_once('.').map(|(_, e)| e.to_ascii_lowercase())?;
         match ext.as_str() {
             "urdf" | "xml" => Some(Self::Urdf),
+            "mjcf" => Some(Self::Mjcf),
             "toml" => Some(Self::DhToml),
             "json" => Some(Self::DhJson),
             _ => None,
@@ -60,24 +71,57 @@ impl SourceFormat {
         match kind {
             SourceKind::ByExtension => Self::from_file_name(name),
             SourceKind::Urdf => Some(Self::Urdf),
+            SourceKind::Mjcf => Some(Self::Mjcf),
             SourceKind::Dh if Self::from_file_name(name) == Some(Self::DhJson) => Some(Self::DhJson),
             SourceKind::Dh => Some(Self::DhToml),
         }
     }
 
-    /// The extension naming this format (`urdf`, `toml`, `json`).
+    /// [`SourceFormat::choose`], then for a `.xml` file chosen by its extension, the format its
+    /// root element names: `<mujoco>` is MJCF, anything else stays URDF (whose reader then says
+    /// what is wrong).
+    ///
+    /// ```
+    /// use kinematics_model::{SourceFormat, SourceKind};
+    /// let mjcf = "<?xml version=\"1.0\"?>\n<!-- arm -->\n<mujoco model=\"arm\"/>";
+    /// assert_eq!(SourceFormat::detect("arm.xml", SourceKind::ByExtension, mjcf), Some(SourceFormat::Mjcf));
+    /// assert_eq!(SourceFormat::detect("arm.xml", SourceKind::ByExtension, "<robot/>"), Some(SourceFormat::Urdf));
+    /// // An explicit kind is obeyed (the URDF reader then refuses `<mujoco>` by name).
+    /// assert_eq!(SourceFormat::detect("arm.xml", SourceKind::Urdf, mjcf), Some(SourceFormat::Urdf));
+    /// ```
+    pub fn detect(name: &str, kind: SourceKind, text: &str) -> Option<Self> {
+        let chosen = Self::choose(name, kind)?;
+        let xml = name.rsplit_once('.').is_some_and(|(_, e)| e.eq_ignore_ascii_case("xml"));
+        if kind == SourceKind::ByExtension && xml && root_element(text) == Some("mujoco") {
+            return Some(Self::Mjcf);
+        }
+        Some(chosen)
+    }
+
+    /// The extension naming this format (`urdf`, `mjcf`, `toml`, `json`).
     pub fn extension(self) -> &'static str {
         match self {
             Self::Urdf => "urdf",
+            Self::Mjcf => "mjcf",
             Self::DhToml => "toml",
             Self::DhJson => "json",
         }
     }
 
-    /// Parses `text` in this format into a description.
+    /// Parses `text` in this format into a description (an MJCF file that names another file is
+    /// an error here: [`SourceFormat::parse_reading`]).
     pub fn parse(self, text: &str) -> Result<Description, LoadErrorKind> {
         match self {
+            Self::Mjcf => crate::mjcf::parse_mjcf(text),
+            other => other.parse_reading(text, &|_| Err(String::new())),
+        }
+    }
+
+    /// [`SourceFormat::parse`], reading the files an MJCF document names through `read`.
+    pub fn parse_reading(self, text: &str, read: ReadFile<'_>) -> Result<Description, LoadErrorKind> {
+        match self {
             Self::Urdf => crate::urdf::parse_urdf(text),
+            Self::Mjcf => crate::mjcf::parse_mjcf_with(text, read),
             Self::DhToml => crate::dh::parse_dh_toml(text)?.to_description(),
             Self::DhJson => crate::dh::parse_dh_json(text)?.to_description(),
         }
@@ -120,9 +164,9 @@ impl Source {
         kind: SourceKind,
         text: impl Into<String>,
     ) -> Result<Self, LoadError> {
-        let label = label.into();
-        match SourceFormat::choose(&label, kind) {
-            Some(format) => Ok(Source { format, label, text: text.into() }),
+        let (label, text) = (label.into(), text.into());
+        match SourceFormat::detect(&label, kind, &text) {
+            Some(format) => Ok(Source { format, label, text }),
             None => Err(LoadError::new(label, LoadErrorKind::UnknownFormat)),
         }
     }
@@ -131,11 +175,11 @@ impl Source {
     /// and `kind`; the bytes must be UTF-8 (the line of the first stray byte is reported).
     pub fn from_bytes(label: impl Into<String>, kind: SourceKind, bytes: Vec<u8>) -> Result<Self, LoadError> {
         let label = label.into();
-        let Some(format) = SourceFormat::choose(&label, kind) else {
+        if SourceFormat::choose(&label, kind).is_none() {
             return Err(LoadError::new(label, LoadErrorKind::UnknownFormat));
-        };
+        }
         match String::from_utf8(bytes) {
-            Ok(text) => Ok(Source { format, label, text }),
+            Ok(text) => Self::from_file_name(label, kind, text),
             Err(e) => {
                 let valid = e.utf8_error().valid_up_to();
                 let line = e.as_bytes()[..valid].iter().filter(|&&b| b == b'\n').count() + 1;
@@ -149,7 +193,7 @@ impl Source {
     /// already names the format, else the label with that extension appended (`arm.table` as a
     /// DH table becomes `arm.table.toml`). Generated `reference()` functions parse under it.
     pub fn file_name(&self) -> String {
-        match SourceFormat::from_file_name(&self.label) {
+        match SourceFormat::detect(&self.label, SourceKind::ByExtension, &self.text) {
             Some(format) if format == self.format => self.label.clone(),
             _ => format!("{}.{}", self.label, self.format.extension()),
         }
@@ -169,7 +213,30 @@ impl Source {
         floating_base: Option<&str>,
     ) -> Result<KinematicTree, LoadError> {
         let error = |kind| LoadError::new(self.label.clone(), kind);
-        let mut description = self.format.parse(&self.text).map_err(error)?;
+        let description = self.format.parse(&self.text).map_err(error)?;
+        self.validate(description, exact_angles, floating_base)
+    }
+
+    /// [`Source::load_with_floating_base`], reading the files an MJCF description names
+    /// (`<include file>`, `<model file>`) through `read`, which gets each path as written.
+    pub fn load_reading(
+        &self,
+        exact_angles: ExactAngles,
+        floating_base: Option<&str>,
+        read: ReadFile<'_>,
+    ) -> Result<KinematicTree, LoadError> {
+        let error = |kind| LoadError::new(self.label.clone(), kind);
+        let description = self.format.parse_reading(&self.text, read).map_err(error)?;
+        self.validate(description, exact_angles, floating_base)
+    }
+
+    fn validate(
+        &self,
+        mut description: Description,
+        exact_angles: ExactAngles,
+        floating_base: Option<&str>,
+    ) -> Result<KinematicTree, LoadError> {
+        let error = |kind| LoadError::new(self.label.clone(), kind);
         if let Some(link) = floating_base {
             description = description.with_floating_base(link);
         }
@@ -196,7 +263,40 @@ pub fn parse_source_floating(
         .load_with_floating_base(exact_angles, Some(floating_base))
 }
 
+/// [`parse_source_with`] (or [`parse_source_floating`] when `floating_base` names a root) for a
+/// description that names other files (an MJCF `<include>` or `<model file>`): `files` holds
+/// each as (path as written, text), as generated `reference()` functions embed them.
+pub fn parse_source_files(
+    file: &str,
+    text: &str,
+    files: &[(&str, &str)],
+    exact_angles: ExactAngles,
+    floating_base: Option<&str>,
+) -> Result<KinematicTree, LoadError> {
+    let read = |path: &str| {
+        files.iter().find(|(p, _)| *p == path).map(|(_, t)| (*t).to_owned()).ok_or_else(|| "not embedded".to_owned())
+    };
+    Source::from_file_name(file, SourceKind::ByExtension, text)?.load_reading(exact_angles, floating_base, &read)
+}
+
 /// [`parse_source`] with the exactness policy `exact_angles`.
 pub fn parse_source_with(file: &str, text: &str, exact_angles: ExactAngles) -> Result<KinematicTree, LoadError> {
     Source::from_file_name(file, SourceKind::ByExtension, text)?.load(exact_angles)
+}
+
+/// The name of the first element of an XML text (after the declaration, comments, a doctype and
+/// processing instructions), if the text begins as XML does.
+fn root_element(text: &str) -> Option<&str> {
+    let mut rest = text.trim_start_matches('\u{feff}').trim_start();
+    loop {
+        if let Some(after) = rest.strip_prefix("<!--") {
+            rest = after.split_once("-->")?.1.trim_start();
+        } else if rest.starts_with("<?") || rest.starts_with("<!") {
+            rest = rest.split_once('>')?.1.trim_start();
+        } else {
+            let after = rest.strip_prefix('<')?;
+            let end = after.find(|c: char| c.is_whitespace() || c == '>' || c == '/').unwrap_or(after.len());
+            return Some(&after[..end]);
+        }
+    }
 }

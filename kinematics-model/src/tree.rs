@@ -37,6 +37,8 @@ pub struct KinematicTree {
     pub(crate) recognised: Vec<RecognisedAngle>,
     /// Fixed joints whose `<mimic>` of another fixed joint was read and had nothing to do.
     pub(crate) vacuous_mimics: Vec<String>,
+    /// What the description says that is not applied ([`Description::ignored`]).
+    pub(crate) ignored: Vec<String>,
     /// Links by name, for lookups in O(log n).
     link_index: BTreeMap<String, LinkId>,
     /// Joints by name.
@@ -75,6 +77,7 @@ impl KinematicTree {
             exact_angles: ExactAngles::Off,
             recognised: Vec::new(),
             vacuous_mimics: Vec::new(),
+            ignored: Vec::new(),
             link_index,
             joint_index,
             depth,
@@ -114,6 +117,13 @@ impl KinematicTree {
     /// here rather than applied or refused. A fixed joint that mimics a moving one is refused.
     pub fn vacuous_mimics(&self) -> &[String] {
         &self.vacuous_mimics
+    }
+
+    /// What the description says that is not applied, each naming its element and line: an
+    /// MJCF `<equality>` other than a linear joint coupling (connect, weld, a joint polynomial of
+    /// higher degree, an inactive constraint). Empty for URDF and DH tables.
+    pub fn ignored(&self) -> &[String] {
+        &self.ignored
     }
 
     /// Robot name.

@@ -68,6 +68,7 @@ impl Description {
             links: robot.links.iter().map(|l| l.name.clone()).collect(),
             joints: robot.joints.iter().map(joint).collect::<Result<_, _>>()?,
             collisions: robot.links.iter().flat_map(collisions).collect(),
+            ignored: Vec::new(),
         })
     }
 }

@@ -22,6 +22,7 @@ pub(crate) fn build(d: &Description) -> Result<KinematicTree, ModelErrors> {
     let d = owned.as_ref().unwrap_or(d);
     let mut tree = build_checked(d)?;
     tree.vacuous_mimics = vacuous;
+    tree.ignored = d.ignored.clone();
     Ok(tree)
 }
 

@@ -1,7 +1,7 @@
 //! Fuzz-style property tests of the loader: arbitrary bytes, arbitrary UTF-8 and mutations of the
 //! real robot files in `robots/` (truncations, deleted and duplicated lines, numbers replaced by
 //! huge, tiny, NaN, negative or garbage values, names replaced by empty or 70,000-byte strings)
-//! go through `parse_source` as `.urdf`, `.toml` and `.json`. Whatever the input, loading returns
+//! go through `parse_source` as `.urdf`, `.mjcf`, `.toml` and `.json`. Whatever the input, loading returns
 //! a tree or an error, never panics; a tree it returns holds finite numbers only (limits may be
 //! infinite, never NaN).
 #![allow(clippy::panic, clippy::unwrap_used, clippy::expect_used)] // test helpers fail loudly
@@ -12,7 +12,7 @@ use kinematics_model::{Elementary, KinematicTree, parse_source};
 use proptest::prelude::*;
 use proptest::test_runner::Config;
 
-const LABELS: [&str; 3] = ["fuzz.urdf", "fuzz.toml", "fuzz.json"];
+const LABELS: [&str; 4] = ["fuzz.urdf", "fuzz.mjcf", "fuzz.toml", "fuzz.json"];
 
 /// Every number a tree holds is finite (the model's invariant; later stages rely on it); limits
 /// may be infinite (unbounded, as written), never NaN.
@@ -47,7 +47,7 @@ fn robot_files() -> Vec<(String, String)> {
     let mut files: Vec<(String, String)> = std::fs::read_dir(dir)
         .unwrap()
         .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|e| e == "urdf" || e == "toml" || e == "json"))
+        .filter(|p| p.extension().is_some_and(|e| e == "urdf" || e == "xml" || e == "toml" || e == "json"))
         .map(|p| (p.file_name().unwrap().to_string_lossy().into_owned(), std::fs::read_to_string(&p).unwrap()))
         .collect();
     files.sort();
@@ -229,7 +229,11 @@ proptest! {
             "<axis xyz=\"0 0 1e200\"/>", "<limit lower=\"1\" upper=\"-1\" effort=\"1\" velocity=\"1\"/>", "<mimic joint=\"j\" multiplier=\"1e300\"/>",
             "convention = \"standard\"\n", "[[joints]]\n", "name = \"j\"\n", "a = 1e308\n", "alpha = \"pi/0\"\n", "theta = \"1e400*pi\"\n",
             "offset = \"-pi/2\"\n", "lower = \"pi\"\nupper = \"-pi\"\n", "[tool]\n", "rpy = [\"pi\", 0.0, 1e308]\n", "type = \"prismatic\"\n",
-            "{\"convention\": \"modified\", \"joints\": [", "{\"name\": \"j\", \"a\": 1e308}", "]}", ",", "\"", "=", "\n", "<", ">",
+            "{\"convention\": \"modified\", \"joints\": [",
+            "<mujoco>", "</mujoco>", "<worldbody>", "</worldbody>", "<body name=\"b\" quat=\"0 0 0 1e-320\">", "</body>",
+            "<joint name=\"h\" pos=\"1e308 0 0\" axis=\"0 0 1e-300\" ref=\"1e308\"/>", "<site name=\"s\" type=\"box\" fromto=\"0 0 0 0 0 1e-320\"/>",
+            "<frame euler=\"1e308 0 nan\">", "</frame>", "<freejoint/>", "<compiler eulerseq=\"zYx\" angle=\"radian\"/>",
+            "<equality><joint joint1=\"h\" joint2=\"h\" polycoef=\"inf 1e308 0 0 0\"/></equality>", "<default><joint range=\"1 -1\"/></default>", "{\"name\": \"j\", \"a\": 1e308}", "]}", ",", "\"", "=", "\n", "<", ">",
         ]), 0..24)
     ) {
         let text: String = parts.concat();

@@ -47,6 +47,7 @@ fn description(n: usize, parent: impl Fn(usize) -> usize, mimic: impl Fn(usize) 
         links: (0..=n).rev().map(|i| name("link", i)).collect(),
         joints: (1..=n).rev().map(|i| joint(i, parent(i), mimic(i))).collect(),
         collisions: Vec::new(),
+        ignored: Vec::new(),
     }
 }
 

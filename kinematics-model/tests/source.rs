@@ -38,7 +38,7 @@ fn an_unknown_extension_names_the_file() {
     assert!(matches!(error.kind, LoadErrorKind::UnknownFormat), "{error:?}");
     assert_eq!(
         error.to_string(),
-        "robots/arm.xacro: unknown description format (expected .urdf, .xml, .toml or .json)"
+        "robots/arm.xacro: unknown description format (expected .urdf, .xml, .mjcf, .toml or .json)"
     );
 }
 

@@ -26,7 +26,7 @@
 //! | [`checks`] | how the generated code is checked, and how closely it agrees |
 //! | [`speed`] | every timing, with the command that took it |
 //! | [`runtime`] | the runtime reference ([`ReferenceFk`](crate::ReferenceFk)) |
-//! | [`descriptions`] | URDF and DH tables: what is read, and the robots in `robots/` |
+//! | [`descriptions`] | URDF, MJCF and DH tables: what is read, what is ignored, and the robots in `robots/` |
 //! | [`layout`] | the crates and where the design is written down |
 //!
 //! The examples load robots from `robots/` in the repository (paths in `urdf = "..."` are relative

@@ -94,6 +94,13 @@ fn reference(cx: &Context<'_>) -> TokenStream {
     let p = &cx.p;
     let (label, text) = (&cx.spec.source_label, &cx.spec.source_text);
     let policy = policy_tokens(p, cx.tree().exact_angles());
+    if let Some(files) = &cx.spec.source_files {
+        let floating = match &cx.options().floating_base {
+            None => quote!(::core::option::Option::None),
+            Some(link) => quote!(::core::option::Option::Some(#link)),
+        };
+        return quote!(#p::parse_source_files(#label, #text, #files, #policy, #floating));
+    }
     match &cx.options().floating_base {
         None => quote!(#p::parse_source_with(#label, #text, #policy)),
         Some(link) => quote!(#p::parse_source_floating(#label, #text, #policy, #link)),

@@ -53,6 +53,10 @@ pub struct RobotSpec<'a> {
     pub source_label: String,
     /// An expression of type `&'static str` holding the description's text (e.g. `include_str!`).
     pub source_text: TokenStream,
+    /// For a description that names other files (an MJCF `<include>` or `<model file>`), an
+    /// expression of type `&'static [(&'static str, &'static str)]` holding each (path as
+    /// written, text), which `reference()` reads them from; `None` for one that names none.
+    pub source_files: Option<TokenStream>,
     /// The generic parameters of the impls, with their bounds (`<'a, T: Clone, const N: usize>`,
     /// syn's `impl_generics`); empty for a type without generics. `self_ty` carries the arguments.
     pub impl_generics: TokenStream,

@@ -1,0 +1,1056 @@
+//! MJCF front end: the kinematics of a MuJoCo model (`<mujoco>`) into a [`Description`].
+//!
+//! MuJoCo's documentation is the authority; the sections are cited where each rule is applied
+//! (XML reference: `compiler`, `default`, `body`, `body/joint`, `body/freejoint`, `body/site`,
+//! `frame`, `attach`, `include`, `equality/joint`; Modeling chapter: "Frame orientations",
+//! "Default settings", "Model composition").
+//!
+//! - The world body is the link `world`; each `<body>` is a link named as the body, its frame
+//!   its `pos` and orientation in its parent's frame (both default to the identity).
+//! - A body's joints move it relative to its parent, composed in the order written (MuJoCo's
+//!   rule, XML reference `body/joint`): `hinge` is revolute, `slide` prismatic, about `axis`
+//!   (default `0 0 1`) through `pos` in the body's frame, moving by `qpos - ref`. A hinge off the
+//!   body's origin is `Trans(pos) Rot(axis, q - ref) Trans(-pos)`, exactly. Of several joints in
+//!   one body, all but the last move an intermediate link named `body.joint`. A body without
+//!   joints is welded to its parent by a fixed joint named as the body.
+//! - `range` gives limits when `limited="true"`, or when `limited` is `auto` (the default) and
+//!   `<compiler autolimits>` is true (the default) and a range is written; with
+//!   `autolimits="false"` a range needs `limited="true"`, as MuJoCo's compiler requires. An
+//!   unlimited hinge is a continuous joint; an unlimited slide a prismatic joint without limits.
+//! - `free` joints (and `<freejoint>`) are the floating base ([`crate::JointKind::Floating`]),
+//!   allowed only as the one joint of a child of the world body: `q` is the body's position and
+//!   then its quaternion as `qx, qy, qz, qw` (MuJoCo's `qpos` writes `qw` first), and the body's
+//!   `pos` and orientation are only MuJoCo's initial `qpos`, not part of the kinematics. An
+//!   unnamed free joint is named `root_joint`. `ball` joints are refused (the model has no
+//!   spherical joint yet).
+//! - Named `<site>`s and named `<frame>`s become links joined to their body by a fixed joint,
+//!   both named as the site or frame, so they can be tips; a frame's transform applies to
+//!   everything inside it. Unnamed sites are skipped (nothing could name them as a tip).
+//! - Orientation: `quat`, `axisangle`, `euler` (with `<compiler eulerseq>`), `xyaxes`, `zaxis`,
+//!   and a site's `fromto`, mapped onto elementary rotations as the `rotation` module says. Angles are
+//!   degrees unless `<compiler angle="radian">`; whole degrees are exact multiples of pi.
+//! - `<default>` classes (nested, `class` and `childclass`) give joints, sites and equality
+//!   constraints their attributes, as MuJoCo's Modeling chapter, "Default settings", describes.
+//! - `<include file>` inserts another file's children of `<mujoco>` (read through the caller's
+//!   [`ReadFile`]; paths as written, for the caller to resolve relative to the main file's
+//!   directory, as MuJoCo does); `<attach model body prefix>` attaches body `body` of the
+//!   `<asset><model file>` named `model`, with every name prefixed and that file's own compiler
+//!   settings and classes (its `<equality>` constraints are listed in [`Description::ignored`],
+//!   not read).
+//! - `<equality><joint joint1 joint2 polycoef>` with a linear polynomial makes `joint1` a mimic of
+//!   `joint2`: MuJoCo's constraint `y - y0 = a0 + a1 (x - x0)` (y0, x0 the joints' `ref`) is
+//!   `multiplier = a1`, `offset = a0 + y0 - a1 x0`. Every other equality (connect, weld, tendon,
+//!   a joint polynomial of higher degree, an inactive one, one without `joint2`) is listed in
+//!   [`Description::ignored`] and not applied.
+//! - Geometry, inertia, actuators, sensors, tendons, contacts, keyframes, cameras and lights are
+//!   not kinematics and are ignored; an element MuJoCo does not define, in `<mujoco>` or among a
+//!   body's, frame's or the world body's children, is refused. On the elements read (`body`, `joint`, `freejoint`, `site`,
+//!   `frame`, `compiler`, `equality/joint`), every attribute is either used, or one of MuJoCo's
+//!   that has no kinematic effect (damping, `rgba`, ...), or refused naming the element and line.
+//!
+//! Why not `mjcf-rs`: it was read (0.36.1) and would resolve includes, classes and orientation
+//! forms, but it reads included files from disk itself (this crate does no IO), keeps no line
+//! numbers for its errors, folds every orientation into a quaternion after converting degrees to
+//! radians (so `euler="0 90 0"` can no longer be an exact quarter turn), silently skips letters of
+//! `eulerseq` that are no axis, turns a zero quaternion, axis or `xyaxes` pair into the identity
+//! rather than refusing it, and ignores attributes it does not know. The reader is therefore
+//! written on `roxmltree`, as the URDF reader is.
+
+mod rotation;
+
+use std::collections::BTreeMap;
+
+use roxmltree::{Document, Node};
+
+use crate::angle::Angle;
+use crate::description::{Description, JointDescription, JointTypeDescription, LimitsDescription, MimicDescription};
+use crate::error::{Element, LoadErrorKind};
+use crate::transform::FixedTransform;
+use crate::urdf::{row, xml_error};
+
+/// Supplies the text of a file an MJCF document names (`<include file>`, `<model file>`), by the
+/// path as written; an `Err` carries the reason, which the error naming the element shows. The
+/// model crate reads no files: the facade, the build API, the derive and the CLI pass one that
+/// reads relative to the main file's directory.
+pub type ReadFile<'a> = &'a dyn Fn(&str) -> Result<String, String>;
+
+/// The name of the world body's link.
+pub const WORLD: &str = "world";
+
+/// Parses MJCF text that names no other file; an `<include>` or `<model file>` is an error
+/// naming its line ([`parse_mjcf_with`] takes a [`ReadFile`]).
+pub fn parse_mjcf(text: &str) -> Result<Description, LoadErrorKind> {
+    parse_mjcf_with(text, &|path| Err(format!("`{path}` cannot be read here (no file reader was given)")))
+}
+
+/// Parses MJCF text, reading the files it names through `read`.
+pub fn parse_mjcf_with(text: &str, read: ReadFile<'_>) -> Result<Description, LoadErrorKind> {
+    let texts = gather(text, read)?;
+    let mut docs = BTreeMap::new();
+    for (file, text) in &texts {
+        let options = roxmltree::ParsingOptions { allow_dtd: true, ..roxmltree::ParsingOptions::default() };
+        let doc = Document::parse_with_options(text, options).map_err(|e| in_file(file, mjcf_xml_error(text, &e)))?;
+        docs.insert(file.clone(), doc);
+    }
+    #[allow(clippy::expect_used, reason = "invariant: `gather` starts from the main text")]
+    let main = docs.get(MAIN).expect("invariant: the main file is among the documents");
+    let root = main.root_element();
+    let place = Place { file: MAIN, doc: main };
+    if root.tag_name().name() != "mujoco" {
+        return Err(place.error(root, None, format!("the root element is <{}>, not <mujoco>", root.tag_name().name())));
+    }
+    let mut reader = Reader { docs: &docs, description: Description::default(), refs: BTreeMap::new() };
+    reader.description.name = root.attribute("model").unwrap_or("MuJoCo Model").to_owned();
+    reader.description.links.push(WORLD.to_owned());
+    let model = reader.settings(MAIN, String::new())?;
+    reader.check_sections(MAIN)?;
+    for (place, node) in reader.top_level(MAIN, &mut Vec::new())? {
+        if node.tag_name().name() == "worldbody" {
+            reader.children(&model, place, node, WORLD, &FixedTransform::identity(), None, true)?;
+        }
+    }
+    for (place, node) in reader.top_level(MAIN, &mut Vec::new())? {
+        if node.tag_name().name() == "equality" {
+            reader.equality(&model, place, node)?;
+        }
+    }
+    Ok(reader.description)
+}
+
+/// The main file's key among the documents.
+const MAIN: &str = "";
+
+/// Every file the document names, read once each: the main text under [`MAIN`], the rest under
+/// their paths as written.
+fn gather(text: &str, read: ReadFile<'_>) -> Result<BTreeMap<String, String>, LoadErrorKind> {
+    let mut texts = BTreeMap::from([(MAIN.to_owned(), text.to_owned())]);
+    let mut pending = vec![MAIN.to_owned()];
+    while let Some(file) = pending.pop() {
+        #[allow(clippy::expect_used, reason = "invariant: a file is pending once its text is in `texts`")]
+        let text = texts.get(&file).expect("invariant: a pending file was read");
+        let options = roxmltree::ParsingOptions { allow_dtd: true, ..roxmltree::ParsingOptions::default() };
+        let doc = Document::parse_with_options(text, options).map_err(|e| in_file(&file, mjcf_xml_error(text, &e)))?;
+        let place = Place { file: &file, doc: &doc };
+        let mut found = Vec::new();
+        for node in doc.descendants().filter(|n| n.is_element()) {
+            let named = match node.tag_name().name() {
+                "include" => true,
+                "model" => node.parent_element().is_some_and(|p| p.tag_name().name() == "asset"),
+                _ => false,
+            };
+            if !named {
+                continue;
+            }
+            let Some(path) = node.attribute("file") else {
+                return Err(place.error(node, None, format!("<{}> needs a `file` attribute", node.tag_name().name())));
+            };
+            if !texts.contains_key(path) && !found.iter().any(|(p, _)| p == path) {
+                let text = read(path).map_err(|why| place.error(node, None, format!("cannot read `{path}`: {why}")))?;
+                found.push((path.to_owned(), text));
+            }
+        }
+        for (path, text) in found {
+            pending.push(path.clone());
+            texts.insert(path, text);
+        }
+    }
+    Ok(texts)
+}
+
+/// Malformed XML, as the URDF reader words it, a second root element named as MJCF's.
+fn mjcf_xml_error(text: &str, error: &roxmltree::Error) -> LoadErrorKind {
+    match xml_error(text, error) {
+        LoadErrorKind::Syntax { line, message } if message.starts_with("a second root element") => {
+            LoadErrorKind::Syntax { line, message: "a second root element: an MJCF file holds one <mujoco>".to_owned() }
+        }
+        other => other,
+    }
+}
+
+/// An error in file `file` (the main one or one it names).
+fn in_file(file: &str, error: LoadErrorKind) -> LoadErrorKind {
+    if file == MAIN { error } else { LoadErrorKind::Included { file: file.to_owned(), error: Box::new(error) } }
+}
+
+/// A document and its name, for errors.
+#[derive(Clone, Copy)]
+struct Place<'d, 't> {
+    file: &'d str,
+    doc: &'d Document<'t>,
+}
+
+impl Place<'_, '_> {
+    fn line(&self, byte: usize) -> usize {
+        row(self.doc.text_pos_at(byte))
+    }
+
+    fn error(&self, node: Node<'_, '_>, element: Option<Element>, message: String) -> LoadErrorKind {
+        let line = self.line(node.range().start);
+        in_file(self.file, LoadErrorKind::Located { element, line, message })
+    }
+
+    fn written(&self, node: Node<'_, '_>, name: &str, value: &str) -> Written {
+        let byte = node.attributes().find(|a| a.name() == name).map_or(node.range().start, |a| a.range().start);
+        Written { value: value.to_owned(), file: self.file.to_owned(), line: self.line(byte) }
+    }
+}
+
+/// An attribute's value and where it was written (the element itself or a default class).
+#[derive(Debug, Clone)]
+struct Written {
+    value: String,
+    file: String,
+    line: usize,
+}
+
+impl Written {
+    fn error(&self, element: &Option<Element>, message: String) -> LoadErrorKind {
+        in_file(&self.file, LoadErrorKind::Located { element: element.clone(), line: self.line, message })
+    }
+
+    /// Exactly `N` numbers.
+    fn numbers<const N: usize>(&self, name: &str, element: &Option<Element>) -> Result<[f64; N], LoadErrorKind> {
+        let words: Vec<&str> = self.value.split_whitespace().collect();
+        if words.len() != N {
+            let found = words.len();
+            return Err(self.error(element, format!("`{name}=\"{}\"` needs {N} numbers, found {found}", self.value)));
+        }
+        let mut out = [0.0; N];
+        for (slot, word) in out.iter_mut().zip(words) {
+            *slot = word
+                .parse()
+                .map_err(|_| self.error(element, format!("`{name}=\"{}\"`: `{word}` is not a number", self.value)))?;
+        }
+        Ok(out)
+    }
+
+    fn word<'a>(&self, name: &str, element: &Option<Element>, words: &[&'a str]) -> Result<&'a str, LoadErrorKind> {
+        let value = self.value.trim();
+        words.iter().find(|w| **w == value).copied().ok_or_else(|| {
+            self.error(element, format!("`{name}=\"{}\"` is not one of {}", self.value, words.join(", ")))
+        })
+    }
+}
+
+/// `<compiler>` settings that change kinematics (XML reference, `compiler`).
+#[derive(Debug, Clone, Copy)]
+struct Compiler {
+    /// `angle="degree"` (MuJoCo's default) or `"radian"`.
+    degrees: bool,
+    /// `eulerseq`, default `xyz`.
+    eulerseq: [u8; 3],
+    /// `autolimits`, default true.
+    autolimits: bool,
+}
+
+impl Default for Compiler {
+    fn default() -> Self {
+        Compiler { degrees: true, eulerseq: *b"xyz", autolimits: true }
+    }
+}
+
+/// One `<default>` class: its parent and its prototypes' attributes by element tag.
+#[derive(Debug, Clone, Default)]
+struct Class {
+    parent: Option<String>,
+    prototypes: BTreeMap<&'static str, BTreeMap<String, Written>>,
+}
+
+/// What one model file's elements are read with: its compiler settings, its classes, and the
+/// prefix its names get (empty for the main file; an `<attach>`'s `prefix`).
+struct Model {
+    compiler: Compiler,
+    classes: BTreeMap<String, Class>,
+    prefix: String,
+}
+
+/// The element tags default classes give attributes to (others, such as `geom`, are ignored).
+const DEFAULTED: [&str; 3] = ["joint", "site", "equality"];
+
+/// The orientation attributes, one of which a frame may have (XML reference, `body`).
+const ORIENTATION: [&str; 5] = ["quat", "axisangle", "xyaxes", "zaxis", "euler"];
+
+/// Attributes each element read may carry: those used, then those MuJoCo gives no kinematic
+/// effect (physics, rendering), which are ignored. Anything else is refused.
+fn known(tag: &str) -> (&'static [&'static str], &'static [&'static str]) {
+    match tag {
+        "body" => (
+            &["name", "childclass", "pos", "quat", "axisangle", "xyaxes", "zaxis", "euler", "mocap"],
+            &["gravcomp", "user", "sleep"],
+        ),
+        "joint" => (
+            &["name", "class", "type", "pos", "axis", "limited", "range", "ref"],
+            &[
+                "group",
+                "springdamper",
+                "actuatorfrclimited",
+                "solreflimit",
+                "solimplimit",
+                "solreffriction",
+                "solimpfriction",
+                "stiffness",
+                "actuatorfrcrange",
+                "actuatorgravcomp",
+                "margin",
+                "springref",
+                "armature",
+                "damping",
+                "frictionloss",
+                "user",
+            ],
+        ),
+        "freejoint" => (&["name", "align"], &["group"]),
+        "site" => (
+            &["name", "class", "type", "pos", "quat", "axisangle", "xyaxes", "zaxis", "euler", "fromto"],
+            &["group", "size", "material", "rgba", "user"],
+        ),
+        "frame" => (&["name", "childclass", "pos", "quat", "axisangle", "xyaxes", "zaxis", "euler"], &[]),
+        "equality" => (&["name", "class", "joint1", "joint2", "polycoef", "active"], &["solref", "solimp"]),
+        _ => (&[], &[]),
+    }
+}
+
+struct Reader<'d, 't> {
+    docs: &'d BTreeMap<String, Document<'t>>,
+    description: Description,
+    /// Each hinge and slide joint's `ref` (qpos units), for equality constraints.
+    refs: BTreeMap<String, f64>,
+}
+
+type Elements<'d, 't> = Vec<(Place<'d, 't>, Node<'d, 't>)>;
+
+impl<'d, 't> Reader<'d, 't> {
+    fn place(&self, file: &str) -> Place<'d, 't> {
+        #[allow(clippy::expect_used, reason = "invariant: `gather` read every file an element names")]
+        let (file, doc) = self.docs.get_key_value(file).expect("invariant: every named file was gathered");
+        Place { file, doc }
+    }
+
+    /// The element children of `node`, with `<include>`s replaced by the included file's
+    /// children of `<mujoco>` (XML reference, `include`), recursively; `stack` holds the files
+    /// being included, to refuse a cycle.
+    fn expand(
+        &self,
+        place: Place<'d, 't>,
+        node: Node<'d, 't>,
+        stack: &mut Vec<String>,
+    ) -> Result<Elements<'d, 't>, LoadErrorKind> {
+        let mut out = Vec::new();
+        for child in node.children().filter(|c| c.is_element()) {
+            if child.tag_name().name() != "include" {
+                out.push((place, child));
+                continue;
+            }
+            for attribute in child.attributes() {
+                if attribute.name() != "file" {
+                    let message = format!("<include> takes only `file`, not `{}`", attribute.name());
+                    return Err(place.error(child, None, message));
+                }
+            }
+            #[allow(clippy::expect_used, reason = "invariant: `gather` refused an <include> without `file`")]
+            let file = child.attribute("file").expect("invariant: an include names its file");
+            if stack.iter().any(|f| f == file) || file == place.file {
+                return Err(place.error(child, None, format!("`{file}` includes itself (an include cycle)")));
+            }
+            let included = self.place(file);
+            let root = included.doc.root_element();
+            if root.tag_name().name() != "mujoco" {
+                let message = format!("the root element is <{}>, not <mujoco>", root.tag_name().name());
+                return Err(included.error(root, None, message));
+            }
+            stack.push(file.to_owned());
+            out.extend(self.expand(included, root, stack)?);
+            stack.pop();
+        }
+        Ok(out)
+    }
+
+    fn top_level(&self, file: &str, stack: &mut Vec<String>) -> Result<Elements<'d, 't>, LoadErrorKind> {
+        let place = self.place(file);
+        self.expand(place, place.doc.root_element(), stack)
+    }
+
+    /// Refuses an element of `<mujoco>` that MuJoCo's XML reference does not define (a misspelt
+    /// `<worldbdy>` is an error, not a robot without bodies); the sections that hold no
+    /// kinematics are ignored.
+    fn check_sections(&self, file: &str) -> Result<(), LoadErrorKind> {
+        const SECTIONS: [&str; 17] = [
+            "compiler",
+            "option",
+            "size",
+            "visual",
+            "statistic",
+            "default",
+            "extension",
+            "custom",
+            "asset",
+            "worldbody",
+            "contact",
+            "deformable",
+            "equality",
+            "tendon",
+            "actuator",
+            "sensor",
+            "keyframe",
+        ];
+        for (place, node) in self.top_level(file, &mut Vec::new())? {
+            let tag = node.tag_name().name();
+            if !SECTIONS.contains(&tag) {
+                return Err(place.error(node, None, format!("unknown element <{tag}> in <mujoco>")));
+            }
+        }
+        Ok(())
+    }
+
+    /// The compiler settings and default classes of model file `file`.
+    fn settings(&self, file: &str, prefix: String) -> Result<Model, LoadErrorKind> {
+        let mut model = Model { compiler: Compiler::default(), classes: BTreeMap::new(), prefix };
+        let top = self.top_level(file, &mut Vec::new())?;
+        for (place, node) in &top {
+            if node.tag_name().name() == "compiler" {
+                compiler(*place, *node, &mut model.compiler)?;
+            }
+        }
+        for (place, node) in top {
+            if node.tag_name().name() == "default" {
+                self.default_class(&mut model, place, node, None)?;
+            }
+        }
+        model.classes.entry("main".to_owned()).or_default();
+        Ok(model)
+    }
+
+    /// A `<default>` element and those nested in it (Modeling chapter, "Default settings"): the
+    /// top one is class `main`, nested ones need a `class` and inherit from their parent.
+    fn default_class(
+        &self,
+        model: &mut Model,
+        place: Place<'d, 't>,
+        node: Node<'d, 't>,
+        parent: Option<&str>,
+    ) -> Result<(), LoadErrorKind> {
+        let name = match (node.attribute("class"), parent) {
+            (Some(name), _) => name.to_owned(),
+            (None, None) => "main".to_owned(),
+            (None, Some(_)) => return Err(place.error(node, None, "a nested <default> needs a `class`".to_owned())),
+        };
+        if model.classes.contains_key(&name) && !(name == "main" && parent.is_none()) {
+            return Err(place.error(node, None, format!("default class `{name}` is defined more than once")));
+        }
+        // A second top-level <default> adds to class `main` (a prototype written again replaces
+        // the earlier one's attributes it repeats).
+        let mut class = match model.classes.remove(&name) {
+            Some(main) => main,
+            None => Class { parent: parent.map(str::to_owned), prototypes: BTreeMap::new() },
+        };
+        for (place, child) in self.expand(place, node, &mut Vec::new())? {
+            let tag = child.tag_name().name();
+            if tag == "default" {
+                continue;
+            }
+            let Some(tag) = DEFAULTED.iter().find(|t| **t == tag) else { continue };
+            let (used, ignored) = known(tag);
+            let mut attributes = BTreeMap::new();
+            for a in child.attributes() {
+                if !used.contains(&a.name()) && !ignored.contains(&a.name()) || a.name() == "name" {
+                    let message = format!("<default> <{tag}>: unknown attribute `{}`", a.name());
+                    return Err(place.error(child, None, message));
+                }
+                attributes.insert(a.name().to_owned(), place.written(child, a.name(), a.value()));
+            }
+            class.prototypes.entry(tag).or_default().extend(attributes);
+        }
+        model.classes.insert(name.clone(), class);
+        for (place, child) in self.expand(place, node, &mut Vec::new())? {
+            if child.tag_name().name() == "default" {
+                self.default_class(model, place, child, Some(&name))?;
+            }
+        }
+        Ok(())
+    }
+
+    /// The attributes of element `node` (tag `tag`) after its class's defaults: the element's own
+    /// win, and an orientation written at a level replaces every orientation form below it.
+    #[allow(clippy::too_many_arguments)]
+    fn attributes(
+        &self,
+        model: &Model,
+        place: Place<'d, 't>,
+        node: Node<'d, 't>,
+        tag: &str,
+        childclass: Option<&str>,
+        element: &Option<Element>,
+    ) -> Result<BTreeMap<String, Written>, LoadErrorKind> {
+        let (used, ignored) = known(tag);
+        for a in node.attributes() {
+            if !used.contains(&a.name()) && !ignored.contains(&a.name()) {
+                let message = format!("<{}>: unknown attribute `{}`", node.tag_name().name(), a.name());
+                return Err(place.error(node, element.clone(), message));
+            }
+        }
+        let mut levels = Vec::new();
+        if DEFAULTED.contains(&tag) {
+            let class = node.attribute("class").or(childclass).unwrap_or("main");
+            let mut at = Some(class.to_owned());
+            while let Some(name) = at {
+                let Some(class) = model.classes.get(&name) else {
+                    return Err(place.error(node, element.clone(), format!("default class `{name}` does not exist")));
+                };
+                if let Some(p) = class.prototypes.get(tag) {
+                    levels.push(p.clone());
+                }
+                at = class.parent.clone();
+            }
+        }
+        levels.reverse();
+        levels
+            .push(node.attributes().map(|a| (a.name().to_owned(), place.written(node, a.name(), a.value()))).collect());
+        let mut out: BTreeMap<String, Written> = BTreeMap::new();
+        for level in levels {
+            if level.keys().any(|k| ORIENTATION.contains(&k.as_str())) {
+                out.retain(|k, _| !ORIENTATION.contains(&k.as_str()));
+            }
+            out.extend(level);
+        }
+        Ok(out)
+    }
+
+    /// The children of a body, frame or the world body: bodies, frames, sites, attachments; with
+    /// `frame` the transform from `parent`'s frame to theirs. Joints are read by [`Self::body`].
+    #[allow(clippy::too_many_arguments)]
+    fn children(
+        &mut self,
+        model: &Model,
+        place: Place<'d, 't>,
+        node: Node<'d, 't>,
+        parent: &str,
+        frame: &FixedTransform,
+        childclass: Option<&str>,
+        top: bool,
+    ) -> Result<(), LoadErrorKind> {
+        for (place, child) in self.expand(place, node, &mut Vec::new())? {
+            match child.tag_name().name() {
+                "body" => self.body(model, place, child, parent, frame, childclass, top)?,
+                "frame" => {
+                    let name = child.attribute("name").map(|n| format!("{}{n}", model.prefix));
+                    let element = name.clone().map(Element::Frame);
+                    let attributes = self.attributes(model, place, child, "frame", childclass, &element)?;
+                    let inner = frame.clone().then(&pose(model, &attributes, &element)?);
+                    if let Some(name) = name {
+                        self.fixed(&name, parent, inner.clone());
+                    }
+                    let childclass = child.attribute("childclass").or(childclass);
+                    self.children(model, place, child, parent, &inner, childclass, top)?;
+                }
+                "site" => {
+                    let Some(name) = child.attribute("name") else { continue };
+                    let name = format!("{}{name}", model.prefix);
+                    let element = Some(Element::Site(name.clone()));
+                    let attributes = self.attributes(model, place, child, "site", childclass, &element)?;
+                    let origin = frame.clone().then(&site_pose(model, &attributes, &element)?);
+                    self.fixed(&name, parent, origin);
+                }
+                "attach" => self.attach(model, place, child, parent, frame)?,
+                "joint" | "freejoint" if node.tag_name().name() != "body" => {
+                    let message = format!(
+                        "a <{}> belongs in a <body>, not in <{}>",
+                        child.tag_name().name(),
+                        node.tag_name().name()
+                    );
+                    return Err(place.error(child, None, message));
+                }
+                "replicate" | "composite" | "flexcomp" => {
+                    let message =
+                        format!("<{}> (bodies generated by the compiler) is not read", child.tag_name().name());
+                    return Err(place.error(child, None, message));
+                }
+                // Joints are the body's; geometry, inertia, cameras, lights and plugins are not kinematics.
+                "joint" | "freejoint" | "geom" | "inertial" | "camera" | "light" | "plugin" => {}
+                other => {
+                    let message = format!("unknown element <{other}> in <{}>", node.tag_name().name());
+                    return Err(place.error(child, None, message));
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// A link `name` fixed to `parent` by a joint of the same name.
+    fn fixed(&mut self, name: &str, parent: &str, origin: FixedTransform) {
+        self.description.links.push(name.to_owned());
+        self.description.joints.push(JointDescription {
+            name: name.to_owned(),
+            element: Element::Joint(name.to_owned()),
+            kind: JointTypeDescription::Fixed,
+            parent: parent.to_owned(),
+            child: name.to_owned(),
+            origin,
+            after_motion: FixedTransform::identity(),
+            // URDF's default axis, which a fixed joint keeps unused.
+            axis: [1.0, 0.0, 0.0],
+            limits: None,
+            mimic: None,
+        });
+    }
+
+    /// One `<body>` (XML reference, `body`), its joints and its children.
+    #[allow(clippy::too_many_arguments)]
+    fn body(
+        &mut self,
+        model: &Model,
+        place: Place<'d, 't>,
+        node: Node<'d, 't>,
+        parent: &str,
+        frame: &FixedTransform,
+        childclass: Option<&str>,
+        top: bool,
+    ) -> Result<(), LoadErrorKind> {
+        let Some(name) = node.attribute("name") else {
+            let message = "a <body> needs a `name` (it is a link of the robot)".to_owned();
+            return Err(place.error(node, None, message));
+        };
+        let name = format!("{}{name}", model.prefix);
+        let element = Some(Element::Body(name.clone()));
+        let attributes = self.attributes(model, place, node, "body", childclass, &element)?;
+        if let Some(mocap) = attributes.get("mocap")
+            && mocap.word("mocap", &element, &["true", "false"])? == "true"
+        {
+            return Err(mocap.error(&element, "a mocap body (placed by the simulation's data) is not read".to_owned()));
+        }
+        let body_pose = frame.clone().then(&pose(model, &attributes, &element)?);
+        let childclass = node.attribute("childclass").or(childclass);
+        let elements = self.expand(place, node, &mut Vec::new())?;
+        let joints: Vec<_> =
+            elements.iter().filter(|(_, n)| matches!(n.tag_name().name(), "joint" | "freejoint")).collect();
+        if joints.is_empty() {
+            self.fixed(&name, parent, body_pose.clone());
+        }
+        let mut link = parent.to_owned();
+        let count = joints.len();
+        for (k, (place, joint)) in joints.into_iter().enumerate() {
+            let child = if k + 1 == count { name.clone() } else { format!("{name}.{}", joint_name(model, *joint)) };
+            let origin = if k == 0 { body_pose.clone() } else { FixedTransform::identity() };
+            let description = self.joint(model, *place, *joint, &link, &child, origin, childclass, (top, count))?;
+            self.description.links.push(child.clone());
+            self.description.joints.push(description);
+            link = child;
+        }
+        self.children(model, place, node, &name, &FixedTransform::identity(), childclass, false)
+    }
+
+    /// One `<joint>` or `<freejoint>` (XML reference, `body/joint`, `body/freejoint`) moving
+    /// `child` relative to `parent`, after the fixed `origin`.
+    #[allow(clippy::too_many_arguments)]
+    fn joint(
+        &mut self,
+        model: &Model,
+        place: Place<'d, 't>,
+        node: Node<'d, 't>,
+        parent: &str,
+        child: &str,
+        origin: FixedTransform,
+        childclass: Option<&str>,
+        (top, count): (bool, usize),
+    ) -> Result<JointDescription, LoadErrorKind> {
+        let free_element = node.tag_name().name() == "freejoint";
+        let name = joint_name(model, node);
+        let element = Some(Element::Joint(name.clone()));
+        let tag = if free_element { "freejoint" } else { "joint" };
+        let attributes = self.attributes(model, place, node, tag, childclass, &element)?;
+        let kind = match attributes.get("type") {
+            _ if free_element => "free",
+            None => "hinge",
+            Some(t) => t.word("type", &element, &["hinge", "slide", "ball", "free"])?,
+        };
+        let here = |message: String| place.error(node, element.clone(), message);
+        if kind != "free" && node.attribute("name").is_none() {
+            return Err(here("a <joint> needs a `name` (it names a degree of freedom)".to_owned()));
+        }
+        let mut description = JointDescription {
+            name: name.clone(),
+            element: Element::Joint(name.clone()),
+            kind: JointTypeDescription::Floating,
+            parent: parent.to_owned(),
+            child: child.to_owned(),
+            origin: FixedTransform::identity(),
+            after_motion: FixedTransform::identity(),
+            axis: [0.0, 0.0, 1.0],
+            limits: None,
+            mimic: None,
+        };
+        match kind {
+            "ball" => {
+                return Err(here(
+                    "ball joints are not supported yet (the model has no spherical joint): write three hinges"
+                        .to_owned(),
+                ));
+            }
+            "free" => {
+                if !top || count != 1 {
+                    return Err(here(
+                        "a free joint must be the only joint of a body whose parent is the world body".to_owned(),
+                    ));
+                }
+                if let Some(align) = attributes.get("align")
+                    && align.word("align", &element, &["true", "false", "auto"])? == "true"
+                {
+                    return Err(align
+                        .error(&element, "`align=\"true\"` (a frame moved to the inertia's) is not read".to_owned()));
+                }
+                for refused in ["pos", "axis", "range", "limited", "ref"] {
+                    if let Some(w) = attributes.get(refused) {
+                        return Err(w.error(&element, format!("a free joint takes no `{refused}`")));
+                    }
+                }
+                return Ok(description);
+            }
+            _ => {}
+        }
+        let hinge = kind == "hinge";
+        let pos = match attributes.get("pos") {
+            Some(w) => w.numbers::<3>("pos", &element)?,
+            None => [0.0; 3],
+        };
+        let axis = match attributes.get("axis") {
+            Some(w) => w.numbers::<3>("axis", &element)?,
+            None => [0.0, 0.0, 1.0],
+        };
+        let length = (axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]).sqrt();
+        if length == 0.0 || !length.is_finite() {
+            let w = attributes.get("axis");
+            let message = "the axis is zero".to_owned();
+            return Err(w.map_or_else(|| here(message.clone()), |w| w.error(&element, message.clone())));
+        }
+        let unit = axis.map(|c| c / length);
+        // `ref`: the joint's value where the body is as written (qpos0); hinge refs are angles.
+        let reference = match attributes.get("ref") {
+            Some(w) => {
+                let [r] = w.numbers::<1>("ref", &element)?;
+                if hinge { angle(model, r) } else { Angle::Radians(r) }
+            }
+            None => Angle::ZERO,
+        };
+        self.refs.insert(name.clone(), reference.radians());
+        description.axis = axis;
+        description.limits = self.limits(model, &attributes, hinge, &element)?;
+        if hinge {
+            description.kind = if description.limits.is_some() {
+                JointTypeDescription::Revolute
+            } else {
+                JointTypeDescription::Continuous
+            };
+            // Trans(pos) Rot(axis, -ref) Rot(axis, q) Trans(-pos): the rotation about the axis
+            // through `pos`, by `q - ref` (XML reference, `body/joint`: pos, ref).
+            let mut origin = origin.translate(pos);
+            if !reference.is_zero() {
+                let Some(steps) = rotation::axis_angle(axis, rotation::negate(reference)) else {
+                    return Err(here("the axis is zero".to_owned()));
+                };
+                origin = steps.into_iter().fold(origin, |t, (a, angle)| t.rotate(a, angle));
+            }
+            description.origin = origin;
+            description.after_motion = FixedTransform::identity().translate(pos.map(|c| -c));
+        } else {
+            description.kind = JointTypeDescription::Prismatic;
+            // A slide moves along its axis wherever `pos` puts it: Trans(axis (q - ref)).
+            let r = reference.radians();
+            description.origin = origin.translate(unit.map(|c| -r * c));
+        }
+        Ok(description)
+    }
+
+    /// A joint's limits (XML reference, `body/joint`: limited, range; `compiler`: autolimits).
+    fn limits(
+        &self,
+        model: &Model,
+        attributes: &BTreeMap<String, Written>,
+        hinge: bool,
+        element: &Option<Element>,
+    ) -> Result<Option<LimitsDescription>, LoadErrorKind> {
+        let range = attributes.get("range");
+        let limited = match attributes.get("limited") {
+            Some(w) => w.word("limited", element, &["true", "false", "auto"])?,
+            None => "auto",
+        };
+        let limited = match (limited, range) {
+            ("true", _) => true,
+            ("false", _) => false,
+            (_, None) => false,
+            (_, Some(_)) if model.compiler.autolimits => true,
+            (_, Some(w)) => {
+                let message = "a `range` without `limited=\"true\"` under `<compiler autolimits=\"false\">`".to_owned();
+                return Err(w.error(element, message));
+            }
+        };
+        if !limited {
+            return Ok(None);
+        }
+        let Some(range) = range else {
+            let w = attributes.get("limited");
+            #[allow(clippy::expect_used, reason = "invariant: `limited` is only true when written")]
+            let w = w.expect("invariant: limited=true was written");
+            return Err(w.error(element, "`limited=\"true\"` needs a `range`".to_owned()));
+        };
+        let [lower, upper] = range.numbers::<2>("range", element)?;
+        let convert = |x: f64| if hinge && model.compiler.degrees { x.to_radians() } else { x };
+        Ok(Some(LimitsDescription { lower: convert(lower), upper: convert(upper), velocity: None, effort: None }))
+    }
+
+    /// `<attach model body prefix>` (XML reference, `attach`; Modeling chapter, "Model
+    /// composition"): body `body` of the model asset `model`, read with that file's compiler
+    /// settings and classes, every name prefixed.
+    fn attach(
+        &mut self,
+        model: &Model,
+        place: Place<'d, 't>,
+        node: Node<'d, 't>,
+        parent: &str,
+        frame: &FixedTransform,
+    ) -> Result<(), LoadErrorKind> {
+        for a in node.attributes() {
+            if !["model", "body", "prefix"].contains(&a.name()) {
+                return Err(place.error(node, None, format!("<attach>: unknown attribute `{}`", a.name())));
+            }
+        }
+        let required = |name: &str| {
+            node.attribute(name).ok_or_else(|| place.error(node, None, format!("<attach> needs a `{name}` attribute")))
+        };
+        let (asset, body) = (required("model")?, required("body")?);
+        let prefix = format!("{}{}", model.prefix, node.attribute("prefix").unwrap_or(""));
+        let Some(file) = self.model_file(asset)? else {
+            return Err(place.error(node, None, format!("no <asset><model name=\"{asset}\" file=...> to attach")));
+        };
+        let attached = self.settings(&file, prefix)?;
+        self.check_sections(&file)?;
+        let top_level = self.top_level(&file, &mut Vec::new())?;
+        for (p, equality) in top_level.iter().filter(|(_, n)| n.tag_name().name() == "equality") {
+            let line = p.line(equality.range().start);
+            self.description.ignored.push(format!(
+                "<equality> (line {line} of `{file}`, attached as `{asset}`): an attached model's constraints are not read"
+            ));
+        }
+        for (p, top) in top_level {
+            if top.tag_name().name() != "worldbody" {
+                continue;
+            }
+            if let Some(found) =
+                top.descendants().find(|n| n.tag_name().name() == "body" && n.attribute("name") == Some(body))
+            {
+                let childclass = found.ancestors().skip(1).find_map(|a| a.attribute("childclass"));
+                return self.body(&attached, p, found, parent, frame, childclass, parent == WORLD);
+            }
+        }
+        Err(place.error(node, None, format!("the model `{asset}` (`{file}`) has no body `{body}` to attach")))
+    }
+
+    /// The file of the model asset named `asset` in the main file's `<asset>`s.
+    fn model_file(&self, asset: &str) -> Result<Option<String>, LoadErrorKind> {
+        for (_, node) in self.top_level(MAIN, &mut Vec::new())? {
+            if node.tag_name().name() != "asset" {
+                continue;
+            }
+            for m in node.children().filter(|c| c.is_element() && c.tag_name().name() == "model") {
+                let name = m.attribute("name").or_else(|| m.attribute("file"));
+                if name == Some(asset) {
+                    return Ok(m.attribute("file").map(str::to_owned));
+                }
+            }
+        }
+        Ok(None)
+    }
+
+    /// `<equality>` (XML reference, `equality/joint`): linear joint couplings become mimics,
+    /// everything else is listed as ignored.
+    fn equality(&mut self, model: &Model, place: Place<'d, 't>, node: Node<'d, 't>) -> Result<(), LoadErrorKind> {
+        for (place, child) in self.expand(place, node, &mut Vec::new())? {
+            let tag = child.tag_name().name();
+            let line = place.line(child.range().start);
+            let label = match child.attribute("name") {
+                Some(name) => format!("<equality><{tag} name=\"{name}\"> (line {line})"),
+                None => format!("<equality><{tag}> (line {line})"),
+            };
+            if tag != "joint" {
+                self.description.ignored.push(format!("{label}: not kinematics of a tree, not applied"));
+                continue;
+            }
+            let element = None;
+            let attributes = self.attributes(model, place, child, "equality", None, &element)?;
+            if let Some(active) = attributes.get("active")
+                && active.word("active", &element, &["true", "false"])? == "false"
+            {
+                self.description.ignored.push(format!("{label}: inactive, not applied"));
+                continue;
+            }
+            let Some(joint1) = attributes.get("joint1") else {
+                return Err(place.error(child, None, "<equality><joint> needs `joint1`".to_owned()));
+            };
+            let Some(joint2) = attributes.get("joint2") else {
+                self.description.ignored.push(format!("{label}: holds `{}` at a constant, not applied", joint1.value));
+                continue;
+            };
+            let coefficients: Vec<f64> = match attributes.get("polycoef") {
+                Some(w) => w.numbers::<5>("polycoef", &element)?.to_vec(),
+                None => vec![0.0, 1.0, 0.0, 0.0, 0.0],
+            };
+            if coefficients[2..].iter().any(|c| *c != 0.0) {
+                self.description.ignored.push(format!("{label}: a polynomial of degree above 1, not applied"));
+                continue;
+            }
+            let (y, x) = (joint1.value.clone(), joint2.value.clone());
+            let (Some(&y0), Some(&x0)) = (self.refs.get(&y), self.refs.get(&x)) else {
+                let missing = if self.refs.contains_key(&y) { &x } else { &y };
+                return Err(place.error(
+                    child,
+                    None,
+                    format!("<equality><joint>: no hinge or slide joint `{missing}`"),
+                ));
+            };
+            let (a0, a1) = (coefficients[0], coefficients[1]);
+            #[allow(clippy::expect_used, reason = "invariant: `refs` holds the joints read")]
+            let follower = self.description.joints.iter_mut().find(|j| j.name == y).expect("invariant: a read joint");
+            if follower.mimic.is_some() {
+                return Err(place.error(child, None, format!("joint `{y}` is coupled by more than one <equality>")));
+            }
+            follower.mimic = Some(MimicDescription { joint: x, multiplier: a1, offset: a0 + y0 - a1 * x0 });
+        }
+        Ok(())
+    }
+}
+
+/// A joint's name with its model's prefix; an unnamed `<freejoint>` (or free joint) is
+/// `root_joint`, the floating base's name.
+fn joint_name(model: &Model, node: Node<'_, '_>) -> String {
+    match node.attribute("name") {
+        Some(name) => format!("{}{name}", model.prefix),
+        None => format!("{}{}", model.prefix, crate::description::FLOATING_BASE_JOINT),
+    }
+}
+
+/// An angle in the compiler's unit.
+fn angle(model: &Model, value: f64) -> Angle {
+    if model.compiler.degrees { Angle::from_degrees(value) } else { Angle::Radians(value) }
+}
+
+/// `<compiler>` (XML reference, `compiler`): `angle`, `eulerseq` and `autolimits` are read;
+/// `coordinate="global"` and `alignfree="true"` are refused; the rest (files, inertia, meshes)
+/// has no kinematic effect.
+fn compiler(place: Place<'_, '_>, node: Node<'_, '_>, out: &mut Compiler) -> Result<(), LoadErrorKind> {
+    for a in node.attributes() {
+        let w = place.written(node, a.name(), a.value());
+        let element = None;
+        match a.name() {
+            "angle" => out.degrees = w.word("angle", &element, &["degree", "radian"])? == "degree",
+            "autolimits" => out.autolimits = w.word("autolimits", &element, &["true", "false"])? == "true",
+            "eulerseq" => {
+                let seq = a.value().as_bytes();
+                let [x, y, z] = seq else {
+                    return Err(
+                        w.error(&element, format!("`eulerseq=\"{}\"` needs three letters of xyzXYZ", a.value()))
+                    );
+                };
+                if !seq.iter().all(|c| b"xyzXYZ".contains(c)) {
+                    return Err(
+                        w.error(&element, format!("`eulerseq=\"{}\"`: only x, y, z, X, Y, Z name axes", a.value()))
+                    );
+                }
+                out.eulerseq = [*x, *y, *z];
+            }
+            "coordinate" => {
+                w.word("coordinate", &element, &["local"])?;
+            }
+            "alignfree" => {
+                if w.word("alignfree", &element, &["true", "false"])? == "true" {
+                    return Err(w.error(
+                        &element,
+                        "`alignfree=\"true\"` (free bodies moved to their inertia's frame) is not read".to_owned(),
+                    ));
+                }
+            }
+            "meshdir" | "texturedir" | "assetdir" | "boundmass" | "boundinertia" | "settotalmass"
+            | "balanceinertia" | "strippath" | "discardvisual" | "convexhull" | "usethread" | "fitaabb"
+            | "inertiafromgeom" | "inertiagrouprange" | "exactmeshinertia" | "saveinertial" | "fusestatic"
+            | "maxhullvert" => {}
+            other => return Err(w.error(&element, format!("<compiler>: unknown attribute `{other}`"))),
+        }
+    }
+    Ok(())
+}
+
+/// A frame's `pos` and orientation (XML reference, `body`; Modeling chapter, "Frame
+/// orientations"): `Trans(pos)` then the rotation's elementary steps.
+fn pose(
+    model: &Model,
+    attributes: &BTreeMap<String, Written>,
+    element: &Option<Element>,
+) -> Result<FixedTransform, LoadErrorKind> {
+    let pos = match attributes.get("pos") {
+        Some(w) => w.numbers::<3>("pos", element)?,
+        None => [0.0; 3],
+    };
+    let steps = orientation(model, attributes, element)?;
+    Ok(steps.into_iter().fold(FixedTransform::identity().translate(pos), |t, (axis, a)| t.rotate(axis, a)))
+}
+
+/// A site's frame: as [`pose`], or from `fromto` (XML reference, `body/site`): the midpoint, with
+/// z along `to - from`, for the shapes that have an axis.
+fn site_pose(
+    model: &Model,
+    attributes: &BTreeMap<String, Written>,
+    element: &Option<Element>,
+) -> Result<FixedTransform, LoadErrorKind> {
+    let Some(fromto) = attributes.get("fromto") else { return pose(model, attributes, element) };
+    let kind = match attributes.get("type") {
+        Some(w) => w.word("type", element, &["sphere", "capsule", "ellipsoid", "cylinder", "box"])?,
+        None => "sphere",
+    };
+    if kind == "sphere" {
+        return Err(fromto
+            .error(element, "`fromto` needs a site type with an axis (capsule, ellipsoid, cylinder, box)".to_owned()));
+    }
+    for other in ["pos"].iter().chain(ORIENTATION.iter()) {
+        if let Some(w) = attributes.get(*other) {
+            return Err(w.error(element, format!("`{other}` and `fromto` cannot both place a site")));
+        }
+    }
+    let [x0, y0, z0, x1, y1, z1] = fromto.numbers::<6>("fromto", element)?;
+    let Some(steps) = rotation::z_axis([x1 - x0, y1 - y0, z1 - z0]) else {
+        return Err(fromto.error(element, "`fromto` has the same point twice".to_owned()));
+    };
+    let mid = [(x0 + x1) / 2.0, (y0 + y1) / 2.0, (z0 + z1) / 2.0];
+    Ok(steps.into_iter().fold(FixedTransform::identity().translate(mid), |t, (axis, a)| t.rotate(axis, a)))
+}
+
+/// The one orientation form written, as elementary rotations (the `rotation` module).
+fn orientation(
+    model: &Model,
+    attributes: &BTreeMap<String, Written>,
+    element: &Option<Element>,
+) -> Result<rotation::Steps, LoadErrorKind> {
+    let written: Vec<(&str, &Written)> =
+        ORIENTATION.iter().filter_map(|k| attributes.get(*k).map(|w| (*k, w))).collect();
+    let (form, w) = match written[..] {
+        [] => return Ok(Vec::new()),
+        [one] => one,
+        [_, (second, w), ..] => {
+            let message = format!("more than one orientation (`{}` and `{second}`): write one", written[0].0);
+            return Err(w.error(element, message));
+        }
+    };
+    let steps = match form {
+        "quat" => rotation::quaternion(w.numbers::<4>(form, element)?),
+        "axisangle" => {
+            let [x, y, z, a] = w.numbers::<4>(form, element)?;
+            rotation::axis_angle([x, y, z], angle(model, a))
+        }
+        "euler" => {
+            Some(rotation::euler(w.numbers::<3>(form, element)?.map(|a| angle(model, a)), model.compiler.eulerseq))
+        }
+        "xyaxes" => {
+            let [a, b, c, d, e, f] = w.numbers::<6>(form, element)?;
+            rotation::xy_axes([a, b, c], [d, e, f])
+        }
+        _ => rotation::z_axis(w.numbers::<3>(form, element)?),
+    };
+    steps
+        .ok_or_else(|| w.error(element, format!("`{form}=\"{}\"` is no rotation (a zero or parallel vector)", w.value)))
+}

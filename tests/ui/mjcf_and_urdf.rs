@@ -1,0 +1,7 @@
+use kinematics::Kinematics;
+
+#[derive(Kinematics)]
+#[kinematics(urdf = "../../../../robots/ur5.urdf", mjcf = "../../../../robots/ur5_mjcf.xml")]
+struct Robot;
+
+fn main() {}
