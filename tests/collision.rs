@@ -140,6 +140,9 @@ fn batches_lanes_and_f32_agree_with_the_scalar_centres() {
     }
 }
 
+#[path = "collision/motion.rs"]
+mod motion;
+
 use kinematics::collision::{BoxObstacle, CapsuleObstacle, CylinderObstacle, Environment, SphereObstacle};
 use kinematics::runtime::ReferenceObstacles;
 use kinematics::runtime::kinematics_model::collision::sphere_pairs;
@@ -343,7 +346,7 @@ pub struct Ur5Checked;
 
 /// The spherized robots with their SRDFs: `self_collides` leaves their disabled pairs out.
 #[derive(Kinematics)]
-#[kinematics(urdf = "robots/panda_spherized.urdf", collision(srdf = "robots/panda.srdf"))]
+#[kinematics(urdf = "robots/panda_spherized.urdf", collision(srdf = "robots/panda.srdf"), scalars(f64, f32))]
 pub struct PandaSrdf;
 
 /// The spherized UR5 with its SRDF.

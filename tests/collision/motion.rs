@@ -1,20 +1,14 @@
 //! `motion_collides`: a straight motion in joint space checked at a resolution, in lanes, against
 //! the runtime reference checking the same configurations one by one, worked out here on their
-//! own (the number of steps, `(1 - t) q0 + t q1`).
-#![allow(clippy::panic, clippy::unwrap_used, clippy::expect_used)] // test helpers fail loudly
+//! own (the number of steps, `(1 - t) q0 + t q1`). A module of the collision tests, on their
+//! robots (one test binary: each derive and link costs CI time).
 
 use kinematics::collision::{Environment, SphereObstacle};
 use kinematics::model::collision::{Meshes, link_spheres, sphere_pairs};
 use kinematics::runtime::ReferenceObstacles;
-use kinematics::{Configurations, Kinematics, KinematicsError};
+use kinematics::{Configurations, KinematicsError};
 
-#[derive(Kinematics)]
-#[kinematics(urdf = "robots/panda_spherized.urdf", collision(srdf = "robots/panda.srdf"), scalars(f64, f32))]
-struct Panda;
-
-#[derive(Kinematics)]
-#[kinematics(urdf = "robots/ur5_spherized.urdf", collision)]
-struct Ur5;
+use super::{PandaSrdf as Panda, Ur5Checked as Ur5};
 
 /// The steps a motion is checked in: the fewest keeping every joint's move within `resolution`.
 fn steps<const N: usize>(q0: &[f64; N], q1: &[f64; N], resolution: f64) -> usize {
