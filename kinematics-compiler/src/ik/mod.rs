@@ -1,8 +1,11 @@
 //! Inverse kinematics, compiled: the chain's geometry at its zero configuration ([`geometry`]),
 //! the closed-form family that solves it, decided at compile time ([`mod@classify`]: which axes are
-//! parallel and which meet, and where to place the points on them), and the functions emitted
-//! for it ([`emit`]: the family's solver in `kinematics-core` called with the geometry as
-//! constants).
+//! parallel and which meet, and where to place the points on them), the families composed as
+//! straight-line code over the expression graph ([`closed_form`]: subproblems with the geometry
+//! folded in, the eight branches side by side in lanes), the forward kinematics each solution is
+//! measured with ([`measure`]: the compiled pose, on the solver's own sines and cosines), and the
+//! functions emitted for it ([`emit`]: that body, or the family's solver in `kinematics-core`
+//! called with the geometry as constants).
 
 pub mod classify;
 pub mod closed_form;
