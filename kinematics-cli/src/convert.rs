@@ -138,11 +138,11 @@ fn numbers(v: &[f64]) -> String {
 }
 
 /// A name as an XML attribute value.
-fn escape(text: &str) -> String {
+pub fn escape(text: &str) -> String {
     text.replace('&', "&amp;").replace('"', "&quot;").replace('<', "&lt;").replace('>', "&gt;")
 }
 
 /// Text inside an XML comment (which may not hold `--`).
-fn comment(text: &str) -> String {
+pub fn comment(text: &str) -> String {
     text.replace("--", "- -")
 }

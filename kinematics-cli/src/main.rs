@@ -16,6 +16,7 @@
 mod agreement;
 mod check;
 mod collision;
+mod collision_pairs;
 mod convert;
 mod demo;
 mod draw;
@@ -84,6 +85,10 @@ enum Command {
     /// Every closed-form inverse kinematics solution of the tip for a pose (or for the pose at
     /// given joint values), each with its flags and its errors by the runtime reference.
     Ik(ik::Args),
+    /// Write an SRDF of the link pairs a self-collision check can leave out (adjacent bodies,
+    /// pairs touching at the default configuration, always or never over random samples), as
+    /// MoveIt's setup assistant does.
+    CollisionPairs(collision_pairs::Args),
     /// Write the robot's kinematics as URDF (links, joints, origins, axes, limits, mimic
     /// relations; geometry left out), e.g. from an MJCF file.
     Convert(convert::Args),
@@ -108,6 +113,7 @@ fn main() -> ExitCode {
         Command::Graph(args) => graph::run(&args, &mut out),
         Command::Draw(args) => draw::run(&args, &mut out),
         Command::Convert(args) => convert::run(&args, &mut out),
+        Command::CollisionPairs(args) => collision_pairs::run(&args, &mut out),
         Command::Demo(args) => demo::run(&args, &mut out),
     };
     let result = result.and_then(|()| out.flush().map_err(CliError::Output));

@@ -969,3 +969,69 @@ fn convert_writes_urdf_that_reads_back_as_the_same_robot() {
     }
     assert!(ok(&["convert", &off.to_string_lossy()]).contains("<link name=\"h.frame\"/>"));
 }
+
+/// Issue 31: `collision-pairs` writes an SRDF the derive's reader takes, the same for the same
+/// seed; its adjacent pairs are the model's, its `Never` pairs touch in none of the samples
+/// (checked here on the reference's sphere centres of the same stream), and bad arguments are
+/// refused, nothing written.
+#[test]
+fn collision_pairs_writes_an_srdf_the_derive_reads() {
+    use kinematics::model::collision::{Meshes, link_spheres, sphere_pairs};
+    let dir = scratch("collision-pairs");
+    let out = dir.join("panda.srdf");
+    let file = "robots/panda_spherized.urdf";
+    assert_eq!(ok(&["collision-pairs", file, "--samples", "300", "-o", &out.to_string_lossy()]), "");
+    let text = std::fs::read_to_string(&out).unwrap();
+    assert_eq!(text, ok(&["collision-pairs", file, "--samples", "300"]), "the same seed, the same file");
+    assert_ne!(text, ok(&["collision-pairs", file, "--samples", "300", "--seed", "1"]), "another seed");
+    // What the derive reads: the model's SRDF reader, every pair's links in the tree.
+    let tree = load(file);
+    let srdf = kinematics::model::srdf::parse_srdf(&text).unwrap();
+    let disabled = srdf.disabled_pairs(&tree).unwrap();
+    let spheres = link_spheres(&tree, 0.01, Meshes::Skip).unwrap();
+    let checked = sphere_pairs(&tree, &spheres, Some(&disabled)).pairs;
+    let without_srdf = sphere_pairs(&tree, &spheres, None).pairs;
+    let id = |name: &str| tree.links().iter().position(|l| l.name == name).map(kinematics::model::LinkId).unwrap();
+    let reasons: Vec<(kinematics::model::LinkId, kinematics::model::LinkId, String)> = text
+        .lines()
+        .filter(|l| l.contains("<disable_collisions"))
+        .map(|l| {
+            let attribute =
+                |key: &str| l.split(&format!("{key}=\"")).nth(1).unwrap().split('"').next().unwrap().to_owned();
+            let (a, b) = (id(&attribute("link1")), id(&attribute("link2")));
+            (a.min(b), a.max(b), attribute("reason"))
+        })
+        .collect();
+    assert_eq!(reasons.len(), disabled.len());
+    for (a, b, reason) in &reasons {
+        assert!(!checked.contains(&(*a, *b)), "a disabled pair is not checked");
+        assert_eq!(reason == "Adjacent", !without_srdf.contains(&(*a, *b)), "{a:?} {b:?}: {reason}");
+    }
+    // The `Never` pairs touch in none of the same samples.
+    let fk = ReferenceFk::new(tree.clone());
+    let never: Vec<_> = reasons.iter().filter(|r| r.2 == "Never").map(|r| (r.0, r.1)).collect();
+    assert!(!never.is_empty());
+    for q in kinematics::Configurations::new(&tree).seeded(0).uniform().take(300) {
+        let centers = fk.sphere_centers(&q, &spheres).unwrap();
+        for (s, a) in spheres.iter().enumerate() {
+            for (t, b) in spheres.iter().enumerate() {
+                let reach = a.sphere.radius + b.sphere.radius;
+                if never.contains(&(a.link, b.link)) && (centers[s] - centers[t]).norm() <= reach {
+                    panic!("{:?} and {:?} touch at {q:?}", a.link, b.link);
+                }
+            }
+        }
+    }
+    for (args, fault) in [
+        (vec!["--samples", "0"], "`--samples`"),
+        (vec!["--always", "1.5"], "`--always`"),
+        (vec!["--sphere-cover=-1"], "`--sphere-cover`"),
+    ] {
+        let bad = dir.join("bad.srdf");
+        let mut all = vec!["collision-pairs", file, "-o", bad.to_str().unwrap()];
+        all.extend(args);
+        assert!(fails(&all).contains(fault), "{fault}");
+        assert!(!bad.exists(), "nothing written");
+    }
+    assert!(fails(&["collision-pairs", "robots/planar_2r.toml"]).contains("no collision geometry"));
+}

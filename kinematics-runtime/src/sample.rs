@@ -36,6 +36,8 @@ pub struct Configurations {
     count: usize,
     /// Where each floating joint's quaternion starts in `q`.
     quaternions: Vec<usize>,
+    /// Within the limits only ([`Configurations::uniform`]).
+    uniform: bool,
 }
 
 /// The range of a joint without limits (a continuous joint; documented above).
@@ -75,8 +77,40 @@ impl Configurations {
         Self::from_ranges(limits.iter().map(|l| range((l.lower, l.upper))).collect())
     }
 
+    /// The same kind of configurations from another stream: seed 0 is the default stream, and
+    /// each seed gives its own sequence, the same on every run (after the special angles, which
+    /// every stream but a [`uniform`](Self::uniform) one starts with).
+    ///
+    /// ```
+    /// use kinematics_runtime::{Configurations, JointLimits};
+    /// let limits = [JointLimits { lower: -1.0, upper: 1.0 }];
+    /// let take = |c: Configurations| c.uniform().take(5).collect::<Vec<_>>();
+    /// assert_eq!(take(Configurations::within(&limits).seeded(0)), take(Configurations::within(&limits)));
+    /// assert_ne!(take(Configurations::within(&limits).seeded(7)), take(Configurations::within(&limits)));
+    /// assert_eq!(take(Configurations::within(&limits).seeded(7)), take(Configurations::within(&limits).seeded(7)));
+    /// ```
+    pub fn seeded(mut self, seed: u64) -> Self {
+        // Seeds a splitmix64 stream: consecutive seeds start far apart in it.
+        self.state ^= seed.wrapping_mul(0xd1b5_4a32_d192_ed03);
+        self
+    }
+
+    /// Uniform within the limits only: no special angles, nothing beyond the limits (a side
+    /// without a limit over [-pi, pi], as above): the space the robot moves in, as a planner or a
+    /// self-collision matrix samples it.
+    ///
+    /// ```
+    /// use kinematics_runtime::{Configurations, JointLimits};
+    /// let limits = [JointLimits { lower: 0.5, upper: 1.0 }];
+    /// assert!(Configurations::within(&limits).uniform().take(1000).all(|q| (0.5..1.0).contains(&q[0])));
+    /// ```
+    pub fn uniform(mut self) -> Self {
+        self.uniform = true;
+        self
+    }
+
     fn from_ranges(ranges: Vec<(f64, f64)>) -> Self {
-        Configurations { state: 0x6b69_6e65_6d61_7469, ranges, count: 0, quaternions: Vec::new() }
+        Configurations { state: 0x6b69_6e65_6d61_7469, ranges, count: 0, quaternions: Vec::new(), uniform: false }
     }
 
     /// The next configuration as an array (for the generated functions, which take `&[f64; N]`),
@@ -107,8 +141,16 @@ impl Iterator for Configurations {
         let n = self.count;
         self.count += 1;
         let mut q = match SPECIAL_ANGLES.get(n) {
-            Some(&angle) => vec![angle; self.ranges.len()],
-            None => {
+            Some(&angle) if !self.uniform => vec![angle; self.ranges.len()],
+            _ if self.uniform => {
+                let mut q = Vec::with_capacity(self.ranges.len());
+                for i in 0..self.ranges.len() {
+                    let (lo, hi) = self.ranges[i];
+                    q.push(between(lo, hi, 0.0, self.unit()));
+                }
+                q
+            }
+            _ => {
                 let mut q = Vec::with_capacity(self.ranges.len());
                 for i in 0..self.ranges.len() {
                     let (lo, hi) = self.ranges[i];
