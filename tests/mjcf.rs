@@ -242,7 +242,7 @@ fn the_mjcf_ur5_is_the_urdf_ur5_with_tool0_a_site() {
         for link in ["base", "shoulder_link", "upper_arm_link", "forearm_link", "wrist_3_link", "ee_link", "tool0"] {
             let (a, b) =
                 (m.relative_pose(&q, "base_link", link).unwrap(), u.relative_pose(&q, "base_link", link).unwrap());
-            assert!((a.to_homogeneous() - b.to_homogeneous()).abs().max() < 1e-14, "{link} at {q:?}");
+            assert!((a.to_homogeneous() - b.to_homogeneous()).iter().all(|e| e.abs() < 1e-14), "{link} at {q:?}");
         }
     }
     // Every fixed rotation is exact: whole degrees (euler, axisangle) as written; the zaxis,
@@ -479,7 +479,7 @@ fn a_site_is_the_tip_of_every_function_inverse_kinematics_included() {
         }
     }
     let reference = Ur5Mjcf::reference().unwrap().relative_pose(&q, "base_link", "tool0").unwrap();
-    assert!((pose.to_isometry().to_homogeneous() - reference.to_homogeneous()).abs().max() < 1e-14);
+    assert!((pose.to_isometry().to_homogeneous() - reference.to_homogeneous()).iter().all(|e| e.abs() < 1e-14));
     let jacobian = Ur5Mjcf::tip_jacobian(&q);
     assert!(
         jacobian.iter().flatten().zip(Ur5Urdf::tip_jacobian(&q).iter().flatten()).all(|(a, b)| (a - b).abs() < 1e-14)
@@ -520,14 +520,17 @@ fn mjcf_rs_reads_the_same_body_and_site_frames() {
             {
                 let ours = fk.relative_pose(&q, &name(parent), &body).unwrap();
                 let theirs = iso(&entry.body.pose);
-                assert!((ours.to_homogeneous() - theirs.to_homogeneous()).abs().max() < 1e-12, "{file}: body {body}");
+                assert!(
+                    (ours.to_homogeneous() - theirs.to_homogeneous()).iter().all(|e| e.abs() < 1e-12),
+                    "{file}: body {body}"
+                );
                 compared += 1;
             }
             for site in &entry.body.sites {
                 let Some(site_name) = &site.name else { continue };
                 let ours = fk.relative_pose(&q, &body, site_name).unwrap();
                 assert!(
-                    (ours.to_homogeneous() - iso(&site.pose).to_homogeneous()).abs().max() < 1e-12,
+                    (ours.to_homogeneous() - iso(&site.pose).to_homogeneous()).iter().all(|e| e.abs() < 1e-12),
                     "{file}: {site_name}"
                 );
                 compared += 1;

@@ -84,16 +84,7 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
         return Err(CliError::Usage(format!("{}: no collision geometry (meshes left out) to pair", args.file)));
     }
     let disabled = disabled_pairs(&tree, &spheres, args)?;
-    let text = srdf(&tree, &disabled, args);
-    match &args.output {
-        Some(path) => kinematics_build::write_atomic(path, &text).map_err(|source| CliError::Write {
-            file: args.file.clone(),
-            path: path.display().to_string(),
-            source,
-        })?,
-        None => write!(out, "{text}")?,
-    }
-    Ok(())
+    crate::error::deliver(&srdf(&tree, &disabled, args), args.output.as_deref(), &args.file, out)
 }
 
 /// Every pair of links with spheres on different bodies that the check can leave out, with why.

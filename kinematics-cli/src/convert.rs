@@ -30,16 +30,7 @@ pub struct Args {
 /// Writes the URDF of `args.file`'s kinematics.
 pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
     let tree = crate::robot::load(&args.file)?;
-    let text = urdf(&tree, &args.file);
-    match &args.output {
-        Some(path) => kinematics_build::write_atomic(path, &text).map_err(|source| CliError::Write {
-            file: args.file.clone(),
-            path: path.display().to_string(),
-            source,
-        })?,
-        None => write!(out, "{text}")?,
-    }
-    Ok(())
+    crate::error::deliver(&urdf(&tree, &args.file), args.output.as_deref(), &args.file, out)
 }
 
 /// The URDF text of `tree`'s kinematics; `file` names the source in the header comment.

@@ -141,3 +141,21 @@ pub struct FlagFault {
     /// What is wrong.
     pub fault: kinematics_compiler::options::OptionFault,
 }
+
+/// `text` written to `output` atomically (a file is whole or not there), or printed to `out`
+/// without one; `file` is the description it was made from, for the error.
+pub fn deliver(
+    text: &str,
+    output: Option<&std::path::Path>,
+    file: &str,
+    out: &mut dyn std::io::Write,
+) -> Result<(), CliError> {
+    match output {
+        Some(path) => kinematics_build::write_atomic(path, text).map_err(|source| CliError::Write {
+            file: file.to_owned(),
+            path: path.display().to_string(),
+            source,
+        }),
+        None => Ok(write!(out, "{text}")?),
+    }
+}

@@ -963,7 +963,11 @@ fn convert_writes_urdf_that_reads_back_as_the_same_robot() {
             let q: Vec<f64> = (0..a.tree().dof()).map(|i| ((i * 7 + k * 3) % 11) as f64 / 11.0 - 0.4).collect();
             for link in a.tree().links() {
                 let (p, r) = (a.link_pose(&q, &link.name).unwrap(), b.link_pose(&q, &link.name).unwrap());
-                assert!((p.to_homogeneous() - r.to_homogeneous()).abs().max() < 1e-12, "{file}: {}", link.name);
+                assert!(
+                    (p.to_homogeneous() - r.to_homogeneous()).iter().all(|e| e.abs() < 1e-12),
+                    "{file}: {}",
+                    link.name
+                );
             }
         }
     }

@@ -48,8 +48,8 @@ fn reference_first<const N: usize>(
         let q = at(q0, q1, k as f64 / n as f64);
         let d = reference.obstacle_distance(&q, &spheres, obstacles).unwrap();
         let s = reference.self_distance(&q, &spheres, &pairs).unwrap();
+        assert!(!d.is_nan() && !s.is_nan(), "the reference measured nothing at {q:?}");
         let nearest = d.min(s);
-        assert!(!nearest.is_nan(), "the reference measured nothing at {q:?}");
         if nearest.abs() <= 1e-9 {
             return Err(());
         }

@@ -79,6 +79,10 @@ pub(crate) fn axis_angle(axis: [f64; 3], angle: Angle) -> Option<Steps> {
 
 /// `quat` (w, x, y, z), normalised first. `None` for a zero or non-finite quaternion.
 pub(crate) fn quaternion(q: [f64; 4]) -> Option<Steps> {
+    // Finite first: `f64::max` below would pass over a NaN component.
+    if !q.iter().all(|c| c.is_finite()) {
+        return None;
+    }
     let scale = q.iter().fold(0.0_f64, |m, c| m.max(c.abs()));
     if scale == 0.0 || !scale.is_finite() {
         return None;
