@@ -106,7 +106,9 @@ pub fn parse_mjcf_with(text: &str, read: ReadFile<'_>) -> Result<Description, Lo
     reader.check_sections(MAIN)?;
     for (place, node) in reader.top_level(MAIN, &mut Vec::new())? {
         if node.tag_name().name() == "worldbody" {
-            reader.children(&model, place, node, WORLD, &FixedTransform::identity(), None, true)?;
+            let world = FixedTransform::identity();
+            let at = Within { model: &model, parent: WORLD, frame: &world, childclass: None, top: true };
+            reader.children(place, node, &at)?;
         }
     }
     for (place, node) in reader.top_level(MAIN, &mut Vec::new())? {
@@ -262,6 +264,18 @@ struct Model {
     compiler: Compiler,
     classes: BTreeMap<String, Class>,
     prefix: String,
+}
+
+/// Where a body's children hang: the model they are read in, the link they are fixed to or move
+/// relative to, the transform from that link's frame to the enclosing element's, the class
+/// their attributes default from, and whether they are the world body's own.
+#[derive(Clone, Copy)]
+struct Within<'a> {
+    model: &'a Model,
+    parent: &'a str,
+    frame: &'a FixedTransform,
+    childclass: Option<&'a str>,
+    top: bool,
 }
 
 /// The element tags default classes give attributes to (others, such as `geom`, are ignored).
@@ -517,20 +531,11 @@ impl<'d, 't> Reader<'d, 't> {
 
     /// The children of a body, frame or the world body: bodies, frames, sites, attachments; with
     /// `frame` the transform from `parent`'s frame to theirs. Joints are read by [`Self::body`].
-    #[allow(clippy::too_many_arguments)]
-    fn children(
-        &mut self,
-        model: &Model,
-        place: Place<'d, 't>,
-        node: Node<'d, 't>,
-        parent: &str,
-        frame: &FixedTransform,
-        childclass: Option<&str>,
-        top: bool,
-    ) -> Result<(), LoadErrorKind> {
+    fn children(&mut self, place: Place<'d, 't>, node: Node<'d, 't>, at: &Within<'_>) -> Result<(), LoadErrorKind> {
+        let Within { model, parent, frame, childclass, .. } = *at;
         for (place, child) in self.expand(place, node, &mut Vec::new())? {
             match child.tag_name().name() {
-                "body" => self.body(model, place, child, parent, frame, childclass, top)?,
+                "body" => self.body(place, child, at)?,
                 "frame" => {
                     let name = child.attribute("name").map(|n| format!("{}{n}", model.prefix));
                     let element = name.clone().map(Element::Frame);
@@ -540,7 +545,7 @@ impl<'d, 't> Reader<'d, 't> {
                         self.fixed(&name, parent, inner.clone());
                     }
                     let childclass = child.attribute("childclass").or(childclass);
-                    self.children(model, place, child, parent, &inner, childclass, top)?;
+                    self.children(place, child, &Within { frame: &inner, childclass, ..*at })?;
                 }
                 "site" => {
                     let Some(name) = child.attribute("name") else { continue };
@@ -594,17 +599,8 @@ impl<'d, 't> Reader<'d, 't> {
     }
 
     /// One `<body>` (XML reference, `body`), its joints and its children.
-    #[allow(clippy::too_many_arguments)]
-    fn body(
-        &mut self,
-        model: &Model,
-        place: Place<'d, 't>,
-        node: Node<'d, 't>,
-        parent: &str,
-        frame: &FixedTransform,
-        childclass: Option<&str>,
-        top: bool,
-    ) -> Result<(), LoadErrorKind> {
+    fn body(&mut self, place: Place<'d, 't>, node: Node<'d, 't>, at: &Within<'_>) -> Result<(), LoadErrorKind> {
+        let Within { model, parent, frame, childclass, top } = *at;
         let Some(name) = node.attribute("name") else {
             let message = "a <body> needs a `name` (it is a link of the robot)".to_owned();
             return Err(place.error(node, None, message));
@@ -635,7 +631,8 @@ impl<'d, 't> Reader<'d, 't> {
             self.description.joints.push(description);
             link = child;
         }
-        self.children(model, place, node, &name, &FixedTransform::identity(), childclass, false)
+        let identity = FixedTransform::identity();
+        self.children(place, node, &Within { model, parent: &name, frame: &identity, childclass, top: false })
     }
 
     /// One `<joint>` or `<freejoint>` (XML reference, `body/joint`, `body/freejoint`) moving
@@ -837,7 +834,8 @@ impl<'d, 't> Reader<'d, 't> {
                 top.descendants().find(|n| n.tag_name().name() == "body" && n.attribute("name") == Some(body))
             {
                 let childclass = found.ancestors().skip(1).find_map(|a| a.attribute("childclass"));
-                return self.body(&attached, p, found, parent, frame, childclass, parent == WORLD);
+                let at = Within { model: &attached, parent, frame, childclass, top: parent == WORLD };
+                return self.body(p, found, &at);
             }
         }
         Err(place.error(node, None, format!("the model `{asset}` (`{file}`) has no body `{body}` to attach")))
