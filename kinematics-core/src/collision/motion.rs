@@ -96,7 +96,9 @@ impl<S: Real + Into<f64>, const N: usize> Motion<S, N> {
     /// for `L::LANES` configurations at a time.
     #[inline(always)]
     pub fn first_collision<L: Lanes<Scalar = S>>(&self, check: impl Fn(&[L; N]) -> LaneMask) -> Option<usize> {
-        let count = self.steps + 1;
+        // Saturating: a motion of `usize::MAX` steps (a resolution far below its span) loses its
+        // last configuration to the count rather than overflow.
+        let count = self.steps.saturating_add(1);
         // Lane `i` takes configurations `i * run..(i + 1) * run`, one per round.
         let run = count.div_ceil(L::LANES);
         let mut first = count;
@@ -201,5 +203,76 @@ impl<S: Real + Into<f64>, const N: usize, L: Lanes<Scalar = S>, F: Fn(&[L; N]) -
     #[inline(always)]
     fn with_simd<Q: pulp::Simd>(self, _: Q) -> Option<usize> {
         self.motion.first_collision(self.check)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{F32x8, F64x4, F64x8};
+
+    #[test]
+    fn steps_keep_every_joint_within_the_resolution() {
+        let steps = |q0: [f64; 2], q1: [f64; 2], r: f64| Motion::new("t", q0, q1, r).map(|m| m.steps());
+        assert_eq!(steps([0.0, 0.0], [0.0, 0.0], 0.1), Ok(1), "a motion that stays put checks its ends");
+        assert_eq!(steps([0.0, 0.0], [1.0, -0.3], 0.1), Ok(10));
+        assert_eq!(steps([0.0, 0.0], [1.0, -1.05], 0.1), Ok(11));
+        assert_eq!(steps([f64::NAN, 0.0], [1.0, 0.0], 0.1), Ok(1));
+        assert_eq!(steps([0.0, 0.0], [f64::INFINITY, 0.0], 0.1), Ok(1));
+        assert_eq!(steps([0.0, 0.0], [1.0, 0.0], 1e-300), Ok(usize::MAX), "saturates");
+        for bad in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+            assert!(matches!(
+                Motion::new("t", [0.0], [1.0], bad),
+                Err(KinematicsError::BadResolution { robot: "t", .. })
+            ));
+        }
+    }
+
+    /// The lanes' search against a scan in order, for every set of colliding configurations a
+    /// stream draws, on motions of 1 to 40 steps and two lane widths.
+    #[test]
+    fn the_search_finds_what_a_scan_in_order_finds() {
+        let mut state = 0x5eed_u64;
+        let mut next = || {
+            state = state.wrapping_add(0x9e37_79b9_7f4a_7c15);
+            let mut z = state;
+            z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+            z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+            z ^ (z >> 31)
+        };
+        for steps in 1..=40_usize {
+            for _ in 0..20 {
+                // Configuration k collides where bit k of `set` is (a sparse set, or none).
+                let set = next() & next() & next() & ((1u64 << (steps + 1)) - 1);
+                let motion = Motion::new("t", [0.0_f64], [steps as f64], 1.0).unwrap();
+                assert_eq!(motion.steps(), steps);
+                let expected = (0..=steps).find(|&k| set >> k & 1 == 1);
+                // The check reads back each lane's configuration index (joint value = k).
+                fn hits<L: Lanes<Scalar = f64>>(set: u64) -> impl Fn(&[L; 1]) -> LaneMask {
+                    move |q: &[L; 1]| {
+                        let mut bits = 0;
+                        for i in 0..L::LANES {
+                            // `(1 - t) 0 + t steps` is `k` to rounding.
+                            let (x, k) = (q[0].lane(i), q[0].lane(i).round());
+                            assert!(k >= 0.0 && (x - k).abs() < 1e-9, "{x}");
+                            bits |= u32::from(set >> (k as u64) & 1 == 1) << i;
+                        }
+                        LaneMask::from_bits(bits)
+                    }
+                }
+                assert_eq!(motion.first_collision::<F64x4>(hits(set)), expected, "{steps} steps, set {set:b}");
+                assert_eq!(motion.first_collision::<F64x8>(hits(set)), expected, "{steps} steps, set {set:b}");
+            }
+        }
+        // f32 lanes: the fraction rounded to f32, the ends exact.
+        let motion = Motion::new("t", [0.5_f32], [2.5], 0.5).unwrap();
+        let at_end = |q: &[F32x8; 1]| {
+            let mut bits = 0;
+            for i in 0..8 {
+                bits |= u32::from(q[0].lane(i) == 2.5) << i;
+            }
+            LaneMask::from_bits(bits)
+        };
+        assert_eq!(motion.first_collision(at_end), Some(4));
     }
 }
