@@ -176,12 +176,18 @@ pub struct Compiled {
     pub(crate) frames: Vec<Frame>,
 }
 
+/// The most tips [`compile`] folds each from the base on its own (see there); every robot in
+/// `robots/` has fewer links.
+const FOLD_EACH_TIP_UP_TO: usize = 256;
+
 /// Compiles the poses `request` asks for.
 ///
 /// One tip is accumulated both from the tool back to the base and from the base out (tool-to-base
 /// usually wins: the rotations it multiplies first are sparse); several tips are accumulated from
 /// the base outwards, so links share their common partial products. Each is tried with every
-/// [`Options`] of the simplifier, and the cheapest by [`OpCount::weighted`] is kept.
+/// [`Options`] of the simplifier, and the cheapest by [`OpCount::weighted`] is kept. Several tips
+/// without velocities are also built each on its nearest ancestor's pose, and past 256 tips only
+/// so: folding each from the base costs the square of a long chain's length.
 pub fn compile(tree: &KinematicTree, request: &Request) -> Result<Compiled, CompileError> {
     let error = |source| CompileError::Model { robot: tree.name().to_owned(), source };
     let base_name = request.base.clone().unwrap_or_else(|| tree.link(tree.root()).name.clone());
@@ -220,9 +226,15 @@ pub fn compile(tree: &KinematicTree, request: &Request) -> Result<Compiled, Comp
             .collect();
         (graph, frames)
     };
-    for &order in orders {
-        for options in Options::ALL {
-            consider(name_frames(fold_tips(tree, base, &tip_ids, order, options, request)));
+    // Folding each tip from the base on its own costs its depth, so a long chain's every link costs
+    // the square of its length (measured: 2,000 links 36 s, 5,000 over five minutes in `check`);
+    // past FOLD_EACH_TIP_UP_TO tips without velocities only the build on each ancestor's pose
+    // below is tried, which is linear.
+    if tip_ids.len() <= FOLD_EACH_TIP_UP_TO || request.velocity.is_some() {
+        for &order in orders {
+            for options in Options::ALL {
+                consider(name_frames(fold_tips(tree, base, &tip_ids, order, options, request)));
+            }
         }
     }
     // Building on an ancestor's pose leaves out the joints above it, which a velocity needs.
@@ -436,6 +448,11 @@ fn extend_tips(
                 starts.push((Some(at), joints.clone()));
             }
         }
+        // Past FOLD_EACH_TIP_UP_TO tips, the whole path from the base only where no ancestor
+        // was built (as in `compile`: each tip's whole path makes a long chain quadratic).
+        if tips.len() > FOLD_EACH_TIP_UP_TO && starts.len() > 1 {
+            starts.remove(0);
+        }
         let mut best: Option<(usize, SymTransform)> = None;
         for (start, joints) in &starts {
             for options in Options::ALL {
@@ -451,11 +468,15 @@ fn extend_tips(
                 let (count, angles) = reached.cost_of(&graph, outputs(&pose));
                 // A new angle whose joint terms an angle already computed has (`m*q - m` beside
                 // `m*q`) comes from it by `derived-angles`, for a few multiplications.
-                let mut known = known_terms.clone();
+                // The terms this candidate's own angles add, beside those already known (a set
+                // of its own rather than a copy of the known ones: that copy made a long chain
+                // quadratic).
+                let mut added = BTreeSet::new();
                 let angle_cost: usize = angles
                     .iter()
                     .map(|&a| {
-                        let derivable = angle_terms(&graph, a).is_some_and(|terms| !known.insert(terms));
+                        let derivable = angle_terms(&graph, a)
+                            .is_some_and(|terms| known_terms.contains(&terms) || !added.insert(terms));
                         if derivable { DERIVATION_COST } else { SIN_COS_WEIGHT }
                     })
                     .sum();
@@ -466,8 +487,8 @@ fn extend_tips(
             }
         }
         let pose = best.map_or_else(|| SymTransform::identity(&mut graph), |(_, pose)| pose);
-        reached.add(&graph, outputs(&pose));
-        known_terms = reached.angles().iter().filter_map(|&a| angle_terms(&graph, a)).collect();
+        let (_, new_angles) = reached.add_angles(&graph, outputs(&pose));
+        known_terms.extend(new_angles.into_iter().filter_map(|a| angle_terms(&graph, a)));
         built[tip.0] = Some(pose);
         frames.push(pose);
     }

@@ -83,19 +83,30 @@ impl Reached {
         (count, angles)
     }
 
-    /// The angles whose `sin_cos` the reached nodes need.
-    pub fn angles(&self) -> &BTreeSet<ExprId> {
-        &self.angles
-    }
-
     /// Records `outputs` as reached and returns what they added.
     pub fn add(&mut self, g: &ExprGraph, outputs: impl IntoIterator<Item = ExprId>) -> OpCount {
+        self.add_angles(g, outputs).0
+    }
+
+    /// [`Reached::add`], with the angles the outputs added (in the order first met).
+    pub fn add_angles(&mut self, g: &ExprGraph, outputs: impl IntoIterator<Item = ExprId>) -> (OpCount, Vec<ExprId>) {
         let mut seen = std::mem::take(&mut self.seen);
         let mut angles = std::mem::take(&mut self.angles);
+        let mut added = Vec::new();
         seen.resize(g.len(), false);
-        let count = self.walk(g, outputs, |id| !std::mem::replace(&mut seen[id.index()], true), |a| angles.insert(a));
+        let count = self.walk(
+            g,
+            outputs,
+            |id| !std::mem::replace(&mut seen[id.index()], true),
+            |a| {
+                angles.insert(a) && {
+                    added.push(a);
+                    true
+                }
+            },
+        );
         (self.seen, self.angles) = (seen, angles);
-        count
+        (count, added)
     }
 
     /// Counts the nodes reachable from `outputs` through nodes not reached before, visiting each
