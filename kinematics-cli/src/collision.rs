@@ -99,7 +99,7 @@ pub fn check(tree: &KinematicTree, file: &str, samples: usize, setup: &Setup<'_>
         tally(&mut itself, s, verdict, file, "self_collides", &q)?;
         if let Some((env, reference)) = &environment {
             let d = fk.obstacle_distance(&q, &spheres, reference).map_err(runtime)?;
-            let verdict = tables.collides(&[0.0], &poses, env).any();
+            let verdict = tables.collides(&[0.0], &poses, env, None).any();
             // `collides` is obstacles and self: the nearer decides (a NaN, which `min` would drop,
             // stays a NaN and fails).
             let nearest = if d.is_nan() || s.is_nan() { f64::NAN } else { d.min(s) };

@@ -113,6 +113,13 @@ impl CollisionLayout {
     }
 }
 
+/// The 64-bit words a held object's set of links takes: one bit per link with spheres (the
+/// model's `link_spheres`, each sphere naming its link).
+pub fn held_words(spheres: &[LinkSphere]) -> usize {
+    let links: std::collections::BTreeSet<LinkId> = spheres.iter().map(|s| s.link).collect();
+    links.len().div_ceil(64).max(1)
+}
+
 /// A sphere containing every ball of `balls` (centre, radius; at least one), near the smallest:
 /// Badoiu and Clarkson's iteration (step `k` moves the centre `1/(k+1)` of the way to the point of
 /// the ball farthest from it), then the radius that contains every ball exactly. Deterministic.

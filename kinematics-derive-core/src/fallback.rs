@@ -17,6 +17,7 @@ use quote::{format_ident, quote};
 use syn::punctuated::Punctuated;
 
 use crate::options::KinematicsInput;
+use kinematics_compiler::collision_layout::held_words;
 use kinematics_compiler::ik::IkPlan;
 use kinematics_compiler::options::{IkKind, IkMode, Options, Scalars, choose};
 use kinematics_compiler::robot::scalar_parameter;
@@ -126,6 +127,11 @@ impl Implied {
     /// With the lengths of the robot that loaded (the fault was elsewhere): the stub's functions
     /// then take and return arrays of the robot's own lengths.
     pub fn with_robot(mut self, tree: &KinematicTree) -> Self {
+        // The cover, when it can be made (a mesh refused leaves its counts unknown).
+        let spheres = self.options.collision.as_ref().and_then(|c| {
+            let cover = c.sphere_cover.is_finite() && c.sphere_cover > 0.0;
+            cover.then(|| link_spheres(tree, c.sphere_cover, c.meshes).ok()).flatten()
+        });
         let links = match &self.options.links {
             Some(listed) => listed.len(),
             // Every link but the base, whatever the base.
@@ -137,10 +143,8 @@ impl Implied {
             links: self.links_read.then_some(links),
             tips: self.tips_counted.then_some(self.options.tips.len()),
             // The cover's count, when it can be made (a mesh refused leaves it unknown).
-            spheres: self.options.collision.as_ref().and_then(|c| {
-                let cover = c.sphere_cover.is_finite() && c.sphere_cover > 0.0;
-                cover.then(|| link_spheres(tree, c.sphere_cover, c.meshes).ok().map(|s| s.len())).flatten()
-            }),
+            spheres: spheres.as_ref().map(Vec::len),
+            held_words: spheres.as_deref().map(held_words),
         };
         self
     }

@@ -149,3 +149,36 @@ impl ReferenceFk {
         Ok(least)
     }
 }
+
+impl ReferenceFk {
+    /// The smallest signed distances (m) of an object held by `link` at `q` (`held`: spheres with
+    /// their centres in `link`'s frame): to `obstacles`, and to the robot's `spheres` on links
+    /// other than those of `skip` (infinite where there is nothing to measure; NaN where parry
+    /// could not measure a pair).
+    pub fn held_distances(
+        &self,
+        q: &[f64],
+        link: LinkId,
+        held: &[SphereObstacle],
+        spheres: &[LinkSphere],
+        obstacles: &ReferenceObstacles,
+        skip: &[LinkId],
+    ) -> Result<(f64, f64), RuntimeError> {
+        let pose = self.link_poses(q)?[link.0];
+        let centers = self.sphere_centers(q, spheres)?;
+        let (mut to_obstacles, mut to_robot) = (f64::INFINITY, f64::INFINITY);
+        let least = |least: f64, d: f64| if d.is_nan() || least.is_nan() { f64::NAN } else { least.min(d) };
+        for h in held {
+            let c = pose * Point3::from(h.center);
+            let (at, ball) = (Pose::from_translation(Vector::new(c.x, c.y, c.z)), Ball::new(h.radius));
+            for (shape_pose, shape) in &obstacles.shapes {
+                to_obstacles = least(to_obstacles, signed_distance(&at, &ball, shape_pose, shape.as_ref()));
+            }
+            for (s, other) in spheres.iter().zip(&centers).filter(|(s, _)| !skip.contains(&s.link)) {
+                let other = Pose::from_translation(Vector::new(other.x, other.y, other.z));
+                to_robot = least(to_robot, signed_distance(&at, &ball, &other, &Ball::new(s.sphere.radius)));
+            }
+        }
+        Ok((to_obstacles, to_robot))
+    }
+}

@@ -56,7 +56,65 @@ pub(super) fn bodies(cx: &Context<'_>, name: &str) -> Result<(Vec<TokenStream>, 
         lanes_body(cx, &frame),
     ];
     items.extend(tables(cx, &frame));
+    items.push(hold_tables(cx, &frame)?);
     Ok((items, doc))
+}
+
+/// The tables a held object is made from (`collision::HoldTables`): every link of the tree with,
+/// if its rigid body carries spheres, the first link there with spheres (its index among the
+/// checks' links) and the link's pose in that link's frame (folded at compile time: the joints
+/// between are fixed), and each link with spheres with its rigid body.
+fn hold_tables(cx: &Context<'_>, frame: &CollisionLayout) -> Result<TokenStream, CompileError> {
+    let p = &cx.p;
+    let tree = cx.tree();
+    let body = kinematics_model::collision::rigid_bodies(tree);
+    let mut places: Vec<Option<(usize, [f64; 12])>> = vec![None; tree.links().len()];
+    for (carrier, &link) in frame.links.iter().enumerate() {
+        let members: Vec<usize> = (0..body.len()).filter(|&l| body[l] == body[link.0]).collect();
+        if members.iter().any(|&l| places[l].is_some()) {
+            continue; // An earlier link with spheres carries this body.
+        }
+        let request = Request {
+            base: Some(tree.link(link).name.clone()),
+            tips: members.iter().map(|&l| tree.links()[l].name.clone()).collect(),
+            position_only: false,
+            velocity: None,
+        };
+        let poses = compile(tree, &request)?.eval(&vec![0.0; tree.dof()]);
+        for (&l, pose) in members.iter().zip(poses) {
+            places[l] = Some((carrier, pose));
+        }
+    }
+    let frames = tree.links().iter().zip(&places).map(|(link, place)| {
+        let name = &link.name;
+        match place {
+            None => quote!((#name, ::core::option::Option::None)),
+            Some((carrier, e)) => {
+                let carrier = Literal::usize_unsuffixed(*carrier);
+                let e = e.map(super::number);
+                let [a, b, c, d, f, g, h, i, j, x, y, z] = e;
+                quote!((#name, ::core::option::Option::Some((#carrier, #p::Pose {
+                    rotation: [[#a, #b, #c], [#d, #f, #g], [#h, #i, #j]], translation: [#x, #y, #z],
+                }))))
+            }
+        }
+    });
+    let links = frame.links.iter().map(|&l| {
+        let (name, b) = (&tree.link(l).name, Literal::usize_unsuffixed(body[l.0]));
+        quote!((#name, #b))
+    });
+    let robot = tree.name();
+    Ok(quote! {
+        /// Where a held object can hang: every link (with, if its rigid body has spheres, the first
+        /// link there with spheres and the link's pose in its frame), and each link with spheres
+        /// with its rigid body.
+        #[allow(clippy::approx_constant, clippy::unreadable_literal)]
+        pub const HOLD_TABLES: #p::collision::HoldTables = #p::collision::HoldTables {
+            robot: #robot,
+            frames: &[#(#frames),*],
+            links: &[#(#links),*],
+        };
+    })
 }
 
 /// The body `sphere_centers`' batches call ([`Output::lanes_body`](super::surface::Output::lanes_body)):
@@ -165,6 +223,10 @@ pub(super) fn checks(cx: &Context<'_>, out: &mut Functions) {
     for (function, form, signature) in cx.render.collision_items() {
         let sig = signature.tokens();
         let (what, check) = match function {
+            CollisionFunction::Hold => {
+                out.typed.push(hold(&sig));
+                continue;
+            }
             CollisionFunction::Collides => (
                 format!(
                     "Whether the robot at `q` touches an obstacle of `environment` or itself (its {} spheres; \
@@ -172,7 +234,7 @@ pub(super) fn checks(cx: &Context<'_>, out: &mut Functions) {
                      obstacles; the pairs as in `self_collides`)",
                     cx.spheres().len()
                 ),
-                quote!(COLLISION_TABLES.collides(q, #poses, environment)),
+                world_check(p, &poses),
             ),
             CollisionFunction::SelfCollides => (
                 format!(
@@ -258,6 +320,32 @@ pub(super) fn checks(cx: &Context<'_>, out: &mut Functions) {
     }
 }
 
+/// `collides` against `environment`, a `collision::World` of the robot: its obstacles, and the
+/// object it holds if any.
+fn world_check(p: &TokenStream, poses: &TokenStream) -> TokenStream {
+    quote!(COLLISION_TABLES.collides(
+        q,
+        #poses,
+        #p::collision::World::<Self>::environment(environment),
+        #p::collision::World::<Self>::held(environment),
+    ))
+}
+
+/// `hold`: a held object, from the hold tables.
+fn hold(sig: &TokenStream) -> TokenStream {
+    let doc = "An object held by `link`: `spheres` (centres in `link`'s frame) moving with it, for \
+               `collides` and `motion_collides` to check against the obstacles and the robot's links \
+               (`environment.holding(&held)`), except the links of `link`'s rigid body (joined to it by \
+               fixed joints) and `touching` (the links it touches by design, such as the fingers around \
+               it). An unknown link, a holding link on a body with no collision spheres, a touching link \
+               with none, or a sphere with a number that is not finite or a radius that is not positive is \
+               an error. Nothing is allocated: the object borrows `spheres`.";
+    quote! {
+        #[doc = #doc]
+        #sig { HOLD_TABLES.hold(link, spheres, touching) }
+    }
+}
+
 /// `motion_collides` (per scalar): the motion's configurations checked by `collides` in the
 /// lanes the CPU fills (`collision::motion_wide`).
 fn motion(cx: &Context<'_>, form: Form, sig: &TokenStream, poses: &TokenStream) -> TokenStream {
@@ -266,7 +354,7 @@ fn motion(cx: &Context<'_>, form: Form, sig: &TokenStream, poses: &TokenStream) 
     let Form::Typed(ScalarType { t, lanes, wide, .. }) = form else {
         unreachable!("invariant: the surface gives motion_collides one typed form per scalar")
     };
-    let check = quote!(COLLISION_TABLES.collides(q, #poses, environment));
+    let check = world_check(p, poses);
     let doc = format!(
         "Where the straight motion from `q0` to `q1` first collides (as `collides`: obstacles and self), \
          checked at `resolution`: the configurations `(1 - t) q0 + t q1` at `t = k / steps`, `k = 0..=steps`, \

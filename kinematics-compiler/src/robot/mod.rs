@@ -162,6 +162,7 @@ impl<'a> Context<'a> {
                 links: Some(link_names.len()),
                 tips: Some(tips.len()),
                 spheres: spec.robot.collision().map(|c| c.spheres.len()),
+                held_words: spec.robot.collision().map(|c| crate::collision_layout::held_words(&c.spheres)),
             },
         };
         Context { spec, p, base, one: tips.len() == 1, link_names, tips, render, tip_request }

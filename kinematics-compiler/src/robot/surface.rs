@@ -30,6 +30,8 @@ pub struct Dims {
     pub tips: Option<usize>,
     /// Collision spheres.
     pub spheres: Option<usize>,
+    /// The 64-bit words of a held object's set of links (one bit per link with spheres).
+    pub held_words: Option<usize>,
 }
 
 /// One computation on the type: a value of `q` (and for twists `qd`), as a function per scalar,
@@ -639,24 +641,27 @@ pub enum CollisionFunction {
     SelfCollides,
     /// `motion_collides(&q0, &q1, &environment, resolution)`: one form per scalar.
     MotionCollides,
+    /// `hold(link, spheres, touching)`: a held object.
+    Hold,
 }
 
 impl Render {
     /// The collision checks' functions (with `collision`), in the order emitted: for `collides`
     /// then `self_collides`, per scalar the function on one configuration and its two batches
     /// (verdicts into `out: &mut [bool]`), then the generic one on any lane type (a verdict mask);
-    /// then `motion_collides` per scalar (the first colliding fraction of a straight motion).
+    /// then `motion_collides` per scalar (the first colliding fraction of a straight motion), then
+    /// `hold`. What `collides` and `motion_collides` are checked against is a `collision::World`
+    /// of the robot: an `Environment`, or one with an object the robot holds.
     pub fn collision_items(&self) -> Vec<(CollisionFunction, Form, Signature)> {
         let (p, n) = (&self.p, self.dof());
         let error = quote!(::core::result::Result<(), #p::KinematicsError>);
+        let world = quote!(environment: &impl #p::collision::World<Self>);
         let mut out = Vec::new();
         for function in [CollisionFunction::Collides, CollisionFunction::SelfCollides] {
             let name = function.name();
             let environment = match function {
-                CollisionFunction::Collides | CollisionFunction::MotionCollides => {
-                    quote!(, environment: &#p::collision::Environment<'_>)
-                }
                 CollisionFunction::SelfCollides => quote!(),
+                _ => quote!(, #world),
             };
             for scalar in self.scalar_types() {
                 let (suffix, t) = (scalar.suffix, &scalar.t);
@@ -712,13 +717,26 @@ impl Render {
                 Signature {
                     name: format_ident!("motion_collides{suffix}"),
                     generics: self.dof_generics(),
-                    inputs: quote!(
-                        q0: &[#t; #n], q1: &[#t; #n], environment: &#p::collision::Environment<'_>, resolution: f64
-                    ),
+                    inputs: quote!(q0: &[#t; #n], q1: &[#t; #n], #world, resolution: f64),
                     output: quote!(::core::result::Result<::core::option::Option<f64>, #p::KinematicsError>),
                 },
             ));
         }
+        // The stub of a robot whose spheres were not counted declares one word (its body never
+        // runs: the derive's error is what the user sees).
+        let words = literal(self.dims.held_words.unwrap_or(1));
+        out.push((
+            CollisionFunction::Hold,
+            Form::Generic,
+            Signature {
+                name: format_ident!("hold"),
+                generics: vec![quote!('a)],
+                inputs: quote!(link: &str, spheres: &'a [#p::collision::SphereObstacle], touching: &[&str]),
+                output: quote!(
+                    ::core::result::Result<#p::collision::Held<'a, Self, #words>, #p::collision::HeldError>
+                ),
+            },
+        ));
         out
     }
 
@@ -736,6 +754,7 @@ impl CollisionFunction {
             CollisionFunction::Collides => "collides",
             CollisionFunction::SelfCollides => "self_collides",
             CollisionFunction::MotionCollides => "motion_collides",
+            CollisionFunction::Hold => "hold",
         }
     }
 }

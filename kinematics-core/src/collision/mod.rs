@@ -9,11 +9,13 @@
 //! counts as colliding. The answer does not depend on the order of the obstacles: every obstacle
 //! is tested until one is hit.
 
+mod held;
 mod motion;
 mod obstacles;
 mod tables;
 mod verdicts;
 
+pub use held::{Carried, Held, HeldError, HeldLink, HeldObject, HoldTables, Holding, World};
 pub use motion::{Motion, motion_wide};
 pub use obstacles::{BoxObstacle, CapsuleObstacle, CylinderObstacle, Environment, ObstacleError, SphereObstacle, Vec3};
 pub use tables::{CollisionTables, place_spheres};

@@ -7,6 +7,7 @@
 //! every lane is colliding. Every obstacle is tested until one is hit, so the order of the
 //! obstacles does not change an answer.
 
+use super::held::HeldObject;
 use super::obstacles::{Environment, Obstacle, Prepared, Vec3, Visit};
 use super::verdicts::{CheckLanes, Flags, LaneMask, non_finite};
 use crate::pose::Pose;
@@ -34,7 +35,7 @@ use crate::pose::Pose;
 /// let poses = [Pose::from_rpy([0.0; 3], [0.0; 3]), Pose::from_rpy([0.0; 3], [1.0, 0.0, 0.0])];
 /// let ball = [SphereObstacle { center: [1.0, 0.3, 0.0], radius: 0.25 }];
 /// let env = Environment::new(&ball, &[], &[], &[])?;
-/// assert!(tables.collides(&[0.0_f64], &poses, &env).any());
+/// assert!(tables.collides(&[0.0_f64], &poses, &env, None).any());
 /// assert!(!tables.self_collides(&[0.0_f64], &poses).any());
 /// # Ok::<(), kinematics_core::collision::ObstacleError>(())
 /// ```
@@ -56,17 +57,22 @@ pub struct CollisionTables<'a> {
 
 impl CollisionTables<'_> {
     /// The lanes where the robot at `q`, its links with spheres at `poses`, touches an obstacle
-    /// of `env` or itself: the obstacles first, then the pairs, each only on the lanes still
-    /// free. A lane whose `q` is not finite is colliding.
+    /// of `env` or itself, or where the object it holds (`held`, if any) touches an obstacle or
+    /// a link it is tested against: the robot's obstacles first, then the held object's, then
+    /// the pairs, each only on the lanes still free. A lane whose `q` is not finite is colliding.
     #[inline(always)]
     pub fn collides<L: CheckLanes, const N: usize>(
         &self,
         q: &[L; N],
         poses: &[Pose<L>],
         env: &Environment<'_>,
+        held: Option<HeldObject<'_>>,
     ) -> LaneMask {
         let poses = fence(poses);
-        let hit = self.obstacle_hits(poses, env, non_finite(q));
+        let mut hit = self.obstacle_hits(poses, env, non_finite(q));
+        if let Some(held) = held {
+            hit = held.hits(self, poses, env, hit);
+        }
         if hit.all() {
             return hit.bits();
         }
@@ -279,7 +285,7 @@ impl<L: CheckLanes> Visit<L> for Against<'_, '_, '_, L> {
 
 /// The lanes where two spheres touch (or a distance is NaN).
 #[inline(always)]
-fn touch<L: CheckLanes>(a: &[L; 3], ra: L, b: &[L; 3], rb: L) -> L::Flags {
+pub(super) fn touch<L: CheckLanes>(a: &[L; 3], ra: L, b: &[L; 3], rb: L) -> L::Flags {
     let d = [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
     let reach = ra + rb;
     (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).not_above(reach * reach)
@@ -310,8 +316,8 @@ mod tests {
         let far = [at(0.0), at(5.0)];
         assert!(!TABLES.self_collides(&[0.0_f64], &far).any());
         assert!(TABLES.self_collides(&[f64::NAN], &far).any());
-        assert!(TABLES.collides(&[f64::INFINITY], &far, &Environment::empty()).any());
-        assert!(!TABLES.collides(&[0.0], &far, &Environment::empty()).any());
+        assert!(TABLES.collides(&[f64::INFINITY], &far, &Environment::empty(), None).any());
+        assert!(!TABLES.collides(&[0.0], &far, &Environment::empty(), None).any());
     }
 
     #[test]
@@ -324,12 +330,12 @@ mod tests {
             let x = F64x4::from_fn(|k| offset + 0.1 * k as f64);
             let poses = [at(F64x4::from_f64(0.0)), at(x)];
             let q = [F64x4::from_f64(0.0)];
-            let collides = TABLES.collides(&q, &poses, &env);
+            let collides = TABLES.collides(&q, &poses, &env, None);
             let itself = TABLES.self_collides(&q, &poses);
             for k in 0..4 {
                 let scalar = [at(0.0), at(offset + 0.1 * k as f64)];
                 assert_eq!(itself.lane(k), TABLES.self_collides(&[0.0], &scalar).any(), "lane {k}");
-                assert_eq!(collides.lane(k), TABLES.collides(&[0.0], &scalar, &env).any(), "lane {k}");
+                assert_eq!(collides.lane(k), TABLES.collides(&[0.0], &scalar, &env, None).any(), "lane {k}");
             }
             assert_eq!(collides.bits(), expected, "offset {offset}");
         }
