@@ -9,15 +9,22 @@
 //! counts as colliding. The answer does not depend on the order of the obstacles: every obstacle
 //! is tested until one is hit.
 
+#[cfg(feature = "point-cloud")]
+mod cloud;
 mod held;
 mod motion;
 mod obstacles;
 mod tables;
 mod verdicts;
 
+#[cfg(feature = "point-cloud")]
+#[cfg_attr(docsrs, doc(cfg(feature = "point-cloud")))]
+pub use cloud::PointCloud;
 pub use held::{Carried, Held, HeldError, HeldLink, HeldObject, HoldTables, Holding, World};
 pub use motion::{Motion, motion_wide};
-pub use obstacles::{BoxObstacle, CapsuleObstacle, CylinderObstacle, Environment, ObstacleError, SphereObstacle, Vec3};
+pub use obstacles::{
+    BoxObstacle, CapsuleObstacle, CylinderObstacle, Environment, ObstacleError, SphereObstacle, SphereQuery, Vec3,
+};
 pub use tables::{CollisionTables, place_spheres};
 pub use verdicts::{CheckLanes, Flags, Flags32x8, Flags32x16, Flags64x4, Flags64x8, LaneMask, non_finite};
 #[doc(hidden)]

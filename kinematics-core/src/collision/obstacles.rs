@@ -76,6 +76,14 @@ pub enum ObstacleError {
         /// Its index.
         index: usize,
     },
+    /// More obstacles of a kind than an index can hold (a point cloud's k-d tree numbers its
+    /// points in 32 bits).
+    TooMany {
+        /// `point`.
+        kind: &'static str,
+        /// How many were given.
+        count: usize,
+    },
 }
 
 impl core::fmt::Display for ObstacleError {
@@ -88,6 +96,9 @@ impl core::fmt::Display for ObstacleError {
                 f,
                 "{kind} obstacle {index} has a size that is not positive (or, for a box, a rotation that is not one)"
             ),
+            ObstacleError::TooMany { kind, count } => {
+                write!(f, "{count} {kind} obstacles are more than the index holds")
+            }
         }
     }
 }
@@ -104,6 +115,42 @@ pub struct Environment<'a> {
     pub(super) capsules: &'a [CapsuleObstacle],
     pub(super) cylinders: &'a [CylinderObstacle],
     pub(super) boxes: &'a [BoxObstacle],
+    pub(super) query: Option<&'a dyn SphereQuery>,
+}
+
+/// Obstacles a check asks about one sphere at a time, behind an index of their own: a point
+/// cloud in a k-d tree ([`PointCloud`](crate::collision::PointCloud), with `std`), or a map of
+/// the user's. Given to an environment by [`Environment::with_query`]; a check asks it about each
+/// link's bounding sphere, then that link's spheres where the bound touches, one lane at a time.
+pub trait SphereQuery: core::fmt::Debug + Sync {
+    /// Whether the sphere of `center` and `radius` touches or overlaps an obstacle (touching
+    /// counts). `center` is finite and `radius` positive.
+    fn touches(&self, center: Vec3, radius: f64) -> bool;
+    /// How many obstacles.
+    fn len(&self) -> usize;
+    /// Whether there is none.
+    fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+}
+
+/// The lanes of `asked` where the sphere of `center` and `radius` touches an obstacle of `query`,
+/// asked one lane at a time.
+#[inline(always)]
+pub(super) fn query_lanes<L: CheckLanes>(
+    query: &dyn SphereQuery,
+    center: &[L; 3],
+    radius: L,
+    asked: super::LaneMask,
+) -> L::Flags {
+    let mut touched = 0u32;
+    for i in 0..L::WIDTH {
+        if asked.lane(i) {
+            let c = [center[0].lane_f64(i), center[1].lane_f64(i), center[2].lane_f64(i)];
+            touched |= u32::from(query.touches(c, radius.lane_f64(i))) << i;
+        }
+    }
+    L::Flags::from_mask(super::LaneMask::from_bits(touched))
 }
 
 fn finite(v: &[f64]) -> bool {
@@ -155,17 +202,24 @@ impl<'a> Environment<'a> {
             });
             check(&numbers, b.half_extents.iter().all(|&h| h > 0.0) && orthonormal, "box", index)?;
         }
-        Ok(Environment { spheres, capsules, cylinders, boxes })
+        Ok(Environment { spheres, capsules, cylinders, boxes, query: None })
     }
 
     /// No obstacles.
     pub const fn empty() -> Self {
-        Environment { spheres: &[], capsules: &[], cylinders: &[], boxes: &[] }
+        Environment { spheres: &[], capsules: &[], cylinders: &[], boxes: &[], query: None }
     }
 
-    /// How many obstacles.
+    /// These obstacles and those of `query` (a point cloud's index, say), which every check then
+    /// asks too (one in place of any given before).
+    pub fn with_query(self, query: &'a dyn SphereQuery) -> Self {
+        Environment { query: Some(query), ..self }
+    }
+
+    /// How many obstacles (a query's as it counts them).
     pub fn len(&self) -> usize {
-        self.spheres.len() + self.capsules.len() + self.cylinders.len() + self.boxes.len()
+        let queried = self.query.map_or(0, SphereQuery::len);
+        self.spheres.len() + self.capsules.len() + self.cylinders.len() + self.boxes.len() + queried
     }
 
     /// Whether there is none.
@@ -221,6 +275,9 @@ impl<'a> Environment<'a> {
             if hit.all() {
                 return hit;
             }
+        }
+        if let Some(query) = self.query {
+            hit = hit | query_lanes(query, center, radius, !hit.bits());
         }
         hit
     }

@@ -8,7 +8,7 @@
 //! obstacles does not change an answer.
 
 use super::held::HeldObject;
-use super::obstacles::{Environment, Obstacle, Prepared, Vec3, Visit};
+use super::obstacles::{Environment, Obstacle, Prepared, SphereQuery, Vec3, Visit, query_lanes};
 use super::verdicts::{CheckLanes, Flags, LaneMask, non_finite};
 use crate::pose::Pose;
 
@@ -111,6 +111,9 @@ impl CollisionTables<'_> {
             hit = chunk.against(env.capsules, hit);
             hit = chunk.against(env.cylinders, hit);
             hit = chunk.against(env.boxes, hit);
+            if let Some(query) = env.query {
+                hit = chunk.against_query(query, hit);
+            }
             if hit.all() {
                 return hit;
             }
@@ -244,6 +247,36 @@ impl<L: CheckLanes> Chunk<'_, '_, L> {
             }
         }
         visit.hit
+    }
+}
+
+impl<L: CheckLanes> Chunk<'_, '_, L> {
+    /// `hit` and the lanes where one of the links' spheres touches an obstacle of `query`: each
+    /// link's bounding sphere asked first, then its spheres on the lanes it touches, one lane at
+    /// a time.
+    #[inline(always)]
+    fn against_query(&self, query: &dyn SphereQuery, mut hit: L::Flags) -> L::Flags {
+        let Chunk { tables, poses, first, bounds } = *self;
+        for (k, (bound, radius)) in bounds.iter().enumerate() {
+            let near = query_lanes(query, bound, *radius, !hit.bits());
+            if !near.any() {
+                continue;
+            }
+            let (g0, g1, ..) = tables.links[first + k];
+            let (start, end) = (tables.groups[g0].0, tables.groups[g1 - 1].1);
+            for s in start..end {
+                let center = poses[first + k].place(tables.centers[s]);
+                let asked = near.and_not(hit).bits();
+                hit = hit | query_lanes(query, &center, L::from_f64(tables.radii[s]), asked);
+                if !near.and_not(hit).any() {
+                    break;
+                }
+            }
+            if hit.all() {
+                break;
+            }
+        }
+        hit
     }
 }
 

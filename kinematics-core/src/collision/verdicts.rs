@@ -127,6 +127,8 @@ pub trait Flags: Copy + BitOr<Output = Self> + BitAnd<Output = Self> {
     fn and_not(self, other: Self) -> Self;
     /// Lane `i`'s flag as bit `i`.
     fn bits(self) -> LaneMask;
+    /// The flags of the lanes set in `mask` (bits beyond the lanes ignored).
+    fn from_mask(mask: LaneMask) -> Self;
 }
 
 impl Flags for bool {
@@ -146,6 +148,10 @@ impl Flags for bool {
     #[inline(always)]
     fn bits(self) -> LaneMask {
         LaneMask(u32::from(self))
+    }
+    #[inline(always)]
+    fn from_mask(mask: LaneMask) -> Self {
+        mask.lane(0)
     }
 }
 
@@ -176,6 +182,8 @@ pub trait CheckLanes: Real {
     fn not_above(self, limit: Self) -> Self::Flags;
     /// The lanes holding a NaN or an infinity.
     fn non_finite(self) -> Self::Flags;
+    /// Lane `i` (`i < WIDTH`) as an `f64`: for tests a check makes one lane at a time.
+    fn lane_f64(self, i: usize) -> f64;
 }
 
 macro_rules! scalar_check {
@@ -203,6 +211,10 @@ macro_rules! scalar_check {
             #[inline(always)]
             fn non_finite(self) -> bool {
                 !self.is_finite()
+            }
+            #[inline(always)]
+            fn lane_f64(self, _: usize) -> f64 {
+                f64::from(self)
             }
         }
     };
@@ -276,6 +288,14 @@ macro_rules! lane_check {
                 }
                 LaneMask(bits)
             }
+            #[inline(always)]
+            fn from_mask(mask: LaneMask) -> Self {
+                let mut out = [0; $lanes];
+                for i in 0..$lanes {
+                    out[i] = if mask.lane(i) { <$word>::MAX } else { 0 };
+                }
+                $flags(out)
+            }
         }
 
         impl CheckLanes for $name {
@@ -325,6 +345,10 @@ macro_rules! lane_check {
                 }
                 $flags(out)
             }
+            #[inline(always)]
+            fn lane_f64(self, i: usize) -> f64 {
+                f64::from(self.0[i])
+            }
         }
     };
 }
@@ -367,5 +391,7 @@ mod tests {
         assert!(some.all() && some.any() && !none.any() && !none.all() && (some & none) == Flags32x16::NONE);
         assert_eq!(some.and_not(none).bits(), LaneMask::full(16));
         assert!(LaneMask::full(32).is_full(32) && LaneMask::full(16).count() == 16);
+        assert_eq!(Flags64x4::from_mask(LaneMask::from_bits(0b1_0110)).bits().bits(), 0b0110);
+        assert_eq!(F32x8::from_fn(|i| i as f32).lane_f64(5), 5.0);
     }
 }
