@@ -8,6 +8,9 @@
 //! - `self_collides`, one at a time and in batches;
 //! - `motion_collides` (`f64` and `f32`) on motions between consecutive free configurations at
 //!   0.05 rad, per motion (the fraction colliding and the configurations a motion printed);
+//! - point clouds (the Panda): a cloud of 10^3 to 10^6 points sampled on the tabletop scene's
+//!   surfaces, its k-d tree's build time and `collides` per configuration against it;
+//! - holding an object (the Panda, a two-sphere bottle in the grasp frame) in the tabletop scene;
 //! - the baselines a user has without `collision`: our generated link poses plus a hand loop over
 //!   the spheres, and the same centres with parry3d-f64's intersection tests (the reference's
 //!   shapes).
@@ -24,7 +27,7 @@ use std::hint::black_box;
 use std::time::Duration;
 
 use criterion::Throughput;
-use kinematics::collision::Environment;
+use kinematics::collision::{BoxObstacle, Environment, PointCloud, SphereObstacle};
 use kinematics::model::collision::{Meshes, link_spheres};
 use kinematics::{Configurations, Kinematics, SceneObstacles};
 
@@ -261,15 +264,134 @@ fn ur5(c: Option<&mut criterion::Criterion>) {
     robot!(c, "ur5", Ur5, 6)
 }
 
+/// `count` points on the surfaces of `boxes`, each face drawn by its area, from a seeded stream.
+fn surface_points(boxes: &[BoxObstacle], count: usize) -> Vec<[f64; 3]> {
+    // splitmix64, seeded: the same points on every run.
+    let mut state = 7u64;
+    let mut next = move || {
+        state = state.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = state;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
+    };
+    // Each face: its box, the axis it faces along and the side.
+    let faces: Vec<(usize, usize, f64, f64)> = (0..boxes.len())
+        .flat_map(|b| {
+            let h = boxes[b].half_extents;
+            (0..3).flat_map(move |axis| {
+                let area = 4.0 * h[(axis + 1) % 3] * h[(axis + 2) % 3];
+                [(b, axis, 1.0, area), (b, axis, -1.0, area)]
+            })
+        })
+        .collect();
+    let total: f64 = faces.iter().map(|f| f.3).sum();
+    (0..count)
+        .map(|_| {
+            let mut pick = next() * total;
+            let &(b, axis, side, _) = faces
+                .iter()
+                .find(|f| {
+                    pick -= f.3;
+                    pick <= 0.0
+                })
+                .unwrap_or(&faces[faces.len() - 1]);
+            let o = &boxes[b];
+            let local: [f64; 3] = std::array::from_fn(|i| {
+                if i == axis { side * o.half_extents[i] } else { (2.0 * next() - 1.0) * o.half_extents[i] }
+            });
+            std::array::from_fn(|k| o.center[k] + (0..3).map(|i| local[i] * o.rotation[i][k]).sum::<f64>())
+        })
+        .collect()
+}
+
+/// The Panda against point clouds sampled on the tabletop scene's surfaces (10^3 to 10^6 points,
+/// 5 mm each): the k-d tree's build and `collides` per configuration; and holding a bottle in the
+/// tabletop scene.
+fn clouds(mut criterion: Option<&mut criterion::Criterion>) {
+    let qs: Vec<[f64; 7]> = inputs(&Panda::JOINT_LIMITS);
+    let qs32: Vec<[f32; 7]> = qs.iter().map(|q| q.map(|x| x as f32)).collect();
+    let tabletop = scene("tabletop");
+    let bottle = [
+        SphereObstacle { center: [0.0, 0.0, 0.02], radius: 0.04 },
+        SphereObstacle { center: [0.0, 0.0, 0.1], radius: 0.04 },
+    ];
+    let held = Panda::hold("panda_grasptarget", &bottle, &[]).unwrap();
+    let env = tabletop.environment().unwrap();
+    let holding = env.holding(&held);
+    for count in [1_000, 10_000, 100_000, 1_000_000] {
+        let points = surface_points(&tabletop.boxes, count);
+        let cloud = PointCloud::new(&points, 0.005).unwrap();
+        let env = Environment::empty().with_query(&cloud);
+        let Some(c) = criterion.as_deref_mut() else {
+            // Check mode: the batch's verdicts are the one-configuration function's, and the
+            // cloud's answers those of every point asked in turn.
+            let mut verdicts = vec![false; 64];
+            Panda::collides_batch(&qs[..64], &env, &mut verdicts).unwrap();
+            for (q, v) in qs.iter().zip(&verdicts) {
+                assert_eq!(*v, Panda::collides(q, &env));
+            }
+            for c in Panda::sphere_centers(&qs[0]).iter().take(8) {
+                let brute =
+                    points.iter().any(|p| (0..3).map(|i| (p[i] - c[i]).powi(2)).sum::<f64>() <= 0.105f64.powi(2));
+                assert_eq!(brute, kinematics::collision::SphereQuery::touches(&cloud, *c, 0.1));
+            }
+            if count >= 100_000 {
+                break; // the larger clouds' building is what the measurement is for
+            }
+            continue;
+        };
+        let free = qs.iter().filter(|q| !Panda::collides(q, &env)).count();
+        println!("panda: {free} of {} configurations free against a cloud of {count} points", qs.len());
+        let mut group = c.benchmark_group(format!("panda/cloud/{count}"));
+        if count >= 100_000 {
+            group.sample_size(10);
+        }
+        group.bench_function("build", |b| b.iter(|| PointCloud::new(black_box(&points), 0.005).unwrap()));
+        let mut verdicts = vec![false; qs.len()];
+        group.throughput(Throughput::Elements(qs.len() as u64));
+        group.bench_function("collides_batch", |b| {
+            b.iter(|| Panda::collides_batch(black_box(&qs), &env, &mut verdicts).unwrap())
+        });
+        group.bench_function("collides_batch_f32", |b| {
+            b.iter(|| Panda::collides_batch_f32(black_box(&qs32), &env, &mut verdicts).unwrap())
+        });
+        group.finish();
+    }
+    let Some(c) = criterion else {
+        let mut verdicts = vec![false; qs.len()];
+        Panda::collides_batch(&qs, &holding, &mut verdicts).unwrap();
+        for (q, v) in qs.iter().zip(&verdicts).take(64) {
+            assert_eq!(*v, Panda::collides(q, &holding));
+            assert!(*v || !Panda::collides(q, &env), "holding freed a configuration");
+        }
+        return;
+    };
+    let free = qs.iter().filter(|q| !Panda::collides(q, &holding)).count();
+    println!("panda: {free} of {} configurations free holding a bottle in the tabletop scene", qs.len());
+    let mut group = c.benchmark_group("panda/tabletop_holding");
+    let mut verdicts = vec![false; qs.len()];
+    group.throughput(Throughput::Elements(qs.len() as u64));
+    group.bench_function("collides_batch", |b| {
+        b.iter(|| Panda::collides_batch(black_box(&qs), &holding, &mut verdicts).unwrap())
+    });
+    group.bench_function("collides_batch_f32", |b| {
+        b.iter(|| Panda::collides_batch_f32(black_box(&qs32), &holding, &mut verdicts).unwrap())
+    });
+    group.finish();
+}
+
 fn main() {
     if common::measuring() {
         let mut c = common::criterion(Duration::from_millis(500), Duration::from_secs(2));
         panda(Some(&mut c));
         ur5(Some(&mut c));
+        clouds(Some(&mut c));
         c.final_summary();
     } else {
         panda(None);
         ur5(None);
+        clouds(None);
         println!("collision benchmarks: every body ran once and its answers were checked");
     }
 }
