@@ -637,9 +637,109 @@ fn main() {
     }
 }
 
+/// Run by `cargo test` (`test = true` in the manifest): plans checked edge by edge, by the compiled
+/// motion check and by the runtime reference (parry3d-f64's distances at the same configurations).
 #[cfg(test)]
 mod tests {
     #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
+    use kinematics::model::collision::{Meshes, link_spheres, sphere_pairs};
+
     use super::*;
+
+    /// Every edge of `path` from `start` to `goal`: free by `motion_collides`, and every one of its
+    /// checked configurations farther than 1e-9 m from contact by the reference.
+    fn check_path(path: &[Q], start: &Q, goal: &Q, scene: &kinematics::SceneObstacles, resolution: f64) {
+        assert_eq!((path.first(), path.last()), (Some(start), Some(goal)));
+        let environment = scene.environment().unwrap();
+        let reference = Panda::reference().unwrap();
+        let tree = reference.tree();
+        let spheres = link_spheres(tree, 0.01, Meshes::Refuse).unwrap();
+        let srdf = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/robots/panda.srdf")).unwrap();
+        let disabled = kinematics::model::srdf::parse_srdf(&srdf).unwrap().disabled_pairs(tree).unwrap();
+        let pairs = sphere_pairs(tree, &spheres, Some(&disabled)).pairs;
+        let obstacles = scene.reference();
+        for edge in path.windows(2) {
+            assert_eq!(Panda::motion_collides(&edge[0], &edge[1], &environment, resolution).unwrap(), None);
+            let motion = Motion::new(Panda::ROBOT, edge[0], edge[1], resolution).unwrap();
+            for k in 0..=motion.steps() {
+                let q = motion.configuration(k);
+                let d = reference.obstacle_distance(&q, &spheres, &obstacles).unwrap();
+                let s = reference.self_distance(&q, &spheres, &pairs).unwrap();
+                assert!(d > 1e-9 && s > 1e-9, "{q:?} on {edge:?}: obstacles {d} m, self {s} m");
+            }
+        }
+    }
+
+    #[test]
+    fn the_default_query_takes_a_detour_every_edge_of_which_is_free() {
+        let scene = load(DEFAULT_SCENE).unwrap();
+        let environment = scene.environment().unwrap();
+        let settings = Settings::default();
+        let straight = Panda::motion_collides(&DEFAULT_START, &DEFAULT_GOAL, &environment, settings.resolution);
+        assert!(straight.unwrap().is_some(), "the default query needs a detour");
+        let plan = plan(&DEFAULT_START, &DEFAULT_GOAL, &environment, settings, 0).unwrap().unwrap();
+        assert!(!plan.direct && plan.path.len() >= 3 && plan.path.len() <= plan.found);
+        check_path(&plan.path, &DEFAULT_START, &DEFAULT_GOAL, &scene, settings.resolution);
+        // The same seed, the same plan and the same checks.
+        let again = super::plan(&DEFAULT_START, &DEFAULT_GOAL, &environment, settings, 0).unwrap().unwrap();
+        assert_eq!((again.path, again.search_checks, again.shortcut_checks), (plan.path, plan.search_checks, plan.shortcut_checks));
+    }
+
+    #[test]
+    fn random_detours_in_the_shelf_are_free_edge_by_edge() {
+        let scene = load(&format!("{}/scenes/shelf.toml", env!("CARGO_MANIFEST_DIR"))).unwrap();
+        let environment = scene.environment().unwrap();
+        let settings = Settings { resolution: 0.1, ..Settings::default() };
+        let mut draws = Configurations::within(&Panda::JOINT_LIMITS).seeded(3).uniform();
+        let mut free = || loop {
+            let q: Q = draws.next_array().unwrap();
+            if !Panda::collides(&q, &environment) {
+                return q;
+            }
+        };
+        let mut planned = 0;
+        while planned < 3 {
+            let (start, goal) = (free(), free());
+            if Panda::motion_collides(&start, &goal, &environment, settings.resolution).unwrap().is_none() {
+                continue;
+            }
+            let plan = plan(&start, &goal, &environment, settings, planned).unwrap().expect("a path");
+            check_path(&plan.path, &start, &goal, &scene, settings.resolution);
+            planned += 1;
+        }
+    }
+
+    #[test]
+    fn bad_input_is_refused_naming_it() {
+        let args = |list: &[&str]| parse(list.iter().map(|s| (*s).to_owned()));
+        let error = |list: &[&str]| args(list).unwrap_err();
+        assert_eq!(error(&["--start", "0,0,0", "--goal", "0,0,0,-1,0,1,0"]), "`--start` has 3 values; the Panda has 7 joints");
+        assert_eq!(
+            error(&["--start", "0,0,0,-1,0,NaN,0"]),
+            "`--start`: joint `panda_joint6` (q[5]) is NaN, not a finite number"
+        );
+        assert!(error(&["--goal", "0,0,0,1,0,1,0"]).starts_with("`--goal`: joint `panda_joint4` (q[3]) is 1, outside its limits"));
+        assert_eq!(error(&["--start", "0,x,0,-1,0,1,0"]), "`--start`: `x` is not a number");
+        assert_eq!(error(&["--start", "0,0,0,-1,0,1,0"]), "`--start` and `--goal` go together");
+        assert_eq!(error(&["--trials", "0"]), "`--trials` is 0");
+        assert_eq!(error(&["--detours"]), "`--detours` chooses the pairs of `--trials`");
+        assert!(error(&["--seed", "-1"]).starts_with("`--seed`: `-1` is not"));
+        assert!(error(&["--frobnicate", "1"]).starts_with("unknown argument `--frobnicate`"));
+        assert!(error(&["--scene"]).starts_with("`--scene` needs a value"));
+        let scene = load(DEFAULT_SCENE).unwrap();
+        let environment = scene.environment().unwrap();
+        for (settings, message) in [
+            (Settings { resolution: f64::NAN, ..Settings::default() }, "`--resolution` is NaN (must be positive and finite)"),
+            (Settings { range: 0.0, ..Settings::default() }, "`--range` is 0 (must be positive and finite)"),
+        ] {
+            let refused = plan(&DEFAULT_START, &DEFAULT_GOAL, &environment, settings, 0).unwrap_err();
+            assert_eq!(refused.to_string(), message);
+        }
+        let inside_the_table = [0.0, 1.5, 0.0, -0.5, 0.0, 1.0, 0.0];
+        let refused = plan(&DEFAULT_START, &inside_the_table, &environment, Settings::default(), 0).unwrap_err();
+        assert!(refused.to_string().starts_with("the goal configuration"), "{refused}");
+        let given = args(&["--start=-0.5,0,0,-1,0,1,0", "--goal", "0,0,0,-1,0,1,0", "--seed=7"]).unwrap();
+        assert_eq!((given.start.unwrap()[0], given.seed), (-0.5, 7));
+    }
 }
