@@ -245,7 +245,13 @@ impl From<KinematicsError> for PlanError {
 
 /// RRT-Connect from `start` to `goal` (tried first as one straight motion), then shortcutting;
 /// `None` when `settings.samples` samples found no path. Deterministic for a seed.
-fn plan(start: &Q, goal: &Q, environment: &Environment, settings: Settings, seed: u64) -> Result<Option<Plan>, PlanError> {
+fn plan(
+    start: &Q,
+    goal: &Q,
+    environment: &Environment,
+    settings: Settings,
+    seed: u64,
+) -> Result<Option<Plan>, PlanError> {
     for (name, value) in [("resolution", settings.resolution), ("range", settings.range)] {
         if !(value.is_finite() && value > 0.0) {
             return Err(PlanError::Setting(name, value));
@@ -484,8 +490,11 @@ fn query(args: &Args) -> Result<(), String> {
         println!("the straight motion from start to goal is free");
     } else {
         println!(
-            "search: {} samples, trees of {} configurations, a path of {} configurations",
-            plan.samples, plan.nodes, plan.found
+            "search: {} sample{}, trees of {} configurations, a path of {} configurations",
+            plan.samples,
+            if plan.samples == 1 { "" } else { "s" },
+            plan.nodes,
+            plan.found
         );
     }
     println!("plan: {} configurations (radians)", plan.path.len());
@@ -569,7 +578,8 @@ fn trials(args: &Args, n: usize) -> Result<(), String> {
     let s = args.settings;
     let scenes: Vec<&str> =
         if args.scenes.is_empty() { vec![DEFAULT_SCENE] } else { args.scenes.iter().map(String::as_str).collect() };
-    let kind = if args.detours { "free start-goal pairs whose straight motion collides" } else { "free start-goal pairs" };
+    let kind =
+        if args.detours { "free start-goal pairs whose straight motion collides" } else { "free start-goal pairs" };
     println!(
         "{n} random {kind} per scene (uniform within the limits), seed {}; resolution {} rad, range {} rad, at most \
          {} samples, {} shortcut tries",
@@ -683,7 +693,10 @@ mod tests {
         check_path(&plan.path, &DEFAULT_START, &DEFAULT_GOAL, &scene, settings.resolution);
         // The same seed, the same plan and the same checks.
         let again = super::plan(&DEFAULT_START, &DEFAULT_GOAL, &environment, settings, 0).unwrap().unwrap();
-        assert_eq!((again.path, again.search_checks, again.shortcut_checks), (plan.path, plan.search_checks, plan.shortcut_checks));
+        assert_eq!(
+            (again.path, again.search_checks, again.shortcut_checks),
+            (plan.path, plan.search_checks, plan.shortcut_checks)
+        );
     }
 
     #[test]
@@ -714,12 +727,18 @@ mod tests {
     fn bad_input_is_refused_naming_it() {
         let args = |list: &[&str]| parse(list.iter().map(|s| (*s).to_owned()));
         let error = |list: &[&str]| args(list).unwrap_err();
-        assert_eq!(error(&["--start", "0,0,0", "--goal", "0,0,0,-1,0,1,0"]), "`--start` has 3 values; the Panda has 7 joints");
+        assert_eq!(
+            error(&["--start", "0,0,0", "--goal", "0,0,0,-1,0,1,0"]),
+            "`--start` has 3 values; the Panda has 7 joints"
+        );
         assert_eq!(
             error(&["--start", "0,0,0,-1,0,NaN,0"]),
             "`--start`: joint `panda_joint6` (q[5]) is NaN, not a finite number"
         );
-        assert!(error(&["--goal", "0,0,0,1,0,1,0"]).starts_with("`--goal`: joint `panda_joint4` (q[3]) is 1, outside its limits"));
+        assert!(
+            error(&["--goal", "0,0,0,1,0,1,0"])
+                .starts_with("`--goal`: joint `panda_joint4` (q[3]) is 1, outside its limits")
+        );
         assert_eq!(error(&["--start", "0,x,0,-1,0,1,0"]), "`--start`: `x` is not a number");
         assert_eq!(error(&["--start", "0,0,0,-1,0,1,0"]), "`--start` and `--goal` go together");
         assert_eq!(error(&["--trials", "0"]), "`--trials` is 0");
@@ -730,7 +749,10 @@ mod tests {
         let scene = load(DEFAULT_SCENE).unwrap();
         let environment = scene.environment().unwrap();
         for (settings, message) in [
-            (Settings { resolution: f64::NAN, ..Settings::default() }, "`--resolution` is NaN (must be positive and finite)"),
+            (
+                Settings { resolution: f64::NAN, ..Settings::default() },
+                "`--resolution` is NaN (must be positive and finite)",
+            ),
             (Settings { range: 0.0, ..Settings::default() }, "`--range` is 0 (must be positive and finite)"),
         ] {
             let refused = plan(&DEFAULT_START, &DEFAULT_GOAL, &environment, settings, 0).unwrap_err();

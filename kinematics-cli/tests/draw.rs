@@ -459,8 +459,14 @@ fn draw_shows_a_path_and_refuses_bad_path_files_naming_the_line() {
     let target = out.to_str().unwrap();
     let good = joined(&path[0]);
     for (text, fault) in [
-        (format!("{good}\n\n0,0,0,0,0,0\n"), "line 3: 6 values, but the robot has 7 degrees of freedom (panda_joint1, "),
-        (format!("# x\n{good}\n0,0,0,NaN,0,0,0\n"), "line 3: the value of `panda_joint4` (q[3]) is NaN, not a finite number"),
+        (
+            format!("{good}\n\n0,0,0,0,0,0\n"),
+            "line 3: 6 values, but the robot has 7 degrees of freedom (panda_joint1, ",
+        ),
+        (
+            format!("# x\n{good}\n0,0,0,NaN,0,0,0\n"),
+            "line 3: the value of `panda_joint4` (q[3]) is NaN, not a finite number",
+        ),
         (format!("{good}\n0,0,zero,0,0,0,0\n"), "line 2: `zero` is not a number"),
         ("# nothing\n".to_owned(), "no configuration (one a line, values comma-separated)"),
     ] {

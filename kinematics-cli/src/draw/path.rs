@@ -27,12 +27,19 @@ fn parse(text: &str, names: &[&str]) -> Result<Vec<Vec<f64>>, (Option<usize>, St
         }
         let q = line
             .split(',')
-            .map(|value| value.trim().parse::<f64>().map_err(|_| (number, format!("`{}` is not a number", value.trim()))))
+            .map(|value| {
+                value.trim().parse::<f64>().map_err(|_| (number, format!("`{}` is not a number", value.trim())))
+            })
             .collect::<Result<Vec<f64>, _>>()?;
         if q.len() != names.len() {
             return Err((
                 number,
-                format!("{} values, but the robot has {} degrees of freedom ({})", q.len(), names.len(), names.join(", ")),
+                format!(
+                    "{} values, but the robot has {} degrees of freedom ({})",
+                    q.len(),
+                    names.len(),
+                    names.join(", ")
+                ),
             ));
         }
         if let Some((j, value)) = q.iter().enumerate().find(|(_, v)| !v.is_finite()) {
