@@ -110,6 +110,16 @@ pub enum CliError {
     /// An option's value that cannot be used (the message names the option and why).
     #[error("{0}")]
     Usage(String),
+    /// `draw --path`: a path file that is not configurations of the robot, one a line.
+    #[error("{path}: {}{fault}", line.map(|l| format!("line {l}: ")).unwrap_or_default())]
+    BadPath {
+        /// The path file, as given.
+        path: String,
+        /// The line at fault (from 1), if one is.
+        line: Option<usize>,
+        /// What is wrong there.
+        fault: String,
+    },
     /// An output file could not be written (it was written atomically, so nothing is left behind).
     #[error("{file}: cannot write `{path}`: {source}")]
     Write {

@@ -390,3 +390,97 @@ fn draw_shows_the_collision_spheres_and_a_scenes_obstacles() {
     assert_eq!(entries(&dir), ["bad.toml"]);
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn draw_shows_a_path_and_refuses_bad_path_files_naming_the_line() {
+    let file = "robots/panda_spherized.urdf";
+    let fk = ReferenceFk::new(kinematics::load(root().join(file)).unwrap());
+    let tree = fk.tree();
+    let path = [configuration(7), vec![0.0, 0.3, 0.0, -1.2, 0.0, 1.5, 0.8], vec![1.2, 0.3, 0.0, -1.2, 0.0, 1.5, 0.8]];
+    let dir = scratch("path");
+    let written = dir.join("plan.txt");
+    let text = format!("# a plan\n{}\n\n{}\n  {}  \n", joined(&path[0]), joined(&path[1]), joined(&path[2]));
+    std::fs::write(&written, text).unwrap();
+    let plan = written.to_str().unwrap();
+    let svg = ok(&["draw", file, "--path", plan, "--scene", "scenes/table_shelves.toml"]);
+    let elements = elements(&svg);
+    // The robot in full at the last configuration, as `--q` draws it.
+    assert_eq!((elements[0].get("data-q"), elements[0].get("data-path")), (joined(&path[2]).as_str(), "3"));
+    let poses: Vec<Vec<nalgebra::Isometry3<f64>>> = path.iter().map(|q| fk.link_poses(q).unwrap()).collect();
+    let origin = |k: usize, link: kinematics::model::LinkId| {
+        let t = poses[k][link.0].translation.vector;
+        [t.x, t.y, t.z]
+    };
+    for dot in elements.iter().filter(|e| e.class() == "origin") {
+        assert!(close(point(dot), origin(2, tree.link_id(dot.get("data-link")).unwrap()), 1e-12), "{dot:?}");
+    }
+    // The earlier configurations faded: every joint's segment from its parent's origin to its child's.
+    let ghosts: Vec<&Element> = elements.iter().filter(|e| e.class() == "ghost").collect();
+    assert_eq!(ghosts.len(), 3 * 2 * tree.joints().len());
+    for ghost in &ghosts {
+        let k: usize = ghost.get("data-waypoint").parse().unwrap();
+        let joint = tree.joint_by_name(ghost.get("data-joint")).unwrap();
+        let points: Vec<[f64; 3]> = ghost
+            .get("data-points")
+            .split(' ')
+            .map(|p| {
+                let c: Vec<f64> = p.split(',').map(|x| x.parse().unwrap()).collect();
+                [c[0], c[1], c[2]]
+            })
+            .collect();
+        assert!(k < 2, "{ghost:?}");
+        assert!(close(points[0], origin(k, joint.parent), 1e-12), "{ghost:?}");
+        assert!(close(*points.last().unwrap(), origin(k, joint.child), 1e-12), "{ghost:?}");
+    }
+    // The deepest link's trace along the straight motions, through each configuration's origin.
+    let tip = tree.link_id("panda_grasptarget").unwrap();
+    let traces: Vec<&Element> = elements.iter().filter(|e| e.class() == "trace").collect();
+    assert_eq!(traces.len(), 3);
+    let points: Vec<[f64; 3]> = traces[0]
+        .get("data-points")
+        .split(' ')
+        .map(|p| {
+            let c: Vec<f64> = p.split(',').map(|x| x.parse().unwrap()).collect();
+            [c[0], c[1], c[2]]
+        })
+        .collect();
+    assert_eq!((traces[0].get("data-link"), points.len()), ("panda_grasptarget", 2 * 16 + 1));
+    for k in 0..3 {
+        assert!(close(points[16 * k], origin(k, tip), 1e-12), "configuration {k}");
+    }
+    let halfway: Vec<f64> = path[1].iter().zip(&path[2]).map(|(a, b)| 0.5 * a + 0.5 * b).collect();
+    let t = fk.link_poses(&halfway).unwrap()[tip.0].translation.vector;
+    assert!(close(points[16 + 8], [t.x, t.y, t.z], 1e-12));
+    let dots: Vec<&Element> = elements.iter().filter(|e| e.class() == "waypoint").collect();
+    assert_eq!(dots.len(), 3 * 3);
+    assert!(dots.iter().all(|d| close(point(d), origin(d.get("data-waypoint").parse().unwrap(), tip), 1e-12)));
+    // Bad files: refused naming the file and the line, nothing written.
+    let out = dir.join("out.svg");
+    let target = out.to_str().unwrap();
+    let good = joined(&path[0]);
+    for (text, fault) in [
+        (
+            format!("{good}\n\n0,0,0,0,0,0\n"),
+            "line 3: 6 values, but the robot has 7 degrees of freedom (panda_joint1, ",
+        ),
+        (
+            format!("# x\n{good}\n0,0,0,NaN,0,0,0\n"),
+            "line 3: the value of `panda_joint4` (q[3]) is NaN, not a finite number",
+        ),
+        (format!("{good}\n0,0,zero,0,0,0,0\n"), "line 2: `zero` is not a number"),
+        ("# nothing\n".to_owned(), "no configuration (one a line, values comma-separated)"),
+    ] {
+        let bad = dir.join("bad.txt");
+        std::fs::write(&bad, text).unwrap();
+        let message = fails(&["draw", file, "--path", bad.to_str().unwrap(), "-o", target]);
+        assert!(message.starts_with(&format!("error: {}: {fault}", bad.display())), "{message}");
+    }
+    let missing = dir.join("missing.txt");
+    let message = fails(&["draw", file, "--path", missing.to_str().unwrap(), "-o", target]);
+    assert!(message.starts_with(&format!("error: {}: cannot read: ", missing.display())), "{message}");
+    assert_eq!(entries(&dir), ["bad.txt", "plan.txt"]);
+    // A path is drawn instead of `--q`, not with it (clap's usage error, status 2).
+    assert_eq!(run(&["draw", file, "--path", plan, "--q", "0,0,0,0,0,0,0"]).status.code(), Some(2));
+    assert_eq!(run(&["draw", file, "--path", plan, "--degrees"]).status.code(), Some(2));
+    std::fs::remove_dir_all(&dir).unwrap();
+}

@@ -1,12 +1,15 @@
 //! `kinematics draw FILE --q ... [--scene SCENE] [-o robot.svg]`: a picture of the robot at a
 //! configuration, so a user can see that the robot they loaded is the one they meant: its links,
 //! its joints' axes, its collision spheres (when it has `<collision>` geometry) and the obstacles
-//! of a scene file.
+//! of a scene file. With `--path PATH` instead of `--q`, a path of configurations (`path.rs`, as
+//! the planner example writes it): the robot in full at its last configuration, faded at the
+//! others, and the trace of its deepest link along the straight motions between them.
 //!
 //! The geometry comes from the runtime reference (`ReferenceFk::link_poses` and
 //! `sphere_centers`, the numbers `fk` prints); `svg.rs` projects it into three orthographic views
 //! and writes the SVG by hand.
 
+mod path;
 mod svg;
 
 use std::io::Write;
@@ -25,6 +28,11 @@ pub struct Args {
     file: String,
     #[command(flatten)]
     configuration: crate::robot::ConfigurationArgs,
+    /// A path to draw instead of `--q`: a file of configurations, one a line, values comma-separated
+    /// (radians, metres; `#` starts a comment line), as the planner example's `--path-out` writes.
+    /// The robot is drawn in full at the last, faded at the others, with its deepest link's trace.
+    #[arg(long, value_name = "FILE", conflicts_with_all = ["q", "degrees"])]
+    path: Option<String>,
     /// Write the SVG to this file (atomically) instead of standard output.
     #[arg(short, long)]
     output: Option<std::path::PathBuf>,
@@ -40,7 +48,14 @@ pub struct Args {
 pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
     let file = &args.file;
     let fk = ReferenceFk::new(crate::robot::load(file)?);
-    let q = args.configuration.resolve(fk.tree());
+    let path = match &args.path {
+        Some(path) => Some(path::read(path, fk.tree())?),
+        None => None,
+    };
+    let q = match path.as_ref().and_then(|p| p.last()) {
+        Some(last) => last.clone(),
+        None => args.configuration.resolve(fk.tree()),
+    };
     if !(args.sphere_cover.is_finite() && args.sphere_cover > 0.0) {
         return Err(CliError::Usage(format!(
             "`--sphere-cover` is {} (must be a finite positive length in metres)",
@@ -49,6 +64,9 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
     }
     let mut scene =
         Scene::new(&fk, &q, args.sphere_cover).map_err(|source| CliError::Runtime { file: file.clone(), source })?;
+    if let Some(path) = &path {
+        scene.add_path(&fk, path).map_err(|source| CliError::Runtime { file: file.clone(), source })?;
+    }
     if let Some(path) = &args.scene {
         let obstacles = kinematics::read_scene(path)?;
         scene.obstacles = obstacles.obstacles.iter().map(Obstacle::of).collect();
@@ -206,8 +224,27 @@ impl Obstacle {
     }
 }
 
+/// A configuration of a path, drawn faded: its joints' segments.
+pub struct Ghost {
+    /// Its place in the path (from 0).
+    pub index: usize,
+    /// Each joint's name and the points of its segment, as [`JointMark::points`].
+    pub segments: Vec<(String, Vec<[f64; 3]>)>,
+}
+
+/// The path of a link's origin along a path's straight motions in joint space.
+pub struct Trace {
+    /// The link's name.
+    pub link: String,
+    /// Its origin at each configuration of the path and at [`TRACE_STEPS`] - 1 between each two.
+    pub points: Vec<[f64; 3]>,
+}
+
+/// Each straight motion of a path is traced at this many equal steps.
+pub const TRACE_STEPS: usize = 16;
+
 /// What is drawn: every link's origin and every joint, in the tree's order, the collision
-/// spheres and the obstacles.
+/// spheres and the obstacles; for a path, its other configurations and the trace.
 pub struct Scene {
     /// The robot's name.
     pub robot: String,
@@ -221,6 +258,10 @@ pub struct Scene {
     pub spheres: Vec<Ball>,
     /// The obstacles of the scene file, in its order.
     pub obstacles: Vec<Obstacle>,
+    /// A path's configurations before the last (which `q` is), in its order; empty without a path.
+    pub ghosts: Vec<Ghost>,
+    /// The trace of a path; `None` without one.
+    pub trace: Option<Trace>,
 }
 
 impl Scene {
@@ -230,6 +271,8 @@ impl Scene {
         out.extend(self.joints.iter().flat_map(|j| j.points.iter().map(|&p| (p, 0.0))));
         out.extend(self.spheres.iter().map(|s| (s.center, s.radius)));
         out.extend(self.obstacles.iter().flat_map(Obstacle::extent));
+        out.extend(self.ghosts.iter().flat_map(|g| g.segments.iter().flat_map(|(_, p)| p.iter().map(|&p| (p, 0.0)))));
+        out.extend(self.trace.iter().flat_map(|t| t.points.iter().map(|&p| (p, 0.0))));
         out
     }
 }
@@ -250,32 +293,7 @@ impl Scene {
             .zip(&poses)
             .map(|(link, pose)| LinkMark { name: link.name.clone(), origin: array(&pose.translation.vector) })
             .collect();
-        let joints = tree
-            .joints()
-            .iter()
-            .map(|joint| {
-                let child = poses[joint.child.0];
-                // The joint frame after its motion: the child's pose less the constants after it.
-                let moved = child * kinematics::runtime::fixed_isometry(&joint.after_motion).inverse();
-                let (parent, at, end) = (
-                    array(&poses[joint.parent.0].translation.vector),
-                    array(&moved.translation.vector),
-                    array(&child.translation.vector),
-                );
-                let points = if at == end { vec![parent, end] } else { vec![parent, at, end] };
-                let axis = AxisStyle::of(joint.kind).map(|style| {
-                    let direction = moved.rotation * Vector3::new(joint.axis[0], joint.axis[1], joint.axis[2]);
-                    (at, array(&direction), style)
-                });
-                JointMark {
-                    name: joint.name.clone(),
-                    kind: joint.kind.name(),
-                    child: tree.link(joint.child).name.clone(),
-                    points,
-                    axis,
-                }
-            })
-            .collect();
+        let joints = joint_marks(tree, &poses);
         // Meshes are left out (the footnote says so): the cover reads the other shapes.
         #[allow(clippy::expect_used, reason = "invariant: with meshes skipped the cover refuses nothing")]
         let covered = link_spheres(tree, cover, Meshes::Skip).expect("skipped meshes are no fault");
@@ -289,6 +307,73 @@ impl Scene {
                 radius: s.sphere.radius,
             })
             .collect();
-        Ok(Scene { robot: tree.name().to_owned(), q: q.to_vec(), links, joints, spheres, obstacles: Vec::new() })
+        Ok(Scene {
+            robot: tree.name().to_owned(),
+            q: q.to_vec(),
+            links,
+            joints,
+            spheres,
+            obstacles: Vec::new(),
+            ghosts: Vec::new(),
+            trace: None,
+        })
     }
+
+    /// A path whose last configuration is the one drawn: the others as ghosts, and the trace of
+    /// the deepest link (`fk`'s robot, each configuration checked by the reference as in
+    /// [`Scene::new`]).
+    pub fn add_path(&mut self, fk: &ReferenceFk, path: &[Vec<f64>]) -> Result<(), kinematics::RuntimeError> {
+        let tree = fk.tree();
+        let tip = crate::robot::deepest_link(tree);
+        let origin = |q: &[f64]| -> Result<[f64; 3], kinematics::RuntimeError> {
+            Ok(array(&fk.link_poses(q)?[tip.0].translation.vector))
+        };
+        let mut points = vec![origin(&path[0])?];
+        for (index, q) in path.iter().enumerate() {
+            if index + 1 < path.len() {
+                let poses = fk.link_poses(q)?;
+                let segments = joint_marks(tree, &poses).into_iter().map(|j| (j.name, j.points)).collect();
+                self.ghosts.push(Ghost { index, segments });
+            }
+            if let Some(previous) = index.checked_sub(1).map(|i| &path[i]) {
+                for k in 1..=TRACE_STEPS {
+                    let t = k as f64 / TRACE_STEPS as f64;
+                    let between: Vec<f64> = previous.iter().zip(q).map(|(a, b)| (1.0 - t) * a + t * b).collect();
+                    // The motion's end itself, not its rounding.
+                    points.push(origin(if k == TRACE_STEPS { q } else { &between })?);
+                }
+            }
+        }
+        self.trace = Some(Trace { link: tree.link(tip).name.clone(), points });
+        Ok(())
+    }
+}
+
+/// Every joint's segment and axis at the link poses `poses` (the tree's link order).
+fn joint_marks(tree: &KinematicTree, poses: &[nalgebra::Isometry3<f64>]) -> Vec<JointMark> {
+    tree.joints()
+        .iter()
+        .map(|joint| {
+            let child = poses[joint.child.0];
+            // The joint frame after its motion: the child's pose less the constants after it.
+            let moved = child * kinematics::runtime::fixed_isometry(&joint.after_motion).inverse();
+            let (parent, at, end) = (
+                array(&poses[joint.parent.0].translation.vector),
+                array(&moved.translation.vector),
+                array(&child.translation.vector),
+            );
+            let points = if at == end { vec![parent, end] } else { vec![parent, at, end] };
+            let axis = AxisStyle::of(joint.kind).map(|style| {
+                let direction = moved.rotation * Vector3::new(joint.axis[0], joint.axis[1], joint.axis[2]);
+                (at, array(&direction), style)
+            });
+            JointMark {
+                name: joint.name.clone(),
+                kind: joint.kind.name(),
+                child: tree.link(joint.child).name.clone(),
+                points,
+                axis,
+            }
+        })
+        .collect()
 }

@@ -136,13 +136,14 @@ pub fn render(scene: &Scene) -> String {
     let mut w = |text: String| out.push_str(&text);
     w(format!(
         "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{}\" height=\"{}\" viewBox=\"0 0 {} {}\" \
-         data-robot=\"{}\" data-scale=\"{scale}\" data-q=\"{}\">\n",
+         data-robot=\"{}\" data-scale=\"{scale}\" data-q=\"{}\"{}>\n",
         px(width),
         px(height),
         px(width),
         px(height),
         escape(&scene.robot),
-        q.join(",")
+        q.join(","),
+        if scene.trace.is_some() { format!(" data-path=\"{}\"", scene.ghosts.len() + 1) } else { String::new() }
     ));
     w(format!("<title>robot {} drawn by kinematics draw</title>\n", escape(&scene.robot)));
     w("<defs>\n".to_owned());
@@ -169,13 +170,20 @@ pub fn render(scene: &Scene) -> String {
         ".sphere { fill: #e8a33d; fill-opacity: 0.25; stroke: #c07a12; stroke-width: 0.6; }\n",
         ".obstacle { fill: #8a8fa3; fill-opacity: 0.3; stroke: #4d5266; stroke-width: 1; }\n",
         ".obstacle-edge { stroke: #4d5266; stroke-width: 1; }\n",
+        ".ghost { fill: none; stroke: #555; stroke-width: 1.5; stroke-linecap: round; stroke-linejoin: round; }\n",
+        ".trace { fill: none; stroke: #c0392b; stroke-width: 1.5; }\n",
+        ".waypoint { fill: #c0392b; }\n",
         "</style>\n"
     )
     .to_owned());
     let shown: Vec<String> = scene.q.iter().take(TITLE_VALUES).map(|v| format!("{v:.4}")).collect();
     let more = if scene.q.len() > TITLE_VALUES { format!(", … ({} values)", scene.q.len()) } else { String::new() };
+    let along = match &scene.trace {
+        Some(_) => format!(" along a path of {} configurations, the last", scene.ghosts.len() + 1),
+        None => String::new(),
+    };
     w(format!(
-        "<text x=\"{}\" y=\"{}\" font-size=\"15\">robot {} at q = ({}{more})</text>\n",
+        "<text x=\"{}\" y=\"{}\" font-size=\"15\">robot {}{along} at q = ({}{more})</text>\n",
         px(GAP),
         px(HEADER - 14.0),
         label(&scene.robot),
@@ -253,9 +261,17 @@ fn legend(scene: &Scene, mut x: f64, y: f64) -> String {
         0 => String::new(),
         n => format!("; {n} obstacles blue-grey"),
     };
+    let path = match &scene.trace {
+        Some(trace) => format!(
+            "; a path of {} configurations, the earlier faded, the trace of {} red",
+            scene.ghosts.len() + 1,
+            label(&trace.link)
+        ),
+        None => String::new(),
+    };
     let _ = writeln!(
         out,
-        "<text x=\"{}\" y=\"{}\" font-size=\"11\">links grey, origins as dots; fixed and floating joints have no axis{spheres}{obstacles}</text>",
+        "<text x=\"{}\" y=\"{}\" font-size=\"11\">links grey, origins as dots; fixed and floating joints have no axis{spheres}{obstacles}{path}</text>",
         px(x),
         px(y + 4.0)
     );
@@ -282,6 +298,7 @@ fn view_group(scene: &Scene, placed: &Placed, left: f64) -> String {
         view.name
     );
     out.push_str(&obstacles(scene, placed));
+    out.push_str(&path(scene, placed));
     for ball in &scene.spheres {
         let (x, y) = placed.screen(ball.center);
         let _ = writeln!(
@@ -363,6 +380,56 @@ fn view_group(scene: &Scene, placed: &Placed, left: f64) -> String {
         }
     }
     out.push_str("</g>\n");
+    out
+}
+
+/// A path in one view: each earlier configuration's links, fainter the earlier it comes, then the
+/// trace, with a dot where each configuration puts the traced link.
+fn path(scene: &Scene, placed: &Placed) -> String {
+    let mut out = String::new();
+    let Some(trace) = &scene.trace else { return out };
+    let screen = |points: &[[f64; 3]]| -> (String, String) {
+        let data: Vec<String> = points.iter().map(|p| format!("{},{},{}", p[0], p[1], p[2])).collect();
+        let xy: Vec<String> = points
+            .iter()
+            .map(|&p| {
+                let (x, y) = placed.screen(p);
+                format!("{},{}", px(x), px(y))
+            })
+            .collect();
+        (data.join(" "), xy.join(" "))
+    };
+    let count = scene.ghosts.len() + 1;
+    for ghost in &scene.ghosts {
+        let opacity = 0.15 + 0.45 * ghost.index as f64 / count as f64;
+        for (joint, points) in &ghost.segments {
+            let (data, xy) = screen(points);
+            let _ = writeln!(
+                out,
+                "<polyline class=\"ghost\" data-waypoint=\"{}\" data-joint=\"{}\" data-points=\"{data}\" \
+                 points=\"{xy}\" stroke-opacity=\"{opacity:.3}\"/>",
+                ghost.index,
+                escape(joint)
+            );
+        }
+    }
+    let (data, xy) = screen(&trace.points);
+    let _ = writeln!(
+        out,
+        "<polyline class=\"trace\" data-link=\"{}\" data-points=\"{data}\" points=\"{xy}\"><title>path of {}</title></polyline>",
+        escape(&trace.link),
+        escape(&trace.link)
+    );
+    for (index, &p) in trace.points.iter().step_by(super::TRACE_STEPS).enumerate() {
+        let (x, y) = placed.screen(p);
+        let _ = writeln!(
+            out,
+            "<circle class=\"waypoint\" data-waypoint=\"{index}\" {} cx=\"{}\" cy=\"{}\" r=\"2.5\"><title>configuration {index}</title></circle>",
+            point_data(p),
+            px(x),
+            px(y)
+        );
+    }
     out
 }
 
