@@ -59,7 +59,7 @@ fn point_clouds_are_checked_as_every_point_asked_in_turn() {
         let mut batch = vec![false; qs.len()];
         Panda::collides_batch(&qs, &env, &mut batch).unwrap();
         let packs = |width: usize, check: &dyn Fn(&[[f64; 7]]) -> Vec<bool>| {
-            qs.chunks(width).flat_map(|pack| check(pack)).collect::<Vec<bool>>()
+            qs.chunks(width).flat_map(check).collect::<Vec<bool>>()
         };
         let four = packs(4, &|pack| {
             let lanes: [F64x4; 7] = std::array::from_fn(|j| F64x4::from_fn(|i| pack[i.min(pack.len() - 1)][j]));
