@@ -140,6 +140,8 @@ fn batches_lanes_and_f32_agree_with_the_scalar_centres() {
     }
 }
 
+#[path = "collision/clearance.rs"]
+mod clearance;
 #[path = "collision/cloud.rs"]
 mod cloud;
 #[path = "collision/held.rs"]

@@ -45,6 +45,13 @@ pub enum KinematicsError {
         /// The resolution given.
         resolution: f64,
     },
+    /// A proximity cost's margin (`proximity_cost`) that is negative or not finite.
+    BadMargin {
+        /// Robot name.
+        robot: &'static str,
+        /// The margin given.
+        margin: f64,
+    },
 }
 
 impl fmt::Display for KinematicsError {
@@ -71,6 +78,11 @@ impl fmt::Display for KinematicsError {
                 f,
                 "robot `{robot}`: a motion's resolution must be positive and finite (the largest joint step \
                  between checked configurations), not {resolution}"
+            ),
+            KinematicsError::BadMargin { robot, margin } => write!(
+                f,
+                "robot `{robot}`: a proximity cost's margin must be finite and not negative (the distance \
+                 within which pairs cost), not {margin}"
             ),
         }
     }

@@ -104,26 +104,59 @@ fn signed_distance(ball_at: &Pose, ball: &Ball, pose: &Pose, shape: &dyn Shape) 
 }
 
 impl ReferenceFk {
+    /// The signed distance (m) of every sphere of `spheres` at `q` to every one of `obstacles`,
+    /// sphere by sphere (negative: overlapping by that much; NaN where parry could not measure a
+    /// pair, which no check may take for free).
+    pub fn obstacle_distances(
+        &self,
+        q: &[f64],
+        spheres: &[LinkSphere],
+        obstacles: &ReferenceObstacles,
+    ) -> Result<Vec<f64>, RuntimeError> {
+        let centers = self.sphere_centers(q, spheres)?;
+        let mut out = Vec::with_capacity(spheres.len() * obstacles.shapes.len());
+        for (s, c) in spheres.iter().zip(&centers) {
+            let at = Pose::from_translation(Vector::new(c.x, c.y, c.z));
+            let ball = Ball::new(s.sphere.radius);
+            for (pose, shape) in &obstacles.shapes {
+                out.push(signed_distance(&at, &ball, pose, shape.as_ref()));
+            }
+        }
+        Ok(out)
+    }
+
     /// The smallest signed distance (m) between the robot's `spheres` at `q` and `obstacles`
     /// (negative: overlapping by that much; infinite with no obstacle; NaN if parry could not
-    /// measure a pair, which no check may take for free).
+    /// measure a pair).
     pub fn obstacle_distance(
         &self,
         q: &[f64],
         spheres: &[LinkSphere],
         obstacles: &ReferenceObstacles,
     ) -> Result<f64, RuntimeError> {
+        Ok(least(&self.obstacle_distances(q, spheres, obstacles)?))
+    }
+
+    /// The signed distance (m) between every two spheres of the links of each pair in `pairs`
+    /// at `q`, pair by pair.
+    pub fn self_distances(
+        &self,
+        q: &[f64],
+        spheres: &[LinkSphere],
+        pairs: &[(LinkId, LinkId)],
+    ) -> Result<Vec<f64>, RuntimeError> {
         let centers = self.sphere_centers(q, spheres)?;
-        let mut least = f64::INFINITY;
-        for (s, c) in spheres.iter().zip(&centers) {
-            let at = Pose::from_translation(Vector::new(c.x, c.y, c.z));
-            let ball = Ball::new(s.sphere.radius);
-            for (pose, shape) in &obstacles.shapes {
-                let d = signed_distance(&at, &ball, pose, shape.as_ref());
-                least = if d.is_nan() { f64::NAN } else { least.min(d) };
+        let at = |c: &Point3<f64>| Pose::from_translation(Vector::new(c.x, c.y, c.z));
+        let mut out = Vec::new();
+        for &(a, b) in pairs {
+            for (sa, ca) in spheres.iter().zip(&centers).filter(|(s, _)| s.link == a) {
+                for (sb, cb) in spheres.iter().zip(&centers).filter(|(s, _)| s.link == b) {
+                    let (ball_a, ball_b) = (Ball::new(sa.sphere.radius), Ball::new(sb.sphere.radius));
+                    out.push(signed_distance(&at(ca), &ball_a, &at(cb), &ball_b));
+                }
             }
         }
-        Ok(least)
+        Ok(out)
     }
 
     /// The smallest signed distance (m) between spheres of the links of each pair in `pairs` at
@@ -134,20 +167,13 @@ impl ReferenceFk {
         spheres: &[LinkSphere],
         pairs: &[(LinkId, LinkId)],
     ) -> Result<f64, RuntimeError> {
-        let centers = self.sphere_centers(q, spheres)?;
-        let mut least = f64::INFINITY;
-        for &(a, b) in pairs {
-            for (sa, ca) in spheres.iter().zip(&centers).filter(|(s, _)| s.link == a) {
-                for (sb, cb) in spheres.iter().zip(&centers).filter(|(s, _)| s.link == b) {
-                    let at = |c: &Point3<f64>| Pose::from_translation(Vector::new(c.x, c.y, c.z));
-                    let d =
-                        signed_distance(&at(ca), &Ball::new(sa.sphere.radius), &at(cb), &Ball::new(sb.sphere.radius));
-                    least = if d.is_nan() { f64::NAN } else { least.min(d) };
-                }
-            }
-        }
-        Ok(least)
+        Ok(least(&self.self_distances(q, spheres, pairs)?))
     }
+}
+
+/// The least of `distances` (infinite with none), NaN if one is.
+fn least(distances: &[f64]) -> f64 {
+    distances.iter().fold(f64::INFINITY, |least, &d| if d.is_nan() || least.is_nan() { f64::NAN } else { least.min(d) })
 }
 
 impl ReferenceFk {

@@ -20,6 +20,10 @@ use crate::request::{Compiled, Request, compile};
 /// The name of the body computing the poses of the links with spheres, which the checks take.
 const CHECK_BODY: &str = "generic_collision_poses";
 
+/// The name of the body computing the poses and geometric Jacobians (`LOCAL_WORLD_ALIGNED`) of
+/// the links with spheres, which the distances' gradients take.
+const JACOBIAN_BODY: &str = "generic_collision_jacobians";
+
 fn link_frame(cx: &Context<'_>) -> CollisionLayout {
     CollisionLayout::new(cx.tree(), cx.spheres())
 }
@@ -57,7 +61,21 @@ pub(super) fn bodies(cx: &Context<'_>, name: &str) -> Result<(Vec<TokenStream>, 
     ];
     items.extend(tables(cx, &frame));
     items.push(hold_tables(cx, &frame)?);
+    items.push(jacobians_body(cx, &frame)?);
     Ok((items, doc))
+}
+
+/// The body the distances' gradients take: the links with spheres, each its pose and geometric
+/// Jacobian (`LOCAL_WORLD_ALIGNED`, at its origin), computed together.
+fn jacobians_body(cx: &Context<'_>, frame: &CollisionLayout) -> Result<TokenStream, CompileError> {
+    let tree = cx.tree();
+    let request = Request {
+        base: Some(cx.base.clone()),
+        tips: frame.links.iter().map(|&l| tree.link(l).name.clone()).collect(),
+        ..Request::default()
+    }
+    .pose_and_jacobian(kinematics_model::JacobianFrame::LocalWorldAligned);
+    Ok(emit_function(&compile(tree, &request)?, &cx.body_options(JACOBIAN_BODY)))
 }
 
 /// The tables a held object is made from (`collision::HoldTables`): every link of the tree with,
@@ -248,6 +266,13 @@ pub(super) fn checks(cx: &Context<'_>, out: &mut Functions) {
                 out.typed.push(motion(cx, form, &sig, &poses));
                 continue;
             }
+            CollisionFunction::Clearance
+            | CollisionFunction::ClearanceGradient
+            | CollisionFunction::ProximityCost
+            | CollisionFunction::ProximityCostGradient => {
+                out.typed.push(distance(cx, function, form, &sig, &poses));
+                continue;
+            }
         };
         let never_free = "A configuration with a NaN or infinite entry is colliding.";
         let item = match form {
@@ -376,5 +401,95 @@ fn motion(cx: &Context<'_>, form: Form, sig: &TokenStream, poses: &TokenStream) 
                 &motion, #[inline(always)] |q| #check, #[inline(always)] |q| #check,
             ))
         }
+    }
+}
+
+/// `clearance`, `clearance_gradient`, `proximity_cost` and `proximity_cost_gradient`: the core's
+/// scans on the checks' poses, or (for a gradient) on the poses and Jacobians of the links with
+/// spheres; per scalar dispatched, or on any lane type.
+fn distance(
+    cx: &Context<'_>,
+    function: CollisionFunction,
+    form: Form,
+    sig: &TokenStream,
+    poses: &TokenStream,
+) -> TokenStream {
+    let p = &cx.p;
+    let j = proc_macro2::Ident::new(JACOBIAN_BODY, proc_macro2::Span::call_site());
+    let split = if link_frame(cx).links.len() == 1 {
+        quote!(let (pose, jacobian) = #j(q); let (poses, jacobians) = ([pose], [jacobian]);)
+    } else {
+        quote!(let both = #j(q); let (poses, jacobians) = (both.map(|(pose, _)| pose), both.map(|(_, j)| j));)
+    };
+    let (value, what, margin) = match function {
+        CollisionFunction::Clearance => (
+            quote!(COLLISION_TABLES.clearance(q, #poses, environment)),
+            "The clearance of the robot at `q`: the smallest signed distance (m) between one of its spheres and an \
+             obstacle of `environment` (a point cloud's too), or between two spheres of a pair `self_collides` \
+             checks; negative, the depth of the deepest overlap; infinite with neither",
+            false,
+        ),
+        CollisionFunction::ClearanceGradient => (
+            quote!({ #split COLLISION_TABLES.clearance_gradient(q, &poses, &jacobians, environment) }),
+            "The clearance (as `clearance`) and its gradient with respect to the velocities (one entry per column \
+             of a Jacobian: per joint, or the floating base's six first): the nearest pair's ends carried through \
+             their links' Jacobians. Where two pairs are equally near the clearance has a kink and the gradient is \
+             the first found's; where the nearest spheres' centres coincide its direction is taken as zero",
+            false,
+        ),
+        CollisionFunction::ProximityCost => (
+            quote!(COLLISION_TABLES.proximity_cost(q, #poses, environment, margin)),
+            "The proximity cost of the robot at `q`: over every pair `clearance` measures whose signed distance `d` \
+             is below `margin` (m), the sum of `(margin - d)^2`; zero when all are at least `margin` apart, and \
+             smooth but where a pair is exactly at the margin. A margin that is negative or not finite is an error",
+            true,
+        ),
+        CollisionFunction::ProximityCostGradient => (
+            quote!({ #split COLLISION_TABLES.proximity_cost_gradient(q, &poses, &jacobians, environment, margin) }),
+            "The proximity cost (as `proximity_cost`) and its gradient with respect to the velocities (as \
+             `clearance_gradient`'s): each pair within the margin contributes `-2 (margin - d)` times its \
+             distance's gradient. A margin that is negative or not finite is an error",
+            true,
+        ),
+        _ => unreachable!("invariant: distance() is called for the four distance functions only"),
+    };
+    let never_free = "A configuration with a NaN or infinite entry gives NaN.";
+    let checked = |value: TokenStream| {
+        if margin {
+            quote! {
+                if !(margin.is_finite() && margin >= 0.0) {
+                    return ::core::result::Result::Err(#p::KinematicsError::BadMargin { robot: Self::ROBOT, margin });
+                }
+                ::core::result::Result::Ok(#value)
+            }
+        } else {
+            value
+        }
+    };
+    match form {
+        Form::Typed(ScalarType { t, .. }) => {
+            let doc = format!("{what} (`{t}`). {never_free}");
+            let body = checked(quote!(#p::dispatch(#[inline(always)] || #value)));
+            quote! {
+                #[doc = #doc]
+                #[inline]
+                #[allow(clippy::redundant_closure)]
+                #sig { #body }
+            }
+        }
+        Form::Generic => {
+            let doc = format!(
+                "{what}, on any lane type (`F64x4`, `F64x8`, `F32x8`, `F32x16`; `f64` and `f32` are one lane), each \
+                 lane its own configuration's. {never_free} Not dispatched: wrap a loop of calls in \
+                 `kinematics::dispatch` to run it with the widest instruction set the CPU has."
+            );
+            let body = checked(value);
+            quote! {
+                #[doc = #doc]
+                #[inline]
+                #sig { #body }
+            }
+        }
+        _ => unreachable!("invariant: the surface gives the distances typed and generic forms only"),
     }
 }

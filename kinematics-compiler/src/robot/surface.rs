@@ -643,6 +643,14 @@ pub enum CollisionFunction {
     MotionCollides,
     /// `hold(link, spheres, touching)`: a held object.
     Hold,
+    /// `clearance(&q, &environment)`: the smallest signed distance.
+    Clearance,
+    /// `clearance_gradient(&q, &environment)`: it and its gradient.
+    ClearanceGradient,
+    /// `proximity_cost(&q, &environment, margin)`: the sum of squared depths within a margin.
+    ProximityCost,
+    /// `proximity_cost_gradient(&q, &environment, margin)`: it and its gradient.
+    ProximityCostGradient,
 }
 
 impl Render {
@@ -650,7 +658,7 @@ impl Render {
     /// then `self_collides`, per scalar the function on one configuration and its two batches
     /// (verdicts into `out: &mut [bool]`), then the generic one on any lane type (a verdict mask);
     /// then `motion_collides` per scalar (the first colliding fraction of a straight motion), then
-    /// `hold`. What `collides` and `motion_collides` are checked against is a `collision::World`
+    /// `hold`, then the distances ([`Render::distance_items`]). What `collides` and `motion_collides` are checked against is a `collision::World`
     /// of the robot: an `Environment`, or one with an object the robot holds.
     pub fn collision_items(&self) -> Vec<(CollisionFunction, Form, Signature)> {
         let (p, n) = (&self.p, self.dof());
@@ -737,6 +745,63 @@ impl Render {
                 ),
             },
         ));
+        out.extend(self.distance_items());
+        out
+    }
+
+    /// The distances' functions: `clearance`, `clearance_gradient`, `proximity_cost` and
+    /// `proximity_cost_gradient`, each per scalar on one configuration (dispatched), then on any
+    /// lane type. A gradient has one entry per velocity (the Jacobians' columns); a cost takes a
+    /// margin and refuses one that is negative or not finite.
+    fn distance_items(&self) -> Vec<(CollisionFunction, Form, Signature)> {
+        let (p, n, nv) = (&self.p, self.dof(), self.velocities());
+        let environment = quote!(environment: &#p::collision::Environment<'_>);
+        let mut out = Vec::new();
+        for function in [
+            CollisionFunction::Clearance,
+            CollisionFunction::ClearanceGradient,
+            CollisionFunction::ProximityCost,
+            CollisionFunction::ProximityCostGradient,
+        ] {
+            let name = function.name();
+            let (gradient, margin) = match function {
+                CollisionFunction::ClearanceGradient => (true, false),
+                CollisionFunction::ProximityCost => (false, true),
+                CollisionFunction::ProximityCostGradient => (true, true),
+                _ => (false, false),
+            };
+            let output = |t: &TokenStream| {
+                let value = if gradient { quote!((#t, [#t; #nv])) } else { quote!(#t) };
+                if margin { quote!(::core::result::Result<#value, #p::KinematicsError>) } else { value }
+            };
+            let margin = if margin { quote!(, margin: f64) } else { quote!() };
+            for scalar in self.scalar_types() {
+                let (suffix, t) = (scalar.suffix, &scalar.t);
+                out.push((
+                    function,
+                    Form::Typed(scalar.clone()),
+                    Signature {
+                        name: format_ident!("{name}{suffix}"),
+                        generics: self.dof_generics(),
+                        inputs: quote!(q: &[#t; #n], #environment #margin),
+                        output: output(t),
+                    },
+                ));
+            }
+            let scalar = &self.scalar;
+            let mut generics = vec![self.collision_scalar()];
+            generics.extend(self.dof_generics());
+            out.push((
+                function,
+                Form::Generic,
+                Signature {
+                    name: format_ident!("{name}_generic"),
+                    generics,
+                    inputs: quote!(q: &[#scalar; #n], #environment #margin),
+                    output: output(scalar),
+                },
+            ));
+        }
         out
     }
 
@@ -755,6 +820,10 @@ impl CollisionFunction {
             CollisionFunction::SelfCollides => "self_collides",
             CollisionFunction::MotionCollides => "motion_collides",
             CollisionFunction::Hold => "hold",
+            CollisionFunction::Clearance => "clearance",
+            CollisionFunction::ClearanceGradient => "clearance_gradient",
+            CollisionFunction::ProximityCost => "proximity_cost",
+            CollisionFunction::ProximityCostGradient => "proximity_cost_gradient",
         }
     }
 }

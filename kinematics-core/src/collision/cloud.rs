@@ -318,8 +318,81 @@ impl SphereQuery for PointCloud {
         false
     }
 
+    /// The nearest point by shells of cells around `center`'s (clamped to the grid): a cell
+    /// `k` shells away lies at least `k - 1` cells from `center`, so the search ends at the first
+    /// shell beyond the nearest point found (or beyond `limit`); inside the grid it starts at the
+    /// rings to the nearest occupied cell.
+    fn nearest(&self, c: Vec3, limit: f64) -> Option<(f64, Vec3)> {
+        if self.points.is_empty() {
+            return None;
+        }
+        let reach = limit + self.radius;
+        if box_distances(&c, &self.low, &self.high).0.sqrt() - self.slack >= reach {
+            return None;
+        }
+        let home = self.cell_of(&c);
+        let inside = (0..3).all(|i| c[i] >= self.low[i] && c[i] <= self.high[i]);
+        let first = if inside { usize::from(self.rings[self.cell_index(home)]) } else { 0 };
+        let widest = self.cells.iter().copied().max().unwrap_or(1);
+        let (mut best, mut point) = (reach, None);
+        for k in first..=widest {
+            #[allow(clippy::cast_precision_loss)]
+            let floor = (k.saturating_sub(1)) as f64 * self.cell - self.slack;
+            if floor >= best {
+                break;
+            }
+            self.shell(home, k, |cell| {
+                let i = self.cell_index(cell);
+                let (start, end) = (self.starts[i] as usize, self.starts[i + 1] as usize);
+                if start == end {
+                    return;
+                }
+                let (low, high) = self.cells_box(cell, cell.map(|x| x + 1));
+                if box_distances(&c, &low, &high).0.sqrt() >= best {
+                    return;
+                }
+                for p in &self.points[start..end] {
+                    let d = [c[0] - p[0], c[1] - p[1], c[2] - p[2]];
+                    let length = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+                    if length < best {
+                        best = length;
+                        point = Some(d);
+                    }
+                }
+            });
+        }
+        let d = point?;
+        let normal = if best > 0.0 { d.map(|x| x / best) } else { [0.0; 3] };
+        Some((best - self.radius, normal))
+    }
+
     fn len(&self) -> usize {
         self.points.len()
+    }
+}
+
+impl PointCloud {
+    /// Calls `visit` with each cell of the grid exactly `k` cells from `home` (Chebyshev).
+    fn shell(&self, home: [usize; 3], k: usize, mut visit: impl FnMut([usize; 3])) {
+        let range = |i: usize| home[i].saturating_sub(k)..=(home[i] + k).min(self.cells[i] - 1);
+        for z in range(2) {
+            for y in range(1) {
+                let edge = z.abs_diff(home[2]) == k || y.abs_diff(home[1]) == k;
+                if edge {
+                    for x in range(0) {
+                        visit([x, y, z]);
+                    }
+                } else {
+                    // Only the two faces at x = home +- k, where they lie in the grid.
+                    if let Some(x) = home[0].checked_sub(k).filter(|_| k > 0) {
+                        visit([x, y, z]);
+                    }
+                    if home[0] + k < self.cells[0] {
+                        visit([home[0] + k, y, z]);
+                    }
+                }
+            }
+        }
     }
 }
 

@@ -9,8 +9,10 @@
 //! counts as colliding. The answer does not depend on the order of the obstacles: every obstacle
 //! is tested until one is hit.
 
+mod clearance;
 #[cfg(feature = "point-cloud")]
 mod cloud;
+mod distance;
 mod held;
 mod motion;
 mod obstacles;

@@ -126,6 +126,12 @@ pub trait SphereQuery: core::fmt::Debug + Sync {
     /// Whether the sphere of `center` and `radius` touches or overlaps an obstacle (touching
     /// counts). `center` is finite and `radius` positive.
     fn touches(&self, center: Vec3, radius: f64) -> bool;
+    /// The signed distance from `center` to the nearest obstacle's surface (negative inside one)
+    /// and its gradient with respect to `center` (the unit vector away from that obstacle, or
+    /// zero where it is not defined), when some obstacle is nearer than `limit`; `None` when
+    /// none is. `center` is finite and `limit` positive (perhaps infinite). What `clearance` and
+    /// `proximity_cost` ask.
+    fn nearest(&self, center: Vec3, limit: f64) -> Option<(f64, Vec3)>;
     /// How many obstacles.
     fn len(&self) -> usize;
     /// Whether there is none.
@@ -318,7 +324,7 @@ pub(crate) trait Visit<L: CheckLanes> {
 
 /// A prepared obstacle: the lanes where a sphere touches it. Centres must be finite (the checks
 /// mark configurations that are not before testing); a NaN distance would count as a hit.
-pub(crate) trait Prepared<L: CheckLanes> {
+pub(crate) trait Prepared<L: CheckLanes>: super::distance::Measure<L> {
     /// The lanes where the sphere of `center` and `radius` touches the obstacle.
     fn hits(&self, center: &[L; 3], radius: L) -> L::Flags;
 }
@@ -343,12 +349,12 @@ fn splat<L: CheckLanes>(v: Vec3) -> [L; 3] {
 }
 
 #[inline(always)]
-fn lane_dot<L: CheckLanes>(a: &[L; 3], b: &[L; 3]) -> L {
+pub(super) fn lane_dot<L: CheckLanes>(a: &[L; 3], b: &[L; 3]) -> L {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
 
 #[inline(always)]
-fn lane_sub<L: CheckLanes>(a: &[L; 3], b: &[L; 3]) -> [L; 3] {
+pub(super) fn lane_sub<L: CheckLanes>(a: &[L; 3], b: &[L; 3]) -> [L; 3] {
     [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
 }
 
@@ -356,8 +362,8 @@ fn lane_sub<L: CheckLanes>(a: &[L; 3], b: &[L; 3]) -> [L; 3] {
 
 /// A sphere obstacle in lanes.
 pub(crate) struct PreparedSphere<L> {
-    center: [L; 3],
-    radius: L,
+    pub(super) center: [L; 3],
+    pub(super) radius: L,
 }
 
 impl Obstacle for SphereObstacle {
@@ -379,10 +385,10 @@ impl<L: CheckLanes> Prepared<L> for PreparedSphere<L> {
 
 /// A capsule obstacle in lanes: one end, the axis, the axis's inverse squared length.
 pub(crate) struct PreparedCapsule<L> {
-    a: [L; 3],
-    axis: [L; 3],
-    inverse: L,
-    radius: L,
+    pub(super) a: [L; 3],
+    pub(super) axis: [L; 3],
+    pub(super) inverse: L,
+    pub(super) radius: L,
 }
 
 impl Obstacle for CapsuleObstacle {
@@ -415,13 +421,14 @@ impl<L: CheckLanes> Prepared<L> for PreparedCapsule<L> {
     }
 }
 
-/// A cylinder obstacle in lanes: one cap's centre, the unit axis, the length, `R^2` and `4 R^2`.
+/// A cylinder obstacle in lanes: one cap's centre, the unit axis, the length, `R`, `R^2` and `4 R^2`.
 pub(crate) struct PreparedCylinder<L> {
-    a: [L; 3],
-    unit: [L; 3],
-    length: L,
-    radius_squared: L,
-    four_radius_squared: L,
+    pub(super) a: [L; 3],
+    pub(super) unit: [L; 3],
+    pub(super) length: L,
+    pub(super) radius: L,
+    pub(super) radius_squared: L,
+    pub(super) four_radius_squared: L,
 }
 
 impl Obstacle for CylinderObstacle {
@@ -434,6 +441,7 @@ impl Obstacle for CylinderObstacle {
             a: splat::<L>(self.a),
             unit: splat([axis[0] / length, axis[1] / length, axis[2] / length]),
             length: L::from_f64(length),
+            radius: L::from_f64(self.radius),
             radius_squared: L::from_f64(self.radius * self.radius),
             four_radius_squared: L::from_f64(4.0 * self.radius * self.radius),
         });
@@ -462,15 +470,15 @@ impl<L: CheckLanes> Prepared<L> for PreparedCylinder<L> {
 
 /// A box obstacle whose axes are the world's, in lanes: its centre and half extents.
 pub(crate) struct AlignedBox<L> {
-    center: [L; 3],
-    half: [L; 3],
+    pub(super) center: [L; 3],
+    pub(super) half: [L; 3],
 }
 
 /// A turned box obstacle in lanes: its centre, its axes (rows), its half extents.
 pub(crate) struct TurnedBox<L> {
-    center: [L; 3],
-    rows: [[L; 3]; 3],
-    half: [L; 3],
+    pub(super) center: [L; 3],
+    pub(super) rows: [[L; 3]; 3],
+    pub(super) half: [L; 3],
 }
 
 impl Obstacle for BoxObstacle {

@@ -184,10 +184,45 @@ pub trait CheckLanes: Real {
     fn non_finite(self) -> Self::Flags;
     /// Lane `i` (`i < WIDTH`) as an `f64`: for tests a check makes one lane at a time.
     fn lane_f64(self, i: usize) -> f64;
+    /// The lane-wise square root (the hardware's with `std`, libm's without: both correctly
+    /// rounded).
+    fn sqrt(self) -> Self;
+    /// `then` in the lanes of `flags`, `otherwise` in the others (a select, not a branch).
+    fn select(flags: Self::Flags, then: Self, otherwise: Self) -> Self;
+    /// The lanes `f(0)`, `f(1)`, ... (rounded to `f32` for the `f32` types): for what is asked
+    /// one lane at a time.
+    fn from_lanes(f: impl FnMut(usize) -> f64) -> Self;
+}
+
+/// The square root of an `f64`: std's (one instruction, packed by LLVM in a loop over lanes) or,
+/// without `std`, libm's (the same correctly rounded value).
+#[inline(always)]
+fn root64(x: f64) -> f64 {
+    #[cfg(feature = "std")]
+    {
+        std::primitive::f64::sqrt(x)
+    }
+    #[cfg(not(feature = "std"))]
+    {
+        libm::sqrt(x)
+    }
+}
+
+/// [`root64`] for `f32`.
+#[inline(always)]
+fn root32(x: f32) -> f32 {
+    #[cfg(feature = "std")]
+    {
+        std::primitive::f32::sqrt(x)
+    }
+    #[cfg(not(feature = "std"))]
+    {
+        libm::sqrtf(x)
+    }
 }
 
 macro_rules! scalar_check {
-    ($t:ty) => {
+    ($t:ty, $root:ident) => {
         impl CheckLanes for $t {
             type Flags = bool;
             const WIDTH: usize = 1;
@@ -216,17 +251,30 @@ macro_rules! scalar_check {
             fn lane_f64(self, _: usize) -> f64 {
                 f64::from(self)
             }
+            #[inline(always)]
+            fn sqrt(self) -> Self {
+                $root(self)
+            }
+            #[inline(always)]
+            fn select(flags: bool, then: Self, otherwise: Self) -> Self {
+                if flags { then } else { otherwise }
+            }
+            #[inline(always)]
+            #[allow(clippy::cast_possible_truncation, reason = "f32 lanes take f32's rounding")]
+            fn from_lanes(mut f: impl FnMut(usize) -> f64) -> Self {
+                f(0) as $t
+            }
         }
     };
 }
 
-scalar_check!(f64);
-scalar_check!(f32);
+scalar_check!(f64, root64);
+scalar_check!(f32, root32);
 
 // Written as loops over the lanes (no early exits, no calls) so LLVM packs each into one
 // instruction of the width the function is compiled for.
 macro_rules! lane_check {
-    ($name:ident, $flags:ident, $word:ty, $signed:ty, $lanes:literal, $doc:literal) => {
+    ($name:ident, $flags:ident, $word:ty, $signed:ty, $lanes:literal, $root:ident, $doc:literal) => {
         #[doc = $doc]
         #[derive(Debug, Clone, Copy, PartialEq, Eq)]
         #[repr(C, align(64))]
@@ -349,14 +397,41 @@ macro_rules! lane_check {
             fn lane_f64(self, i: usize) -> f64 {
                 f64::from(self.0[i])
             }
+            #[inline(always)]
+            fn sqrt(self) -> Self {
+                let mut out = self.0;
+                for x in &mut out {
+                    *x = $root(*x);
+                }
+                $name(out)
+            }
+            #[inline(always)]
+            fn select(flags: $flags, then: Self, otherwise: Self) -> Self {
+                let mut out = otherwise.0;
+                for i in 0..$lanes {
+                    if flags.0[i] & 1 == 1 {
+                        out[i] = then.0[i];
+                    }
+                }
+                $name(out)
+            }
+            #[inline(always)]
+            #[allow(clippy::cast_possible_truncation, reason = "f32 lanes take f32's rounding")]
+            fn from_lanes(mut f: impl FnMut(usize) -> f64) -> Self {
+                let mut out = [0.0; $lanes];
+                for (i, x) in out.iter_mut().enumerate() {
+                    *x = f(i) as _;
+                }
+                $name(out)
+            }
         }
     };
 }
 
-lane_check!(F64x4, Flags64x4, u64, i64, 4, "The flags of [`F64x4`]'s lanes.");
-lane_check!(F64x8, Flags64x8, u64, i64, 8, "The flags of [`F64x8`]'s lanes.");
-lane_check!(F32x8, Flags32x8, u32, i32, 8, "The flags of [`F32x8`]'s lanes.");
-lane_check!(F32x16, Flags32x16, u32, i32, 16, "The flags of [`F32x16`]'s lanes.");
+lane_check!(F64x4, Flags64x4, u64, i64, 4, root64, "The flags of [`F64x4`]'s lanes.");
+lane_check!(F64x8, Flags64x8, u64, i64, 8, root64, "The flags of [`F64x8`]'s lanes.");
+lane_check!(F32x8, Flags32x8, u32, i32, 8, root32, "The flags of [`F32x8`]'s lanes.");
+lane_check!(F32x16, Flags32x16, u32, i32, 16, root32, "The flags of [`F32x16`]'s lanes.");
 
 /// The lanes of `q` with a NaN or an infinite entry: configurations that are never free.
 #[inline(always)]
