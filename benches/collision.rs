@@ -8,6 +8,9 @@
 //! - `self_collides`, one at a time and in batches;
 //! - `motion_collides` (`f64` and `f32`) on motions between consecutive free configurations at
 //!   0.05 rad, per motion (the fraction colliding and the configurations a motion printed);
+//! - `clearance`, `clearance_gradient` (one configuration, and in `F64x4` lanes) and
+//!   `proximity_cost_gradient` (a 5 cm margin) on the all-free configurations, beside the
+//!   reference's parry distances;
 //! - point clouds (the Panda): a cloud of 10^3 to 10^6 points sampled on the tabletop scene's
 //!   surfaces, its k-d tree's build time and `collides` per configuration against it;
 //! - holding an object (the Panda, a two-sphere bottle in the grasp frame) in the tabletop scene;
@@ -28,8 +31,8 @@ use std::time::Duration;
 
 use criterion::Throughput;
 use kinematics::collision::{BoxObstacle, Environment, PointCloud, SphereObstacle};
-use kinematics::model::collision::{Meshes, link_spheres};
-use kinematics::{Configurations, Kinematics, SceneObstacles};
+use kinematics::model::collision::{Meshes, link_spheres, sphere_pairs};
+use kinematics::{Configurations, F64x4, Kinematics, Lanes, SceneObstacles};
 
 #[derive(Kinematics)]
 #[kinematics(urdf = "robots/panda_spherized.urdf", collision(srdf = "robots/panda.srdf"), scalars(f64, f32))]
@@ -48,18 +51,27 @@ fn inputs<const N: usize>(limits: &[kinematics::JointLimits]) -> Vec<[f64; N]> {
 /// configurations.
 const RESOLUTION: f64 = 0.05;
 
+/// The proximity cost's margin (m): pairs nearer than this cost.
+const MARGIN: f64 = 0.05;
+
 fn scene(name: &str) -> SceneObstacles {
     kinematics::load_scene(format!("{}/scenes/{name}.toml", env!("CARGO_MANIFEST_DIR"))).unwrap()
 }
 
 macro_rules! robot {
-    ($c:expr, $name:literal, $robot:ty, $n:literal) => {{
+    ($c:expr, $name:literal, $robot:ty, $n:literal, $srdf:expr) => {{
         let mut criterion: Option<&mut criterion::Criterion> = $c;
         const S: usize = <$robot>::SPHERE_RADII.len();
         let qs: Vec<[f64; $n]> = inputs(&<$robot>::JOINT_LIMITS);
         let qs32: Vec<[f32; $n]> = qs.iter().map(|q| q.map(|x| x as f32)).collect();
         let reference = <$robot>::reference().unwrap();
         let spheres = link_spheres(reference.tree(), 0.01, Meshes::Refuse).unwrap();
+        let srdf: Option<&str> = $srdf;
+        let disabled = srdf.map(|file| {
+            let text = std::fs::read_to_string(format!("{}/{file}", env!("CARGO_MANIFEST_DIR"))).unwrap();
+            kinematics::model::srdf::parse_srdf(&text).unwrap().disabled_pairs(reference.tree()).unwrap()
+        });
+        let reference_pairs = sphere_pairs(reference.tree(), &spheres, disabled.as_ref()).pairs;
         // Each sphere's link's index in `link_poses` (none for the base, which it leaves out) and
         // its centre in that link's frame.
         let local: Vec<(Option<usize>, [f64; 3])> = spheres
@@ -125,6 +137,12 @@ macro_rules! robot {
                     assert_eq!((*v, hand(q), parry(q)), (one, one, one), "{} in the {scene_name} scene", $name);
                 }
                 assert!(!free.is_empty() && free.len() < qs.len(), "{}: {} free of {}", $name, free.len(), qs.len());
+                // The clearance is positive exactly where `collides` finds nothing (touching
+                // counts as colliding), and the reference's distances agree.
+                for (q, v) in qs.iter().zip(&verdicts) {
+                    let clearance = <$robot>::clearance(q, &env);
+                    assert_eq!(clearance <= 0.0, *v, "{} clearance {clearance} in the {scene_name} scene", $name);
+                }
                 // A motion's answer is a configuration that collides, or its ends are free.
                 for m in motions.iter().take(8) {
                     match <$robot>::motion_collides(&m.0, &m.1, &env, RESOLUTION).unwrap() {
@@ -207,6 +225,48 @@ macro_rules! robot {
                     black_box(<$robot>::motion_collides_f32(&motions32[k].0, &motions32[k].1, &env, RESOLUTION))
                 })
             });
+            // Distances on the free configurations (where no check ends early), beside
+            // `collides_all_free`: the clearance alone, with its gradient, in lanes, the
+            // proximity cost with its gradient, and the reference's parry distances.
+            group.bench_function("clearance_all_free", |b| {
+                b.iter(|| {
+                    k = (k + 1) % free.len();
+                    black_box(<$robot>::clearance(black_box(&free[k]), &env))
+                })
+            });
+            group.bench_function("clearance_gradient_all_free", |b| {
+                b.iter(|| {
+                    k = (k + 1) % free.len();
+                    black_box(<$robot>::clearance_gradient(black_box(&free[k]), &env))
+                })
+            });
+            group.bench_function("proximity_cost_gradient_all_free", |b| {
+                b.iter(|| {
+                    k = (k + 1) % free.len();
+                    black_box(<$robot>::proximity_cost_gradient(black_box(&free[k]), &env, MARGIN))
+                })
+            });
+            let lanes: Vec<[F64x4; $n]> =
+                free.chunks_exact(4).map(|pack| std::array::from_fn(|j| F64x4::from_fn(|i| pack[i][j]))).collect();
+            group.throughput(Throughput::Elements(4 * lanes.len() as u64));
+            group.bench_function("clearance_gradient_all_free_f64x4", |b| {
+                b.iter(|| {
+                    kinematics::dispatch(|| {
+                        for q in &lanes {
+                            black_box(<$robot>::clearance_gradient_generic(black_box(q), &env));
+                        }
+                    })
+                })
+            });
+            group.throughput(Throughput::Elements(1));
+            group.bench_function("reference_clearance", |b| {
+                b.iter(|| {
+                    k = (k + 1) % free.len();
+                    let q = black_box(&free[k]);
+                    let d = reference.obstacle_distance(q, &spheres, &shapes).unwrap();
+                    black_box(d.min(reference.self_distance(q, &spheres, &reference_pairs).unwrap()))
+                })
+            });
             group.finish();
         }
         let Some(c) = criterion else { return };
@@ -257,11 +317,11 @@ macro_rules! robot {
 }
 
 fn panda(c: Option<&mut criterion::Criterion>) {
-    robot!(c, "panda", Panda, 7)
+    robot!(c, "panda", Panda, 7, Some("robots/panda.srdf"))
 }
 
 fn ur5(c: Option<&mut criterion::Criterion>) {
-    robot!(c, "ur5", Ur5, 6)
+    robot!(c, "ur5", Ur5, 6, None)
 }
 
 /// `count` points on the surfaces of `boxes`, each face drawn by its area, from a seeded stream.

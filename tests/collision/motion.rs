@@ -183,3 +183,54 @@ fn a_motion_through_a_configuration_that_is_not_finite_is_never_free() {
     bad[3] = f64::INFINITY;
     assert_eq!(Panda::motion_collides(&q, &bad, &env, 0.1).unwrap(), Some(1.0));
 }
+
+/// The batch of several motions equals `motion_collides` on each, for motions of very different
+/// lengths (so lanes take new motions at different times), colliding and free, `f64` and `f32`,
+/// with a motion through a configuration that is not finite among them; its errors write nothing.
+#[test]
+fn a_batch_of_motions_equals_each_motion_alone() {
+    let scene = tabletop();
+    let env = scene.environment().unwrap();
+    let qs: Vec<[f64; 7]> =
+        Configurations::within(&Panda::JOINT_LIMITS).skip(3).take(90).map(|q| q.try_into().unwrap()).collect();
+    // Full motions, and motions a tenth or a hundredth as long (a planner's short extensions).
+    let mut motions: Vec<([f64; 7], [f64; 7])> = Vec::new();
+    for (k, pair) in qs.chunks(2).enumerate() {
+        let scale = [1.0, 0.1, 0.01][k % 3];
+        let q1 = std::array::from_fn(|j| pair[0][j] + scale * (pair[1][j] - pair[0][j]));
+        motions.push((pair[0], q1));
+    }
+    let mut bad = motions[4].0;
+    bad[2] = f64::NAN;
+    motions.insert(5, (motions[5].0, bad));
+    for resolution in [0.05, 0.3] {
+        let mut out = vec![Some(-1.0); motions.len()];
+        Panda::motion_collides_batch(&motions, &env, resolution, &mut out).unwrap();
+        let alone: Vec<Option<f64>> =
+            motions.iter().map(|(q0, q1)| Panda::motion_collides(q0, q1, &env, resolution).unwrap()).collect();
+        assert_eq!(out, alone, "at {resolution}");
+        let colliding = out.iter().filter(|t| t.is_some()).count();
+        assert!(colliding > 3 && colliding + 3 < out.len(), "{colliding} of {} collide", out.len());
+        assert_eq!(out[5], Some(1.0), "the motion to a configuration that is not finite");
+        // f32: the same against the f32 motion one at a time.
+        let motions32: Vec<([f32; 7], [f32; 7])> =
+            motions.iter().map(|(a, b)| (a.map(|x| x as f32), b.map(|x| x as f32))).collect();
+        let mut out32 = vec![None; motions32.len()];
+        Panda::motion_collides_batch_f32(&motions32, &env, resolution, &mut out32).unwrap();
+        let alone32: Vec<Option<f64>> =
+            motions32.iter().map(|(q0, q1)| Panda::motion_collides_f32(q0, q1, &env, resolution).unwrap()).collect();
+        assert_eq!(out32, alone32, "f32 at {resolution}");
+    }
+    // An empty batch, a batch of one.
+    Panda::motion_collides_batch(&[], &env, 0.1, &mut []).unwrap();
+    let mut one = [None];
+    Panda::motion_collides_batch(&motions[..1], &env, 0.1, &mut one).unwrap();
+    assert_eq!(one[0], Panda::motion_collides(&motions[0].0, &motions[0].1, &env, 0.1).unwrap());
+    // Errors, nothing written.
+    let mut out = vec![Some(-1.0); 2];
+    let error = Panda::motion_collides_batch(&motions[..2], &env, 0.0, &mut out).unwrap_err();
+    assert!(matches!(error, KinematicsError::BadResolution { robot: "panda", .. }), "{error:?}");
+    let error = Panda::motion_collides_batch(&motions[..3], &env, 0.1, &mut out).unwrap_err();
+    assert!(matches!(error, KinematicsError::WrongOutputLength { expected: 3, got: 2, .. }), "{error:?}");
+    assert_eq!(out, vec![Some(-1.0); 2]);
+}

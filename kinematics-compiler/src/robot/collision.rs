@@ -372,14 +372,36 @@ fn hold(sig: &TokenStream) -> TokenStream {
 }
 
 /// `motion_collides` (per scalar): the motion's configurations checked by `collides` in the
-/// lanes the CPU fills (`collision::motion_wide`).
+/// lanes the CPU fills (`collision::motion_wide`); and its batch, several motions one per lane
+/// (`collision::motions_wide`).
 fn motion(cx: &Context<'_>, form: Form, sig: &TokenStream, poses: &TokenStream) -> TokenStream {
     let p = &cx.p;
     let n = cx.render.dof();
-    let Form::Typed(ScalarType { t, lanes, wide, .. }) = form else {
-        unreachable!("invariant: the surface gives motion_collides one typed form per scalar")
-    };
     let check = world_check(p, poses);
+    let (t, lanes, wide, batch) = match form {
+        Form::Typed(ScalarType { t, lanes, wide, .. }) => (t, lanes, wide, false),
+        Form::Batch(ScalarType { t, lanes, wide, .. }) => (t, lanes, wide, true),
+        _ => unreachable!("invariant: the surface gives motion_collides a typed and a batch form per scalar"),
+    };
+    if batch {
+        let doc = format!(
+            "`motion_collides` for every motion `(q0, q1)` of `motions`, into `out` (one answer each, as \
+             `motion_collides` gives it) (`{t}`): the motions one per SIMD lane, each lane checking its motion's \
+             configurations in order and taking the next motion when it meets a collision or the end, so every \
+             lane stays busy until the batch runs out. A resolution that is not positive and finite, or an `out` \
+             of another length than `motions`, is an error, and nothing is written."
+        );
+        return quote! {
+            #[doc = #doc]
+            #[inline]
+            #[allow(clippy::redundant_closure)]
+            #sig {
+                #p::collision::motions_wide::<#lanes, #wide, #n>(
+                    Self::ROBOT, motions, resolution, out, #[inline(always)] |q| #check, #[inline(always)] |q| #check,
+                )
+            }
+        };
+    }
     let doc = format!(
         "Where the straight motion from `q0` to `q1` first collides (as `collides`: obstacles and self), \
          checked at `resolution`: the configurations `(1 - t) q0 + t q1` at `t = k / steps`, `k = 0..=steps`, \

@@ -639,7 +639,8 @@ pub enum CollisionFunction {
     Collides,
     /// `self_collides(&q)`.
     SelfCollides,
-    /// `motion_collides(&q0, &q1, &environment, resolution)`: one form per scalar.
+    /// `motion_collides(&q0, &q1, &environment, resolution)`, and its batch of several motions,
+    /// per scalar.
     MotionCollides,
     /// `hold(link, spheres, touching)`: a held object.
     Hold,
@@ -657,7 +658,8 @@ impl Render {
     /// The collision checks' functions (with `collision`), in the order emitted: for `collides`
     /// then `self_collides`, per scalar the function on one configuration and its two batches
     /// (verdicts into `out: &mut [bool]`), then the generic one on any lane type (a verdict mask);
-    /// then `motion_collides` per scalar (the first colliding fraction of a straight motion), then
+    /// then `motion_collides` per scalar (the first colliding fraction of a straight motion) and
+    /// its batch (several motions, one per lane), then
     /// `hold`, then the distances ([`Render::distance_items`]). What `collides` and `motion_collides` are checked against is a `collision::World`
     /// of the robot: an `Environment`, or one with an object the robot holds.
     pub fn collision_items(&self) -> Vec<(CollisionFunction, Form, Signature)> {
@@ -727,6 +729,19 @@ impl Render {
                     generics: self.dof_generics(),
                     inputs: quote!(q0: &[#t; #n], q1: &[#t; #n], #world, resolution: f64),
                     output: quote!(::core::result::Result<::core::option::Option<f64>, #p::KinematicsError>),
+                },
+            ));
+            out.push((
+                CollisionFunction::MotionCollides,
+                Form::Batch(scalar.clone()),
+                Signature {
+                    name: format_ident!("motion_collides_batch{suffix}"),
+                    generics: self.dof_generics(),
+                    inputs: quote!(
+                        motions: &[([#t; #n], [#t; #n])], #world, resolution: f64,
+                        out: &mut [::core::option::Option<f64>]
+                    ),
+                    output: error.clone(),
                 },
             ));
         }

@@ -14,7 +14,7 @@
 
 use super::distance::{cross, length, unit};
 use super::obstacles::{Environment, Obstacle, Prepared, SphereQuery, Visit, lane_sub};
-use super::tables::CollisionTables;
+use super::tables::{CollisionTables, fence};
 use super::verdicts::{CheckLanes, Flags, non_finite};
 use crate::pose::Pose;
 
@@ -29,6 +29,10 @@ struct End<L> {
 
 /// What a scan does with each pair it measures.
 trait Sink<L: CheckLanes> {
+    /// Whether the sink's limit falls with upper bounds on the nearest pair ([`Sink::upper`]).
+    const WANTS_UPPER: bool;
+    /// An upper bound on the nearest pair's distance.
+    fn upper(&mut self, bound: L);
     /// Pairs that are not nearer than this in any lane need not be measured.
     fn limit(&self) -> L;
     /// A pair at signed distance `d`: a sphere (`a`) and an obstacle, or two of the robot's
@@ -71,6 +75,7 @@ impl CollisionTables<'_> {
     ) -> (L, [L; V]) {
         let mut least = Least::<L, true>::new();
         self.scan(poses, env, &mut least);
+        let jacobians = fence(jacobians);
         let zero = L::from_f64(0.0);
         let mut gradient = [zero; V];
         for (k, (pose, jacobian)) in poses.iter().zip(jacobians).enumerate() {
@@ -122,6 +127,7 @@ impl CollisionTables<'_> {
         let mut cost = Cost::<L, K, true>::new(margin, poses);
         self.scan(poses, env, &mut cost);
         let mut gradient = [L::from_f64(0.0); V];
+        let jacobians = fence(jacobians);
         for ((coefficients, jacobian), touched) in cost.coefficients.iter().zip(jacobians).zip(cost.touched) {
             if touched {
                 contract(coefficients, jacobian, &mut gradient);
@@ -135,6 +141,10 @@ impl CollisionTables<'_> {
     /// pairs, each pruned by bounding spheres against the sink's limit.
     #[inline(always)]
     fn scan<L: CheckLanes, S: Sink<L>>(&self, poses: &[Pose<L>], env: &Environment<'_>, sink: &mut S) {
+        let poses = fence(poses);
+        if S::WANTS_UPPER {
+            self.upper_bounds(poses, env, sink);
+        }
         let mut bounds = [([L::from_f64(0.0); 3], L::from_f64(0.0)); CHUNK];
         for first in (0..self.links.len()).step_by(CHUNK) {
             let links = first..self.links.len().min(first + CHUNK);
@@ -159,6 +169,34 @@ impl CollisionTables<'_> {
             }
         }
         self.scan_pairs(poses, sink);
+    }
+
+    /// Upper bounds on the nearest obstacle pair, for the sink's limit before any pair is
+    /// measured: a link whose bounding sphere is at signed distance `d` from an obstacle has every
+    /// sphere within `d + R` of it (`R` the bound's radius), so the nearest pair is no farther.
+    /// (Without them the first obstacles measured, perhaps far, would prune nothing.)
+    #[inline(always)]
+    fn upper_bounds<L: CheckLanes, S: Sink<L>>(&self, poses: &[Pose<L>], env: &Environment<'_>, sink: &mut S) {
+        let mut bounds = [([L::from_f64(0.0); 3], L::from_f64(0.0)); CHUNK];
+        for first in (0..self.links.len()).step_by(CHUNK) {
+            let links = first..self.links.len().min(first + CHUNK);
+            for (slot, k) in bounds.iter_mut().zip(links.clone()) {
+                *slot = (poses[k].place(self.links[k].2), L::from_f64(self.links[k].3));
+            }
+            let mut visit = Bounding { bounds: &bounds[..links.len()], sink: &mut *sink };
+            for o in env.spheres {
+                o.prepare(&mut visit);
+            }
+            for o in env.capsules {
+                o.prepare(&mut visit);
+            }
+            for o in env.cylinders {
+                o.prepare(&mut visit);
+            }
+            for o in env.boxes {
+                o.prepare(&mut visit);
+            }
+        }
     }
 
     /// The spheres of link `k`, `start..end` in the tables.
@@ -237,6 +275,21 @@ impl<L: CheckLanes, S: Sink<L>> Visit<L> for Measuring<'_, '_, '_, L, S> {
     }
 }
 
+/// Links' bounding spheres against one prepared obstacle after another, for upper bounds.
+struct Bounding<'a, 'c, L: CheckLanes, S> {
+    bounds: &'c [([L; 3], L)],
+    sink: &'a mut S,
+}
+
+impl<L: CheckLanes, S: Sink<L>> Visit<L> for Bounding<'_, '_, L, S> {
+    #[inline(always)]
+    fn visit<P: Prepared<L>>(&mut self, prepared: &P) {
+        for (bound, radius) in self.bounds {
+            self.sink.upper(prepared.distance(bound).0 + *radius);
+        }
+    }
+}
+
 impl<L: CheckLanes, S: Sink<L>> Measuring<'_, '_, '_, L, S> {
     /// The links against `query`'s obstacles, asked one lane at a time: each link's bound,
     /// then its spheres in the lanes where the bound is nearer than the limit.
@@ -279,6 +332,8 @@ impl<L: CheckLanes, S: Sink<L>> Measuring<'_, '_, '_, L, S> {
 /// number (`-1`: an obstacle), centre and direction.
 struct Least<L, const WITNESS: bool> {
     best: L,
+    /// The least upper bound on the nearest pair (with a little slack for rounding).
+    upper: L,
     a_link: L,
     a_center: [L; 3],
     a_normal: [L; 3],
@@ -293,6 +348,7 @@ impl<L: CheckLanes, const WITNESS: bool> Least<L, WITNESS> {
         let none = L::from_f64(-1.0);
         Least {
             best: L::from_f64(f64::INFINITY),
+            upper: L::from_f64(f64::INFINITY),
             a_link: none,
             a_center: zero,
             a_normal: zero,
@@ -304,9 +360,17 @@ impl<L: CheckLanes, const WITNESS: bool> Least<L, WITNESS> {
 }
 
 impl<L: CheckLanes, const WITNESS: bool> Sink<L> for Least<L, WITNESS> {
+    const WANTS_UPPER: bool = true;
+
+    #[inline(always)]
+    fn upper(&mut self, bound: L) {
+        // A nanometre over: the bound and the distances are rounded apart.
+        self.upper = self.upper.min(bound + L::from_f64(1e-9));
+    }
+
     #[inline(always)]
     fn limit(&self) -> L {
-        self.best
+        self.best.min(self.upper)
     }
 
     #[inline(always)]
@@ -362,6 +426,11 @@ impl<'p, L: CheckLanes, const K: usize, const GRADIENT: bool> Cost<'p, L, K, GRA
 }
 
 impl<L: CheckLanes, const K: usize, const GRADIENT: bool> Sink<L> for Cost<'_, L, K, GRADIENT> {
+    const WANTS_UPPER: bool = false;
+
+    #[inline(always)]
+    fn upper(&mut self, _: L) {}
+
     #[inline(always)]
     fn limit(&self) -> L {
         self.margin

@@ -426,7 +426,25 @@ mod tests {
             let reach = radius + point_radius;
             let brute = points.iter().any(|p| (0..3).map(|i| (p[i] - center[i]).powi(2)).sum::<f64>() <= reach * reach);
             assert_eq!(cloud.touches(center, radius), brute, "{} points, {center:?} {radius}", points.len());
-            if brute { touching += 1 } else { apart += 1 }
+            if brute {
+                touching += 1
+            } else {
+                apart += 1
+            }
+            // The nearest point, within a limit or none (every third query).
+            let nearest = points
+                .iter()
+                .map(|p| (0..3).map(|i| (center[i] - p[i]).powi(2)).sum::<f64>().sqrt() - point_radius)
+                .fold(f64::INFINITY, f64::min);
+            let limit = if k % 3 == 1 { f64::INFINITY } else { radius };
+            match cloud.nearest(center, limit) {
+                Some((d, n)) => {
+                    assert_eq!(d.to_bits(), nearest.to_bits(), "{} points, {center:?} within {limit}", points.len());
+                    let length = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+                    assert!((length - 1.0).abs() < 1e-12 || d == -point_radius, "{n:?}");
+                }
+                None => assert!(nearest >= limit, "{} points, {center:?}: {nearest} within {limit}", points.len()),
+            }
         }
         (touching, apart)
     }
@@ -465,6 +483,7 @@ mod tests {
         assert!(PointCloud::new(&[[0.0; 3]], f64::INFINITY).is_err());
         let empty = PointCloud::new(&[], 0.0).unwrap();
         assert!(!empty.touches([0.0; 3], 10.0) && empty.is_empty());
+        assert_eq!(empty.nearest([0.0; 3], f64::INFINITY), None);
         // A point of radius zero still collides with a sphere around it.
         assert!(PointCloud::new(&[[0.0; 3]], 0.0).unwrap().touches([0.05, 0.0, 0.0], 0.05));
     }

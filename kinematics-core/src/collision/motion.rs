@@ -41,9 +41,12 @@ impl<S: Real + Into<f64>, const N: usize> Motion<S, N> {
     /// finite, else an error naming the robot). A NaN or infinite entry in `q0` or `q1` gives one
     /// step (both ends checked, and a configuration that is not finite is colliding).
     pub fn new(robot: &'static str, q0: [S; N], q1: [S; N], resolution: f64) -> Result<Self, KinematicsError> {
-        if !(resolution.is_finite() && resolution > 0.0) {
-            return Err(KinematicsError::BadResolution { robot, resolution });
-        }
+        check_resolution(robot, resolution)?;
+        Ok(Self::at(q0, q1, resolution))
+    }
+
+    /// [`Motion::new`] for a resolution already checked.
+    fn at(q0: [S; N], q1: [S; N], resolution: f64) -> Self {
         let mut span = 0.0_f64;
         for j in 0..N {
             let step = (q1[j].into() - q0[j].into()).abs();
@@ -55,7 +58,7 @@ impl<S: Real + Into<f64>, const N: usize> Motion<S, N> {
         let steps = libm::ceil(span / resolution);
         // `as` saturates: a span beyond `usize::MAX` resolutions asks for what it asks for.
         let steps = if steps.is_finite() { (steps as usize).max(1) } else { 1 };
-        Ok(Motion { q0, q1, steps })
+        Motion { q0, q1, steps }
     }
 
     /// How many steps the motion is checked in (`steps + 1` configurations).
@@ -128,6 +131,97 @@ impl<S: Real + Into<f64>, const N: usize> Motion<S, N> {
     }
 }
 
+/// A resolution that is positive and finite, else an error naming the robot.
+fn check_resolution(robot: &'static str, resolution: f64) -> Result<(), KinematicsError> {
+    if resolution.is_finite() && resolution > 0.0 {
+        Ok(())
+    } else {
+        Err(KinematicsError::BadResolution { robot, resolution })
+    }
+}
+
+/// The most lanes a search of several motions keeps: the widest lane type's.
+const MOST_LANES: usize = 32;
+
+/// Several straight motions searched together, one per lane: each lane checks its motion's
+/// configurations in order and, when it meets a collision or the motion's end, takes the next
+/// motion of the batch, so every lane stays busy until the batch runs out.
+///
+/// `out[m]` is motion `m`'s first colliding configuration's fraction, as
+/// [`Motion::first_collision`] finds it (`None`: free); every entry is written, `out` being at
+/// least as long as `motions`, and `resolution` positive and finite ([`motions_wide`] checks
+/// both). (Each motion alone would
+/// spread the lanes along itself; several at once, a lane per motion wastes no lane on the
+/// configurations past a collision, and a free motion costs its configurations' checks alone.)
+///
+/// ```
+/// use kinematics_core::collision::{first_collisions, LaneMask, Motion};
+/// use kinematics_core::{F64x4, Lanes};
+/// fn beyond<L: Lanes<Scalar = f64>>(q: &[L; 1]) -> LaneMask {
+///     let mut bits = 0;
+///     for i in 0..L::LANES {
+///         bits |= u32::from(q[0].lane(i) > 0.62) << i;
+///     }
+///     LaneMask::from_bits(bits)
+/// }
+/// let motions = [([0.0], [1.0]), ([0.0], [0.5]), ([2.0], [0.0])];
+/// let mut out = [None; 3];
+/// first_collisions::<F64x4, 1>(&motions, 0.05, beyond, &mut out);
+/// assert_eq!(out, [Some(0.65), None, Some(0.0)]);
+/// ```
+#[inline(always)]
+pub fn first_collisions<L: Lanes, const N: usize>(
+    motions: &[([L::Scalar; N], [L::Scalar; N])],
+    resolution: f64,
+    check: impl Fn(&[L; N]) -> LaneMask,
+    out: &mut [Option<f64>],
+) where
+    L::Scalar: Real + Into<f64>,
+{
+    // Each lane's motion: its index in the batch, the motion, the configuration it is at.
+    let mut lanes: [Option<(usize, Motion<L::Scalar, N>, usize)>; MOST_LANES] = [None; MOST_LANES];
+    let mut next = 0;
+    let take = |slot: &mut Option<(usize, Motion<L::Scalar, N>, usize)>, next: &mut usize| {
+        *slot = motions.get(*next).map(|(q0, q1)| (*next, Motion::at(*q0, *q1, resolution), 0));
+        *next += 1;
+    };
+    for slot in lanes.iter_mut().take(L::LANES) {
+        take(slot, &mut next);
+    }
+    loop {
+        let mut active = 0u32;
+        for (i, slot) in lanes.iter().enumerate().take(L::LANES) {
+            active |= u32::from(slot.is_some()) << i;
+        }
+        if active == 0 {
+            break;
+        }
+        // An idle lane repeats the first busy one's configuration, its verdict unread.
+        let busy = active.trailing_zeros() as usize;
+        let mut q = [L::from_fn(|_| motions[0].0[0]); N];
+        for (j, lane) in q.iter_mut().enumerate() {
+            *lane = L::from_fn(|i| {
+                #[allow(clippy::expect_used, reason = "invariant: lane `busy` holds a motion")]
+                let (_, motion, k) = lanes[i].or(lanes[busy]).expect("lane `busy` holds a motion");
+                motion.joint(k, j)
+            });
+        }
+        let hits = check(&q).bits();
+        for (i, slot) in lanes.iter_mut().enumerate().take(L::LANES) {
+            let Some((m, motion, k)) = slot else { continue };
+            if (hits >> i) & 1 == 1 {
+                out[*m] = Some(motion.fraction(*k));
+            } else if *k < motion.steps {
+                *k += 1;
+                continue;
+            } else {
+                out[*m] = None;
+            }
+            take(slot, &mut next);
+        }
+    }
+}
+
 /// [`Motion::first_collision`] in the lanes that fill the CPU's registers, as the batches choose
 /// them ([`crate::batch_wide`]): `wide` (`W`) where the CPU has AVX-512, `narrow` (`L`)
 /// elsewhere, each compiled for the instruction set it runs on. The first colliding
@@ -184,6 +278,78 @@ where
         motion.first_collision(narrow)
     };
     first.map(|k| motion.fraction(k))
+}
+
+/// [`first_collisions`] in the lanes that fill the CPU's registers (as [`motion_wide`] chooses
+/// them), after checking `resolution` (positive and finite) and that `out` has one entry per
+/// motion (else an error naming `robot`, and nothing is written): each motion's first colliding
+/// configuration's fraction, or `None` when every one is free.
+#[inline(always)]
+pub fn motions_wide<L, W, const N: usize>(
+    robot: &'static str,
+    motions: &[([L::Scalar; N], [L::Scalar; N])],
+    resolution: f64,
+    out: &mut [Option<f64>],
+    narrow: impl Fn(&[L; N]) -> LaneMask,
+    wide: impl Fn(&[W; N]) -> LaneMask,
+) -> Result<(), KinematicsError>
+where
+    L: Lanes,
+    W: Lanes<Scalar = L::Scalar>,
+    L::Scalar: Real + Into<f64>,
+{
+    check_resolution(robot, resolution)?;
+    if out.len() != motions.len() {
+        return Err(KinematicsError::WrongOutputLength { robot, expected: motions.len(), got: out.len() });
+    }
+    #[cfg(all(feature = "dispatch", target_arch = "x86_64", not(target_feature = "avx512f")))]
+    {
+        use pulp::Simd;
+        match pulp::Arch::new() {
+            pulp::Arch::V4(simd) => {
+                Simd::vectorize(simd, Searches { motions, resolution, out, check: &wide, lanes: PhantomData })
+            }
+            pulp::Arch::V3(simd) => {
+                Simd::vectorize(simd, Searches { motions, resolution, out, check: &narrow, lanes: PhantomData })
+            }
+            _ => first_collisions(motions, resolution, narrow, out),
+        }
+    }
+    #[cfg(all(feature = "dispatch", not(target_arch = "x86_64"), not(target_feature = "avx512f")))]
+    {
+        let _ = wide;
+        pulp::Arch::new().dispatch(Searches { motions, resolution, out, check: &narrow, lanes: PhantomData });
+    }
+    #[cfg(any(not(feature = "dispatch"), target_feature = "avx512f"))]
+    if cfg!(target_feature = "avx512f") {
+        let _ = narrow;
+        first_collisions(motions, resolution, wide, out);
+    } else {
+        let _ = wide;
+        first_collisions(motions, resolution, narrow, out);
+    }
+    Ok(())
+}
+
+/// [`first_collisions`] as pulp's operation.
+#[cfg(feature = "dispatch")]
+struct Searches<'a, S, const N: usize, L, F> {
+    motions: &'a [([S; N], [S; N])],
+    resolution: f64,
+    out: &'a mut [Option<f64>],
+    check: &'a F,
+    lanes: PhantomData<fn() -> L>,
+}
+
+#[cfg(feature = "dispatch")]
+impl<S: Real + Into<f64>, const N: usize, L: Lanes<Scalar = S>, F: Fn(&[L; N]) -> LaneMask> pulp::WithSimd
+    for Searches<'_, S, N, L, F>
+{
+    type Output = ();
+    #[inline(always)]
+    fn with_simd<Q: pulp::Simd>(self, _: Q) {
+        first_collisions(self.motions, self.resolution, self.check, self.out);
+    }
 }
 
 /// [`Motion::first_collision`] as pulp's operation (a closure's shim would not be inlined into
@@ -274,5 +440,49 @@ mod tests {
             LaneMask::from_bits(bits)
         };
         assert_eq!(motion.first_collision(at_end), Some(4));
+    }
+
+    /// Several motions one per lane against each searched alone, on batches of 1 to 40 motions of
+    /// 1 to 40 steps (each configuration's second joint names its motion), two lane widths.
+    #[test]
+    fn a_batch_finds_what_each_motion_alone_finds() {
+        let mut state = 0xba7c_u64;
+        let mut next = || {
+            state = state.wrapping_add(0x9e37_79b9_7f4a_7c15);
+            let mut z = state;
+            z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+            z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+            z ^ (z >> 31)
+        };
+        fn hits<L: Lanes<Scalar = f64>>(sets: &[u64]) -> impl Fn(&[L; 2]) -> LaneMask + '_ {
+            move |q: &[L; 2]| {
+                let mut bits = 0;
+                for i in 0..L::LANES {
+                    let (k, m) = (q[0].lane(i).round() as u64, q[1].lane(i) as usize);
+                    bits |= u32::from(sets[m] >> k & 1 == 1) << i;
+                }
+                LaneMask::from_bits(bits)
+            }
+        }
+        for count in 1..=40_usize {
+            let steps: std::vec::Vec<u64> = (0..count).map(|_| 1 + next() % 40).collect();
+            let sets: std::vec::Vec<u64> =
+                steps.iter().map(|&s| next() & next() & next() & ((1u64 << (s + 1)) - 1)).collect();
+            let motions: std::vec::Vec<([f64; 2], [f64; 2])> =
+                steps.iter().enumerate().map(|(m, &s)| ([0.0, m as f64], [s as f64, m as f64])).collect();
+            let alone: std::vec::Vec<Option<f64>> = motions
+                .iter()
+                .map(|&(q0, q1)| {
+                    let motion = Motion::new("t", q0, q1, 1.0).unwrap();
+                    motion.first_collision::<F64x4>(hits(&sets)).map(|k| motion.fraction(k))
+                })
+                .collect();
+            let mut four = std::vec![Some(-1.0); count];
+            first_collisions::<F64x4, 2>(&motions, 1.0, hits(&sets), &mut four);
+            assert_eq!(four, alone, "{count} motions of {steps:?} steps");
+            let mut eight = std::vec![Some(-1.0); count];
+            first_collisions::<F64x8, 2>(&motions, 1.0, hits(&sets), &mut eight);
+            assert_eq!(eight, alone, "{count} motions of {steps:?} steps");
+        }
     }
 }

@@ -198,7 +198,7 @@ const PLACED: usize = 4;
 /// vectorizer to schedule whole, and parts of it ran in 4-lane pieces (measured: the Panda's
 /// `collides` in `F32x16` lanes 1.15x slower without it).
 #[inline(always)]
-fn fence<T: ?Sized>(poses: &T) -> &T {
+pub(super) fn fence<T: ?Sized>(poses: &T) -> &T {
     core::hint::black_box(poses)
 }
 
