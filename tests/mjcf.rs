@@ -709,8 +709,8 @@ fn the_ball_tree_agrees_with_the_reference_at_random_unit_quaternions() {
             let expected = reference.relative_pose(&q, "world", tip).unwrap();
             let deviation = poses[k].deviation(&expected, reach);
             assert!(deviation <= 1e-12, "{tip} at seed {seed}: pose deviates by {deviation:e}");
-            for r in 0..3 {
-                close(&format!("{tip} position"), positions[k][r], expected.translation.vector[r], 1e-12 * reach);
+            for (r, position) in positions[k].iter().enumerate() {
+                close(&format!("{tip} position"), *position, expected.translation.vector[r], 1e-12 * reach);
             }
             for (frame, jacobian, twist) in [
                 (kinematics::model::JacobianFrame::LocalWorldAligned, &lwa[k], &twists[k]),
@@ -835,12 +835,9 @@ fn the_ball_trees_neck_turned_a_quarter_about_z() {
     q[20..24].copy_from_slice(&[0.0, 0.0, 0.5_f64.sqrt(), 0.5_f64.sqrt()]);
     let eye = BallTree::tip_poses(&q)[2];
     let expected = [0.0, 0.1, 0.38];
-    for i in 0..3 {
-        assert!((eye.translation[i] - expected[i]).abs() < 1e-15, "{:?}", eye.translation);
-        for j in 0..3 {
-            assert!((eye.rotation[i][j] - RZ90[i][j]).abs() < 1e-15, "{:?}", eye.rotation);
-        }
-    }
+    assert!(eye.translation.iter().zip(expected).all(|(a, b)| (a - b).abs() < 1e-15), "{:?}", eye.translation);
+    let rotation = eye.rotation.iter().flatten().zip(RZ90.iter().flatten());
+    assert!(rotation.into_iter().all(|(a, b)| (a - b).abs() < 1e-15), "{:?}", eye.rotation);
     // The neck's columns: the eye's origin turns about the head's axes through the pivot; about
     // the head's z (the world's z) it moves along -x at 0.1 m/rad.
     let j = BallTree::tip_jacobians(&q)[2];
