@@ -1,5 +1,7 @@
 //! MJCF (issue 33): the reader against hand-worked poses, the walker against its URDF twin, the
-//! MJCF UR5 against the URDF one, includes and attachments, and errors naming element and line.
+//! MJCF UR5 against the URDF one, includes and attachments, ball joints (hand-worked, and
+//! `ball_tree.xml` generated against the runtime reference and against differences along the
+//! quaternion's tangent), and errors naming element and line.
 #![allow(clippy::panic, clippy::unwrap_used, clippy::expect_used)] // test helpers fail loudly
 
 use std::f64::consts::FRAC_PI_2;
@@ -392,8 +394,8 @@ fn errors_name_the_element_and_the_line() {
         "t.xml: joint `j` (line 3): `type=\"screw\"` is not one of hinge, slide, ball, free",
     );
     check(
-        r#"<body name="b"><joint name="j" type="ball"/></body>"#,
-        "t.xml: joint `j` (line 3): ball joints are not supported yet (the model has no spherical joint): write three hinges",
+        r#"<body name="b"><joint name="j" type="ball" axis="0 0 1"/></body>"#,
+        "t.xml: joint `j` (line 3): a ball joint takes no `axis` (it turns about every axis through its `pos`)",
     );
     check(r#"<body><joint name="j"/></body>"#, "t.xml: line 3: a <body> needs a `name` (it is a link of the robot)");
     check(
@@ -491,7 +493,8 @@ fn a_site_is_the_tip_of_every_function_inverse_kinematics_included() {
 
 /// mjcf-rs (dimforge's MJCF reader, which folds frames and orientation forms into each body's
 /// pose by code of its own) as a second witness: every body's and named site's frame in its
-/// parent body's, at `q = 0`, equal to ours by the runtime reference.
+/// parent body's, at `q = 0` (every quaternion the identity), equal to ours by the runtime
+/// reference.
 #[test]
 fn mjcf_rs_reads_the_same_body_and_site_frames() {
     use nalgebra::{Isometry3, Quaternion, Translation3, UnitQuaternion};
@@ -500,15 +503,15 @@ fn mjcf_rs_reads_the_same_body_and_site_frames() {
         let rotation = UnitQuaternion::from_quaternion(Quaternion::new(r.w, r.x, r.y, r.z));
         Isometry3::from_parts(Translation3::new(t.x, t.y, t.z), rotation)
     };
-    for file in ["ur5_mjcf.xml", "walker.xml"] {
+    for file in ["ur5_mjcf.xml", "walker.xml", "ball_tree.xml"] {
         let model = mjcf_rs::Model::from_file(robot(file)).unwrap();
         let tree = kinematics::load(robot(file)).unwrap();
         let fk = ReferenceFk::new(tree.clone());
         let mut q = vec![0.0; tree.dof()];
-        for j in tree.floating_joints() {
-            if let kinematics::model::JointMotion::Dof(start) = tree.joint(j).motion {
-                q[start + 6] = 1.0; // the identity quaternion: a free body's pose is q's, not the file's
-            }
+        for start in tree.quaternion_entries() {
+            // The identity quaternion: a free body's pose is q's, not the file's, and a ball
+            // joint's body is as written.
+            q[start + 3] = 1.0;
         }
         let name = |i: usize| model.bodies[i].body.name.clone().unwrap_or_else(|| "world".to_owned());
         let mut compared = 0;
@@ -536,6 +539,311 @@ fn mjcf_rs_reads_the_same_body_and_site_frames() {
                 compared += 1;
             }
         }
-        assert!(compared >= 10, "{file}: {compared}");
+        assert!(compared >= 9, "{file}: {compared}");
+    }
+}
+
+/// Ball joints (spherical joints): `q` holds the body's orientation as a quaternion
+/// `qx, qy, qz, qw` (normalised), turning it about the joint's `pos`.
+#[test]
+fn a_ball_joint_turns_its_body_about_its_pos_by_the_quaternion() {
+    // Body b at (1, 0, 0); its ball joint at (0, 0.5, 0) in b's frame, i.e. (1, 0.5, 0); a site
+    // s at (1, 0, 0) in b. A quarter turn about z, (0, 0, 1, 1) normalised: b's origin,
+    // (0, -0.5, 0) from the pivot, turns to (0.5, 0, 0) from it: (1.5, 0.5, 0), axes Rz(90); the
+    // site, (1, -0.5, 0) from the pivot, to (0.5, 1, 0): (1.5, 1.5, 0).
+    let tree = mjcf(
+        r#"<mujoco><worldbody>
+             <body name="b" pos="1 0 0"><joint name="ball" type="ball" pos="0 0.5 0"/><site name="s" pos="1 0 0"/></body>
+           </worldbody></mujoco>"#,
+    );
+    let ball = tree.joint_by_name("ball").unwrap();
+    assert_eq!((ball.kind, ball.limits), (JointKind::Spherical, None));
+    assert_eq!(ball.after_motion, kinematics::model::FixedTransform::identity().translate([0.0, -0.5, 0.0]));
+    assert_eq!(tree.dof_names(), ["ball.qx", "ball.qy", "ball.qz", "ball.qw"]);
+    assert_eq!(tree.velocity_names(), ["ball.wx", "ball.wy", "ball.wz"]);
+    // The identity: as written.
+    assert_pose(&tree, &[0.0, 0.0, 0.0, 1.0], "b", I, [1.0, 0.0, 0.0]);
+    assert_pose(&tree, &[0.0, 0.0, 0.0, 1.0], "s", I, [2.0, 0.0, 0.0]);
+    let quarter = [0.0, 0.0, 1.0, 1.0];
+    assert_pose(&tree, &quarter, "b", RZ90, [1.5, 0.5, 0.0]);
+    assert_pose(&tree, &quarter, "s", RZ90, [1.5, 1.5, 0.0]);
+    // A half turn about x, (1, 0, 0, 0): the site stays on the line through the pivot along x,
+    // b's origin goes to (1, 1, 0), its y and z axes reversed.
+    let rx180 = [[1.0, 0.0, 0.0], [0.0, -1.0, 0.0], [0.0, 0.0, -1.0]];
+    assert_pose(&tree, &[1.0, 0.0, 0.0, 0.0], "b", rx180, [1.0, 1.0, 0.0]);
+    assert_pose(&tree, &[1.0, 0.0, 0.0, 0.0], "s", rx180, [2.0, 1.0, 0.0]);
+    // The compiled poses are the same numbers.
+    let compiled = compile(&tree, &Request::tip("s")).unwrap();
+    let [pose] = compiled.eval(&quarter)[..] else { panic!("one frame") };
+    let expected = [0.0, -1.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.5, 1.5, 0.0];
+    assert!(pose.iter().zip(expected).all(|(a, b)| (a - b).abs() < 1e-15), "{pose:?}");
+    // `limited="false"` keeps a written range from limiting the joint; a default class's axis
+    // and ref (meant for the class's hinges) are ignored, as MuJoCo ignores them.
+    let tree = mjcf(
+        r#"<mujoco><default><joint axis="1 0 0" ref="10" range="-1 1" limited="false"/></default>
+             <worldbody><body name="b"><joint name="ball" type="ball"/></body></worldbody></mujoco>"#,
+    );
+    assert_eq!(tree.joint_by_name("ball").unwrap().kind, JointKind::Spherical);
+    assert_pose(&tree, &[0.0, 0.0, 0.0, 2.0], "b", I, [0.0; 3]);
+}
+
+#[test]
+fn ball_joints_refuse_what_they_cannot_mean() {
+    let check = |text: &str, expected: &str| assert_eq!(load(text).unwrap_err(), expected, "{text}");
+    let body = |joint: &str| format!("<mujoco>\n<worldbody>\n<body name=\"b\">{joint}</body>\n</worldbody>\n</mujoco>");
+    check(
+        &body(r#"<joint name="j" type="ball" ref="10"/>"#),
+        "t.xml: joint `j` (line 3): a ball joint takes no `ref` (its `qpos0` is the body as written)",
+    );
+    check(
+        &body(r#"<joint name="j" type="ball" range="0 45"/>"#),
+        "t.xml: joint `j` (line 3): a ball joint's `range` is a cone limit (its largest angle from the body as \
+         written), which is not modelled: remove it or write `limited=\"false\"`",
+    );
+    // From a default class too, naming the class's line.
+    check(
+        "<mujoco>\n<default><joint range=\"0 45\"/></default>\n<worldbody><body name=\"b\">\n<joint name=\"j\" \
+         type=\"ball\"/>\n</body></worldbody></mujoco>",
+        "t.xml: joint `j` (line 2): a ball joint's `range` is a cone limit (its largest angle from the body as \
+         written), which is not modelled: remove it or write `limited=\"false\"`",
+    );
+    check(
+        &body(r#"<joint name="j" type="ball" limited="true"/>"#),
+        "t.xml: joint `j` (line 3): `limited=\"true\"` needs a `range`",
+    );
+    check(
+        &body(r#"<joint type="ball"/>"#),
+        "t.xml: joint `root_joint` (line 3): a <joint> needs a `name` (it names a degree of freedom)",
+    );
+    // An equality couples hinges and slides: a ball or free joint named by one is refused, at the
+    // attribute's line, whichever side it is on and whether or not the coupling is active.
+    let coupled = |free: &str, equality: &str| {
+        format!(
+            "<mujoco>\n<worldbody>\n<body name=\"a\">{free}<body name=\"b\"><joint name=\"ball\" type=\"ball\"/>\
+             <body name=\"c\"><joint name=\"hinge\"/></body></body></body>\n</worldbody>\n<equality>\n{equality}\n\
+             </equality>\n</mujoco>"
+        )
+    };
+    let refused = |line: usize, joint: &str, kind: &str| {
+        format!(
+            "t.xml: line {line}: <equality><joint>: `{joint}` is a {kind} joint (a quaternion in `q`, not one \
+             value): only hinges and slides are coupled"
+        )
+    };
+    check(&coupled("", r#"<joint joint1="hinge" joint2="ball"/>"#), &refused(6, "ball", "ball"));
+    check(&coupled("", r#"<joint joint1="ball" joint2="hinge" active="false"/>"#), &refused(6, "ball", "ball"));
+    check(&coupled("", r#"<joint joint1="ball"/>"#), &refused(6, "ball", "ball"));
+    check(
+        &coupled("<freejoint name=\"free\"/>", r#"<joint joint1="hinge" joint2="free"/>"#),
+        &refused(6, "free", "free"),
+    );
+    // A zero quaternion has no rotation: the reference refuses it, naming the joint.
+    let tree = mjcf(&body(r#"<joint name="j" type="ball"/>"#));
+    let error = ReferenceFk::new(tree).link_poses(&[0.0; 4]).unwrap_err();
+    assert_eq!(
+        error.to_string(),
+        "robot `MuJoCo Model`: the quaternion of spherical joint `j` (q[0..4]) has no length to normalise"
+    );
+}
+
+/// `robots/ball_tree.xml`: a free torso, a ball shoulder off its body's origin, three hinges in
+/// one body, a ball wrist and a ball neck; every tip's pose, position, Jacobians and twists.
+#[derive(kinematics::Kinematics)]
+#[kinematics(mjcf = "robots/ball_tree.xml", tips("left_hand", "right_tool", "eye"), positions, jacobians)]
+struct BallTree;
+
+/// Deterministic values in [-1, 1).
+fn values(count: usize, seed: u64) -> Vec<f64> {
+    let mut state = seed.wrapping_mul(0x9e37_79b9_7f4a_7c15) | 1;
+    (0..count)
+        .map(|_| {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f64 / (1u64 << 52) as f64 - 1.0
+        })
+        .collect()
+}
+
+/// A configuration of `tree` with every quaternion a random unit one (four values in [-1, 1)
+/// drawn until their length is at least 0.25, then normalised), the other entries in [-2, 2).
+fn unit_configuration(tree: &KinematicTree, seed: u64) -> Vec<f64> {
+    let mut q: Vec<f64> = values(tree.dof(), seed).iter().map(|v| 2.0 * v).collect();
+    for (k, start) in tree.quaternion_entries().into_iter().enumerate() {
+        let mut draw = seed * 1000 + k as u64 * 10;
+        let quaternion = loop {
+            let v = values(4, draw);
+            let norm = v.iter().map(|x| x * x).sum::<f64>().sqrt();
+            if norm >= 0.25 {
+                break v.iter().map(|x| x / norm).collect::<Vec<_>>();
+            }
+            draw += 1;
+        };
+        q[start..start + 4].copy_from_slice(&quaternion);
+    }
+    q
+}
+
+#[test]
+fn the_ball_tree_agrees_with_the_reference_at_random_unit_quaternions() {
+    assert_eq!((BallTree::DOF, BallTree::VELOCITY_DOF), (24, 20));
+    assert_eq!(
+        BallTree::JOINT_NAMES[7..11],
+        ["left_shoulder.qx", "left_shoulder.qy", "left_shoulder.qz", "left_shoulder.qw"]
+    );
+    assert_eq!(BallTree::VELOCITY_NAMES[6..9], ["left_shoulder.wx", "left_shoulder.wy", "left_shoulder.wz"]);
+    let reference = BallTree::reference().unwrap();
+    let tree = reference.tree();
+    assert_eq!(tree.quaternion_entries(), [3, 7, 16, 20]);
+    let reach = tree.reach().max(1.0);
+    let close = |what: &str, got: f64, expected: f64, tolerance: f64| {
+        assert!(got.is_finite() && (got - expected).abs() <= tolerance, "{what}: {got} vs {expected}");
+    };
+    for seed in 1..=40 {
+        let q: [f64; 24] = unit_configuration(tree, seed).try_into().unwrap();
+        let qd: [f64; 20] = values(20, seed + 500).try_into().unwrap();
+        let (poses, positions) = (BallTree::tip_poses(&q), BallTree::tip_positions(&q));
+        let (lwa, local) = (BallTree::tip_jacobians(&q), BallTree::tip_jacobians_local(&q));
+        let (twists, twists_local) = (BallTree::tip_twists(&q, &qd), BallTree::tip_twists_local(&q, &qd));
+        for (k, tip) in BallTree::TIPS.iter().enumerate() {
+            let expected = reference.relative_pose(&q, "world", tip).unwrap();
+            let deviation = poses[k].deviation(&expected, reach);
+            assert!(deviation <= 1e-12, "{tip} at seed {seed}: pose deviates by {deviation:e}");
+            for (r, position) in positions[k].iter().enumerate() {
+                close(&format!("{tip} position"), *position, expected.translation.vector[r], 1e-12 * reach);
+            }
+            for (frame, jacobian, twist) in [
+                (kinematics::model::JacobianFrame::LocalWorldAligned, &lwa[k], &twists[k]),
+                (kinematics::model::JacobianFrame::Local, &local[k], &twists_local[k]),
+            ] {
+                let j = reference.jacobian_in(&q, "world", tip, frame).unwrap();
+                assert_eq!(j.ncols(), 20);
+                for row in 0..6 {
+                    let scale = if row < 3 { reach } else { 1.0 };
+                    for col in 0..20 {
+                        close(
+                            &format!("{tip} J[{row}][{col}] ({frame:?})"),
+                            jacobian[row][col],
+                            j[(row, col)],
+                            1e-12 * scale,
+                        );
+                    }
+                    let jqd: f64 = (0..20).map(|c| j[(row, c)] * qd[c]).sum();
+                    close(&format!("{tip} twist[{row}] ({frame:?})"), twist[row], jqd, 1e-11 * scale);
+                }
+            }
+        }
+        // Every link, and a quaternion of any length gives the same poses.
+        let links = BallTree::link_poses(&q);
+        let mut scaled = q;
+        for start in tree.quaternion_entries() {
+            for v in &mut scaled[start..start + 4] {
+                *v *= 0.3 + seed as f64 / 10.0;
+            }
+        }
+        let again = BallTree::link_poses(&scaled);
+        for (i, link) in BallTree::LINK_NAMES.iter().enumerate() {
+            let expected = reference.link_pose(&q, link).unwrap();
+            assert!(links[i].deviation(&expected, reach) <= 1e-12, "{link}");
+            assert!(again[i].deviation(&expected, reach) <= 1e-12, "{link}, scaled quaternions");
+        }
+    }
+    // A zero quaternion has no rotation: NaN from the generated code.
+    let mut zero = unit_configuration(tree, 1);
+    zero[7..11].copy_from_slice(&[0.0; 4]);
+    let zero: [f64; 24] = zero.try_into().unwrap();
+    assert!(BallTree::tip_poses(&zero)[0].rotation[0][0].is_nan());
+}
+
+/// The generated Jacobian's columns of every ball joint are the derivatives of the generated pose
+/// along the quaternion's tangent: `q` moved by `h` along angular velocity `e_k` is the
+/// quaternion times `exp(h e_k / 2)` (turning the body about its own axis `k`), and the central
+/// differences of the tip's position and orientation (`dR R^T`) match the columns (the linear rows
+/// and the angular ones, in base axes).
+#[test]
+fn ball_joint_columns_are_the_pose_differentiated_along_the_quaternion() {
+    use nalgebra::{Quaternion, UnitQuaternion, Vector3};
+    let reference = BallTree::reference().unwrap();
+    let tree = reference.tree();
+    let balls: Vec<_> =
+        tree.joints().iter().filter(|j| j.kind == JointKind::Spherical).map(|j| j.name.clone()).collect();
+    assert_eq!(balls, ["left_shoulder", "right_wrist", "neck"]);
+    let mut checked = 0;
+    for seed in 1..=10 {
+        let q: [f64; 24] = unit_configuration(tree, seed).try_into().unwrap();
+        let jacobians = BallTree::tip_jacobians(&q);
+        for name in &balls {
+            let id = tree.joint_id(name).unwrap();
+            let (kinematics::model::JointMotion::Dof(start), Some(column)) =
+                (tree.joint(id).motion, tree.velocity_start(id))
+            else {
+                panic!("{name} is independent")
+            };
+            for k in 0..3 {
+                let moved = |h: f64| {
+                    let turned = UnitQuaternion::from_quaternion(Quaternion::new(
+                        q[start + 3],
+                        q[start],
+                        q[start + 1],
+                        q[start + 2],
+                    )) * UnitQuaternion::from_scaled_axis(Vector3::ith(k, h));
+                    let mut moved = q;
+                    moved[start..start + 4].copy_from_slice(turned.coords.as_slice());
+                    BallTree::tip_poses(&moved)
+                };
+                let h = 1e-6;
+                let (plus, minus) = (moved(h), moved(-h));
+                for (t, tip) in BallTree::TIPS.iter().enumerate() {
+                    let (p, m) = (plus[t].to_isometry(), minus[t].to_isometry());
+                    let linear = (p.translation.vector - m.translation.vector) / (2.0 * h);
+                    let turn = (p.rotation * m.rotation.inverse()).scaled_axis() / (2.0 * h);
+                    let j = &jacobians[t];
+                    for r in 0..3 {
+                        let what = format!("{tip}, {name} w{k}, row {r}, seed {seed}");
+                        assert!(
+                            (j[r][column + k] - linear[r]).abs() < 1e-7,
+                            "{what}: {} vs {}",
+                            j[r][column + k],
+                            linear[r]
+                        );
+                        assert!(
+                            (j[r + 3][column + k] - turn[r]).abs() < 1e-7,
+                            "{what}: {} vs {}",
+                            j[r + 3][column + k],
+                            turn[r]
+                        );
+                    }
+                    checked += 1;
+                }
+            }
+        }
+    }
+    assert_eq!(checked, 10 * 3 * 3 * 3);
+}
+
+/// The hand-worked case on the robot: the neck a quarter turn about z, the torso at the origin
+/// unturned. The neck turns about (0, 0, 0.25) in the torso (the head at (0, 0, 0.3), the joint
+/// at -0.05 along its z); the eye, (0.1, 0, 0.08) from the head, is (0.1, 0, 0.13) from the pivot,
+/// which the turn takes to (0, 0.1, 0.13): (0, 0.1, 0.38), its axes Rz(90).
+#[test]
+fn the_ball_trees_neck_turned_a_quarter_about_z() {
+    let mut q = [0.0; 24];
+    q[6] = 1.0; // the torso's quaternion: the identity
+    for start in [7, 16] {
+        q[start + 3] = 1.0;
+    }
+    q[20..24].copy_from_slice(&[0.0, 0.0, 0.5_f64.sqrt(), 0.5_f64.sqrt()]);
+    let eye = BallTree::tip_poses(&q)[2];
+    let expected = [0.0, 0.1, 0.38];
+    assert!(eye.translation.iter().zip(expected).all(|(a, b)| (a - b).abs() < 1e-15), "{:?}", eye.translation);
+    let rotation = eye.rotation.iter().flatten().zip(RZ90.iter().flatten());
+    assert!(rotation.into_iter().all(|(a, b)| (a - b).abs() < 1e-15), "{:?}", eye.rotation);
+    // The neck's columns: the eye's origin turns about the head's axes through the pivot; about
+    // the head's z (the world's z) it moves along -x at 0.1 m/rad.
+    let j = BallTree::tip_jacobians(&q)[2];
+    let column = BallTree::VELOCITY_NAMES.iter().position(|n| *n == "neck.wz").unwrap();
+    let expected = [-0.1, 0.0, 0.0, 0.0, 0.0, 1.0];
+    for (row, e) in expected.iter().enumerate() {
+        assert!((j[row][column] - e).abs() < 1e-15, "row {row}: {}", j[row][column]);
     }
 }

@@ -11,8 +11,8 @@
 use kinematics::Pose;
 use kinematics::model::{JointMotion, KinematicTree};
 
-/// The largest step, in radians or metres (or, along a floating joint's angular velocity,
-/// radians of turn).
+/// The largest step, in radians or metres (or, along a floating or spherical joint's angular
+/// velocity, radians of turn).
 pub const STEP: f64 = 0.1;
 
 /// Differences taken, at `STEP`, `STEP / 2`, ... (each halving the last).
@@ -20,8 +20,8 @@ pub const LEVELS: usize = 5;
 
 /// `q` moved by `t` along velocity `v` of `tree`: a joint's own entry for a velocity of one entry;
 /// along a floating joint's child axis (its rotation's column) for a linear velocity of it, and
-/// the quaternion times `exp(t e / 2)` on the right for an angular one (the path whose derivative
-/// is Pinocchio's free-flyer velocity).
+/// the quaternion times `exp(t e / 2)` on the right for a floating or spherical joint's angular
+/// one (the path whose derivative is Pinocchio's free-flyer or spherical joint velocity).
 ///
 /// # Panics
 ///
@@ -32,14 +32,20 @@ pub fn moved(tree: &KinematicTree, q: &[f64], v: usize, t: f64) -> Vec<f64> {
         q[entry] += t;
         return q;
     }
-    for joint in tree.floating_joints() {
-        let (JointMotion::Dof(s), Some(c)) = (tree.joint(joint).motion, tree.velocity_start(joint)) else { continue };
-        if !(c..c + 6).contains(&v) {
+    for joint in tree.quaternion_joints() {
+        let kind = tree.joint(joint).kind;
+        let (JointMotion::Dof(s), Some(c), Some(offset)) =
+            (tree.joint(joint).motion, tree.velocity_start(joint), kind.quaternion_offset())
+        else {
+            continue;
+        };
+        if !(c..c + kind.velocities()).contains(&v) {
             continue;
         }
-        let [x, y, z, w] = [q[s + 3], q[s + 4], q[s + 5], q[s + 6]];
-        let k = v - c;
-        if k < 3 {
+        // The quaternion, after a floating joint's position; its linear velocities first.
+        let (qs, k) = (s + offset, v - c);
+        let [x, y, z, w] = [q[qs], q[qs + 1], q[qs + 2], q[qs + 3]];
+        if k < offset {
             let rotation = kinematics::quaternion_matrix(x, y, z, w);
             for a in 0..3 {
                 q[s + a] += t * rotation[a][k];
@@ -47,12 +53,12 @@ pub fn moved(tree: &KinematicTree, q: &[f64], v: usize, t: f64) -> Vec<f64> {
         } else {
             let (sn, cs) = (t / 2.0).sin_cos();
             let mut e = [0.0; 3];
-            e[k - 3] = sn;
+            e[k - offset] = sn;
             let [bx, by, bz] = e;
-            q[s + 3] = w * bx + x * cs + y * bz - z * by;
-            q[s + 4] = w * by - x * bz + y * cs + z * bx;
-            q[s + 5] = w * bz + x * by - y * bx + z * cs;
-            q[s + 6] = w * cs - x * bx - y * by - z * bz;
+            q[qs] = w * bx + x * cs + y * bz - z * by;
+            q[qs + 1] = w * by - x * bz + y * cs + z * bx;
+            q[qs + 2] = w * bz + x * by - y * bx + z * cs;
+            q[qs + 3] = w * cs - x * bx - y * by - z * bz;
         }
         return q;
     }

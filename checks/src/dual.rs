@@ -158,8 +158,9 @@ fn columns<const V: usize>(p: &Pose<Dual<V>>) -> Vec<[f64; 6]> {
 
 /// How `q` moves per unit of each velocity of `tree` at `q`: a joint's own entry for a velocity
 /// of one entry; for a floating joint's linear velocities the child's axes (the columns of its
-/// rotation) in its position entries, for its angular ones `quaternion * (e_k / 2, 0)` in its
-/// quaternion entries (the derivative of `quaternion * exp(t e_k / 2)`, Pinocchio's free-flyer).
+/// rotation) in its position entries, for a floating or spherical joint's angular ones
+/// `quaternion * (e_k / 2, 0)` in its quaternion entries (the derivative of
+/// `quaternion * exp(t e_k / 2)`, Pinocchio's free-flyer and spherical joint).
 pub fn directions(tree: &kinematics::KinematicTree, q: &[f64]) -> Vec<Vec<f64>> {
     let n = tree.dof();
     let mut out = vec![vec![0.0; n]; tree.velocity_dof()];
@@ -168,16 +169,22 @@ pub fn directions(tree: &kinematics::KinematicTree, q: &[f64]) -> Vec<Vec<f64>> 
             out[c][entry] = 1.0;
         }
     }
-    for joint in tree.floating_joints() {
-        let (kinematics::model::JointMotion::Dof(s), Some(c)) = (tree.joint(joint).motion, tree.velocity_start(joint))
+    for joint in tree.quaternion_joints() {
+        let kind = tree.joint(joint).kind;
+        let (kinematics::model::JointMotion::Dof(s), Some(c), Some(offset)) =
+            (tree.joint(joint).motion, tree.velocity_start(joint), kind.quaternion_offset())
         else {
             continue;
         };
-        let [x, y, z, w] = [q[s + 3], q[s + 4], q[s + 5], q[s + 6]];
+        // A floating joint's position and linear velocities come first.
+        let (s, c, translates) = (s + offset, c + offset, offset > 0);
+        let [x, y, z, w] = [q[s], q[s + 1], q[s + 2], q[s + 3]];
         let rotation = kinematics::quaternion_matrix(x, y, z, w);
         for k in 0..3 {
-            for a in 0..3 {
-                out[c + k][s + a] = rotation[a][k];
+            if translates {
+                for a in 0..3 {
+                    out[c - 3 + k][s - 3 + a] = rotation[a][k];
+                }
             }
             // (x, y, z, w) * (e_k / 2, 0), Hamilton product, kept at the quaternion's length
             // (the rotation depends on its direction only).
@@ -190,7 +197,7 @@ pub fn directions(tree: &kinematics::KinematicTree, q: &[f64]) -> Vec<Vec<f64>> 
                 w * bz + x * by - y * bx,
                 -x * bx - y * by - z * bz,
             ];
-            out[c + 3 + k][s + 3..s + 7].copy_from_slice(&product);
+            out[c + k][s..s + 4].copy_from_slice(&product);
         }
     }
     out

@@ -17,7 +17,7 @@ use std::io::Write;
 
 use kinematics::Configurations;
 use kinematics::model::collision::{LinkSphere, Meshes, collision_pairs, link_spheres, sphere_pairs};
-use kinematics::model::{JointMotion, KinematicTree, LinkId};
+use kinematics::model::{KinematicTree, LinkId};
 
 use crate::error::CliError;
 
@@ -139,16 +139,14 @@ fn disabled_pairs(
     Ok(disabled)
 }
 
-/// Every joint at zero, or at its nearest limit where zero is outside them; a floating joint's
-/// rotation the identity (MoveIt's default state does the same).
+/// Every joint at zero, or at its nearest limit where zero is outside them; a floating or
+/// spherical joint's rotation the identity (MoveIt's default state does the same).
 fn default_configuration(tree: &KinematicTree) -> Vec<f64> {
     let mut q: Vec<f64> =
         tree.dof_limits().iter().map(|l| l.map_or(0.0, |l| 0.0_f64.clamp(l.lower, l.upper))).collect();
-    for j in tree.floating_joints() {
-        if let JointMotion::Dof(start) = tree.joint(j).motion {
-            // Position, then the quaternion (x, y, z, w).
-            q[start + 6] = 1.0;
-        }
+    for start in tree.quaternion_entries() {
+        // The quaternion (x, y, z, w).
+        q[start + 3] = 1.0;
     }
     q
 }

@@ -10,6 +10,10 @@
 //! motion (an MJCF hinge off its body's origin, a standard DH row's constants) has no place in a
 //! URDF joint: the joint then moves a link `<joint>.frame`, to which the child is fixed by a
 //! joint `<joint>.offset` carrying that transform.
+//!
+//! URDF has no spherical joint (an MJCF `ball`: its `spherical` type is not in the specification,
+//! and no URDF joint takes a quaternion): a robot with one is refused, naming the joint, and
+//! nothing is written.
 
 use std::io::Write;
 
@@ -30,11 +34,16 @@ pub struct Args {
 /// Writes the URDF of `args.file`'s kinematics.
 pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
     let tree = crate::robot::load(&args.file)?;
-    crate::error::deliver(&urdf(&tree, &args.file), args.output.as_deref(), &args.file, out)
+    let text = urdf(&tree, &args.file)?;
+    crate::error::deliver(&text, args.output.as_deref(), &args.file, out)
 }
 
-/// The URDF text of `tree`'s kinematics; `file` names the source in the header comment.
-pub fn urdf(tree: &KinematicTree, file: &str) -> String {
+/// The URDF text of `tree`'s kinematics; `file` names the source in the header comment and the
+/// error. A spherical joint, which URDF cannot write, is [`CliError::NotUrdf`].
+pub fn urdf(tree: &KinematicTree, file: &str) -> Result<String, CliError> {
+    if let Some(joint) = tree.joints().iter().find(|j| j.kind == JointKind::Spherical) {
+        return Err(CliError::NotUrdf { file: file.to_owned(), joint: joint.name.clone(), kind: joint.kind.name() });
+    }
     let mut out = String::from("<?xml version=\"1.0\"?>\n");
     out += &format!(
         "<!-- The kinematics of {} as URDF, written by `kinematics convert`: links, joints, origins, axes,\n     \
@@ -91,7 +100,7 @@ pub fn urdf(tree: &KinematicTree, file: &str) -> String {
         }
     }
     out += "</robot>\n";
-    out
+    Ok(out)
 }
 
 /// URDF's type name; a prismatic joint without limits is written with infinite ones.

@@ -107,6 +107,19 @@ pub enum CliError {
         /// Its largest joint difference, modulo 2 pi (rad).
         difference: f64,
     },
+    /// `convert`: a joint URDF has no type for (a spherical joint, an MJCF `ball`).
+    #[error(
+        "{file}: joint `{joint}`: a {kind} joint cannot be written as URDF (URDF has no joint whose position is a \
+         quaternion; its `spherical` type is not in the specification), so nothing is written"
+    )]
+    NotUrdf {
+        /// The description file.
+        file: String,
+        /// The joint, the first such in the tree's order.
+        joint: String,
+        /// Its kind (`spherical`).
+        kind: &'static str,
+    },
     /// An option's value that cannot be used (the message names the option and why).
     #[error("{0}")]
     Usage(String),

@@ -2,7 +2,7 @@
 
 use std::io::Write;
 
-use kinematics::model::{Chain, ExactAngles, JointMotion, KinematicTree};
+use kinematics::model::{Chain, ExactAngles, JointKind, JointMotion, KinematicTree};
 
 use crate::error::CliError;
 
@@ -178,7 +178,8 @@ pub fn recognised_angles(tree: &KinematicTree) -> String {
 /// The tree: counts, links, one line per joint (type, parent -> child, axis, limits, where its
 /// value comes from), the DoF order, and the chain from the root to each leaf.
 pub fn describe(tree: &KinematicTree) -> String {
-    // A floating joint's seven entries of `q` are six degrees of freedom.
+    // A floating joint's seven entries of `q` are six degrees of freedom, a spherical joint's four
+    // are three.
     let q_entries =
         if tree.dof() == tree.velocity_dof() { String::new() } else { format!(" ({} entries of q)", tree.dof()) };
     let mut out = format!(
@@ -199,7 +200,8 @@ pub fn describe(tree: &KinematicTree) -> String {
     for (joint, edge) in tree.joints().iter().zip(&edges) {
         let mut line =
             format!("  {}  {} {}", pad(&joint.name, name_width), pad(joint.kind.name(), 10), pad(edge, edge_width));
-        if joint.kind.name() != "fixed" {
+        // Fixed, floating and spherical joints have no axis (theirs is kept as written, unused).
+        if !matches!(joint.kind, JointKind::Fixed | JointKind::Floating | JointKind::Spherical) {
             let [x, y, z] = joint.axis.map(short);
             line += &format!("  axis ({x}, {y}, {z})");
         }

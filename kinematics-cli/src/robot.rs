@@ -94,7 +94,8 @@ pub fn link(tree: &KinematicTree, file: &str, role: &'static str, name: &str) ->
 /// `--q` and `--degrees`: a configuration on the command line (`fk`, `draw`).
 #[derive(clap::Args)]
 pub struct ConfigurationArgs {
-    /// Joint values in DoF order, comma-separated (radians, metres); zeros if omitted.
+    /// Joint values in DoF order, comma-separated (radians, metres); zeros if omitted (each
+    /// quaternion of a floating or ball joint the identity).
     #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
     q: Option<Vec<f64>>,
     /// Read `--q` in degrees (prismatic values stay in metres).
@@ -103,13 +104,23 @@ pub struct ConfigurationArgs {
 }
 
 impl ConfigurationArgs {
-    /// The configuration from `--q` (zeros when it is omitted, the documented default of `fk` and
-    /// `draw`), with rotational joints' values read as degrees under `--degrees` (prismatic values
+    /// The configuration from `--q` (zeros when it is omitted, each floating or spherical joint's
+    /// quaternion the identity `0, 0, 0, 1`: the documented default of `fk` and `draw`), with
+    /// rotational joints' values read as degrees under `--degrees` (prismatic values
     /// stay metres). Its length and finiteness are checked by the runtime reference that uses it, so
     /// a wrong count or a NaN is refused there with the joint named, never padded or replaced.
     pub fn resolve(&self, tree: &KinematicTree) -> Vec<f64> {
         let (q, degrees) = (self.q.as_deref(), self.degrees);
-        let mut q = q.map_or_else(|| vec![0.0; tree.dof()], <[f64]>::to_vec);
+        let mut q = q.map_or_else(
+            || {
+                let mut zeros = vec![0.0; tree.dof()];
+                for start in tree.quaternion_entries() {
+                    zeros[start + 3] = 1.0;
+                }
+                zeros
+            },
+            <[f64]>::to_vec,
+        );
         if degrees {
             for (value, &joint) in q.iter_mut().zip(tree.dof_joints()) {
                 if tree.joint(joint).kind.is_rotational() {

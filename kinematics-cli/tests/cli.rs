@@ -974,6 +974,40 @@ fn convert_writes_urdf_that_reads_back_as_the_same_robot() {
     assert!(ok(&["convert", &off.to_string_lossy()]).contains("<link name=\"h.frame\"/>"));
 }
 
+/// Issue 33: URDF has no spherical joint, so `convert` refuses a robot with an MJCF ball joint,
+/// naming the joint, and writes nothing; `inspect` shows the joint's kind and its four entries of
+/// `q`, and no axis.
+#[test]
+fn convert_refuses_a_spherical_joint_and_inspect_shows_one() {
+    let dir = scratch("convert-ball");
+    let out = dir.join("robot.urdf");
+    let message = fails(&["convert", "robots/ball_tree.xml", "-o", &out.to_string_lossy()]);
+    assert_eq!(
+        message,
+        "error: robots/ball_tree.xml: joint `left_shoulder`: a spherical joint cannot be written as URDF (URDF has \
+         no joint whose position is a quaternion; its `spherical` type is not in the specification), so nothing is \
+         written"
+    );
+    assert!(!out.exists(), "nothing written");
+    fails(&["convert", "robots/ball_tree.xml"]);
+    let text = ok(&["inspect", "robots/ball_tree.xml"]);
+    assert!(
+        text.starts_with("robot `ball_tree`: 13 links, 12 joints, 20 degrees of freedom (24 entries of q)\n"),
+        "{text}"
+    );
+    let line = text.lines().find(|l| l.trim_start().starts_with("left_shoulder ")).unwrap();
+    assert!(line.contains("spherical") && line.ends_with("q[7..11]") && !line.contains("axis"), "{line}");
+    assert!(
+        text.contains("q[7] left_shoulder.qx, q[8] left_shoulder.qy, q[9] left_shoulder.qz, q[10] left_shoulder.qw")
+    );
+    // Without `--q`, every quaternion is the identity: the robot as written, its torso at the origin.
+    let fk = ok(&["fk", "robots/ball_tree.xml", "--link", "eye", "--json"]);
+    assert!(fk.contains("0.38"), "{fk}");
+    // A floating joint shows no axis either (it has none).
+    let line = text.lines().find(|l| l.trim_start().starts_with("root_joint ")).unwrap();
+    assert!(line.contains("floating") && !line.contains("axis"), "{line}");
+}
+
 /// Issue 31: `collision-pairs` writes an SRDF the derive's reader takes, the same for the same
 /// seed; its adjacent pairs are the model's, its `Never` pairs touch in none of the samples
 /// (checked here on the reference's sphere centres of the same stream), and bad arguments are

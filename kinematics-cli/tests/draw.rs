@@ -227,11 +227,14 @@ fn draw_puts_every_origin_and_axis_where_the_runtime_reference_does() {
             }
         }
 
-        // Every moving joint's axis (fixed and floating joints have none), at the joint frame
-        // after its motion, along the axis in the root frame, styled by its kind.
+        // Every moving joint's axis (fixed, floating and spherical joints have none), at the joint
+        // frame after its motion, along the axis in the root frame, styled by its kind.
         let axes: Vec<&Element> =
             elements.iter().filter(|e| e.name == "line" && e.attributes.contains_key("data-joint")).collect();
-        let drawn_kinds = tree.joints().iter().filter(|j| !matches!(j.kind, JointKind::Fixed | JointKind::Floating));
+        let drawn_kinds = tree
+            .joints()
+            .iter()
+            .filter(|j| !matches!(j.kind, JointKind::Fixed | JointKind::Floating | JointKind::Spherical));
         assert_eq!(axes.len(), 3 * drawn_kinds.count(), "{file}");
         for axis in &axes {
             let joint = tree.joint_by_name(axis.get("data-joint")).unwrap();

@@ -31,9 +31,9 @@ pub enum CompileError {
     /// A chain no closed-form inverse kinematics family covers (every family's reason given).
     #[error("{0}")]
     NoIkFamily(Box<NoIkFamily>),
-    /// Numeric inverse kinematics of a robot with a floating joint (its quaternion's four entries
-    /// of `q` against three velocities: the steps are not yet mapped back).
-    #[error("robot `{robot}`: inverse kinematics of a robot with a floating joint is not supported yet")]
+    /// Numeric inverse kinematics of a robot with a floating or spherical joint (its quaternion's
+    /// four entries of `q` against three velocities: the steps are not yet mapped back).
+    #[error("robot `{robot}`: inverse kinematics of a robot with a floating or spherical joint is not supported yet")]
     IkFloating {
         /// Robot name.
         robot: String,

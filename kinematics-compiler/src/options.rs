@@ -214,9 +214,15 @@ pub enum FaultKind {
         /// How many tips were given.
         tips: usize,
     },
-    /// `ik` of a robot with a floating joint.
-    #[error("`ik` of a robot with a floating joint is not supported yet")]
-    IkFloating,
+    /// `ik` of a robot with a floating or spherical joint (a quaternion in `q`, four entries
+    /// against three velocities).
+    #[error("`ik` of a robot with a {kind} joint (`{joint}`, a quaternion in `q`) is not supported yet")]
+    IkQuaternionJoint {
+        /// The first such joint, in tree order.
+        joint: String,
+        /// Its kind (`floating` or `spherical`).
+        kind: &'static str,
+    },
     /// `ik` of a chain no closed-form family covers (every family's reason), or whose free joint
     /// is not in it.
     #[error("{0}")]
@@ -413,7 +419,7 @@ fn some_scalar(options: &Options) -> Option<OptionFault> {
         .then_some(OptionFault { key: OptionKey::Scalars, kind: FaultKind::NoScalar })
 }
 
-/// Rule: `ik` has exactly one tip, a robot without a floating joint, and for the closed form a
+/// Rule: `ik` has exactly one tip, a robot without a floating or spherical joint, and for the closed form a
 /// chain some family covers (the plan is kept for emission).
 fn ik_applies(options: &Options, tree: &KinematicTree) -> Result<CheckedIk, OptionFault> {
     let fault = |kind| OptionFault { key: OptionKey::Ik, kind };
@@ -425,8 +431,8 @@ fn ik_applies(options: &Options, tree: &KinematicTree) -> Result<CheckedIk, Opti
     let [tip] = options.tips.as_slice() else {
         return Err(fault(FaultKind::IkTips { tips: options.tips.len() }));
     };
-    if tree.dof() != tree.velocity_dof() {
-        return Err(fault(FaultKind::IkFloating));
+    if let Some(joint) = tree.quaternion_joints().next().map(|j| tree.joint(j)) {
+        return Err(fault(FaultKind::IkQuaternionJoint { joint: joint.name.clone(), kind: joint.kind.name() }));
     }
     if options.ik == IkMode::Numeric {
         return Ok(CheckedIk::Numeric);

@@ -162,9 +162,10 @@ pub struct Compiled {
     pub dof_names: Vec<String>,
     /// Velocity names (a Jacobian's columns, the entries of `qd`) in order.
     pub velocity_names: Vec<String>,
-    /// Where each floating joint's quaternion starts in `q`, in tree order: the generated code
-    /// turns each into its rotation's nine variables (after `q` and `qd`) first.
-    pub floating_quaternions: Vec<usize>,
+    /// Where each floating or spherical joint's quaternion starts in `q`, in tree order
+    /// ([`KinematicTree::quaternion_entries`]): the generated code turns each into its rotation's
+    /// nine variables (after `q` and `qd`) first.
+    pub quaternions: Vec<usize>,
     /// Whether only positions are outputs (and, with a velocity, its linear rows).
     pub position_only: bool,
     /// The velocity computed, if any.
@@ -250,13 +251,7 @@ pub fn compile(tree: &KinematicTree, request: &Request) -> Result<Compiled, Comp
         base: base_name,
         dof_names: tree.dof_names(),
         velocity_names: tree.velocity_names(),
-        floating_quaternions: tree
-            .floating_joints()
-            .filter_map(|j| match tree.joint(j).motion {
-                kinematics_model::JointMotion::Dof(start) => Some(start + 3),
-                _ => None,
-            })
-            .collect(),
+        quaternions: tree.quaternion_entries(),
         position_only: request.position_only,
         velocity: request.velocity,
         all_links: request.tips.is_empty(),
@@ -544,8 +539,8 @@ impl Compiled {
     }
 
     /// Every variable of the graph from the joint positions and, when given, the rates after them:
-    /// `q`, `qd` (zeros when not given), and each floating joint's rotation (its quaternion
-    /// normalised, row-major), as the generated code computes them.
+    /// `q`, `qd` (zeros when not given), and each floating or spherical joint's rotation (its
+    /// quaternion normalised, row-major), as the generated code computes them.
     ///
     /// # Panics
     ///
@@ -554,7 +549,7 @@ impl Compiled {
         let (n, nv) = (self.dof(), self.velocity_dof());
         let mut vars: Vec<f64> = values[..n].to_vec();
         vars.extend((0..nv).map(|i| values.get(n + i).copied().unwrap_or(0.0)));
-        for &start in &self.floating_quaternions {
+        for &start in &self.quaternions {
             let [x, y, z, w] = [values[start], values[start + 1], values[start + 2], values[start + 3]];
             let s = 2.0 / (x * x + y * y + z * z + w * w);
             vars.extend([

@@ -60,3 +60,32 @@ fn unknown_links_are_errors() {
     let err = compile(&tree, &Request::tip("link1").with_base("nowhere")).unwrap_err();
     assert_eq!(err.to_string(), "robot `ur5`: link `nowhere` does not exist");
 }
+
+/// A ball joint (a spherical joint, MJCF) lowers to its quaternion's rotation between the
+/// translations to and back from its `pos`: `T(pos) F(R) T(-pos)`, `R`'s nine entries variables
+/// after `q` (four entries) and `qd` (three velocities), which the generated code computes from
+/// the quaternion first.
+#[test]
+fn a_ball_joint_is_its_quaternions_rotation_about_its_pos() {
+    use kinematics_compiler::symbolic::{graph::ExprGraph, lower::lower_path, step::steps_text};
+    let tree = kinematics_model::parse_source(
+        "ball.xml",
+        r#"<mujoco><worldbody><body name="b" pos="1 0 0"><joint name="ball" type="ball" pos="0 0.5 0"/>
+             <site name="s" pos="1 0 0"/></body></worldbody></mujoco>"#,
+    )
+    .unwrap();
+    let mut g = ExprGraph::new();
+    let path = tree.path_from_root(tree.link_id("s").unwrap());
+    let steps = lower_path(&mut g, &tree, &path);
+    assert_eq!(
+        steps_text(&g, &steps),
+        "T(1, 0, 0) T(0, 0.5, 0) F(q8, q9, q10; q11, q12, q13; q14, q15, q16) T(0, -0.5, 0) T(1, 0, 0)"
+    );
+    let compiled = compile(&tree, &Request::tip("s")).unwrap();
+    let text = compiled.frame_text(0);
+    // The site turns with the body; its origin, (1, -0.5, 0) from the pivot at (1, 0.5, 0), turns
+    // by R.
+    assert_eq!(text[..3], ["rot1_11", "rot1_12", "rot1_13"]);
+    assert_eq!(text[9..], ["1 + rot1_11 - 0.5*rot1_12", "0.5 + rot1_21 - 0.5*rot1_22", "rot1_31 - 0.5*rot1_32"]);
+    assert_eq!(compiled.op_count().sin_cos, 0, "no angle: the rotation is the quaternion's");
+}

@@ -70,10 +70,12 @@ fn velocities_agree_with_the_pose_and_with_each_other() {
     let mut checked = 0;
     for file in robots() {
         let tree = common::robot(&file);
-        // A floating joint's seven entries of `q` give six columns, which differences of `q`'s
-        // entries cannot show: `tests/floating_base.rs` and the checks crate's Jacobians (every
-        // robot, `walker.xml`'s free joint included) hold those against the runtime reference.
-        if tree.floating_joints().next().is_some() {
+        // A floating joint's seven entries of `q` give six columns (a spherical joint's four,
+        // three), which differences of `q`'s entries cannot show: the test below, `tests/mjcf.rs`,
+        // `tests/floating_base.rs` and the checks crate's Jacobians (every robot, `walker.xml`'s
+        // free joint and `ball_tree.xml`'s ball joints included) hold those against the runtime
+        // reference.
+        if tree.quaternion_joints().next().is_some() {
             continue;
         }
         let n = tree.dof();
@@ -174,12 +176,13 @@ fn twist_is_cheaper_than_forming_the_jacobian() {
     assert_eq!(both.sin_cos, pose.sin_cos, "the pair calls sin_cos no more than the pose");
 }
 
-/// A tree with a floating root (the quadruped's trunk made free-flying) and a planar joint, the
-/// Jacobian's columns checked by central differences along each velocity: a floating joint's
-/// linear velocities move its child along the child's own axes, its angular ones turn the child
-/// about them (the quaternion times `exp(h e_k / 2)` on the right); the others as before.
+/// A tree with a floating root (the quadruped's trunk made free-flying), a planar joint, and
+/// `ball_tree.xml` (a free root and three ball joints), the Jacobian's columns checked by central
+/// differences along each velocity: a floating joint's linear velocities move its child along the
+/// child's own axes, a floating or spherical joint's angular ones turn the child about them (the
+/// quaternion times `exp(h e_k / 2)` on the right); the others as before.
 #[test]
-fn floating_and_planar_joints_against_differences() {
+fn floating_spherical_and_planar_joints_against_differences() {
     let planar = r#"<robot name="planar_base">
       <link name="ground"/><link name="cart"/><link name="arm"/><link name="hand"/>
       <joint name="slide" type="planar"><parent link="ground"/><child link="cart"/>
@@ -194,9 +197,11 @@ fn floating_and_planar_joints_against_differences() {
     let trees = [
         kinematics_model::parse_source("planar_base.urdf", planar).unwrap(),
         KinematicTree::from_description(&floating).unwrap(),
+        common::robot("ball_tree.xml"),
     ];
     assert_eq!((trees[0].dof(), trees[0].velocity_dof()), (4, 4));
     assert_eq!((trees[1].dof(), trees[1].velocity_dof()), (19, 18));
+    assert_eq!((trees[2].dof(), trees[2].velocity_dof()), (24, 20));
     let mut checked = 0;
     for tree in &trees {
         let (n, nv) = (tree.dof(), tree.velocity_dof());
@@ -212,10 +217,8 @@ fn floating_and_planar_joints_against_differences() {
                     let twist = compile(tree, &Request::tip(&tip_name).with_base(&base).twist(frame)).unwrap();
                     for mut q in configurations(n, 3) {
                         // A quaternion of any length: the rotation is its normalisation's.
-                        for j in tree.floating_joints() {
-                            if let kinematics_model::JointMotion::Dof(start) = tree.joint(j).motion {
-                                q[start + 6] += 2.5;
-                            }
+                        for start in tree.quaternion_entries() {
+                            q[start + 3] += 2.5;
                         }
                         let p = outputs(&pose, &q);
                         let j = outputs(&jacobian, &q);
@@ -263,8 +266,8 @@ fn floating_and_planar_joints_against_differences() {
 }
 
 /// `q` moved by `h` along velocity `v`: a floating joint's linear velocities along its child's
-/// axes, its angular ones about them (right multiplication of the quaternion); any other velocity
-/// is its entry of `q`.
+/// axes, a floating or spherical joint's angular ones about them (right multiplication of the
+/// quaternion); any other velocity is its entry of `q`.
 fn retract(tree: &KinematicTree, q: &[f64], v: usize, h: f64) -> Vec<f64> {
     let mut q = q.to_vec();
     let of_entry = tree.velocity_of_entry();
@@ -272,20 +275,23 @@ fn retract(tree: &KinematicTree, q: &[f64], v: usize, h: f64) -> Vec<f64> {
         q[entry] += h;
         return q;
     }
-    for joint in tree.floating_joints() {
-        let (Some(start), kinematics_model::JointMotion::Dof(s)) =
-            (tree.velocity_start(joint), tree.joint(joint).motion)
+    for joint in tree.quaternion_joints() {
+        let kind = tree.joint(joint).kind;
+        let (Some(start), kinematics_model::JointMotion::Dof(s), Some(offset)) =
+            (tree.velocity_start(joint), tree.joint(joint).motion, kind.quaternion_offset())
         else {
             continue;
         };
-        if !(start..start + 6).contains(&v) {
+        if !(start..start + kind.velocities()).contains(&v) {
             continue;
         }
-        let [x, y, z, w] = [q[s + 3], q[s + 4], q[s + 5], q[s + 6]];
+        // The quaternion follows a floating joint's position, its angular velocities the linear.
+        let qs = s + offset;
+        let [x, y, z, w] = [q[qs], q[qs + 1], q[qs + 2], q[qs + 3]];
         let norm = (x * x + y * y + z * z + w * w).sqrt();
         let (x, y, z, w) = (x / norm, y / norm, z / norm, w / norm);
         let k = v - start;
-        if k < 3 {
+        if k < offset {
             // The child's axis k in the parent frame: column k of the rotation.
             let r = [
                 [1.0 - 2.0 * (y * y + z * z), 2.0 * (x * y - z * w), 2.0 * (x * z + y * w)],
@@ -299,12 +305,12 @@ fn retract(tree: &KinematicTree, q: &[f64], v: usize, h: f64) -> Vec<f64> {
             // quaternion * (cos(h/2), sin(h/2) e_k), Hamilton product, (x, y, z, w) order.
             let (c, sn) = ((h / 2.0).cos(), (h / 2.0).sin());
             let mut e = [0.0; 3];
-            e[k - 3] = sn;
+            e[k - offset] = sn;
             let (bx, by, bz, bw) = (e[0], e[1], e[2], c);
-            q[s + 3] = w * bx + x * bw + y * bz - z * by;
-            q[s + 4] = w * by - x * bz + y * bw + z * bx;
-            q[s + 5] = w * bz + x * by - y * bx + z * bw;
-            q[s + 6] = w * bw - x * bx - y * by - z * bz;
+            q[qs] = w * bx + x * bw + y * bz - z * by;
+            q[qs + 1] = w * by - x * bz + y * bw + z * bx;
+            q[qs + 2] = w * bz + x * by - y * bx + z * bw;
+            q[qs + 3] = w * bw - x * bx - y * by - z * bz;
         }
         return q;
     }

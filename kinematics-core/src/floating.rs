@@ -1,9 +1,10 @@
-//! The rotation of a floating joint, from the quaternion in `q`.
+//! The rotation of a floating or spherical joint, from the quaternion in `q`.
 
 use crate::real::Real;
 
 /// The rotation matrix (row-major) of the quaternion `x i + y j + z k + w` normalised: generated
-/// code calls it for each floating joint, with the joint's entries `qx, qy, qz, qw` of `q`.
+/// code calls it for each floating or spherical joint, with the joint's entries `qx, qy, qz, qw`
+/// of `q`.
 ///
 /// The quaternion need not have unit length: dividing by its squared length gives the rotation
 /// of the unit quaternion along it, exactly as normalising first would (up to rounding). A zero

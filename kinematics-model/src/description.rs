@@ -100,12 +100,16 @@ pub enum JointTypeDescription {
     Floating,
     /// Planar 3-DoF motion.
     Planar,
-    /// Ball joint (not part of the URDF specification; refused).
+    /// URDF `spherical` (not part of the URDF specification, which gives it no entries of `q`;
+    /// refused).
     Spherical,
+    /// A ball joint (MJCF `ball`): a spherical joint, its rotation a quaternion
+    /// ([`crate::JointKind::Spherical`]).
+    Ball,
 }
 
 impl JointTypeDescription {
-    /// The name used in URDF.
+    /// The name used in URDF (MJCF's for a ball joint, which URDF does not have).
     pub fn name(self) -> &'static str {
         match self {
             Self::Revolute => "revolute",
@@ -115,6 +119,7 @@ impl JointTypeDescription {
             Self::Floating => "floating",
             Self::Planar => "planar",
             Self::Spherical => "spherical",
+            Self::Ball => "ball",
         }
     }
 }

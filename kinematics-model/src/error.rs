@@ -356,6 +356,8 @@ pub enum SeveralValues {
     Planar,
     /// A floating joint (seven values).
     Floating,
+    /// A spherical joint (MJCF `ball`: four values).
+    Spherical,
 }
 
 impl fmt::Display for SeveralValues {
@@ -363,6 +365,7 @@ impl fmt::Display for SeveralValues {
         f.write_str(match self {
             SeveralValues::Planar => "planar",
             SeveralValues::Floating => "floating",
+            SeveralValues::Spherical => "spherical",
         })
     }
 }

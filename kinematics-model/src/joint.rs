@@ -37,6 +37,11 @@ pub enum JointKind {
     /// translations along the plane's axes ([`Joint::plane_axes`]) then the rotation about the
     /// normal; three velocities, their rates.
     Planar,
+    /// Free rotation about a point (MJCF `ball`): four entries of `q`, the child's orientation in
+    /// the joint frame as a quaternion `(qx, qy, qz, qw)` (the order and normalisation of a
+    /// floating joint's rotation); three velocities: the child's angular velocity in its own axes
+    /// (the angular part of a floating joint's, Pinocchio's spherical joint).
+    Spherical,
 }
 
 impl JointKind {
@@ -54,6 +59,7 @@ impl JointKind {
             JointKind::Fixed => "fixed",
             JointKind::Floating => "floating",
             JointKind::Planar => "planar",
+            JointKind::Spherical => "spherical",
         }
     }
 
@@ -63,16 +69,42 @@ impl JointKind {
             JointKind::Fixed => 0,
             JointKind::Revolute | JointKind::Continuous | JointKind::Prismatic => 1,
             JointKind::Planar => 3,
+            JointKind::Spherical => 4,
             JointKind::Floating => 7,
         }
     }
 
-    /// How many velocities (columns of a Jacobian, entries of `qd`) it takes.
+    /// How many velocities (columns of a Jacobian, entries of `qd`) it takes: a joint with a
+    /// quaternion has one fewer than its entries of `q` (three rates of rotation for the
+    /// quaternion's four entries).
     pub fn velocities(self) -> usize {
+        if self.takes_quaternion() { self.positions() - 1 } else { self.positions() }
+    }
+
+    /// Where its quaternion `(qx, qy, qz, qw)` starts among its entries of `q`: 3 for a floating
+    /// joint (after its position), 0 for a spherical joint; `None` for the kinds without one. The
+    /// same offset among its velocities is where its angular velocity starts (a floating joint's
+    /// three linear velocities come first).
+    ///
+    /// ```
+    /// use kinematics_model::JointKind;
+    /// assert_eq!(JointKind::Floating.quaternion_offset(), Some(3));
+    /// assert_eq!(JointKind::Spherical.quaternion_offset(), Some(0));
+    /// assert_eq!(JointKind::Planar.quaternion_offset(), None);
+    /// assert_eq!((JointKind::Spherical.positions(), JointKind::Spherical.velocities()), (4, 3));
+    /// ```
+    pub fn quaternion_offset(self) -> Option<usize> {
         match self {
-            JointKind::Floating => 6,
-            other => other.positions(),
+            JointKind::Floating => Some(3),
+            JointKind::Spherical => Some(0),
+            _ => None,
         }
+    }
+
+    /// Whether its entries of `q` hold a quaternion (a floating or spherical joint), normalised
+    /// before use, so that it has fewer velocities than entries of `q`.
+    pub fn takes_quaternion(self) -> bool {
+        self.quaternion_offset().is_some()
     }
 
     /// The names of its entries of `q`, after the joint's name (`.x`, ...); empty for a joint of
@@ -81,6 +113,7 @@ impl JointKind {
         match self {
             JointKind::Planar => &[".x", ".y", ".theta"],
             JointKind::Floating => &[".x", ".y", ".z", ".qx", ".qy", ".qz", ".qw"],
+            JointKind::Spherical => &[".qx", ".qy", ".qz", ".qw"],
             _ => &[],
         }
     }
@@ -89,6 +122,7 @@ impl JointKind {
     pub fn velocity_suffixes(self) -> &'static [&'static str] {
         match self {
             JointKind::Floating => &[".vx", ".vy", ".vz", ".wx", ".wy", ".wz"],
+            JointKind::Spherical => &[".wx", ".wy", ".wz"],
             other => other.position_suffixes(),
         }
     }
@@ -99,8 +133,8 @@ impl JointKind {
 pub enum JointMotion {
     /// A fixed joint: no value.
     Fixed,
-    /// An independent joint: the value is `q[index]` (a planar joint's three values and a
-    /// floating joint's seven start there).
+    /// An independent joint: the value is `q[index]` (a planar joint's three values, a
+    /// spherical joint's four and a floating joint's seven start there).
     Dof(usize),
     /// A mimic joint: the value is `multiplier * q[dof] + offset`, where `dof` is the index of the
     /// independent joint `source` (chains of mimics are resolved to the end).
@@ -141,8 +175,10 @@ pub struct Limits {
 /// A validated joint: `T_child = T_parent * origin * M(value) * after_motion`.
 ///
 /// `M` is the rotation by the value about `axis` (revolute, continuous), the translation by
-/// `value * axis` (prismatic), or the identity (fixed). URDF joints have an identity `after_motion`;
-/// standard DH rows place their constants there.
+/// `value * axis` (prismatic), the motion of a planar, floating or spherical joint's several
+/// values ([`JointKind`]), or the identity (fixed). URDF joints have an identity `after_motion`;
+/// standard DH rows place their constants there, and an MJCF hinge or ball joint off its body's
+/// origin the translation back from its `pos`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Joint {
     /// Joint name (unique in the tree).
@@ -157,7 +193,8 @@ pub struct Joint {
     pub origin: FixedTransform,
     /// Fixed transform after the motion.
     pub after_motion: FixedTransform,
-    /// Unit axis in the joint frame (exactly `[0, 0, 1]` etc. when written axis-aligned).
+    /// Unit axis in the joint frame (exactly `[0, 0, 1]` etc. when written axis-aligned); unused,
+    /// and kept as written, for fixed, floating and spherical joints.
     pub axis: [f64; 3],
     /// Position limits, if any (continuous joints have none).
     pub limits: Option<Limits>,

@@ -21,8 +21,15 @@
 //!   allowed only as the one joint of a child of the world body: `q` is the body's position and
 //!   then its quaternion as `qx, qy, qz, qw` (MuJoCo's `qpos` writes `qw` first), and the body's
 //!   `pos` and orientation are only MuJoCo's initial `qpos`, not part of the kinematics. An
-//!   unnamed free joint is named `root_joint`. `ball` joints are refused (the model has no
-//!   spherical joint yet).
+//!   unnamed free joint is named `root_joint`.
+//! - `ball` joints are spherical joints ([`crate::JointKind::Spherical`]) turning about their
+//!   `pos` (`Trans(pos) Rot(quaternion) Trans(-pos)`, exactly): four entries of `q`, the body's
+//!   orientation relative to where it is written as `qx, qy, qz, qw` (MuJoCo's `qpos` writes `qw`
+//!   first; the quaternion is normalised, as a free joint's), and three velocities, the body's
+//!   angular velocity in its own axes. `axis` and `ref`, which MuJoCo ignores for a ball joint,
+//!   are refused when written on the joint and ignored when a default class gives them; a
+//!   `range` that limits it (a cone) is refused, as is an `<equality><joint>` naming a ball or
+//!   free joint (MuJoCo couples hinges and slides only).
 //! - Named `<site>`s and named `<frame>`s become links joined to their body by a fixed joint,
 //!   both named as the site or frame, so they can be tips; a frame's transform applies to
 //!   everything inside it. Unnamed sites are skipped (nothing could name them as a tip).
@@ -99,7 +106,8 @@ pub fn parse_mjcf_with(text: &str, read: ReadFile<'_>) -> Result<Description, Lo
     if root.tag_name().name() != "mujoco" {
         return Err(place.error(root, None, format!("the root element is <{}>, not <mujoco>", root.tag_name().name())));
     }
-    let mut reader = Reader { docs: &docs, description: Description::default(), refs: BTreeMap::new() };
+    let mut reader =
+        Reader { docs: &docs, description: Description::default(), refs: BTreeMap::new(), several: BTreeMap::new() };
     reader.description.name = root.attribute("model").unwrap_or("MuJoCo Model").to_owned();
     reader.description.links.push(WORLD.to_owned());
     let model = reader.settings(MAIN, String::new())?;
@@ -329,6 +337,8 @@ struct Reader<'d, 't> {
     description: Description,
     /// Each hinge and slide joint's `ref` (qpos units), for equality constraints.
     refs: BTreeMap<String, f64>,
+    /// Each ball and free joint's type, which an equality constraint cannot couple.
+    several: BTreeMap<String, &'static str>,
 }
 
 type Elements<'d, 't> = Vec<(Place<'d, 't>, Node<'d, 't>)>;
@@ -676,12 +686,7 @@ impl<'d, 't> Reader<'d, 't> {
             mimic: None,
         };
         match kind {
-            "ball" => {
-                return Err(here(
-                    "ball joints are not supported yet (the model has no spherical joint): write three hinges"
-                        .to_owned(),
-                ));
-            }
+            "ball" => return self.ball(model, node, &attributes, description, origin),
             "free" => {
                 if !top || count != 1 {
                     return Err(here(
@@ -699,6 +704,7 @@ impl<'d, 't> Reader<'d, 't> {
                         return Err(w.error(&element, format!("a free joint takes no `{refused}`")));
                     }
                 }
+                self.several.insert(name.clone(), "free");
                 return Ok(description);
             }
             _ => {}
@@ -753,6 +759,49 @@ impl<'d, 't> Reader<'d, 't> {
             let r = reference.radians();
             description.origin = origin.translate(unit.map(|c| -r * c));
         }
+        Ok(description)
+    }
+
+    /// A ball joint (XML reference, `body/joint`: type ball): a spherical joint turning about
+    /// its `pos`, `Trans(pos) Rot(quaternion) Trans(-pos)`. MuJoCo ignores `axis` and `ref` for
+    /// ball joints: written on the element itself they are refused (they would say something the
+    /// joint does not do), from a default class (given to every joint of it) they are ignored as
+    /// MuJoCo ignores them. A `range` that limits it (a cone about the body as written) is
+    /// refused, wherever it was written: the model holds no such limit.
+    fn ball(
+        &mut self,
+        model: &Model,
+        node: Node<'d, 't>,
+        attributes: &BTreeMap<String, Written>,
+        mut description: JointDescription,
+        origin: FixedTransform,
+    ) -> Result<JointDescription, LoadErrorKind> {
+        let element = Some(description.element.clone());
+        for (refused, why) in
+            [("axis", "it turns about every axis through its `pos`"), ("ref", "its `qpos0` is the body as written")]
+        {
+            if let (Some(_), Some(w)) = (node.attribute(refused), attributes.get(refused)) {
+                return Err(w.error(&element, format!("a ball joint takes no `{refused}` ({why})")));
+            }
+        }
+        if self.limits(model, attributes, false, &element)?.is_some() {
+            #[allow(clippy::expect_used, reason = "invariant: `limits` gives limits only from a written `range`")]
+            let range = attributes.get("range").expect("invariant: limits come from a range");
+            return Err(range.error(
+                &element,
+                "a ball joint's `range` is a cone limit (its largest angle from the body as written), which is not \
+                 modelled: remove it or write `limited=\"false\"`"
+                    .to_owned(),
+            ));
+        }
+        let pos = match attributes.get("pos") {
+            Some(w) => w.numbers::<3>("pos", &element)?,
+            None => [0.0; 3],
+        };
+        self.several.insert(description.name.clone(), "ball");
+        description.kind = JointTypeDescription::Ball;
+        description.origin = origin.translate(pos);
+        description.after_motion = FixedTransform::identity().translate(pos.map(|c| -c));
         Ok(description)
     }
 
@@ -873,6 +922,16 @@ impl<'d, 't> Reader<'d, 't> {
             }
             let element = None;
             let attributes = self.attributes(model, place, child, "equality", None, &element)?;
+            // MuJoCo couples hinges and slides only (XML reference, `equality/joint`).
+            let named = ["joint1", "joint2"].into_iter().filter_map(|a| attributes.get(a));
+            if let Some((joint, kind)) = named.into_iter().find_map(|w| self.several.get(&w.value).map(|k| (w, k))) {
+                let message = format!(
+                    "<equality><joint>: `{}` is a {kind} joint (a quaternion in `q`, not one value): only hinges \
+                     and slides are coupled",
+                    joint.value
+                );
+                return Err(joint.error(&element, message));
+            }
             if let Some(active) = attributes.get("active")
                 && active.word("active", &element, &["true", "false"])? == "false"
             {

@@ -178,32 +178,35 @@ impl KinematicTree {
         self.joint_id(name).map(|id| self.joint(id))
     }
 
-    /// The length of `q`: one entry per independent joint, three for a planar joint, seven for a
-    /// floating one ([`JointKind::positions`]).
+    /// The length of `q`: one entry per independent joint, three for a planar joint, four for a
+    /// spherical one, seven for a floating one ([`JointKind::positions`]).
     pub fn dof(&self) -> usize {
         self.dof_joints.len()
     }
 
     /// The number of velocities: the columns of a Jacobian and the length of `qd` (a floating
-    /// joint has six, for its seven entries of `q`; every other joint as many as in `q`).
+    /// joint has six, for its seven entries of `q`, a spherical joint three for its four; every
+    /// other joint as many as in `q`).
     pub fn velocity_dof(&self) -> usize {
-        self.dof() - self.floating_joints().count()
+        self.dof() - self.quaternion_joints().count()
     }
 
     /// The independent joints, per entry of `q`: `q[i]` drives `dof_joints()[i]` (a planar joint
-    /// is listed three times, a floating one seven times).
+    /// is listed three times, a spherical one four times, a floating one seven times).
     pub fn dof_joints(&self) -> &[JointId] {
         &self.dof_joints
     }
 
     /// The name of each entry of `q`: the joint's name, with `.x`, `.y`, `.theta` for a planar
-    /// joint's and `.x`, `.y`, `.z`, `.qx`, `.qy`, `.qz`, `.qw` for a floating one's.
+    /// joint's, `.qx`, `.qy`, `.qz`, `.qw` for a spherical one's and `.x`, `.y`, `.z`, `.qx`,
+    /// `.qy`, `.qz`, `.qw` for a floating one's ([`JointKind::position_suffixes`]).
     pub fn dof_names(&self) -> Vec<String> {
         self.entry_names(JointKind::position_suffixes)
     }
 
     /// The name of each velocity (a Jacobian's columns, the entries of `qd`): as
-    /// [`KinematicTree::dof_names`], with `.vx, .vy, .vz, .wx, .wy, .wz` for a floating joint.
+    /// [`KinematicTree::dof_names`], with `.vx, .vy, .vz, .wx, .wy, .wz` for a floating joint and
+    /// `.wx, .wy, .wz` for a spherical one.
     pub fn velocity_names(&self) -> Vec<String> {
         self.entry_names(JointKind::velocity_suffixes)
     }
@@ -225,8 +228,8 @@ impl KinematicTree {
         names
     }
 
-    /// Position limits of each entry of `q`, in order (`None` for continuous, planar and floating
-    /// joints).
+    /// Position limits of each entry of `q`, in order (`None` for continuous, planar, spherical
+    /// and floating joints).
     pub fn dof_limits(&self) -> Vec<Option<Limits>> {
         self.dof_joints.iter().map(|&j| self.joint(j).limits).collect()
     }
@@ -236,17 +239,50 @@ impl KinematicTree {
         (0..self.joints.len()).map(JointId).filter(|&j| self.joint(j).kind == JointKind::Floating)
     }
 
+    /// The joints whose entries of `q` hold a quaternion (floating and spherical joints,
+    /// [`JointKind::takes_quaternion`]), in tree order. Each is independent (validation refuses a
+    /// mimic of one), so each has one fewer velocity than entries of `q`.
+    pub fn quaternion_joints(&self) -> impl Iterator<Item = JointId> + '_ {
+        (0..self.joints.len()).map(JointId).filter(|&j| self.joint(j).kind.takes_quaternion())
+    }
+
+    /// Where each quaternion joint's quaternion starts in `q` (its `qx`; `qy`, `qz`, `qw`
+    /// follow), in the order of [`KinematicTree::quaternion_joints`].
+    ///
+    /// ```
+    /// use kinematics_model::parse_source;
+    /// let mjcf = r#"<mujoco><worldbody><body name="trunk"><freejoint/>
+    ///   <body name="arm"><joint name="shoulder" type="ball"/></body></body></worldbody></mujoco>"#;
+    /// let tree = parse_source("r.xml", mjcf)?;
+    /// assert_eq!(tree.quaternion_entries(), vec![3, 7]);
+    /// assert_eq!((tree.dof(), tree.velocity_dof()), (11, 9));
+    /// assert_eq!(tree.dof_names()[7..], ["shoulder.qx", "shoulder.qy", "shoulder.qz", "shoulder.qw"]);
+    /// assert_eq!(tree.velocity_names()[6..], ["shoulder.wx", "shoulder.wy", "shoulder.wz"]);
+    /// # Ok::<(), kinematics_model::LoadError>(())
+    /// ```
+    pub fn quaternion_entries(&self) -> Vec<usize> {
+        self.quaternion_joints()
+            .filter_map(|j| {
+                let joint = self.joint(j);
+                match (joint.motion, joint.kind.quaternion_offset()) {
+                    (JointMotion::Dof(start), Some(offset)) => Some(start + offset),
+                    _ => None,
+                }
+            })
+            .collect()
+    }
+
     /// The velocity index of each entry of `q`: the same index shifted down by one for each
-    /// floating joint before it, and `None` for a floating joint's own seven entries (its six
-    /// velocities start at [`KinematicTree::velocity_start`]).
+    /// quaternion joint (floating or spherical) before it, and `None` for a quaternion joint's own
+    /// entries (its velocities start at [`KinematicTree::velocity_start`]).
     pub fn velocity_of_entry(&self) -> Vec<Option<usize>> {
         let mut out = Vec::with_capacity(self.dof());
         let mut shift = 0;
         for (i, &j) in self.dof_joints.iter().enumerate() {
             let joint = self.joint(j);
-            if joint.kind == JointKind::Floating {
+            if joint.kind.takes_quaternion() {
                 out.push(None);
-                if matches!(joint.motion, JointMotion::Dof(start) if i == start + 6) {
+                if matches!(joint.motion, JointMotion::Dof(start) if i + 1 == start + joint.kind.positions()) {
                     shift += 1;
                 }
             } else {
@@ -259,9 +295,17 @@ impl KinematicTree {
     /// Where an independent joint's velocities start (`None` for a fixed or mimic joint).
     pub fn velocity_start(&self, joint: JointId) -> Option<usize> {
         let JointMotion::Dof(start) = self.joint(joint).motion else { return None };
-        let floating_before =
-            self.dof_joints[..start].iter().filter(|&&j| self.joint(j).kind == JointKind::Floating).count() / 7;
-        Some(start - floating_before)
+        // One fewer velocity than entries for each quaternion joint before: count their first
+        // entries.
+        let quaternions_before = self.dof_joints[..start]
+            .iter()
+            .enumerate()
+            .filter(|&(i, &j)| {
+                let before = self.joint(j);
+                before.kind.takes_quaternion() && before.motion == JointMotion::Dof(i)
+            })
+            .count();
+        Some(start - quaternions_before)
     }
 
     /// The leaves: links below the root with no child joint, in depth-first order (the ends of

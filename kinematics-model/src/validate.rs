@@ -134,7 +134,8 @@ fn duplicates<'a>(names: impl Iterator<Item = &'a String>) -> Vec<String> {
 }
 
 /// Rule: the joint types of URDF are supported (revolute, continuous, prismatic, fixed, floating,
-/// planar); a ball joint, which URDF does not define, is not.
+/// planar), and MJCF's ball joint; URDF `spherical`, which the URDF specification does not
+/// define, is not.
 fn check_joint_type(j: &JointDescription, errors: &mut Vec<ModelError>) {
     if matches!(j.kind, JointTypeDescription::Spherical) {
         errors.push(ModelError::UnsupportedJoint { element: j.element.clone(), kind: j.kind.name() });
@@ -178,8 +179,10 @@ fn check_finite(j: &JointDescription, errors: &mut Vec<ModelError>) {
 /// its largest component first, so any finite non-zero axis (`0 0 1e200`, `1e-300 0 0`) has a
 /// unit direction.
 fn check_axis(j: &JointDescription, errors: &mut Vec<ModelError>) {
-    // A floating joint has no axis (URDF ignores it); a planar joint's is the plane's normal.
-    let moving = !matches!(j.kind, JointTypeDescription::Fixed | JointTypeDescription::Floating);
+    // A floating or ball joint has no axis (URDF ignores a floating joint's); a planar joint's is
+    // the plane's normal.
+    let moving =
+        !matches!(j.kind, JointTypeDescription::Fixed | JointTypeDescription::Floating | JointTypeDescription::Ball);
     if moving && j.axis.iter().all(|v| v.is_finite()) && unit_axis(j.axis).is_none() {
         errors.push(ModelError::ZeroAxis { element: j.element.clone() });
     }
@@ -320,11 +323,15 @@ fn check_mimics(d: &Description, errors: &mut Vec<ModelError>) {
             Some(source) if source.kind == JointTypeDescription::Fixed => {
                 errors.push(ModelError::MimicOfFixed { element: j.element.clone(), source_joint: m.joint.clone() })
             }
-            // A mimic follows one value with one value: not a planar or floating joint's several.
+            // A mimic follows one value with one value: not a planar, floating or ball joint's
+            // several.
             Some(source) if several_values(source.kind) || several_values(j.kind) => {
                 let kind = if several_values(j.kind) { j.kind } else { source.kind };
-                let kind =
-                    if kind == JointTypeDescription::Planar { SeveralValues::Planar } else { SeveralValues::Floating };
+                let kind = match kind {
+                    JointTypeDescription::Planar => SeveralValues::Planar,
+                    JointTypeDescription::Ball => SeveralValues::Spherical,
+                    _ => SeveralValues::Floating,
+                };
                 errors.push(ModelError::MimicOfSeveral {
                     element: j.element.clone(),
                     source_joint: m.joint.clone(),
@@ -342,9 +349,9 @@ fn check_mimics(d: &Description, errors: &mut Vec<ModelError>) {
     }
 }
 
-/// Whether a joint of this type takes several values (planar, floating).
+/// Whether a joint of this type takes several values (planar, floating, ball).
 fn several_values(kind: JointTypeDescription) -> bool {
-    matches!(kind, JointTypeDescription::Planar | JointTypeDescription::Floating)
+    matches!(kind, JointTypeDescription::Planar | JointTypeDescription::Floating | JointTypeDescription::Ball)
 }
 
 /// Rule: the composed multiplier and offset of every mimic joint (`m * q + o` after following
@@ -428,7 +435,7 @@ fn assemble(d: &Description, root: usize) -> KinematicTree {
     }
     let joint_index: BTreeMap<&str, usize> = order.iter().enumerate().map(|(i, j)| (j.name.as_str(), i)).collect();
     // Every independent joint takes its entries of `q` in tree order: one, or a planar joint's
-    // three, or a floating joint's seven.
+    // three, a spherical joint's four or a floating joint's seven.
     let mut dof_joints = Vec::new();
     let mut dof_of: Vec<Option<usize>> = vec![None; order.len()];
     for (i, j) in order.iter().enumerate() {
@@ -454,7 +461,7 @@ fn assemble(d: &Description, root: usize) -> KinematicTree {
             };
             // A fixed joint keeps its axis as written (it is never used); a moving one passed
             // `check_axis`, so its unit axis exists.
-            let axis = if matches!(kind, JointKind::Fixed | JointKind::Floating) {
+            let axis = if matches!(kind, JointKind::Fixed | JointKind::Floating | JointKind::Spherical) {
                 j.axis
             } else {
                 #[allow(clippy::expect_used, reason = "invariant: `check_axis` refused zero axes of moving joints")]
@@ -462,9 +469,15 @@ fn assemble(d: &Description, root: usize) -> KinematicTree {
             };
             // URDF gives limits to revolute and prismatic joints only.
             let limits = match (kind, j.limits) {
-                (JointKind::Continuous | JointKind::Fixed | JointKind::Floating | JointKind::Planar, _) | (_, None) => {
-                    None
-                }
+                (
+                    JointKind::Continuous
+                    | JointKind::Fixed
+                    | JointKind::Floating
+                    | JointKind::Planar
+                    | JointKind::Spherical,
+                    _,
+                )
+                | (_, None) => None,
                 (_, Some(l)) => {
                     let lower = l.lower;
                     let upper = l.upper;
@@ -498,6 +511,7 @@ fn joint_kind(kind: JointTypeDescription) -> Option<JointKind> {
         JointTypeDescription::Fixed => Some(JointKind::Fixed),
         JointTypeDescription::Floating => Some(JointKind::Floating),
         JointTypeDescription::Planar => Some(JointKind::Planar),
+        JointTypeDescription::Ball => Some(JointKind::Spherical),
         JointTypeDescription::Spherical => None,
     }
 }

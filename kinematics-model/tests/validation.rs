@@ -581,3 +581,64 @@ fn a_prismatic_joint_with_an_unlimited_side_has_the_reach_of_an_unlimited_one() 
     assert_eq!(slide("-inf\" upper=\"inf"), unlimited);
     assert_eq!(slide("-0.5\" upper=\"2"), 3.0);
 }
+
+#[test]
+fn ball_joints_take_a_quaternion_and_three_velocities() {
+    // A hinge, a ball, a free joint mid-tree and a ball below it: the velocities skip one entry
+    // per quaternion.
+    let mjcf = r#"<mujoco><worldbody>
+      <body name="a"><joint name="turn"/>
+        <body name="b"><joint name="ball" type="ball"/>
+          <body name="c"><joint name="slide" type="slide"/><joint name="wrist" type="ball" pos="0 0 0.5"/></body>
+        </body>
+      </body></worldbody></mujoco>"#;
+    let tree = parse_source("ok.xml", mjcf).unwrap();
+    assert_eq!((tree.dof(), tree.velocity_dof()), (10, 8));
+    assert_eq!(
+        tree.dof_names(),
+        ["turn", "ball.qx", "ball.qy", "ball.qz", "ball.qw", "slide", "wrist.qx", "wrist.qy", "wrist.qz", "wrist.qw"]
+    );
+    assert_eq!(
+        tree.velocity_names(),
+        ["turn", "ball.wx", "ball.wy", "ball.wz", "slide", "wrist.wx", "wrist.wy", "wrist.wz"]
+    );
+    let columns = tree.velocity_of_entry();
+    assert_eq!(columns, [Some(0), None, None, None, None, Some(4), None, None, None, None]);
+    let id = |name: &str| tree.joint_id(name).unwrap();
+    assert_eq!(
+        ["turn", "ball", "slide", "wrist"].map(|j| tree.velocity_start(id(j))),
+        [Some(0), Some(1), Some(4), Some(5)]
+    );
+    assert_eq!(tree.quaternion_entries(), [1, 6]);
+    let kinds: Vec<_> = tree.quaternion_joints().map(|j| tree.joint(j).name.as_str()).collect();
+    assert_eq!(kinds, ["ball", "wrist"]);
+    assert!(tree.dof_limits().iter().all(Option::is_none));
+    let wrist = tree.joint_by_name("wrist").unwrap();
+    assert_eq!(wrist.kind, kinematics_model::JointKind::Spherical);
+    assert_eq!(wrist.limits, None);
+    assert_eq!(tree.chain_dofs(&tree.chain("b", "c").unwrap()), [5, 6, 7, 8, 9]);
+}
+
+#[test]
+fn a_mimic_of_a_ball_joint_is_refused_by_name() {
+    // MJCF cannot write one (its equality refuses a ball joint); the model's rule holds for any
+    // description.
+    let mjcf = r#"<mujoco><worldbody><body name="a"><joint name="ball" type="ball"/>
+      <body name="b"><joint name="follow"/></body></body></worldbody></mujoco>"#;
+    let mut description = kinematics_model::mjcf::parse_mjcf(mjcf).unwrap();
+    description.joints[1].mimic =
+        Some(kinematics_model::MimicDescription { joint: "ball".to_owned(), multiplier: 1.0, offset: 0.0 });
+    let errors = kinematics_model::KinematicTree::from_description(&description).unwrap_err();
+    let message = errors.to_string();
+    assert!(
+        message.contains("joint `follow`") && message.contains("a spherical joint takes several values"),
+        "{message}"
+    );
+}
+
+#[test]
+fn urdf_spherical_joints_are_refused() {
+    // URDF does not define them (MJCF's ball joints are the model's spherical joints).
+    let text = urdf(&["a", "b"], &joint("ball", "spherical", "a", "b", ""));
+    check(&text, &[&["joint `ball`", "joint type `spherical` is not supported"]]);
+}

@@ -30,14 +30,16 @@ pub enum RuntimeError {
         /// The value.
         value: f64,
     },
-    /// A floating joint's quaternion whose squared length is zero, subnormal or overflows: it
-    /// cannot be normalised into a rotation.
-    #[error("robot `{robot}`: the quaternion of floating joint `{joint}` (q[{index}..{}]) has no length to normalise", .index + 4)]
+    /// A floating or spherical joint's quaternion whose squared length is zero, subnormal or
+    /// overflows: it cannot be normalised into a rotation.
+    #[error("robot `{robot}`: the quaternion of {kind} joint `{joint}` (q[{index}..{}]) has no length to normalise", .index + 4)]
     DegenerateQuaternion {
         /// Robot name.
         robot: String,
-        /// The floating joint.
+        /// The joint.
         joint: String,
+        /// Its kind (`floating` or `spherical`).
+        kind: &'static str,
         /// Where its quaternion starts in `q`.
         index: usize,
     },

@@ -95,17 +95,17 @@ impl ReferenceFk {
                 value: q[index],
             });
         }
-        // A floating joint's quaternion is normalised, so it must have a length to normalise.
-        for joint in self.tree.floating_joints() {
-            if let JointMotion::Dof(start) = self.tree.joint(joint).motion {
-                let squared: f64 = q[start + 3..start + 7].iter().map(|v| v * v).sum();
-                if !(squared.is_normal()) {
-                    return Err(RuntimeError::DegenerateQuaternion {
-                        robot: self.tree.name().to_owned(),
-                        joint: self.tree.joint(joint).name.clone(),
-                        index: start + 3,
-                    });
-                }
+        // A floating or spherical joint's quaternion is normalised, so it must have a length to
+        // normalise.
+        for (joint, start) in self.tree.quaternion_joints().zip(self.tree.quaternion_entries()) {
+            let squared: f64 = q[start..start + 4].iter().map(|v| v * v).sum();
+            if !(squared.is_normal()) {
+                return Err(RuntimeError::DegenerateQuaternion {
+                    robot: self.tree.name().to_owned(),
+                    joint: self.tree.joint(joint).name.clone(),
+                    kind: self.tree.joint(joint).kind.name(),
+                    index: start,
+                });
             }
         }
         Ok(())
@@ -122,8 +122,8 @@ impl ReferenceFk {
         RuntimeError::Model { robot: self.tree.name().to_owned(), source }
     }
 
-    /// The motion `M(values)` of a joint: its entries of `q` (one, or a planar joint's three, or a
-    /// floating joint's seven).
+    /// The motion `M(values)` of a joint: its entries of `q` (one, or a planar joint's three, a
+    /// spherical joint's four, a floating joint's seven).
     pub(crate) fn motion(&self, index: usize, joint: &Joint, values: &[f64]) -> Isometry3<f64> {
         let axis = self.axes[index];
         let value = values[0];
@@ -140,6 +140,11 @@ impl ReferenceFk {
                 Translation3::new(values[0], values[1], values[2]),
                 // Pinocchio's order in `q`: x, y, z, w; nalgebra's constructor takes w first.
                 UnitQuaternion::from_quaternion(Quaternion::new(values[6], values[3], values[4], values[5])),
+            ),
+            // The same order and normalisation, without the position.
+            JointKind::Spherical => Isometry3::from_parts(
+                Translation3::identity(),
+                UnitQuaternion::from_quaternion(Quaternion::new(values[3], values[0], values[1], values[2])),
             ),
             JointKind::Revolute | JointKind::Continuous => {
                 Isometry3::from_parts(Translation3::identity(), UnitQuaternion::from_axis_angle(&axis, value))

@@ -38,7 +38,8 @@ impl ReferenceFk {
     /// (`Local`: `R^T` times each). A revolute or continuous joint with axis `z` through `o`
     /// contributes `[z x (p - o); z]`, a prismatic one `[z; 0]` (`p`: the tip's origin), a planar
     /// joint its two translations and its rotation, a floating joint the child's six (Pinocchio's
-    /// free-flyer: linear then angular velocity in the child's axes), and a mimic joint its
+    /// free-flyer: linear then angular velocity in the child's axes), a spherical joint the
+    /// child's three angular ones (in its axes, about the joint's origin), and a mimic joint its
     /// multiplier times that, added to its source's column. The path goes up from the base to the
     /// two links' nearest common ancestor and down to the tip: a joint on the way up moves the base,
     /// not the tip, and contributes with the opposite sign; joints above the common ancestor move
@@ -112,6 +113,15 @@ impl ReferenceFk {
                         add(column + k, e * rate, Vector3::zeros());
                         let (linear, angular) = turn(e, moved.translation.vector);
                         add(column + 3 + k, linear * rate, angular * rate);
+                    }
+                }
+                JointKind::Spherical => {
+                    // Pinocchio's spherical joint: the child's angular velocity in its own axes,
+                    // about the joint's origin (which the rotation leaves where it is).
+                    for k in 0..3 {
+                        let e = moved.rotation * Vector3::ith(k, 1.0);
+                        let (linear, angular) = turn(e, moved.translation.vector);
+                        add(column + k, linear * rate, angular * rate);
                     }
                 }
             }

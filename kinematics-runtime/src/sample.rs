@@ -17,9 +17,10 @@ pub const SPECIAL_ANGLES: [f64; 5] = [0.0, FRAC_PI_2, -FRAC_PI_2, PI, -PI];
 /// A deterministic stream of configurations (splitmix64, fixed seed): first every joint at each
 /// of the [`SPECIAL_ANGLES`] in turn, then per joint a special angle a quarter of the time, a value
 /// up to 1 beyond the limits a quarter of the time, and a value within them otherwise. Continuous
-/// joints range over [-pi, pi], and so does every entry of a planar or floating joint; a floating
-/// joint's quaternion that has no length to normalise (all four entries zero, as in the first
-/// configuration) is the identity `(0, 0, 0, 1)` instead, since the reference refuses it.
+/// joints range over [-pi, pi], and so does every entry of a planar, spherical or floating joint; a
+/// floating or spherical joint's quaternion that has no length to normalise (all four entries
+/// zero, as in the first configuration) is the identity `(0, 0, 0, 1)` instead, since the
+/// reference refuses it.
 ///
 /// ```
 /// use kinematics_runtime::{Configurations, JointLimits};
@@ -34,7 +35,7 @@ pub struct Configurations {
     state: u64,
     ranges: Vec<(f64, f64)>,
     count: usize,
-    /// Where each floating joint's quaternion starts in `q`.
+    /// Where each floating or spherical joint's quaternion starts in `q`.
     quaternions: Vec<usize>,
     /// Within the limits only ([`Configurations::uniform`]).
     uniform: bool,
@@ -62,13 +63,7 @@ impl Configurations {
         let mut configurations = Self::from_ranges(
             tree.dof_limits().iter().map(|l| range(l.map(|l| (l.lower, l.upper)).unwrap_or(UNLIMITED))).collect(),
         );
-        configurations.quaternions = tree
-            .floating_joints()
-            .filter_map(|j| match tree.joint(j).motion {
-                kinematics_model::JointMotion::Dof(start) => Some(start + 3),
-                _ => None,
-            })
-            .collect();
+        configurations.quaternions = tree.quaternion_entries();
         configurations
     }
 

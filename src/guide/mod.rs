@@ -13,7 +13,7 @@
 //! | [`velocities`] | Jacobians (`LOCAL_WORLD_ALIGNED`, `LOCAL`), pose with Jacobian, twists; how they are checked |
 //! | [`inverse_kinematics`] | closed-form families, what comes back, seven joints, the numeric solver, speed |
 //! | [`collision`] | collision geometry from URDF and SRDF, its sphere cover, the pairs, `sphere_centers`, `collides`, `self_collides`, obstacles |
-//! | [`floating_bases`] | free-flying roots, URDF `floating` and `planar` joints, quaternions in `q` |
+//! | [`floating_bases`] | free-flying roots, URDF `floating` and `planar` joints, MJCF ball joints, quaternions in `q` |
 //! | [`orientation`] | a [`Pose`](crate::Pose)'s rotation as quaternions, roll-pitch-yaw, ZYZ, axis-angle |
 //! | [`exactness`] | decimal angles that mean a quarter turn, and the policy that reads them so |
 //! | [`trig`] | our sine and cosine, its accuracy contract, our `atan2` |

@@ -17,7 +17,10 @@ pub fn robot_path(file: &str) -> String {
     format!("{}/../robots/{file}", env!("CARGO_MANIFEST_DIR"))
 }
 
-/// Per joint: a special angle, a value within the limits, or one up to 1 beyond them.
+/// Per joint: a special angle, a value within the limits, or one up to 1 beyond them. A floating or
+/// spherical joint's quaternion drawn with no length to normalise (all four entries 0, about one
+/// draw in 160,000 per quaternion) is the identity instead, as the runtime's `Configurations`
+/// make it: the reference refuses it (`tests/floating_base.rs` and `tests/mjcf.rs` test that).
 pub fn configuration(tree: &KinematicTree) -> impl Strategy<Value = Vec<f64>> {
     use std::f64::consts::{FRAC_PI_2, PI};
     let per_joint: Vec<BoxedStrategy<f64>> = tree
@@ -35,7 +38,16 @@ pub fn configuration(tree: &KinematicTree) -> impl Strategy<Value = Vec<f64>> {
             .boxed()
         })
         .collect();
-    per_joint
+    let quaternions = tree.quaternion_entries();
+    per_joint.prop_map(move |mut q| {
+        for &start in &quaternions {
+            let quaternion = &mut q[start..start + 4];
+            if !quaternion.iter().map(|v| v * v).sum::<f64>().is_normal() {
+                quaternion.copy_from_slice(&[0.0, 0.0, 0.0, 1.0]);
+            }
+        }
+        q
+    })
 }
 
 /// Largest difference: translation relative to `reach`, rotation entries absolute.

@@ -95,13 +95,14 @@ pub enum AxisStyle {
 }
 
 impl AxisStyle {
-    /// The style of a joint kind; `None` for joints with no one axis to draw (fixed, floating).
+    /// The style of a joint kind; `None` for joints with no one axis to draw (fixed, floating,
+    /// spherical).
     fn of(kind: JointKind) -> Option<Self> {
         match kind {
             JointKind::Revolute | JointKind::Continuous => Some(AxisStyle::Revolute),
             JointKind::Prismatic => Some(AxisStyle::Prismatic),
             JointKind::Planar => Some(AxisStyle::Planar),
-            JointKind::Fixed | JointKind::Floating => None,
+            JointKind::Fixed | JointKind::Floating | JointKind::Spherical => None,
         }
     }
 

@@ -16,7 +16,7 @@ pub struct Names {
 
 impl Names {
     /// With the lengths of `q` and `qd`, so variables past `q` get their names (`qd1`, `rot1_12`:
-    /// row 1, column 2 of the first floating joint's rotation) rather than `q`'s.
+    /// row 1, column 2 of the first floating or spherical joint's rotation) rather than `q`'s.
     pub fn with_sizes(mut self, dof: usize, velocities: usize) -> Self {
         self.sizes = Some((dof, velocities));
         self

@@ -61,15 +61,15 @@ struct Writer<'a> {
     schedule: &'a Schedule,
     private: &'a TokenStream,
     /// Entries of `q` and of `qd`: variables from `q.0` on are joint rates (`qd1`, ...), from
-    /// `q.0 + q.1` on floating joints' rotations (`rot1_11`, ...).
+    /// `q.0 + q.1` on floating and spherical joints' rotations (`rot1_11`, ...).
     sizes: (usize, usize),
     /// The names of the inputs ([`Node::Input`]), by index.
     inputs: &'a [Ident],
 }
 
 /// The name of the graph's variable `i` (`sizes`: the lengths of `q` and `qd`): a joint position
-/// `q1`, a joint rate `qd1`, or the entry (row 1, column 2) of the first floating joint's rotation,
-/// `rot1_12`.
+/// `q1`, a joint rate `qd1`, or the entry (row 1, column 2) of the first floating or spherical
+/// joint's rotation, `rot1_12`.
 fn var_ident(i: usize, (dof, velocities): (usize, usize)) -> Ident {
     if i < dof {
         format_ident!("q{}", i + 1)
@@ -414,7 +414,7 @@ pub fn emit_function(compiled: &Compiled, options: &EmitOptions) -> TokenStream 
 }
 
 /// The statements every body opens with: `q` (and with `rates` `qd`) unpacked into the variables
-/// the schedule uses, each floating joint's rotation from its quaternion, then the sines and
+/// the schedule uses, each floating or spherical joint's rotation from its quaternion, then the sines and
 /// cosines and every `let` of the schedule.
 fn prologue(compiled: &Compiled, w: &Writer<'_>, rates: bool, trig: Trig) -> TokenStream {
     let (schedule, private) = (w.schedule, w.private);
@@ -434,8 +434,9 @@ fn prologue(compiled: &Compiled, w: &Writer<'_>, rates: bool, trig: Trig) -> Tok
             body.extend(quote!(let [#(#vars),*] = *#input;));
         }
     }
-    // Each floating joint's rotation, from its quaternion in `q`, before anything uses it.
-    for (k, &start) in compiled.floating_quaternions.iter().enumerate() {
+    // Each floating or spherical joint's rotation, from its quaternion in `q`, before anything
+    // uses it.
+    for (k, &start) in compiled.quaternions.iter().enumerate() {
         let first = n + nv + 9 * k;
         if !(first..first + 9).any(|i| schedule.used_vars.contains(&i)) {
             continue;

@@ -50,13 +50,14 @@ fn doc(constant: Constant) -> &'static [&'static str] {
         Constant::Base => &["The link every pose is expressed in."],
         Constant::Dof => &["Degrees of freedom: the length of `q`."],
         Constant::JointNames => &[
-            "Joint names, in the order of `q` (a planar joint's three entries and a floating",
-            "joint's seven are named after it: `.x`, `.y`, `.theta`; `.x`, `.y`, `.z`, `.qx`,",
-            "`.qy`, `.qz`, `.qw`).",
+            "Joint names, in the order of `q` (a planar joint's three entries, a spherical",
+            "joint's four and a floating joint's seven are named after it: `.x`, `.y`, `.theta`;",
+            "`.qx`, `.qy`, `.qz`, `.qw`; `.x`, `.y`, `.z`, `.qx`, `.qy`, `.qz`, `.qw`).",
         ],
         Constant::VelocityDof => &[
             "Velocities: a Jacobian's columns and the length of `qd` (`DOF` less one per",
-            "floating joint, whose six velocities are its child's in its own axes).",
+            "floating or spherical joint, whose six or three velocities are its child's in its",
+            "own axes).",
         ],
         Constant::VelocityNames => &["Velocity names, in the order of a Jacobian's columns."],
         Constant::JointLimits => &["Position limits, in the order of `q` (infinite for continuous joints)."],

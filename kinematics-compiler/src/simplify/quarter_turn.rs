@@ -58,7 +58,7 @@ pub(super) fn mat_mul(a: [[f64; 3]; 3], b: [[f64; 3]; 3]) -> [[f64; 3]; 3] {
 
 /// Rule `push-quarter-turns`: moves every signed permutation to the end, conjugating the steps
 /// it passes: `P R(u, a) = R(P u, a) P`, `P T(v) = T(P v) P`, `P C = (P C P^T) P`; it stops before a
-/// floating joint's rotation.
+/// floating or spherical joint's rotation.
 fn push_quarter_turns(g: &mut ExprGraph, steps: Vec<Step>) -> Vec<Step> {
     let mut carried = SignedPerm::IDENTITY;
     let mut out = Vec::with_capacity(steps.len());
@@ -72,7 +72,7 @@ fn push_quarter_turns(g: &mut ExprGraph, steps: Vec<Step>) -> Vec<Step> {
                 let conj = mat_mul(mat_mul(carried.matrix(), m), carried.inverse().matrix());
                 out.push(Step::ConstRotate(conj));
             }
-            // A floating joint's rotation is variables: the permutation stops before it.
+            // A floating or spherical joint's rotation is variables: the permutation stops before it.
             free @ Step::Free { .. } => {
                 if carried != SignedPerm::IDENTITY {
                     out.push(Step::Permute(carried));

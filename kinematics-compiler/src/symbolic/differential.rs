@@ -34,9 +34,10 @@ enum Contribution {
     Rotation { rates: Vec<(usize, f64)>, axis: [ExprId; 3], origin: [ExprId; 3] },
     /// A translation: per degree of freedom, the velocity it gives the tip, in base axes.
     Translation { velocities: Vec<(usize, [ExprId; 3])> },
-    /// A floating joint: the child's axes (the columns of its rotation) and origin in base axes,
-    /// its first column, and `-1` on the base's side of the tree.
-    Free { axes: [[ExprId; 3]; 3], origin: [ExprId; 3], column: usize, sign: f64 },
+    /// A floating or spherical joint: the child's axes (the columns of its rotation) and origin
+    /// in base axes, its first column, whether it translates (a floating joint: three linear
+    /// columns before the angular ones), and `-1` on the base's side of the tree.
+    Free { axes: [[ExprId; 3]; 3], origin: [ExprId; 3], column: usize, translates: bool, sign: f64 },
 }
 
 /// The chain's pose folded from the base out, and what each of its joint-dependent steps
@@ -52,7 +53,7 @@ impl Differential {
     /// joint-dependent step's axis and origin (rotations) or velocity (translations).
     ///
     /// `columns` maps each entry of `q` to its velocity (Jacobian column): the model's
-    /// `velocity_of_entry`, `None` for a floating joint's entries, whose six columns its
+    /// `velocity_of_entry`, `None` for a floating or spherical joint's entries, whose columns its
     /// [`Step::Free`] gives instead (derivatives by those entries, and by the rotation variables
     /// beyond `q`, are not velocities and are left out).
     pub fn fold(g: &mut ExprGraph, start: SymTransform, steps: &[Step], columns: &[Option<usize>]) -> Self {
@@ -88,14 +89,16 @@ impl Differential {
                 }
                 // The child's frame: after the rotation, or, inverted, before it (where the
                 // child's side of the tree is).
-                Step::Free { column, inverted: true, .. } => {
+                Step::Free { column, translates, inverted: true, .. } => {
                     let axes = columns_of(&t.r);
-                    contributions.push(Contribution::Free { axes, origin: t.p, column: *column, sign: -1.0 });
+                    let (column, translates) = (*column, *translates);
+                    contributions.push(Contribution::Free { axes, origin: t.p, column, translates, sign: -1.0 });
                 }
-                Step::Free { column, inverted: false, rotation } => {
+                Step::Free { column, translates, inverted: false, rotation } => {
                     let r = crate::symbolic::transform::mat_mul(g, &t.r, rotation);
                     let axes = columns_of(&r);
-                    contributions.push(Contribution::Free { axes, origin: t.p, column: *column, sign: 1.0 });
+                    let (column, translates) = (*column, *translates);
+                    contributions.push(Contribution::Free { axes, origin: t.p, column, translates, sign: 1.0 });
                 }
                 _ => {}
             }
@@ -104,7 +107,7 @@ impl Differential {
         Differential { pose: t, contributions }
     }
 
-    /// Whether a floating joint is among the steps (the inverted chain's `LOCAL` formulas do
+    /// Whether a floating or spherical joint is among the steps (the inverted chain's `LOCAL` formulas do
     /// not cover it).
     pub fn has_free(&self) -> bool {
         self.contributions.iter().any(|c| matches!(c, Contribution::Free { .. }))
@@ -138,16 +141,19 @@ impl Differential {
                         }
                     }
                 }
-                Contribution::Free { axes, origin, column, sign } => {
+                Contribution::Free { axes, origin, column, translates, sign } => {
                     let arm = sub3(g, p, *origin);
                     let k = g.constant(*sign);
+                    let angular = angular_column(*column, *translates);
                     for (a, axis) in axes.iter().enumerate() {
                         let linear = cross(g, *axis, arm);
                         for r in 0..3 {
                             let (v, l) = (g.mul(k, axis[r]), g.mul(k, linear[r]));
-                            columns[column + a][r] = g.add(columns[column + a][r], v);
-                            columns[column + 3 + a][r] = g.add(columns[column + 3 + a][r], l);
-                            columns[column + 3 + a][r + 3] = g.add(columns[column + 3 + a][r + 3], v);
+                            if *translates {
+                                columns[column + a][r] = g.add(columns[column + a][r], v);
+                            }
+                            columns[angular + a][r] = g.add(columns[angular + a][r], l);
+                            columns[angular + a][r + 3] = g.add(columns[angular + a][r + 3], v);
                         }
                     }
                 }
@@ -188,10 +194,10 @@ impl Differential {
                         }
                     }
                 }
-                Contribution::Free { axes, origin, column, sign } => {
+                Contribution::Free { axes, origin, column, translates, sign } => {
                     // The child's velocity and angular velocity, from its own axes to base axes.
                     let k = g.constant(*sign);
-                    let (v, w) = free_velocity(g, axes, dof + column, k);
+                    let (v, w) = free_velocity(g, axes, dof + column, *translates, k);
                     let arm = sub3(g, p, *origin);
                     let turn = cross(g, w, arm);
                     for r in 0..3 {
@@ -206,15 +212,24 @@ impl Differential {
     }
 }
 
-/// A floating joint's child velocity and angular velocity from its six rates (the graph's
-/// variables from `first_rate` on, each times `k`), from the child's axes to the fold's:
-/// `sum_a k qd_a axes[a]` for the three linear rates, then for the three angular ones.
+/// Where a floating or spherical joint's angular columns start: after a floating joint's three
+/// linear ones.
+fn angular_column(column: usize, translates: bool) -> usize {
+    if translates { column + 3 } else { column }
+}
+
+/// A floating or spherical joint's child velocity and angular velocity from its rates (the
+/// graph's variables from `first_rate` on, each times `k`), from the child's axes to the fold's:
+/// `sum_a k qd_a axes[a]` for the three linear rates of a joint that translates (zero for one
+/// that does not), then for the three angular ones.
 fn free_velocity(
     g: &mut ExprGraph,
     axes: &[[ExprId; 3]; 3],
     first_rate: usize,
+    translates: bool,
     k: ExprId,
 ) -> ([ExprId; 3], [ExprId; 3]) {
+    let zero = g.constant(0.0);
     let mut part = |offset: usize| -> [ExprId; 3] {
         let rates: [ExprId; 3] = std::array::from_fn(|a| {
             let qd = g.var(first_rate + offset + a);
@@ -229,8 +244,8 @@ fn free_velocity(
             sum
         })
     };
-    let v = part(0);
-    let w = part(3);
+    let v = if translates { part(0) } else { [zero; 3] };
+    let w = part(angular_column(0, translates));
     (v, w)
 }
 
@@ -243,9 +258,9 @@ fn columns_of(r: &[[ExprId; 3]; 3]) -> [[ExprId; 3]; 3] {
 /// folded over the *inverted* chain (tip to base): there each joint's axis `z'` and origin `o'`
 /// are already in the tip's axes, and a rotation whose (inverted) angle has rate `k'` gives the
 /// tip's origin the velocity `k' z' x o'` and the angular velocity `-k' z'` (a translation, minus
-/// its velocity; a floating joint's child axes `a` through `o'`, with sign `s` (`-1` where the
+/// its velocity; a floating or spherical joint's child axes `a` through `o'`, with sign `s` (`-1` where the
 /// inverted chain meets the joint's own direction), give its linear columns `-s a` and its angular
-/// ones `[s a x o'; -s a]`). These are `LOCAL(T) = [-v + w x p'; -w]` of the inverted chain's own
+/// ones `[s a x o'; -s a]`; a spherical joint's, the angular ones only). These are `LOCAL(T) = [-v + w x p'; -w]` of the inverted chain's own
 /// columns `[v; w]` and translation `p'`. That is one cross product per step, where rotating a
 /// base-axes column into the tip's axes takes two matrix products.
 impl Differential {
@@ -275,15 +290,18 @@ impl Differential {
                         }
                     }
                 }
-                Contribution::Free { axes, origin, column, sign } => {
+                Contribution::Free { axes, origin, column, translates, sign } => {
                     let (k, nk) = (g.constant(*sign), g.constant(-sign));
+                    let angular = angular_column(*column, *translates);
                     for (a, axis) in axes.iter().enumerate() {
                         let turn = cross(g, *axis, *origin);
                         for r in 0..3 {
                             let (v, l) = (g.mul(nk, axis[r]), g.mul(k, turn[r]));
-                            columns[column + a][r] = g.add(columns[column + a][r], v);
-                            columns[column + 3 + a][r] = g.add(columns[column + 3 + a][r], l);
-                            columns[column + 3 + a][r + 3] = g.add(columns[column + 3 + a][r + 3], v);
+                            if *translates {
+                                columns[column + a][r] = g.add(columns[column + a][r], v);
+                            }
+                            columns[angular + a][r] = g.add(columns[angular + a][r], l);
+                            columns[angular + a][r + 3] = g.add(columns[angular + a][r + 3], v);
                         }
                     }
                 }
@@ -321,10 +339,10 @@ impl Differential {
                         }
                     }
                 }
-                Contribution::Free { axes, origin, column, sign } => {
+                Contribution::Free { axes, origin, column, translates, sign } => {
                     // Linear rates along -s a, angular rates about -s a through o'.
                     let nk = g.constant(-sign);
-                    let (v, w) = free_velocity(g, axes, dof + column, nk);
+                    let (v, w) = free_velocity(g, axes, dof + column, *translates, nk);
                     // [s a x o'] rate = -(w x o') with w = -s a rate.
                     let turn = cross(g, *origin, w);
                     for r in 0..3 {

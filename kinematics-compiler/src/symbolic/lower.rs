@@ -7,24 +7,28 @@ use super::graph::ExprGraph;
 use super::step::Step;
 use super::transform::const_vec;
 
-/// The first graph variable of floating joint `joint`'s rotation (its nine entries, row-major):
-/// after the positions (`q`, `dof` of them) and the rates (`qd`, `velocity_dof`), nine per floating
-/// joint in tree order.
+/// The first graph variable of quaternion joint `joint`'s rotation (a floating or spherical
+/// joint's; its nine entries, row-major): after the positions (`q`, `dof` of them) and the rates
+/// (`qd`, `velocity_dof`), nine per quaternion joint in tree order
+/// ([`KinematicTree::quaternion_joints`]).
 pub fn rotation_variables(tree: &KinematicTree, joint: JointId) -> usize {
-    let before = tree.floating_joints().take_while(|&j| j != joint).count();
+    let before = tree.quaternion_joints().take_while(|&j| j != joint).count();
     tree.dof() + tree.velocity_dof() + 9 * before
 }
 
 /// The steps of `T_parent^child` for each joint of `path`, in order:
 /// `origin`, the motion (a rotation or a translation in the joint variable; for a planar joint the
 /// translation in the plane then the rotation about its normal; for a floating joint the
-/// translation by its position then its rotation, [`Step::Free`]), `after_motion`.
+/// translation by its position then its rotation, [`Step::Free`]; for a spherical joint that
+/// rotation alone), `after_motion`.
 pub fn lower_path(g: &mut ExprGraph, tree: &KinematicTree, path: &[JointId]) -> Vec<Step> {
     let mut steps = Vec::new();
     for &id in path {
         let joint = tree.joint(id);
         lower_fixed(g, &joint.origin, &mut steps);
-        if let (JointKind::Planar | JointKind::Floating, JointMotion::Dof(start)) = (joint.kind, joint.motion) {
+        if let (JointKind::Planar | JointKind::Floating | JointKind::Spherical, JointMotion::Dof(start)) =
+            (joint.kind, joint.motion)
+        {
             lower_several(g, tree, id, start, &mut steps);
             lower_fixed(g, &joint.after_motion, &mut steps);
             continue;
@@ -54,7 +58,7 @@ pub fn lower_path(g: &mut ExprGraph, tree: &KinematicTree, path: &[JointId]) -> 
     steps
 }
 
-/// The motion of a planar or floating joint whose entries of `q` start at `start`.
+/// The motion of a planar, floating or spherical joint whose entries of `q` start at `start`.
 fn lower_several(g: &mut ExprGraph, tree: &KinematicTree, id: JointId, start: usize, steps: &mut Vec<Step>) {
     let joint = tree.joint(id);
     if joint.kind == JointKind::Planar {
@@ -69,12 +73,15 @@ fn lower_several(g: &mut ExprGraph, tree: &KinematicTree, id: JointId, start: us
         steps.push(Step::Rotate { axis: joint.axis, angle: LinearAngle::joint(start + 2, 1.0, 0.0) });
         return;
     }
-    steps.push(Step::Translate([g.var(start), g.var(start + 1), g.var(start + 2)]));
+    let translates = joint.kind == JointKind::Floating;
+    if translates {
+        steps.push(Step::Translate([g.var(start), g.var(start + 1), g.var(start + 2)]));
+    }
     let first = rotation_variables(tree, id);
     let rotation = std::array::from_fn(|i| std::array::from_fn(|j| g.var(first + 3 * i + j)));
     #[allow(clippy::expect_used, reason = "an invariant of the model: an independent joint has velocities")]
-    let column = tree.velocity_start(id).expect("an independent floating joint has a first velocity");
-    steps.push(Step::Free { rotation, column, inverted: false });
+    let column = tree.velocity_start(id).expect("an independent quaternion joint has a first velocity");
+    steps.push(Step::Free { rotation, column, translates, inverted: false });
 }
 
 fn displacement(g: &mut ExprGraph, value: &LinearAngle) -> super::graph::ExprId {

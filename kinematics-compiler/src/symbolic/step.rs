@@ -99,15 +99,20 @@ pub enum Step {
     Permute(SignedPerm),
     /// A constant rotation that is not a quarter turn.
     ConstRotate([[f64; 3]; 3]),
-    /// A floating joint's rotation: the matrix of its quaternion, whose nine entries are
-    /// variables the generated code computes first (`quaternion_matrix`). The passes leave it
-    /// where it is; the velocities read the joint's six columns (from `column` on) off the frame
-    /// after it, or for an inverted step (the base's side of the tree) before it.
+    /// A floating or spherical joint's rotation: the matrix of its quaternion, whose nine entries
+    /// are variables the generated code computes first (`quaternion_matrix`). The passes leave it
+    /// where it is; the velocities read the joint's columns (from `column` on: a floating joint's
+    /// six, a spherical joint's three angular ones) off the frame after it, or for an inverted
+    /// step (the base's side of the tree) before it.
     Free {
         /// The rotation's entries, row-major (variables of the graph).
         rotation: [[ExprId; 3]; 3],
         /// The joint's first velocity (Jacobian column).
         column: usize,
+        /// Whether the joint also translates (a floating joint, whose three linear velocities
+        /// come before its angular ones; its translation is the [`Step::Translate`] before this
+        /// step); a spherical joint only turns.
+        translates: bool,
         /// Whether this is the inverse of the joint's rotation.
         inverted: bool,
     },
@@ -121,9 +126,10 @@ impl Step {
             Step::Translate(v) => Step::Translate(v.map(|x| g.neg(x))),
             Step::Permute(p) => Step::Permute(p.inverse()),
             Step::ConstRotate(m) => Step::ConstRotate(std::array::from_fn(|i| std::array::from_fn(|j| m[j][i]))),
-            Step::Free { rotation, column, inverted } => Step::Free {
+            Step::Free { rotation, column, translates, inverted } => Step::Free {
                 rotation: std::array::from_fn(|i| std::array::from_fn(|j| rotation[j][i])),
                 column: *column,
+                translates: *translates,
                 inverted: !inverted,
             },
         }

@@ -237,10 +237,11 @@ impl HoldTables {
     /// ```
     /// use kinematics_core::collision::{Held, HeldError, HoldTables, SphereObstacle};
     /// use kinematics_core::Pose;
-    /// let identity = Pose { rotation: [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]], translation: [0.0; 3] };
+    /// const IDENTITY: Pose<f64> =
+    ///     Pose { rotation: [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]], translation: [0.0; 3] };
     /// let tables = HoldTables {
     ///     robot: "two",
-    ///     frames: &[("base", None), ("arm", Some((0, identity))), ("hand", Some((1, identity)))],
+    ///     frames: &[("base", None), ("arm", Some((0, IDENTITY))), ("hand", Some((1, IDENTITY)))],
     ///     links: &[("arm", 1), ("hand", 2)],
     /// };
     /// let ball = [SphereObstacle { center: [0.0, 0.0, 0.1], radius: 0.05 }];
