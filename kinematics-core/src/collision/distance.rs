@@ -182,8 +182,8 @@ mod tests {
             let lanes = [0, 1, 2].map(|i| F64x4::from_fn(|k| if k == lane { p[i] } else { p[i] + 7.0 }));
             let (distance, gradient) = measure(o, lanes);
             assert_eq!(distance.lane(lane).to_bits(), measure(o, p).0.to_bits(), "{p:?} in lane {lane}");
-            for i in 0..3 {
-                assert_eq!(gradient[i].lane(lane).to_bits(), measure(o, p).1[i].to_bits(), "{p:?} in lane {lane}");
+            for (g, one) in gradient.iter().zip(measure(o, p).1) {
+                assert_eq!(g.lane(lane).to_bits(), one.to_bits(), "{p:?} in lane {lane}");
             }
         }
     }

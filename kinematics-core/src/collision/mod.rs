@@ -23,7 +23,7 @@ mod verdicts;
 #[cfg_attr(docsrs, doc(cfg(feature = "point-cloud")))]
 pub use cloud::PointCloud;
 pub use held::{Carried, Held, HeldError, HeldLink, HeldObject, HoldTables, Holding, World};
-pub use motion::{Motion, first_collisions, motion_wide, motions_wide};
+pub use motion::{Ends, Motion, first_collisions, motion_wide, motions_wide};
 pub use obstacles::{
     BoxObstacle, CapsuleObstacle, CylinderObstacle, Environment, ObstacleError, SphereObstacle, SphereQuery, Vec3,
 };

@@ -140,6 +140,13 @@ fn check_resolution(robot: &'static str, resolution: f64) -> Result<(), Kinemati
     }
 }
 
+/// A motion's two ends, `(q0, q1)`.
+pub type Ends<S, const N: usize> = ([S; N], [S; N]);
+
+/// A lane's motion in a search of several: its index in the batch, the motion, the configuration
+/// the lane is at.
+type LaneMotion<S, const N: usize> = (usize, Motion<S, N>, usize);
+
 /// The most lanes a search of several motions keeps: the widest lane type's.
 const MOST_LANES: usize = 32;
 
@@ -171,7 +178,7 @@ const MOST_LANES: usize = 32;
 /// ```
 #[inline(always)]
 pub fn first_collisions<L: Lanes, const N: usize>(
-    motions: &[([L::Scalar; N], [L::Scalar; N])],
+    motions: &[Ends<L::Scalar, N>],
     resolution: f64,
     check: impl Fn(&[L; N]) -> LaneMask,
     out: &mut [Option<f64>],
@@ -179,9 +186,9 @@ pub fn first_collisions<L: Lanes, const N: usize>(
     L::Scalar: Real + Into<f64>,
 {
     // Each lane's motion: its index in the batch, the motion, the configuration it is at.
-    let mut lanes: [Option<(usize, Motion<L::Scalar, N>, usize)>; MOST_LANES] = [None; MOST_LANES];
+    let mut lanes: [Option<LaneMotion<L::Scalar, N>>; MOST_LANES] = [None; MOST_LANES];
     let mut next = 0;
-    let take = |slot: &mut Option<(usize, Motion<L::Scalar, N>, usize)>, next: &mut usize| {
+    let take = |slot: &mut Option<LaneMotion<L::Scalar, N>>, next: &mut usize| {
         *slot = motions.get(*next).map(|(q0, q1)| (*next, Motion::at(*q0, *q1, resolution), 0));
         *next += 1;
     };
@@ -287,7 +294,7 @@ where
 #[inline(always)]
 pub fn motions_wide<L, W, const N: usize>(
     robot: &'static str,
-    motions: &[([L::Scalar; N], [L::Scalar; N])],
+    motions: &[Ends<L::Scalar, N>],
     resolution: f64,
     out: &mut [Option<f64>],
     narrow: impl Fn(&[L; N]) -> LaneMask,
@@ -334,7 +341,7 @@ where
 /// [`first_collisions`] as pulp's operation.
 #[cfg(feature = "dispatch")]
 struct Searches<'a, S, const N: usize, L, F> {
-    motions: &'a [([S; N], [S; N])],
+    motions: &'a [Ends<S, N>],
     resolution: f64,
     out: &'a mut [Option<f64>],
     check: &'a F,
