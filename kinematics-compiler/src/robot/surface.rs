@@ -660,7 +660,7 @@ impl Render {
     /// (verdicts into `out: &mut [bool]`), then the generic one on any lane type (a verdict mask);
     /// then `motion_collides` per scalar (the first colliding fraction of a straight motion) and
     /// its batch (several motions, one per lane), then
-    /// `hold`, then the distances ([`Render::distance_items`]). What `collides` and `motion_collides` are checked against is a `collision::World`
+    /// `hold`, then the distances (`clearance`, `proximity_cost` and their gradients). What `collides` and `motion_collides` are checked against is a `collision::World`
     /// of the robot: an `Environment`, or one with an object the robot holds.
     pub fn collision_items(&self) -> Vec<(CollisionFunction, Form, Signature)> {
         let (p, n) = (&self.p, self.dof());
