@@ -40,6 +40,23 @@ trait Sink<L: CheckLanes> {
     fn take(&mut self, d: L, a: &End<L>, b: Option<&End<L>>);
 }
 
+/// Every primitive obstacle of `env`, prepared and visited in turn.
+#[inline(always)]
+fn each_obstacle<L: CheckLanes, V: Visit<L>>(env: &Environment<'_>, visit: &mut V) {
+    for o in env.spheres {
+        o.prepare(visit);
+    }
+    for o in env.capsules {
+        o.prepare(visit);
+    }
+    for o in env.cylinders {
+        o.prepare(visit);
+    }
+    for o in env.boxes {
+        o.prepare(visit);
+    }
+}
+
 /// How many links' bounding spheres a scan places at a time.
 const CHUNK: usize = 16;
 
@@ -145,25 +162,10 @@ impl CollisionTables<'_> {
         if S::WANTS_UPPER {
             self.upper_bounds(poses, env, sink);
         }
-        let mut bounds = [([L::from_f64(0.0); 3], L::from_f64(0.0)); CHUNK];
         for first in (0..self.links.len()).step_by(CHUNK) {
-            let links = first..self.links.len().min(first + CHUNK);
-            for (slot, k) in bounds.iter_mut().zip(links.clone()) {
-                *slot = (poses[k].place(self.links[k].2), L::from_f64(self.links[k].3));
-            }
-            let mut visit = Measuring { tables: self, poses, first, bounds: &bounds[..links.len()], sink: &mut *sink };
-            for o in env.spheres {
-                o.prepare(&mut visit);
-            }
-            for o in env.capsules {
-                o.prepare(&mut visit);
-            }
-            for o in env.cylinders {
-                o.prepare(&mut visit);
-            }
-            for o in env.boxes {
-                o.prepare(&mut visit);
-            }
+            let (bounds, count) = self.bounds(poses, first);
+            let mut visit = Measuring { tables: self, poses, first, bounds: &bounds[..count], sink: &mut *sink };
+            each_obstacle(env, &mut visit);
             if let Some(query) = env.query {
                 visit.query(query);
             }
@@ -177,26 +179,22 @@ impl CollisionTables<'_> {
     /// (Without them the first obstacles measured, perhaps far, would prune nothing.)
     #[inline(always)]
     fn upper_bounds<L: CheckLanes, S: Sink<L>>(&self, poses: &[Pose<L>], env: &Environment<'_>, sink: &mut S) {
-        let mut bounds = [([L::from_f64(0.0); 3], L::from_f64(0.0)); CHUNK];
         for first in (0..self.links.len()).step_by(CHUNK) {
-            let links = first..self.links.len().min(first + CHUNK);
-            for (slot, k) in bounds.iter_mut().zip(links.clone()) {
-                *slot = (poses[k].place(self.links[k].2), L::from_f64(self.links[k].3));
-            }
-            let mut visit = Bounding { bounds: &bounds[..links.len()], sink: &mut *sink };
-            for o in env.spheres {
-                o.prepare(&mut visit);
-            }
-            for o in env.capsules {
-                o.prepare(&mut visit);
-            }
-            for o in env.cylinders {
-                o.prepare(&mut visit);
-            }
-            for o in env.boxes {
-                o.prepare(&mut visit);
-            }
+            let (bounds, count) = self.bounds(poses, first);
+            let mut visit = Bounding { bounds: &bounds[..count], sink: &mut *sink };
+            each_obstacle(env, &mut visit);
         }
+    }
+
+    /// The bounding spheres of up to [`CHUNK`] links from `first`, placed, and how many.
+    #[inline(always)]
+    fn bounds<L: CheckLanes>(&self, poses: &[Pose<L>], first: usize) -> ([([L; 3], L); CHUNK], usize) {
+        let mut bounds = [([L::from_f64(0.0); 3], L::from_f64(0.0)); CHUNK];
+        let links = first..self.links.len().min(first + CHUNK);
+        for (slot, k) in bounds.iter_mut().zip(links.clone()) {
+            *slot = (poses[k].place(self.links[k].2), L::from_f64(self.links[k].3));
+        }
+        (bounds, links.len())
     }
 
     /// The spheres of link `k`, `start..end` in the tables.

@@ -333,7 +333,7 @@ impl SphereQuery for PointCloud {
         let home = self.cell_of(&c);
         let inside = (0..3).all(|i| c[i] >= self.low[i] && c[i] <= self.high[i]);
         let first = if inside { usize::from(self.rings[self.cell_index(home)]) } else { 0 };
-        let widest = self.cells.iter().copied().max().unwrap_or(1);
+        let widest = self.cells[0].max(self.cells[1]).max(self.cells[2]);
         let (mut best, mut point) = (reach, None);
         for k in first..=widest {
             #[allow(clippy::cast_precision_loss)]

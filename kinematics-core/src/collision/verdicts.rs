@@ -194,19 +194,8 @@ pub trait CheckLanes: Real {
     fn from_lanes(f: impl FnMut(usize) -> f64) -> Self;
 }
 
-/// The square root of an `f64`: std's (one instruction, packed by LLVM in a loop over lanes) or,
-/// without `std`, libm's (the same correctly rounded value).
-#[inline(always)]
-fn root64(x: f64) -> f64 {
-    #[cfg(feature = "std")]
-    {
-        std::primitive::f64::sqrt(x)
-    }
-    #[cfg(not(feature = "std"))]
-    {
-        libm::sqrt(x)
-    }
-}
+// The square root of an `f64` (the IK's: the hardware's with `std`, libm's without).
+use crate::ik::square_root as root64;
 
 /// [`root64`] for `f32`.
 #[inline(always)]

@@ -34,6 +34,7 @@
 mod family;
 mod numeric;
 mod real;
+pub(crate) use real::square_root;
 mod solutions;
 pub mod subproblem;
 mod target;

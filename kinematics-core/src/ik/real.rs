@@ -43,7 +43,7 @@ pub trait IkReal: Real {
 /// for a loop over lanes; without `std`, libm's (the same correctly rounded value, one lane at a
 /// time, as libm writes the instruction in assembly).
 #[inline(always)]
-fn square_root(x: f64) -> f64 {
+pub(crate) fn square_root(x: f64) -> f64 {
     #[cfg(feature = "std")]
     {
         std::primitive::f64::sqrt(x)
