@@ -7,7 +7,9 @@
 //!   all-free configurations (no early exit), one at a time and in batches (lanes);
 //! - `self_collides`, one at a time and in batches;
 //! - `motion_collides` (`f64` and `f32`) on motions between consecutive free configurations at
-//!   0.05 rad, per motion (the fraction colliding and the configurations a motion printed);
+//!   0.05 rad, per motion (the fraction colliding and the configurations a motion printed), and
+//!   per checked configuration on the free motions beside `collides_batch` on the same
+//!   configurations;
 //! - `clearance`, `clearance_gradient` (one configuration, and in `F64x4` lanes) and
 //!   `proximity_cost_gradient` (a 5 cm margin) on the all-free configurations, beside the
 //!   reference's parry distances;
@@ -117,6 +119,30 @@ macro_rules! robot {
                 hand_centers(q).iter().zip(<$robot>::SPHERE_RADII).any(|(c, r)| shapes.intersects(*c, r))
                     || <$robot>::self_collides(q)
             };
+            // The free motions and every configuration they check: a motion per checked
+            // configuration beside `collides_batch` on the same configurations (the lanes spent
+            // on points of the segment against the lanes spent on a batch).
+            let free_motions: Vec<([f64; $n], [f64; $n])> = motions
+                .iter()
+                .copied()
+                .filter(|m| <$robot>::motion_collides(&m.0, &m.1, &env, RESOLUTION).unwrap().is_none())
+                .collect();
+            let free_motions32: Vec<([f32; $n], [f32; $n])> =
+                free_motions.iter().map(|m| (m.0.map(|x| x as f32), m.1.map(|x| x as f32))).collect();
+            let along: Vec<[f64; $n]> = free_motions
+                .iter()
+                .flat_map(|m| {
+                    let motion = kinematics::collision::Motion::new("bench", m.0, m.1, RESOLUTION).unwrap();
+                    (0..=motion.steps()).map(move |k| motion.configuration(k))
+                })
+                .collect();
+            let along32: Vec<[f32; $n]> = free_motions32
+                .iter()
+                .flat_map(|m| {
+                    let motion = kinematics::collision::Motion::new("bench", m.0, m.1, RESOLUTION).unwrap();
+                    (0..=motion.steps()).map(move |k| motion.configuration(k))
+                })
+                .collect();
             let Some(c) = criterion.as_deref_mut() else {
                 // Check mode: the centres against the reference's, every form's verdicts against
                 // the one-configuration function, the baselines against it (they agree but at
@@ -143,6 +169,14 @@ macro_rules! robot {
                     let clearance = <$robot>::clearance(q, &env);
                     assert_eq!(clearance <= 0.0, *v, "{} clearance {clearance} in the {scene_name} scene", $name);
                 }
+                // Every configuration of a free motion is free.
+                let mut along_verdicts = vec![true; along.len()];
+                <$robot>::collides_batch(&along, &env, &mut along_verdicts).unwrap();
+                assert!(
+                    !along.is_empty() && along_verdicts.iter().all(|v| !v),
+                    "{}: a free motion's configurations",
+                    $name
+                );
                 // A motion's answer is a configuration that collides, or its ends are free.
                 for m in motions.iter().take(8) {
                     match <$robot>::motion_collides(&m.0, &m.1, &env, RESOLUTION).unwrap() {
@@ -225,6 +259,31 @@ macro_rules! robot {
                     black_box(<$robot>::motion_collides_f32(&motions32[k].0, &motions32[k].1, &env, RESOLUTION))
                 })
             });
+            // Per checked configuration: every configuration of the free motions, by
+            // `motion_collides` and by `collides_batch`.
+            group.throughput(Throughput::Elements(along.len() as u64));
+            group.bench_function("motion_collides_free_motions", |b| {
+                b.iter(|| {
+                    for m in &free_motions {
+                        black_box(<$robot>::motion_collides(black_box(&m.0), &m.1, &env, RESOLUTION).unwrap());
+                    }
+                })
+            });
+            group.bench_function("motion_collides_f32_free_motions", |b| {
+                b.iter(|| {
+                    for m in &free_motions32 {
+                        black_box(<$robot>::motion_collides_f32(black_box(&m.0), &m.1, &env, RESOLUTION).unwrap());
+                    }
+                })
+            });
+            let mut along_verdicts = vec![false; along.len()];
+            group.bench_function("collides_batch_free_motions", |b| {
+                b.iter(|| <$robot>::collides_batch(black_box(&along), &env, &mut along_verdicts).unwrap())
+            });
+            group.bench_function("collides_batch_f32_free_motions", |b| {
+                b.iter(|| <$robot>::collides_batch_f32(black_box(&along32), &env, &mut along_verdicts).unwrap())
+            });
+            group.throughput(Throughput::Elements(1));
             // Distances on the free configurations (where no check ends early), beside
             // `collides_all_free`: the clearance alone, with its gradient, in lanes, the
             // proximity cost with its gradient, and the reference's parry distances.
@@ -249,13 +308,28 @@ macro_rules! robot {
             let lanes: Vec<[F64x4; $n]> =
                 free.chunks_exact(4).map(|pack| std::array::from_fn(|j| F64x4::from_fn(|i| pack[i][j]))).collect();
             group.throughput(Throughput::Elements(4 * lanes.len() as u64));
+            group.bench_function("clearance_all_free_f64x4", |b| {
+                b.iter(|| {
+                    kinematics::dispatch(
+                        #[inline(always)]
+                        || {
+                            for q in &lanes {
+                                black_box(<$robot>::clearance_generic(black_box(q), &env));
+                            }
+                        },
+                    )
+                })
+            });
             group.bench_function("clearance_gradient_all_free_f64x4", |b| {
                 b.iter(|| {
-                    kinematics::dispatch(|| {
-                        for q in &lanes {
-                            black_box(<$robot>::clearance_gradient_generic(black_box(q), &env));
-                        }
-                    })
+                    kinematics::dispatch(
+                        #[inline(always)]
+                        || {
+                            for q in &lanes {
+                                black_box(<$robot>::clearance_gradient_generic(black_box(q), &env));
+                            }
+                        },
+                    )
                 })
             });
             group.throughput(Throughput::Elements(1));

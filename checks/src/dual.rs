@@ -8,6 +8,7 @@
 
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
+use kinematics::collision::CheckLanes;
 use kinematics::{Pose, Real};
 
 /// A number with its derivatives along `N` directions.
@@ -85,6 +86,55 @@ impl<const N: usize> Real for Dual<N> {
 impl<const N: usize> kinematics::StdTrig for Dual<N> {
     fn sin_cos_std(self) -> (Self, Self) {
         self.sin_cos()
+    }
+}
+
+/// One lane, as `f64` is: the collision scans on duals carry a distance's derivatives along
+/// with its value, a witness to the gradients the scans take through the generated Jacobians.
+/// Comparisons and selections go by the value, so a dual run takes the branches the `f64` run
+/// takes (the same nearest pair). What the scans ask one lane at a time in `f64` (a point
+/// cloud's nearest point, through [`CheckLanes::lane_f64`] and [`CheckLanes::from_lanes`]) comes
+/// back a constant: its derivatives are lost.
+impl<const N: usize> CheckLanes for Dual<N> {
+    type Flags = bool;
+    const WIDTH: usize = 1;
+
+    fn max(self, other: Self) -> Self {
+        if self.value > other.value { self } else { other }
+    }
+
+    fn min(self, other: Self) -> Self {
+        if self.value < other.value { self } else { other }
+    }
+
+    fn abs(self) -> Self {
+        if self.value < 0.0 { -self } else { self }
+    }
+
+    fn not_above(self, limit: Self) -> bool {
+        self.value.partial_cmp(&limit.value) != Some(std::cmp::Ordering::Greater)
+    }
+
+    fn non_finite(self) -> bool {
+        !self.value.is_finite()
+    }
+
+    fn lane_f64(self, _: usize) -> f64 {
+        self.value
+    }
+
+    fn sqrt(self) -> Self {
+        // `(sqrt a)' = a' / (2 sqrt a)`.
+        let value = self.value.sqrt();
+        Dual { value, grad: self.grad.map(|g| g / (2.0 * value)) }
+    }
+
+    fn select(flags: bool, then: Self, otherwise: Self) -> Self {
+        if flags { then } else { otherwise }
+    }
+
+    fn from_lanes(mut f: impl FnMut(usize) -> f64) -> Self {
+        Dual::constant(f(0))
     }
 }
 

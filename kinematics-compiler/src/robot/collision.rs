@@ -332,7 +332,8 @@ pub(super) fn checks(cx: &Context<'_>, out: &mut Functions) {
                     "{what}, on any lane type (`F64x4`, `F64x8`, `F32x8`, `F32x16`; `f64` and `f32` are one \
                      lane): bit `i` of the mask is configuration `i`'s verdict, each lane's check ending when \
                      every lane collides. {never_free} Not dispatched: wrap a loop of calls in \
-                     `kinematics::dispatch` to run it with the widest instruction set the CPU has."
+                     `kinematics::dispatch(#[inline(always)] || ...)` to run it with the widest instruction set the \
+                     CPU has (the closure marked so, to be compiled inside the dispatched body)."
                 );
                 quote! {
                     #[doc = #doc]
@@ -503,7 +504,8 @@ fn distance(
             let doc = format!(
                 "{what}, on any lane type (`F64x4`, `F64x8`, `F32x8`, `F32x16`; `f64` and `f32` are one lane), each \
                  lane its own configuration's. {never_free} Not dispatched: wrap a loop of calls in \
-                 `kinematics::dispatch` to run it with the widest instruction set the CPU has."
+                 `kinematics::dispatch(#[inline(always)] || ...)` to run it with the widest instruction set the CPU \
+                 has (the closure marked so, to be compiled inside the dispatched body)."
             );
             let body = checked(value);
             quote! {

@@ -12,7 +12,7 @@
 //! `v + w x (c - t)`, so its distance along the unit direction `n` changes by `n . v + (c - t) x n
 //! . w`; each link's six coefficients are summed first and its Jacobian taken once.
 
-use super::distance::{cross, length, unit};
+use super::distance::{cross, each3, length, unit};
 use super::obstacles::{Environment, Obstacle, Prepared, SphereQuery, Visit, lane_sub};
 use super::tables::{CollisionTables, fence};
 use super::verdicts::{CheckLanes, Flags, non_finite};
@@ -104,11 +104,13 @@ impl CollisionTables<'_> {
             }
             let a = moment(&least.a_center, &least.a_normal, pose);
             let b = moment(&least.b_center, &least.b_normal, pose);
-            let coefficients = [0, 1, 2, 3, 4, 5].map(|r| L::select(on_a, a[r], zero) + L::select(on_b, b[r], zero));
+            let pick = |r: usize| L::select(on_a, a[r], zero) + L::select(on_b, b[r], zero);
+            let coefficients = [pick(0), pick(1), pick(2), pick(3), pick(4), pick(5)];
             contract(&coefficients, jacobian, &mut gradient);
         }
         let bad = non_finite(q);
-        (nan_where(bad, least.best), gradient.map(|g| nan_where(bad, g)))
+        nan_each(bad, &mut gradient);
+        (nan_where(bad, least.best), gradient)
     }
 
     /// The proximity cost of the robot at `q`: over every pair the clearance measures whose
@@ -151,7 +153,8 @@ impl CollisionTables<'_> {
             }
         }
         let bad = non_finite(q) | bad_margin::<L>(margin);
-        (nan_where(bad, cost.sum), gradient.map(|g| nan_where(bad, g)))
+        nan_each(bad, &mut gradient);
+        (nan_where(bad, cost.sum), gradient)
     }
 
     /// Every pair `sink` asks for: each link's spheres against each obstacle, then the self
@@ -236,7 +239,7 @@ impl CollisionTables<'_> {
                             let n = unit(&d, l);
                             let distance = l - L::from_f64(self.radii[s]) - L::from_f64(self.radii[t]);
                             let a = End { link: i, center: cs, normal: n };
-                            let b = End { link: j, center: ct, normal: n.map(|x| -x) };
+                            let b = End { link: j, center: ct, normal: each3(|i| -n[i]) };
                             sink.take(distance, &a, Some(&b));
                         }
                     }
@@ -319,7 +322,7 @@ impl<L: CheckLanes, S: Sink<L>> Measuring<'_, '_, '_, L, S> {
                     }
                 }
                 let d = L::from_lanes(|i| found[i].map_or(f64::INFINITY, |(d, _)| d - r));
-                let normal = [0, 1, 2].map(|a| L::from_lanes(|i| found[i].map_or(0.0, |(_, n)| n[a])));
+                let normal = each3(|a| L::from_lanes(|i| found[i].map_or(0.0, |(_, n)| n[a])));
                 self.sink.take(d, &End { link, center, normal }, None);
             }
         }
@@ -381,7 +384,7 @@ impl<L: CheckLanes, const WITNESS: bool> Sink<L> for Least<L, WITNESS> {
         }
         self.best = L::select(nearer, d, self.best);
         if WITNESS {
-            let pick = |new: &[L; 3], old: &[L; 3]| [0, 1, 2].map(|i| L::select(nearer, new[i], old[i]));
+            let pick = |new: &[L; 3], old: &[L; 3]| each3(|i| L::select(nearer, new[i], old[i]));
             self.a_link = L::select(nearer, L::from_f64(index_f64(a.link)), self.a_link);
             self.a_center = pick(&a.center, &self.a_center);
             self.a_normal = pick(&a.normal, &self.a_normal);
@@ -491,6 +494,15 @@ fn index_f64(k: usize) -> f64 {
 #[inline(always)]
 fn nan_where<L: CheckLanes>(bad: L::Flags, x: L) -> L {
     L::select(bad, L::from_f64(f64::NAN), x)
+}
+
+/// Every entry of `values` NaN in the lanes of `bad` (a loop, not an array's `map`: see
+/// [`each3`]).
+#[inline(always)]
+fn nan_each<L: CheckLanes, const V: usize>(bad: L::Flags, values: &mut [L; V]) {
+    for x in values.iter_mut() {
+        *x = nan_where(bad, *x);
+    }
 }
 
 /// Every lane when `margin` is negative or not finite.
