@@ -13,7 +13,7 @@
 //! . w`; each link's six coefficients are summed first and its Jacobian taken once.
 
 use super::distance::{cross, each3, length, unit};
-use super::obstacles::{Environment, Obstacle, Prepared, SphereQuery, Visit, lane_sub};
+use super::obstacles::{Environment, Obstacle, Prepared, SphereQuery, Visit, lane_dot, lane_sub};
 use super::tables::{CollisionTables, fence};
 use super::verdicts::{CheckLanes, Flags, non_finite};
 use crate::pose::Pose;
@@ -162,9 +162,6 @@ impl CollisionTables<'_> {
     #[inline(always)]
     fn scan<L: CheckLanes, S: Sink<L>>(&self, poses: &[Pose<L>], env: &Environment<'_>, sink: &mut S) {
         let poses = fence(poses);
-        if S::WANTS_UPPER {
-            self.upper_bounds(poses, env, sink);
-        }
         for first in (0..self.links.len()).step_by(CHUNK) {
             let (bounds, count) = self.bounds(poses, first);
             let mut visit = Measuring { tables: self, poses, first, bounds: &bounds[..count], sink: &mut *sink };
@@ -174,19 +171,6 @@ impl CollisionTables<'_> {
             }
         }
         self.scan_pairs(poses, sink);
-    }
-
-    /// Upper bounds on the nearest obstacle pair, for the sink's limit before any pair is
-    /// measured: a link whose bounding sphere is at signed distance `d` from an obstacle has every
-    /// sphere within `d + R` of it (`R` the bound's radius), so the nearest pair is no farther.
-    /// (Without them the first obstacles measured, perhaps far, would prune nothing.)
-    #[inline(always)]
-    fn upper_bounds<L: CheckLanes, S: Sink<L>>(&self, poses: &[Pose<L>], env: &Environment<'_>, sink: &mut S) {
-        for first in (0..self.links.len()).step_by(CHUNK) {
-            let (bounds, count) = self.bounds(poses, first);
-            let mut visit = Bounding { bounds: &bounds[..count], sink: &mut *sink };
-            each_obstacle(env, &mut visit);
-        }
     }
 
     /// The bounding spheres of up to [`CHUNK`] links from `first`, placed, and how many.
@@ -210,34 +194,36 @@ impl CollisionTables<'_> {
     /// The self pairs: each pair of links by their bounds, their groups' bounds, their spheres.
     #[inline(always)]
     fn scan_pairs<L: CheckLanes, S: Sink<L>>(&self, poses: &[Pose<L>], sink: &mut S) {
-        let apart =
-            |a: &[L; 3], ra: f64, b: &[L; 3], rb: f64| length(&lane_sub(a, b)) - L::from_f64(ra) - L::from_f64(rb);
         for &(i, j) in self.pairs {
             let ((ga, ea, ba, ra), (gb, eb, bb, rb)) = (self.links[i], self.links[j]);
             let (bound_i, bound_j) = (poses[i].place(ba), poses[j].place(bb));
-            if !apart(&bound_i, ra, &bound_j, rb).not_above(sink.limit()).any() {
+            if !may_reach(&bound_i, &bound_j, ra + rb, sink.limit()).any() {
                 continue;
             }
             for a in ga..ea {
                 let (a0, a1, ca, rga) = self.groups[a];
                 let ca = poses[i].place(ca);
-                if !apart(&ca, rga, &bound_j, rb).not_above(sink.limit()).any() {
+                if !may_reach(&ca, &bound_j, rga + rb, sink.limit()).any() {
                     continue;
                 }
                 for b in gb..eb {
                     let (b0, b1, cb, rgb) = self.groups[b];
                     let cb = poses[j].place(cb);
-                    if !apart(&ca, rga, &cb, rgb).not_above(sink.limit()).any() {
+                    if !may_reach(&ca, &cb, rga + rgb, sink.limit()).any() {
                         continue;
                     }
                     for s in a0..a1 {
                         let cs = poses[i].place(self.centers[s]);
                         for t in b0..b1 {
                             let ct = poses[j].place(self.centers[t]);
+                            let radii = self.radii[s] + self.radii[t];
+                            if !may_reach(&cs, &ct, radii, sink.limit()).any() {
+                                continue;
+                            }
                             let d = lane_sub(&cs, &ct);
                             let l = length(&d);
                             let n = unit(&d, l);
-                            let distance = l - L::from_f64(self.radii[s]) - L::from_f64(self.radii[t]);
+                            let distance = l - L::from_f64(radii);
                             let a = End { link: i, center: cs, normal: n };
                             let b = End { link: j, center: ct, normal: each3(|i| -n[i]) };
                             sink.take(distance, &a, Some(&b));
@@ -247,6 +233,24 @@ impl CollisionTables<'_> {
             }
         }
     }
+}
+
+/// How far a sphere may be from something and still count against `limit` (m): `limit + radius`,
+/// or zero where that is negative (a signed distance below a negative reach needs the centre
+/// inside, which a reach of zero still lets through).
+#[inline(always)]
+fn reach<L: CheckLanes>(limit: L, radius: L) -> L {
+    (limit + radius).max(L::from_f64(0.0))
+}
+
+/// The lanes where spheres at `a` and `b` with radii summing to `radii` may be nearer than
+/// `limit`: `|a - b| - radii <= limit`, tested on squares (no root; the exact distance follows
+/// where it passes). NaN lanes pass.
+#[inline(always)]
+fn may_reach<L: CheckLanes>(a: &[L; 3], b: &[L; 3], radii: f64, limit: L) -> L::Flags {
+    let reach = reach(limit, L::from_f64(radii));
+    let d = lane_sub(a, b);
+    lane_dot(&d, &d).not_above(reach * reach)
 }
 
 /// A few consecutive links (from `first`), their bounding spheres placed, measured against one
@@ -262,31 +266,47 @@ struct Measuring<'a, 'c, 't, L: CheckLanes, S> {
 impl<L: CheckLanes, S: Sink<L>> Visit<L> for Measuring<'_, '_, '_, L, S> {
     #[inline(always)]
     fn visit<P: Prepared<L>>(&mut self, prepared: &P) {
-        for (k, (bound, radius)) in self.bounds.iter().enumerate() {
-            let link = self.first + k;
-            if !(prepared.distance(bound).0 - *radius).not_above(self.sink.limit()).any() {
+        // The bounds first: each near enough to pass the limit gives an upper bound on the
+        // nearest pair (a link whose bound is at `d` has every sphere within `d + R`), which
+        // lowers the limit before any sphere of this obstacle is measured (else the first
+        // obstacles, perhaps far, prune nothing). Each distance is asked only where the
+        // obstacle's overlap test (no root) says it may pass; a far bound stays at infinity.
+        let mut gaps = [L::from_f64(f64::INFINITY); CHUNK];
+        for (gap, (bound, radius)) in gaps.iter_mut().zip(self.bounds) {
+            if !prepared.hits(bound, reach(self.sink.limit(), *radius)).any() {
                 continue;
             }
-            for s in self.tables.spheres_of(link) {
-                let center = self.poses[link].place(self.tables.centers[s]);
-                let (d, normal) = prepared.distance(&center);
-                self.sink.take(d - L::from_f64(self.tables.radii[s]), &End { link, center, normal }, None);
+            let d = prepared.distance(bound).0;
+            *gap = d - *radius;
+            if S::WANTS_UPPER {
+                self.sink.upper(d + *radius);
             }
         }
-    }
-}
-
-/// Links' bounding spheres against one prepared obstacle after another, for upper bounds.
-struct Bounding<'a, 'c, L: CheckLanes, S> {
-    bounds: &'c [([L; 3], L)],
-    sink: &'a mut S,
-}
-
-impl<L: CheckLanes, S: Sink<L>> Visit<L> for Bounding<'_, '_, L, S> {
-    #[inline(always)]
-    fn visit<P: Prepared<L>>(&mut self, prepared: &P) {
-        for (bound, radius) in self.bounds {
-            self.sink.upper(prepared.distance(bound).0 + *radius);
+        for (k, gap) in gaps.iter().enumerate().take(self.bounds.len()) {
+            let link = self.first + k;
+            if !gap.not_above(self.sink.limit()).any() {
+                continue;
+            }
+            // Then the link's groups (where it has more than one) and their spheres, each by the
+            // overlap test before its distance.
+            let (g0, g1, ..) = self.tables.links[link];
+            for g in g0..g1 {
+                let (s0, s1, c, r) = self.tables.groups[g];
+                if g1 - g0 > 1
+                    && !prepared.hits(&self.poses[link].place(c), reach(self.sink.limit(), L::from_f64(r))).any()
+                {
+                    continue;
+                }
+                for s in s0..s1 {
+                    let center = self.poses[link].place(self.tables.centers[s]);
+                    let r = L::from_f64(self.tables.radii[s]);
+                    if !prepared.hits(&center, reach(self.sink.limit(), r)).any() {
+                        continue;
+                    }
+                    let (d, normal) = prepared.distance(&center);
+                    self.sink.take(d - r, &End { link, center, normal }, None);
+                }
+            }
         }
     }
 }
