@@ -4,9 +4,11 @@
 //! margin), each with its gradient with respect to the joints, on any [`CheckLanes`] type.
 //!
 //! Both scan the same pairs as `collides`: each link's bounding sphere against each obstacle (a
-//! sphere's signed distance is never below its bound's, distances being 1-Lipschitz), its spheres
-//! only where the bound is nearer than the scan's limit (the nearest pair found so far, or the
-//! margin); each checked pair of links by their bounds, then their groups', then their spheres.
+//! sphere's signed distance is never below its bound's, distances being 1-Lipschitz), then its
+//! groups and spheres only where the bound is nearer than the scan's limit (the nearest pair
+//! found so far, or the margin); each checked pair of links by their bounds, then their groups',
+//! then their spheres. Every distance is taken only where an overlap test on squared lengths (no
+//! root) says it may pass the limit, and a bound's distance `d` lowers the limit to `d + R`.
 //! A gradient is the pair's ends' directions carried through the links' geometric Jacobians
 //! (`LOCAL_WORLD_ALIGNED`, at each link's origin): a sphere at `c` on a link at `t` moves by
 //! `v + w x (c - t)`, so its distance along the unit direction `n` changes by `n . v + (c - t) x n
