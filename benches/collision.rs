@@ -56,6 +56,17 @@ const RESOLUTION: f64 = 0.05;
 /// The proximity cost's margin (m): pairs nearer than this cost.
 const MARGIN: f64 = 0.05;
 
+/// Every configuration the motions check at [`RESOLUTION`], motion after motion.
+fn along<S: kinematics::Real + Into<f64>, const N: usize>(motions: &[([S; N], [S; N])]) -> Vec<[S; N]> {
+    motions
+        .iter()
+        .flat_map(|m| {
+            let motion = kinematics::collision::Motion::new("bench", m.0, m.1, RESOLUTION).unwrap();
+            (0..=motion.steps()).map(move |k| motion.configuration(k))
+        })
+        .collect()
+}
+
 fn scene(name: &str) -> SceneObstacles {
     kinematics::load_scene(format!("{}/scenes/{name}.toml", env!("CARGO_MANIFEST_DIR"))).unwrap()
 }
@@ -129,20 +140,7 @@ macro_rules! robot {
                 .collect();
             let free_motions32: Vec<([f32; $n], [f32; $n])> =
                 free_motions.iter().map(|m| (m.0.map(|x| x as f32), m.1.map(|x| x as f32))).collect();
-            let along: Vec<[f64; $n]> = free_motions
-                .iter()
-                .flat_map(|m| {
-                    let motion = kinematics::collision::Motion::new("bench", m.0, m.1, RESOLUTION).unwrap();
-                    (0..=motion.steps()).map(move |k| motion.configuration(k))
-                })
-                .collect();
-            let along32: Vec<[f32; $n]> = free_motions32
-                .iter()
-                .flat_map(|m| {
-                    let motion = kinematics::collision::Motion::new("bench", m.0, m.1, RESOLUTION).unwrap();
-                    (0..=motion.steps()).map(move |k| motion.configuration(k))
-                })
-                .collect();
+            let (along, along32) = (along(&free_motions), along(&free_motions32));
             let Some(c) = criterion.as_deref_mut() else {
                 // Check mode: the centres against the reference's, every form's verdicts against
                 // the one-configuration function, the baselines against it (they agree but at
