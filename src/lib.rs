@@ -1,5 +1,12 @@
-//! Forward kinematics for robots, from a URDF file, an MJCF file or a Denavit-Hartenberg table, compiled to
-//! closed-form Rust.
+//! Robot kinematics compiled to closed-form Rust at build time, from a URDF file, an MJCF file or a
+//! Denavit-Hartenberg table: the poses of the links (forward kinematics), their Jacobians and
+//! velocities, inverse kinematics (closed forms for the arm families it recognises, and a numeric
+//! solver), and collision checking on spheres (against obstacles, point clouds and the robot
+//! itself, along straight motions, holding an object, with the clearance and its gradient). Each
+//! comes for one configuration, in SIMD lanes and in batches, and is checked against a runtime
+//! reference that shares none of the compiler's transform math. The guide (module `guide`, with
+//! the `std` feature) has a page per topic: `guide::velocities`, `guide::inverse_kinematics`,
+//! `guide::collision` and more.
 //!
 //! Most users meet it as a derive:
 //!
