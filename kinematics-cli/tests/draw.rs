@@ -487,3 +487,22 @@ fn draw_shows_a_path_and_refuses_bad_path_files_naming_the_line() {
     assert_eq!(run(&["draw", file, "--path", plan, "--degrees"]).status.code(), Some(2));
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn links_whose_origins_coincide_share_one_label() {
+    // The UR5's `ee_link` and `tool0` sit at one point, as do `base_link` and `base`: each pair
+    // shares one label in every view, and neither has a label of its own. (In the view from
+    // above, `shoulder_link` falls on the base's point too and joins its label.)
+    let file = root().join("robots/ur5.urdf");
+    let svg = ok(&["draw", file.to_str().unwrap(), "--q", "0.3,-1.2,1.0,0.4,-0.7,2.0"]);
+    let views = svg.matches("class=\"view-label\"").count();
+    assert_eq!(views, 3);
+    assert_eq!(svg.matches(">ee_link, tool0</text>").count(), views, "{svg}");
+    assert_eq!(svg.matches(">base_link, base</text>").count(), 2, "{svg}");
+    assert_eq!(svg.matches(">base_link, shoulder_link, base</text>").count(), 1, "{svg}");
+    for alone in ["tool0", "ee_link", "base", "base_link"] {
+        assert!(!svg.contains(&format!(">{alone}</text>")), "{alone} labelled alone");
+    }
+    // A link elsewhere keeps its own label.
+    assert_eq!(svg.matches(">wrist_1_link</text>").count(), views);
+}

@@ -368,15 +368,19 @@ fn view_group(scene: &Scene, placed: &Placed, left: f64) -> String {
         );
     }
     if scene.links.len() <= LABEL_LIMIT {
+        // Links whose origins fall on one point of this view share one label ("ee_link, tool0",
+        // in the order they come), rather than labels drawn over each other.
+        let mut spots: Vec<((String, String), Vec<&str>)> = Vec::new();
         for link in &scene.links {
             let (x, y) = placed.screen(link.origin);
-            let _ = writeln!(
-                out,
-                "<text class=\"label\" x=\"{}\" y=\"{}\">{}</text>",
-                px(x + 5.0),
-                px(y - 5.0),
-                label(&link.name)
-            );
+            let at = (px(x + 5.0), px(y - 5.0));
+            match spots.iter_mut().find(|(spot, _)| *spot == at) {
+                Some((_, names)) => names.push(&link.name),
+                None => spots.push((at, vec![&link.name])),
+            }
+        }
+        for ((x, y), names) in spots {
+            let _ = writeln!(out, "<text class=\"label\" x=\"{x}\" y=\"{y}\">{}</text>", label(&names.join(", ")));
         }
     }
     out.push_str("</g>\n");
