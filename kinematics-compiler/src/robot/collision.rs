@@ -335,28 +335,25 @@ pub(super) fn checks(cx: &Context<'_>, out: &mut Functions) {
                      `kinematics::dispatch(#[inline(always)] || ...)` to run it with the widest instruction set the \
                      CPU has (the closure marked so, to be compiled inside the dispatched body)."
                 );
-                let inline = always_inline_in_release();
-                quote! {
-                    #[doc = #doc]
-                    #inline
-                    #sig { #check }
-                }
+                generic_item(&doc, &sig, &check)
             }
         };
         out.typed.push(item);
     }
 }
 
-/// The inlining of a check's or a distance's generic form: always in an optimised build, where
-/// it must compile inside the caller's `dispatch` closure to run with the CPU's widest
-/// instructions (as `#[inline]` alone, LLVM left `clearance_gradient_generic` a call, run in
-/// SSE2, measured at half the speed); a hint in a debug build, where an always-inlined body
-/// keeps its own stack slots in the caller's frame (a test calling eight of them in one function
-/// overflowed its thread's stack).
-fn always_inline_in_release() -> TokenStream {
+/// A check's or a distance's generic form: `sig` with `body`, always inlined in an optimised
+/// build, where it must compile inside the caller's `dispatch` closure to run with the CPU's
+/// widest instructions (as `#[inline]` alone, LLVM left `clearance_gradient_generic` a call, run
+/// in SSE2, measured at half the speed); only hinted in a debug build, where an always-inlined
+/// body keeps its own stack slots in the caller's frame (a test calling eight of them in one
+/// function overflowed its thread's stack).
+fn generic_item(doc: &str, sig: &TokenStream, body: &TokenStream) -> TokenStream {
     quote! {
+        #[doc = #doc]
         #[cfg_attr(debug_assertions, inline)]
         #[cfg_attr(not(debug_assertions), inline(always))]
+        #sig { #body }
     }
 }
 
@@ -521,13 +518,7 @@ fn distance(
                  `kinematics::dispatch(#[inline(always)] || ...)` to run it with the widest instruction set the CPU \
                  has (the closure marked so, to be compiled inside the dispatched body)."
             );
-            let body = checked(value);
-            let inline = always_inline_in_release();
-            quote! {
-                #[doc = #doc]
-                #inline
-                #sig { #body }
-            }
+            generic_item(&doc, sig, &checked(value))
         }
         _ => unreachable!("invariant: the surface gives the distances typed and generic forms only"),
     }

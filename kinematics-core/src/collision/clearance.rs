@@ -240,7 +240,8 @@ impl CollisionTables<'_> {
 
 /// How far a sphere may be from something and still count against `limit` (m): `limit + radius`,
 /// or zero where that is negative (a signed distance below a negative reach needs the centre
-/// inside, which a reach of zero still lets through).
+/// inside, which a reach of zero still lets through). A NaN limit (only in a lane whose `q` is not
+/// finite, whose answer is made NaN at the end) gives zero too.
 #[inline(always)]
 fn reach<L: CheckLanes>(limit: L, radius: L) -> L {
     (limit + radius).max(L::from_f64(0.0))
