@@ -33,7 +33,7 @@ use std::time::Duration;
 
 use criterion::Throughput;
 use kinematics::collision::{BoxObstacle, Environment, PointCloud, SphereObstacle};
-use kinematics::model::collision::{Meshes, link_spheres, sphere_pairs};
+use kinematics::model::collision::{Meshes, fixed_apart_pairs, link_spheres, sphere_pairs};
 use kinematics::{Configurations, F64x4, Kinematics, Lanes, SceneObstacles};
 
 #[derive(Kinematics)]
@@ -85,6 +85,7 @@ macro_rules! robot {
             kinematics::model::srdf::parse_srdf(&text).unwrap().disabled_pairs(reference.tree()).unwrap()
         });
         let reference_pairs = sphere_pairs(reference.tree(), &spheres, disabled.as_ref()).pairs;
+        let fixed = fixed_apart_pairs(reference.tree(), &spheres, &reference_pairs);
         // Each sphere's link's index in `link_poses` (none for the base, which it leaves out) and
         // its centre in that link's frame.
         let local: Vec<(Option<usize>, [f64; 3])> = spheres
@@ -336,7 +337,8 @@ macro_rules! robot {
                     k = (k + 1) % free.len();
                     let q = black_box(&free[k]);
                     let d = reference.obstacle_distance(q, &spheres, &shapes).unwrap();
-                    black_box(d.min(reference.self_distance(q, &spheres, &reference_pairs).unwrap()))
+                    let measured = reference.measured_self_distances(q, &spheres, &reference_pairs, &fixed).unwrap();
+                    black_box(measured.into_iter().fold(d, f64::min))
                 })
             });
             group.finish();

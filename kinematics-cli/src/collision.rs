@@ -7,7 +7,7 @@
 use std::collections::BTreeSet;
 
 use kinematics::collision::CollisionTables;
-use kinematics::model::collision::{LinkSphere, Meshes, link_spheres, sphere_pairs};
+use kinematics::model::collision::{LinkSphere, Meshes, fixed_apart_pairs, link_spheres, sphere_pairs};
 use kinematics::model::{KinematicTree, LinkId};
 use kinematics::{Pose, ReferenceFk, SceneObstacles};
 use kinematics_compiler::collision_layout::CollisionLayout;
@@ -72,8 +72,15 @@ pub fn check(tree: &KinematicTree, file: &str, samples: usize, setup: &Setup<'_>
     let plan = sphere_pairs(tree, &spheres, setup.srdf.as_ref().map(|(_, d)| d));
     let index = |l: LinkId| layout.links.iter().position(|&k| k == l);
     let pairs: Vec<(usize, usize)> = plan.pairs.iter().filter_map(|&(a, b)| Some((index(a)?, index(b)?))).collect();
-    let tables =
-        CollisionTables { links: &links, groups: &layout.groups, centers: &centers, radii: &radii, pairs: &pairs };
+    let fixed = layout.fixed_in_order(&fixed_apart_pairs(tree, &spheres, &plan.pairs));
+    let tables = CollisionTables {
+        links: &links,
+        groups: &layout.groups,
+        centers: &centers,
+        radii: &radii,
+        pairs: &pairs,
+        fixed: &fixed,
+    };
 
     let request = Request {
         base: Some(tree.link(tree.root()).name.clone()),

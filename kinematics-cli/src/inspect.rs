@@ -51,7 +51,7 @@ pub struct CollisionView<'a> {
 /// pairs a self-collision check tests; fixed joints whose mimic had nothing to do. A cover that
 /// is not a positive length is the error returned.
 pub fn collision(tree: &KinematicTree, view: &CollisionView<'_>) -> Result<String, String> {
-    use kinematics::model::collision::{LinkSphere, Meshes, link_spheres, sphere_pairs};
+    use kinematics::model::collision::{LinkSphere, Meshes, fixed_apart_pairs, link_spheres, sphere_pairs};
     if !(view.cover.is_finite() && view.cover > 0.0) {
         return Err(format!("{} is no finite positive length in metres", view.cover));
     }
@@ -126,6 +126,19 @@ pub fn collision(tree: &KinematicTree, view: &CollisionView<'_>) -> Result<Strin
         "self-collision pairs: {} (links with spheres on different rigid bodies, {rule}): {}\n",
         pairs.pairs.len(),
         names.join(", ")
+    );
+    let fixed = fixed_apart_pairs(tree, &spheres, &pairs.pairs);
+    let sphere = |k: usize| {
+        let link = &tree.link(spheres[k].link).name;
+        let index = spheres[..k].iter().filter(|s| s.link == spheres[k].link).count();
+        format!("{link} #{index}")
+    };
+    let held: Vec<String> =
+        fixed.iter().map(|f| format!("{}-{} ({} m)", sphere(f.a), sphere(f.b), short(f.distance))).collect();
+    out += &format!(
+        "sphere pairs held apart for good (no joint moves them; the distances leave them out): {}{}\n",
+        fixed.len(),
+        if held.is_empty() { String::new() } else { format!(": {}", held.join(", ")) }
     );
     Ok(out)
 }

@@ -7,7 +7,7 @@
 
 use kinematics_model::KinematicTree;
 use kinematics_model::LinkId;
-use kinematics_model::collision::LinkSphere;
+use kinematics_model::collision::{FixedPair, LinkSphere};
 
 use crate::error::CompileError;
 use crate::ik::geometry::transform_point;
@@ -93,6 +93,25 @@ impl CollisionLayout {
             link_groups.push((first, groups.len()));
         }
         CollisionLayout { links, points, bounds, order, link_groups, groups }
+    }
+
+    /// The sphere pairs held apart for good (the model's `fixed_apart_pairs`), each sphere by its
+    /// place in the checks' order, the first first; sorted, as the distances look them up.
+    pub fn fixed_in_order(&self, fixed: &[FixedPair]) -> Vec<(usize, usize)> {
+        let place = |sphere: usize| {
+            #[allow(clippy::expect_used, reason = "invariant: `order` is a permutation of the spheres")]
+            let place = self.order.iter().position(|&k| k == sphere).expect("every sphere has a place in the order");
+            place
+        };
+        let mut out: Vec<(usize, usize)> = fixed
+            .iter()
+            .map(|f| {
+                let (a, b) = (place(f.a), place(f.b));
+                (a.min(b), a.max(b))
+            })
+            .collect();
+        out.sort_unstable();
+        out
     }
 
     /// What the generated code computes, in `base`'s frame: every sphere's centre

@@ -10,7 +10,9 @@
 //! plan), so nothing is worked out twice.
 
 pub use kinematics_model::collision::Meshes;
-use kinematics_model::collision::{CollisionPairs, LinkSphere, MeshRefused, link_spheres, sphere_pairs};
+use kinematics_model::collision::{
+    CollisionPairs, FixedPair, LinkSphere, MeshRefused, fixed_apart_pairs, link_spheres, sphere_pairs,
+};
 use kinematics_model::srdf::Srdf;
 use kinematics_model::{ExactAngles, FLOATING_BASE_JOINT, KinematicTree, UnknownLink};
 
@@ -253,13 +255,17 @@ pub struct Checked<'a> {
 }
 
 /// A robot's collision geometry as the check uses it: every sphere, in the robot's sphere order,
-/// and the link pairs its self-collision check tests.
+/// the link pairs its self-collision check tests, and the sphere pairs among them held apart for
+/// good, which the distances leave out.
 #[derive(Debug, Clone, PartialEq)]
 pub struct CollisionPlan {
     /// The spheres.
     pub spheres: Vec<LinkSphere>,
     /// The pairs.
     pub pairs: CollisionPairs,
+    /// The sphere pairs of `pairs` whose distance no joint changes (the model's
+    /// `fixed_apart_pairs`).
+    pub fixed: Vec<FixedPair>,
 }
 
 /// The inverse kinematics a checked robot gets.
@@ -473,7 +479,8 @@ fn collision_applies(options: &Options, tree: &KinematicTree) -> Result<Option<C
         None => None,
     };
     let pairs = sphere_pairs(tree, &spheres, disabled.as_ref());
-    Ok(Some(CollisionPlan { spheres, pairs }))
+    let fixed = fixed_apart_pairs(tree, &spheres, &pairs.pairs);
+    Ok(Some(CollisionPlan { spheres, pairs, fixed }))
 }
 
 /// Rule: `floating_base`'s new root link and joint are names `plain` (the description loaded

@@ -4,7 +4,9 @@
 //!
 //! Everything here is in a shape's own frame or about the tree's topology: placing a sphere in
 //! its link's frame (the element's origin) is transform math, which the compiler and the runtime
-//! reference each do their own way.
+//! reference each do their own way. One selection carries points through the tree's fixed
+//! transforms, and both read it as they read the pairs: the sphere pairs held apart for good
+//! ([`fixed`]), which the distances leave out.
 //!
 //! **The cover.** A sphere is itself. A capsule (URDF/SDF: a cylinder of `length` between the
 //! centres of two hemispherical caps of its `radius`, along z) is covered by spheres centred on
@@ -20,7 +22,11 @@
 //! ball of radius `e` about the centre, which the shape contains). The cover is deterministic and
 //! contains every point of the shape; `d` is the largest overshoot, the key `sphere_cover`.
 
+pub mod fixed;
+
 use std::collections::BTreeSet;
+
+pub use fixed::{FixedPair, ON_AXIS, fixed_apart_pairs};
 
 use crate::transform::FixedTransform;
 use crate::tree::{KinematicTree, LinkId};

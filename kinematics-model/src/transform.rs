@@ -22,6 +22,33 @@ pub enum Elementary {
     Rotation(Axis, Angle),
 }
 
+impl Elementary {
+    /// `p` moved by the step, its rotation's angle times `sign` (`-1`: the rotation undone).
+    fn apply(self, p: [f64; 3], sign: f64) -> [f64; 3] {
+        match self {
+            Elementary::Translation(v) => [p[0] + v[0], p[1] + v[1], p[2] + v[2]],
+            Elementary::Rotation(axis, angle) => {
+                let (s, c) = (sign * angle.radians()).sin_cos();
+                let turn = |a: f64, b: f64| (c * a - s * b, s * a + c * b);
+                match axis {
+                    Axis::X => {
+                        let (y, z) = turn(p[1], p[2]);
+                        [p[0], y, z]
+                    }
+                    Axis::Y => {
+                        let (z, x) = turn(p[2], p[0]);
+                        [x, p[1], z]
+                    }
+                    Axis::Z => {
+                        let (x, y) = turn(p[0], p[1]);
+                        [x, y, p[2]]
+                    }
+                }
+            }
+        }
+    }
+}
+
 /// A fixed rigid transform written as the product `steps[0] * steps[1] * ...` (each step applied in
 /// the frame left by the previous ones).
 ///
@@ -74,6 +101,19 @@ impl FixedTransform {
     /// Whether this is the identity (no steps).
     pub fn is_identity(&self) -> bool {
         self.steps.is_empty()
+    }
+
+    /// The point `p` carried by the transform (in floating point): `self * p`.
+    pub fn apply(&self, p: [f64; 3]) -> [f64; 3] {
+        self.steps.iter().rev().fold(p, |p, step| step.apply(p, 1.0))
+    }
+
+    /// The point `p` carried by the inverse transform: `self^-1 * p`.
+    pub fn apply_inverse(&self, p: [f64; 3]) -> [f64; 3] {
+        self.steps.iter().fold(p, |p, step| match *step {
+            Elementary::Translation(v) => [p[0] - v[0], p[1] - v[1], p[2] - v[2]],
+            rotation => rotation.apply(p, -1.0),
+        })
     }
 
     /// Replaces every rotation angle by `f(angle)`, dropping rotations that become exactly zero.

@@ -1,9 +1,12 @@
 //! Collision spheres at run time, the reference's own way: each sphere's centre in the root frame
 //! as the link's pose (the reference's forward kinematics), then the `<collision>` element's origin
 //! (as an nalgebra isometry), applied to the cover's centre. Shares nothing with the compiler but
-//! the model's list of spheres.
+//! the model's selections: the spheres, and the sphere pairs held apart for good that the
+//! clearance leaves out.
 
-use kinematics_model::collision::LinkSphere;
+use std::collections::BTreeSet;
+
+use kinematics_model::collision::{FixedPair, LinkSphere};
 use nalgebra::Point3;
 
 use crate::error::RuntimeError;
@@ -145,14 +148,43 @@ impl ReferenceFk {
         spheres: &[LinkSphere],
         pairs: &[(LinkId, LinkId)],
     ) -> Result<Vec<f64>, RuntimeError> {
+        self.pair_distances(q, spheres, pairs, &BTreeSet::new())
+    }
+
+    /// The signed distances the clearance measures between the links of each pair in `pairs` at
+    /// `q`: as [`Self::self_distances`], less the sphere pairs `fixed` (held apart for good: the
+    /// model's `fixed_apart_pairs` of these pairs), pair by pair.
+    pub fn measured_self_distances(
+        &self,
+        q: &[f64],
+        spheres: &[LinkSphere],
+        pairs: &[(LinkId, LinkId)],
+        fixed: &[FixedPair],
+    ) -> Result<Vec<f64>, RuntimeError> {
+        let fixed: BTreeSet<(usize, usize)> = fixed.iter().map(|f| (f.a, f.b)).collect();
+        self.pair_distances(q, spheres, pairs, &fixed)
+    }
+
+    /// The signed distances between every two spheres of the links of each pair in `pairs` at
+    /// `q` but those of `skip` (sphere indices, the lesser first), pair by pair.
+    fn pair_distances(
+        &self,
+        q: &[f64],
+        spheres: &[LinkSphere],
+        pairs: &[(LinkId, LinkId)],
+        skip: &BTreeSet<(usize, usize)>,
+    ) -> Result<Vec<f64>, RuntimeError> {
         let centers = self.sphere_centers(q, spheres)?;
         let at = |c: &Point3<f64>| Pose::from_translation(Vector::new(c.x, c.y, c.z));
         let mut out = Vec::new();
         for &(a, b) in pairs {
-            for (sa, ca) in spheres.iter().zip(&centers).filter(|(s, _)| s.link == a) {
-                for (sb, cb) in spheres.iter().zip(&centers).filter(|(s, _)| s.link == b) {
+            for (i, sa) in spheres.iter().enumerate().filter(|(_, s)| s.link == a) {
+                for (j, sb) in spheres.iter().enumerate().filter(|(_, s)| s.link == b) {
+                    if skip.contains(&(i.min(j), i.max(j))) {
+                        continue;
+                    }
                     let (ball_a, ball_b) = (Ball::new(sa.sphere.radius), Ball::new(sb.sphere.radius));
-                    out.push(signed_distance(&at(ca), &ball_a, &at(cb), &ball_b));
+                    out.push(signed_distance(&at(&centers[i]), &ball_a, &at(&centers[j]), &ball_b));
                 }
             }
         }

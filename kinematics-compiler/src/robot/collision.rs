@@ -172,7 +172,12 @@ fn lanes_body(cx: &Context<'_>, frame: &CollisionLayout) -> TokenStream {
 /// link pairs the self-collision check tests), as constants of the block's `bodies` module.
 fn tables(cx: &Context<'_>, frame: &CollisionLayout) -> Vec<TokenStream> {
     let p = &cx.p;
-    let pairs = cx.spec.robot.collision().map_or(&[][..], |plan| plan.pairs.pairs.as_slice());
+    let plan = cx.spec.robot.collision();
+    let pairs = plan.map_or(&[][..], |plan| plan.pairs.pairs.as_slice());
+    let fixed = frame.fixed_in_order(plan.map_or(&[][..], |plan| plan.fixed.as_slice())).into_iter().map(|(a, b)| {
+        let (a, b) = (Literal::usize_unsuffixed(a), Literal::usize_unsuffixed(b));
+        quote!((#a, #b))
+    });
     let point = |v: &[f64; 3]| {
         let [x, y, z] = v.map(super::number);
         quote!([#x, #y, #z])
@@ -201,7 +206,7 @@ fn tables(cx: &Context<'_>, frame: &CollisionLayout) -> Vec<TokenStream> {
             /// The collision tables: each link with spheres (its groups, its bounding sphere's
             /// centre in its frame and radius), each group (its spheres, its bounding sphere),
             /// each sphere's centre in its link's frame and radius, the link pairs the
-            /// self-collision check tests.
+            /// self-collision check tests, the sphere pairs among them held apart for good.
             #[allow(clippy::approx_constant, clippy::unreadable_literal)] // radii are kept as given
             pub const COLLISION_TABLES: #p::collision::CollisionTables<'static> = #p::collision::CollisionTables {
                 links: &[#(#links),*],
@@ -209,6 +214,7 @@ fn tables(cx: &Context<'_>, frame: &CollisionLayout) -> Vec<TokenStream> {
                 centers: &CENTERS,
                 radii: &RADII,
                 pairs: &[#(#pairs),*],
+                fixed: &[#(#fixed),*],
             };
         },
         quote! {

@@ -160,11 +160,14 @@ impl CollisionTables<'_> {
         (nan_where(bad, cost.sum), gradient)
     }
 
-    /// Every pair `sink` asks for: each link's spheres against each obstacle, then the self
-    /// pairs, each pruned by bounding spheres against the sink's limit.
+    /// Every pair `sink` asks for: the self pairs, then each link's spheres against each
+    /// obstacle, each pruned by bounding spheres against the sink's limit. The self pairs come
+    /// first: a few sphere pairs of links near one another (no obstacle's distance, which costs
+    /// more) often give the nearest pair, or a limit that prunes most of the obstacles' work.
     #[inline(always)]
     fn scan<L: CheckLanes, S: Sink<L>>(&self, poses: &[Pose<L>], env: &Environment<'_>, sink: &mut S) {
         let poses = fence(poses);
+        self.scan_pairs(poses, sink);
         for first in (0..self.links.len()).step_by(CHUNK) {
             let (bounds, count) = self.bounds(poses, first);
             let mut visit = Measuring { tables: self, poses, first, bounds: &bounds[..count], sink: &mut *sink };
@@ -173,7 +176,6 @@ impl CollisionTables<'_> {
                 visit.query(query);
             }
         }
-        self.scan_pairs(poses, sink);
     }
 
     /// The bounding spheres of up to [`CHUNK`] links from `first`, placed, and how many.
@@ -194,7 +196,8 @@ impl CollisionTables<'_> {
         self.groups[g0].0..self.groups[g1 - 1].1
     }
 
-    /// The self pairs: each pair of links by their bounds, their groups' bounds, their spheres.
+    /// The self pairs: each pair of links by their bounds, their groups' bounds, their spheres,
+    /// less the sphere pairs held apart for good (`fixed`).
     #[inline(always)]
     fn scan_pairs<L: CheckLanes, S: Sink<L>>(&self, poses: &[Pose<L>], sink: &mut S) {
         for &(i, j) in self.pairs {
@@ -220,7 +223,7 @@ impl CollisionTables<'_> {
                         for t in b0..b1 {
                             let ct = poses[j].place(self.centers[t]);
                             let radii = self.radii[s] + self.radii[t];
-                            if !may_reach(&cs, &ct, radii, sink.limit()).any() {
+                            if !may_reach(&cs, &ct, radii, sink.limit()).any() || self.fixed.contains(&(s, t)) {
                                 continue;
                             }
                             let d = lane_sub(&cs, &ct);

@@ -31,6 +31,7 @@ use crate::pose::Pose;
 ///     centers: &[[0.0; 3], [0.0; 3]],
 ///     radii: &[0.1, 0.1],
 ///     pairs: &[(0, 1)],
+///     fixed: &[],
 /// };
 /// let poses = [Pose::from_rpy([0.0; 3], [0.0; 3]), Pose::from_rpy([0.0; 3], [1.0, 0.0, 0.0])];
 /// let ball = [SphereObstacle { center: [1.0, 0.3, 0.0], radius: 0.25 }];
@@ -53,6 +54,11 @@ pub struct CollisionTables<'a> {
     pub radii: &'a [f64],
     /// The pairs of links (indices into `links`) the self-collision check tests.
     pub pairs: &'a [(usize, usize)],
+    /// The sphere pairs of `pairs` (indices into `centers`, the first first; sorted) that no
+    /// joint brings nearer or farther: held a positive distance apart for good, they never
+    /// collide, and the distances leave them out (their constant would cap the clearance, with a
+    /// zero gradient). The checks test them with the rest.
+    pub fixed: &'a [(usize, usize)],
 }
 
 impl CollisionTables<'_> {
@@ -337,6 +343,7 @@ mod tests {
         centers: &[[0.0; 3], [0.0; 3]],
         radii: &[0.1, 0.1],
         pairs: &[(0, 1)],
+        fixed: &[],
     };
 
     fn at<T: Real>(x: T) -> Pose<T> {
