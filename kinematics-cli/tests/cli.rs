@@ -675,6 +675,55 @@ fn names_of_70000_bytes_pass_through_every_subcommand() {
 }
 
 #[test]
+fn inspect_lists_the_sphere_pairs_held_apart_for_good() {
+    let out = ok(&["inspect", "robots/panda_spherized.urdf", "--srdf", "robots/panda.srdf"]);
+    // panda_link5's first two spheres lie on joint 6's axis, panda_link7's first on joint 7's.
+    assert!(
+        out.contains(
+            "sphere pairs held apart for good (no joint moves them; the distances leave them out): 2: \
+             panda_link5 #0-panda_link7 #0 (0.015176 m), panda_link5 #1-panda_link7 #0 (0.025163 m)\n"
+        ),
+        "{out}"
+    );
+    // A planar arm (two joints 0.3 m apart along x, about z) with spheres of 5 cm at `xa` on `a`
+    // and at `xc` on `c` (each along its link's x): `a` and `c` are the one pair checked.
+    let dir = scratch("held-apart");
+    let planar = |xa: f64, xc: f64| {
+        let link = |name: &str, x: f64| {
+            format!(
+                "<link name=\"{name}\"><collision><origin xyz=\"{x} 0 0\"/>\
+                 <geometry><sphere radius=\"0.05\"/></geometry></collision></link>"
+            )
+        };
+        let joint = |name: &str, parent: &str, child: &str| {
+            format!(
+                "<joint name=\"{name}\" type=\"revolute\"><parent link=\"{parent}\"/><child link=\"{child}\"/>\
+                 <origin xyz=\"0.3 0 0\"/><axis xyz=\"0 0 1\"/>\
+                 <limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/></joint>"
+            )
+        };
+        let (a, b, c) = (link("a", xa), link("b", 0.1), link("c", xc));
+        let (j1, j2) = (joint("j1", "a", "b"), joint("j2", "b", "c"));
+        write_file(
+            &dir,
+            &format!("planar_{xa}_{xc}.urdf"),
+            &format!("<robot name=\"planar\">{a}{b}{c}{j1}{j2}</robot>"),
+        )
+    };
+    let held = "sphere pairs held apart for good (no joint moves them; the distances leave them out): ";
+    // Off the axes, both joints move the pair.
+    let out = ok(&["inspect", &planar(0.1, 0.1)]);
+    assert!(out.contains("self-collision pairs: 1 (") && out.contains(&format!("{held}0\n")), "{out}");
+    // `a`'s sphere on j1's axis, `c`'s on j2's: 0.3 m apart for good, less both radii.
+    let out = ok(&["inspect", &planar(0.3, 0.0)]);
+    assert!(out.contains(&format!("{held}1: a #0-c #0 (0.2 m)\n")), "{out}");
+    // One of the two on its axis: the other joint moves them.
+    let out = ok(&["inspect", &planar(0.3, 0.1)]);
+    assert!(out.contains(&format!("{held}0\n")), "{out}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
 fn inspect_lists_the_angles_the_exactness_policy_changed() {
     let dir = scratch("exact-angles");
     let urdf = write_file(
