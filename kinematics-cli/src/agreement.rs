@@ -59,6 +59,9 @@ pub struct FrameError {
 /// Compiles every link's pose in the root frame and evaluates the expressions (no Rust compiled)
 /// against the runtime reference on `samples` configurations: the largest error per link.
 ///
+/// The configurations are split into one run of consecutive ones per core, each run in a thread
+/// of its own; the largest errors do not depend on the split.
+///
 /// On a terminal, stderr shows a spinner while the compiler works (it reports no progress of its
 /// own) and then a bar over the configurations; elsewhere nothing.
 pub fn check_graph(tree: &KinematicTree, file: &str, samples: usize) -> Result<Vec<FrameError>, CliError> {
@@ -74,16 +77,35 @@ pub fn check_graph(tree: &KinematicTree, file: &str, samples: usize) -> Result<V
         .map(|f| fk.link_id(&f.link).map(|id| id.0))
         .collect::<Result<_, _>>()
         .map_err(|source| CliError::Runtime { file: file.to_owned(), source })?;
-    let mut worst = vec![0.0f64; ids.len()];
     let bar = crate::progress::bar(samples as u64, "checking configurations");
-    for q in Configurations::new(tree).take(samples) {
-        let reference = fk.link_poses(&q).map_err(|source| CliError::Runtime { file: file.to_owned(), source })?;
-        for ((frame, &id), worst) in compiled.eval(&q).iter().zip(&ids).zip(&mut worst) {
-            *worst = worst_of(*worst, distance(frame, &reference[id], reach));
+    // Configurations `start..end` of the sequence: each frame's largest error over them.
+    let run = |(start, end): (usize, usize)| -> Result<Vec<f64>, CliError> {
+        let mut worst = vec![0.0f64; ids.len()];
+        let mut evaluator = compiled.evaluator();
+        for q in Configurations::new(tree).skip(start).take(end - start) {
+            let reference = fk.link_poses(&q).map_err(|source| CliError::Runtime { file: file.to_owned(), source })?;
+            for ((frame, &id), worst) in evaluator.eval(&q).iter().zip(&ids).zip(&mut worst) {
+                *worst = worst_of(*worst, distance(frame, &reference[id], reach));
+            }
+            bar.inc(1);
         }
-        bar.inc(1);
-    }
+        Ok(worst)
+    };
+    let threads = std::thread::available_parallelism().map_or(1, std::num::NonZero::get).min(samples);
+    let runs: Vec<(usize, usize)> =
+        (0..threads).map(|k| (k * samples / threads, (k + 1) * samples / threads)).collect();
+    let results: Vec<Result<Vec<f64>, CliError>> = std::thread::scope(|scope| {
+        let handles: Vec<_> = runs.iter().map(|&range| scope.spawn(move || run(range))).collect();
+        #[allow(clippy::expect_used, reason = "invariant: a run returns its error rather than panicking")]
+        handles.into_iter().map(|h| h.join().expect("a run of configurations does not panic")).collect()
+    });
     bar.finish_and_clear();
+    let mut worst = vec![0.0f64; ids.len()];
+    for result in results {
+        for (w, e) in worst.iter_mut().zip(result?) {
+            *w = worst_of(*w, e);
+        }
+    }
     Ok(compiled.frames().iter().zip(worst).map(|(f, error)| FrameError { link: f.link.clone(), error }).collect())
 }
 

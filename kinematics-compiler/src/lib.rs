@@ -30,5 +30,7 @@ mod stats;
 pub mod symbolic;
 
 pub use error::{CompileError, NoIkFamily};
-pub use request::{Compiled, Frame, FrameVelocity, Request, Velocity, VelocityForm, compile, plain_product_count};
+pub use request::{
+    Compiled, Frame, FrameEvaluator, FrameVelocity, Request, Velocity, VelocityForm, compile, plain_product_count,
+};
 pub use stats::{OpCount, marginal_counts};

@@ -275,6 +275,28 @@ fn frame_outputs(frame: &Frame, position_only: bool, with_pose: bool) -> Vec<Exp
     outputs
 }
 
+/// Evaluates a compiled robot's poses at one configuration after another ([`Compiled::evaluator`]).
+pub struct FrameEvaluator<'a> {
+    compiled: &'a Compiled,
+    /// The nodes the poses need, each after its operands.
+    order: Vec<ExprId>,
+    /// One slot per node of the graph.
+    values: Vec<f64>,
+}
+
+impl FrameEvaluator<'_> {
+    /// Every frame's 12 pose entries at `q` (as [`Compiled::eval`]).
+    ///
+    /// # Panics
+    ///
+    /// If `q` is shorter than the robot's degrees of freedom (a caller's bug).
+    pub fn eval(&mut self, q: &[f64]) -> Vec<[f64; 12]> {
+        let q = self.compiled.variables(q);
+        self.compiled.graph.eval_in_order(&self.order, &q, &[], &mut self.values);
+        self.compiled.frames.iter().map(|f| f.transform.entries().map(|id| self.values[id.index()])).collect()
+    }
+}
+
 /// Every constant a frame's pose is computed from is a finite number, or the error naming the first
 /// frame with one that is not. The model keeps every number of a description finite, but finite
 /// numbers can compose into infinity (`1e308 + 1e308`); emitted code would compute with it, and
@@ -285,18 +307,25 @@ fn check_finite(
     frames: &[Frame],
     request: &Request,
 ) -> Result<(), CompileError> {
+    // One walk over the graph for all frames, in their order: a node an earlier frame reached was
+    // checked there, so each frame walks only what it adds, and the first frame to reach a
+    // constant is the one named (a walk per frame made a long chain's check quadratic).
+    let mut seen = vec![false; graph.len()];
     for frame in frames {
         let outputs = frame_outputs(frame, request.position_only, request.has_pose());
-        let non_finite = crate::stats::reachable(graph, outputs.iter().copied().chain(frame.transform.entries()))
-            .into_iter()
-            .filter_map(|id| graph.as_const(id))
-            .find(|value| !value.is_finite());
-        if let Some(value) = non_finite {
-            return Err(CompileError::NonFiniteConstant {
-                robot: tree.name().to_owned(),
-                link: frame.link.clone(),
-                value,
-            });
+        let mut stack: Vec<ExprId> = outputs.into_iter().chain(frame.transform.entries()).collect();
+        while let Some(id) = stack.pop() {
+            if std::mem::replace(&mut seen[id.index()], true) {
+                continue;
+            }
+            if let Some(value) = graph.as_const(id).filter(|value| !value.is_finite()) {
+                return Err(CompileError::NonFiniteConstant {
+                    robot: tree.name().to_owned(),
+                    link: frame.link.clone(),
+                    value,
+                });
+            }
+            stack.extend(graph.node(id).operands());
         }
     }
     Ok(())
@@ -644,9 +673,15 @@ impl Compiled {
     ///
     /// If `q` has fewer than [`Compiled::dof`] values.
     pub fn eval(&self, q: &[f64]) -> Vec<[f64; 12]> {
-        let q = &self.variables(q);
-        let mut values = Vec::new();
-        self.frames.iter().map(|f| f.transform.entries().map(|id| self.graph.eval(id, q, &mut values))).collect()
+        self.evaluator().eval(q)
+    }
+
+    /// An evaluator of every frame's pose, for many configurations: the nodes the poses need
+    /// listed once, then each [`FrameEvaluator::eval`] one pass over them (`kinematics check`
+    /// evaluates a 5,000-link chain's poses at thousands of configurations).
+    pub fn evaluator(&self) -> FrameEvaluator<'_> {
+        let order = crate::stats::reachable(&self.graph, self.frames.iter().flat_map(|f| f.transform.entries()));
+        FrameEvaluator { compiled: self, order, values: vec![0.0; self.graph.len()] }
     }
 
     /// The 12 pose entries of frame `index` as text (`c1 + c12`), rotation row-major then translation.

@@ -51,14 +51,18 @@ fn factor_common(g: &mut ExprGraph, outputs: &[ExprId]) -> Vec<ExprId> {
             parent[a.index()] = Some(id);
         }
     }
+    // Whether a node is an output, by index: asking the list of outputs for each node made a long
+    // chain's thousands of frames quadratic.
+    let mut is_output = vec![false; g.len()];
     for &o in outputs {
         uses[o.index()] += 1;
+        is_output[o.index()] = true;
     }
     // A sum or negation used once, inside a sum, is flattened into that sum and needs no rewriting
     // of its own (rewriting every level would make long sums quadratic).
     let is_add = |g: &ExprGraph, id: Option<ExprId>| id.is_some_and(|p| matches!(g.node(p), Node::Add(..)));
     let absorbed = |g: &ExprGraph, id: ExprId| -> bool {
-        if uses[id.index()] != 1 || outputs.contains(&id) {
+        if uses[id.index()] != 1 || is_output[id.index()] {
             return false;
         }
         let p = parent[id.index()];

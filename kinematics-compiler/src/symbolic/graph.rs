@@ -328,6 +328,43 @@ impl ExprGraph {
         v
     }
 
+    /// Evaluates every node of `order` (ids with each node's operands before it, as
+    /// [`crate::stats::reachable`] lists them) at `q` and `inputs`, into `values` (one slot per
+    /// node of the graph): the values [`ExprGraph::eval_with_inputs`] gives, bit for bit, without
+    /// its recursion or its memo's checks, for callers that evaluate the same nodes at many
+    /// configurations.
+    ///
+    /// # Panics
+    ///
+    /// If `values` is shorter than the graph, or `q` or `inputs` shorter than a variable or an
+    /// input needs (callers' bugs).
+    pub fn eval_in_order(&self, order: &[ExprId], q: &[f64], inputs: &[f64], values: &mut [f64]) {
+        for &id in order {
+            let at = |a: ExprId| values[a.index()];
+            let v = match self.node(id) {
+                Node::Const(c) => c.value(),
+                Node::Var(i) => q[i as usize],
+                Node::Input(i) => inputs[i as usize],
+                Node::Sin(a) => at(a).sin(),
+                Node::Cos(a) => at(a).cos(),
+                Node::Add(a, b) => at(a) + at(b),
+                Node::Mul(a, b) => at(a) * at(b),
+                Node::Div(a, b) => at(a) / at(b),
+                Node::Neg(a) => -at(a),
+                Node::Sqrt(a) => at(a).sqrt(),
+                Node::Atan2(y, x) => kinematics_core::trig::atan2(at(y), at(x)),
+                Node::IfPositive(c, a, b) => {
+                    if at(c) > 0.0 {
+                        at(a)
+                    } else {
+                        at(b)
+                    }
+                }
+            };
+            values[id.index()] = v;
+        }
+    }
+
     /// `node` with each operand replaced by `map` of it, built through the smart constructors (so
     /// it folds and shares as any new node does). A leaf is itself.
     pub fn rebuild(&mut self, node: Node, map: impl Fn(ExprId) -> ExprId) -> ExprId {
