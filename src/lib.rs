@@ -5,8 +5,8 @@
 //! itself, along straight motions, holding an object, with the clearance and its gradient). Each
 //! comes for one configuration, in SIMD lanes and in batches, and is checked against a runtime
 //! reference that shares none of the compiler's transform math. The guide (module `guide`, with
-//! the `std` feature) has a page per topic: `guide::velocities`, `guide::inverse_kinematics`,
-//! `guide::collision` and more.
+//! the `std` feature) starts with a short tutorial (`guide::tutorial`) and has a page per topic:
+//! `guide::velocities`, `guide::inverse_kinematics`, `guide::collision` and more.
 //!
 //! Most users meet it as a derive:
 //!
@@ -81,7 +81,9 @@
 //! the docs, not for users: it may change with the code generator).
 #![cfg_attr(
     feature = "std",
-    doc = "\n# Guide\n\nThe [`guide`] has the rest, one page per topic: the derive's keys, velocities, \
+    doc = "\n# Guide\n\nNew here? The [`guide::tutorial`] goes from `cargo add` to a pose, its Jacobian, its \
+           inverse and a collision check in a few small steps. The [`guide`] has the rest, one page per \
+           topic: the derive's keys, velocities, \
            inverse kinematics, floating bases, exactness, trigonometry, lanes, `no_std`, errors, the \
            command line, build scripts, what the compiler emits, how it is checked, and every measured \
            figure with the command that measured it."

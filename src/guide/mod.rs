@@ -5,10 +5,13 @@
 //! and `cargo test --doc -p kinematics` runs every Rust example on it as a doctest. Every figure
 //! comes with the command that measured it.
 //!
-//! Start with [`derive`](mod@derive): what `#[derive(Kinematics)]` takes and what a struct gets. Then, by topic:
+//! Start with the [`tutorial`]: from `cargo add` to a pose, its Jacobian, its inverse and a
+//! collision check, in small steps. Then [`derive`](mod@derive): what `#[derive(Kinematics)]`
+//! takes and what a struct gets. Then, by topic:
 //!
 //! | page | what it covers |
 //! |---|---|
+//! | [`tutorial`] | a first read: a pose, its check, the Jacobian, the inverse, batches and lanes, collision |
 //! | [`derive`](mod@derive) | the derive's keys, the functions a struct gets, inline DH tables, compile errors |
 //! | [`velocities`] | Jacobians (`LOCAL_WORLD_ALIGNED`, `LOCAL`), pose with Jacobian, twists; how they are checked |
 //! | [`inverse_kinematics`] | closed-form families, what comes back, seven joints, the numeric solver, speed |
@@ -32,6 +35,10 @@
 //! The examples load robots from `robots/` in the repository (paths in `urdf = "..."` are relative
 //! to the crate's `Cargo.toml`), so they run from a checkout: `cargo test --doc -p kinematics`.
 //! Read the pages locally with `cargo doc -p kinematics --open` (then `kinematics::guide`).
+
+pub mod tutorial {
+    #![doc = include_str!("tutorial.md")]
+}
 
 pub mod derive {
     #![doc = include_str!("derive.md")]
