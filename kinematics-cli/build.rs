@@ -1,5 +1,5 @@
 //! Generates the UR5's forward kinematics (`robots/ur5.urdf`, root to `tool0`) with the build
-//! API, with its Jacobians, for `kinematics demo` to time against the runtime reference: the command cannot compile
+//! API, with its Jacobians and inverse kinematics, for `kinematics demo` to time against the runtime reference: the command cannot compile
 //! Rust at run time, so the one robot it times is compiled in here.
 
 fn main() -> Result<(), kinematics_build::BuildError> {
@@ -8,6 +8,7 @@ fn main() -> Result<(), kinematics_build::BuildError> {
     kinematics_build::Robot::urdf("robots/ur5.urdf")
         .tip("tool0")
         .jacobians()
+        .ik()
         .struct_name("Ur5")
         .write_to_out_dir("ur5.rs")?;
     Ok(())

@@ -109,16 +109,92 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
         )?;
     }
     velocities(args, out, &tree, &file, (&base, &tip), built_in, &inputs)?;
+    inverse(args, out, &tree, &file, built_in, &inputs)?;
     collision(args, out, &tree, &file)
+}
+
+/// The configuration whose pose the demo's inverse kinematics solves.
+const IK_Q: [f64; 6] = [0.3, -1.2, 1.0, 0.4, -0.7, 2.0];
+
+/// Step 7: inverse kinematics. For the built-in UR5, every solution of one pose with its errors
+/// (by the generated pose, and by the runtime reference's), and the closed form timed against the
+/// numeric solver; for another robot, the family its chain falls in (`kinematics ik`).
+fn inverse(
+    args: &Args,
+    out: &mut dyn Write,
+    tree: &KinematicTree,
+    file: &str,
+    built_in: bool,
+    inputs: &[Vec<f64>],
+) -> Result<(), CliError> {
+    writeln!(out, "\n7. Inverse kinematics (`kinematics ik`)\n")?;
+    if !built_in {
+        writeln!(
+            out,
+            "  not timed: this binary holds generated code for the UR5 only. For this robot, `kinematics ik {file} \
+             --from-q ...` solves a pose with the run time's solvers, and the derive's `ik` key gives the \
+             compiled ones."
+        )?;
+        return Ok(());
+    }
+    let fk = ReferenceFk::new(tree.clone());
+    let runtime = |source| CliError::Runtime { file: file.to_owned(), source };
+    let ik = |source| CliError::Ik { file: file.to_owned(), source };
+    let target = Ur5::tip_pose(&IK_Q);
+    let reference_target = fk.link_pose(&IK_Q, "tool0").map_err(runtime)?;
+    let solutions = Ur5::tip_ik(&target).map_err(ik)?;
+    writeln!(
+        out,
+        "  the pose of tool0 at q = {IK_Q:?}: {} solutions, {} exact ({})\n",
+        solutions.len(),
+        solutions.exact().count(),
+        Ur5::IK_FAMILY
+    )?;
+    writeln!(out, "  {:<62}  position   rotation   reference", "q (rad)")?;
+    for s in solutions.iter() {
+        let q = s.q.map(|x| format!("{x:>8.4}")).join(" ");
+        let by_reference = kinematics::Pose::from(fk.link_pose(&s.q, "tool0").map_err(runtime)?);
+        let reference_error = by_reference.deviation(&reference_target, 1.0);
+        let kind = if s.exact { "" } else { "  (not exact: the best of an unreachable branch)" };
+        writeln!(out, "  [{q}]  {:.2e} m  {:.2e}  {reference_error:.2e}{kind}", s.position_error, s.rotation_error)?;
+    }
+    writeln!(
+        out,
+        "  (errors by the generated pose; `reference`: the runtime reference's pose at q against the target)\n"
+    )?;
+    out.flush()?;
+    let arrays: Vec<[f64; Ur5::DOF]> = inputs.iter().filter_map(|q| q.as_slice().try_into().ok()).collect();
+    let targets: Vec<kinematics::Pose<f64>> = arrays.iter().map(Ur5::tip_pose).collect();
+    let n = targets.len();
+    let closed = per_call(args.evaluations / 4, |i| {
+        let _ = black_box(Ur5::tip_ik(black_box(&targets[i % n])));
+    });
+    // The numeric solver from another configuration of the set, as a planner's seed would be.
+    let solves = (args.evaluations / 100).max(1);
+    let mut converged = 0usize;
+    let numeric = per_call(solves, |i| {
+        let solution = Ur5::tip_ik_numeric(black_box(&targets[i % n]), &arrays[(i + n / 2) % n]);
+        converged += usize::from(solution.is_ok_and(|s| s.converged));
+    });
+    writeln!(out, "  closed form, Ur5::tip_ik (every solution):   {closed:>9.1} ns per pose")?;
+    writeln!(
+        out,
+        "  numeric, Ur5::tip_ik_numeric (one solution):  {numeric:>9.1} ns per pose ({}/{} converged; the closed \
+         form {:.0}x faster)",
+        thousands(converged),
+        thousands(solves),
+        numeric / closed.max(1e-3)
+    )?;
+    Ok(())
 }
 
 /// The scene the demo checks `collides` against, when it is there.
 const DEMO_SCENE: &str = "scenes/tabletop.toml";
 
-/// Step 7: the robot's collision geometry as spheres, and the checks a `collision` robot gets,
+/// Step 8: the robot's collision geometry as spheres, and the checks a `collision` robot gets,
 /// against the runtime reference's distances (in the tabletop scene when it is at hand).
 fn collision(args: &Args, out: &mut dyn Write, tree: &KinematicTree, file: &str) -> Result<(), CliError> {
-    writeln!(out, "\n7. Collision: the `<collision>` geometry as spheres (`kinematics check --collision`)\n")?;
+    writeln!(out, "\n8. Collision: the `<collision>` geometry as spheres (`kinematics check --collision`)\n")?;
     let scene = Path::new(DEMO_SCENE).exists().then_some(DEMO_SCENE);
     let cover = kinematics_compiler::options::DEFAULT_SPHERE_COVER;
     let setup = crate::collision::setup(tree, cover, None, scene)?;

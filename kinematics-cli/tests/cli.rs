@@ -440,9 +440,30 @@ fn graph_draws_every_link_and_joint() {
 fn demo_walks_through_the_pipeline() {
     let out = ok(&["demo", "--samples", "300", "--evaluations", "300"]);
     assert!(out.starts_with("kinematics demo: robots/ur5.urdf, the pose of `tool0` (the deepest link) in `base_link`"));
-    for section in ["\n1. ", "\n2. ", "\n3. ", "\n4. ", "\n5. ", "\n6. "] {
+    for section in ["\n1. ", "\n2. ", "\n3. ", "\n4. ", "\n5. ", "\n6. ", "\n7. ", "\n8. "] {
         assert!(out.contains(section), "no section `{section}` in\n{out}");
     }
+    // Inverse kinematics: the pose's eight solutions, each reproducing it by the generated pose and
+    // by the runtime reference's, then the closed form timed against the numeric solver.
+    assert!(out.contains(": 8 solutions, 8 exact (axes 2, 3, 4 parallel, axes 5 and 6 meet)"), "{out}");
+    let rows: Vec<&str> = out.lines().filter(|l| l.starts_with("  [") && l.contains(" m  ")).collect();
+    assert_eq!(rows.len(), 8, "{out}");
+    for row in rows {
+        let errors: Vec<f64> = row
+            .split(']')
+            .nth(1)
+            .unwrap()
+            .split_whitespace()
+            .filter(|w| *w != "m")
+            .map(|w| w.parse().unwrap())
+            .collect();
+        assert!(errors.len() == 3 && errors.iter().all(|e| *e <= 1e-12), "{row}");
+    }
+    assert!(out.contains("closed form, Ur5::tip_ik (every solution):"), "{out}");
+    assert!(
+        out.contains("numeric, Ur5::tip_ik_numeric (one solution):") && out.contains("converged; the closed form"),
+        "{out}"
+    );
     // The generated Jacobian's agreement is measured, and within the agreement tolerance.
     let jacobian = out.lines().find(|l| l.contains("Ur5::tip_jacobian against ReferenceFk::jacobian")).unwrap();
     let error: f64 = jacobian.rsplit(' ').next().unwrap().parse().unwrap();
@@ -456,6 +477,7 @@ fn demo_walks_through_the_pipeline() {
     assert!(other.contains("generated code: not timed."), "{other}");
     assert!(!other.contains("generated Rust in this binary"), "{other}");
     assert!(other.contains("\n6. ") && !other.contains("Ur5::tip_jacobian"), "{other}");
+    assert!(other.contains("\n7. Inverse kinematics") && !other.contains("Ur5::tip_ik"), "{other}");
 }
 
 #[test]
