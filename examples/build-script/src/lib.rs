@@ -13,3 +13,6 @@
 
 include!(concat!(env!("OUT_DIR"), "/ur5.rs"));
 include!(concat!(env!("OUT_DIR"), "/panda.rs"));
+include!(concat!(env!("OUT_DIR"), "/ur5_ik.rs"));
+include!(concat!(env!("OUT_DIR"), "/planar_3r.rs"));
+include!(concat!(env!("OUT_DIR"), "/ur5_spheres.rs"));

@@ -321,6 +321,9 @@ pub fn emit_ik(
             attrs: quote! {
                 #[doc = #doc_all]
                 #[inline]
+                // The measure's pose is a closure marked `#[inline(always)]`, to be compiled inside
+                // the dispatched body (a function's name alone would not be).
+                #[allow(clippy::redundant_closure)]
             },
             body: quote! {
                 let target = &#p::ik::IkTarget::target_pose(target);
@@ -346,6 +349,7 @@ pub fn emit_ik(
             attrs: quote! {
                 #[doc = #doc_nearest]
                 #[inline]
+                #[allow(clippy::redundant_closure)] // as `tip_ik`'s
             },
             body: quote! {
                 let target = &#p::ik::IkTarget::target_pose(target);
@@ -386,6 +390,9 @@ pub fn emit_numeric(tip: &str, base: &str, private: &TokenStream, pose_and_jacob
             attrs: quote! {
                 /// [`Self::tip_ik_numeric`] with the tolerance, steps and restarts given.
                 #[inline]
+                // The pose and Jacobian are a closure marked `#[inline(always)]`, to be compiled
+                // inside the dispatched body (a function's name alone would not be).
+                #[allow(clippy::redundant_closure)]
             },
             body: quote! {
                 let target = &#p::ik::IkTarget::target_pose(target);

@@ -4,8 +4,9 @@
 //! its distance is a constant, so it would cap the clearance at that constant with a zero
 //! gradient: the distances (clearance, proximity cost) leave it out, while the checks keep it.
 //! VAMP's spherized Panda has two (`panda_link5` against `panda_link7`, 1.5 and 2.5 cm apart:
-//! `panda_link5`'s spheres on joint 6's axis, `panda_link7`'s on joint 7's), and the UR5 one
-//! (`base_link` against `upper_arm_link`, 2.5 mm apart).
+//! `panda_link5`'s spheres on joint 6's axis, `panda_link7`'s on joint 7's), and the UR5 two
+//! (`base_link` against `upper_arm_link`, 2.5 mm apart; `shoulder_link` against `forearm_link`,
+//! 27 cm).
 //!
 //! The rule is a selection shared by the compiler and the runtime reference, as the pairs are; it
 //! carries points through the fixed transforms of the tree in floating point, which is all the
