@@ -329,7 +329,7 @@ impl ExprGraph {
     }
 
     /// Evaluates every node of `order` (ids with each node's operands before it, as
-    /// [`crate::stats::reachable`] lists them) at `q` and `inputs`, into `values` (one slot per
+    /// the compiler's `stats::reachable` lists them) at `q` and `inputs`, into `values` (one slot per
     /// node of the graph): the values [`ExprGraph::eval_with_inputs`] gives, bit for bit, without
     /// its recursion or its memo's checks, for callers that evaluate the same nodes at many
     /// configurations.
