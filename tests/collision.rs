@@ -153,6 +153,23 @@ use kinematics::collision::{BoxObstacle, CapsuleObstacle, CylinderObstacle, Envi
 use kinematics::runtime::ReferenceObstacles;
 use kinematics::runtime::kinematics_model::collision::sphere_pairs;
 
+/// The robot's spheres at a cover of `cover` (m), and the link pairs its self-collision check
+/// tests: less the disabled pairs of `srdf` (a path from the repository's root), or without it,
+/// less the adjacent bodies.
+fn spheres_and_pairs(
+    tree: &kinematics::model::KinematicTree,
+    cover: f64,
+    srdf: Option<&str>,
+) -> (Vec<kinematics::model::collision::LinkSphere>, Vec<(kinematics::model::LinkId, kinematics::model::LinkId)>) {
+    let spheres = link_spheres(tree, cover, Meshes::Refuse).unwrap();
+    let disabled = srdf.map(|file| {
+        let text = std::fs::read_to_string(format!("{}/{file}", env!("CARGO_MANIFEST_DIR"))).unwrap();
+        kinematics::model::srdf::parse_srdf(&text).unwrap().disabled_pairs(tree).unwrap()
+    });
+    let pairs = sphere_pairs(tree, &spheres, disabled.as_ref()).pairs;
+    (spheres, pairs)
+}
+
 /// A deterministic stream of numbers in [0, 1) (splitmix64).
 struct Stream(u64);
 
@@ -296,12 +313,7 @@ struct Seen {
 fn checks<R: Checks<N>, const N: usize>(cover: f64, seed: u64, srdf: Option<&str>) -> Seen {
     let reference = R::reference();
     let tree = reference.tree();
-    let spheres = link_spheres(tree, cover, Meshes::Refuse).unwrap();
-    let disabled = srdf.map(|file| {
-        let text = std::fs::read_to_string(format!("{}/{file}", env!("CARGO_MANIFEST_DIR"))).unwrap();
-        kinematics::model::srdf::parse_srdf(&text).unwrap().disabled_pairs(tree).unwrap()
-    });
-    let pairs = sphere_pairs(tree, &spheres, disabled.as_ref()).pairs;
+    let (spheres, pairs) = spheres_and_pairs(tree, cover, srdf);
     let mut stream = Stream(seed);
     let mut seen = Seen::default();
     for round in 0..4 {

@@ -4,12 +4,11 @@
 //! at a time; a point cloud against every point asked in turn.
 
 use kinematics::collision::{Environment, PointCloud};
-use kinematics::model::collision::{Meshes, link_spheres};
 use kinematics::runtime::ReferenceObstacles;
-use kinematics::runtime::kinematics_model::collision::{fixed_apart_pairs, sphere_pairs};
+use kinematics::runtime::kinematics_model::collision::fixed_apart_pairs;
 use kinematics::{Configurations, F64x4, F64x8, Lanes, ReferenceFk};
 
-use super::{Obstacles, Panda, PandaSrdf, Stream, Ur5Checked, Ur5PrimitivesChecked, obstacles};
+use super::{Obstacles, Panda, PandaSrdf, Stream, Ur5Checked, Ur5PrimitivesChecked, obstacles, spheres_and_pairs};
 
 /// A derived robot's distances, every form.
 trait Distances<const N: usize> {
@@ -104,12 +103,7 @@ const MARGIN: f64 = 0.05;
 fn agrees<R: Distances<N>, const N: usize>(cover: f64, seed: u64, srdf: Option<&str>) -> (usize, usize) {
     let reference = R::reference();
     let tree = reference.tree();
-    let spheres = link_spheres(tree, cover, Meshes::Refuse).unwrap();
-    let disabled = srdf.map(|file| {
-        let text = std::fs::read_to_string(format!("{}/{file}", env!("CARGO_MANIFEST_DIR"))).unwrap();
-        kinematics::model::srdf::parse_srdf(&text).unwrap().disabled_pairs(tree).unwrap()
-    });
-    let pairs = sphere_pairs(tree, &spheres, disabled.as_ref()).pairs;
+    let (spheres, pairs) = spheres_and_pairs(tree, cover, srdf);
     let fixed = fixed_apart_pairs(tree, &spheres, &pairs);
     let mut stream = Stream(seed);
     let (mut overlapping, mut apart) = (0, 0);
@@ -164,12 +158,7 @@ fn clearance_and_cost_agree_with_the_reference() {
 fn fixed_pairs<R: Distances<N>, const N: usize>(cover: f64, srdf: Option<&str>) -> usize {
     let reference = R::reference();
     let tree = reference.tree();
-    let spheres = link_spheres(tree, cover, Meshes::Refuse).unwrap();
-    let disabled = srdf.map(|file| {
-        let text = std::fs::read_to_string(format!("{}/{file}", env!("CARGO_MANIFEST_DIR"))).unwrap();
-        kinematics::model::srdf::parse_srdf(&text).unwrap().disabled_pairs(tree).unwrap()
-    });
-    let pairs = sphere_pairs(tree, &spheres, disabled.as_ref()).pairs;
+    let (spheres, pairs) = spheres_and_pairs(tree, cover, srdf);
     let fixed = fixed_apart_pairs(tree, &spheres, &pairs);
     let qs: Vec<[f64; N]> = Configurations::new(tree).take(100).map(|q| q.try_into().unwrap()).collect();
     let centers: Vec<_> = qs.iter().map(|q| reference.sphere_centers(q, &spheres).unwrap()).collect();
@@ -298,10 +287,7 @@ fn nothing_that_is_not_finite_passes() {
 fn clearance_to_a_point_cloud_is_the_nearest_point() {
     let reference = PandaSrdf::reference().unwrap();
     let tree = reference.tree();
-    let spheres = link_spheres(tree, 0.01, Meshes::Refuse).unwrap();
-    let text = std::fs::read_to_string(format!("{}/robots/panda.srdf", env!("CARGO_MANIFEST_DIR"))).unwrap();
-    let disabled = kinematics::model::srdf::parse_srdf(&text).unwrap().disabled_pairs(tree).unwrap();
-    let pairs = sphere_pairs(tree, &spheres, Some(&disabled)).pairs;
+    let (spheres, pairs) = spheres_and_pairs(tree, 0.01, Some("robots/panda.srdf"));
     let fixed = fixed_apart_pairs(tree, &spheres, &pairs);
     let mut stream = Stream(41);
     for (count, point_radius) in [(300, 0.0), (3000, 0.01)] {

@@ -4,7 +4,6 @@
 //! robots (one test binary: each derive and link costs CI time).
 
 use kinematics::collision::{Environment, SphereObstacle};
-use kinematics::model::collision::{Meshes, link_spheres, sphere_pairs};
 use kinematics::runtime::ReferenceObstacles;
 use kinematics::{Configurations, KinematicsError};
 
@@ -37,12 +36,7 @@ fn reference_first<const N: usize>(
     resolution: f64,
 ) -> Result<Option<usize>, ()> {
     let tree = reference.tree();
-    let spheres = link_spheres(tree, 0.01, Meshes::Refuse).unwrap();
-    let disabled = srdf.map(|file| {
-        let text = std::fs::read_to_string(format!("{}/{file}", env!("CARGO_MANIFEST_DIR"))).unwrap();
-        kinematics::model::srdf::parse_srdf(&text).unwrap().disabled_pairs(tree).unwrap()
-    });
-    let pairs = sphere_pairs(tree, &spheres, disabled.as_ref()).pairs;
+    let (spheres, pairs) = super::spheres_and_pairs(tree, 0.01, srdf);
     let n = steps(q0, q1, resolution);
     for k in 0..=n {
         let q = at(q0, q1, k as f64 / n as f64);

@@ -306,24 +306,7 @@ impl ExprGraph {
         if let Some(v) = values[id.index()] {
             return v;
         }
-        let mut at = |a: ExprId| self.eval_with_inputs(a, q, inputs, values);
-        let v = match self.node(id) {
-            Node::Const(c) => c.value(),
-            Node::Var(i) => q[i as usize],
-            Node::Input(i) => inputs[i as usize],
-            Node::Sin(a) => at(a).sin(),
-            Node::Cos(a) => at(a).cos(),
-            Node::Add(a, b) => at(a) + at(b),
-            Node::Mul(a, b) => at(a) * at(b),
-            Node::Div(a, b) => at(a) / at(b),
-            Node::Neg(a) => -at(a),
-            Node::Sqrt(a) => at(a).sqrt(),
-            Node::Atan2(y, x) => kinematics_core::trig::atan2(at(y), at(x)),
-            Node::IfPositive(c, a, b) => {
-                let (c, a, b) = (at(c), at(a), at(b));
-                if c > 0.0 { a } else { b }
-            }
-        };
+        let v = Self::value(self.node(id), q, inputs, |a| self.eval_with_inputs(a, q, inputs, values));
         values[id.index()] = Some(v);
         v
     }
@@ -340,28 +323,30 @@ impl ExprGraph {
     /// input needs (callers' bugs).
     pub fn eval_in_order(&self, order: &[ExprId], q: &[f64], inputs: &[f64], values: &mut [f64]) {
         for &id in order {
-            let at = |a: ExprId| values[a.index()];
-            let v = match self.node(id) {
-                Node::Const(c) => c.value(),
-                Node::Var(i) => q[i as usize],
-                Node::Input(i) => inputs[i as usize],
-                Node::Sin(a) => at(a).sin(),
-                Node::Cos(a) => at(a).cos(),
-                Node::Add(a, b) => at(a) + at(b),
-                Node::Mul(a, b) => at(a) * at(b),
-                Node::Div(a, b) => at(a) / at(b),
-                Node::Neg(a) => -at(a),
-                Node::Sqrt(a) => at(a).sqrt(),
-                Node::Atan2(y, x) => kinematics_core::trig::atan2(at(y), at(x)),
-                Node::IfPositive(c, a, b) => {
-                    if at(c) > 0.0 {
-                        at(a)
-                    } else {
-                        at(b)
-                    }
-                }
-            };
+            let v = Self::value(self.node(id), q, inputs, |a| values[a.index()]);
             values[id.index()] = v;
+        }
+    }
+
+    /// The value of `node` at `q` and `inputs`, its operands' values given by `at` (each asked once,
+    /// in order): the one place the evaluators say what a node computes.
+    fn value(node: Node, q: &[f64], inputs: &[f64], mut at: impl FnMut(ExprId) -> f64) -> f64 {
+        match node {
+            Node::Const(c) => c.value(),
+            Node::Var(i) => q[i as usize],
+            Node::Input(i) => inputs[i as usize],
+            Node::Sin(a) => at(a).sin(),
+            Node::Cos(a) => at(a).cos(),
+            Node::Add(a, b) => at(a) + at(b),
+            Node::Mul(a, b) => at(a) * at(b),
+            Node::Div(a, b) => at(a) / at(b),
+            Node::Neg(a) => -at(a),
+            Node::Sqrt(a) => at(a).sqrt(),
+            Node::Atan2(y, x) => kinematics_core::trig::atan2(at(y), at(x)),
+            Node::IfPositive(c, a, b) => {
+                let (c, a, b) = (at(c), at(a), at(b));
+                if c > 0.0 { a } else { b }
+            }
         }
     }
 

@@ -84,13 +84,13 @@ fn paths(tree: &KinematicTree, a: LinkId, b: LinkId) -> (Vec<JointId>, Vec<Joint
         chain
     };
     let (from_a, from_b) = (ancestors(a), ancestors(b));
-    // The nearest common ancestor: the first link of `a`'s line that `b`'s line holds (the root
-    // at the latest: a tree has one).
+    // The nearest common ancestor: the first link of `a`'s line that `b`'s line holds.
+    #[allow(clippy::expect_used, reason = "invariant: both lines end at the tree's one root")]
     let (ia, ib) = from_a
         .iter()
         .enumerate()
         .find_map(|(i, (link, _))| from_b.iter().position(|(l, _)| l == link).map(|k| (i, k)))
-        .unwrap_or((from_a.len() - 1, from_b.len() - 1));
+        .expect("two links of one tree share its root");
     let joints =
         |line: &[(LinkId, Option<JointId>)], end: usize| line[1..=end].iter().filter_map(|(_, j)| *j).collect();
     (joints(&from_a, ia), joints(&from_b, ib))
