@@ -250,7 +250,6 @@ pub fn levenberg_marquardt<const N: usize>(
     pose_and_jacobian: impl Fn(&[f64; N]) -> (Pose<f64>, [[f64; N]; 6]),
 ) -> NumericSolution<N> {
     let mut seeds = Seeds(SplitMix(0x6b69_6e65_6d61_7469));
-    let mut best: Option<NumericSolution<N>> = None;
     let mut iterations = 0;
     let mut starts = 0;
     // The joints that move the tip: a column of the Jacobian that is not zero (a revolute joint's
@@ -266,7 +265,8 @@ pub fn levenberg_marquardt<const N: usize>(
     for (i, moves) in moving.iter_mut().enumerate() {
         *moves = at_seed.1.iter().any(|row| row[i] != 0.0);
     }
-    for start in 0..=options.restarts {
+    // One start: steps from the seed (start 0) or from a configuration drawn within the limits.
+    let mut attempt = |start: usize| {
         starts += 1;
         let mut q = if start == 0 { first } else { seeds.within(limits, &first, &moving) };
         clamp(&mut q, limits);
@@ -341,26 +341,20 @@ pub fn levenberg_marquardt<const N: usize>(
         iterations += steps;
         let (position_error, rotation_error) = pose_errors(&pose, target);
         let converged = position_error <= options.tolerance && rotation_error <= options.tolerance;
-        let found = NumericSolution { q, converged, position_error, rotation_error, iterations, starts: start + 1 };
-        let better = match &best {
-            None => true,
-            Some(b) => position_error + rotation_error < b.position_error + b.rotation_error,
-        };
-        if better {
-            best = Some(found);
-        }
-        if converged {
+        NumericSolution { q, converged, position_error, rotation_error, iterations, starts: start + 1 }
+    };
+    // The first start always runs, so there is a best from the start (no placeholder for none);
+    // a start that converges ends the search and is kept, whatever the sum of its errors.
+    let mut best = attempt(0);
+    for start in 1..=options.restarts {
+        if best.converged {
             break;
         }
+        let found = attempt(start);
+        if found.converged || found.position_error + found.rotation_error < best.position_error + best.rotation_error {
+            best = found;
+        }
     }
-    let mut best = best.unwrap_or(NumericSolution {
-        q: *seed,
-        converged: false,
-        position_error: f64::INFINITY,
-        rotation_error: f64::INFINITY,
-        iterations: 0,
-        starts: 0,
-    });
     best.iterations = iterations;
     best.starts = starts;
     best
