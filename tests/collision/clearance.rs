@@ -167,6 +167,8 @@ fn fixed_pairs<R: Distances<N>, const N: usize>(cover: f64, srdf: Option<&str>) 
             for j in (0..spheres.len()).filter(|&j| spheres[j].link == b) {
                 let radii = spheres[i].sphere.radius + spheres[j].sphere.radius;
                 let d: Vec<f64> = centers.iter().map(|c| (c[i] - c[j]).norm() - radii).collect();
+                // `min` and `max` would pass over a NaN: none may be there.
+                assert!(d.iter().all(|x| x.is_finite()), "{}: spheres {i} and {j}: {d:?}", tree.name());
                 let (least, most) =
                     d.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(l, m), &x| (l.min(x), m.max(x)));
                 let sampled = most - least <= 1e-9 && least > 0.0;
