@@ -466,60 +466,69 @@ mod tests {
             ("humanoid.urdf", ["l_sole", "r_sole"], None),
             ("ur5_primitives.urdf", ["tool0", "wrist_2_link"], None),
         ];
-        let mut compared = 0;
-        for (file, tips, free) in robots {
-            let tree = robot(file);
-            let links: Vec<String> = tree.links().iter().rev().take(2).map(|l| l.name.clone()).collect();
-            let mut case = 0;
-            for several in [false, true] {
-                for (positions, jacobians) in [(false, false), (true, false), (false, true), (true, true)] {
-                    for ik in [IkMode::Off, IkMode::ClosedForm { free: free.map(str::to_owned) }, IkMode::Numeric] {
-                        for scalars in [(true, false), (false, true), (true, true)] {
-                            case += 1;
-                            let options = Options {
-                                tips: tips[..if several { 2 } else { 1 }].iter().map(|t| (*t).to_owned()).collect(),
-                                positions,
-                                jacobians,
-                                ik: ik.clone(),
-                                scalars: Scalars { f64: scalars.0, f32: scalars.1 },
-                                links: (case % 3 == 0).then(|| links.clone()),
-                                trig: if case % 2 == 0 { Trig::Std } else { Trig::Fast },
-                                // The arm with primitive geometry gets its sphere centres.
-                                collision: (file == "ur5_primitives.urdf")
-                                    .then(|| CollisionOptions { sphere_cover: 0.03, ..CollisionOptions::default() }),
-                                ..Options::default()
-                            };
-                            let Ok(checked) = options.check(&tree) else { continue };
-                            let plan = match checked.ik() {
-                                CheckedIk::ClosedForm(plan) => Some(plan.clone()),
-                                _ => None,
-                            };
-                            let spec = RobotSpec {
-                                robot: checked,
-                                krate: quote!(::kinematics),
-                                source_label: file.to_owned(),
-                                source_text: quote!(""),
-                                source_files: None,
-                                impl_generics: quote!(),
-                                where_clause: quote!(),
-                            };
-                            let emitted = emit_robot(&quote!(Robot), &spec).unwrap();
-                            let input: syn::DeriveInput = syn::parse2(quote!(
-                                struct Robot;
-                            ))
-                            .unwrap();
-                            let implied = Implied::from_options(options.clone()).with_robot(&tree).with_plan(plan);
-                            let stubbed = stub(&input, None, &implied);
-                            assert_eq!(surface(stubbed), surface(emitted), "{file}: {options:?}");
-                            compared += 1;
-                        }
-                    }
-                }
-            }
-        }
+        // One thread per robot: the longest unit test of a cold `cargo test` otherwise.
+        let compared: usize = std::thread::scope(|scope| {
+            let threads = robots.map(|(file, tips, free)| scope.spawn(move || stub_matches_emitted(file, tips, free)));
+            threads.into_iter().map(|t| t.join().expect("a robot's comparison panicked")).sum()
+        });
         // Per robot and scalar list, the four position and Jacobian choices: with one tip, `ik` off
         // and numeric, with two, `ik` off (the rules refuse `ik` of two tips); and with one tip
         // the closed form on the five robots that have one (the humanoid's leg has none).
         assert_eq!(compared, 3 * 4 * (6 * (2 + 1) + 5), "option sets compared");
+    }
+
+    /// The option sets of [`the_stub_lists_what_the_emitter_writes`] on one robot: how many were
+    /// compared (the rules refuse some).
+    fn stub_matches_emitted(file: &str, tips: [&str; 2], free: Option<&str>) -> usize {
+        let mut compared = 0;
+        let tree = robot(file);
+        let links: Vec<String> = tree.links().iter().rev().take(2).map(|l| l.name.clone()).collect();
+        let mut case = 0;
+        for several in [false, true] {
+            for (positions, jacobians) in [(false, false), (true, false), (false, true), (true, true)] {
+                for ik in [IkMode::Off, IkMode::ClosedForm { free: free.map(str::to_owned) }, IkMode::Numeric] {
+                    for scalars in [(true, false), (false, true), (true, true)] {
+                        case += 1;
+                        let options = Options {
+                            tips: tips[..if several { 2 } else { 1 }].iter().map(|t| (*t).to_owned()).collect(),
+                            positions,
+                            jacobians,
+                            ik: ik.clone(),
+                            scalars: Scalars { f64: scalars.0, f32: scalars.1 },
+                            links: (case % 3 == 0).then(|| links.clone()),
+                            trig: if case % 2 == 0 { Trig::Std } else { Trig::Fast },
+                            // The arm with primitive geometry gets its sphere centres.
+                            collision: (file == "ur5_primitives.urdf")
+                                .then(|| CollisionOptions { sphere_cover: 0.03, ..CollisionOptions::default() }),
+                            ..Options::default()
+                        };
+                        let Ok(checked) = options.check(&tree) else { continue };
+                        let plan = match checked.ik() {
+                            CheckedIk::ClosedForm(plan) => Some(plan.clone()),
+                            _ => None,
+                        };
+                        let spec = RobotSpec {
+                            robot: checked,
+                            krate: quote!(::kinematics),
+                            source_label: file.to_owned(),
+                            source_text: quote!(""),
+                            source_files: None,
+                            impl_generics: quote!(),
+                            where_clause: quote!(),
+                        };
+                        let emitted = emit_robot(&quote!(Robot), &spec).unwrap();
+                        let input: syn::DeriveInput = syn::parse2(quote!(
+                            struct Robot;
+                        ))
+                        .unwrap();
+                        let implied = Implied::from_options(options.clone()).with_robot(&tree).with_plan(plan);
+                        let stubbed = stub(&input, None, &implied);
+                        assert_eq!(surface(stubbed), surface(emitted), "{file}: {options:?}");
+                        compared += 1;
+                    }
+                }
+            }
+        }
+        compared
     }
 }

@@ -141,11 +141,11 @@ fn refused_fixtures_are_refused_by_the_same_rule() {
         assert_eq!(ours.model_errors(), Some(&theirs), "{file}");
         theirs
     };
-    let cycle = model("tests/ui/fixtures/cycle.urdf");
+    let cycle = model("ui-tests/tests/ui/fixtures/cycle.urdf");
     assert!(cycle.to_string().contains("form a cycle"), "{cycle}");
     let far = model("kinematics-derive-core/tests/fixtures/far.urdf");
     assert!(far.to_string().contains("reach"), "{far}");
-    let text = std::fs::read_to_string(root().join("tests/ui/fixtures/malformed.urdf")).unwrap();
+    let text = std::fs::read_to_string(root().join("ui-tests/tests/ui/fixtures/malformed.urdf")).unwrap();
     assert!(matches!(via_urdf_rs(&text, ExactAngles::default()), UrdfRs::ReadRefused(_)));
 }
 

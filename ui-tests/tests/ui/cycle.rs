@@ -1,7 +1,7 @@
 use kinematics::Kinematics;
 
 #[derive(Kinematics)]
-#[kinematics(mjcf = "../../../../tests/ui/fixtures/mjcf/missing_include.xml")]
+#[kinematics(urdf = "../../../../ui-tests/tests/ui/fixtures/cycle.urdf")]
 struct Robot;
 
 fn main() {}

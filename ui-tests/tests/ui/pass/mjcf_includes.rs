@@ -4,7 +4,7 @@
 use kinematics::Kinematics;
 
 #[derive(Kinematics)]
-#[kinematics(mjcf = "../../../../tests/ui/fixtures/mjcf/with_include.xml", tip = "tcp")]
+#[kinematics(mjcf = "../../../../ui-tests/tests/ui/fixtures/mjcf/with_include.xml", tip = "tcp")]
 struct Arm;
 
 fn main() {

@@ -1,7 +1,7 @@
 use kinematics::Kinematics;
 
 #[derive(Kinematics)]
-#[kinematics(urdf = "../../../../tests/ui/fixtures/malformed.urdf")]
+#[kinematics(dh = "../../../../ui-tests/tests/ui/fixtures/bad_row.toml")]
 struct Robot;
 
 fn main() {}

@@ -7,7 +7,7 @@ struct Meshes;
 
 // An SRDF naming a link the robot does not have.
 #[derive(Kinematics)]
-#[kinematics(urdf = "../../../../robots/ur5_spherized.urdf", collision(srdf = "../../../../tests/ui/fixtures/unknown_link.srdf"))]
+#[kinematics(urdf = "../../../../robots/ur5_spherized.urdf", collision(srdf = "../../../../ui-tests/tests/ui/fixtures/unknown_link.srdf"))]
 struct UnknownSrdfLink;
 
 // A cover that is no positive length.
@@ -22,7 +22,7 @@ struct MisspeltMeshes;
 
 // A negative radius: the model refuses the file, naming the link and the line.
 #[derive(Kinematics)]
-#[kinematics(urdf = "../../../../tests/ui/fixtures/negative_radius.urdf", collision)]
+#[kinematics(urdf = "../../../../ui-tests/tests/ui/fixtures/negative_radius.urdf", collision)]
 struct NegativeRadius;
 
 fn main() {

@@ -1,6 +1,6 @@
 //! The exact compile error of every way a derive can be wrong (trybuild; `.stderr` beside each case),
 //! and what must compile (`pass/`).
-//! Regenerate on purpose with `TRYBUILD=overwrite cargo test --test ui` and read the diff.
+//! Regenerate on purpose with `TRYBUILD=overwrite cargo test -p kinematics-ui-tests` and read the diff.
 
 #[test]
 fn derive_errors() {

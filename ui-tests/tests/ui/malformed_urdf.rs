@@ -1,7 +1,7 @@
 use kinematics::Kinematics;
 
 #[derive(Kinematics)]
-#[kinematics(mjcf = "../../../../tests/ui/fixtures/mjcf/bad_eulerseq.xml")]
+#[kinematics(urdf = "../../../../ui-tests/tests/ui/fixtures/malformed.urdf")]
 struct Robot;
 
 fn main() {}

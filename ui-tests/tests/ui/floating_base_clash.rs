@@ -2,7 +2,7 @@ use kinematics::Kinematics;
 
 // The fixture's root is already `world`: a free-flying root needs a new name for its link.
 #[derive(Kinematics)]
-#[kinematics(urdf = "../../../../tests/ui/fixtures/floating.urdf", floating_base, tip = "body", jacobians)]
+#[kinematics(urdf = "../../../../ui-tests/tests/ui/fixtures/floating.urdf", floating_base, tip = "body", jacobians)]
 struct Robot;
 
 fn main() {

@@ -1,7 +1,0 @@
-use kinematics::Kinematics;
-
-#[derive(Kinematics)]
-#[kinematics(urdf = "../../../../tests/ui/fixtures/cycle.urdf")]
-struct Robot;
-
-fn main() {}

@@ -1,7 +1,0 @@
-use kinematics::Kinematics;
-
-#[derive(Kinematics)]
-#[kinematics(mjcf = "../../../../tests/ui/fixtures/mjcf/unnamed_body.xml")]
-struct Robot;
-
-fn main() {}
