@@ -377,26 +377,45 @@ pub struct Ur5Srdf;
 #[kinematics(urdf = "robots/ur5_primitives.urdf", collision(sphere_cover = 0.02))]
 pub struct Ur5PrimitivesChecked;
 
+// One test per robot, so that the harness runs them side by side.
+
+/// Both verdicts of both checks are seen, obstacles and the robot itself.
+fn both_verdicts(seen: &Seen) {
+    assert!(seen.hits > 0 && seen.free > 0, "{seen:?}: the environments test one verdict only");
+    assert!(seen.self_hits > 0 && seen.self_free > 0, "{seen:?}: the configurations test one verdict only");
+}
+
 #[test]
-fn collides_and_self_collides_agree_with_the_reference() {
-    let ur5 = checks::<Ur5Checked, 6>(0.01, 1, None);
-    let panda = checks::<Panda, 7>(0.01, 2, None);
-    // With the SRDFs' disabled pairs.
-    let panda_srdf = checks::<PandaSrdf, 7>(0.01, 4, Some("robots/panda.srdf"));
-    let ur5_srdf = checks::<Ur5Srdf, 6>(0.01, 5, Some("robots/ur5.srdf"));
-    // Without an SRDF the primitives arm's wrist links (two joints apart, covered to 2 cm) touch
-    // at every configuration: its checks are compared, but only the others show both verdicts.
-    let primitives = checks::<Ur5PrimitivesChecked, 6>(0.02, 3, None);
-    for seen in [&ur5, &panda, &panda_srdf] {
-        assert!(seen.hits > 0 && seen.free > 0, "{seen:?}: the environments test one verdict only");
-        assert!(seen.self_hits > 0 && seen.self_free > 0, "{seen:?}: the configurations test one verdict only");
-    }
-    // VAMP's UR5 SRDF disables wrist_2_link against wrist_3_link but not against fts_robotside,
-    // which is bolted to wrist_3_link, and their spheres overlap by 1.25 cm at every
-    // configuration: with that SRDF the arm always self-collides (the reference agrees).
-    for seen in [&ur5_srdf, &primitives] {
-        assert!(seen.self_free == 0 && seen.free == 0 && seen.hits > 0, "{seen:?}");
-    }
+fn collides_and_self_collides_agree_with_the_reference_ur5() {
+    both_verdicts(&checks::<Ur5Checked, 6>(0.01, 1, None));
+}
+
+#[test]
+fn collides_and_self_collides_agree_with_the_reference_panda() {
+    both_verdicts(&checks::<Panda, 7>(0.01, 2, None));
+}
+
+/// With the SRDF's disabled pairs.
+#[test]
+fn collides_and_self_collides_agree_with_the_reference_panda_srdf() {
+    both_verdicts(&checks::<PandaSrdf, 7>(0.01, 4, Some("robots/panda.srdf")));
+}
+
+/// VAMP's UR5 SRDF disables wrist_2_link against wrist_3_link but not against fts_robotside,
+/// which is bolted to wrist_3_link, and their spheres overlap by 1.25 cm at every configuration:
+/// with that SRDF the arm always self-collides (the reference agrees).
+#[test]
+fn collides_and_self_collides_agree_with_the_reference_ur5_srdf() {
+    let seen = checks::<Ur5Srdf, 6>(0.01, 5, Some("robots/ur5.srdf"));
+    assert!(seen.self_free == 0 && seen.free == 0 && seen.hits > 0, "{seen:?}");
+}
+
+/// Without an SRDF the primitives arm's wrist links (two joints apart, covered to 2 cm) touch at
+/// every configuration: its checks are compared, but only the others show both verdicts.
+#[test]
+fn collides_and_self_collides_agree_with_the_reference_primitives() {
+    let seen = checks::<Ur5PrimitivesChecked, 6>(0.02, 3, None);
+    assert!(seen.self_free == 0 && seen.free == 0 && seen.hits > 0, "{seen:?}");
 }
 
 /// `f32` checks against the reference with a band of 1e-4 m, and their batches and lanes equal

@@ -9,7 +9,7 @@ use std::cell::Cell;
 
 use common::*;
 use kinematics::{Pose, ReferenceFk};
-use kinematics_checks::{GeneratedRobot, ROBOTS};
+use kinematics_checks::{GeneratedRobot, ROBOTS, on_every_core};
 use proptest::prelude::*;
 use proptest::test_runner::{Config, TestRunner};
 
@@ -50,8 +50,7 @@ fn check_robot(robot: &GeneratedRobot) -> (f64, f64) {
 #[test]
 fn every_robot_agrees_with_the_runtime_reference() {
     assert!(ROBOTS.len() >= 8, "robots/ should hold every robot: found {}", ROBOTS.len());
-    for robot in ROBOTS {
-        let (worst, worst_f32) = check_robot(robot);
+    for (robot, (worst, worst_f32)) in ROBOTS.iter().zip(on_every_core(ROBOTS, check_robot)) {
         println!("{:<28} {CASES} configurations: largest error {worst:.2e} (f64), {worst_f32:.2e} (f32)", robot.file);
     }
 }

@@ -9,7 +9,7 @@ use std::cell::Cell;
 
 use common::*;
 use kinematics::{Pose, ReferenceFk};
-use kinematics_checks::{DERIVED, DerivedRobot};
+use kinematics_checks::{DERIVED, DerivedRobot, on_every_core};
 use proptest::prelude::*;
 use proptest::test_runner::{Config, TestRunner};
 
@@ -62,8 +62,7 @@ fn check(robot: &DerivedRobot) -> (f64, f64) {
 #[test]
 fn every_derived_robot_agrees_with_the_runtime_reference() {
     assert!(DERIVED.len() >= 8, "robots/ should hold every robot: found {}", DERIVED.len());
-    for robot in DERIVED {
-        let (worst, worst_f32) = check(robot);
+    for (robot, (worst, worst_f32)) in DERIVED.iter().zip(on_every_core(DERIVED, check)) {
         println!("{:<28} {:<7} largest error {worst:.2e} (f64), {worst_f32:.2e} (f32)", robot.file, robot.how);
     }
 }

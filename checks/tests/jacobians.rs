@@ -10,7 +10,7 @@ mod common;
 use common::*;
 use kinematics::ReferenceFk;
 use kinematics::model::JacobianFrame;
-use kinematics_checks::{ROBOTS, differences, dual};
+use kinematics_checks::{ROBOTS, differences, dual, on_every_core};
 use proptest::strategy::{Strategy, ValueTree};
 use proptest::test_runner::TestRunner;
 
@@ -54,8 +54,7 @@ fn configurations(tree: &kinematics::KinematicTree, count: usize) -> Vec<Vec<f64
 
 #[test]
 fn every_generated_jacobian_against_the_runtime_and_dual_numbers() {
-    let mut report = Vec::new();
-    for robot in ROBOTS {
+    let report = on_every_core(ROBOTS, |robot| {
         let fk = reference(robot.file);
         let tree = fk.tree();
         let (root, reach) = (tree.link(tree.root()).name.clone(), tree.reach());
@@ -71,11 +70,11 @@ fn every_generated_jacobian_against_the_runtime_and_dual_numbers() {
                 local = local.max(deviation(&(tip.jacobian_local)(&q), &expected_local, reach));
             }
         }
-        report.push(format!("{}: runtime {runtime:.1e}, duals {duals:.1e}, LOCAL {local:.1e}", robot.file));
         assert!(runtime <= TOLERANCE, "{}: generated vs runtime {runtime:e}", robot.file);
         assert!(duals <= TOLERANCE, "{}: generated vs dual numbers {duals:e}", robot.file);
         assert!(local <= TOLERANCE, "{}: LOCAL vs runtime {local:e}", robot.file);
-    }
+        format!("{}: runtime {runtime:.1e}, duals {duals:.1e}, LOCAL {local:.1e}", robot.file)
+    });
     println!("largest deviation per robot (linear rows x reach):\n{}", report.join("\n"));
 }
 
@@ -83,8 +82,7 @@ fn every_generated_jacobian_against_the_runtime_and_dual_numbers() {
 /// fewer configurations.
 #[test]
 fn every_generated_jacobian_against_extrapolated_differences() {
-    let mut report = Vec::new();
-    for robot in ROBOTS {
+    let report = on_every_core(ROBOTS, |robot| {
         let fk = reference(robot.file);
         let tree = fk.tree();
         let reach = tree.reach();
@@ -95,8 +93,8 @@ fn every_generated_jacobian_against_extrapolated_differences() {
                 worst = worst.max(deviation(&(tip.jacobian)(&q), &differences, reach));
             }
         }
-        report.push(format!("{}: {worst:.1e}", robot.file));
         assert!(worst <= TOLERANCE, "{}: generated vs differences {worst:e}", robot.file);
-    }
+        format!("{}: {worst:.1e}", robot.file)
+    });
     println!("largest deviation from extrapolated differences (linear rows x reach):\n{}", report.join("\n"));
 }

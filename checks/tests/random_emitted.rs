@@ -15,9 +15,8 @@ mod random_robots;
 use kinematics::model::{ExactAngles, KinematicTree, SourceFormat, parse_source_with};
 use kinematics::{AGREEMENT_TOLERANCE, AGREEMENT_TOLERANCE_F32, Configurations, JointLimits, Pose, ReferenceFk};
 use kinematics_checks::random::RANDOM;
-use kinematics_checks::{PosesFn, RandomRobot, Typed};
+use kinematics_checks::{PosesFn, RandomRobot, Typed, on_every_core};
 use nalgebra::Isometry3;
-use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// Configurations per robot (the first five put every joint at a special angle).
 const CASES: usize = 2000;
@@ -412,28 +411,7 @@ fn check_batches_and_lanes(robot: &RandomRobot, tree: &KinematicTree, faults: &m
 fn every_function_of_every_random_robot_agrees_with_the_runtime_reference() {
     let mut all = Vec::new();
     let (mut lanes_checked, mut std_trig) = (0, 0);
-    // The robots are independent: checked on every core (the longest test of a cold `cargo test`
-    // otherwise), then reported in the set's order.
-    let workers = std::thread::available_parallelism().map_or(1, usize::from);
-    let next = AtomicUsize::new(0);
-    let mut checked: Vec<(usize, Faults)> = std::thread::scope(|scope| {
-        let threads: Vec<_> = (0..workers)
-            .map(|_| {
-                scope.spawn(|| {
-                    let mut done = Vec::new();
-                    loop {
-                        let i = next.fetch_add(1, Ordering::Relaxed);
-                        let Some(robot) = RANDOM.get(i) else { return done };
-                        done.push((i, check_robot(robot)));
-                    }
-                })
-            })
-            .collect();
-        threads.into_iter().flat_map(|t| t.join().expect("a robot's check panicked")).collect()
-    });
-    checked.sort_by_key(|(i, _)| *i);
-    assert_eq!(checked.len(), RANDOM.len(), "every robot is checked once");
-    for (robot, (_, faults)) in RANDOM.iter().zip(checked) {
+    for (robot, faults) in RANDOM.iter().zip(on_every_core(RANDOM, check_robot)) {
         lanes_checked += faults.lanes_checked;
         std_trig += usize::from(robot.trig == "Std");
         println!(

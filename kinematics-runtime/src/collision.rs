@@ -176,13 +176,20 @@ impl ReferenceFk {
     ) -> Result<Vec<f64>, RuntimeError> {
         let centers = self.sphere_centers(q, spheres)?;
         let at = |c: &Point3<f64>| Pose::from_translation(Vector::new(c.x, c.y, c.z));
+        // Each link's spheres (indices, in the spheres' order), so that a pair walks its two links'
+        // spheres alone rather than every sphere twice.
+        let mut of_link = vec![Vec::new(); self.tree().links().len()];
+        for (i, s) in spheres.iter().enumerate() {
+            of_link[s.link.0].push(i);
+        }
         let mut out = Vec::new();
         for &(a, b) in pairs {
-            for (i, sa) in spheres.iter().enumerate().filter(|(_, s)| s.link == a) {
-                for (j, sb) in spheres.iter().enumerate().filter(|(_, s)| s.link == b) {
+            for &i in &of_link[a.0] {
+                for &j in &of_link[b.0] {
                     if skip.contains(&(i.min(j), i.max(j))) {
                         continue;
                     }
+                    let (sa, sb) = (&spheres[i], &spheres[j]);
                     let (ball_a, ball_b) = (Ball::new(sa.sphere.radius), Ball::new(sb.sphere.radius));
                     out.push(signed_distance(&at(&centers[i]), &ball_a, &at(&centers[j]), &ball_b));
                 }
