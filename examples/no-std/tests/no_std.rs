@@ -66,6 +66,11 @@ fn the_user_binary_holds_no_xml_toml_json_or_nalgebra_code() {
     let status = cargo()
         .args(["build", "-p", "kinematics-no-std-example", "--bin", "kinematics-no-std-example", "--target-dir"])
         .arg(&target)
+        // The workspace optimises the compiler and the model for the tests that run them on
+        // thousands of configurations; the derive here compiles one small robot, so in this
+        // target directory of its own their optimisation would cost more than it saves.
+        .args(["--config", "profile.dev.package.kinematics-compiler.opt-level=0"])
+        .args(["--config", "profile.dev.package.kinematics-model.opt-level=0"])
         .status()
         .expect("cargo build runs");
     assert!(status.success(), "the no_std example does not build on its own");
