@@ -10,11 +10,50 @@ use crate::read::{DISPATCH_PAIR, Row, Run, dispatch_ns, ratio};
 
 /// One build's sections, appended to `s`.
 pub fn run_sections(s: &mut String, run: &Run) {
+    heading(s, run);
+    medians_section(s, run);
+    lanes_section(s, run);
+    ratios_section(s, run);
+    paired_section(s, run);
+    velocity_section(s, run);
+    let _ = writeln!(s);
+}
+
+/// The build's title and where its figures come from.
+fn heading(s: &mut String, run: &Run) {
     let title = if run.name == "plain" { "Plain build" } else { "Native build (`-C target-cpu=native`)" };
     // The directory relative to the workspace (`target/criterion`), never the machine's own path.
     let dir = run.dir.components().rev().take_while(|c| c.as_os_str() != "..").collect::<Vec<_>>();
     let dir: PathBuf = dir.into_iter().rev().collect();
     let _ = writeln!(s, "## {title}\n\nFrom `{}` ({}).\n", dir.display(), run.build);
+}
+
+/// The medians' columns after the robot's own (DoF, tip, op counts): (column, benchmark variant).
+const MEDIANS: [(&str, &str); 20] = [
+    ("pose", "generated_pose_f64"),
+    ("baseline pose", "baseline_pose_f64"),
+    ("std pose", "std_pose_f64"),
+    ("pose f32", "generated_pose_f32"),
+    ("position", "generated_position_f64"),
+    ("all links", "generated_all_f64"),
+    ("baseline all", "baseline_all_f64"),
+    ("std all", "std_all_f64"),
+    ("all f32", "generated_all_f32"),
+    ("runtime pose", "runtime_pose_f64"),
+    ("runtime all", "runtime_all_f64"),
+    ("k all", "k_all_f64"),
+    ("k pose", "k_pose_f64"),
+    ("galaw all", "galaw_all_f64"),
+    ("galaw all f32", "galaw_all_f32"),
+    ("floor", "floor_f64"),
+    ("floor std", "floor_std_f64"),
+    ("floor f32", "floor_f32"),
+    ("floor all", "floor_all_f64"),
+    ("floor std all", "floor_std_all_f64"),
+];
+
+/// Median ns per call of every variant, with the robot's op counts and links.
+fn medians_section(s: &mut String, run: &Run) {
     let _ = writeln!(s, "### Median ns per call (f64 unless marked)\n");
     let _ = writeln!(
         s,
@@ -26,56 +65,9 @@ pub fn run_sections(s: &mut String, run: &Run) {
          with `trig = \"std\"`; `runtime`, `k` and galaw are the peers, `floor ...` the trigonometry floors (see the Notes).\n\
          `links` is how many poses `link_poses` returns, and `all links per link` the `all links` median over it.\n"
     );
-    let columns = [
-        "DoF",
-        "tip",
-        "ops (sin_cos/mul/add)",
-        "all-links ops",
-        "pose",
-        "baseline pose",
-        "std pose",
-        "pose f32",
-        "position",
-        "all links",
-        "baseline all",
-        "std all",
-        "all f32",
-        "runtime pose",
-        "runtime all",
-        "k all",
-        "k pose",
-        "galaw all",
-        "galaw all f32",
-        "floor",
-        "floor std",
-        "floor f32",
-        "floor all",
-        "floor std all",
-        "links",
-        "all links per link",
-    ];
-    let variants = [
-        "generated_pose_f64",
-        "baseline_pose_f64",
-        "std_pose_f64",
-        "generated_pose_f32",
-        "generated_position_f64",
-        "generated_all_f64",
-        "baseline_all_f64",
-        "std_all_f64",
-        "generated_all_f32",
-        "runtime_pose_f64",
-        "runtime_all_f64",
-        "k_all_f64",
-        "k_pose_f64",
-        "galaw_all_f64",
-        "galaw_all_f32",
-        "floor_f64",
-        "floor_std_f64",
-        "floor_f32",
-        "floor_all_f64",
-        "floor_std_all_f64",
-    ];
+    let own = ["DoF", "tip", "ops (sin_cos/mul/add)", "all-links ops"];
+    let columns: Vec<&str> =
+        own.into_iter().chain(MEDIANS.iter().map(|m| m.0)).chain(["links", "all links per link"]).collect();
     table(s, &run.rows, &columns, |r, i| match i {
         0 => format!("{} (`{}`)", r.dof, r.file),
         1 => r.tip.clone(),
@@ -86,8 +78,32 @@ pub fn run_sections(s: &mut String, run: &Run) {
         i if i == columns.len() - 1 => {
             fmt(r.ns.get("generated_all_f64").filter(|_| r.links > 0).map(|ns| ns / r.links as f64))
         }
-        i => fmt(r.ns.get(variants[i - 4]).copied()),
+        i => fmt(r.ns.get(MEDIANS[i - own.len()].1).copied()),
     });
+}
+
+/// Lanes and batches: (column, benchmark variant).
+const LANES: [(&str, &str); 16] = [
+    ("lanes f64x4", "lanes_pose_f64x4"),
+    ("4 scalar calls", "scalar4_pose_f64"),
+    ("floor f64x4", "floor_f64x4"),
+    ("lanes f32x8", "lanes_pose_f32x8"),
+    ("8 scalar f32 calls", "scalar8_pose_f32"),
+    ("floor f32x8", "floor_f32x8"),
+    ("batch f64", "batch1024_f64"),
+    ("batch columns f64", "batch_columns1024_f64"),
+    ("floor batch f64", "floor_batch1024_f64"),
+    ("scalar loop f64", "generated_batch1024_f64"),
+    ("batch f32", "batch1024_f32"),
+    ("batch columns f32", "batch_columns1024_f32"),
+    ("floor batch f32", "floor_batch1024_f32"),
+    ("scalar loop f32", "generated_batch1024_f32"),
+    ("16,384 one thread", "batch16384_f64"),
+    ("16,384 rayon", "parallel_batch16384_f64"),
+];
+
+/// Lanes and batches: median ns per configuration.
+fn lanes_section(s: &mut String, run: &Run) {
     let _ = writeln!(s, "\n### Lanes and batches: median ns per configuration (tip pose)\n");
     let _ = writeln!(
         s,
@@ -98,43 +114,12 @@ pub fn run_sections(s: &mut String, run: &Run) {
          alone of its 1,024 configurations in the lanes the batch runs on this CPU (`F64x8` and `F32x16` with AVX-512,\n\
          else `F64x4` and `F32x8`). Rayon: `parallel::batch` of 16,384 against `tip_pose_batch` on one thread.\n"
     );
-    let columns = [
-        "lanes f64x4",
-        "4 scalar calls",
-        "floor f64x4",
-        "lanes f32x8",
-        "8 scalar f32 calls",
-        "floor f32x8",
-        "batch f64",
-        "batch columns f64",
-        "floor batch f64",
-        "scalar loop f64",
-        "batch f32",
-        "batch columns f32",
-        "floor batch f32",
-        "scalar loop f32",
-        "16,384 one thread",
-        "16,384 rayon",
-    ];
-    let variants = [
-        "lanes_pose_f64x4",
-        "scalar4_pose_f64",
-        "floor_f64x4",
-        "lanes_pose_f32x8",
-        "scalar8_pose_f32",
-        "floor_f32x8",
-        "batch1024_f64",
-        "batch_columns1024_f64",
-        "floor_batch1024_f64",
-        "generated_batch1024_f64",
-        "batch1024_f32",
-        "batch_columns1024_f32",
-        "floor_batch1024_f32",
-        "generated_batch1024_f32",
-        "batch16384_f64",
-        "parallel_batch16384_f64",
-    ];
-    table(s, &run.rows, &columns, |r, i| fmt(r.ns.get(variants[i]).copied()));
+    let columns: Vec<&str> = LANES.iter().map(|l| l.0).collect();
+    table(s, &run.rows, &columns, |r, i| fmt(r.ns.get(LANES[i].1).copied()));
+}
+
+/// Ratios of the medians, and the pose's time beyond the trigonometry floor.
+fn ratios_section(s: &mut String, run: &Run) {
     let _ = writeln!(s, "\n### Ratios of the medians\n");
     let _ = writeln!(
         s,
@@ -171,6 +156,10 @@ pub fn run_sections(s: &mut String, run: &Run) {
             }
         }
     });
+}
+
+/// The paired ratios (the figures to quote): the contenders, then lanes and batches.
+fn paired_section(s: &mut String, run: &Run) {
     let _ = writeln!(s, "\n### Paired ratios\n");
     let _ = writeln!(
         s,
@@ -238,8 +227,6 @@ pub fn run_sections(s: &mut String, run: &Run) {
     ];
     let columns: Vec<&str> = names.iter().map(|n| n.0).collect();
     table(s, &run.rows, &columns, |r, i| paired(r, names[i].1));
-    velocity_section(s, run);
-    let _ = writeln!(s);
 }
 
 /// The tip velocities of the arms that have them: medians, and paired ratios.

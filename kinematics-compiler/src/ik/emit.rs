@@ -127,183 +127,27 @@ pub fn emit_ik(
 ) -> IkItems {
     let p = private;
     let compiled = IkBody::of(plan);
-    let regular = IkBody::regular(plan);
     let family = plan.family.name();
     let capacity = Literal::usize_unsuffixed(plan.family.max_solutions());
-    let (base, tip) = (&plan.base, &plan.tip);
     let n = Literal::usize_unsuffixed(revolute.len());
-    // The six-joint families' core functions (a planar arm solves by its method).
-    let solver = || format_ident!("{}", plan.family.solver());
     let mask = quote!([#(#revolute),*]);
-    let (arm, solve, free_doc, free_value) = match (&plan.geometry, &plan.free) {
-        (IkGeometry::Six(six), None) => {
-            let (axes, offsets, rows) =
-                (six.axes.iter().map(vector), six.offsets.iter().map(vector), six.tool_rotation.iter().map(vector));
-            (
-                quote!(#p::ik::Arm6 { axes: [#(#axes),*], offsets: [#(#offsets),*], tool_rotation: [#(#rows),*] }),
-                {
-                    let solver = solver();
-                    quote!(#p::ik::#solver(&Self::IK_ARM, target))
-                },
-                String::new(),
-                None,
-            )
-        }
-        (IkGeometry::Six(six), Some(free)) => {
-            let (axes, points, rows) =
-                (six.axes.iter().map(vector), six.points.iter().map(vector), six.tool_rotation.iter().map(vector));
-            let (tip_point, free_axis, free_point) = (vector(&six.tip_point), vector(&free.axis), vector(&free.point));
-            let index = Literal::usize_unsuffixed(free.index);
-            (
-                quote!(#p::ik::FreeArm6 {
-                    axes: [#(#axes),*],
-                    points: [#(#points),*],
-                    tip_point: #tip_point,
-                    tool_rotation: [#(#rows),*],
-                    free_axis: #free_axis,
-                    free_point: #free_point,
-                    free_index: #index,
-                }),
-                {
-                    let solver = solver();
-                    quote!(#p::ik::insert_free(&#p::ik::#solver(&Self::IK_ARM.at(free), target), #index, free))
-                },
-                format!(" with joint `{}` at `free` (`q` holds `free` as given)", free.name),
-                Some(index),
-            )
-        }
-        (IkGeometry::Planar(planar), _) => {
-            let joints = planar.joints.iter().map(|(sign, point)| {
-                let sign = number(*sign);
-                match point {
-                    Some(point) => {
-                        let point = vector(point);
-                        quote!(#p::ik::PlanarJoint::Revolute { sign: #sign, point: #point })
-                    }
-                    None => quote!(#p::ik::PlanarJoint::Prismatic { sign: #sign }),
-                }
-            });
-            let (axis, tip_point) = (vector(&planar.axis), vector(&planar.tip_point));
-            let rows = planar.tool_rotation.iter().map(vector);
-            (
-                quote!(#p::ik::PlanarArm { axis: #axis, joints: [#(#joints),*], tip_point: #tip_point, tool_rotation: [#(#rows),*] }),
-                quote!(Self::IK_ARM.solve(target)),
-                String::from(
-                    ", reaching what the arm can: the position (two revolute joints), the rotation about the axes \
-                     (three), the height (a prismatic joint)",
-                ),
-                None,
-            )
-        }
-    };
-    let doc_family = format!("The closed-form inverse kinematics family of `{tip}` in `{base}`: {family}.");
-    let measured = if compiled.is_some() && measure.is_some() {
-        " (at the cosines and sines the solver computed for each angle, of which `q` is the `atan2`)"
-    } else {
-        ""
-    };
-    let doc_all = format!(
-        "Every closed-form inverse kinematics solution for a pose of `{tip}` in `{base}` ({family}){free_doc}: all \
-         {capacity} branches, each exact or the least-squares best where the target is out of its reach, flagged \
-         when singular, with its pose errors measured by this robot's forward kinematics{measured}. Angles are in \
-         `(-pi, pi]`. A target with a non-finite entry or a rotation that is not orthonormal is an error."
-    );
-    let (free_arg, free_check, nearest_free) = match &free_value {
-        Some(index) => (
-            quote!(, free),
-            quote! {
-                if !free.is_finite() {
-                    return ::core::result::Result::Err(#p::ik::IkError::NonFiniteFree);
-                }
-            },
-            quote!(let free = seed[#index];),
-        ),
-        None => (quote!(), quote!(), quote!()),
-    };
-    let doc_nearest = match &plan.free {
-        Some(free) => format!(
-            "The solution of [`Self::tip_ik`] with joint `{}` at the seed's value nearest `seed` (each angle moved by \
-             whole turns to the seed's side), exact ones preferred to least-squares ones. A seed with a non-finite \
-             entry is an error.",
-            free.name
-        ),
-        None => {
-            "The solution of [`Self::tip_ik`] nearest `seed` (each angle moved by whole turns to the seed's side), \
-                 exact ones preferred to least-squares ones. A seed with a non-finite entry is an error."
-                .to_owned()
-        }
-    };
-    let branch_doc = format!(
-        "One branch of the closed-form inverse kinematics of `{tip}` in `{base}` ({family}), for any `IkReal` \
-         scalar: the joint values with their cosines and sines, and `1` or `0` for whether every equation had a \
-         real solution (else the values are the least-squares best) and whether some joint was free (a \
-         singularity). `signs` picks the branch (`+1` or `-1` for each of the three choices, the first \
-         outermost: `kinematics::ik::branch_signs`); with `F64x8` and `kinematics::ik::BRANCH_SIGNS_8` every \
-         branch at once, one per lane, in the order of [`Self::tip_ik`]. The target must be a pose (see \
-         [`Self::tip_ik`]); nothing is checked here."
-    );
-    let mut bodies = Vec::new();
-    let (solve_and_measure, branch_fn) = match &compiled {
-        Some(body) => {
-            let g = Ident::new(BRANCH_BODY, Span::call_site());
-            bodies.push(emit_branch_body(body, p, BRANCH_BODY, &branch_doc));
-            // Where the body has a pass at the wrist's singularity, the body without it first,
-            // and the whole body again only when some lane needed the pass.
-            let solve = match &regular {
-                Some(regular) => {
-                    let r = Ident::new(REGULAR_BODY, Span::call_site());
-                    let doc = format!(
-                        "`{BRANCH_BODY}` without its pass at the wrist's singularity (where `q6 = 0` leaves the \
-                         elbow out of reach, that pass moves the sum of the parallel joints): the same branches \
-                         but those, which it returns singular and not exact."
-                    );
-                    bodies.push(emit_branch_body(regular, p, REGULAR_BODY, &doc));
-                    quote! {
-                        let regular = #r(&lanes, &#p::ik::BRANCH_SIGNS_8);
-                        let branches = if regular.misses_at_a_singularity() {
-                            #g(&lanes, &#p::ik::BRANCH_SIGNS_8)
-                        } else {
-                            regular
-                        };
-                    }
-                }
-                None => quote!(let branches = #g(&lanes, &#p::ik::BRANCH_SIGNS_8);),
-            };
-            // The solutions' poses, in the same lanes: from the cosines and sines the solver
-            // computed where the chain allows, else at `q`.
-            let reached = match measure {
-                Some(measure) => {
-                    bodies.push(emit_measure(measure, p, tip, base));
-                    let m = Ident::new(MEASURE_BODY, Span::call_site());
-                    quote!(#m(&branches.q, &branches.cos, &branches.sin))
-                }
-                None => quote!(#forward(&branches.q)),
-            };
-            (
-                quote! {
-                    // The eight branches side by side, one per lane.
-                    let lanes = #p::ik::splat_pose::<#p::F64x8>(target);
-                    #solve
-                    let reached = #reached;
-                    #p::ik::IkSolutions::from_lanes(&branches, &reached, target)
-                },
-                Some(Part {
-                    attrs: quote! {
-                        #[doc = #branch_doc]
-                        #[inline]
-                    },
-                    body: quote!(#g(target, signs)),
-                }),
-            )
-        }
-        None => (
-            quote! {
+    let ArmAndSolver { arm, solve, doc: free_doc, free } = arm_and_solver(plan, p);
+    let FreeArgument { arg: free_arg, check: free_check, from_seed: nearest_free } = free_argument(free.as_ref(), p);
+    let doc_family =
+        format!("The closed-form inverse kinematics family of `{}` in `{}`: {family}.", plan.tip, plan.base);
+    let doc_all = doc_all(plan, compiled.is_some() && measure.is_some(), &free_doc);
+    let doc_nearest = doc_nearest(plan);
+    let Solving { bodies, solve_and_measure, branch_fn } = match &compiled {
+        Some(body) => solving_compiled(plan, body, measure, forward, p),
+        None => Solving {
+            bodies: Vec::new(),
+            solve_and_measure: quote! {
                 let mut solutions = #solve;
                 solutions.measure(target, #[inline(always)] |q| #forward(q));
                 solutions
             },
-            None,
-        ),
+            branch_fn: None,
+        },
     };
     IkItems {
         bodies,
@@ -363,6 +207,219 @@ pub fn emit_ik(
                 }))
             },
         },
+    }
+}
+
+/// The plan's geometry as the generated code holds it (`IK_ARM`), and the run time's family
+/// solver called with it.
+struct ArmAndSolver {
+    /// `IK_ARM`'s value.
+    arm: TokenStream,
+    /// The call solving `target` with `Self::IK_ARM` (and `free`, for a seven-joint arm).
+    solve: TokenStream,
+    /// What `tip_ik`'s doc says of this geometry.
+    doc: String,
+    /// The free joint's index in `q`, for a seven-joint arm.
+    free: Option<Literal>,
+}
+
+fn arm_and_solver(plan: &IkPlan, p: &TokenStream) -> ArmAndSolver {
+    // The six-joint families' core functions (a planar arm solves by its method).
+    let solver = || format_ident!("{}", plan.family.solver());
+    match (&plan.geometry, &plan.free) {
+        (IkGeometry::Six(six), None) => {
+            let (axes, offsets, rows) =
+                (six.axes.iter().map(vector), six.offsets.iter().map(vector), six.tool_rotation.iter().map(vector));
+            let solver = solver();
+            ArmAndSolver {
+                arm: quote!(#p::ik::Arm6 { axes: [#(#axes),*], offsets: [#(#offsets),*], tool_rotation: [#(#rows),*] }),
+                solve: quote!(#p::ik::#solver(&Self::IK_ARM, target)),
+                doc: String::new(),
+                free: None,
+            }
+        }
+        (IkGeometry::Six(six), Some(free)) => {
+            let (axes, points, rows) =
+                (six.axes.iter().map(vector), six.points.iter().map(vector), six.tool_rotation.iter().map(vector));
+            let (tip_point, free_axis, free_point) = (vector(&six.tip_point), vector(&free.axis), vector(&free.point));
+            let index = Literal::usize_unsuffixed(free.index);
+            let solver = solver();
+            ArmAndSolver {
+                arm: quote!(#p::ik::FreeArm6 {
+                    axes: [#(#axes),*],
+                    points: [#(#points),*],
+                    tip_point: #tip_point,
+                    tool_rotation: [#(#rows),*],
+                    free_axis: #free_axis,
+                    free_point: #free_point,
+                    free_index: #index,
+                }),
+                solve: quote!(#p::ik::insert_free(&#p::ik::#solver(&Self::IK_ARM.at(free), target), #index, free)),
+                doc: format!(" with joint `{}` at `free` (`q` holds `free` as given)", free.name),
+                free: Some(index),
+            }
+        }
+        (IkGeometry::Planar(planar), _) => {
+            let joints = planar.joints.iter().map(|(sign, point)| {
+                let sign = number(*sign);
+                match point {
+                    Some(point) => {
+                        let point = vector(point);
+                        quote!(#p::ik::PlanarJoint::Revolute { sign: #sign, point: #point })
+                    }
+                    None => quote!(#p::ik::PlanarJoint::Prismatic { sign: #sign }),
+                }
+            });
+            let (axis, tip_point) = (vector(&planar.axis), vector(&planar.tip_point));
+            let rows = planar.tool_rotation.iter().map(vector);
+            ArmAndSolver {
+                arm: quote!(#p::ik::PlanarArm { axis: #axis, joints: [#(#joints),*], tip_point: #tip_point, tool_rotation: [#(#rows),*] }),
+                solve: quote!(Self::IK_ARM.solve(target)),
+                doc: String::from(
+                    ", reaching what the arm can: the position (two revolute joints), the rotation about the axes \
+                     (three), the height (a prismatic joint)",
+                ),
+                free: None,
+            }
+        }
+    }
+}
+
+/// What a free joint adds: `tip_ik`'s argument and its check, and `tip_ik_nearest`'s value of it
+/// (the seed's). Empty without one.
+struct FreeArgument {
+    arg: TokenStream,
+    check: TokenStream,
+    from_seed: TokenStream,
+}
+
+fn free_argument(index: Option<&Literal>, p: &TokenStream) -> FreeArgument {
+    match index {
+        Some(index) => FreeArgument {
+            arg: quote!(, free),
+            check: quote! {
+                if !free.is_finite() {
+                    return ::core::result::Result::Err(#p::ik::IkError::NonFiniteFree);
+                }
+            },
+            from_seed: quote!(let free = seed[#index];),
+        },
+        None => FreeArgument { arg: quote!(), check: quote!(), from_seed: quote!() },
+    }
+}
+
+/// `tip_ik`'s doc; `measured_by_cosines` where the solutions' poses come from the solver's own
+/// cosines and sines.
+fn doc_all(plan: &IkPlan, measured_by_cosines: bool, free_doc: &str) -> String {
+    let (tip, base, family) = (&plan.tip, &plan.base, plan.family.name());
+    let capacity = plan.family.max_solutions();
+    let measured = if measured_by_cosines {
+        " (at the cosines and sines the solver computed for each angle, of which `q` is the `atan2`)"
+    } else {
+        ""
+    };
+    format!(
+        "Every closed-form inverse kinematics solution for a pose of `{tip}` in `{base}` ({family}){free_doc}: all \
+         {capacity} branches, each exact or the least-squares best where the target is out of its reach, flagged \
+         when singular, with its pose errors measured by this robot's forward kinematics{measured}. Angles are in \
+         `(-pi, pi]`. A target with a non-finite entry or a rotation that is not orthonormal is an error."
+    )
+}
+
+/// `tip_ik_nearest`'s doc.
+fn doc_nearest(plan: &IkPlan) -> String {
+    match &plan.free {
+        Some(free) => format!(
+            "The solution of [`Self::tip_ik`] with joint `{}` at the seed's value nearest `seed` (each angle moved by \
+             whole turns to the seed's side), exact ones preferred to least-squares ones. A seed with a non-finite \
+             entry is an error.",
+            free.name
+        ),
+        None => {
+            "The solution of [`Self::tip_ik`] nearest `seed` (each angle moved by whole turns to the seed's side), \
+                 exact ones preferred to least-squares ones. A seed with a non-finite entry is an error."
+                .to_owned()
+        }
+    }
+}
+
+/// How `tip_ik` solves and measures: the statements computing its `IkSolutions`, the generic
+/// bodies they call, and `tip_ik_branch_generic` where the family is compiled.
+struct Solving {
+    bodies: Vec<TokenStream>,
+    solve_and_measure: TokenStream,
+    branch_fn: Option<Part>,
+}
+
+/// [`Solving`] for a compiled family: the body's eight branches side by side in lanes (with the
+/// body without its singular pass first, where it has one), measured in the same lanes.
+fn solving_compiled(
+    plan: &IkPlan,
+    body: &IkBody,
+    measure: Option<&Measure>,
+    forward: &TokenStream,
+    p: &TokenStream,
+) -> Solving {
+    let (tip, base, family) = (&plan.tip, &plan.base, plan.family.name());
+    let branch_doc = format!(
+        "One branch of the closed-form inverse kinematics of `{tip}` in `{base}` ({family}), for any `IkReal` \
+         scalar: the joint values with their cosines and sines, and `1` or `0` for whether every equation had a \
+         real solution (else the values are the least-squares best) and whether some joint was free (a \
+         singularity). `signs` picks the branch (`+1` or `-1` for each of the three choices, the first \
+         outermost: `kinematics::ik::branch_signs`); with `F64x8` and `kinematics::ik::BRANCH_SIGNS_8` every \
+         branch at once, one per lane, in the order of [`Self::tip_ik`]. The target must be a pose (see \
+         [`Self::tip_ik`]); nothing is checked here."
+    );
+    let g = Ident::new(BRANCH_BODY, Span::call_site());
+    let mut bodies = vec![emit_branch_body(body, p, BRANCH_BODY, &branch_doc)];
+    // Where the body has a pass at the wrist's singularity, the body without it first,
+    // and the whole body again only when some lane needed the pass.
+    let solve = match &IkBody::regular(plan) {
+        Some(regular) => {
+            let r = Ident::new(REGULAR_BODY, Span::call_site());
+            let doc = format!(
+                "`{BRANCH_BODY}` without its pass at the wrist's singularity (where `q6 = 0` leaves the \
+                 elbow out of reach, that pass moves the sum of the parallel joints): the same branches \
+                 but those, which it returns singular and not exact."
+            );
+            bodies.push(emit_branch_body(regular, p, REGULAR_BODY, &doc));
+            quote! {
+                let regular = #r(&lanes, &#p::ik::BRANCH_SIGNS_8);
+                let branches = if regular.misses_at_a_singularity() {
+                    #g(&lanes, &#p::ik::BRANCH_SIGNS_8)
+                } else {
+                    regular
+                };
+            }
+        }
+        None => quote!(let branches = #g(&lanes, &#p::ik::BRANCH_SIGNS_8);),
+    };
+    // The solutions' poses, in the same lanes: from the cosines and sines the solver
+    // computed where the chain allows, else at `q`.
+    let reached = match measure {
+        Some(measure) => {
+            bodies.push(emit_measure(measure, p, tip, base));
+            let m = Ident::new(MEASURE_BODY, Span::call_site());
+            quote!(#m(&branches.q, &branches.cos, &branches.sin))
+        }
+        None => quote!(#forward(&branches.q)),
+    };
+    Solving {
+        bodies,
+        solve_and_measure: quote! {
+            // The eight branches side by side, one per lane.
+            let lanes = #p::ik::splat_pose::<#p::F64x8>(target);
+            #solve
+            let reached = #reached;
+            #p::ik::IkSolutions::from_lanes(&branches, &reached, target)
+        },
+        branch_fn: Some(Part {
+            attrs: quote! {
+                #[doc = #branch_doc]
+                #[inline]
+            },
+            body: quote!(#g(target, signs)),
+        }),
     }
 }
 
