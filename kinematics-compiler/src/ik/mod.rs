@@ -4,8 +4,9 @@
 //! straight-line code over the expression graph ([`closed_form`]: subproblems with the geometry
 //! folded in, the eight branches side by side in lanes), the forward kinematics each solution is
 //! measured with ([`measure`]: the compiled pose, on the solver's own sines and cosines), and the
-//! functions emitted for it ([`emit`]: that body, or the family's solver in `kinematics-core`
-//! called with the geometry as constants).
+//! body's emission ([`emit`]: one branch as straight-line Rust). The robot's functions built on it
+//! (or on the family's solver in `kinematics-core`, called with the geometry as constants) are
+//! written with the other output kinds, in `robot::ik`.
 
 pub mod classify;
 pub mod closed_form;

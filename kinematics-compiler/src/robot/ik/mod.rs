@@ -1,6 +1,8 @@
-//! Inverse kinematics of the one tip: the closed form of its family (compiled by
-//! [`crate::ik::emit::emit_ik`]) and the numeric solver beside it, or the numeric solver alone,
-//! each item where and as [`super::surface`] lists it.
+//! Inverse kinematics of the one tip: the closed form of its family ([`items::emit_ik`]) and the
+//! numeric solver beside it, or the numeric solver alone, each item where and as
+//! [`super::surface`] lists it.
+
+mod items;
 
 use kinematics_model::{JacobianFrame, JointKind};
 use proc_macro2::TokenStream;
@@ -10,9 +12,9 @@ use super::Context;
 use super::functions::Functions;
 use super::surface::{IkFunction, IkItem, IkShape, Signature};
 use crate::error::CompileError;
-use crate::ik::emit::{IkItems, Part, emit_ik, emit_numeric};
 use crate::options::CheckedIk;
 use crate::request::compile;
+use items::{IkItems, Part, emit_ik, emit_numeric};
 
 /// The functions the checked options ask for (none when `ik` is off).
 #[allow(clippy::expect_used)] // internal invariants, named
