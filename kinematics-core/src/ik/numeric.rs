@@ -291,52 +291,11 @@ pub fn levenberg_marquardt<const N: usize>(
                 break;
             }
             steps += 1;
-            // Normal equations: J^T J and J^T e.
-            let mut a = [[0.0; N]; N];
-            let mut g = [0.0; N];
-            for i in 0..N {
-                for j in 0..=i {
-                    let mut s = 0.0;
-                    for row in &jacobian {
-                        s += row[i] * row[j];
-                    }
-                    a[i][j] = s;
-                    a[j][i] = s;
-                }
-                for (row, e) in jacobian.iter().zip(&error) {
-                    g[i] += row[i] * e;
-                }
-            }
-            let mut accepted = false;
-            // A rejected step raises lambda and tries again; after a few the start is done.
-            for _ in 0..10 {
-                let Some(dq) = bounded_step(&a, &g, lambda, &q, limits) else {
-                    lambda *= 10.0;
-                    continue;
-                };
-                let mut candidate = q;
-                for (value, step) in candidate.iter_mut().zip(&dq) {
-                    *value += step;
-                }
-                clamp(&mut candidate, limits);
-                let (new_pose, new_jacobian) = pose_and_jacobian(&candidate);
-                let new_error = error_twist(&new_pose, target);
-                let new_cost = dot6(&new_error);
-                if new_cost < cost {
-                    q = candidate;
-                    pose = new_pose;
-                    jacobian = new_jacobian;
-                    error = new_error;
-                    cost = new_cost;
-                    lambda = if lambda > 1e-12 { lambda / 3.0 } else { 1e-12 };
-                    accepted = true;
-                    break;
-                }
-                lambda *= 4.0;
-            }
-            if !accepted {
+            let (a, g) = normal_equations(&jacobian, &error);
+            let Some(next) = damped_step(&a, &g, &mut lambda, &q, cost, limits, target, &pose_and_jacobian) else {
                 break;
-            }
+            };
+            Step { q, pose, jacobian, error, cost } = next;
         }
         iterations += steps;
         let (position_error, rotation_error) = pose_errors(&pose, target);
@@ -358,6 +317,80 @@ pub fn levenberg_marquardt<const N: usize>(
     best.iterations = iterations;
     best.starts = starts;
     best
+}
+
+/// An accepted step: the configuration, its pose and Jacobian, its error twist and cost.
+struct Step<const N: usize> {
+    q: [f64; N],
+    pose: Pose<f64>,
+    jacobian: [[f64; N]; 6],
+    error: [f64; 6],
+    cost: f64,
+}
+
+/// The normal equations of the least-squares step: `J^T J` and `J^T e`.
+#[inline(always)]
+fn normal_equations<const N: usize>(jacobian: &[[f64; N]; 6], error: &[f64; 6]) -> ([[f64; N]; N], [f64; N]) {
+    let mut a = [[0.0; N]; N];
+    let mut g = [0.0; N];
+    for i in 0..N {
+        for j in 0..=i {
+            let mut s = 0.0;
+            for row in jacobian {
+                s += row[i] * row[j];
+            }
+            a[i][j] = s;
+            a[j][i] = s;
+        }
+        for (row, e) in jacobian.iter().zip(error) {
+            g[i] += row[i] * e;
+        }
+    }
+    (a, g)
+}
+
+/// The damped step from `q` (at `cost`) that lowers the cost, with `lambda` lowered after it; a
+/// rejected step raises `lambda` and tries again, and after ten tries there is none (`None`: the
+/// start is done). `#[inline(always)]`, like the rest of the iteration, so that it runs inside the
+/// caller's dispatched body.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)] // the iteration's state, passed as it is
+fn damped_step<const N: usize>(
+    a: &[[f64; N]; N],
+    g: &[f64; N],
+    lambda: &mut f64,
+    q: &[f64; N],
+    cost: f64,
+    limits: &[JointLimits; N],
+    target: &Pose<f64>,
+    pose_and_jacobian: &impl Fn(&[f64; N]) -> (Pose<f64>, [[f64; N]; 6]),
+) -> Option<Step<N>> {
+    for _ in 0..10 {
+        let Some(dq) = bounded_step(a, g, *lambda, q, limits) else {
+            *lambda *= 10.0;
+            continue;
+        };
+        let mut candidate = *q;
+        for (value, step) in candidate.iter_mut().zip(&dq) {
+            *value += step;
+        }
+        clamp(&mut candidate, limits);
+        let (new_pose, new_jacobian) = pose_and_jacobian(&candidate);
+        let new_error = error_twist(&new_pose, target);
+        let new_cost = dot6(&new_error);
+        if new_cost < cost {
+            *lambda = if *lambda > 1e-12 { *lambda / 3.0 } else { 1e-12 };
+            return Some(Step {
+                q: candidate,
+                pose: new_pose,
+                jacobian: new_jacobian,
+                error: new_error,
+                cost: new_cost,
+            });
+        }
+        *lambda *= 4.0;
+    }
+    None
 }
 
 #[inline(always)]
