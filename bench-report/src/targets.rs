@@ -25,17 +25,61 @@ enum Measure {
 /// One of the issues' targets.
 struct Target {
     what: &'static str,
-    /// The build the target is stated for: `native`, `plain`, `any` (every build run, each
-    /// judged), [`NATIVE_LISTED`] (the plain build judged, the native build's figure listed) or
-    /// [`BOTH`] (a [`Measure::Builds`] target, one line).
-    build: &'static str,
+    /// The build the target is stated for.
+    build: Build,
     measure: Measure,
 }
 
-/// A target stated for the plain build, with the native build's figure listed (not judged).
-const NATIVE_LISTED: &str = "plain, native listed";
-/// A target comparing the plain build with the native one.
-const BOTH: &str = "plain / native";
+/// The build a target is stated for.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Build {
+    /// The plain build alone.
+    Plain,
+    /// The native build (`-C target-cpu=native`) alone.
+    Native,
+    /// Every build that was run, each judged.
+    Any,
+    /// The plain build judged, the native build's figure listed beside it (not judged).
+    NativeListed,
+    /// The plain build against the native one: a [`Measure::Builds`] target, one line.
+    PlainOverNative,
+}
+
+impl Build {
+    /// The table's lines for this target: the runs it reads, as the `build` column names them.
+    fn lines(self) -> &'static [&'static str] {
+        match self {
+            Build::Plain => &["plain"],
+            Build::Native => &["native"],
+            Build::Any | Build::NativeListed => &["plain", "native"],
+            Build::PlainOverNative => &["plain / native"],
+        }
+    }
+}
+
+/// A stated bound on a figure. NaN and infinities meet none.
+#[derive(Clone, Copy)]
+enum Bound {
+    /// Higher is better: at least this.
+    AtLeast(f64),
+    /// Lower is better: at most this.
+    AtMost(f64),
+}
+
+impl Bound {
+    fn met(self, v: f64) -> bool {
+        v.is_finite()
+            && match self {
+                Bound::AtLeast(bound) => v >= bound,
+                Bound::AtMost(bound) => v <= bound,
+            }
+    }
+
+    /// Whether the worst figure is the lowest.
+    fn lowest_is_worst(self) -> bool {
+        matches!(self, Bound::AtLeast(_))
+    }
+}
 
 /// The worst (`lowest` when higher is better, else highest) of `figures` (value, robot): `None`
 /// when there are none. NaN is the worst of all: once found, it stays.
@@ -60,32 +104,21 @@ fn worst_paired(rows: &[Row], name: &str, lowest: bool) -> Option<(f64, String)>
 
 /// [`every_robot`] over the UR5, the Panda and the iiwa 14 only (the robots the velocity targets
 /// name; the others are in the tables).
-fn named_robots(rows: &[Row], name: &str, bound: f64, lowest: bool) -> Option<(String, bool)> {
+fn named_robots(rows: &[Row], name: &str, bound: Bound) -> Option<(String, bool)> {
     let named: Vec<Row> =
         rows.iter().filter(|r| ["ur5", "panda", "iiwa14"].contains(&r.group.as_str())).cloned().collect();
-    every_robot(&named, name, bound, lowest)
+    every_robot(&named, name, bound)
 }
 
 fn ur5(rows: &[Row]) -> Option<&Row> {
     rows.iter().find(|r| r.group == "ur5")
 }
 
-/// A figure at least `bound`, NaN failing.
-fn at_least(v: f64, bound: f64) -> bool {
-    v.is_finite() && v >= bound
-}
-
-/// A figure at most `bound`, NaN failing.
-fn at_most(v: f64, bound: f64) -> bool {
-    v.is_finite() && v <= bound
-}
-
-/// "the worst robot's figure (robot)", met when every robot meets `bound` (`lowest`: at least).
-fn every_robot(rows: &[Row], name: &str, bound: f64, lowest: bool) -> Option<(String, bool)> {
-    let (v, robot) = worst_paired(rows, name, lowest)?;
+/// "the worst robot's figure (robot)", met when every robot meets `bound`.
+fn every_robot(rows: &[Row], name: &str, bound: Bound) -> Option<(String, bool)> {
+    let (v, robot) = worst_paired(rows, name, bound.lowest_is_worst())?;
     let count = rows.iter().filter(|r| r.paired.contains_key(name)).count();
-    let met = if lowest { at_least(v, bound) } else { at_most(v, bound) };
-    Some((format!("worst {v:.2} ({robot}; {count} robots, paired)"), met))
+    Some((format!("worst {v:.2} ({robot}; {count} robots, paired)"), bound.met(v)))
 }
 
 /// Robot `group`'s plain median of `variant` over its native median (two runs, not paired), at
@@ -94,7 +127,7 @@ fn within_native(plain: &[Row], native: &[Row], group: &str, variant: &str, boun
     let median = |rows: &[Row]| rows.iter().find(|r| r.group == group)?.ns.get(variant).copied();
     let (p, n) = (median(plain)?, median(native)?);
     let v = p / n;
-    Some((format!("{v:.2} ({p:.1} ns / {n:.1} ns, medians of two runs)"), at_most(v, bound)))
+    Some((format!("{v:.2} ({p:.1} ns / {n:.1} ns, medians of two runs)"), Bound::AtMost(bound).met(v)))
 }
 
 /// The worst (highest) plain median of `variant` over the native median among the robots both
@@ -106,7 +139,7 @@ fn every_robot_within_native(plain: &[Row], native: &[Row], variant: &str, bound
         .collect();
     let count = ratios.len();
     let (v, robot) = worst(ratios, false)?;
-    Some((format!("worst {v:.2} ({robot}; {count} robots, medians of two runs)"), at_most(v, bound)))
+    Some((format!("worst {v:.2} ({robot}; {count} robots, medians of two runs)"), Bound::AtMost(bound).met(v)))
 }
 
 /// The dispatch pair and the cost per call it gives ([`dispatch_ns`]) of every robot that has it,
@@ -137,171 +170,176 @@ fn dispatch_cost(rows: &[Row]) -> Option<String> {
 const TARGETS: [Target; 27] = [
     Target {
         what: "UR5, Panda, iiwa: pose + Jacobian of the tip at most 1.6x the pose alone (paired)",
-        build: "any",
+        build: Build::Any,
         measure: Measure::One(|rows| {
-            named_robots(rows, "generated_pose_and_jacobian_f64/generated_pose_f64", 1.6, false)
+            named_robots(rows, "generated_pose_and_jacobian_f64/generated_pose_f64", Bound::AtMost(1.6))
         }),
     },
     Target {
         what: "UR5, Panda, iiwa: pose + Jacobian at least 8x faster than the runtime Jacobian (paired)",
-        build: "any",
+        build: Build::Any,
         measure: Measure::One(|rows| {
-            named_robots(rows, "runtime_jacobian_f64/generated_pose_and_jacobian_f64", 8.0, true)
+            named_robots(rows, "runtime_jacobian_f64/generated_pose_and_jacobian_f64", Bound::AtLeast(8.0))
         }),
     },
     Target {
         what: "UR5, Panda, iiwa: the twist cheaper than forming J and multiplying (paired ratio > 1)",
-        build: "any",
-        measure: Measure::One(|rows| named_robots(rows, "jacobian_times_qd_f64/generated_twist_f64", 1.0, true)),
+        build: Build::Any,
+        measure: Measure::One(|rows| {
+            named_robots(rows, "jacobian_times_qd_f64/generated_twist_f64", Bound::AtLeast(1.0))
+        }),
     },
     Target {
         what: "UR5 pose f64 scalar >= 2.5x faster than the std-trig pose (paired), native",
-        build: "native",
+        build: Build::Native,
         measure: Measure::One(|rows| {
             let v = *ur5(rows)?.paired.get("std_pose_f64/generated_pose_f64")?;
-            Some((format!("{v:.2}x"), at_least(v, 2.5)))
+            Some((format!("{v:.2}x"), Bound::AtLeast(2.5).met(v)))
         }),
     },
     Target {
         what: "UR5 pose f64 scalar >= 2x faster than the std-trig pose (paired), plain build",
-        build: "plain",
+        build: Build::Plain,
         measure: Measure::One(|rows| {
             let v = *ur5(rows)?.paired.get("std_pose_f64/generated_pose_f64")?;
-            Some((format!("{v:.2}x"), at_least(v, 2.0)))
+            Some((format!("{v:.2}x"), Bound::AtLeast(2.0).met(v)))
         }),
     },
     Target {
         what: "all link poses f64, every robot: >= 6x faster than `k` (URDF robots)",
-        build: "any",
-        measure: Measure::One(|rows| every_robot(rows, "k_all_f64/generated_all_f64", 6.0, true)),
+        build: Build::Any,
+        measure: Measure::One(|rows| every_robot(rows, "k_all_f64/generated_all_f64", Bound::AtLeast(6.0))),
     },
     Target {
         what: "all link poses f64, every robot: >= 3x faster than galaw (URDF robots)",
-        build: "any",
-        measure: Measure::One(|rows| every_robot(rows, "galaw_all_f64/generated_all_f64", 3.0, true)),
+        build: Build::Any,
+        measure: Measure::One(|rows| every_robot(rows, "galaw_all_f64/generated_all_f64", Bound::AtLeast(3.0))),
     },
     Target {
         what: "all link poses f64, every robot: >= 4x faster than the runtime",
-        build: "any",
-        measure: Measure::One(|rows| every_robot(rows, "runtime_all_f64/generated_all_f64", 4.0, true)),
+        build: Build::Any,
+        measure: Measure::One(|rows| every_robot(rows, "runtime_all_f64/generated_all_f64", Bound::AtLeast(4.0))),
     },
     Target {
         what: "batch of 1,024 UR5 poses f64: <= 16 ns per configuration (criterion median), native",
-        build: "native",
+        build: Build::Native,
         measure: Measure::One(|rows| {
             let v = *ur5(rows)?.ns.get("batch1024_f64")?;
-            Some((format!("{v:.2} ns"), at_most(v, 16.0)))
+            Some((format!("{v:.2} ns"), Bound::AtMost(16.0).met(v)))
         }),
     },
     Target {
         what: "batch of 1,024 UR5 poses f32: <= 8 ns per configuration (criterion median), native",
-        build: "native",
+        build: Build::Native,
         measure: Measure::One(|rows| {
             let v = *ur5(rows)?.ns.get("batch1024_f32")?;
-            Some((format!("{v:.2} ns"), at_most(v, 8.0)))
+            Some((format!("{v:.2} ns"), Bound::AtMost(8.0).met(v)))
         }),
     },
     Target {
         what: "rayon on 2 cores >= 1.8x over one thread (UR5, 16,384 configurations, paired)",
-        build: "any",
+        build: Build::Any,
         measure: Measure::One(|rows| {
             let v = *ur5(rows)?.paired.get("batch16384_f64/parallel_batch16384_f64")?;
-            Some((format!("{v:.2}x"), at_least(v, 1.8)))
+            Some((format!("{v:.2}x"), Bound::AtLeast(1.8).met(v)))
         }),
     },
     Target {
         what: "every body within 1.3x of the new floor: pose f64 / floor",
-        build: "any",
-        measure: Measure::One(|rows| every_robot(rows, "generated_pose_f64/floor_f64", 1.3, false)),
+        build: Build::Any,
+        measure: Measure::One(|rows| every_robot(rows, "generated_pose_f64/floor_f64", Bound::AtMost(1.3))),
     },
     Target {
         what: "every body within 1.3x of the new floor: all links f64 / floor all",
-        build: "any",
-        measure: Measure::One(|rows| every_robot(rows, "generated_all_f64/floor_all_f64", 1.3, false)),
+        build: Build::Any,
+        measure: Measure::One(|rows| every_robot(rows, "generated_all_f64/floor_all_f64", Bound::AtMost(1.3))),
     },
     Target {
         what: "every body within 1.3x of the new floor: pose f32 / floor f32",
-        build: "any",
-        measure: Measure::One(|rows| every_robot(rows, "generated_pose_f32/floor_f32", 1.3, false)),
+        build: Build::Any,
+        measure: Measure::One(|rows| every_robot(rows, "generated_pose_f32/floor_f32", Bound::AtMost(1.3))),
     },
     Target {
         what: "every body within 1.3x of the new floor: lanes f64x4 and f32x8 / their floors",
-        build: "any",
+        build: Build::Any,
         measure: Measure::One(|rows| {
-            let (a, ra) = every_robot(rows, "lanes_pose_f64x4/floor_f64x4", 1.3, false)?;
-            let (b, rb) = every_robot(rows, "lanes_pose_f32x8/floor_f32x8", 1.3, false)?;
+            let (a, ra) = every_robot(rows, "lanes_pose_f64x4/floor_f64x4", Bound::AtMost(1.3))?;
+            let (b, rb) = every_robot(rows, "lanes_pose_f32x8/floor_f32x8", Bound::AtMost(1.3))?;
             Some((format!("f64x4 {a}; f32x8 {b}"), ra && rb))
         }),
     },
     Target {
         what: "f32 about twice as fast as f64 in lanes (read as >= 1.8x per configuration, paired, UR5)",
-        build: "any",
+        build: Build::Any,
         measure: Measure::One(|rows| {
             let r = ur5(rows)?;
             let lanes = *r.paired.get("lanes_pose_f64x4/lanes_pose_f32x8")?;
             let batch = *r.paired.get("batch1024_f64/batch1024_f32")?;
-            Some((format!("lanes {lanes:.2}x, batches {batch:.2}x"), at_least(lanes, 1.8) && at_least(batch, 1.8)))
+            Some((
+                format!("lanes {lanes:.2}x, batches {batch:.2}x"),
+                Bound::AtLeast(1.8).met(lanes) && Bound::AtLeast(1.8).met(batch),
+            ))
         }),
     },
     Target {
         what: "issue 22: UR5 pose f64, plain build within 1.1x of native (plain median / native median)",
-        build: BOTH,
+        build: Build::PlainOverNative,
         measure: Measure::Builds(|plain, native| within_native(plain, native, "ur5", "generated_pose_f64", 1.1)),
     },
     Target {
         what: "issue 22: Panda pose f64, plain build within 1.1x of native (plain median / native median)",
-        build: BOTH,
+        build: Build::PlainOverNative,
         measure: Measure::Builds(|plain, native| within_native(plain, native, "panda", "generated_pose_f64", 1.1)),
     },
     Target {
         what: "issue 22: Panda Jacobian f64, plain build within 1.1x of native (plain median / native median)",
-        build: BOTH,
+        build: Build::PlainOverNative,
         measure: Measure::Builds(|plain, native| within_native(plain, native, "panda", "generated_jacobian_f64", 1.1)),
     },
     Target {
         what: "issue 22: all link poses f64, every robot: plain build within 1.1x of native (plain median / native median)",
-        build: BOTH,
+        build: Build::PlainOverNative,
         measure: Measure::Builds(|plain, native| every_robot_within_native(plain, native, "generated_all_f64", 1.1)),
     },
     Target {
         what: "issue 22: all link poses f64, every robot: >= 2.2x faster than galaw's generated code (paired, URDF robots)",
-        build: NATIVE_LISTED,
-        measure: Measure::One(|rows| every_robot(rows, "galaw_all_f64/generated_all_f64", 2.2, true)),
+        build: Build::NativeListed,
+        measure: Measure::One(|rows| every_robot(rows, "galaw_all_f64/generated_all_f64", Bound::AtLeast(2.2))),
     },
     Target {
         what: "issue 22: all link poses f64, every robot: >= 7x faster than `k` (paired, URDF robots)",
-        build: NATIVE_LISTED,
-        measure: Measure::One(|rows| every_robot(rows, "k_all_f64/generated_all_f64", 7.0, true)),
+        build: Build::NativeListed,
+        measure: Measure::One(|rows| every_robot(rows, "k_all_f64/generated_all_f64", Bound::AtLeast(7.0))),
     },
     Target {
         what: "issue 22: batch of 1,024 UR5 poses f64: <= 12 ns per configuration (criterion median), plain build",
-        build: "plain",
+        build: Build::Plain,
         measure: Measure::One(|rows| {
             let v = *ur5(rows)?.ns.get("batch1024_f64")?;
-            Some((format!("{v:.2} ns"), at_most(v, 12.0)))
+            Some((format!("{v:.2} ns"), Bound::AtMost(12.0).met(v)))
         }),
     },
     Target {
         what: "issue 22: batch of 1,024 UR5 poses f32: <= 6 ns per configuration (criterion median), plain build",
-        build: "plain",
+        build: Build::Plain,
         measure: Measure::One(|rows| {
             let v = *ur5(rows)?.ns.get("batch1024_f32")?;
-            Some((format!("{v:.2} ns"), at_most(v, 6.0)))
+            Some((format!("{v:.2} ns"), Bound::AtMost(6.0).met(v)))
         }),
     },
     Target {
         what: "issue 22: every robot's batch f64 within 1.2x of its lane floor (paired)",
-        build: "any",
-        measure: Measure::One(|rows| every_robot(rows, "batch1024_f64/floor_batch1024_f64", 1.2, false)),
+        build: Build::Any,
+        measure: Measure::One(|rows| every_robot(rows, "batch1024_f64/floor_batch1024_f64", Bound::AtMost(1.2))),
     },
     Target {
         what: "issue 22: every robot's batch f32 within 1.2x of its lane floor (paired)",
-        build: "any",
-        measure: Measure::One(|rows| every_robot(rows, "batch1024_f32/floor_batch1024_f32", 1.2, false)),
+        build: Build::Any,
+        measure: Measure::One(|rows| every_robot(rows, "batch1024_f32/floor_batch1024_f32", Bound::AtMost(1.2))),
     },
     Target {
         what: "issue 22: dispatch cost, kept small (reported: `dispatch each / once`, paired, and ns per call)",
-        build: "any",
+        build: Build::Any,
         measure: Measure::Report(dispatch_cost),
     },
 ];
@@ -323,14 +361,10 @@ pub fn targets(s: &mut String, runs: &[Run]) {
     let rows = |name: &str| runs.iter().find(|r| r.name == name).map(|r| r.rows.as_slice());
     let not_measured = || ("not measured".to_owned(), "-");
     for target in &TARGETS {
-        let wanted = match target.build {
-            "any" | NATIVE_LISTED => vec!["plain", "native"],
-            build => vec![build],
-        };
-        for build in wanted {
+        for &build in target.build.lines() {
             let judged = |m: Option<(String, bool)>| {
                 m.map_or_else(not_measured, |(figure, met)| {
-                    let listed = target.build == NATIVE_LISTED && build == "native";
+                    let listed = target.build == Build::NativeListed && build == "native";
                     (
                         figure,
                         match (met, listed) {
@@ -359,31 +393,31 @@ pub fn targets(s: &mut String, runs: &[Run]) {
 pub fn ik_targets(ik: &Ik) -> String {
     let mut s = String::new();
     let _ = writeln!(s, "### IK targets\n\n| target | measured | met |\n|---|---|---|");
-    let mut target = |what: &str, measured: Option<f64>, bound: f64, at_least: bool| {
-        let met = measured.map(|m| if at_least { m >= bound } else { m <= bound });
+    let mut target = |what: &str, measured: Option<f64>, bound: Bound| {
+        let met = measured.map(|m| bound.met(m));
         // Two decimals: a success rate of 99.8% must not read as 100.
         let shown = measured.map_or("n/a".to_owned(), |v| format!("{v:.2}"));
         let _ = writeln!(s, "| {what} | {shown} | {} |", met.map_or("n/a", |m| if m { "yes" } else { "no" }));
     };
     for (robot, bound) in [("UR5", 4.0), ("IRB 120", 4.0), ("PUMA 560", 4.0)] {
-        target(&format!("{robot}: ik-geo / our solver >= {bound}"), ik_geo_cell(&ik.ik_geo, robot, 4), bound, true);
+        let least = Bound::AtLeast(bound);
+        target(&format!("{robot}: ik-geo / our solver >= {bound}"), ik_geo_cell(&ik.ik_geo, robot, 4), least);
         target(
             &format!("{robot}: ik-geo / our tip_ik (with errors) >= {bound}"),
             ik_geo_cell(&ik.ik_geo, robot, 3),
-            bound,
-            true,
+            least,
         );
     }
     // Paired ratios where the benchmark timed them, else the medians' ratio.
     for robot in &ik.closed {
         let nearest_over_all = robot.paired.get("nearest/all").copied().or(ratio(robot.nearest, robot.all));
-        target(&format!("{}: nearest / all <= 1.2", robot.name), nearest_over_all, 1.2, false);
+        target(&format!("{}: nearest / all <= 1.2", robot.name), nearest_over_all, Bound::AtMost(1.2));
     }
     for robot in &ik.numeric {
         let k_over_ours = robot.paired.or(ratio(robot.k, robot.ours));
-        target(&format!("{}: k / ours per solve >= 10", robot.name), k_over_ours, 10.0, true);
+        target(&format!("{}: k / ours per solve >= 10", robot.name), k_over_ours, Bound::AtLeast(10.0));
         let converged = robot.success.map(|(o, _, n)| 100.0 * o / n);
-        target(&format!("{}: converged to 1e-10, % >= 99.5", robot.name), converged, 99.5, true);
+        target(&format!("{}: converged to 1e-10, % >= 99.5", robot.name), converged, Bound::AtLeast(99.5));
     }
     s
 }
@@ -414,13 +448,17 @@ mod tests {
     #[test]
     fn every_robot_must_meet_the_bound() {
         let rows = [test_row("a", &[], &[(PAIR, 7.0)]), test_row("b", &[], &[(PAIR, 5.0)])];
-        assert_eq!(every_robot(&rows, PAIR, 5.0, true), Some(("worst 5.00 (b; 2 robots, paired)".to_owned(), true)));
-        assert_eq!(every_robot(&rows, PAIR, 6.0, true).map(|(_, met)| met), Some(false));
-        assert_eq!(every_robot(&rows, PAIR, 7.0, false).map(|(_, met)| met), Some(true));
-        assert!(!at_least(f64::NAN, 0.0) && !at_most(f64::NAN, 1e300));
+        assert_eq!(
+            every_robot(&rows, PAIR, Bound::AtLeast(5.0)),
+            Some(("worst 5.00 (b; 2 robots, paired)".to_owned(), true))
+        );
+        assert_eq!(every_robot(&rows, PAIR, Bound::AtLeast(6.0)).map(|(_, met)| met), Some(false));
+        assert_eq!(every_robot(&rows, PAIR, Bound::AtMost(7.0)).map(|(_, met)| met), Some(true));
+        assert!(!Bound::AtLeast(0.0).met(f64::NAN) && !Bound::AtMost(1e300).met(f64::NAN));
+        assert!(!Bound::AtLeast(0.0).met(f64::INFINITY) && !Bound::AtMost(1e300).met(f64::NEG_INFINITY));
         // Named robots only: "b" is not one of them.
         let named = [test_row("ur5", &[], &[(PAIR, 7.0)]), test_row("b", &[], &[(PAIR, 1.0)])];
-        assert_eq!(named_robots(&named, PAIR, 6.0, true).map(|(_, met)| met), Some(true));
+        assert_eq!(named_robots(&named, PAIR, Bound::AtLeast(6.0)).map(|(_, met)| met), Some(true));
     }
 
     #[test]
