@@ -10,7 +10,8 @@
 //! ratios as bars). Nothing here is typed in by hand.
 //!
 //! `cargo run -p bench-report -- --ik` rewrites only the inverse kinematics part, from the results of
-//! `cargo bench --bench ik` and `benches/ik-geo/RESULTS.md`, keeping the forward kinematics sections.
+//! `cargo bench --bench ik` and `benches/ik-geo/run.sh`'s record (`kinematics-ik-geo.tsv`), keeping the
+//! forward kinematics sections.
 //!
 //! One module per output: `read` (every input, as data), `tables` (the Markdown), `svg` (the
 //! chart) and `targets` (the targets, met or not). This file only puts them in order.

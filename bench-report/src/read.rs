@@ -1,6 +1,6 @@
 //! Reading: criterion's medians (`<group>/<variant>/new/estimates.json`) and the records the
 //! benchmarks leave beside them (`kinematics-robots.tsv`, `kinematics-build.tsv`,
-//! `kinematics-paired.tsv`, `kinematics-ik.tsv`), `benches/ik-geo/RESULTS.md`, the compiler's
+//! `kinematics-paired.tsv`, `kinematics-ik.tsv`, and `benches/ik-geo`'s `kinematics-ik-geo.tsv`), the compiler's
 //! operation counts of each robot, and the machine. Everything the report prints comes from here
 //! as plain data ([`Run`], [`Row`], [`Ik`]); the other modules only format it, so they know
 //! nothing of files and can be tested on values written in the test.
@@ -296,12 +296,62 @@ pub struct Ik {
     pub closed: Vec<ClosedIk>,
     /// The numeric solver against `k`.
     pub numeric: Vec<NumericIk>,
-    /// The table lines (`|...`) of `benches/ik-geo/RESULTS.md`, empty when it was never run.
-    pub ik_geo: String,
+    /// The comparison with ik-geo (`kinematics-ik-geo.tsv`, from `benches/ik-geo/run.sh`), one
+    /// row per robot; empty when it was never run.
+    pub ik_geo: Vec<IkGeoRow>,
 }
 
-/// The IK results in `criterion` (and `root`'s `benches/ik-geo/RESULTS.md`), or `None` when the
-/// IK benchmark was never run (no median for the UR5's `all`).
+/// One robot of the comparison with ik-geo, as `benches/ik-geo` records it: medians in ns per
+/// call, paired ratios, and on how many poses both found the same number of exact solutions.
+#[derive(Debug, Clone, PartialEq)]
+pub struct IkGeoRow {
+    /// The robot, as the comparison names it (`UR5`).
+    pub robot: String,
+    /// ik-geo's `ik`.
+    pub ik_geo_ns: f64,
+    /// Our `tip_ik`.
+    pub tip_ik_ns: f64,
+    /// Our solver alone.
+    pub solver_ns: f64,
+    /// ik-geo over `tip_ik`, paired.
+    pub over_tip_ik: f64,
+    /// ik-geo over the solver, paired.
+    pub over_solver: f64,
+    /// Poses with as many exact solutions on both sides.
+    pub equal: usize,
+    /// Poses compared.
+    pub poses: usize,
+}
+
+/// The file `benches/ik-geo` writes in criterion's directory: one line per robot, tab-separated,
+/// in [`IkGeoRow`]'s order.
+pub const IK_GEO_RECORD: &str = "kinematics-ik-geo.tsv";
+
+/// The rows of an ik-geo record; a line that does not parse is left out (and so is its robot).
+pub fn ik_geo_rows(text: &str) -> Vec<IkGeoRow> {
+    text.lines()
+        .filter_map(|line| {
+            let [robot, ik_geo, tip_ik, solver, over_tip_ik, over_solver, equal, poses] =
+                line.split('\t').collect::<Vec<_>>()[..]
+            else {
+                return None;
+            };
+            Some(IkGeoRow {
+                robot: robot.to_owned(),
+                ik_geo_ns: ik_geo.parse().ok()?,
+                tip_ik_ns: tip_ik.parse().ok()?,
+                solver_ns: solver.parse().ok()?,
+                over_tip_ik: over_tip_ik.parse().ok()?,
+                over_solver: over_solver.parse().ok()?,
+                equal: equal.parse().ok()?,
+                poses: poses.parse().ok()?,
+            })
+        })
+        .collect()
+}
+
+/// The IK results in `criterion` (with `benches/ik-geo`'s record, [`IK_GEO_RECORD`]), or `None`
+/// when the IK benchmark was never run (no median for the UR5's `all`).
 pub fn read_ik(root: &Path, criterion: &Path) -> Option<Ik> {
     median_ns(criterion, "ik-ur5", "all")?;
     let closed = CLOSED
@@ -325,8 +375,9 @@ pub fn read_ik(root: &Path, criterion: &Path) -> Option<Ik> {
             NumericIk { name, ours, k, success: success(criterion, group), paired }
         })
         .collect();
-    let ik_geo = std::fs::read_to_string(root.join("benches/ik-geo/RESULTS.md")).unwrap_or_default();
-    let ik_geo = ik_geo.lines().filter(|l| l.starts_with('|')).map(|l| format!("{l}\n")).collect();
+    // Never run is no rows (the summary says so); a record that cannot be read is the same.
+    let ik_geo =
+        std::fs::read_to_string(criterion.join(IK_GEO_RECORD)).map_or_else(|_| Vec::new(), |t| ik_geo_rows(&t));
     Some(Ik { closed, numeric, ik_geo })
 }
 
@@ -373,12 +424,6 @@ fn success(criterion: &Path, robot: &str) -> Option<(f64, f64, f64)> {
             _ => None,
         }
     })
-}
-
-/// A ratio cell of the ik-geo table for `robot` (column `column`, 0-based after the robot's name).
-pub fn ik_geo_cell(table: &str, robot: &str, column: usize) -> Option<f64> {
-    let line = table.lines().find(|l| l.starts_with(&format!("| {robot} |")))?;
-    line.split('|').map(str::trim).filter(|c| !c.is_empty()).nth(column + 1)?.parse().ok()
 }
 
 /// A robot's row with the given medians and pairs, for the other modules' tests.
@@ -432,15 +477,14 @@ mod tests {
     }
 
     #[test]
-    fn ik_geo_cell_reads_a_robot_s_column() {
-        let table = "| robot | a | b | c |\n|---|---|---|---|\n| UR5 | 1.5 | 2.25 | x |\n| IRB 120 | 7 | 8 | 9 |\n";
-        assert_eq!(ik_geo_cell(table, "UR5", 0), Some(1.5));
-        assert_eq!(ik_geo_cell(table, "UR5", 1), Some(2.25));
-        assert_eq!(ik_geo_cell(table, "IRB 120", 2), Some(9.0));
-        // Not a number, past the last column, or no such robot.
-        assert_eq!(ik_geo_cell(table, "UR5", 2), None);
-        assert_eq!(ik_geo_cell(table, "UR5", 3), None);
-        assert_eq!(ik_geo_cell(table, "PUMA 560", 0), None);
+    fn ik_geo_rows_are_read_by_field_and_bad_lines_left_out() {
+        let text =
+            "UR5\t2894.2\t591\t490\t4.9\t5.91\t256\t256\nIRB 120\t3090\t577\tx\t5.37\t8.66\t256\t256\nshort\t1\n";
+        let rows = ik_geo_rows(text);
+        assert_eq!(rows.len(), 1, "{rows:?}");
+        let r = &rows[0];
+        assert_eq!((r.robot.as_str(), r.ik_geo_ns, r.tip_ik_ns, r.solver_ns), ("UR5", 2894.2, 591.0, 490.0));
+        assert_eq!((r.over_tip_ik, r.over_solver, r.equal, r.poses), (4.9, 5.91, 256, 256));
     }
 
     #[test]

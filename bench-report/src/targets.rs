@@ -6,7 +6,7 @@
 
 use std::fmt::Write as _;
 
-use crate::read::{DISPATCH_PAIR, Ik, Row, Run, dispatch_ns, ik_geo_cell, plain_over_native, ratio};
+use crate::read::{DISPATCH_PAIR, Ik, IkGeoRow, Row, Run, dispatch_ns, plain_over_native, ratio};
 
 /// A measured figure as the table shows it, and whether it meets the target; `None` when it was
 /// not measured.
@@ -400,13 +400,10 @@ pub fn ik_targets(ik: &Ik) -> String {
         let _ = writeln!(s, "| {what} | {shown} | {} |", met.map_or("n/a", |m| if m { "yes" } else { "no" }));
     };
     for (robot, bound) in [("UR5", 4.0), ("IRB 120", 4.0), ("PUMA 560", 4.0)] {
+        let row = ik.ik_geo.iter().find(|r| r.robot == robot);
         let least = Bound::AtLeast(bound);
-        target(&format!("{robot}: ik-geo / our solver >= {bound}"), ik_geo_cell(&ik.ik_geo, robot, 4), least);
-        target(
-            &format!("{robot}: ik-geo / our tip_ik (with errors) >= {bound}"),
-            ik_geo_cell(&ik.ik_geo, robot, 3),
-            least,
-        );
+        target(&format!("{robot}: ik-geo / our solver >= {bound}"), row.map(|r: &IkGeoRow| r.over_solver), least);
+        target(&format!("{robot}: ik-geo / our tip_ik (with errors) >= {bound}"), row.map(|r| r.over_tip_ik), least);
     }
     // Paired ratios where the benchmark timed them, else the medians' ratio.
     for robot in &ik.closed {
@@ -590,7 +587,7 @@ mod tests {
                 success: Some((499.0, 1.0, 500.0)),
                 paired: None,
             }],
-            ik_geo: "| UR5 | 1 | 2 | 3 | 4.5 | 3.9 |\n".to_owned(),
+            ik_geo: crate::read::ik_geo_rows("UR5\t1\t2\t3\t4.5\t3.9\t256\t256\n"),
         };
         let s = ik_targets(&ik);
         assert!(s.contains("| UR5: ik-geo / our solver >= 4 | 3.90 | no |\n"), "{s}");

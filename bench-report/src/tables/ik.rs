@@ -8,7 +8,7 @@
 use std::fmt::Write as _;
 
 use super::fmt;
-use crate::read::Ik;
+use crate::read::{IK_GEO_RECORD, Ik, IkGeoRow};
 
 /// The line the inverse kinematics part starts with (after a blank line).
 pub const IK_HEADING: &str = "\n## Inverse kinematics (plain build)\n";
@@ -106,12 +106,31 @@ pub fn ik_section(ik: Option<&Ik>, machine: &str) -> String {
             robot.paired.map_or("n/a".to_owned(), |v| format!("{v:.2}"))
         );
     }
-    if ik.ik_geo.is_empty() {
-        let _ = writeln!(s, "\nNo ik-geo results: run `bash benches/ik-geo/run.sh`.");
-    } else {
-        let _ = writeln!(s, "\nAgainst `ik-geo` (from `benches/ik-geo/RESULTS.md`, paired):\n\n{}", ik.ik_geo);
-    }
+    ik_geo_table(&mut s, &ik.ik_geo);
     s
+}
+
+/// The comparison with ik-geo, from its record (see `benches/ik-geo/RESULTS.md` for how it is
+/// timed and what agrees).
+fn ik_geo_table(s: &mut String, rows: &[IkGeoRow]) {
+    if rows.is_empty() {
+        let _ = writeln!(s, "\nNo ik-geo results: run `bash benches/ik-geo/run.sh`.");
+        return;
+    }
+    let _ = writeln!(
+        s,
+        "\nAgainst `ik-geo` (from `benches/ik-geo/run.sh`'s record, `{IK_GEO_RECORD}`; medians, then paired \
+         ratios):\n\n\
+         | robot | ik-geo ns | ours tip_ik ns | ours solver ns | ik-geo / tip_ik | ik-geo / solver | exact solutions \
+         equal on N poses |\n|---|---:|---:|---:|---:|---:|---:|"
+    );
+    for r in rows {
+        let _ = writeln!(
+            s,
+            "| {} | {:.0} | {:.0} | {:.0} | {:.2} | {:.2} | {} / {} |",
+            r.robot, r.ik_geo_ns, r.tip_ik_ns, r.solver_ns, r.over_tip_ik, r.over_solver, r.equal, r.poses
+        );
+    }
 }
 
 #[cfg(test)]
@@ -152,7 +171,7 @@ mod tests {
                 success: Some((499.0, 300.0, 500.0)),
                 paired: None,
             }],
-            ik_geo: String::new(),
+            ik_geo: Vec::new(),
         };
         let s = ik_section(Some(&ik), "a machine");
         assert!(s.contains("\n| UR5 | 400 | 440 | 200 | n/a | 800 | 250 | 300 |\n"), "{s}");

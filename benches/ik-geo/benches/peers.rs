@@ -403,4 +403,31 @@ fn main() {
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/RESULTS.md");
     std::fs::write(path, report).expect("RESULTS.md is writable");
     println!("written to {path}");
+    let record = write_record(&rows);
+    println!("and the record for bench-report to {}", record.display());
+}
+
+/// The record `bench-report` reads (`kinematics-ik-geo.tsv` in the root workspace's criterion
+/// directory, beside the other benchmarks' records): one line per robot, tab-separated, the
+/// figures unrounded: robot, ik-geo ns, `tip_ik` ns, solver ns, the two paired ratios, poses with
+/// equal exact solutions, poses.
+fn write_record(rows: &[Row]) -> std::path::PathBuf {
+    let target = std::env::var_os("CARGO_TARGET_DIR").map_or_else(
+        || std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../target"),
+        std::path::PathBuf::from,
+    );
+    let dir = target.join("criterion");
+    let mut record = String::new();
+    for r in rows {
+        let _ = writeln!(
+            record,
+            "{}\t{}\t{}\t{}\t{}\t{}\t{}\t{POSES}",
+            r.name, r.ik_geo_ns, r.tip_ik_ns, r.solver_ns, r.over_tip_ik, r.over_solver, r.equal
+        );
+    }
+    let path = dir.join("kinematics-ik-geo.tsv");
+    std::fs::create_dir_all(&dir)
+        .and_then(|()| std::fs::write(&path, record))
+        .expect("the criterion directory is writable");
+    path
 }
