@@ -24,6 +24,10 @@
 //! checked; and its `smooth_path` draws from `rand::thread_rng()`, so no seed repeats a run. The
 //! search below is Kuffner and LaValle's RRT-Connect (ICRA 2000) as their paper gives it, with
 //! edges checked as motions and the usual random shortcutting after it.
+//!
+//! Its chance comes from the runtime's seeded `Configurations` (one seed, one plan). Its tests run
+//! under `cargo test` (`test = true`): plans re-checked edge by edge by `motion_collides` and by
+//! the runtime reference.
 #![allow(clippy::print_stdout, clippy::print_stderr)]
 
 use std::fmt;

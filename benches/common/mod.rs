@@ -2,6 +2,9 @@
 //! settings, and the directory the records for `bench-report` go to. Each benchmark keeps its own
 //! robots, inputs and bodies (their random configurations come from different generators on
 //! purpose: changing either would change what is timed).
+//!
+//! `collision` uses it too: measuring or check mode, criterion's settings and filter, the results
+//! directory, and the paired timing (`paired_ratio`).
 
 use std::hint::black_box;
 use std::path::{Path, PathBuf};

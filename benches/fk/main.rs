@@ -25,6 +25,8 @@
 //! `AGREEMENT_TOLERANCE`, f32 within `AGREEMENT_TOLERANCE_F32`): every lane of the lane bodies and
 //! every configuration of the batches, also on batches whose length is no multiple of 4 or 8 (the
 //! tail), so CI knows the suite builds and times code that computes the right thing.
+//!
+//! The areas run robot by robot, in a fixed order.
 
 #![allow(clippy::expect_used, clippy::panic)] // a benchmark fails loudly on a robot that does not load
 

@@ -2,6 +2,9 @@
 //! the paired ratios, two bodies timed in alternation, which a shared machine whose speed drifts
 //! over minutes cannot skew the way it skews two criterion medians taken seconds apart. The pairs
 //! are collected here and written next to criterion's results for `bench-report`.
+//!
+//! The pairs go to `target/criterion/kinematics-paired.tsv`; a filtered run replaces only the pairs
+//! it timed.
 
 use std::hint::black_box;
 

@@ -6,6 +6,9 @@
 //! and galaw read URDF only, and order or name joints their own way: each of their joints gets the
 //! value our model gives it (mimic joints included), so they compute the same poses, which check
 //! mode asserts link by link.
+//!
+//! galaw's code in `benches/galaw/` is its own generator's output for our URDFs, rebuilt by
+//! `benches/galaw/regenerate.sh`.
 
 use std::hint::black_box;
 

@@ -5,6 +5,9 @@
 //! derivatives with no Jacobian code at all: a witness independent of the compiler's Jacobian and
 //! of the runtime reference's. Written here from the definition: `(a + a' e)(b + b' e) = ab +
 //! (a'b + ab') e`, `sin(a + a' e) = sin a + a' cos a e`.
+//!
+//! The duals are also a `CheckLanes` type of one lane (comparisons by the value), so
+//! `tests/clearance_duals.rs` runs the generated clearance and proximity cost on them.
 
 use std::ops::{Add, Div, Mul, Neg, Sub};
 

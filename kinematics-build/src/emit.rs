@@ -6,6 +6,9 @@
 //! generating machine's absolute path, and which a file in `OUT_DIR` could not reach relatively):
 //! the file is self-contained. A build script asks cargo to rerun when the description changes
 //! (`cargo:rerun-if-changed`, printed by `Robot::write_to_out_dir`).
+//!
+//! `emit_robot` is the derive's own call; its tokens are parsed with syn and printed by
+//! prettyplease under an `@generated` header.
 
 use kinematics_compiler::options::Checked;
 use kinematics_compiler::robot::{RobotSpec, emit_robot};

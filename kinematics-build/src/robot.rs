@@ -1,4 +1,7 @@
 //! The builder: which description, which frames, which name, and where the code goes.
+//!
+//! `Robot` takes the derive's options as calls, filling the compiler's `Options`; each fault of its
+//! rules becomes a `CallFault` naming the call.
 
 use std::path::{Path, PathBuf};
 

@@ -1,5 +1,8 @@
 //! Reading the description relative to the crate's `Cargo.toml`, and loading it through the
 //! model's one loader (`kinematics_model::Source::load`).
+//!
+//! The path is resolved against `CARGO_MANIFEST_DIR` (or a given directory), and the bytes read are
+//! given to `Source::load`.
 
 use std::path::{Path, PathBuf};
 

@@ -1,4 +1,7 @@
 //! Writing a file all at once: a temporary file beside it, then a rename.
+//!
+//! `write_atomic`: a `tempfile` in the same directory, given 0666 less the umask, then a rename;
+//! unchanged contents are not rewritten.
 
 use std::io::Write as _;
 use std::path::Path;

@@ -1,6 +1,9 @@
 //! What agreement means: deterministic test configurations (the runtime's `Configurations`), the
 //! robot's reach, the distance between two poses, and the compiled expressions of every link
 //! against the runtime reference.
+//!
+//! This is what `check` and `demo` share: the pose distance is `Pose::deviation`, the tolerance the
+//! runtime's `AGREEMENT_TOLERANCE`, and a sample count at least 1.
 
 pub use kinematics::Configurations;
 use kinematics::ReferenceFk;

@@ -1,5 +1,10 @@
 //! `kinematics check FILE`: the compiled expressions against the runtime reference, and with
 //! `--collision` the collision checks against the reference's distances.
+//!
+//! Every link's compiled pose is evaluated by `Compiled::evaluator` (the nodes the poses need
+//! listed once, then one pass per configuration) against `ReferenceFk`, the configurations split
+//! across the cores (`agreement`); with `--collision`, the `collision` module's checks, which
+//! `demo` runs too.
 
 use std::io::Write;
 

@@ -11,6 +11,8 @@
 //! The samples are uniform within the joint limits, from a seeded stream: the same seed writes
 //! the same file. `Never` is a sampling judgement, as in MoveIt: a pair that touches only in a
 //! corner no sample reached is disabled; more samples make that less likely.
+//!
+//! Two links touch when their spheres, placed by the runtime reference's `sphere_centers`, do.
 
 use std::collections::BTreeMap;
 use std::io::Write;

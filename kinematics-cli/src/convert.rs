@@ -14,6 +14,8 @@
 //! URDF has no spherical joint (an MJCF `ball`: its `spherical` type is not in the specification,
 //! and no URDF joint takes a quaternion): a robot with one is refused, naming the joint, and
 //! nothing is written.
+//!
+//! The refusal is `CliError::NotUrdf`.
 
 use std::io::Write;
 

@@ -1,4 +1,7 @@
 //! Everything a subcommand can fail with; each message names the file, the element and the fault.
+//!
+//! `CliError` is printed by `main` as `error: <file>: <element>: <fault>`; `generate`'s option
+//! faults name their flag.
 
 use kinematics::{LoadError, RuntimeError};
 use kinematics_build::BuildError;

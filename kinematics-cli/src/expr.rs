@@ -1,6 +1,9 @@
 //! `kinematics expr FILE`: the simplified symbolic pose of one link and what it costs, with
 //! `--jacobian` its geometric Jacobian and what the velocity functions cost, or with `--all` what
 //! every link's pose adds to the all-links code (where the cost of a tree goes).
+//!
+//! The listings are `emit::text_listing` and `latex_listing`; the cost is `op_count` against
+//! `plain_product_count`.
 
 use std::io::Write;
 

@@ -1,4 +1,6 @@
 //! `kinematics fk FILE --q ...`: link poses at a configuration, by the runtime reference.
+//!
+//! As a table or as JSON.
 
 use std::io::Write;
 

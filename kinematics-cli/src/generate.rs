@@ -1,4 +1,7 @@
 //! `kinematics generate FILE`: the Rust module the build API writes, to stdout or a file.
+//!
+//! It calls `kinematics_build::Robot::generate` or `write_to`, so its output is the build API's
+//! byte for byte.
 
 use std::io::Write;
 

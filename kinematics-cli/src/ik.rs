@@ -1,6 +1,10 @@
 //! `kinematics ik FILE --pose ...` (or `--from-q ...`): every closed-form inverse kinematics
 //! solution of the tip, solved by the same core function the derive's `ik` key calls, with the
 //! geometry the compiler classified, each solution's errors measured by the runtime reference.
+//!
+//! The classified plan is solved as the derived code solves it: for a composed family, the compiled
+//! body's expressions evaluated branch by branch, else the core's family function; each solution's
+//! errors by `ReferenceFk`.
 
 use std::io::Write;
 

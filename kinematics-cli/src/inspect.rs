@@ -1,4 +1,7 @@
 //! `kinematics inspect FILE`: the tree as text.
+//!
+//! Then its collision geometry (shapes, spheres, bounding spheres, pairs, at a cover and SRDF of
+//! the user's choice), and each leaf's closed-form inverse kinematics family.
 
 use std::io::Write;
 

@@ -12,6 +12,9 @@
 //! work shows progress on stderr when stderr is a terminal, and nothing when it is not: a spinner
 //! while the compiler runs (`check`, `demo`, `generate`, `expr --all`), then a bar over the
 //! configurations `check` and `demo` compare.
+//!
+//! Also `ik` (closed-form solutions), `convert` (URDF text) and `collision-pairs` (an SRDF of
+//! disabled pairs). Every padded column is padded by hand and capped, so names of any length print.
 
 mod agreement;
 mod check;

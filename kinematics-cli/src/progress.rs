@@ -1,6 +1,9 @@
 //! Progress of long work (`check` on a chain of thousands of joints takes minutes), on stderr and
 //! only when stderr is a terminal: piped or redirected, the command writes exactly what it wrote
 //! before progress existed.
+//!
+//! With indicatif: a spinner while the compiler or the build API runs (they report no progress),
+//! and a bar over the configurations `check` and `demo` compare.
 
 use std::io::IsTerminal;
 use std::time::Duration;

@@ -1,4 +1,8 @@
 //! Loading a description and choosing links: by name (checked, with "did you mean") or by depth.
+//!
+//! Files are loaded with the global `--exact-angles` policy and `--format` (the files an MJCF file
+//! names read relative to it); links are picked by name, or the deepest; `--q` is read for `fk` and
+//! `draw` (zeros when omitted).
 
 use std::sync::atomic::{AtomicBool, AtomicU8, Ordering};
 

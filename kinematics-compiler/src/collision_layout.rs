@@ -4,6 +4,11 @@
 //! spheres each link's are split into (each with its bounding sphere: a check tests a link, then
 //! its groups, then their spheres). The emitter writes its tables from this layout, and
 //! `kinematics check` and `inspect` read the same one.
+//!
+//! A group holds at most four spheres (`GROUP`); the self check tests by groups. Each link's
+//! bounding sphere is found by `enclosing_sphere` (Badoiu and Clarkson's iteration towards the
+//! smallest, then the radius that holds every sphere). The layout also says what the centres cost,
+//! which `inspect` and `check` read too.
 
 use kinematics_model::KinematicTree;
 use kinematics_model::LinkId;

@@ -8,6 +8,13 @@
 //! API to its method, the CLI to its flag. Only a [`Checked`] robot can be emitted
 //! ([`crate::robot::emit_robot`]), and it carries what the checks found (the inverse kinematics'
 //! plan), so nothing is worked out twice.
+//!
+//! `Options` is everything a compiled robot can be asked for. The rules (one function each): links
+//! the robot has, none listed twice, `links` not empty, `jacobians` needs a tip, a scalar type,
+//! `ik`'s one tip, a robot without a floating or spherical joint and a covered chain,
+//! `floating_base`'s new names. Every front end maps an `OptionKey` exhaustively to its span, call
+//! or flag. The `Checked` robot holds the IK plan, so `classify` runs once. `Choice` lists are read
+//! with `choose`'s "did you mean".
 
 pub use kinematics_model::collision::Meshes;
 use kinematics_model::collision::{

@@ -1,4 +1,13 @@
 //! What to compile (base, tips, outputs) and the compiled result.
+//!
+//! `Request` is what to compile: base, tips, positions only, and a `Velocity` (Jacobian or twist,
+//! frame, with or without the pose). Compiling searches fold orders and simplifier options for the
+//! cheapest code; a velocity's entries are outputs too and go through the expression passes with
+//! the poses, so both use the same sines and cosines. A pose whose constants compose into infinity
+//! or NaN is a `CompileError` naming the link. For several poses it also builds each on an
+//! ancestor's pose already built (`extend_tips`, up to three joints up, the cheapest by what the
+//! pose adds to those before it), so a tree's links share their parents' work. `Compiled::points`
+//! builds points of links (the collision spheres' centres) in the same graph.
 
 use std::collections::BTreeSet;
 

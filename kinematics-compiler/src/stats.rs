@@ -1,4 +1,8 @@
 //! Operation counts of compiled expressions.
+//!
+//! Divisions, square roots, `atan2` and selects are counted beside the forward kinematics'
+//! operations. `marginal_counts` is what each pose adds to the poses before it
+//! (`Compiled::marginal_op_counts`, printed per link by `kinematics expr --all`).
 
 use std::collections::BTreeSet;
 use std::fmt;

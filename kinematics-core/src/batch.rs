@@ -10,6 +10,10 @@
 //! [`batch_columns`] takes the configurations column-wise (one slice per joint, as planners keep
 //! them), so packing a lane is a contiguous load rather than a transpose. Generated `*_batch` and
 //! `*_batch_columns` functions are these two.
+//!
+//! They run on the wide lanes under AVX-512 and the narrow ones otherwise; rows or columns are a
+//! `Configurations` source. The generated body reaches every dispatched function through an
+//! `#[inline(always)]` closure (see `dispatch`).
 
 use crate::error::KinematicsError;
 use crate::kinematics::check_output;

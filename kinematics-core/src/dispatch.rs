@@ -19,6 +19,9 @@
 //! `#[inline(always)]` bodies (generated bodies are). A function item passed by name goes through a
 //! call shim that is not inlined into pulp's `#[target_feature]` function, which then runs the
 //! baseline code it calls (measured in `batch`).
+//!
+//! Every generated typed function calls `dispatch` with its body. The `dispatch` feature is on with
+//! the facade's `std`.
 
 /// Runs `f` compiled for the best instruction set the CPU has (see the module doc).
 ///

@@ -1,4 +1,6 @@
 //! What a compiled robot's checked entry points return when the caller's slices do not fit.
+//!
+//! `KinematicsError` is all `'static`: nothing allocates.
 
 use core::fmt;
 

@@ -1,4 +1,7 @@
 //! The rotation of a floating or spherical joint, from the quaternion in `q`.
+//!
+//! `quaternion_matrix` gives the rotation of the joint's quaternion, normalised by dividing by its
+//! squared length; generated code calls it first.
 
 use crate::real::Real;
 

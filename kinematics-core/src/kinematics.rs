@@ -1,4 +1,6 @@
 //! The trait every compiled robot implements, so generic code can take any of them.
+//!
+//! The `Kinematics` trait, with `q_array` and `check_output`.
 
 use crate::error::KinematicsError;
 use crate::pose::Pose;

@@ -22,6 +22,8 @@
 //!     assert_eq!(x.lane(lane), planar_2r_x(&[q[0].lane(lane), q[1].lane(lane)]));
 //! }
 //! ```
+//!
+//! The `Lanes` and `LaneValue` traits describe them to the batch drivers and the checks.
 
 use core::ops::{Add, Div, Mul, Neg, Sub};
 

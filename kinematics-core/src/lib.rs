@@ -12,6 +12,10 @@
 //! Features: `std` adds [`StdTrig`] (the platform's `sin_cos`, for code generated with
 //! `trig = "std"`); `nalgebra` adds conversions of [`Pose`] to nalgebra's types and the pose
 //! distance the agreement checks use. The facade's default `std` feature turns both on.
+//!
+//! Without features it depends on `libm` only; nalgebra comes with the `nalgebra` feature and pulp
+//! with `dispatch`, both of which need `std`. Depended on by: the facade (always), the runtime, and through the
+//! facade every generated function. It depends on nothing else of ours.
 #![no_std]
 // docs.rs builds with `--cfg docsrs` on nightly (`package.metadata.docs.rs` in Cargo.toml); there
 // `doc_cfg` badges each feature-gated item with the feature it needs (nightly folded the former

@@ -1,5 +1,7 @@
 //! Conversions between [`Pose`] and nalgebra's types, and the pose distance every agreement check
 //! uses (feature `nalgebra`, on through the facade's default `std` feature).
+//!
+//! `Pose` to `Isometry3` and `Matrix4`, and `Pose::deviation`.
 
 use nalgebra::{Isometry3, Matrix3, Matrix4, RealField, Rotation3, Translation3, UnitQuaternion};
 

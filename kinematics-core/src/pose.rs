@@ -1,4 +1,6 @@
 //! The pose generated code returns.
+//!
+//! `Pose`, with the agreement tolerances.
 
 /// A rigid pose as generated code returns it: a rotation matrix (row-major) and a translation.
 ///

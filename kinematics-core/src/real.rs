@@ -6,6 +6,10 @@
 //! negation, constants and sines and cosines (division only normalises a floating joint's
 //! quaternion). No ordering, no `'static`, no conversion back to `f64`: a
 //! packed lane type cannot honestly give those.
+//!
+//! `Real` asks for `Copy`, `+ - *`, negation, `from_f64`, `sin_cos` and `sin_cos_many` (the angles
+//! of a function computed together): nothing a lane type cannot give. With `std`, `StdTrig` gives
+//! the platform's `sin_cos`, for `trig = "std"`.
 
 use core::ops::{Add, Div, Mul, Neg, Sub};
 

@@ -9,6 +9,9 @@
 //! for the number of joints, `UnknownLength` for an array of links or tips). The fallible ones
 //! return errors; the infallible ones (`tip_pose`) have nothing to return and are
 //! `unreachable!`.
+//!
+//! An `UnknownLength` indexes, iterates and compares as the array would. A test holds the stub's
+//! items equal to the emitted ones for every combination of options.
 
 use std::collections::BTreeSet;
 

@@ -6,6 +6,8 @@
 //! what the derive would have defined (the private `fallback` module), so the user sees the real errors rather than
 //! a cascade of "no function `tip_pose`" and "trait `Kinematics` not implemented".
 //! The `kinematics-derive` proc-macro crate is a shim over [`expand`].
+//!
+//! `expand` gathers every fault; the options' faults come from the compiler's rules.
 
 mod fallback;
 mod inline_dh;

@@ -13,6 +13,11 @@
 //! The keys naming the description and the links asked for are defined once, in [`SourceKeys`],
 //! and read by both readers of the attribute: [`KinematicsInput`] (every key, the others in
 //! [`OutputKeys`]) and [`DescriptionKeys`] (those keys alone, every other skipped).
+//!
+//! `SourceKeys` are `base`, `tip`, `tips` and `links` with the description's key; `DescriptionKeys`
+//! reads the description when another key failed. The keys become the compiler's `Options`, and
+//! each `OptionKey` maps back to its key's span; words (`trig`, `ik`) are read through the
+//! compiler's `Choice` lists.
 
 use darling::ast::NestedMeta;
 use darling::util::{Override, PathList, SpannedValue};

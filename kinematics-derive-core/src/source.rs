@@ -1,5 +1,7 @@
 //! Reading the description the attribute names and loading it through the model's one loader
 //! (`kinematics_model::Source::load`), with errors spanned on the key.
+//!
+//! The file is read relative to `CARGO_MANIFEST_DIR`.
 
 use std::path::PathBuf;
 

@@ -21,6 +21,14 @@
 //! centre lies `e` inside the shape is at most `R - e`: every point of it is within `R - e` of the
 //! ball of radius `e` about the centre, which the shape contains). The cover is deterministic and
 //! contains every point of the shape; `d` is the largest overshoot, the key `sphere_cover`.
+//!
+//! **What is here.** `Shape` (sphere, box, cylinder, capsule, mesh, placed by its origin) is read
+//! by the URDF reader and the urdf-rs conversion alike, its sizes checked by validation naming the
+//! link and the line; the cover is taken in each shape's own frame (capsules and cylinders on their
+//! axis, the rest by subdivision; every point contained, the overshoot at most the `sphere_cover`
+//! given); `link_spheres` gives every sphere of a robot in one fixed order, a mesh refused or
+//! skipped; `rigid_bodies` and `collision_pairs` are the pair rule. Each link's bounding sphere is
+//! the compiler's (`collision_layout`).
 
 pub mod fixed;
 

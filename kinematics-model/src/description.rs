@@ -1,4 +1,7 @@
 //! The unvalidated description: what a URDF document or DH table says, before any rule is checked.
+//!
+//! The URDF, MJCF and DH readers all produce one: names as text, nothing checked.
+//! `Description::with_floating_base` adds a free-flying root.
 
 use crate::collision::Collision;
 use crate::error::Element;

@@ -23,6 +23,9 @@
 //! a prismatic joint's to `d`; `offset` (the joint's zero offset, as in Corke's toolbox) adds to the
 //! same column. An optional `[base]` transform comes before row 1 and an optional `[tool]` frame
 //! after the last row, as a fixed joint.
+//!
+//! The table is read with serde. This module owns the column rules (`number`, `check_angle`) that
+//! the derive's inline table uses too.
 
 use serde::{Deserialize, Serialize};
 

@@ -2,6 +2,9 @@
 //!
 //! The runtime reference and the compiler both take this vocabulary from the model, so a request
 //! means the same in both (they share the model and nothing else).
+//!
+//! `JacobianFrame` names them (`LOCAL_WORLD_ALIGNED`, `LOCAL`): the vocabulary of velocities the
+//! runtime and the compiler share.
 
 /// Which axes and which point a Jacobian's rows (and a twist) refer to.
 ///

@@ -1,4 +1,10 @@
 //! Links and joints of a validated tree.
+//!
+//! It also defines what a planar, a spherical and a floating joint take (`JointKind::positions`,
+//! `velocities`, the entry names, `quaternion_offset`: where a spherical or floating joint's
+//! quaternion starts, which the tree's `quaternion_joints` and `quaternion_entries` list for every
+//! stage that normalises or moves one) and a planar joint's in-plane axes (`Joint::plane_axes`),
+//! the one piece of geometry both the runtime and the compiler need.
 
 use crate::collision::Collision;
 use crate::transform::FixedTransform;

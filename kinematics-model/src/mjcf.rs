@@ -62,6 +62,8 @@
 //! `eulerseq` that are no axis, turns a zero quaternion, axis or `xyaxes` pair into the identity
 //! rather than refusing it, and ignores attributes it does not know. The reader is therefore
 //! written on `roxmltree`, as the URDF reader is.
+//!
+//! Each error names the element, the line and, in an included file, that file.
 
 mod rotation;
 

@@ -8,6 +8,11 @@
 //! `.xml` file is URDF or MJCF as its root element (`<robot>` or `<mujoco>`) says
 //! ([`SourceFormat::detect`]). An MJCF file may name others (`<include>`, `<model file>`): the
 //! caller reads them ([`Source::load_reading`] takes a [`ReadFile`]), since this crate does no IO.
+//!
+//! `Source::load(ExactAngles)` and `load_reading` are the one loader the facade, the build API, the
+//! derive and the CLI call (the last three with a reader of files relative to the description's
+//! directory); generated `reference()` functions read the files embedded beside the text
+//! (`parse_source_files`).
 
 use crate::description::Description;
 use crate::error::{LoadError, LoadErrorKind};

@@ -2,6 +2,8 @@
 //! `<disable_collisions link1 link2 reason>` pairs, whose links are never checked against each
 //! other. Every other element (groups, group states, end effectors, virtual and passive joints,
 //! sphere approximations) is listed in [`Srdf::ignored`] and not applied.
+//!
+//! Unknown links are refused with a suggestion.
 
 use std::collections::{BTreeMap, BTreeSet};
 

@@ -1,5 +1,7 @@
 //! "Did you mean" for names a user typed, and the size of a robot: small helpers every front end
 //! (derive, build API, command line) needs to say the same thing.
+//!
+//! `find_link` finds a link by name (with "did you mean"); the reach is the robot's size.
 
 use crate::error::UnknownLink;
 use crate::tree::{KinematicTree, LinkId};

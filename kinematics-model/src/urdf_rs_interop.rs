@@ -10,6 +10,12 @@
 //! repository both ways, with the policy on and off).
 //!
 //! What urdf-rs does not keep, the conversion cannot report: [`Description::from_urdf_rs`] lists it.
+//!
+//! The feature is off by default; the facade's `urdf-rs` feature forwards to it. It takes the
+//! `urdf_rs::Robot` of urdf-rs 0.9, the version `k` 0.32 uses, through `Description::from_urdf_rs`
+//! and `KinematicTree::from_urdf_rs(robot, ExactAngles)`. Errors name the joint without a line, and
+//! a moving joint whose limits are urdf-rs's all-zero stand-in for a missing `<limit>` is refused.
+//! `tests/urdf_rs_parity.rs` requires equal trees from both readers, or the same refusal.
 
 use urdf_rs::{JointLimit, JointType};
 

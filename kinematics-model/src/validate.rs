@@ -7,6 +7,9 @@
 //! **Cost.** Loading is O(n log n) in the number of links and joints: names are looked up in
 //! ordered maps built once, every walk (parent pointers, mimic chains) visits each element once,
 //! and nothing scans all joints per link.
+//!
+//! Every fault is collected into `ModelErrors`; the `KinematicTree` (`tree.rs`, `joint.rs`) is then
+//! assembled.
 
 use std::collections::{BTreeMap, BTreeSet};
 

@@ -3,6 +3,12 @@
 //! (as an nalgebra isometry), applied to the cover's centre. Shares nothing with the compiler but
 //! the model's selections: the spheres, and the sphere pairs held apart for good that the
 //! clearance leaves out.
+//!
+//! `ReferenceFk::sphere_centers` gives each sphere's centre; the signed distances of
+//! `obstacle_distance`, `self_distance` (and `measured_self_distances`, less the pairs held apart
+//! for good, for the clearance) and a held object's `held_distances` are parry3d-f64's
+//! (`ReferenceObstacles`: the core's obstacles as parry shapes, by the reference's own reading of
+//! them).
 
 use std::collections::BTreeSet;
 

@@ -1,4 +1,7 @@
 //! The runtime side of a compiled robot: its reference model.
+//!
+//! `ReferenceModel` is the trait of a compiled robot whose reference can be built (`reference()`),
+//! which generated code implements with the `std` feature.
 
 use crate::fk::ReferenceFk;
 use kinematics_core::Kinematics;

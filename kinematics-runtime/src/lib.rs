@@ -24,6 +24,10 @@
 //! assert!((tip.translation.vector - nalgebra::Vector3::new(0.0, 2.0, 0.0)).norm() < 1e-12);
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
+//!
+//! `ReferenceFk` is the reference forward kinematics over the tree (`fk.rs`) and the geometric
+//! Jacobian (`jacobian.rs`), all with nalgebra's `Isometry3`, `UnitQuaternion` and `Translation3`.
+//! The crate re-exports the core's `Pose`, `Real`, `Kinematics` and tolerances.
 
 mod collision;
 mod compiled;

@@ -1,6 +1,8 @@
 //! A scene file's obstacles as the core's obstacle types: what a compiled robot's `collides`
 //! takes (through [`SceneObstacles::environment`]) and what the reference checks
 //! ([`SceneObstacles::reference`]).
+//!
+//! `SceneObstacles` is what the facade's `load_scene` returns.
 
 use kinematics_core::collision::{
     BoxObstacle, CapsuleObstacle, CylinderObstacle, Environment, ObstacleError, SphereObstacle,

@@ -1,6 +1,8 @@
 //! The full accuracy sweep: `cargo run --release -p trig-accuracy -- --points 100000000` measures
 //! that many fixed-seed points per range, for f64 and f32, ours and (with `--wide`) wide's, and
 //! prints one markdown table per precision.
+//!
+//! Its table is in `SWEEP.md` (run with `--points 100000000 --wide`).
 
 use std::time::Instant;
 use trig_accuracy::{Errors, RANGES_F32, RANGES_F64, Subject, sweep_f32, sweep_f64};

@@ -10,6 +10,9 @@
 //! assert_eq!(Ur5::tip_position(&q), flange.translation);
 //! assert_eq!(Ur5::TIPS, ["tool0"]);
 //! ```
+//!
+//! `build.rs` generates the UR5 and the Panda with the build API; this file `include!`s them. Being
+//! a workspace member, its generated code goes through the workspace's clippy run.
 
 include!(concat!(env!("OUT_DIR"), "/ur5.rs"));
 include!(concat!(env!("OUT_DIR"), "/panda.rs"));

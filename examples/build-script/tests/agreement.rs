@@ -1,6 +1,8 @@
 //! The code `build.rs` generated, against the runtime reference (`kinematics::load` +
 //! `ReferenceFk`) on a few thousand random configurations, and against `#[derive(Kinematics)]`
 //! structs of the same robots with the same options, which must give the very same numbers.
+//!
+//! 3,000 configurations, within `AGREEMENT_TOLERANCE` of the reference.
 #![allow(clippy::panic, clippy::unwrap_used, clippy::expect_used)] // test helpers fail loudly
 
 use kinematics::{AGREEMENT_TOLERANCE, Configurations, Kinematics, Pose, ReferenceFk};

@@ -4,6 +4,10 @@
 //! Inside the workspace, cargo unifies features across members, so `kinematics` gets `std` from
 //! the other crates; these tests therefore run cargo on this package alone, in a target directory
 //! of its own (the outer `cargo test` holds the workspace's).
+//!
+//! `cargo tree` must list only `kinematics`, `kinematics-core` and `libm`, with no `std` feature,
+//! and the binary must hold no symbol of roxmltree, nalgebra, serde_json, toml, the model or the
+//! runtime.
 
 #![allow(clippy::expect_used)] // test helpers fail loudly
 

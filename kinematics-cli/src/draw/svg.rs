@@ -7,6 +7,8 @@
 //! unit direction `data-dx`, `data-dy`, `data-dz`) in Rust's shortest round-trip form, so a reader
 //! gets the runtime's numbers back exactly; screen coordinates have three decimals. The output
 //! depends on the scene alone (no hash map, no clock).
+//!
+//! The tests read the picture back through these attributes.
 
 use std::fmt::Write as _;
 

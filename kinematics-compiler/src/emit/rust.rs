@@ -1,4 +1,9 @@
 //! Rust tokens through `quote`: one function per compiled request.
+//!
+//! Rust is built as tokens with `quote`, never text parsed back. `straight_line` gives the
+//! statements of any graph with named inputs, for the IK's bodies; `emit_points` the sphere
+//! centres. Generic bodies are `#[inline(always)]` into their typed callers, so arrays of poses are
+//! stored where the caller keeps them rather than copied there.
 
 use proc_macro2::{Delimiter, Group, Ident, Literal, Punct, Spacing, Span, TokenStream};
 use quote::{ToTokens as _, TokenStreamExt as _, format_ident, quote};

@@ -1,4 +1,11 @@
 //! Scheduling: which nodes get a `let`, in what order, and under which name.
+//!
+//! A node gets a `let` when it is used more than once (a negation's operand counting each use of
+//! the negation), and when its expression would nest deeper than `INLINE_DEPTH_LIMIT`, so no
+//! emitted expression is deeper than `MAX_EXPRESSION_DEPTH`. The sines and cosines come first,
+//! after only what the angles are computed from: with our trig (`Trig::Fast`) one
+//! `T::sin_cos_many([...])` call for every angle of the function, computed side by side in SIMD
+//! lanes; with `Trig::Std` one `sin_cos_std` call each.
 
 use std::collections::{BTreeMap, BTreeSet};
 

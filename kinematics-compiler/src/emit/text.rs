@@ -7,6 +7,8 @@
 //! needed: every node is then written out in full at most once, apart from short shared pieces,
 //! so the text is linear in the size of the graph. Small robots have no such temporaries (the
 //! UR5's pose prints as it always did).
+//!
+//! `INLINE_BUDGET` is 64 bytes.
 
 use super::names::Names;
 use crate::symbolic::graph::{ExprGraph, ExprId, Node};

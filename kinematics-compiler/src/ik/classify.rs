@@ -8,6 +8,14 @@
 //! Offsets along an axis do not change the robot (a point may slide along its axis line), so the
 //! plan places the points of meeting axes at their common point: a spherical wrist's three points
 //! at the wrist centre (`p45 = p56 = 0`), a UR's last two at theirs (`p56 = 0`), and so on.
+//!
+//! A distance joint in line with its offsets is refused. Every six-joint plan is then run through
+//! its own solver on eight sample poses of the arm and taken only if it finds at least six of them
+//! (the check that catches an arm degenerate for a family in ways no relation of two axes shows).
+//! With a free joint, only families whose relations keep to one side of it are tried, checked at
+//! five of its angles. Chains of two to four joints are tried as planar arms. The result is an
+//! `IkPlan` with its `IkGeometry` (six-joint or planar), or `NoIkFamily` with every family's
+//! reason.
 
 use kinematics_model::{JointKind, KinematicTree};
 

@@ -2,6 +2,8 @@
 //! scalar, so that `F64x8` evaluates the eight branches side by side in its lanes. The robot's
 //! inverse kinematics functions that call it (or the run time's family solver) are written with
 //! the other output kinds, in `robot::ik`.
+//!
+//! The body is emitted as the generic function `generic_tip_ik_branch`.
 
 use proc_macro2::{Ident, Literal, Span, TokenStream};
 use quote::{format_ident, quote};

@@ -8,6 +8,9 @@
 //! solutions take several times the products that follow. A chain whose angles are not sums and
 //! differences of joint values (a mimic joint's multiple of one) has no such form, and is
 //! measured at `q` with the pose's own function.
+//!
+//! `Measure` is this pose, with every joint's cosine and sine an input and angle sums by formula,
+//! so the solutions are measured without `sin_cos`.
 
 use proc_macro2::{Ident, Literal, Span, TokenStream};
 use quote::{format_ident, quote};

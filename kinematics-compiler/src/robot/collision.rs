@@ -5,6 +5,11 @@
 //! body from the same compile returns the poses of the links with spheres, and the block holds
 //! the tables the core's checks read (each sphere in its link's frame, each link's bounding
 //! sphere: [`crate::collision_layout`]).
+//!
+//! The centres are built in the graph (`Compiled::points`) and emitted by `emit::emit_points`. The
+//! checks come in every form (`collides` and `self_collides` typed, in batches, in column batches,
+//! generic on lanes), `motion_collides` per scalar, and `hold` with its `HOLD_TABLES` (each link's
+//! carrier and fixed pose).
 
 use proc_macro2::{Literal, TokenStream};
 use quote::quote;

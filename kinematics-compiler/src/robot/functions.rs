@@ -1,6 +1,11 @@
 //! Batches and lanes: from one generic body, the functions on the type (a typed one per scalar,
 //! a batch per scalar over slices in SIMD lanes, and the `_generic` one for any `Real`), with the
 //! signatures [`super::surface`] renders.
+//!
+//! Per computation: the typed functions, each calling its body through the core's `dispatch`; a
+//! `_generic` one for any `Real` (not dispatched); and `_batch` and `_batch_columns` ones over
+//! slices (`F64x4`/`F32x8` lanes, `F64x8`/`F32x16` under AVX-512, through the core's `batch_wide`
+//! and `batch_columns`).
 
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};

@@ -1,5 +1,8 @@
 //! The block around everything: the generic bodies, the type's `impl` (constants, functions,
 //! `reference()`), `impl Kinematics` and `impl ReferenceModel`.
+//!
+//! `reference()` and `impl ReferenceModel` sit inside the facade's `with_std!`, parsing with the
+//! tree's exactness policy.
 
 use kinematics_model::ExactAngles;
 use proc_macro2::{Literal, TokenStream};

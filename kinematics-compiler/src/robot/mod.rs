@@ -20,6 +20,11 @@
 //! user's scope, as a hand-written function's would be. The module reaches the crate by
 //! [`RobotSpec::krate`], so that path must name it from any module (an absolute path, a
 //! `crate::` path or a dependency's name), as the `crate` option's renamed dependency does.
+//!
+//! One module per kind of output: `poses`, `velocities`, `ik`, `constants`, `collision`, `impls`
+//! (the block, the trait impls and `reference()`), `functions` (a generic body into its typed,
+//! batch and `_generic` functions), and `surface`, the API surface as data; `emit_robot` walks the
+//! surface's outputs and compiles each.
 
 mod collision;
 mod constants;

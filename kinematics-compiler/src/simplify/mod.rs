@@ -62,6 +62,8 @@
 //! Every pass has text-in, text-out unit tests beside it, written in the text of
 //! [`steps_text`](crate::symbolic::step::steps_text) and
 //! [`expr_text`](crate::symbolic::step::expr_text).
+//!
+//! The passes are `ChainPass`es and `ExprPass`es.
 
 mod angle_sum;
 mod constant;

@@ -17,6 +17,11 @@
 //! one cross product however many joints its angle sums (cheaper than forming `J` and
 //! multiplying). The joint rates are the graph's variables after the joint positions
 //! (`q[dof + i]` is `qdot[i]`).
+//!
+//! `Differential` records, folding from the base out, each moving step's axis and origin (or, for a
+//! translation, its symbolic derivative); the geometric Jacobian or the twist is the sum of what
+//! each contributes. For `LOCAL` the inverted chain is folded from the tip, so axes and origins
+//! come out in the tip's axes. Lever arms have the terms the tip and joint origins share cancelled.
 
 use rustc_hash::FxHashMap;
 

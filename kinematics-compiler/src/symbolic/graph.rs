@@ -5,6 +5,12 @@
 //! nothing), operands of `+` and `*` are ordered by id, and `sin^2 x + cos^2 x` is `1`. Equal
 //! nodes get equal ids (the `memo` map), so common subexpressions are shared as they are built.
 //! Children are always older than their parents: ids are a topological order.
+//!
+//! The graph is an arena of `Node`s indexed by `ExprId`, with the memo map; canonicalisation
+//! happens at construction, not in passes. The forward kinematics' nodes are constants, joint
+//! variables, sines, cosines, sums, products and negations; the inverse kinematics adds inputs,
+//! quotients, square roots, `atan2` and selects, folded the same way (a constant `atan2` by the
+//! core's own).
 
 use rustc_hash::FxHashMap;
 

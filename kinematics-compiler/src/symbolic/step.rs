@@ -1,4 +1,7 @@
 //! The chain IR: a rigid transform as a product of steps, which the simplifier rewrites.
+//!
+//! The steps are `Rotate`, `Translate`, `Permute` and `ConstRotate`. This module also prints chains
+//! and expressions as text (`steps_text`, `expr_text`) for the passes' tests.
 
 use std::fmt;
 

@@ -1,5 +1,7 @@
 //! Symbolic rigid transforms (3x3 rotation and translation; the constant bottom row is implicit)
 //! and the folds that evaluate a chain of steps into one.
+//!
+//! There are two folds: from the tool back, and from the base out.
 
 use super::graph::{ExprGraph, ExprId};
 use super::step::{SignedPerm, Step, axis_aligned};

@@ -14,6 +14,10 @@
 //! (`LOCAL_WORLD_ALIGNED`, at each link's origin): a sphere at `c` on a link at `t` moves by
 //! `v + w x (c - t)`, so its distance along the unit direction `n` changes by `n . v + (c - t) x n
 //! . w`; each link's six coefficients are summed first and its Jacobian taken once.
+//!
+//! `clearance` and `proximity_cost` scan the self pairs first, then the obstacles, pruned by
+//! bounding spheres against the nearest pair or the margin; the sphere pairs held apart for good
+//! are left out.
 
 use super::distance::{cross, each3, length, unit};
 use super::obstacles::{Environment, Obstacle, Prepared, SphereQuery, Visit, lane_dot, lane_sub};

@@ -11,6 +11,8 @@
 //! once; otherwise the blocks and then the cells its reach overlaps are visited, a block or cell
 //! lying wholly within reach answering at once, one wholly out of reach skipped, and only the
 //! rest testing their points.
+//!
+//! `PointCloud` is asked through `SphereQuery`, which an `Environment` takes with `with_query`.
 
 use std::collections::VecDeque;
 use std::vec;

@@ -10,6 +10,9 @@
 //!
 //! No heap: the object's spheres are the caller's slice, and which links it is not tested
 //! against is a bit set of a size the compiled robot chooses (`W` words of 64 links each).
+//!
+//! `Held` is made from the generated `HoldTables` (each link's carrier and fixed pose) and checked
+//! against the obstacles and the links off its body.
 
 use core::marker::PhantomData;
 

@@ -6,6 +6,10 @@
 //! lanes one step along their run at a time), so a collision anywhere is met within a few
 //! checks, VAMP's way; once one is met, only the configurations before it are still checked, and
 //! the answer is the first colliding one, as checking them one by one in order would give.
+//!
+//! `Motion` is a straight motion's checked configurations at a resolution; `motion_wide` is the
+//! search for its first colliding one in the lanes the CPU fills; `motions_wide` and
+//! `first_collisions` check several motions, one per lane.
 
 use crate::error::KinematicsError;
 use crate::lanes::Lanes;

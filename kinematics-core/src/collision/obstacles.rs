@@ -1,3 +1,8 @@
+//! Obstacles at run time: sphere, capsule, cylinder and oriented box, each tested against a sphere
+//! by squared distances on any lane type, and `Environment`, borrowed slices of them refusing NaN,
+//! infinities and sizes that are not positive. `SphereQuery` is how a check asks other obstacles (a
+//! point cloud) about a sphere; an `Environment` takes one with `with_query`.
+
 use libm::sqrt;
 
 use super::verdicts::{CheckLanes, Flags};

@@ -6,6 +6,9 @@
 //! hits, then only on the lanes it hits; a lane found colliding is not tested again, and a check ends as soon as
 //! every lane is colliding. Every obstacle is tested until one is hit, so the order of the
 //! obstacles does not change an answer.
+//!
+//! `CollisionTables` holds what a compiled robot's `collides` and `self_collides` run on its links'
+//! poses. The self pairs are tested group by group; each lane is decided once.
 
 use super::held::HeldObject;
 use super::obstacles::{Environment, Obstacle, Prepared, SphereQuery, Vec3, Visit, query_lanes};

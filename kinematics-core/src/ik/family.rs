@@ -11,6 +11,15 @@
 //! frame. Offsets along an axis can be moved freely, and the compiler moves them so that the
 //! axes a family needs to meet have a zero offset between them (`p45 = p56 = 0` for a spherical
 //! wrist).
+//!
+//! `Arm6` is a six-joint arm at `q = 0` as a product of exponentials; one function per closed-form
+//! family composes the subproblems into its branches (all eight, or two per real root of a quartic
+//! for the general spherical wrist and the three-parallel arm), the Stanford arm's slide by a
+//! quadratic. At the wrist's singularity each branch gets a representative, which for the arms with
+//! axes 2, 3, 4 parallel moves the sum of those joints where `q6 = 0` would leave the elbow out of
+//! reach (`free_sixth`). `FreeArm6` is the six of a seven-joint arm with the part after the free
+//! joint turned at run time; `PlanarArm` is two or three revolute joints about parallel axes and at
+//! most one prismatic joint along them, solved for what such an arm can reach.
 
 use super::solutions::{IkSolution, IkSolutions};
 use super::subproblem::{

@@ -21,6 +21,10 @@
 //! assert!((angles.lane(1) + core::f64::consts::FRAC_PI_3).abs() < 1e-15);
 //! assert_eq!(angles.lane(1).to_bits(), root(-1.0f64).to_bits());
 //! ```
+//!
+//! `IkReal` is implemented for `f64`, `F64x4` and `F64x8`, every lane bit for bit the scalar's
+//! (square root, our `atan2`, a lane-wise select). `IkBranch` is what a compiled body returns;
+//! `BRANCH_SIGNS_8` are the branch signs as lanes.
 
 use crate::lanes::{F64x4, F64x8};
 use crate::real::Real;

@@ -1,5 +1,9 @@
 //! What an inverse kinematics call returns: every branch's joint values with what is known of
 //! them, in a fixed-capacity list (no heap), and the error for a target that is no pose.
+//!
+//! `IkSolutions` has a fixed capacity: `measure` with the robot's forward kinematics, `from_lanes`
+//! from a compiled body's branches and their poses in lanes, `nearest`, `within_limits`;
+//! `check_target` and `IkError` for the target.
 
 use core::fmt;
 

@@ -14,6 +14,11 @@
 //!
 //! Subproblems 3 and 4 are both `a cos t + b sin t = c` ([`cos_sin_equation`]). No function here
 //! returns NaN for finite input: a degenerate case gives a representative angle and a flag.
+//!
+//! Each angle is a `Turn` carrying its cosine and sine from the same arithmetic, so rotating by a
+//! solved angle costs no trigonometric call. Every result is flagged exact or least-squares,
+//! singular or not. Subproblems 5 and 6 are in `circles` (reduced to a degree-two trigonometric
+//! polynomial in one angle) and `polynomial` (the real roots of its quartic).
 
 use super::vector::{V3, add, cross, dot, norm_squared, scale, sub};
 

@@ -21,6 +21,9 @@
 //!
 //! Degenerate input (a zero quaternion, axis or `xyaxes` pair) is `None`, for the reader to refuse
 //! naming the element and the line; MuJoCo's compiler refuses it too.
+//!
+//! This is the one place the model computes with a rotation, because its fixed transforms hold only
+//! elementary steps.
 
 use crate::angle::Angle;
 use crate::transform::Axis;

@@ -3,6 +3,10 @@
 //! one branch at a time. Three binary choices pick the branch (`signs[0]` outermost, the order
 //! of the run time's nested loops), so the body evaluated with every combination of signs gives
 //! the eight solutions in the run time's order.
+//!
+//! The UR family has its pass at the wrist's singularity (where `q6 = 0` leaves the elbow out of
+//! reach, the sum of the parallel joints moves: the core's `free_sixth`), which `IkBody::regular`
+//! leaves out.
 
 use kinematics_core::ik::ORTHOGONAL;
 

@@ -12,6 +12,10 @@
 //! joint. The general spherical wrist and the three-parallel arm, whose first step is a quartic
 //! (its real roots found by an iteration), the planar arms and the six of a seven-joint arm (its
 //! geometry turned by the free joint at run time) keep the run time's family functions.
+//!
+//! Steps carry labels, for `expr --ik`'s per-subproblem counts. `algebra` writes vectors, turns and
+//! flags as expressions, `subproblem` subproblems 1-4 as the core writes them, `family` the five
+//! families.
 
 mod algebra;
 mod family;

@@ -5,6 +5,14 @@
 //! (so the optimiser folds it into the body). Either way every solution is measured with the
 //! robot's generated forward kinematics, and the nearest and within-limits forms follow. Also
 //! the numeric solver's two functions.
+//!
+//! The items: `tip_ik`, `tip_ik_nearest`, `tip_ik_within_limits`, `IK_FAMILY`, `IK_ARM`. For a
+//! composed family the body and the measure are generic functions, `tip_ik` running the eight
+//! branches in `F64x8` lanes and `tip_ik_branch_generic` exposing the body; where the family has a
+//! singular pass, `generic_tip_ik_branch_regular` too, which `tip_ik` runs first, the whole body
+//! only when a lane comes back singular and not exact. For the other families the plan's geometry
+//! is a constant passed to the core's family function, the solutions measured by the generated
+//! pose. `tip_ik_numeric` runs on the generated pose and Jacobian.
 
 use proc_macro2::{Ident, Literal, Span, TokenStream};
 use quote::{format_ident, quote};
