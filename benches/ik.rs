@@ -2,9 +2,9 @@
 //! bodies: every solution of a pose, the solution nearest a seed, the run time's family function
 //! they were compiled from, and the compiled body alone on eight lanes, on four and on one; and
 //! one arm of each family whose first step is a quartic, which `tip_ik` solves with the run
-//! time's family function) and the numeric solver on the seven-joint arms (Panda, iiwa 14)
-//! against the `k` crate's Jacobian IK solver on the same targets and seeds, with both success
-//! rates. `ik-geo`, the run-time IK-Geo, builds nlopt with cmake, so its side of the comparison
+//! time's family function) and the numeric solver on the seven-joint arms (Panda, iiwa 14) and
+//! the UR5 against the `k` crate's Jacobian IK solver on the same targets and seeds, with both
+//! success rates. `ik-geo`, the run-time IK-Geo, builds nlopt with cmake, so its side of the comparison
 //! lives in `benches/ik-geo/` (its own crate, run by its script), not here.
 //!
 //! `cargo bench --bench ik` measures; under `cargo test` every body runs once and is checked
@@ -328,7 +328,7 @@ fn compiled<R: Compiled>(c: Option<&mut Criterion>) {
     record_pair(R::NAME, "solver/all", 101, 2000, INPUTS, |i| R::solver(&targets[i]), |i| R::all(&targets[i]));
 }
 
-/// One seven-joint robot's numeric solver and its `k` chain.
+/// One robot's numeric solver and its `k` chain.
 struct Numeric<const N: usize> {
     name: &'static str,
     file: &'static str,
@@ -475,7 +475,7 @@ fn all(mut c: Option<&mut Criterion>) {
         },
     );
     numeric(
-        c,
+        c.as_deref_mut(),
         &Numeric {
             name: "iiwa14",
             file: "iiwa14.urdf",
@@ -484,6 +484,19 @@ fn all(mut c: Option<&mut Criterion>) {
             pose: Iiwa14::tip_pose,
             solve: Iiwa14::tip_ik_numeric,
             reference: <Iiwa14 as ReferenceModel>::reference,
+        },
+    );
+    // The closed-form arm's numeric solver too: OptIK's protocol times it on the UR5.
+    numeric(
+        c,
+        &Numeric {
+            name: "ur5",
+            file: "ur5.urdf",
+            tip: "tool0",
+            limits: Ur5::JOINT_LIMITS,
+            pose: Ur5::tip_pose,
+            solve: Ur5::tip_ik_numeric,
+            reference: <Ur5 as ReferenceModel>::reference,
         },
     );
 }

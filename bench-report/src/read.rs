@@ -237,7 +237,7 @@ const CLOSED: [(&str, &str, Option<RobotFile>); 5] = [
     ("offset-wrist-ur", "UR, wrist offset (quartic)", None),
 ];
 /// The numeric robots.
-const NUMERIC: [(&str, &str); 2] = [("panda", "Panda"), ("iiwa14", "iiwa 14")];
+const NUMERIC: [(&str, &str); 3] = [("panda", "Panda"), ("iiwa14", "iiwa 14"), ("ur5", "UR5")];
 
 /// One closed-form robot's IK medians (ns per call) and operation counts.
 #[derive(Default)]

@@ -32,9 +32,11 @@
 //! ```
 
 mod family;
+mod ldl;
 mod numeric;
 mod real;
 pub(crate) use real::square_root;
+mod refine;
 mod solutions;
 pub mod subproblem;
 mod target;
@@ -47,6 +49,7 @@ pub use family::{
 };
 pub use numeric::{NumericOptions, NumericSolution, levenberg_marquardt};
 pub use real::{BRANCH_SIGNS_8, IkBranch, IkReal, branch_signs, branch_signs_4, splat_pose};
+pub use refine::{LONGEST_CORRECTION, REFINE_ABOVE, RefineArm};
 pub use solutions::{IkError, IkSolution, IkSolutions, ROTATION_TOLERANCE, check_seed, check_target, pose_errors};
 pub use target::IkTarget;
 
@@ -68,6 +71,37 @@ impl Arm6 {
             point = add(self.offsets[i], rotate(self.axes[i], q[i], point));
         }
         Pose { rotation, translation: point }
+    }
+
+    /// [`Self::pose`] and the geometric Jacobian at `q` in `LOCAL_WORLD_ALIGNED` (column `i`:
+    /// the linear velocity of the tip's origin and the angular velocity, in the base frame, per
+    /// unit rate of joint `i`), as the generated `tip_pose_and_jacobian` gives them (for tests
+    /// and tools, such as refining solutions with [`IkSolutions::refine`]).
+    pub fn pose_and_jacobian(&self, q: &[f64; 6]) -> (Pose<f64>, [[f64; 6]; 6]) {
+        // From the base out: joint i turns about R_0(i-1) h_i through the point reached so far.
+        let mut rotation = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+        let mut point = self.offsets[0];
+        let mut axes = [[0.0; 3]; 6];
+        let mut points = [[0.0; 3]; 6];
+        for i in 0..6 {
+            axes[i] = vector::mul(&rotation, self.axes[i]);
+            points[i] = point;
+            // R_0i = R_0(i-1) rot(h_i, q_i): each column of R_0(i-1) turned about the joint's axis.
+            let columns = [0, 1, 2].map(|j| rotate(axes[i], q[i], [rotation[0][j], rotation[1][j], rotation[2][j]]));
+            rotation = [0, 1, 2].map(|r| [columns[0][r], columns[1][r], columns[2][r]]);
+            point = add(point, vector::mul(&rotation, self.offsets[i + 1]));
+        }
+        let tool =
+            [0, 1, 2].map(|r| [0, 1, 2].map(|c| (0..3).map(|k| rotation[r][k] * self.tool_rotation[k][c]).sum()));
+        let mut jacobian = [[0.0; 6]; 6];
+        for i in 0..6 {
+            let linear = vector::cross(axes[i], vector::sub(point, points[i]));
+            for k in 0..3 {
+                jacobian[k][i] = linear[k];
+                jacobian[3 + k][i] = axes[i][k];
+            }
+        }
+        (Pose { rotation: tool, translation: point }, jacobian)
     }
 }
 

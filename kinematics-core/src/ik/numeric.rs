@@ -22,6 +22,7 @@
 //! most a radian keeps a start from crossing the workspace into a limit on its first, linearised,
 //! step.
 
+use super::ldl::ldl_solve;
 use super::solutions::pose_errors_inline as pose_errors;
 use super::vector::{V3, dot, sub};
 use crate::kinematics::JointLimits;
@@ -104,7 +105,7 @@ fn rotation_vector(r: &[[f64; 3]; 3]) -> V3 {
 /// The error twist from `reached` to `target`: position difference, then rotation vector of
 /// `R_target R_reached^T`, both in the base frame.
 #[inline(always)]
-fn error_twist(reached: &Pose<f64>, target: &Pose<f64>) -> [f64; 6] {
+pub(super) fn error_twist(reached: &Pose<f64>, target: &Pose<f64>) -> [f64; 6] {
     let p = sub(target.translation, reached.translation);
     let t = &target.rotation;
     let r = &reached.rotation;
@@ -128,55 +129,6 @@ const DAMPING_TRIES: usize = 4;
 /// The largest change of one joint in one step (radians, or metres for a prismatic joint): a
 /// longer step is scaled down whole, keeping its direction.
 pub const MAX_JOINT_STEP: f64 = 1.0;
-
-/// Solves `a x = b` for a symmetric positive definite `a` by its `L D L^T` factorisation, in
-/// place; `false` if `a` is not positive definite (to rounding). `L D L^T` rather than Cholesky's
-/// `L L^T`: no square roots, whose latency chained pivot to pivot was a third of a solve's time.
-/// Each pivot's reciprocal is taken once and multiplied by (a division takes several times a
-/// multiplication's latency). `L` (unit diagonal) is left below the diagonal, `D` on it, and
-/// `L D` above it.
-#[allow(clippy::needless_range_loop, reason = "a factorisation reads as the index arithmetic it is")]
-#[inline(always)]
-fn ldl_solve<const N: usize>(a: &mut [[f64; N]; N], b: &mut [f64; N]) -> bool {
-    let mut inverse = [0.0; N];
-    for j in 0..N {
-        let mut d = a[j][j];
-        for k in 0..j {
-            // L[j][k] D[k], kept above the diagonal for the rows below this one.
-            let scaled = a[j][k] * a[k][k];
-            a[k][j] = scaled;
-            d -= scaled * a[j][k];
-        }
-        if d <= 0.0 || !d.is_finite() {
-            return false;
-        }
-        a[j][j] = d;
-        inverse[j] = 1.0 / d;
-        for i in j + 1..N {
-            let mut s = a[i][j];
-            for k in 0..j {
-                s -= a[i][k] * a[k][j];
-            }
-            a[i][j] = s * inverse[j];
-        }
-    }
-    // L z = b, then L^T x = D^-1 z.
-    for i in 0..N {
-        let mut s = b[i];
-        for k in 0..i {
-            s -= a[i][k] * b[k];
-        }
-        b[i] = s;
-    }
-    for i in (0..N).rev() {
-        let mut s = b[i] * inverse[i];
-        for k in i + 1..N {
-            s -= a[k][i] * b[k];
-        }
-        b[i] = s;
-    }
-    true
-}
 
 #[inline(always)]
 fn clamp<const N: usize>(q: &mut [f64; N], limits: &[JointLimits; N]) {
@@ -363,7 +315,10 @@ struct Step<const N: usize> {
 
 /// The normal equations of the least-squares step: `J^T J` and `J^T e`.
 #[inline(always)]
-fn normal_equations<const N: usize>(jacobian: &[[f64; N]; 6], error: &[f64; 6]) -> ([[f64; N]; N], [f64; N]) {
+pub(super) fn normal_equations<const N: usize>(
+    jacobian: &[[f64; N]; 6],
+    error: &[f64; 6],
+) -> ([[f64; N]; N], [f64; N]) {
     let mut a = [[0.0; N]; N];
     let mut g = [0.0; N];
     for i in 0..N {
@@ -451,46 +406,6 @@ mod tests {
         // A half turn about x: either sign of the axis is the same rotation.
         let w = rotation_vector(&[[1.0, 0.0, 0.0], [0.0, -1.0, 0.0], [0.0, 0.0, -1.0]]);
         assert!((w[0].abs() - core::f64::consts::PI).abs() < 1e-15 && w[1] == 0.0 && w[2] == 0.0, "{w:?}");
-    }
-
-    #[test]
-    fn ldl_solves_and_refuses() {
-        let mut a = [[4.0, 2.0], [2.0, 3.0]];
-        let mut b = [2.0, 1.0];
-        assert!(ldl_solve(&mut a, &mut b));
-        assert!((b[0] - 0.5).abs() < 1e-15 && b[1].abs() < 1e-15, "{b:?}");
-        let mut singular = [[1.0, 1.0], [1.0, 1.0]];
-        assert!(!ldl_solve(&mut singular, &mut [1.0, 1.0]));
-        let mut indefinite = [[1.0, 2.0], [2.0, 1.0]];
-        assert!(!ldl_solve(&mut indefinite, &mut [1.0, 1.0]));
-    }
-
-    /// Random symmetric positive definite systems of sizes 1 to 9 (`B^T B + I`): the solution
-    /// reproduces the right-hand side.
-    #[test]
-    fn ldl_solves_random_systems() {
-        let mut rng = SplitMix(7);
-        fn check<const N: usize>(rng: &mut SplitMix) {
-            for _ in 0..50 {
-                let b: [[f64; N]; N] = core::array::from_fn(|_| core::array::from_fn(|_| 2.0 * rng.next() - 1.0));
-                let a: [[f64; N]; N] = core::array::from_fn(|i| {
-                    core::array::from_fn(|j| (0..N).map(|k| b[k][i] * b[k][j]).sum::<f64>() + f64::from(i == j))
-                });
-                let rhs: [f64; N] = core::array::from_fn(|_| 2.0 * rng.next() - 1.0);
-                let mut x = rhs;
-                assert!(ldl_solve(&mut a.clone(), &mut x), "{a:?}");
-                for i in 0..N {
-                    let back: f64 = (0..N).map(|j| a[i][j] * x[j]).sum();
-                    assert!((back - rhs[i]).abs() < 1e-12, "size {N}: row {i}: {back} against {}", rhs[i]);
-                }
-            }
-        }
-        check::<1>(&mut rng);
-        check::<2>(&mut rng);
-        check::<3>(&mut rng);
-        check::<6>(&mut rng);
-        check::<7>(&mut rng);
-        check::<9>(&mut rng);
     }
 
     /// A planar 2R arm with unit links, its pose and Jacobian by hand.

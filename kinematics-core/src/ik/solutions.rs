@@ -152,6 +152,11 @@ impl<const N: usize, const M: usize> IkSolutions<N, M> {
         &self.solutions[..self.len]
     }
 
+    /// The solutions, in branch order, to change in place (the refinement's).
+    pub(super) fn solutions_mut(&mut self) -> &mut [IkSolution<N>] {
+        &mut self.solutions[..self.len]
+    }
+
     /// How many there are.
     pub fn len(&self) -> usize {
         self.len

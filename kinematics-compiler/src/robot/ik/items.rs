@@ -3,8 +3,10 @@
 //! ([`crate::ik::emit`]) evaluated with the eight branches side by side in the lanes of `F64x8`;
 //! for the others, the run time's family solver called with the plan's geometry as a constant
 //! (so the optimiser folds it into the body). Either way every solution is measured with the
-//! robot's generated forward kinematics, and the nearest and within-limits forms follow. Also
-//! the numeric solver's two functions.
+//! robot's generated forward kinematics, a six-joint arm's exact solutions that miss their target
+//! by more than rounding are refined by Newton steps on its generated pose and Jacobian
+//! (`IkSolutions::refine`: the family solved the arm with its relations made exact), and the
+//! nearest and within-limits forms follow. Also the numeric solver's two functions.
 //!
 //! The items: `tip_ik`, `tip_ik_nearest`, `tip_ik_within_limits`, `IK_FAMILY`, `IK_ARM`. For a
 //! composed family the body and the measure are generic functions, `tip_ik` running the eight
@@ -74,11 +76,14 @@ pub fn emit_ik(
     plan: &IkPlan,
     private: &TokenStream,
     forward: &TokenStream,
+    pose_and_jacobian: &TokenStream,
     measure: Option<&Measure>,
     revolute: &[bool],
 ) -> IkItems {
     let p = private;
     let compiled = IkBody::of(plan);
+    let refine = refine(plan, p, pose_and_jacobian, revolute);
+    let solutions_refined = refine.clone().unwrap_or_else(|| quote!(solutions));
     let family = plan.family.name();
     let capacity = Literal::usize_unsuffixed(plan.family.max_solutions());
     let n = Literal::usize_unsuffixed(revolute.len());
@@ -90,13 +95,13 @@ pub fn emit_ik(
     let doc_all = doc_all(plan, compiled.is_some() && measure.is_some(), &free_doc);
     let doc_nearest = doc_nearest(plan);
     let Solving { bodies, solve_and_measure, branch_fn } = match &compiled {
-        Some(body) => solving_compiled(plan, body, measure, forward, p),
+        Some(body) => solving_compiled(plan, body, measure, forward, refine.as_ref(), p),
         None => Solving {
             bodies: Vec::new(),
             solve_and_measure: quote! {
                 let mut solutions = #solve;
                 solutions.measure(target, #[inline(always)] |q| #forward(q));
-                solutions
+                #solutions_refined
             },
             branch_fn: None,
         },
@@ -237,6 +242,24 @@ fn arm_and_solver(plan: &IkPlan, p: &TokenStream) -> ArmAndSolver {
     }
 }
 
+/// `solutions` refined on the arm's generated pose and Jacobian, for a six-joint arm (`None` for a
+/// planar arm: its exact solutions reach what the arm can, not the whole
+/// pose, and a step on the whole pose's error would trade the one for the other).
+fn refine(plan: &IkPlan, p: &TokenStream, pose_and_jacobian: &TokenStream, revolute: &[bool]) -> Option<TokenStream> {
+    plan.six()?;
+    let reach = number(plan.reach);
+    let free = plan.free.as_ref().map(|f| f.index);
+    let moving = (0..revolute.len()).map(|i| Some(i) != free);
+    Some(quote! {
+        // Back to the arm as written where the family's exact relations missed it.
+        solutions.refined(
+            target,
+            &#p::ik::RefineArm { reach: #reach, moving: [#(#moving),*], revolute: [#(#revolute),*] },
+            #[inline(always)] |q| #pose_and_jacobian(q),
+        )
+    })
+}
+
 /// What a free joint adds: `tip_ik`'s argument and its check, and `tip_ik_nearest`'s value of it
 /// (the seed's). Empty without one.
 struct FreeArgument {
@@ -310,6 +333,7 @@ fn solving_compiled(
     body: &IkBody,
     measure: Option<&Measure>,
     forward: &TokenStream,
+    refine: Option<&TokenStream>,
     p: &TokenStream,
 ) -> Solving {
     let (tip, base, family) = (&plan.tip, &plan.base, plan.family.name());
@@ -356,6 +380,13 @@ fn solving_compiled(
         }
         None => quote!(#forward(&branches.q)),
     };
+    let from_lanes = match refine {
+        None => quote!(#p::ik::IkSolutions::from_lanes(&branches, &reached, target)),
+        Some(refined) => quote! {
+            let solutions = #p::ik::IkSolutions::from_lanes(&branches, &reached, target);
+            #refined
+        },
+    };
     Solving {
         bodies,
         solve_and_measure: quote! {
@@ -363,7 +394,7 @@ fn solving_compiled(
             let lanes = #p::ik::splat_pose::<#p::F64x8>(target);
             #solve
             let reached = #reached;
-            #p::ik::IkSolutions::from_lanes(&branches, &reached, target)
+            #from_lanes
         },
         branch_fn: Some(Part {
             attrs: quote! {

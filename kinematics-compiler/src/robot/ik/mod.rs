@@ -21,15 +21,22 @@ use items::{IkItems, Part, emit_ik, emit_numeric};
 pub(super) fn ik(cx: &Context<'_>, out: &mut Functions) -> Result<(), CompileError> {
     let spec = cx.spec;
     let (tree, p, base) = (cx.tree(), &cx.p, &cx.base);
+    if matches!(spec.robot.ik(), CheckedIk::Off) {
+        return Ok(());
+    }
+    // The numeric solver steps on the pose and Jacobian together, and the closed form's
+    // refinement too: the velocities' own function when they are emitted, otherwise one for it
+    // (emitted after the closed form's bodies).
+    let pose_and_jacobian =
+        if cx.options().jacobians { quote!(generic_pose_and_jacobian) } else { quote!(generic_ik_pose_and_jacobian) };
     let closed = match spec.robot.ik() {
-        CheckedIk::Off => return Ok(()),
-        CheckedIk::Numeric => None,
+        CheckedIk::Off | CheckedIk::Numeric => None,
         CheckedIk::ClosedForm(plan) => {
             let revolute: Vec<bool> =
                 tree.dof_joints().iter().map(|&j| tree.joint(j).kind != JointKind::Prismatic).collect();
             let tip_pose = compile(tree, &cx.tip_request)?;
             let measure = crate::ik::Measure::of(&tip_pose);
-            Some(emit_ik(plan, p, &quote!(generic_tip_poses), measure.as_ref(), &revolute))
+            Some(emit_ik(plan, p, &quote!(generic_tip_poses), &pose_and_jacobian, measure.as_ref(), &revolute))
         }
     };
     let shape = IkShape::of(spec.robot.ik(), closed.as_ref().is_some_and(|c| c.branch))
@@ -37,15 +44,10 @@ pub(super) fn ik(cx: &Context<'_>, out: &mut Functions) -> Result<(), CompileErr
     if let Some(closed) = &closed {
         out.generic.extend(closed.bodies.iter().cloned());
     }
-    // The numeric solver steps on the pose and Jacobian together: the velocities' own
-    // function when they are emitted, otherwise one for it.
-    let pose_and_jacobian = if cx.options().jacobians {
-        quote!(generic_pose_and_jacobian)
-    } else {
+    if !cx.options().jacobians {
         let compiled = compile(tree, &cx.tip_request.clone().pose_and_jacobian(JacobianFrame::LocalWorldAligned))?;
         out.body(cx, &compiled, "generic_ik_pose_and_jacobian");
-        quote!(generic_ik_pose_and_jacobian)
-    };
+    }
     let numeric = emit_numeric(&cx.tips[0], base, p, &pose_and_jacobian);
     for item in cx.render.ik_items(&shape) {
         out.typed.push(match item {

@@ -1,0 +1,256 @@
+//! Newton refinement of closed-form solutions on the arm as written.
+//!
+//! A family's solver takes the arm's geometry with its relations made exact: axes within
+//! `1e-12` of parallel written as parallel, points within `1e-12` x reach of a common point moved
+//! onto it. A description whose angles are read as written (`exact_angles = false`: pi given to
+//! 12 digits) is such an arm, and its solutions then miss their targets by about what was made
+//! exact (a few `1e-13` x reach on an IRB 120 written with half turns of `3.14159265359`); a
+//! family whose first step is a quartic loses digits near its singularity the same way. Each
+//! exact solution measured farther than [`REFINE_ABOVE`] x reach from its target takes Gauss-Newton
+//! steps on the robot's generated pose and Jacobian (the arm as written) until it is within that,
+//! keeping each step only if it brings the solution closer; a solution already that close (every
+//! solution of an arm whose relations hold exactly, to rounding) costs one comparison.
+//!
+//! A correction longer than [`LONGEST_CORRECTION`] is not taken: that is no rounding to undo, and
+//! a step that long could leave the branch the solver chose.
+
+use super::ldl::ldl_solve;
+use super::numeric::{error_twist, normal_equations};
+use super::solutions::{IkSolution, IkSolutions, pose_errors_inline as pose_errors};
+use crate::pose::Pose;
+
+/// Solutions farther than this times the arm's reach from their target (by position, or by
+/// rotation times the reach) are refined: ten times the rounding of a closed form on an arm whose
+/// relations hold exactly (the UR5's and the IRB 120's solutions are within `2e-15` x reach).
+pub const REFINE_ABOVE: f64 = 1e-14;
+
+/// Steps at most per solution: each roughly squares the distance, and two take a few `1e-13`
+/// to rounding.
+const REFINE_STEPS: usize = 3;
+
+/// The longest correction of one joint taken (radians, or metres for a prismatic joint).
+pub const LONGEST_CORRECTION: f64 = 1e-4;
+
+/// What the refinement needs of the arm beside its pose and Jacobian.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RefineArm<const N: usize> {
+    /// The chain's reach (metres): the scale of the distances.
+    pub reach: f64,
+    /// The joints a step may move: the solved ones (not a seven-joint arm's free joint, whose
+    /// value was given).
+    pub moving: [bool; N],
+    /// The revolute joints, whose angles are kept in `(-pi, pi]`.
+    pub revolute: [bool; N],
+}
+
+impl<const N: usize, const M: usize> IkSolutions<N, M> {
+    /// Refines every exact solution farther than [`REFINE_ABOVE`] x reach from `target` by
+    /// Gauss-Newton steps on `pose_and_jacobian` (the robot's generated tip pose and
+    /// `LOCAL_WORLD_ALIGNED` Jacobian), keeping a step only when it brings the solution closer;
+    /// the errors are those of the pose at the refined `q`. Least-squares solutions (`exact`
+    /// false) are left as solved.
+    #[inline(always)]
+    pub fn refine(
+        &mut self,
+        target: &Pose<f64>,
+        arm: &RefineArm<N>,
+        pose_and_jacobian: impl Fn(&[f64; N]) -> (Pose<f64>, [[f64; N]; 6]),
+    ) {
+        for solution in self.solutions_mut() {
+            if solution.exact && distance(arm.reach, solution.position_error, solution.rotation_error) > REFINE_ABOVE {
+                refine_one(solution, target, arm, &pose_and_jacobian);
+            }
+        }
+    }
+
+    /// [`Self::refine`], by value.
+    #[inline(always)]
+    #[must_use]
+    pub fn refined(
+        mut self,
+        target: &Pose<f64>,
+        arm: &RefineArm<N>,
+        pose_and_jacobian: impl Fn(&[f64; N]) -> (Pose<f64>, [[f64; N]; 6]),
+    ) -> Self {
+        self.refine(target, arm, pose_and_jacobian);
+        self
+    }
+}
+
+/// The larger of the position error and the rotation error times the reach, over the reach
+/// (NaN if either is NaN, so that it never compares as close).
+#[inline(always)]
+fn distance(reach: f64, position: f64, rotation: f64) -> f64 {
+    let larger = if position > rotation * reach { position } else { rotation * reach };
+    if position.is_nan() || rotation.is_nan() { f64::NAN } else { larger / reach }
+}
+
+/// Gauss-Newton steps from `solution` while it is farther than [`REFINE_ABOVE`], each kept only
+/// if it brings the solution closer.
+#[allow(clippy::needless_range_loop, reason = "rows and columns of one matrix, by index")]
+#[inline(always)]
+fn refine_one<const N: usize>(
+    solution: &mut IkSolution<N>,
+    target: &Pose<f64>,
+    arm: &RefineArm<N>,
+    pose_and_jacobian: &impl Fn(&[f64; N]) -> (Pose<f64>, [[f64; N]; 6]),
+) {
+    let mut current = distance(arm.reach, solution.position_error, solution.rotation_error);
+    let (mut pose, mut jacobian) = pose_and_jacobian(&solution.q);
+    for _ in 0..REFINE_STEPS {
+        let (mut a, mut dq) = normal_equations(&jacobian, &error_twist(&pose, target));
+        for i in 0..N {
+            if arm.moving[i] && a[i][i] != 0.0 {
+                // A trace of damping, below the rounding of a well-conditioned system, so that a
+                // Jacobian singular to rounding still has a solve (1e-12 held steps near a
+                // singularity short of the target: 232 of 400 quartic targets 1e-3 rad from the
+                // wrist's singularity reached 1e-13, against 400 of 400 with this).
+                a[i][i] *= 1.0 + 1e-15;
+            } else {
+                for j in 0..N {
+                    a[i][j] = 0.0;
+                    a[j][i] = 0.0;
+                }
+                a[i][i] = 1.0;
+                dq[i] = 0.0;
+            }
+        }
+        if !ldl_solve(&mut a, &mut dq) || !dq.iter().all(|d| d.abs() <= LONGEST_CORRECTION) {
+            return;
+        }
+        let mut q = solution.q;
+        for i in 0..N {
+            q[i] += dq[i];
+            if arm.revolute[i] {
+                q[i] = within_half_turn(q[i]);
+            }
+        }
+        let (next_pose, next_jacobian) = pose_and_jacobian(&q);
+        let (position, rotation) = pose_errors(&next_pose, target);
+        let next = distance(arm.reach, position, rotation);
+        // `current` is a number (a NaN distance is never refined); a NaN `next` is no closer.
+        if next.is_nan() || next >= current {
+            return;
+        }
+        *solution = IkSolution { q, position_error: position, rotation_error: rotation, ..*solution };
+        (pose, jacobian, current) = (next_pose, next_jacobian, next);
+        if current <= REFINE_ABOVE {
+            return;
+        }
+    }
+}
+
+/// `x` moved by a whole turn into `(-pi, pi]` if a correction took it just past either end.
+#[inline(always)]
+fn within_half_turn(x: f64) -> f64 {
+    let (pi, tau) = (core::f64::consts::PI, core::f64::consts::TAU);
+    if x > pi {
+        x - tau
+    } else if x <= -pi {
+        x + tau
+    } else {
+        x
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ik::Arm6;
+
+    /// An IRB 120-like spherical-wrist arm (axes 2 and 3 parallel), and the same arm with its
+    /// axes tilted by `tilt` rad: the first is what the solver solves, the second the arm as
+    /// written.
+    fn arms(tilt: f64) -> (Arm6, Arm6) {
+        let (x, y, z) = ([1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]);
+        let exact = Arm6 {
+            axes: [z, y, y, x, y, x],
+            offsets: [
+                [0.0, 0.0, 0.29],
+                [0.0; 3],
+                [0.0, 0.0, 0.27],
+                [0.302, 0.0, 0.07],
+                [0.0; 3],
+                [0.0; 3],
+                [0.072, 0.0, 0.0],
+            ],
+            tool_rotation: [[0.0, 0.0, 1.0], y, [-1.0, 0.0, 0.0]],
+        };
+        let mut written = exact;
+        let (c, s) = (libm::cos(tilt), libm::sin(tilt));
+        written.axes[2] = [-s, c, 0.0];
+        written.axes[4] = [0.0, c, s];
+        written.axes[5] = [c, 0.0, -s];
+        (exact, written)
+    }
+
+    /// Solutions of the exact arm, measured on the tilted one, miss by about the tilt; refined,
+    /// every one is within `REFINE_ABOVE` x reach, each still its branch (within 1e-9 rad of where it
+    /// was), and an arm with nothing to refine keeps its solutions bit for bit.
+    #[test]
+    fn refinement_brings_solutions_back_to_the_arm_as_written() {
+        let (exact, written) = arms(1e-12);
+        let refine = RefineArm { reach: 1.0, moving: [true; 6], revolute: [true; 6] };
+        let mut refined = 0;
+        for q in [[0.3, -0.4, 0.5, 0.6, -0.7, 0.8], [-1.2, 0.2, -0.3, 2.0, 1.1, -2.5], [2.5, 0.9, -1.0, -0.4, 0.5, 0.1]]
+        {
+            let target = written.pose(&q);
+            let mut solutions = crate::ik::spherical_two_parallel(&exact, &target);
+            solutions.measure(&target, |q| written.pose(q));
+            let before = solutions;
+            assert!(solutions.exact().any(|s| s.position_error.max(s.rotation_error) > 1e-13), "{solutions:?}");
+            solutions.refine(&target, &refine, |q| written.pose_and_jacobian(q));
+            for (after, before) in solutions.iter().zip(before.iter()) {
+                if !after.exact {
+                    assert_eq!(after, before);
+                    continue;
+                }
+                refined += 1;
+                assert!(after.position_error.max(after.rotation_error) <= REFINE_ABOVE, "{after:?}");
+                assert!(after.q.iter().zip(&before.q).all(|(a, b)| (a - b).abs() < 1e-9), "{after:?} from {before:?}");
+            }
+            // The exact arm itself: nothing to refine, nothing changed.
+            let target = exact.pose(&q);
+            let mut solutions = crate::ik::spherical_two_parallel(&exact, &target);
+            solutions.measure(&target, |q| exact.pose(q));
+            let before = solutions;
+            solutions.refine(&target, &refine, |q| exact.pose_and_jacobian(q));
+            assert_eq!(solutions, before);
+        }
+        assert!(refined >= 12, "{refined}");
+    }
+
+    /// A joint that may not move (a seven-joint arm's free joint) keeps its value, and a
+    /// correction longer than `LONGEST_CORRECTION` is refused.
+    #[test]
+    fn held_joints_and_long_corrections_stay() {
+        let (exact, written) = arms(1e-12);
+        let q = [0.3, -0.4, 0.5, 0.6, -0.7, 0.8];
+        let target = written.pose(&q);
+        let mut solutions = crate::ik::spherical_two_parallel(&exact, &target);
+        solutions.measure(&target, |q| written.pose(q));
+        let before = solutions;
+        let held = RefineArm { reach: 1.0, moving: [true, true, false, true, true, true], revolute: [true; 6] };
+        solutions.refine(&target, &held, |q| written.pose_and_jacobian(q));
+        assert!(solutions.iter().zip(before.iter()).all(|(a, b)| a.q[2] == b.q[2]));
+        // Tilted by 1e-2 the solutions are no rounding away: left as solved.
+        let (_, far) = arms(1e-2);
+        let target = far.pose(&q);
+        let mut solutions = crate::ik::spherical_two_parallel(&exact, &target);
+        solutions.measure(&target, |q| far.pose(q));
+        let before = solutions;
+        solutions.refine(&target, &RefineArm { reach: 1.0, moving: [true; 6], revolute: [true; 6] }, |q| {
+            far.pose_and_jacobian(q)
+        });
+        assert_eq!(solutions, before);
+    }
+
+    #[test]
+    fn angles_stay_within_a_half_turn() {
+        let pi = core::f64::consts::PI;
+        assert_eq!(within_half_turn(pi), pi);
+        assert!((within_half_turn(pi + 1e-13) - (-pi + 1e-13)).abs() < 1e-15);
+        assert!((within_half_turn(-pi) - pi).abs() < 1e-15);
+        assert_eq!(within_half_turn(0.5), 0.5);
+    }
+}
