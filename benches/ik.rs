@@ -1,6 +1,8 @@
 //! Inverse kinematics speed: the closed forms (UR5, IRB 120, PUMA 560, compiled to straight-line
 //! bodies: every solution of a pose, the solution nearest a seed, the run time's family function
-//! they were compiled from, and the compiled body alone on eight lanes, on four and on one; and
+//! they were compiled from, and the compiled body alone on eight lanes, on four and on one; the
+//! IRB 120 written with inexact half turns, whose solutions `tip_ik` refines on the arm as
+//! written; and
 //! one arm of each family whose first step is a quartic, which `tip_ik` solves with the run
 //! time's family function) and the numeric solver on the seven-joint arms (Panda, iiwa 14) and
 //! the UR5 against the `k` crate's Jacobian IK solver on the same targets and seeds, with both
@@ -39,6 +41,13 @@ struct Irb120;
 #[derive(Kinematics)]
 #[kinematics(dh = "robots/puma560.toml", tip = "link6", ik)]
 struct Puma560;
+
+// The IRB 120 with its joint frames turned by half turns written 3.14159265359, read as written
+// (`tests/arms/`): its family solves it with the axes made exact, and `tip_ik` refines every
+// solution on the arm as written. What that costs, beside `Irb120`.
+#[derive(Kinematics)]
+#[kinematics(urdf = "tests/arms/irb120_half_turns.urdf", tip = "tool0", ik, exact_angles = false)]
+struct Irb120HalfTurns;
 
 // The two families whose first step is a quartic, on the made-up arms of `tests/arms/` that
 // `tests/ik.rs` checks them on (no maker's arm in `robots/` is of either family): axes 1, 2, 3 skew with a spherical wrist,
@@ -152,6 +161,7 @@ macro_rules! compiled {
 closed!(Ur5, "ur5", three_parallel_two_intersecting);
 closed!(Irb120, "irb120", spherical_two_parallel);
 closed!(Puma560, "puma560", spherical_two_parallel);
+closed!(Irb120HalfTurns, "irb120-half-turns", spherical_two_parallel);
 closed!(SkewSpherical, "skew-spherical", spherical);
 closed!(OffsetWristUr, "offset-wrist-ur", three_parallel);
 compiled!(Ur5);
@@ -460,6 +470,7 @@ fn all(mut c: Option<&mut Criterion>) {
     compiled::<Irb120>(c.as_deref_mut());
     closed::<Puma560>(c.as_deref_mut());
     compiled::<Puma560>(c.as_deref_mut());
+    closed::<Irb120HalfTurns>(c.as_deref_mut());
     closed::<SkewSpherical>(c.as_deref_mut());
     closed::<OffsetWristUr>(c.as_deref_mut());
     numeric(

@@ -228,11 +228,13 @@ type RobotFile = (&'static str, &'static str, &'static str);
 
 /// The closed-form robots of the IK benchmark: its group (`ik-<group>`), the summary's name (the
 /// ik-geo table's too), and for a robot in `robots/` its file, base and tip (for the compiled
-/// body's operation counts; the quartic families' made-up arms are written in the benchmark).
-const CLOSED: [(&str, &str, Option<RobotFile>); 5] = [
+/// body's operation counts; the quartic families' made-up arms and the IRB 120 with inexact half
+/// turns are in `tests/arms/`).
+const CLOSED: [(&str, &str, Option<RobotFile>); 6] = [
     ("ur5", "UR5", Some(("ur5.urdf", "base_link", "tool0"))),
     ("irb120", "IRB 120", Some(("irb120.urdf", "base_link", "tool0"))),
     ("puma560", "PUMA 560", Some(("puma560.toml", "base", "link6"))),
+    ("irb120-half-turns", "IRB 120, inexact half turns (refined)", None),
     ("skew-spherical", "skew spherical wrist (quartic)", None),
     ("offset-wrist-ur", "UR, wrist offset (quartic)", None),
 ];

@@ -27,6 +27,7 @@ use super::solutions::pose_errors_inline as pose_errors;
 use super::vector::{V3, dot, sub};
 use crate::kinematics::JointLimits;
 use crate::pose::Pose;
+use crate::real::Real;
 use crate::splitmix::SplitMix;
 
 /// How hard the numeric solver tries, and when it is done.
@@ -172,7 +173,7 @@ fn bounded_step<const N: usize>(
                 dq[i] = 0.0;
             }
         }
-        if !ldl_solve(&mut m, &mut dq) {
+        if ldl_solve(&mut m, &mut dq) != 1.0 {
             return None;
         }
         let mut more = false;
@@ -315,23 +316,24 @@ struct Step<const N: usize> {
 
 /// The normal equations of the least-squares step: `J^T J` and `J^T e`.
 #[inline(always)]
-pub(super) fn normal_equations<const N: usize>(
-    jacobian: &[[f64; N]; 6],
-    error: &[f64; 6],
-) -> ([[f64; N]; N], [f64; N]) {
-    let mut a = [[0.0; N]; N];
-    let mut g = [0.0; N];
+pub(super) fn normal_equations<T: Real, const N: usize>(
+    jacobian: &[[T; N]; 6],
+    error: &[T; 6],
+) -> ([[T; N]; N], [T; N]) {
+    let zero = T::from_f64(0.0);
+    let mut a = [[zero; N]; N];
+    let mut g = [zero; N];
     for i in 0..N {
         for j in 0..=i {
-            let mut s = 0.0;
+            let mut s = zero;
             for row in jacobian {
-                s += row[i] * row[j];
+                s = s + row[i] * row[j];
             }
             a[i][j] = s;
             a[j][i] = s;
         }
-        for (row, e) in jacobian.iter().zip(error) {
-            g[i] += row[i] * e;
+        for (row, &e) in jacobian.iter().zip(error) {
+            g[i] = g[i] + row[i] * e;
         }
     }
     (a, g)

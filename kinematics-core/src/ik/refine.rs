@@ -11,12 +11,18 @@
 //! keeping each step only if it brings the solution closer; a solution already that close (every
 //! solution of an arm whose relations hold exactly, to rounding) costs one comparison.
 //!
+//! The solutions are refined side by side, one per lane (`F64x8` in generated code: the eight
+//! branches of a six-joint family at once), each step one pose and Jacobian of every lane, a
+//! linear solve in lanes, and each lane's step kept or dropped on its own.
+//!
 //! A correction longer than [`LONGEST_CORRECTION`] is not taken: that is no rounding to undo, and
 //! a step that long could leave the branch the solver chose.
 
 use super::ldl::ldl_solve;
-use super::numeric::{error_twist, normal_equations};
-use super::solutions::{IkSolution, IkSolutions, pose_errors_inline as pose_errors};
+use super::numeric::normal_equations;
+use super::real::{IkReal, splat_pose};
+use super::solutions::{IkSolutions, LaneErrors};
+use crate::lanes::Lanes;
 use crate::pose::Pose;
 
 /// Solutions farther than this times the arm's reach from their target (by position, or by
@@ -44,119 +50,164 @@ pub struct RefineArm<const N: usize> {
 }
 
 impl<const N: usize, const M: usize> IkSolutions<N, M> {
-    /// Refines every exact solution farther than [`REFINE_ABOVE`] x reach from `target` by
-    /// Gauss-Newton steps on `pose_and_jacobian` (the robot's generated tip pose and
-    /// `LOCAL_WORLD_ALIGNED` Jacobian), keeping a step only when it brings the solution closer;
-    /// the errors are those of the pose at the refined `q`. Least-squares solutions (`exact`
-    /// false) are left as solved.
-    #[inline(always)]
-    pub fn refine(
-        &mut self,
-        target: &Pose<f64>,
-        arm: &RefineArm<N>,
-        pose_and_jacobian: impl Fn(&[f64; N]) -> (Pose<f64>, [[f64; N]; 6]),
-    ) {
-        for solution in self.solutions_mut() {
-            if solution.exact && distance(arm.reach, solution.position_error, solution.rotation_error) > REFINE_ABOVE {
-                refine_one(solution, target, arm, &pose_and_jacobian);
-            }
-        }
-    }
-
-    /// [`Self::refine`], by value.
+    /// The solutions with every exact one farther than [`REFINE_ABOVE`] x reach from `target`
+    /// refined by Gauss-Newton steps on `pose_and_jacobian` (the robot's generated tip pose and
+    /// `LOCAL_WORLD_ALIGNED` Jacobian, evaluated on lanes of `L`: one solution per lane), each
+    /// step kept only when it brings its solution closer; the errors are those of the pose at the
+    /// refined `q`. Least-squares solutions (`exact` false) are left as solved, and so are all
+    /// when none is that far (one comparison each).
     #[inline(always)]
     #[must_use]
-    pub fn refined(
+    pub fn refined<L: Lanes<Scalar = f64> + IkReal>(
         mut self,
         target: &Pose<f64>,
         arm: &RefineArm<N>,
-        pose_and_jacobian: impl Fn(&[f64; N]) -> (Pose<f64>, [[f64; N]; 6]),
+        pose_and_jacobian: impl Fn(&[L; N]) -> (Pose<L>, [[L; N]; 6]),
     ) -> Self {
-        self.refine(target, arm, pose_and_jacobian);
+        let mut pending = [false; M];
+        let mut any = false;
+        for (flag, solution) in pending.iter_mut().zip(self.as_slice()) {
+            *flag =
+                solution.exact && distance(arm.reach, solution.position_error, solution.rotation_error) > REFINE_ABOVE;
+            any |= *flag;
+        }
+        if !any {
+            return self;
+        }
+        let mut start = 0;
+        while start < self.len() {
+            let end = (start + L::LANES).min(self.len());
+            self.refine_lanes(start, end, &mut pending, target, arm, &pose_and_jacobian);
+            start = end;
+        }
         self
+    }
+
+    /// Refines the pending solutions of `start..end` (at most `L::LANES`), lane `k` solution
+    /// `start + k`.
+    #[allow(clippy::needless_range_loop, reason = "joints and lanes, by index")]
+    #[inline(always)]
+    fn refine_lanes<L: Lanes<Scalar = f64> + IkReal>(
+        &mut self,
+        start: usize,
+        end: usize,
+        pending: &mut [bool; M],
+        target: &Pose<f64>,
+        arm: &RefineArm<N>,
+        pose_and_jacobian: &impl Fn(&[L; N]) -> (Pose<L>, [[L; N]; 6]),
+    ) {
+        if !pending[start..end].iter().any(|&p| p) {
+            return;
+        }
+        let solutions = self.solutions_mut();
+        // Lanes past the last solution repeat it (any finite configuration would do).
+        let mut q = [L::from_f64(0.0); N];
+        for j in 0..N {
+            q[j] = L::from_fn(|k| solutions[(start + k).min(end - 1)].q[j]);
+        }
+        let target_lanes = splat_pose::<L>(target);
+        let (mut pose, mut jacobian) = pose_and_jacobian(&q);
+        for _ in 0..REFINE_STEPS {
+            let (mut a, mut dq) = normal_equations(&jacobian, &small_angle_twist(&pose, &target_lanes));
+            for i in 0..N {
+                if arm.moving[i] {
+                    // A trace of damping, below the rounding of a well-conditioned system, so
+                    // that a Jacobian singular to rounding still has a solve (1e-12 held steps
+                    // near a singularity short of the target: 232 of 400 quartic targets 1e-3 rad
+                    // from the wrist's singularity reached 1e-13, against 400 of 400 with this).
+                    a[i][i] = a[i][i] * L::from_f64(1.0 + 1e-15);
+                } else {
+                    for j in 0..N {
+                        a[i][j] = L::from_f64(0.0);
+                        a[j][i] = L::from_f64(0.0);
+                    }
+                    a[i][i] = L::from_f64(1.0);
+                    dq[i] = L::from_f64(0.0);
+                }
+            }
+            let positive = ldl_solve(&mut a, &mut dq);
+            let mut next = q;
+            for i in 0..N {
+                next[i] = q[i] + dq[i];
+                if arm.revolute[i] {
+                    next[i] = within_half_turn(next[i]);
+                }
+            }
+            let (next_pose, next_jacobian) = pose_and_jacobian(&next);
+            let errors = LaneErrors::of(&next_pose, target);
+            let mut more = false;
+            for k in 0..end - start {
+                let solution = &mut solutions[start + k];
+                if !pending[start + k] {
+                    continue;
+                }
+                let (position, rotation) = errors.lane(k);
+                let closer = distance(arm.reach, position, rotation);
+                let short = positive.lane(k) == 1.0 && (0..N).all(|i| dq[i].lane(k).abs() <= LONGEST_CORRECTION);
+                // The current distance is a number (a NaN one is never pending); a NaN `closer`
+                // is no closer.
+                if short && closer < distance(arm.reach, solution.position_error, solution.rotation_error) {
+                    for i in 0..N {
+                        solution.q[i] = next[i].lane(k);
+                    }
+                    (solution.position_error, solution.rotation_error) = (position, rotation);
+                    pending[start + k] = closer > REFINE_ABOVE;
+                } else {
+                    pending[start + k] = false;
+                }
+                more |= pending[start + k];
+            }
+            if !more {
+                return;
+            }
+            (q, pose, jacobian) = (next, next_pose, next_jacobian);
+        }
     }
 }
 
 /// The larger of the position error and the rotation error times the reach, over the reach
-/// (NaN if either is NaN, so that it never compares as close).
+/// (NaN if either is NaN, so that it never compares as far or as close).
 #[inline(always)]
 fn distance(reach: f64, position: f64, rotation: f64) -> f64 {
     let larger = if position > rotation * reach { position } else { rotation * reach };
     if position.is_nan() || rotation.is_nan() { f64::NAN } else { larger / reach }
 }
 
-/// Gauss-Newton steps from `solution` while it is farther than [`REFINE_ABOVE`], each kept only
-/// if it brings the solution closer.
-#[allow(clippy::needless_range_loop, reason = "rows and columns of one matrix, by index")]
+/// The error twist from `reached` to `target` for a step: the position difference, and
+/// `vee(R_target R_reached^T) / 2`, which is the rotation vector `angle axis` to within
+/// `angle^2 / 6` of it (a refinement's angles are under `1e-4`; the numeric solver's exact
+/// rotation vector needs an `atan2` and a branch at a half turn).
 #[inline(always)]
-fn refine_one<const N: usize>(
-    solution: &mut IkSolution<N>,
-    target: &Pose<f64>,
-    arm: &RefineArm<N>,
-    pose_and_jacobian: &impl Fn(&[f64; N]) -> (Pose<f64>, [[f64; N]; 6]),
-) {
-    let mut current = distance(arm.reach, solution.position_error, solution.rotation_error);
-    let (mut pose, mut jacobian) = pose_and_jacobian(&solution.q);
-    for _ in 0..REFINE_STEPS {
-        let (mut a, mut dq) = normal_equations(&jacobian, &error_twist(&pose, target));
-        for i in 0..N {
-            if arm.moving[i] && a[i][i] != 0.0 {
-                // A trace of damping, below the rounding of a well-conditioned system, so that a
-                // Jacobian singular to rounding still has a solve (1e-12 held steps near a
-                // singularity short of the target: 232 of 400 quartic targets 1e-3 rad from the
-                // wrist's singularity reached 1e-13, against 400 of 400 with this).
-                a[i][i] *= 1.0 + 1e-15;
-            } else {
-                for j in 0..N {
-                    a[i][j] = 0.0;
-                    a[j][i] = 0.0;
-                }
-                a[i][i] = 1.0;
-                dq[i] = 0.0;
-            }
-        }
-        if !ldl_solve(&mut a, &mut dq) || !dq.iter().all(|d| d.abs() <= LONGEST_CORRECTION) {
-            return;
-        }
-        let mut q = solution.q;
-        for i in 0..N {
-            q[i] += dq[i];
-            if arm.revolute[i] {
-                q[i] = within_half_turn(q[i]);
-            }
-        }
-        let (next_pose, next_jacobian) = pose_and_jacobian(&q);
-        let (position, rotation) = pose_errors(&next_pose, target);
-        let next = distance(arm.reach, position, rotation);
-        // `current` is a number (a NaN distance is never refined); a NaN `next` is no closer.
-        if next.is_nan() || next >= current {
-            return;
-        }
-        *solution = IkSolution { q, position_error: position, rotation_error: rotation, ..*solution };
-        (pose, jacobian, current) = (next_pose, next_jacobian, next);
-        if current <= REFINE_ABOVE {
-            return;
-        }
-    }
+fn small_angle_twist<L: IkReal>(reached: &Pose<L>, target: &Pose<L>) -> [L; 6] {
+    let (t, r) = (&target.rotation, &reached.rotation);
+    // Entry (i, j) of R_target R_reached^T: row i of the target against row j of the reached.
+    let m = |i: usize, j: usize| t[i][0] * r[j][0] + t[i][1] * r[j][1] + t[i][2] * r[j][2];
+    let half = L::from_f64(0.5);
+    [
+        target.translation[0] - reached.translation[0],
+        target.translation[1] - reached.translation[1],
+        target.translation[2] - reached.translation[2],
+        (m(2, 1) - m(1, 2)) * half,
+        (m(0, 2) - m(2, 0)) * half,
+        (m(1, 0) - m(0, 1)) * half,
+    ]
 }
 
-/// `x` moved by a whole turn into `(-pi, pi]` if a correction took it just past either end.
+/// `x` moved by a whole turn into `(-pi, pi]` if a correction took it just past either end,
+/// lane by lane.
 #[inline(always)]
-fn within_half_turn(x: f64) -> f64 {
-    let (pi, tau) = (core::f64::consts::PI, core::f64::consts::TAU);
-    if x > pi {
-        x - tau
-    } else if x <= -pi {
-        x + tau
-    } else {
-        x
-    }
+fn within_half_turn<L: IkReal>(x: L) -> L {
+    let (pi, tau) = (L::from_f64(core::f64::consts::PI), L::from_f64(core::f64::consts::TAU));
+    let below = (x - pi).if_positive(x - tau, x);
+    (below + pi).if_positive(below, below + tau)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::ik::Arm6;
+    use crate::ik::tests::arm_in_lanes;
+    use crate::lanes::F64x8;
 
     /// An IRB 120-like spherical-wrist arm (axes 2 and 3 parallel), and the same arm with its
     /// axes tilted by `tilt` rad: the first is what the solver solves, the second the arm as
@@ -199,7 +250,7 @@ mod tests {
             solutions.measure(&target, |q| written.pose(q));
             let before = solutions;
             assert!(solutions.exact().any(|s| s.position_error.max(s.rotation_error) > 1e-13), "{solutions:?}");
-            solutions.refine(&target, &refine, |q| written.pose_and_jacobian(q));
+            let solutions = solutions.refined::<F64x8>(&target, &refine, arm_in_lanes(&written));
             for (after, before) in solutions.iter().zip(before.iter()) {
                 if !after.exact {
                     assert_eq!(after, before);
@@ -214,7 +265,7 @@ mod tests {
             let mut solutions = crate::ik::spherical_two_parallel(&exact, &target);
             solutions.measure(&target, |q| exact.pose(q));
             let before = solutions;
-            solutions.refine(&target, &refine, |q| exact.pose_and_jacobian(q));
+            let solutions = solutions.refined::<F64x8>(&target, &refine, arm_in_lanes(&exact));
             assert_eq!(solutions, before);
         }
         assert!(refined >= 12, "{refined}");
@@ -231,7 +282,7 @@ mod tests {
         solutions.measure(&target, |q| written.pose(q));
         let before = solutions;
         let held = RefineArm { reach: 1.0, moving: [true, true, false, true, true, true], revolute: [true; 6] };
-        solutions.refine(&target, &held, |q| written.pose_and_jacobian(q));
+        let solutions = solutions.refined::<F64x8>(&target, &held, arm_in_lanes(&written));
         assert!(solutions.iter().zip(before.iter()).all(|(a, b)| a.q[2] == b.q[2]));
         // Tilted by 1e-2 the solutions are no rounding away: left as solved.
         let (_, far) = arms(1e-2);
@@ -239,9 +290,8 @@ mod tests {
         let mut solutions = crate::ik::spherical_two_parallel(&exact, &target);
         solutions.measure(&target, |q| far.pose(q));
         let before = solutions;
-        solutions.refine(&target, &RefineArm { reach: 1.0, moving: [true; 6], revolute: [true; 6] }, |q| {
-            far.pose_and_jacobian(q)
-        });
+        let all = RefineArm { reach: 1.0, moving: [true; 6], revolute: [true; 6] };
+        let solutions = solutions.refined::<F64x8>(&target, &all, arm_in_lanes(&far));
         assert_eq!(solutions, before);
     }
 

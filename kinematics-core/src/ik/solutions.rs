@@ -199,11 +199,6 @@ impl<const N: usize, const M: usize> IkSolutions<N, M> {
         reached: &Pose<L>,
         target: &Pose<f64>,
     ) -> Self {
-        let (distance2, frobenius2) = squared_differences(reached, &super::real::splat_pose(target));
-        let (position, sine) = (distance2.sqrt(), (frobenius2 * L::from_f64(0.125)).sqrt());
-        // The small-angle series in every lane at once; a lane past it (or not finite) takes the
-        // scalar path in `errors_of_squares`, which gives the same value for the others.
-        let series = L::from_f64(2.0) * sine * (L::from_f64(1.0) + sine * sine / L::from_f64(6.0));
         let count = M.min(L::LANES);
         let mut solutions = [IkSolution::unmeasured([0.0; N], false, false); M];
         // Column by column: each lane type's value is read once.
@@ -212,14 +207,9 @@ impl<const N: usize, const M: usize> IkSolutions<N, M> {
                 solution.q[j] = column.lane(lane);
             }
         }
+        let errors = LaneErrors::of(reached, target);
         for (lane, solution) in solutions[..count].iter_mut().enumerate() {
-            let (position, frobenius2, sine) = (position.lane(lane), frobenius2.lane(lane), sine.lane(lane));
-            let (position_error, rotation_error) =
-                if sine < SERIES_BOUND && position.is_finite() && frobenius2.is_finite() {
-                    (position, series.lane(lane))
-                } else {
-                    errors_of_squares(position, frobenius2, sine)
-                };
+            let (position_error, rotation_error) = errors.lane(lane);
             solution.exact = branches.exact.lane(lane) == 1.0;
             solution.singular = branches.singular.lane(lane) == 1.0;
             solution.position_error = position_error;
@@ -285,6 +275,38 @@ impl<const N: usize, const M: usize> IkSolutions<N, M> {
             kept.push(moved);
         }
         kept
+    }
+}
+
+/// The pose errors of every lane of a pose against one target, computed in lanes: the distance,
+/// and the angle's sine and small-angle series, each lane past the series taking the scalar path
+/// of [`errors_of_squares`] (which gives the same value for the others).
+pub(super) struct LaneErrors<L> {
+    position: L,
+    frobenius2: L,
+    sine: L,
+    series: L,
+}
+
+impl<L: Lanes<Scalar = f64> + IkReal> LaneErrors<L> {
+    /// The errors of `reached`'s lanes against `target`.
+    #[inline(always)]
+    pub(super) fn of(reached: &Pose<L>, target: &Pose<f64>) -> Self {
+        let (distance2, frobenius2) = squared_differences(reached, &super::real::splat_pose(target));
+        let (position, sine) = (distance2.sqrt(), (frobenius2 * L::from_f64(0.125)).sqrt());
+        let series = L::from_f64(2.0) * sine * (L::from_f64(1.0) + sine * sine / L::from_f64(6.0));
+        LaneErrors { position, frobenius2, sine, series }
+    }
+
+    /// Lane `lane`'s position and rotation errors, as [`pose_errors`] gives them.
+    #[inline(always)]
+    pub(super) fn lane(&self, lane: usize) -> (f64, f64) {
+        let (position, frobenius2, sine) = (self.position.lane(lane), self.frobenius2.lane(lane), self.sine.lane(lane));
+        if sine < SERIES_BOUND && position.is_finite() && frobenius2.is_finite() {
+            (position, self.series.lane(lane))
+        } else {
+            errors_of_squares(position, frobenius2, sine)
+        }
     }
 }
 

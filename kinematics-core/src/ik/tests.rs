@@ -3,6 +3,7 @@
 
 use super::vector::{V3, add, cross, norm_squared, scale, wrap};
 use super::*;
+use crate::lanes::{F64x8, Lanes};
 
 /// A small deterministic generator (xorshift64*), so the core needs no dev-dependency for this.
 struct Rng(u64);
@@ -424,6 +425,7 @@ fn differentiated(arm: &Arm6, q: &[f64; 6], j: usize, h: f64) -> [f64; 6] {
 /// `Arm6::pose_and_jacobian` is `Arm6::pose` (to rounding: the two fold in opposite orders) and
 /// its derivative (central differences, to 1e-7).
 #[test]
+#[allow(clippy::needless_range_loop, reason = "a matrix's rows and columns, by index")]
 fn the_arm_jacobian_is_the_derivative_of_its_pose() {
     let mut rng = Rng(29);
     for family in [Family::SphericalTwoParallel, Family::ThreeParallelTwoIntersecting, Family::ThreeParallel] {
@@ -467,7 +469,7 @@ fn the_three_parallel_quartic_refined_keeps_its_digits() {
             let target = arm.pose(&q);
             let mut solutions = solve(Family::ThreeParallel, &arm, &target);
             solutions.measure(&target, |q| arm.pose(q));
-            solutions.refine(&target, &arm_of, |q| arm.pose_and_jacobian(q));
+            let solutions = solutions.refined(&target, &arm_of, arm_in_lanes(&arm));
             reached += usize::from(solutions.exact().any(|s| error_of(s) < 1e-13));
             found += usize::from(solutions.exact().any(|s| error_of(s) < 1e-13 && angle_distance(&s.q, &q) < 1e-6));
         }
@@ -477,5 +479,19 @@ fn the_three_parallel_quartic_refined_keeps_its_digits() {
             found >= least_found,
             "{distance:e} rad from the singularity: the configuration found for {found} of 400"
         );
+    }
+}
+
+/// `arm`'s pose and Jacobian on eight lanes of configurations (each lane by
+/// `Arm6::pose_and_jacobian`), as the refinement takes a generated one.
+pub(super) fn arm_in_lanes(arm: &Arm6) -> impl Fn(&[F64x8; 6]) -> (Pose<F64x8>, [[F64x8; 6]; 6]) + '_ {
+    move |q| {
+        let each: [(Pose<f64>, [[f64; 6]; 6]); 8] =
+            core::array::from_fn(|k| arm.pose_and_jacobian(&q.map(|x| x.lane(k))));
+        let lanes = |f: &dyn Fn(usize) -> f64| F64x8::from_fn(f);
+        let rotation = core::array::from_fn(|r| core::array::from_fn(|c| lanes(&|k| each[k].0.rotation[r][c])));
+        let translation = core::array::from_fn(|r| lanes(&|k| each[k].0.translation[r]));
+        let jacobian = core::array::from_fn(|r| core::array::from_fn(|c| lanes(&|k| each[k].1[r][c])));
+        (Pose { rotation, translation }, jacobian)
     }
 }

@@ -4,8 +4,9 @@
 //! for the others, the run time's family solver called with the plan's geometry as a constant
 //! (so the optimiser folds it into the body). Either way every solution is measured with the
 //! robot's generated forward kinematics, a six-joint arm's exact solutions that miss their target
-//! by more than rounding are refined by Newton steps on its generated pose and Jacobian
-//! (`IkSolutions::refine`: the family solved the arm with its relations made exact), and the
+//! by more than rounding are refined by Gauss-Newton steps on its generated pose and Jacobian, in
+//! the lanes of `F64x8` (`IkSolutions::refined`: the family solved the arm with its relations made
+//! exact), and the
 //! nearest and within-limits forms follow. Also the numeric solver's two functions.
 //!
 //! The items: `tip_ik`, `tip_ik_nearest`, `tip_ik_within_limits`, `IK_FAMILY`, `IK_ARM`. For a
@@ -252,7 +253,7 @@ fn refine(plan: &IkPlan, p: &TokenStream, pose_and_jacobian: &TokenStream, revol
     let moving = (0..revolute.len()).map(|i| Some(i) != free);
     Some(quote! {
         // Back to the arm as written where the family's exact relations missed it.
-        solutions.refined(
+        solutions.refined::<#p::F64x8>(
             target,
             &#p::ik::RefineArm { reach: #reach, moving: [#(#moving),*], revolute: [#(#revolute),*] },
             #[inline(always)] |q| #pose_and_jacobian(q),
