@@ -397,7 +397,8 @@ const NUMERIC_SOLVE_BOUNDS: [(&str, f64); 1] = [("Panda", 20.0)];
 /// and its success rate.
 pub fn ik_targets(ik: &Ik) -> String {
     let mut s = String::new();
-    let _ = writeln!(s, "### IK targets\n\n| target | measured | met |\n|---|---|---|");
+    // A blank line first: the IK part's last table ends just before.
+    let _ = writeln!(s, "\n### IK targets\n\n| target | measured | met |\n|---|---|---|");
     let mut target = |what: &str, measured: Option<f64>, bound: Bound| {
         let met = measured.map(|m| bound.met(m));
         // Two decimals: a success rate of 99.8% must not read as 100.

@@ -1,14 +1,17 @@
 //! Inverse kinematics at run time, for code the compiler generates: the Paden-Kahan subproblems
 //! ([`subproblem`]), the closed-form families they compose into (six-joint arms: [`Arm6`] and the
 //! family functions, [`FreeArm6`] for the six of a seven-joint arm; planar arms and the SCARA:
-//! [`PlanarArm`]), the numeric solver every chain gets ([`levenberg_marquardt`]), and what a call
-//! returns ([`IkSolutions`], [`NumericSolution`], [`IkError`]). No heap, no `std`: `libm` does the
-//! square roots and inverse trigonometry.
+//! [`PlanarArm`]), the numeric solver every chain gets ([`levenberg_marquardt`]), what a call
+//! returns ([`IkSolutions`], [`NumericSolution`], [`IkError`]) and the refinement of a closed
+//! form's solutions on the arm as written ([`IkSolutions::refined`]). The solver's steps and the
+//! refinement share one linear solve (`ldl`: `L D L^T`, on the stack, lane by lane). No heap, no
+//! `std`: `libm` does the square roots and inverse trigonometry.
 //!
 //! The compiler classifies a robot's chain at compile time and emits a call of one family
 //! function with the chain's geometry as constants, so the optimiser folds them into the body;
 //! the generated `tip_ik` then measures every solution's pose errors with the robot's own
-//! generated forward kinematics ([`IkSolutions::measure`]).
+//! generated forward kinematics ([`IkSolutions::measure`]) and, for a six-joint arm, refines the
+//! exact solutions that miss their target by more than rounding ([`IkSolutions::refined`]).
 //!
 //! ```
 //! use kinematics_core::ik::{Arm6, three_parallel_two_intersecting};
@@ -76,7 +79,7 @@ impl Arm6 {
     /// [`Self::pose`] and the geometric Jacobian at `q` in `LOCAL_WORLD_ALIGNED` (column `i`:
     /// the linear velocity of the tip's origin and the angular velocity, in the base frame, per
     /// unit rate of joint `i`), as the generated `tip_pose_and_jacobian` gives them (for tests
-    /// and tools, such as refining solutions with [`IkSolutions::refine`]).
+    /// and tools, such as refining solutions with [`IkSolutions::refined`]).
     pub fn pose_and_jacobian(&self, q: &[f64; 6]) -> (Pose<f64>, [[f64; 6]; 6]) {
         // From the base out: joint i turns about R_0(i-1) h_i through the point reached so far.
         let mut rotation = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];

@@ -451,7 +451,7 @@ fn the_arm_jacobian_is_the_derivative_of_its_pose() {
     }
 }
 
-/// Refined on the arm's pose and Jacobian (`IkSolutions::refine`), the three-parallel quartic's
+/// Refined on the arm's pose and Jacobian (`IkSolutions::refined`), the three-parallel quartic's
 /// solutions near the singularity get their digits back: at 1e-2 and 1e-3 rad every target has an
 /// exact solution within 1e-13 (before: 351 and 232 of 400 in this run), and the configuration is
 /// among those within 1e-13 for all at 1e-2 and 399 of 400 at 1e-3 (before: 283 and 49); at 1e-4
