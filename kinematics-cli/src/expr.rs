@@ -110,10 +110,10 @@ fn ik_text(
         tree.name(),
         plan.tip,
         plan.base,
-        plan.family.name(),
-        plan.family.subproblems()
+        plan.family().name(),
+        plan.family().subproblems()
     );
-    if let Some(free) = &plan.free {
+    if let Some(free) = plan.free() {
         out += &format!(
             "free joint: `{}` (q[{}]), axis {} through {}\n",
             free.name,
@@ -123,7 +123,7 @@ fn ik_text(
         );
     }
     match &plan.geometry {
-        kinematics_compiler::ik::IkGeometry::Six(six) => {
+        kinematics_compiler::ik::IkGeometry::Six { arm: six, .. } => {
             out += "geometry at q = 0 (base frame): joint, axis h, offset p from the previous point\n";
             let width = crate::inspect::column_width(plan.joints.iter().map(String::as_str));
             for (i, joint) in plan.joints.iter().enumerate() {
@@ -159,8 +159,10 @@ fn ik_text(
     for note in &plan.notes {
         out += &format!("note: {note}\n");
     }
-    out +=
-        &format!("solutions: up to {} (every branch, exact or least-squares, flagged)\n", plan.family.max_solutions());
+    out += &format!(
+        "solutions: up to {} (every branch, exact or least-squares, flagged)\n",
+        plan.family().max_solutions()
+    );
     out += &emitted_ik_text(tree, plan)?;
     Ok(out)
 }
@@ -190,7 +192,7 @@ fn emitted_ik_text(
     plan: &kinematics_compiler::ik::IkPlan,
 ) -> Result<String, kinematics_compiler::CompileError> {
     let Some(body) = kinematics_compiler::ik::IkBody::of(plan) else {
-        let why = if plan.free.is_some() {
+        let why = if plan.free().is_some() {
             "its geometry is turned by the free joint at run time"
         } else if matches!(plan.geometry, kinematics_compiler::ik::IkGeometry::Planar(_)) {
             "a planar arm"
@@ -200,7 +202,7 @@ fn emitted_ik_text(
         return Ok(format!(
             "emitted: a call of the run time's `kinematics::ik::{}` with the geometry above as constants ({why}), \
              every solution measured by the generated pose\n",
-            plan.family.solver()
+            plan.family().solver()
         ));
     };
     let mut out = String::from(

@@ -11,7 +11,7 @@ use std::io::Write;
 use kinematics::Pose;
 use kinematics::ReferenceFk;
 use kinematics::ik::{Arm6, IkSolutions, PlanarArm, PlanarJoint};
-use kinematics_compiler::ik::{IkFamily, IkGeometry, IkPlan};
+use kinematics_compiler::ik::{IkGeometry, IkPlan};
 
 use crate::error::CliError;
 use crate::inspect::short;
@@ -64,7 +64,7 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
     // infinite error, never as a small one.
     let forward = |q: &[f64]| fk.relative_pose(q, &base, &tip).map(Pose::from).unwrap_or(nan);
     let solutions = solve(&plan, &target, &forward);
-    writeln!(out, "robot `{}`: `{tip}` in `{base}`, closed form: {}", fk.tree().name(), plan.family.name())?;
+    writeln!(out, "robot `{}`: `{tip}` in `{base}`, closed form: {}", fk.tree().name(), plan.family().name())?;
     let [x, y, z] = target.translation.map(short);
     let rows: Vec<String> = target.rotation.iter().map(|r| r.map(short).join(", ")).collect();
     writeln!(out, "target: position ({x}, {y}, {z}), rotation rows ({})", rows.join("; "))?;
@@ -191,7 +191,7 @@ fn rows<const N: usize, const M: usize>(
 /// by `forward`.
 pub fn solve(plan: &IkPlan, target: &Pose<f64>, forward: &dyn Fn(&[f64]) -> Pose<f64>) -> Vec<Solution> {
     if let Some(body) = kinematics_compiler::ik::IkBody::of(plan) {
-        return (0..plan.family.max_solutions())
+        return (0..plan.family().max_solutions())
             .map(|branch| {
                 let value = body.eval(target, branch);
                 let (position_error, rotation_error) = kinematics::ik::pose_errors(&forward(&value.q), target);
@@ -200,21 +200,9 @@ pub fn solve(plan: &IkPlan, target: &Pose<f64>, forward: &dyn Fn(&[f64]) -> Pose
             .collect();
     }
     match &plan.geometry {
-        IkGeometry::Six(six) => {
+        IkGeometry::Six { family, arm: six, .. } => {
             let arm = Arm6 { axes: six.axes, offsets: six.offsets, tool_rotation: six.tool_rotation };
-            let solutions = match plan.family {
-                IkFamily::SphericalTwoParallel => kinematics::ik::spherical_two_parallel(&arm, target),
-                IkFamily::SphericalFirstTwoIntersecting => {
-                    kinematics::ik::spherical_first_two_intersecting(&arm, target)
-                }
-                IkFamily::SphericalLastTwoIntersecting => kinematics::ik::spherical_last_two_intersecting(&arm, target),
-                IkFamily::SphericalPrismaticThird => kinematics::ik::spherical_prismatic_third(&arm, target),
-                IkFamily::Spherical => kinematics::ik::spherical(&arm, target),
-                IkFamily::ThreeParallel => kinematics::ik::three_parallel(&arm, target),
-                IkFamily::ThreeParallelTwoIntersecting | IkFamily::Planar => {
-                    kinematics::ik::three_parallel_two_intersecting(&arm, target)
-                }
-            };
+            let solutions = (family.facts().solver)(&arm, target);
             rows(solutions, target, forward)
         }
         IkGeometry::Planar(planar) => {

@@ -278,8 +278,8 @@ pub fn ik_families(tree: &KinematicTree) -> String {
     for leaf in tree.leaves() {
         let tip = &tree.link(leaf).name;
         let what = match kinematics_compiler::ik::classify(tree, root, tip) {
-            Ok(plan) if plan.notes.is_empty() => plan.family.name().to_owned(),
-            Ok(plan) => format!("{} ({})", plan.family.name(), plan.notes.join("; ")),
+            Ok(plan) if plan.notes.is_empty() => plan.family().name().to_owned(),
+            Ok(plan) => format!("{} ({})", plan.family().name(), plan.notes.join("; ")),
             Err(kinematics_compiler::CompileError::NoIkFamily(none)) => format!("none: {}", none.reason),
             Err(other) => format!("none: {other}"),
         };

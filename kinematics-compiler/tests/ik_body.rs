@@ -9,16 +9,16 @@
 mod common;
 
 use common::arms::{Uniform, random_arm, solve, wrapped};
-use kinematics_compiler::ik::{IkBody, IkFamily, IkPlan, classify};
+use kinematics_compiler::ik::{IkBody, IkPlan, SixFamily, classify};
 use kinematics_compiler::{Request, compile};
 use kinematics_core::Pose;
 
 /// The families the body composes (the rest keep the run time's solver).
-const COMPOSED: [IkFamily; 4] = [
-    IkFamily::ThreeParallelTwoIntersecting,
-    IkFamily::SphericalTwoParallel,
-    IkFamily::SphericalFirstTwoIntersecting,
-    IkFamily::SphericalLastTwoIntersecting,
+const COMPOSED: [SixFamily; 4] = [
+    SixFamily::ThreeParallelTwoIntersecting,
+    SixFamily::SphericalTwoParallel,
+    SixFamily::SphericalFirstTwoIntersecting,
+    SixFamily::SphericalLastTwoIntersecting,
 ];
 
 /// Every branch of `body` against the run time's for `target`: joint values within `1e-10` rad
@@ -32,7 +32,7 @@ fn agree(plan: &IkPlan, body: &IkBody, target: &Pose<f64>, what: &str) {
         let (q, exact, singular) = (&branch.q, branch.exact, branch.singular);
         // The cosines and sines are those of the angles (a prismatic joint's are 1 and 0).
         for (j, (&c, &s)) in branch.cos.iter().zip(&branch.sin).enumerate() {
-            let (expected_c, expected_s) = if plan.family == IkFamily::SphericalPrismaticThird && j == 2 {
+            let (expected_c, expected_s) = if plan.family() == SixFamily::SphericalPrismaticThird.into() && j == 2 {
                 (1.0, 0.0)
             } else {
                 (q[j].cos(), q[j].sin())
@@ -90,7 +90,7 @@ fn robots_agree_with_the_run_time_including_singular_wrists() {
         let tree = common::robot(file);
         let base = tree.link(tree.root()).name.clone();
         let plan = classify(&tree, &base, tip).unwrap_or_else(|e| panic!("{file}: {e}"));
-        let body = IkBody::of(&plan).unwrap_or_else(|| panic!("{file}: {:?} is composed", plan.family));
+        let body = IkBody::of(&plan).unwrap_or_else(|| panic!("{file}: {:?} is composed", plan.family()));
         let compiled = compile(&tree, &Request::tip(tip)).expect("compiles");
         for sample in 0..200 {
             let mut q = [0; 6].map(|_| 3.0 * (2.0 * rng.next() - 1.0));
@@ -158,7 +158,7 @@ fn singular_ur_targets_are_reached() {
 #[test]
 fn families_with_a_quartic_keep_the_run_times_solver() {
     let mut rng = Uniform(79);
-    for family in [IkFamily::Spherical, IkFamily::ThreeParallel] {
+    for family in [SixFamily::Spherical, SixFamily::ThreeParallel] {
         let text = random_arm(&mut rng, family);
         let tree = kinematics_model::parse_source("random.toml", &text).expect("a valid table");
         let plan = classify(&tree, "base", "link6").expect("classified");

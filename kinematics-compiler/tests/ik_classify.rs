@@ -2,7 +2,7 @@
 //! compiler's output a user sees (`kinematics inspect`), so it is pinned here.
 #![allow(clippy::expect_used, clippy::panic)] // test helpers fail loudly
 
-use kinematics_compiler::ik::{IkFamily, classify};
+use kinematics_compiler::ik::{IkFamily, SixFamily, classify};
 
 fn load(file: &str) -> kinematics_model::KinematicTree {
     let path = format!("{}/../robots/{file}", env!("CARGO_MANIFEST_DIR"));
@@ -23,7 +23,7 @@ const EXPECTED: &[(&str, Result<IkFamily, &str>)] = &[
     ("humanoid.urdf", Err("joint `RFinger21` mimics `RHand`")),
     ("iiwa14.toml", Err("the chain has 7 moving joints")),
     ("iiwa14.urdf", Err("the chain has 7 moving joints")),
-    ("irb120.urdf", Ok(IkFamily::SphericalTwoParallel)),
+    ("irb120.urdf", Ok(IkFamily::Six(SixFamily::SphericalTwoParallel))),
     ("panda.toml", Err("the chain has 7 moving joints")),
     ("panda.urdf", Err("joint `panda_finger_joint2` mimics `panda_finger_joint1`")),
     ("panda_spherized.urdf", Err("the chain has 7 moving joints")),
@@ -31,20 +31,20 @@ const EXPECTED: &[(&str, Result<IkFamily, &str>)] = &[
     ("planar_3r.toml", Ok(IkFamily::Planar)),
     ("planar_3r.urdf", Ok(IkFamily::Planar)),
     ("planar_3r_modified.toml", Ok(IkFamily::Planar)),
-    ("puma560.toml", Ok(IkFamily::SphericalTwoParallel)),
+    ("puma560.toml", Ok(IkFamily::Six(SixFamily::SphericalTwoParallel))),
     ("quadruped.urdf", Err("the robot has 12 degrees of freedom and the chain moves 3 of them")),
     ("scara.toml", Ok(IkFamily::Planar)),
     ("seed_tree.urdf", Err("the robot has 3 degrees of freedom and the chain moves 2 of them")),
-    ("stanford_arm.toml", Ok(IkFamily::SphericalPrismaticThird)),
-    ("ur10e.toml", Ok(IkFamily::ThreeParallelTwoIntersecting)),
-    ("ur10e.urdf", Ok(IkFamily::ThreeParallelTwoIntersecting)),
-    ("ur5.toml", Ok(IkFamily::ThreeParallelTwoIntersecting)),
-    ("ur5.urdf", Ok(IkFamily::ThreeParallelTwoIntersecting)),
-    ("ur5_mjcf.xml", Ok(IkFamily::ThreeParallelTwoIntersecting)),
-    ("ur5_modified.toml", Ok(IkFamily::ThreeParallelTwoIntersecting)),
-    ("ur5_primitives.urdf", Ok(IkFamily::ThreeParallelTwoIntersecting)),
-    ("ur5_ros.urdf", Ok(IkFamily::ThreeParallelTwoIntersecting)),
-    ("ur5_spherized.urdf", Ok(IkFamily::ThreeParallelTwoIntersecting)),
+    ("stanford_arm.toml", Ok(IkFamily::Six(SixFamily::SphericalPrismaticThird))),
+    ("ur10e.toml", Ok(IkFamily::Six(SixFamily::ThreeParallelTwoIntersecting))),
+    ("ur10e.urdf", Ok(IkFamily::Six(SixFamily::ThreeParallelTwoIntersecting))),
+    ("ur5.toml", Ok(IkFamily::Six(SixFamily::ThreeParallelTwoIntersecting))),
+    ("ur5.urdf", Ok(IkFamily::Six(SixFamily::ThreeParallelTwoIntersecting))),
+    ("ur5_mjcf.xml", Ok(IkFamily::Six(SixFamily::ThreeParallelTwoIntersecting))),
+    ("ur5_modified.toml", Ok(IkFamily::Six(SixFamily::ThreeParallelTwoIntersecting))),
+    ("ur5_primitives.urdf", Ok(IkFamily::Six(SixFamily::ThreeParallelTwoIntersecting))),
+    ("ur5_ros.urdf", Ok(IkFamily::Six(SixFamily::ThreeParallelTwoIntersecting))),
+    ("ur5_spherized.urdf", Ok(IkFamily::Six(SixFamily::ThreeParallelTwoIntersecting))),
     ("walker.urdf", Err("the chain has 5 moving joints")),
     ("walker.xml", Err("joint `root_joint` is a floating joint")),
 ];
@@ -66,7 +66,7 @@ fn every_robot_is_classified_or_told_why_not() {
         let root = tree.link(tree.root()).name.clone();
         let tip = deepest(&tree);
         match (classify(&tree, &root, &tip), expected) {
-            (Ok(plan), Ok(family)) => assert_eq!(plan.family, *family, "{file}"),
+            (Ok(plan), Ok(family)) => assert_eq!(plan.family(), *family, "{file}"),
             (Err(e), Err(piece)) => assert!(e.to_string().contains(piece), "{file}: {e}"),
             (got, _) => panic!("{file}: expected {expected:?}, got {got:?}"),
         }
@@ -119,8 +119,8 @@ fn a_seven_joint_arm_with_a_free_joint() {
     let iiwa = load("iiwa14.urdf");
     let plan = kinematics_compiler::ik::classify_with(&iiwa, "world", "iiwa_link_ee", Some("iiwa_joint_3"))
         .expect("the iiwa less its third joint is a spherical-wrist arm");
-    assert_eq!(plan.family, IkFamily::SphericalFirstTwoIntersecting);
-    let free = plan.free.expect("a free joint");
+    assert_eq!(plan.family(), SixFamily::SphericalFirstTwoIntersecting.into());
+    let free = plan.free().expect("a free joint");
     assert_eq!((free.name.as_str(), free.index), ("iiwa_joint_3", 2));
     assert_eq!(
         plan.joints,

@@ -19,6 +19,7 @@
 
 use kinematics_model::{JointKind, KinematicTree};
 
+use super::families::{IkFamily, Relation, SixFamily};
 use super::geometry::{M3, V3, ZeroConfiguration, zero_configuration};
 use crate::error::{CompileError, NoIkFamily};
 
@@ -28,119 +29,6 @@ pub const PARALLEL_TOLERANCE: f64 = 1e-12;
 
 /// Axes that pass closer than this times the chain's reach meet.
 pub const MEET_TOLERANCE: f64 = 1e-12;
-
-/// A closed-form family: of six-joint revolute arms (IK-Geo's decompositions), or of planar arms.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum IkFamily {
-    /// Axes 4, 5, 6 meet (a spherical wrist) and axes 2, 3 are parallel: PUMA 560, IRB 120.
-    SphericalTwoParallel,
-    /// A spherical wrist and axes 1, 2 meet.
-    SphericalFirstTwoIntersecting,
-    /// A spherical wrist and axes 2, 3 meet.
-    SphericalLastTwoIntersecting,
-    /// Axes 2, 3, 4 parallel and axes 5, 6 meet: the UR family.
-    ThreeParallelTwoIntersecting,
-    /// Two or three revolute joints about parallel axes, at most one prismatic joint along them:
-    /// planar 2R and 3R arms, the SCARA.
-    Planar,
-    /// A spherical wrist, axes 1 and 2 meeting and joint 3 prismatic: the Stanford arm.
-    SphericalPrismaticThird,
-    /// A spherical wrist, no two of axes 1, 2, 3 parallel or meeting: the general case.
-    Spherical,
-    /// Axes 2, 3, 4 parallel, axes 5 and 6 not meeting.
-    ThreeParallel,
-}
-
-impl IkFamily {
-    /// Every six-joint revolute family, in the order they are tried: the special cases (a
-    /// quadratic first step, eight solutions at most) before the general ones they are special
-    /// cases of (a quartic first step).
-    pub const ALL: [IkFamily; 6] = [
-        IkFamily::ThreeParallelTwoIntersecting,
-        IkFamily::SphericalTwoParallel,
-        IkFamily::SphericalFirstTwoIntersecting,
-        IkFamily::SphericalLastTwoIntersecting,
-        IkFamily::Spherical,
-        IkFamily::ThreeParallel,
-    ];
-
-    /// A stable name (`kinematics inspect`, the generated `IK_FAMILY`).
-    pub fn name(self) -> &'static str {
-        match self {
-            IkFamily::SphericalTwoParallel => "spherical wrist, axes 2 and 3 parallel",
-            IkFamily::SphericalFirstTwoIntersecting => "spherical wrist, axes 1 and 2 meet",
-            IkFamily::SphericalLastTwoIntersecting => "spherical wrist, axes 2 and 3 meet",
-            IkFamily::ThreeParallelTwoIntersecting => "axes 2, 3, 4 parallel, axes 5 and 6 meet",
-            IkFamily::Planar => "planar: revolute axes parallel, a prismatic joint along them at most",
-            IkFamily::SphericalPrismaticThird => "spherical wrist, axes 1 and 2 meet, joint 3 prismatic",
-            IkFamily::Spherical => "spherical wrist",
-            IkFamily::ThreeParallel => "axes 2, 3, 4 parallel",
-        }
-    }
-
-    /// The core function that solves it (under `kinematics::__private::ik`; the planar family's
-    /// is the method `PlanarArm::solve`).
-    pub fn solver(self) -> &'static str {
-        match self {
-            IkFamily::SphericalTwoParallel => "spherical_two_parallel",
-            IkFamily::SphericalFirstTwoIntersecting => "spherical_first_two_intersecting",
-            IkFamily::SphericalLastTwoIntersecting => "spherical_last_two_intersecting",
-            IkFamily::ThreeParallelTwoIntersecting => "three_parallel_two_intersecting",
-            IkFamily::Planar => "PlanarArm::solve",
-            IkFamily::SphericalPrismaticThird => "spherical_prismatic_third",
-            IkFamily::Spherical => "spherical",
-            IkFamily::ThreeParallel => "three_parallel",
-        }
-    }
-
-    /// The subproblems it is composed of, in order (IK-Geo's numbering: 1 a rotation onto a
-    /// vector, 2 two rotations, 3 a rotation to a distance, 4 a rotation to a height, 5 three
-    /// rotations of a point, 6 two angles from two heights; 5 and 6 solve a quartic).
-    pub fn subproblems(self) -> &'static str {
-        match self {
-            IkFamily::SphericalTwoParallel => "q1 by SP4, q3 by SP3, q2 by SP1; wrist: q5 by SP4, q4, q6 by SP1",
-            IkFamily::SphericalFirstTwoIntersecting => "q3 by SP3, q1, q2 by SP2; wrist: q5 by SP4, q4, q6 by SP1",
-            IkFamily::SphericalLastTwoIntersecting => "q1 by SP3, q2, q3 by SP2; wrist: q5 by SP4, q4, q6 by SP1",
-            IkFamily::ThreeParallelTwoIntersecting => {
-                "q1 by SP4, q5 by SP4, q6 by SP1, q2+q3+q4 by SP1, q3 by SP3, q2 by SP1, q4 by difference"
-            }
-            IkFamily::SphericalPrismaticThird => {
-                "q3 from the wrist centre's distance (a quadratic), q1, q2 by SP2; wrist: q5 by SP4, q4, q6 by SP1"
-            }
-            IkFamily::Planar => {
-                "the slide from the height; the turn about the axis by SP1 (three revolute joints); the elbow by SP3, \
-                 the shoulder by SP1, the third by difference"
-            }
-            IkFamily::Spherical => "q1, q2, q3 by SP5; wrist: q5 by SP4, q4, q6 by SP1",
-            IkFamily::ThreeParallel => {
-                "q1, q5 by SP6, q6 by SP1, q2+q3+q4 by SP1, q3 by SP3, q2 by SP1, q4 by difference"
-            }
-        }
-    }
-
-    /// Every pair of axes (0-based, of the six) whose relation the family relies on.
-    pub fn pairs(self) -> &'static [(usize, usize)] {
-        const WRIST: [(usize, usize); 3] = [(3, 4), (4, 5), (3, 5)];
-        match self {
-            IkFamily::ThreeParallelTwoIntersecting => &[(1, 2), (1, 3), (0, 1), (4, 1), (4, 5)],
-            IkFamily::SphericalTwoParallel => &[WRIST[0], WRIST[1], WRIST[2], (1, 2), (0, 1)],
-            IkFamily::SphericalFirstTwoIntersecting => &[WRIST[0], WRIST[1], WRIST[2], (0, 1)],
-            IkFamily::SphericalLastTwoIntersecting => &[WRIST[0], WRIST[1], WRIST[2], (1, 2)],
-            IkFamily::Planar => &[],
-            IkFamily::SphericalPrismaticThird => &[WRIST[0], WRIST[1], WRIST[2], (0, 1)],
-            IkFamily::Spherical => &WRIST,
-            IkFamily::ThreeParallel => &[(1, 2), (1, 3), (0, 1), (4, 1)],
-        }
-    }
-
-    /// The most solutions a target can have: the capacity of the returned list.
-    pub fn max_solutions(self) -> usize {
-        match self {
-            IkFamily::Planar => 2,
-            _ => 8,
-        }
-    }
-}
 
 /// The joint of a seven-joint arm whose value is given, so that the other six are solved in
 /// closed form.
@@ -159,8 +47,6 @@ pub struct FreeJoint {
 /// How to solve a chain in closed form: the family and the geometry its solver takes.
 #[derive(Debug, Clone, PartialEq)]
 pub struct IkPlan {
-    /// The family.
-    pub family: IkFamily,
     /// The base link.
     pub base: String,
     /// The tip link.
@@ -168,22 +54,28 @@ pub struct IkPlan {
     /// The joints solved, base first (for a six-joint family their entries of `q` are `0..6`, or
     /// `0..7` less the free joint's; for a planar arm, `q` itself).
     pub joints: Vec<String>,
-    /// The geometry the family's solver takes.
+    /// The family and the geometry its solver takes.
     pub geometry: IkGeometry,
     /// The chain's reach (the scale of its distances).
     pub reach: f64,
-    /// The seventh joint whose value is an input, for a seven-joint arm.
-    pub free: Option<FreeJoint>,
     /// What the plan changed of the description's geometry (points moved along their axes,
     /// axes within tolerance made parallel), for `kinematics inspect` and `expr --ik`.
     pub notes: Vec<String>,
 }
 
-/// The geometry a family's solver takes.
+/// The family and the geometry its solver takes: a six-joint family with six-joint geometry, or
+/// a planar arm (no other combination can be written).
 #[derive(Debug, Clone, PartialEq)]
 pub enum IkGeometry {
-    /// A six-joint revolute arm (`kinematics_core::ik::Arm6`, or `FreeArm6` with a free joint).
-    Six(Box<SixGeometry>),
+    /// A six-joint arm (`kinematics_core::ik::Arm6`, or `FreeArm6` with a free joint).
+    Six {
+        /// Its family.
+        family: SixFamily,
+        /// Its geometry.
+        arm: Box<SixGeometry>,
+        /// The seventh joint whose value is an input, for a seven-joint arm.
+        free: Option<FreeJoint>,
+    },
     /// A planar arm (`kinematics_core::ik::PlanarArm`).
     Planar(PlanarGeometry),
 }
@@ -218,10 +110,26 @@ pub struct PlanarGeometry {
 }
 
 impl IkPlan {
+    /// The family.
+    pub fn family(&self) -> IkFamily {
+        match &self.geometry {
+            IkGeometry::Six { family, .. } => IkFamily::Six(*family),
+            IkGeometry::Planar(_) => IkFamily::Planar,
+        }
+    }
+
     /// The six-joint geometry, if the family is a six-joint one.
     pub fn six(&self) -> Option<&SixGeometry> {
         match &self.geometry {
-            IkGeometry::Six(six) => Some(six),
+            IkGeometry::Six { arm, .. } => Some(arm),
+            IkGeometry::Planar(_) => None,
+        }
+    }
+
+    /// The free joint, for a seven-joint arm.
+    pub fn free(&self) -> Option<&FreeJoint> {
+        match &self.geometry {
+            IkGeometry::Six { free, .. } => free.as_ref(),
             IkGeometry::Planar(_) => None,
         }
     }
@@ -344,13 +252,11 @@ pub fn classify_with(tree: &KinematicTree, base: &str, tip: &str, free: Option<&
         }
         return planar(&zero)
             .map(|(geometry, notes)| IkPlan {
-                family: IkFamily::Planar,
                 base: base.to_owned(),
                 tip: tip.to_owned(),
                 joints: zero.joints.iter().map(|j| j.name.clone()).collect(),
                 geometry: IkGeometry::Planar(geometry),
                 reach: zero.reach,
-                free: None,
                 notes,
             })
             .map_err(|reason| none(format!("{}: {reason}", IkFamily::Planar.name())));
@@ -358,10 +264,10 @@ pub fn classify_with(tree: &KinematicTree, base: &str, tip: &str, free: Option<&
     let slides: Vec<usize> = (0..moving).filter(|&i| zero.joints[i].kind == JointKind::Prismatic).collect();
     if free.is_none() && moving == 6 && slides == [2] && tree.dof() == 6 {
         let lines = Lines { zero: &zero, meet_tolerance: MEET_TOLERANCE * zero.reach };
-        let family = IkFamily::SphericalPrismaticThird;
+        let family = SixFamily::SphericalPrismaticThird;
         return match plan(&lines, family) {
             Ok((points, parallel_to)) => Ok(finish(base, tip, &zero, family, points, parallel_to, None)),
-            Err(Fault::Wrist(reason) | Fault::Arm(reason)) => Err(none(format!("{}: {reason}", family.name()))),
+            Err(Fault::Wrist(reason) | Fault::Arm(reason)) => Err(none(format!("{}: {reason}", family.facts().name))),
         };
     }
     if let Some(j) = zero.joints.iter().find(|j| j.kind == JointKind::Prismatic) {
@@ -381,11 +287,11 @@ pub fn classify_with(tree: &KinematicTree, base: &str, tip: &str, free: Option<&
     let Some(free) = free else {
         let lines = Lines { zero: &zero, meet_tolerance: MEET_TOLERANCE * zero.reach };
         let mut reasons = Vec::new();
-        for family in IkFamily::ALL {
+        for family in SixFamily::REVOLUTE {
             match plan(&lines, family) {
                 Ok((points, parallel_to)) => {
                     let plan = finish(base, tip, &zero, family, points, parallel_to, None);
-                    match solves_samples(&plan) {
+                    match solves_samples(family, &plan) {
                         Ok(()) => return Ok(plan),
                         Err(reason) => note(&mut reasons, family, Fault::Arm(reason)),
                     }
@@ -402,11 +308,11 @@ pub fn classify_with(tree: &KinematicTree, base: &str, tip: &str, free: Option<&
     let samples: Vec<ZeroConfiguration> =
         FREE_SAMPLES.iter().map(|&angle| without_turned(&zero, index, angle)).collect();
     let mut reasons = Vec::new();
-    'families: for family in IkFamily::ALL {
-        if let Some(&(i, j)) = family.pairs().iter().find(|&&(i, j)| (i < index) != (j < index)) {
+    'families: for family in SixFamily::REVOLUTE {
+        if let Some((i, j)) = family.pairs().find(|&(i, j)| (i < index) != (j < index)) {
             reasons.push(format!(
                 "{}: it relates axes {} and {} of the six, on either side of the free joint",
-                family.name(),
+                family.facts().name,
                 i + 1,
                 j + 1
             ));
@@ -428,7 +334,7 @@ pub fn classify_with(tree: &KinematicTree, base: &str, tip: &str, free: Option<&
         let joint = &zero.joints[index];
         let free = FreeJoint { name: joint.name.clone(), index, axis: joint.axis, point: joint.point };
         let plan = finish(base, tip, &samples[0], family, points, parallel_to, Some(free));
-        match solves_samples(&plan) {
+        match solves_samples(family, &plan) {
             Ok(()) => return Ok(plan),
             Err(reason) => note(&mut reasons, family, Fault::Arm(reason)),
         }
@@ -475,7 +381,7 @@ fn planar(zero: &ZeroConfiguration) -> Result<(PlanarGeometry, Vec<String>), Str
 }
 
 /// A family's fault among the reasons, the wrist's once.
-fn note(reasons: &mut Vec<String>, family: IkFamily, fault: Fault) {
+fn note(reasons: &mut Vec<String>, family: SixFamily, fault: Fault) {
     match fault {
         // The wrist is every spherical family's first test: its fault is told once.
         Fault::Wrist(reason) => {
@@ -484,7 +390,7 @@ fn note(reasons: &mut Vec<String>, family: IkFamily, fault: Fault) {
                 reasons.push(told);
             }
         }
-        Fault::Arm(reason) => reasons.push(format!("{}: {reason}", family.name())),
+        Fault::Arm(reason) => reasons.push(format!("{}: {reason}", family.facts().name)),
     }
 }
 
@@ -541,67 +447,32 @@ impl From<String> for Fault {
     }
 }
 
-fn plan(lines: &Lines<'_>, family: IkFamily) -> Result<Placement, Fault> {
+/// The family's relations checked on `lines`, in its order, and applied: the points of axes
+/// that meet placed where they meet, the axes taken as parallel noted; or the first that fails.
+fn plan(lines: &Lines<'_>, family: SixFamily) -> Result<Placement, Fault> {
     let mut points = [None; 6];
     let mut parallel_to = [None; 6];
-    let not_parallel = |i: usize, j: usize| {
-        if lines.angle_sine(i, j) <= PARALLEL_TOLERANCE {
-            Err(format!("axes {} and {} are parallel", i + 1, j + 1))
-        } else {
-            Ok(())
-        }
-    };
-    match family {
-        IkFamily::ThreeParallelTwoIntersecting => {
-            lines.parallel(1, 2)?;
-            lines.parallel(1, 3)?;
-            not_parallel(0, 1)?;
-            not_parallel(4, 1)?;
-            let meet = lines.meet(4, 5)?;
-            points[4] = Some(meet);
-            points[5] = Some(meet);
-            parallel_to[2] = Some(1);
-            parallel_to[3] = Some(1);
-        }
-        IkFamily::ThreeParallel => {
-            lines.parallel(1, 2)?;
-            lines.parallel(1, 3)?;
-            not_parallel(0, 1)?;
-            not_parallel(4, 1)?;
-            parallel_to[2] = Some(1);
-            parallel_to[3] = Some(1);
-        }
-        IkFamily::Planar => return Err(Fault::Arm("not a six-joint family".to_owned())),
-        IkFamily::Spherical => {
-            let centre = lines.wrist_centre().map_err(Fault::Wrist)?;
-            points[3] = Some(centre);
-            points[4] = Some(centre);
-            points[5] = Some(centre);
-        }
-        IkFamily::SphericalTwoParallel
-        | IkFamily::SphericalPrismaticThird
-        | IkFamily::SphericalFirstTwoIntersecting
-        | IkFamily::SphericalLastTwoIntersecting => {
-            let centre = lines.wrist_centre().map_err(Fault::Wrist)?;
-            points[3] = Some(centre);
-            points[4] = Some(centre);
-            points[5] = Some(centre);
-            match family {
-                IkFamily::SphericalTwoParallel => {
-                    lines.parallel(1, 2)?;
-                    not_parallel(0, 1)?;
-                    parallel_to[2] = Some(1);
+    for relation in family.facts().relations {
+        match *relation {
+            Relation::Wrist => {
+                let centre = lines.wrist_centre().map_err(Fault::Wrist)?;
+                points[3] = Some(centre);
+                points[4] = Some(centre);
+                points[5] = Some(centre);
+            }
+            Relation::Parallel(i, j) => {
+                lines.parallel(i, j)?;
+                parallel_to[j] = Some(i);
+            }
+            Relation::NotParallel(i, j) => {
+                if lines.angle_sine(i, j) <= PARALLEL_TOLERANCE {
+                    return Err(Fault::Arm(format!("axes {} and {} are parallel", i + 1, j + 1)));
                 }
-                IkFamily::SphericalFirstTwoIntersecting | IkFamily::SphericalPrismaticThird => {
-                    let meet = lines.meet(0, 1)?;
-                    points[0] = Some(meet);
-                    points[1] = Some(meet);
-                }
-                _ => {
-                    let meet = lines.meet(1, 2)?;
-                    points[1] = Some(meet);
-                    points[2] = Some(meet);
-                }
+            }
+            Relation::Meet(i, j) => {
+                let meet = lines.meet(i, j)?;
+                points[i] = Some(meet);
+                points[j] = Some(meet);
             }
         }
     }
@@ -615,29 +486,17 @@ fn plan(lines: &Lines<'_>, family: IkFamily) -> Result<Placement, Fault> {
 /// distance are reached, and those by a continuum of angles (the iiwa with its elbow held: its
 /// shoulder and wrist axes each meet in a point, and the distance between the points never
 /// changes).
-fn distance_depends_on_its_joint(lines: &Lines<'_>, family: IkFamily, points: &[Option<V3>; 6]) -> Result<(), Fault> {
+fn distance_depends_on_its_joint(lines: &Lines<'_>, family: SixFamily, points: &[Option<V3>; 6]) -> Result<(), Fault> {
+    // A family without the rule: a slide changes the distance whatever its direction, and
+    // subproblem 5 ties all three joints (the trial on sample poses catches an arm it cannot solve).
+    let Some(rule) = family.facts().distance else { return Ok(()) };
     let point = |i: usize| points[i].unwrap_or(lines.point(i));
-    let across = |axis: usize, from: usize, to: usize| norm(cross(lines.axis(axis), sub(point(to), point(from))));
-    let tolerance = lines.meet_tolerance;
-    let (joint, sides) = match family {
-        // |p23 + rot(h3, q3) p34| is the distance.
-        IkFamily::ThreeParallelTwoIntersecting
-        | IkFamily::ThreeParallel
-        | IkFamily::SphericalTwoParallel
-        | IkFamily::SphericalFirstTwoIntersecting => (2, [across(2, 1, 2), across(2, 2, 3)]),
-        // |rot(h1, -q1) v - p12| is the distance: only p12 is the robot's.
-        IkFamily::SphericalLastTwoIntersecting => (0, [across(0, 0, 1), f64::INFINITY]),
-        // A slide changes the distance whatever its direction (the quadratic has its roots).
-        IkFamily::Planar | IkFamily::SphericalPrismaticThird => return Ok(()),
-        // Subproblem 5 ties all three; the solver's trial on sample poses ([`solves_samples`])
-        // catches an arm it cannot solve.
-        IkFamily::Spherical => return Ok(()),
-    };
-    if sides.iter().any(|&d| d <= tolerance) {
+    let across = |(from, to): (usize, usize)| norm(cross(lines.axis(rule.joint), sub(point(to), point(from))));
+    if rule.sides.iter().any(|&side| across(side) <= lines.meet_tolerance) {
         return Err(Fault::Arm(format!(
             "axis {} is in line with the offset beside it, so turning it changes no distance (a degenerate arm: it \
              reaches only poses at one distance)",
-            joint + 1
+            rule.joint + 1
         )));
     }
     Ok(())
@@ -662,23 +521,13 @@ const SAMPLE_CONFIGURATIONS: [[f64; 6]; 8] = [
 /// families' structural tests (parallel, meeting) say when a decomposition applies; this says
 /// that it is not degenerate for the arm at hand (a quartic family's equations can lose their
 /// hold on an angle in ways no single relation of two axes shows).
-fn solves_samples(plan: &IkPlan) -> Result<(), String> {
-    use kinematics_core::Pose;
-    use kinematics_core::ik::{self, Arm6, IkSolutions};
-    type Solver = fn(&Arm6, &Pose<f64>) -> IkSolutions<6, 8>;
-    let IkGeometry::Six(six) = &plan.geometry else {
+fn solves_samples(family: SixFamily, plan: &IkPlan) -> Result<(), String> {
+    use kinematics_core::ik::Arm6;
+    let facts = family.facts();
+    let Some(six) = plan.six().filter(|_| facts.tried_on_samples) else {
         return Ok(());
     };
-    let solver: Solver = match plan.family {
-        IkFamily::ThreeParallelTwoIntersecting => ik::three_parallel_two_intersecting,
-        IkFamily::SphericalTwoParallel => ik::spherical_two_parallel,
-        IkFamily::SphericalFirstTwoIntersecting => ik::spherical_first_two_intersecting,
-        IkFamily::SphericalLastTwoIntersecting => ik::spherical_last_two_intersecting,
-        IkFamily::Spherical => ik::spherical,
-        IkFamily::ThreeParallel => ik::three_parallel,
-        // A slide is no turn for `Arm6::pose`; the Stanford family's tests are structural.
-        IkFamily::SphericalPrismaticThird | IkFamily::Planar => return Ok(()),
-    };
+    let solver = facts.solver;
     let arm = Arm6 { axes: six.axes, offsets: six.offsets, tool_rotation: six.tool_rotation };
     let turn_apart = |a: f64, b: f64| {
         let d = (a - b).rem_euclid(std::f64::consts::TAU);
@@ -705,7 +554,7 @@ fn finish(
     base: &str,
     tip: &str,
     zero: &ZeroConfiguration,
-    family: IkFamily,
+    family: SixFamily,
     points: [Option<V3>; 6],
     parallel_to: [Option<usize>; 6],
     free: Option<FreeJoint>,
@@ -747,19 +596,21 @@ fn finish(
     }
     offsets[6] = sub(zero.tip_point, chosen[5]);
     IkPlan {
-        family,
         base: base.to_owned(),
         tip: tip.to_owned(),
         joints: zero.joints.iter().map(|j| j.name.clone()).collect(),
-        geometry: IkGeometry::Six(Box::new(SixGeometry {
-            axes,
-            offsets,
-            tool_rotation: zero.tip_rotation,
-            points: [0, 1, 2, 3, 4, 5].map(|i| chosen[i]),
-            tip_point: zero.tip_point,
-        })),
+        geometry: IkGeometry::Six {
+            family,
+            arm: Box::new(SixGeometry {
+                axes,
+                offsets,
+                tool_rotation: zero.tip_rotation,
+                points: [0, 1, 2, 3, 4, 5].map(|i| chosen[i]),
+                tip_point: zero.tip_point,
+            }),
+            free,
+        },
         reach: zero.reach,
-        free,
         notes,
     }
 }

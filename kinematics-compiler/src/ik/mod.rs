@@ -11,12 +11,14 @@
 pub mod classify;
 pub mod closed_form;
 pub mod emit;
+pub mod families;
 pub mod geometry;
 pub mod measure;
 
 pub use classify::{
-    FreeJoint, IkFamily, IkGeometry, IkPlan, MEET_TOLERANCE, PARALLEL_TOLERANCE, PlanarGeometry, SixGeometry, classify,
+    FreeJoint, IkGeometry, IkPlan, MEET_TOLERANCE, PARALLEL_TOLERANCE, PlanarGeometry, SixGeometry, classify,
     classify_with,
 };
 pub use closed_form::{BranchValue, IkBody};
+pub use families::{IkFamily, Relation, SixFacts, SixFamily};
 pub use measure::Measure;

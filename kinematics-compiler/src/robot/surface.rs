@@ -623,12 +623,12 @@ impl IkShape {
 impl ClosedFormShape {
     /// The shape of `plan`'s items.
     fn of(plan: &IkPlan, branch: bool) -> Self {
-        let arm = match (&plan.geometry, &plan.free) {
-            (IkGeometry::Six(_), None) => ArmKind::Six,
-            (IkGeometry::Six(_), Some(_)) => ArmKind::FreeSix,
-            (IkGeometry::Planar(_), _) => ArmKind::Planar,
+        let arm = match &plan.geometry {
+            IkGeometry::Six { free: None, .. } => ArmKind::Six,
+            IkGeometry::Six { free: Some(_), .. } => ArmKind::FreeSix,
+            IkGeometry::Planar(_) => ArmKind::Planar,
         };
-        ClosedFormShape { arm: Some(arm), capacity: plan.family.max_solutions(), free: plan.free.is_some(), branch }
+        ClosedFormShape { arm: Some(arm), capacity: plan.family().max_solutions(), free: plan.free().is_some(), branch }
     }
 }
 

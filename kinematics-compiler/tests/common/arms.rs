@@ -1,7 +1,7 @@
 //! Random arms built to each closed-form family (random lengths, offsets and axis signs, written
 //! as DH tables), and the run time's family functions that solve them.
 
-use kinematics_compiler::ik::{IkFamily, IkPlan};
+use kinematics_compiler::ik::{IkGeometry, IkPlan, SixFamily};
 use kinematics_core::Pose;
 use kinematics_core::ik::{Arm6, IkSolutions};
 
@@ -37,12 +37,12 @@ fn table(rng: &mut Uniform, rows: [(f64, f64, &str); 6]) -> String {
     text
 }
 
-pub fn random_arm(rng: &mut Uniform, family: IkFamily) -> String {
+pub fn random_arm(rng: &mut Uniform, family: SixFamily) -> String {
     let l: [f64; 12] = [0; 12].map(|_| rng.length());
     let t: [&str; 5] = [0; 5].map(|_| rng.twist());
     let rows = match family {
         // UR-like: axes 2, 3, 4 parallel, 5 and 6 meeting.
-        IkFamily::ThreeParallelTwoIntersecting => [
+        SixFamily::ThreeParallelTwoIntersecting => [
             (0.0, l[0], t[0]),
             (l[1], 0.0, "0"),
             (l[2], 0.0, "0"),
@@ -51,7 +51,7 @@ pub fn random_arm(rng: &mut Uniform, family: IkFamily) -> String {
             (0.0, l[5], "0"),
         ],
         // PUMA-like: an offset first axis, 2 and 3 parallel, a spherical wrist.
-        IkFamily::SphericalTwoParallel => [
+        SixFamily::SphericalTwoParallel => [
             (l[0], l[1], t[0]),
             (l[2], l[3], "0"),
             (l[4], l[5], t[2]),
@@ -60,7 +60,7 @@ pub fn random_arm(rng: &mut Uniform, family: IkFamily) -> String {
             (0.0, l[7], "0"),
         ],
         // Axes 1 and 2 meeting, 2 and 3 square, a spherical wrist.
-        IkFamily::SphericalFirstTwoIntersecting => [
+        SixFamily::SphericalFirstTwoIntersecting => [
             (0.0, l[0], t[0]),
             (l[1], l[2], t[1]),
             (l[3], l[4], t[2]),
@@ -69,7 +69,7 @@ pub fn random_arm(rng: &mut Uniform, family: IkFamily) -> String {
             (0.0, l[6], "0"),
         ],
         // An offset first axis, 2 and 3 meeting, a spherical wrist.
-        IkFamily::SphericalLastTwoIntersecting => [
+        SixFamily::SphericalLastTwoIntersecting => [
             (l[0], l[1], t[0]),
             (0.0, l[2], t[1]),
             (l[3], l[4], t[2]),
@@ -79,7 +79,7 @@ pub fn random_arm(rng: &mut Uniform, family: IkFamily) -> String {
         ],
         // Axes 1, 2, 3 skew (offsets along both common normals, one twist not square), a
         // spherical wrist.
-        IkFamily::Spherical => [
+        SixFamily::Spherical => [
             (l[0], l[1], t[0]),
             (l[2], l[3], "1.1"),
             (l[4], l[5], t[2]),
@@ -88,7 +88,7 @@ pub fn random_arm(rng: &mut Uniform, family: IkFamily) -> String {
             (0.0, l[7], "0"),
         ],
         // UR-like, but axes 5 and 6 apart (a common normal of length l[8]).
-        IkFamily::ThreeParallel => [
+        SixFamily::ThreeParallel => [
             (0.0, l[0], t[0]),
             (l[1], 0.0, "0"),
             (l[2], 0.0, "0"),
@@ -96,25 +96,15 @@ pub fn random_arm(rng: &mut Uniform, family: IkFamily) -> String {
             (l[8], l[4], t[4]),
             (0.0, l[5], "0"),
         ],
-        IkFamily::SphericalPrismaticThird => panic!("a prismatic arm: tested in the core and on the Stanford arm"),
-        IkFamily::Planar => panic!("not a six-joint family"),
+        SixFamily::SphericalPrismaticThird => panic!("a prismatic arm: tested in the core and on the Stanford arm"),
     };
     table(rng, rows)
 }
 
 pub fn solve(plan: &IkPlan, target: &Pose<f64>) -> IkSolutions<6, 8> {
-    let six = plan.six().expect("a six-joint family");
+    let IkGeometry::Six { family, arm: six, .. } = &plan.geometry else { panic!("not a six-joint family") };
     let arm = Arm6 { axes: six.axes, offsets: six.offsets, tool_rotation: six.tool_rotation };
-    match plan.family {
-        IkFamily::SphericalTwoParallel => kinematics_core::ik::spherical_two_parallel(&arm, target),
-        IkFamily::SphericalFirstTwoIntersecting => kinematics_core::ik::spherical_first_two_intersecting(&arm, target),
-        IkFamily::SphericalLastTwoIntersecting => kinematics_core::ik::spherical_last_two_intersecting(&arm, target),
-        IkFamily::ThreeParallelTwoIntersecting => kinematics_core::ik::three_parallel_two_intersecting(&arm, target),
-        IkFamily::SphericalPrismaticThird => kinematics_core::ik::spherical_prismatic_third(&arm, target),
-        IkFamily::Spherical => kinematics_core::ik::spherical(&arm, target),
-        IkFamily::ThreeParallel => kinematics_core::ik::three_parallel(&arm, target),
-        IkFamily::Planar => panic!("not a six-joint family"),
-    }
+    (family.facts().solver)(&arm, target)
 }
 
 pub fn wrapped(x: f64) -> f64 {

@@ -11,7 +11,8 @@
 use kinematics_core::ik::ORTHOGONAL;
 
 use super::algebra::{Builder, Matrix, Quality, Turn, Vector};
-use crate::ik::classify::{IkFamily, SixGeometry};
+use crate::ik::classify::SixGeometry;
+use crate::ik::families::SixFamily;
 use crate::symbolic::graph::ExprId;
 
 /// What the body computes for one branch: joint values, each joint's cosine and sine (of the
@@ -45,8 +46,8 @@ pub(super) struct Problem<'a> {
 }
 
 /// The family's branch, or `None` for a family this module does not compose (a quartic first
-/// step, or no six-joint arm).
-pub(super) fn branch(b: &mut Builder, family: IkFamily, problem: &Problem<'_>) -> Option<Branch> {
+/// step).
+pub(super) fn branch(b: &mut Builder, family: SixFamily, problem: &Problem<'_>) -> Option<Branch> {
     let arm = Arm {
         h: problem.six.axes.map(|v| b.vector(v)),
         p: problem.six.offsets.map(|v| b.vector(v)),
@@ -56,14 +57,14 @@ pub(super) fn branch(b: &mut Builder, family: IkFamily, problem: &Problem<'_>) -
     let (r06, v0) = wrist_target(b, &arm, problem);
     let [s1, s2, s3] = problem.signs;
     let branch = match family {
-        IkFamily::ThreeParallelTwoIntersecting => {
+        SixFamily::ThreeParallelTwoIntersecting => {
             three_parallel_two_intersecting(b, &arm, &r06, v0, [s1, s2, s3], problem.singular_pass)
         }
-        IkFamily::SphericalTwoParallel => spherical_two_parallel(b, &arm, &r06, v0, [s1, s2, s3]),
-        IkFamily::SphericalFirstTwoIntersecting => spherical_first_two_intersecting(b, &arm, &r06, v0, [s1, s2, s3]),
-        IkFamily::SphericalLastTwoIntersecting => spherical_last_two_intersecting(b, &arm, &r06, v0, [s1, s2, s3]),
-        IkFamily::SphericalPrismaticThird => spherical_prismatic_third(b, &arm, &r06, v0, [s1, s2, s3]),
-        IkFamily::Spherical | IkFamily::ThreeParallel | IkFamily::Planar => return None,
+        SixFamily::SphericalTwoParallel => spherical_two_parallel(b, &arm, &r06, v0, [s1, s2, s3]),
+        SixFamily::SphericalFirstTwoIntersecting => spherical_first_two_intersecting(b, &arm, &r06, v0, [s1, s2, s3]),
+        SixFamily::SphericalLastTwoIntersecting => spherical_last_two_intersecting(b, &arm, &r06, v0, [s1, s2, s3]),
+        SixFamily::SphericalPrismaticThird => spherical_prismatic_third(b, &arm, &r06, v0, [s1, s2, s3]),
+        SixFamily::Spherical | SixFamily::ThreeParallel => return None,
     };
     Some(branch)
 }

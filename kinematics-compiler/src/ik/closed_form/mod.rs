@@ -23,7 +23,8 @@ mod subproblem;
 
 use kinematics_core::Pose;
 
-use super::classify::{IkFamily, IkGeometry, IkPlan};
+use super::classify::{IkGeometry, IkPlan};
+use super::families::SixFamily;
 use crate::stats::{OpCount, marginal_counts};
 use crate::symbolic::graph::{ExprGraph, ExprId};
 
@@ -80,24 +81,21 @@ impl IkBody {
     /// exact: the generated `tip_ik` runs it, and the full body only when a lane comes back so
     /// (the pass costs about a third of the body, for targets a random pose almost never is).
     pub fn regular(plan: &IkPlan) -> Option<IkBody> {
-        if plan.family != IkFamily::ThreeParallelTwoIntersecting {
+        if plan.family() != SixFamily::ThreeParallelTwoIntersecting.into() {
             return None;
         }
         Self::build(plan, false)
     }
 
     fn build(plan: &IkPlan, singular_pass: bool) -> Option<IkBody> {
-        let IkGeometry::Six(six) = &plan.geometry else { return None };
-        if plan.free.is_some() {
-            return None;
-        }
+        let IkGeometry::Six { family, arm: six, free: None } = &plan.geometry else { return None };
         let mut b = algebra::Builder::default();
         let inputs: Vec<ExprId> = (0..INPUTS).map(|i| b.g.input(i)).collect();
         let rotation = [0, 1, 2].map(|i| [0, 1, 2].map(|j| inputs[3 * i + j]));
         let translation = [inputs[9], inputs[10], inputs[11]];
         let signs = [inputs[FIRST_SIGN], inputs[FIRST_SIGN + 1], inputs[FIRST_SIGN + 2]];
         let problem = family::Problem { six, rotation, translation, signs, singular_pass };
-        let branch = family::branch(&mut b, plan.family, &problem)?;
+        let branch = family::branch(&mut b, *family, &problem)?;
         let (q, cos, sin) = (branch.q.to_vec(), branch.cos.to_vec(), branch.sin.to_vec());
         b.step(
             "the joint values, wrapped into (-pi, pi], and the flags",

@@ -85,8 +85,8 @@ pub fn emit_ik(
     let compiled = IkBody::of(plan);
     let refine = refine(plan, p, pose_and_jacobian, revolute);
     let solutions_refined = refine.clone().unwrap_or_else(|| quote!(solutions));
-    let family = plan.family.name();
-    let capacity = Literal::usize_unsuffixed(plan.family.max_solutions());
+    let family = plan.family().name();
+    let capacity = Literal::usize_unsuffixed(plan.family().max_solutions());
     let n = Literal::usize_unsuffixed(revolute.len());
     let mask = quote!([#(#revolute),*]);
     let ArmAndSolver { arm, solve, doc: free_doc, free } = arm_and_solver(plan, p);
@@ -183,9 +183,9 @@ struct ArmAndSolver {
 
 fn arm_and_solver(plan: &IkPlan, p: &TokenStream) -> ArmAndSolver {
     // The six-joint families' core functions (a planar arm solves by its method).
-    let solver = || format_ident!("{}", plan.family.solver());
-    match (&plan.geometry, &plan.free) {
-        (IkGeometry::Six(six), None) => {
+    let solver = || format_ident!("{}", plan.family().solver());
+    match &plan.geometry {
+        IkGeometry::Six { arm: six, free: None, .. } => {
             let (axes, offsets, rows) =
                 (six.axes.iter().map(vector), six.offsets.iter().map(vector), six.tool_rotation.iter().map(vector));
             let solver = solver();
@@ -196,7 +196,7 @@ fn arm_and_solver(plan: &IkPlan, p: &TokenStream) -> ArmAndSolver {
                 free: None,
             }
         }
-        (IkGeometry::Six(six), Some(free)) => {
+        IkGeometry::Six { arm: six, free: Some(free), .. } => {
             let (axes, points, rows) =
                 (six.axes.iter().map(vector), six.points.iter().map(vector), six.tool_rotation.iter().map(vector));
             let (tip_point, free_axis, free_point) = (vector(&six.tip_point), vector(&free.axis), vector(&free.point));
@@ -217,7 +217,7 @@ fn arm_and_solver(plan: &IkPlan, p: &TokenStream) -> ArmAndSolver {
                 free: Some(index),
             }
         }
-        (IkGeometry::Planar(planar), _) => {
+        IkGeometry::Planar(planar) => {
             let joints = planar.joints.iter().map(|(sign, point)| {
                 let sign = number(*sign);
                 match point {
@@ -249,7 +249,7 @@ fn arm_and_solver(plan: &IkPlan, p: &TokenStream) -> ArmAndSolver {
 fn refine(plan: &IkPlan, p: &TokenStream, pose_and_jacobian: &TokenStream, revolute: &[bool]) -> Option<TokenStream> {
     plan.six()?;
     let reach = number(plan.reach);
-    let free = plan.free.as_ref().map(|f| f.index);
+    let free = plan.free().map(|f| f.index);
     let moving = (0..revolute.len()).map(|i| Some(i) != free);
     Some(quote! {
         // Back to the arm as written where the family's exact relations missed it.
@@ -287,8 +287,8 @@ fn free_argument(index: Option<&Literal>, p: &TokenStream) -> FreeArgument {
 /// `tip_ik`'s doc; `measured_by_cosines` where the solutions' poses come from the solver's own
 /// cosines and sines.
 fn doc_all(plan: &IkPlan, measured_by_cosines: bool, free_doc: &str) -> String {
-    let (tip, base, family) = (&plan.tip, &plan.base, plan.family.name());
-    let capacity = plan.family.max_solutions();
+    let (tip, base, family) = (&plan.tip, &plan.base, plan.family().name());
+    let capacity = plan.family().max_solutions();
     let measured = if measured_by_cosines {
         " (at the cosines and sines the solver computed for each angle, of which `q` is the `atan2`)"
     } else {
@@ -304,7 +304,7 @@ fn doc_all(plan: &IkPlan, measured_by_cosines: bool, free_doc: &str) -> String {
 
 /// `tip_ik_nearest`'s doc.
 fn doc_nearest(plan: &IkPlan) -> String {
-    match &plan.free {
+    match plan.free() {
         Some(free) => format!(
             "The solution of [`Self::tip_ik`] with joint `{}` at the seed's value nearest `seed` (each angle moved by \
              whole turns to the seed's side), exact ones preferred to least-squares ones. A seed with a non-finite \
@@ -337,7 +337,7 @@ fn solving_compiled(
     refine: Option<&TokenStream>,
     p: &TokenStream,
 ) -> Solving {
-    let (tip, base, family) = (&plan.tip, &plan.base, plan.family.name());
+    let (tip, base, family) = (&plan.tip, &plan.base, plan.family().name());
     let branch_doc = format!(
         "One branch of the closed-form inverse kinematics of `{tip}` in `{base}` ({family}), for any `IkReal` \
          scalar: the joint values with their cosines and sines, and `1` or `0` for whether every equation had a \
