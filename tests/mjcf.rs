@@ -256,7 +256,7 @@ fn the_mjcf_ur5_is_the_urdf_ur5_with_tool0_a_site() {
     let ik = kinematics_compiler::ik::classify(&mjcf, "base_link", "tool0").unwrap();
     let ik_urdf =
         kinematics_compiler::ik::classify(&kinematics::load(robot("ur5.urdf")).unwrap(), "base_link", "tool0");
-    assert_eq!(ik.family, ik_urdf.unwrap().family);
+    assert_eq!(ik.family(), ik_urdf.unwrap().family());
 }
 
 #[test]
