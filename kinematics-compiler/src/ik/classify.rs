@@ -1,5 +1,6 @@
 //! Which closed-form family solves a chain, decided at compile time from its zero-configuration
-//! geometry: which axes are parallel and which meet, exactly where the description is exact
+//! geometry: each family's relations ([`super::families`]) checked in turn and applied, which
+//! axes are parallel and which meet, exactly where the description is exact
 //! (quarter turns give exact zeros) or within [`PARALLEL_TOLERANCE`] and [`MEET_TOLERANCE`] times
 //! the chain's reach. A family's solver assumes its parallel axes are exactly parallel, so within
 //! tolerance the plan writes the later axis as the earlier one (with its sign); the pose errors
@@ -14,8 +15,8 @@
 //! (the check that catches an arm degenerate for a family in ways no relation of two axes shows).
 //! With a free joint, only families whose relations keep to one side of it are tried, checked at
 //! five of its angles. Chains of two to four joints are tried as planar arms. The result is an
-//! `IkPlan` with its `IkGeometry` (six-joint or planar), or `NoIkFamily` with every family's
-//! reason.
+//! `IkPlan` with its `IkGeometry` (a six-joint family with its geometry and free joint, or a
+//! planar arm), or `NoIkFamily` with every family's reason.
 
 use kinematics_model::{JointKind, KinematicTree};
 

@@ -1,6 +1,8 @@
-//! Inverse kinematics, compiled: the chain's geometry at its zero configuration ([`geometry`]),
-//! the closed-form family that solves it, decided at compile time ([`mod@classify`]: which axes are
-//! parallel and which meet, and where to place the points on them), the families composed as
+//! Inverse kinematics, compiled: the families as data ([`families`]: each one's relations of
+//! axes, solver, capacity and subproblems), the chain's geometry at its zero configuration
+//! ([`geometry`]), the closed-form family that solves it, decided at compile time
+//! ([`mod@classify`]: which family's relations hold, and where to place the points on the axes;
+//! the plan is a six-joint family with six-joint geometry or a planar arm), the families composed as
 //! straight-line code over the expression graph ([`closed_form`]: subproblems with the geometry
 //! folded in, the eight branches side by side in lanes), the forward kinematics each solution is
 //! measured with ([`measure`]: the compiled pose, on the solver's own sines and cosines), and the
