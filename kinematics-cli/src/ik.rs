@@ -202,7 +202,7 @@ pub fn solve(plan: &IkPlan, target: &Pose<f64>, forward: &dyn Fn(&[f64]) -> Pose
     match &plan.geometry {
         IkGeometry::Six { family, arm: six, .. } => {
             let arm = Arm6 { axes: six.axes, offsets: six.offsets, tool_rotation: six.tool_rotation };
-            let solutions = (family.facts().solver)(&arm, target);
+            let solutions = (family.facts().solver.function)(&arm, target);
             rows(solutions, target, forward)
         }
         IkGeometry::Planar(planar) => {

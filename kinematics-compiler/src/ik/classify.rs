@@ -528,7 +528,7 @@ fn solves_samples(family: SixFamily, plan: &IkPlan) -> Result<(), String> {
     let Some(six) = plan.six().filter(|_| facts.tried_on_samples) else {
         return Ok(());
     };
-    let solver = facts.solver;
+    let solver = facts.solver.function;
     let arm = Arm6 { axes: six.axes, offsets: six.offsets, tool_rotation: six.tool_rotation };
     let turn_apart = |a: f64, b: f64| {
         let d = (a - b).rem_euclid(std::f64::consts::TAU);

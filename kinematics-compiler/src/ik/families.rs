@@ -78,6 +78,23 @@ pub struct DistanceRule {
 /// A six-joint family's solver in `kinematics-core`.
 pub type SixSolver = fn(&Arm6, &Pose<f64>) -> IkSolutions<6, 8>;
 
+/// A family's solver in `kinematics-core`: the function, and its name, which generated code calls
+/// under `kinematics::__private::ik` (both from one spelling, by the `solver!` macro here).
+#[derive(Debug, Clone, Copy)]
+pub struct Solver {
+    /// The function's name.
+    pub path: &'static str,
+    /// The function, which the compiler runs.
+    pub function: SixSolver,
+}
+
+/// The [`Solver`] of the core function `name`: its name and the function from one spelling.
+macro_rules! solver {
+    ($name:ident) => {
+        Solver { path: stringify!($name), function: ik::$name }
+    };
+}
+
 /// What the compiler knows of one six-joint family.
 #[derive(Debug, Clone, Copy)]
 pub struct SixFacts {
@@ -88,10 +105,8 @@ pub struct SixFacts {
     pub relations: &'static [Relation],
     /// The distance subproblem 3 solves, where it has one.
     pub distance: Option<DistanceRule>,
-    /// The core function's name under `kinematics::__private::ik`, which generated code calls.
-    pub solver_path: &'static str,
-    /// The same function, which the compiler runs.
-    pub solver: SixSolver,
+    /// Its solver in `kinematics-core`.
+    pub solver: Solver,
     /// Whether a plan is tried on sample poses of the arm before it is taken (`Arm6::pose` turns
     /// every joint, so not for a prismatic one: the Stanford family's tests are structural).
     pub tried_on_samples: bool,
@@ -114,8 +129,7 @@ const THREE_PARALLEL_TWO_INTERSECTING: SixFacts = SixFacts {
         Relation::Meet(4, 5),
     ],
     distance: Some(ELBOW),
-    solver_path: "three_parallel_two_intersecting",
-    solver: ik::three_parallel_two_intersecting,
+    solver: solver!(three_parallel_two_intersecting),
     tried_on_samples: true,
     subproblems: "q1 by SP4, q5 by SP4, q6 by SP1, q2+q3+q4 by SP1, q3 by SP3, q2 by SP1, q4 by difference",
 };
@@ -124,8 +138,7 @@ const SPHERICAL_TWO_PARALLEL: SixFacts = SixFacts {
     name: "spherical wrist, axes 2 and 3 parallel",
     relations: &[Relation::Wrist, Relation::Parallel(1, 2), Relation::NotParallel(0, 1)],
     distance: Some(ELBOW),
-    solver_path: "spherical_two_parallel",
-    solver: ik::spherical_two_parallel,
+    solver: solver!(spherical_two_parallel),
     tried_on_samples: true,
     subproblems: "q1 by SP4, q3 by SP3, q2 by SP1; wrist: q5 by SP4, q4, q6 by SP1",
 };
@@ -134,8 +147,7 @@ const SPHERICAL_FIRST_TWO_INTERSECTING: SixFacts = SixFacts {
     name: "spherical wrist, axes 1 and 2 meet",
     relations: &[Relation::Wrist, Relation::Meet(0, 1)],
     distance: Some(ELBOW),
-    solver_path: "spherical_first_two_intersecting",
-    solver: ik::spherical_first_two_intersecting,
+    solver: solver!(spherical_first_two_intersecting),
     tried_on_samples: true,
     subproblems: "q3 by SP3, q1, q2 by SP2; wrist: q5 by SP4, q4, q6 by SP1",
 };
@@ -145,8 +157,7 @@ const SPHERICAL_LAST_TWO_INTERSECTING: SixFacts = SixFacts {
     relations: &[Relation::Wrist, Relation::Meet(1, 2)],
     // |rot(h1, -q1) v - p12| is the distance: only p12 is the robot's.
     distance: Some(DistanceRule { joint: 0, sides: &[(0, 1)] }),
-    solver_path: "spherical_last_two_intersecting",
-    solver: ik::spherical_last_two_intersecting,
+    solver: solver!(spherical_last_two_intersecting),
     tried_on_samples: true,
     subproblems: "q1 by SP3, q2, q3 by SP2; wrist: q5 by SP4, q4, q6 by SP1",
 };
@@ -156,8 +167,7 @@ const SPHERICAL_PRISMATIC_THIRD: SixFacts = SixFacts {
     relations: &[Relation::Wrist, Relation::Meet(0, 1)],
     // A slide changes the distance whatever its direction (the quadratic has its roots).
     distance: None,
-    solver_path: "spherical_prismatic_third",
-    solver: ik::spherical_prismatic_third,
+    solver: solver!(spherical_prismatic_third),
     tried_on_samples: false,
     subproblems: "q3 from the wrist centre's distance (a quadratic), q1, q2 by SP2; wrist: q5 by SP4, q4, q6 by SP1",
 };
@@ -167,8 +177,7 @@ const SPHERICAL: SixFacts = SixFacts {
     relations: &[Relation::Wrist],
     // Subproblem 5 ties all three; the trial on sample poses catches an arm it cannot solve.
     distance: None,
-    solver_path: "spherical",
-    solver: ik::spherical,
+    solver: solver!(spherical),
     tried_on_samples: true,
     subproblems: "q1, q2, q3 by SP5; wrist: q5 by SP4, q4, q6 by SP1",
 };
@@ -182,8 +191,7 @@ const THREE_PARALLEL: SixFacts = SixFacts {
         Relation::NotParallel(4, 1),
     ],
     distance: Some(ELBOW),
-    solver_path: "three_parallel",
-    solver: ik::three_parallel,
+    solver: solver!(three_parallel),
     tried_on_samples: true,
     subproblems: "q1, q5 by SP6, q6 by SP1, q2+q3+q4 by SP1, q3 by SP3, q2 by SP1, q4 by difference",
 };
@@ -254,7 +262,7 @@ impl IkFamily {
     /// is the method `PlanarArm::solve`).
     pub fn solver(self) -> &'static str {
         match self {
-            IkFamily::Six(six) => six.facts().solver_path,
+            IkFamily::Six(six) => six.facts().solver.path,
             IkFamily::Planar => "PlanarArm::solve",
         }
     }

@@ -22,5 +22,5 @@ pub use classify::{
     classify_with,
 };
 pub use closed_form::{BranchValue, IkBody};
-pub use families::{IkFamily, Relation, SixFacts, SixFamily};
+pub use families::{IkFamily, Relation, SixFacts, SixFamily, Solver};
 pub use measure::Measure;

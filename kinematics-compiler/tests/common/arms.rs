@@ -104,7 +104,7 @@ pub fn random_arm(rng: &mut Uniform, family: SixFamily) -> String {
 pub fn solve(plan: &IkPlan, target: &Pose<f64>) -> IkSolutions<6, 8> {
     let IkGeometry::Six { family, arm: six, .. } = &plan.geometry else { panic!("not a six-joint family") };
     let arm = Arm6 { axes: six.axes, offsets: six.offsets, tool_rotation: six.tool_rotation };
-    (family.facts().solver)(&arm, target)
+    (family.facts().solver.function)(&arm, target)
 }
 
 pub fn wrapped(x: f64) -> f64 {
