@@ -95,7 +95,9 @@ fn spherical_wrist_after(
         if let Some(slide) = slide {
             q[2] = slide;
         }
-        out.push(IkSolution::unmeasured(q, all.exact, all.singular));
+        #[allow(clippy::expect_used, reason = "invariant: two wrist flips per arm branch, four arm branches at most")]
+        out.push(IkSolution::unmeasured(q, all.exact, all.singular))
+            .expect("invariant: two wrist flips for each of at most four arm branches: at most 8 solutions");
     }
 }
 
@@ -299,7 +301,9 @@ fn parallel_elbow(
         let q4 = sign4 * (sum.angle - q2.angle - sign3 * q3.angle);
         let all = quality.and(sixth).and(summed).and(third).and(second);
         let q = [q1.angle, q2.angle, q3.angle, q4, q5.angle, q6];
-        out.push(IkSolution::unmeasured(q.map(wrap), all.exact, all.singular));
+        #[allow(clippy::expect_used, reason = "invariant: two elbows per q1 and q5 branch, four of those at most")]
+        out.push(IkSolution::unmeasured(q.map(wrap), all.exact, all.singular))
+            .expect("invariant: two elbows for each of at most four (q1, q5) branches: at most 8 solutions");
     }
 }
 
@@ -435,13 +439,15 @@ pub fn insert_free<const M: usize>(six: &IkSolutions<6, M>, index: usize, value:
                 from += 1;
             }
         }
-        out.push(IkSolution {
+        let seven = IkSolution {
             q,
             exact: s.exact,
             singular: s.singular,
             position_error: s.position_error,
             rotation_error: s.rotation_error,
-        });
+        };
+        #[allow(clippy::expect_used, reason = "invariant: one seven-joint solution per six-joint one, same capacity")]
+        out.push(seven).expect("invariant: one seven-joint solution per six-joint one, both lists of capacity M");
     }
     out
 }
@@ -587,7 +593,9 @@ impl<const N: usize> PlanarArm<N> {
             if let Some((i, _)) = prismatic {
                 q[i] = slide;
             }
-            out.push(IkSolution::unmeasured(q, quality.exact && exact, quality.singular));
+            #[allow(clippy::expect_used, reason = "invariant: a planar arm has two elbows")]
+            out.push(IkSolution::unmeasured(q, quality.exact && exact, quality.singular))
+                .expect("invariant: a planar arm's two elbows: two solutions, its list's capacity");
         }
         out
     }

@@ -34,6 +34,7 @@
 //! assert!(solutions.iter().any(|s| s.q.iter().zip(&q).all(|(a, b)| (a - b).abs() < 1e-12)));
 //! ```
 
+mod bounded;
 mod family;
 mod ldl;
 mod numeric;
@@ -45,6 +46,7 @@ pub mod subproblem;
 mod target;
 mod vector;
 
+pub use bounded::{BoundedList, Full};
 pub use family::{
     Arm6, FreeArm6, NEAR_SINGULAR_SIXTH, ORTHOGONAL, PlanarArm, PlanarJoint, insert_free, spherical,
     spherical_first_two_intersecting, spherical_last_two_intersecting, spherical_prismatic_third,

@@ -7,6 +7,7 @@
 
 use core::fmt;
 
+use super::bounded::{BoundedList, Full};
 use super::real::IkReal;
 use super::vector::dot;
 use crate::kinematics::JointLimits;
@@ -121,8 +122,7 @@ impl<const N: usize> IkSolution<N> {
 /// [`Self::within_limits`] keeps those inside joint limits.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct IkSolutions<const N: usize, const M: usize> {
-    solutions: [IkSolution<N>; M],
-    len: usize,
+    solutions: BoundedList<IkSolution<N>, M>,
 }
 
 impl<const N: usize, const M: usize> Default for IkSolutions<N, M> {
@@ -134,37 +134,35 @@ impl<const N: usize, const M: usize> Default for IkSolutions<N, M> {
 impl<const N: usize, const M: usize> IkSolutions<N, M> {
     /// No solutions.
     pub fn new() -> Self {
-        IkSolutions { solutions: [IkSolution::unmeasured([0.0; N], false, false); M], len: 0 }
+        IkSolutions { solutions: BoundedList::new(IkSolution::unmeasured([0.0; N], false, false)) }
     }
 
-    /// Adds a solution; one past the capacity is dropped (the solvers never produce more than
-    /// their family's maximum, which is the capacity they declare).
+    /// Adds a solution, or returns [`Full`] (and adds nothing) when there are `M` already (the
+    /// solvers never produce more than their family's maximum, which is the capacity they
+    /// declare).
     #[inline(always)]
-    pub fn push(&mut self, solution: IkSolution<N>) {
-        if self.len < M {
-            self.solutions[self.len] = solution;
-            self.len += 1;
-        }
+    pub fn push(&mut self, solution: IkSolution<N>) -> Result<(), Full> {
+        self.solutions.push(solution)
     }
 
     /// The solutions, in the solver's branch order.
     pub fn as_slice(&self) -> &[IkSolution<N>] {
-        &self.solutions[..self.len]
+        self.solutions.as_slice()
     }
 
     /// The solutions, in branch order, to change in place (the refinement's).
     pub(super) fn solutions_mut(&mut self) -> &mut [IkSolution<N>] {
-        &mut self.solutions[..self.len]
+        self.solutions.as_mut_slice()
     }
 
     /// How many there are.
     pub fn len(&self) -> usize {
-        self.len
+        self.solutions.len()
     }
 
     /// Whether there are none.
     pub fn is_empty(&self) -> bool {
-        self.len == 0
+        self.solutions.is_empty()
     }
 
     /// The solutions in branch order.
@@ -181,7 +179,7 @@ impl<const N: usize, const M: usize> IkSolutions<N, M> {
     /// generated forward kinematics). A pose with a non-finite entry counts as infinitely far.
     #[inline(always)]
     pub fn measure(&mut self, target: &Pose<f64>, forward: impl Fn(&[f64; N]) -> Pose<f64>) {
-        for solution in &mut self.solutions[..self.len] {
+        for solution in self.solutions.as_mut_slice() {
             let reached = forward(&solution.q);
             let (position, rotation) = pose_errors(&reached, target);
             solution.position_error = position;
@@ -215,7 +213,7 @@ impl<const N: usize, const M: usize> IkSolutions<N, M> {
             solution.position_error = position_error;
             solution.rotation_error = rotation_error;
         }
-        IkSolutions { solutions, len: count }
+        IkSolutions { solutions: BoundedList::from_first(solutions, count) }
     }
 
     /// The solution nearest `seed` (Euclidean distance in joint space, each angle of a joint
@@ -242,7 +240,7 @@ impl<const N: usize, const M: usize> IkSolutions<N, M> {
             }
         }
         best.map(|(_, _, k)| {
-            let mut moved = self.solutions[k];
+            let mut moved = self.as_slice()[k];
             for i in 0..N {
                 if revolute[i] {
                     moved.q[i] = seed[i] + super::vector::nearest_turn(moved.q[i] - seed[i]);
@@ -272,7 +270,9 @@ impl<const N: usize, const M: usize> IkSolutions<N, M> {
                 }
                 moved.q[i] = value;
             }
-            kept.push(moved);
+            // At most as many as there are, which fit.
+            #[allow(clippy::expect_used, reason = "invariant: a subset of a list of capacity M fits in one")]
+            kept.push(moved).expect("invariant: the solutions kept are at most the solutions, at most M");
         }
         kept
     }
@@ -402,9 +402,9 @@ mod tests {
     #[test]
     fn nearest_moves_angles_by_whole_turns_and_prefers_exact() {
         let mut all = IkSolutions::<2, 4>::new();
-        all.push(IkSolution::unmeasured([3.0, 0.5], true, false));
-        all.push(IkSolution::unmeasured([0.1, 0.1], false, false));
-        all.push(IkSolution::unmeasured([-3.0, 0.4], true, false));
+        assert_eq!(all.push(IkSolution::unmeasured([3.0, 0.5], true, false)), Ok(()));
+        assert_eq!(all.push(IkSolution::unmeasured([0.1, 0.1], false, false)), Ok(()));
+        assert_eq!(all.push(IkSolution::unmeasured([-3.0, 0.4], true, false)), Ok(()));
         let nearest = all.nearest(&[3.2, 0.4], &[true, false]).map(|s| s.q);
         // -3.0 is 3.2832 after a whole turn: 0.0832 from the seed, nearer than 3.0.
         assert!(matches!(nearest, Some([a, b]) if (a - (-3.0 + core::f64::consts::TAU)).abs() < 1e-15 && b == 0.4));
@@ -413,8 +413,8 @@ mod tests {
     #[test]
     fn limits_move_angles_by_whole_turns_or_drop_the_solution() {
         let mut all = IkSolutions::<2, 4>::new();
-        all.push(IkSolution::unmeasured([-3.0, 0.1], true, false));
-        all.push(IkSolution::unmeasured([1.0, 0.9], true, false));
+        assert_eq!(all.push(IkSolution::unmeasured([-3.0, 0.1], true, false)), Ok(()));
+        assert_eq!(all.push(IkSolution::unmeasured([1.0, 0.9], true, false)), Ok(()));
         let limits = [JointLimits { lower: 0.0, upper: 6.0 }, JointLimits { lower: 0.0, upper: 0.5 }];
         let kept = all.within_limits(&limits, &[true, false]);
         assert_eq!(kept.len(), 1);

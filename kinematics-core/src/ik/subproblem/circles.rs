@@ -6,6 +6,7 @@
 //! ([`super::polynomial`]). At most four pairs; out of reach, the angles where the equation comes
 //! closest, flagged.
 
+use super::super::bounded::BoundedList;
 use super::super::vector::{V3, add, cross, dot, norm_squared};
 use super::polynomial::real_roots;
 use super::{DEGENERATE, Quality, REACH_SLACK, Turn, rotation_onto};
@@ -13,33 +14,31 @@ use super::{DEGENERATE, Quality, REACH_SLACK, Turn, rotation_onto};
 /// Up to four solved angle pairs (subproblem 6), with the quality they share.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct TurnPairs {
-    pairs: [(Turn, Turn); 4],
-    count: usize,
+    pairs: BoundedList<(Turn, Turn), 4>,
     /// Whether the pairs are exact (the equations met) and whether one was degenerate.
     pub quality: Quality,
 }
 
 impl TurnPairs {
-    const NONE: TurnPairs = TurnPairs { pairs: [(Turn::ZERO, Turn::ZERO); 4], count: 0, quality: Quality::EXACT };
+    const NONE: TurnPairs = TurnPairs { pairs: BoundedList::new((Turn::ZERO, Turn::ZERO)), quality: Quality::EXACT };
 
+    /// Adds a pair: one of at most four roots of a quartic, or the one a degenerate or continuous
+    /// case gives.
     fn push(&mut self, pair: (Turn, Turn)) {
-        if self.count < 4 {
-            self.pairs[self.count] = pair;
-            self.count += 1;
-        }
+        #[allow(clippy::expect_used, reason = "invariant: a quartic's roots, at most four")]
+        self.pairs.push(pair).expect("invariant: at most four roots of a degree-two trigonometric polynomial");
     }
 
     /// The pairs found.
     pub fn as_slice(&self) -> &[(Turn, Turn)] {
-        &self.pairs[..self.count]
+        self.pairs.as_slice()
     }
 }
 
 /// Up to four solved angle triples (subproblem 5), with the quality they share.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct TurnTriples {
-    triples: [[Turn; 3]; 4],
-    count: usize,
+    triples: BoundedList<[Turn; 3], 4>,
     /// Whether the triples are exact and whether any angle was degenerate.
     pub quality: Quality,
 }
@@ -47,12 +46,22 @@ pub struct TurnTriples {
 impl TurnTriples {
     /// The triples found.
     pub fn as_slice(&self) -> &[[Turn; 3]] {
-        &self.triples[..self.count]
+        self.triples.as_slice()
     }
 }
 
 /// `f(t) = k[0] + k[1] cos t + k[2] sin t + k[3] cos 2t + k[4] sin 2t`.
 type TrigQuadratic = [f64; 5];
+
+/// At most four angles on the circle, as `(cos, sin)` pairs.
+type Angles = BoundedList<(f64, f64), 4>;
+
+/// Adds an angle to a list of at most four: the roots (or extrema) of a degree-two trigonometric
+/// polynomial, or of its derivative, are at most four.
+fn push_angle(angles: &mut Angles, cs: (f64, f64)) {
+    #[allow(clippy::expect_used, reason = "invariant: a degree-two trigonometric polynomial has at most four roots")]
+    angles.push(cs).expect("invariant: at most four roots of a degree-two trigonometric polynomial");
+}
 
 fn trig_value(k: &TrigQuadratic, (c, s): (f64, f64)) -> f64 {
     k[0] + k[1] * c + k[2] * s + k[3] * (c * c - s * s) + k[4] * (2.0 * s * c)
@@ -77,7 +86,7 @@ fn compose((c1, s1): (f64, f64), (c2, s2): (f64, f64)) -> (f64, f64) {
 /// coefficient is `f(phi + pi)`. Taking `phi + pi` at the eighth turn where `|f|` is largest keeps
 /// that coefficient as large as `f` allows (eight samples determine a degree-two trigonometric
 /// polynomial), so no root sits near `u = infinity`.
-fn trig_roots(k: &TrigQuadratic) -> ([(f64, f64); 4], usize) {
+fn trig_roots(k: &TrigQuadratic) -> Angles {
     let mut best = 0;
     for (i, &cs) in EIGHTHS.iter().enumerate() {
         if trig_value(k, cs).abs() > trig_value(k, EIGHTHS[best]).abs() {
@@ -106,42 +115,44 @@ fn trig_roots(k: &TrigQuadratic) -> ([(f64, f64); 4], usize) {
         size0 + size1 + size2,
     ];
     let roots = real_roots(&quartic, &sizes);
-    let mut out = [(1.0, 0.0); 4];
-    let mut count = 0;
+    let mut out = Angles::new((1.0, 0.0));
     for &u in roots.as_slice() {
         let w = 1.0 + u * u;
-        out[count] = compose(phi, ((1.0 - u * u) / w, 2.0 * u / w));
-        count += 1;
+        push_angle(&mut out, compose(phi, ((1.0 - u * u) / w, 2.0 * u / w)));
     }
-    (out, count)
+    out
 }
 
 /// The angles where `|f|` is smallest when `f` has no root: the minima of `f` if it is positive,
 /// its maxima if negative (the roots of `f'` where `f f'' > 0`).
-fn closest_approaches(k: &TrigQuadratic) -> ([(f64, f64); 4], usize) {
+fn closest_approaches(k: &TrigQuadratic) -> Angles {
     let slope = [0.0, k[2], -k[1], 2.0 * k[4], -2.0 * k[3]];
     let curvature = |(c, s): (f64, f64)| -k[1] * c - k[2] * s - 4.0 * k[3] * (c * c - s * s) - 8.0 * k[4] * s * c;
-    let (critical, n) = if slope.iter().any(|&x| x != 0.0) { trig_roots(&slope) } else { ([(1.0, 0.0); 4], 1) };
-    let mut out = [(1.0, 0.0); 4];
-    let mut count = 0;
-    for &cs in &critical[..n] {
+    let critical = if slope.iter().any(|&x| x != 0.0) {
+        trig_roots(&slope)
+    } else {
+        let mut constant = Angles::new((1.0, 0.0));
+        push_angle(&mut constant, (1.0, 0.0));
+        constant
+    };
+    let mut out = Angles::new((1.0, 0.0));
+    for &cs in critical.as_slice() {
         if trig_value(k, cs) * curvature(cs) >= 0.0 {
-            out[count] = cs;
-            count += 1;
+            push_angle(&mut out, cs);
         }
     }
-    if count == 0 {
-        // Rounding can hide the sign of a flat extremum: keep the critical point of least |f|.
-        let mut best = critical[0];
-        for &cs in &critical[..n] {
+    if out.is_empty() {
+        // Rounding can hide the sign of a flat extremum: keep the critical point of least |f|
+        // (the first if there is none, as before: (1, 0)).
+        let mut best = critical.as_slice().first().copied().unwrap_or((1.0, 0.0));
+        for &cs in critical.as_slice() {
             if trig_value(k, cs).abs() < trig_value(k, best).abs() {
                 best = cs;
             }
         }
-        out[0] = best;
-        count = 1;
+        push_angle(&mut out, best);
     }
-    (out, count)
+    out
 }
 
 type M2 = [[f64; 2]; 2];
@@ -195,15 +206,15 @@ pub(crate) fn circle_pair(a: M2, b: M2, d: [f64; 2]) -> TurnPairs {
         out.quality = Quality { exact: true, singular: true };
         return out;
     }
-    let (roots, n) = trig_roots(&k);
-    let (angles, n, exact) = if n > 0 {
-        (roots, n, true)
+    let roots = trig_roots(&k);
+    let (angles, exact) = if !roots.is_empty() {
+        (roots, true)
     } else {
-        let (closest, m) = closest_approaches(&k);
-        let exact = (0..m).all(|i| trig_value(&k, closest[i]).abs() <= REACH_SLACK * scale);
-        (closest, m, exact)
+        let closest = closest_approaches(&k);
+        let exact = closest.as_slice().iter().all(|&cs| trig_value(&k, cs).abs() <= REACH_SLACK * scale);
+        (closest, exact)
     };
-    for &cs in &angles[..n] {
+    for &cs in angles.as_slice() {
         out.push(pair_at(&e, &f, cs, swapped));
     }
     out.quality = Quality { exact, singular: false };
@@ -257,14 +268,14 @@ pub fn three_rotations(p0: V3, k1: V3, p1: V3, k2: V3, p2: V3, k3: V3, p3: V3) -
         norm_squared(p2) + norm_squared(p3) + 2.0 * on3 - norm_squared(p0) - norm_squared(p1) - 2.0 * on1,
     ];
     let pairs = circle_pair(a, b, d);
-    let mut out = TurnTriples { triples: [[Turn::ZERO; 3]; 4], count: 0, quality: pairs.quality };
+    let mut out = TurnTriples { triples: BoundedList::new([Turn::ZERO; 3]), quality: pairs.quality };
     for &(t1, t3) in pairs.as_slice() {
         let left = add(p0, t1.rotate(k1, p1));
         let right = add(p2, t3.rotate(k3, p3));
         let (t2, second) = rotation_onto(k2, right, left);
         out.quality = out.quality.and(second);
-        out.triples[out.count] = [t1, t2, t3];
-        out.count += 1;
+        #[allow(clippy::expect_used, reason = "invariant: one triple per pair, both lists of four")]
+        out.triples.push([t1, t2, t3]).expect("invariant: one triple per pair, and pairs are at most four");
     }
     out
 }
@@ -285,9 +296,10 @@ mod tests {
     #[test]
     fn trig_roots_are_roots_and_all_of_them() {
         let k = [0.1, -0.4, 0.7, 0.9, -0.2];
-        let (roots, n) = trig_roots(&k);
+        let roots = trig_roots(&k);
+        let n = roots.len();
         assert!(n >= 2, "a degree-two polynomial crossing zero has an even number of roots: {n}");
-        for &(c, s) in &roots[..n] {
+        for &(c, s) in roots.as_slice() {
             assert!((c * c + s * s - 1.0).abs() < 1e-15);
             assert!(trig_value(&k, (c, s)).abs() < 1e-14, "{}", trig_value(&k, (c, s)));
         }
@@ -326,8 +338,8 @@ mod tests {
                 -0.5 * beta * libm::cos(t0 + t1),
                 -0.5 * beta * libm::sin(t0 + t1),
             ];
-            let (roots, n) = trig_roots(&k);
-            let touching = roots[..n].iter().any(|&(c, s)| {
+            let roots = trig_roots(&k);
+            let touching = roots.as_slice().iter().any(|&(c, s)| {
                 let away = libm::atan2(s * libm::cos(t0) - c * libm::sin(t0), c * libm::cos(t0) + s * libm::sin(t0));
                 away.abs() < 1e-6
             });

@@ -4,34 +4,35 @@
 //! by bisection: no closed-form radicals, whose cancellation near double roots costs half the
 //! digits, and no heap.
 
+use super::super::bounded::BoundedList;
+
 /// At most four real roots, in increasing order.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct Roots {
-    values: [f64; 4],
-    count: usize,
+    values: BoundedList<f64, 4>,
 }
 
 impl Roots {
-    const NONE: Roots = Roots { values: [0.0; 4], count: 0 };
+    const NONE: Roots = Roots { values: BoundedList::new(0.0) };
 
+    /// Adds a root: at most one per interval between critical points (a quartic has at most
+    /// three, so four intervals), a root where the curve touches zero taking the place of the next
+    /// interval's (which then starts at zero and brackets none).
     fn push(&mut self, x: f64) {
         // A double root found from both sides of its critical point (or the critical point itself
         // and a bracket beside it) is one root.
-        if self.count > 0 {
-            let last = self.values[self.count - 1];
-            if (x - last).abs() <= 1e-12 * (1.0 + x.abs()) {
-                return;
-            }
+        if let Some(&last) = self.values.last()
+            && (x - last).abs() <= 1e-12 * (1.0 + x.abs())
+        {
+            return;
         }
-        if self.count < 4 {
-            self.values[self.count] = x;
-            self.count += 1;
-        }
+        #[allow(clippy::expect_used, reason = "invariant: at most one root per interval, four intervals at most")]
+        self.values.push(x).expect("invariant: a polynomial of degree at most four has at most four roots here");
     }
 
     /// The roots found.
     pub(crate) fn as_slice(&self) -> &[f64] {
-        &self.values[..self.count]
+        self.values.as_slice()
     }
 }
 
