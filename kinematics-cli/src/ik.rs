@@ -10,7 +10,7 @@ use std::io::Write;
 
 use kinematics::Pose;
 use kinematics::ReferenceFk;
-use kinematics::ik::{Arm6, IkSolutions, PlanarArm, PlanarJoint};
+use kinematics::ik::{IkSolutions, PlanarArm, PlanarJoint};
 use kinematics_compiler::ik::{IkGeometry, IkPlan};
 
 use crate::error::CliError;
@@ -201,7 +201,7 @@ pub fn solve(plan: &IkPlan, target: &Pose<f64>, forward: &dyn Fn(&[f64]) -> Pose
     }
     match &plan.geometry {
         IkGeometry::Six { family, arm: six, .. } => {
-            let arm = Arm6 { axes: six.axes, offsets: six.offsets, tool_rotation: six.tool_rotation };
+            let arm = six.arm();
             let solutions = (family.facts().solver.function)(&arm, target);
             rows(solutions, target, forward)
         }

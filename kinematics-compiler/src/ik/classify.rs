@@ -20,6 +20,9 @@
 
 use kinematics_model::{JointKind, KinematicTree};
 
+use kinematics_core::ik::Arm6;
+use kinematics_core::ik::vector::{cross, dot, norm_squared, rotate_cs, sub};
+
 use super::families::{IkFamily, Relation, SixFamily};
 use super::geometry::{M3, V3, ZeroConfiguration, zero_configuration};
 use crate::error::{CompileError, NoIkFamily};
@@ -110,6 +113,13 @@ pub struct PlanarGeometry {
     pub tool_rotation: M3,
 }
 
+impl SixGeometry {
+    /// The arm as the core's solvers take it.
+    pub fn arm(&self) -> Arm6 {
+        Arm6 { axes: self.axes, offsets: self.offsets, tool_rotation: self.tool_rotation }
+    }
+}
+
 impl IkPlan {
     /// The family.
     pub fn family(&self) -> IkFamily {
@@ -136,17 +146,8 @@ impl IkPlan {
     }
 }
 
-fn sub(a: V3, b: V3) -> V3 {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-fn dot(a: V3, b: V3) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-fn cross(a: V3, b: V3) -> V3 {
-    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
-}
 fn norm(a: V3) -> f64 {
-    dot(a, a).sqrt()
+    norm_squared(a).sqrt()
 }
 
 /// The six axes as lines, with the tolerances of this chain.
@@ -399,13 +400,7 @@ fn note(reasons: &mut Vec<String>, family: SixFamily, fault: Fault) {
 fn without_turned(zero: &ZeroConfiguration, index: usize, angle: f64) -> ZeroConfiguration {
     let free = &zero.joints[index];
     let (s, c) = angle.sin_cos();
-    let k = free.axis;
-    // Rodrigues: c v + s (k x v) + (1 - c)(k . v) k.
-    let turn = |v: V3| {
-        let kv = dot(k, v) * (1.0 - c);
-        let kxv = cross(k, v);
-        [0, 1, 2].map(|i| c * v[i] + s * kxv[i] + kv * k[i])
-    };
+    let turn = |v: V3| rotate_cs(free.axis, c, s, v);
     let turn_point = |p: V3| {
         let d = turn(sub(p, free.point));
         [0, 1, 2].map(|i| free.point[i] + d[i])
@@ -523,13 +518,12 @@ const SAMPLE_CONFIGURATIONS: [[f64; 6]; 8] = [
 /// that it is not degenerate for the arm at hand (a quartic family's equations can lose their
 /// hold on an angle in ways no single relation of two axes shows).
 fn solves_samples(family: SixFamily, plan: &IkPlan) -> Result<(), String> {
-    use kinematics_core::ik::Arm6;
     let facts = family.facts();
     let Some(six) = plan.six().filter(|_| facts.tried_on_samples) else {
         return Ok(());
     };
     let solver = facts.solver.function;
-    let arm = Arm6 { axes: six.axes, offsets: six.offsets, tool_rotation: six.tool_rotation };
+    let arm = six.arm();
     let turn_apart = |a: f64, b: f64| {
         let d = (a - b).rem_euclid(std::f64::consts::TAU);
         d.min(std::f64::consts::TAU - d)
@@ -589,13 +583,8 @@ fn finish(
             ));
         }
     }
-    let mut offsets = [[0.0; 3]; 7];
-    offsets[0] = chosen[0];
-    for i in 1..6 {
-        // Points placed at one meeting point subtract to exact zeros.
-        offsets[i] = sub(chosen[i], chosen[i - 1]);
-    }
-    offsets[6] = sub(zero.tip_point, chosen[5]);
+    let points = [0, 1, 2, 3, 4, 5].map(|i| chosen[i]);
+    let arm = Arm6::from_points(axes, &points, zero.tip_point, zero.tip_rotation);
     IkPlan {
         base: base.to_owned(),
         tip: tip.to_owned(),
@@ -604,9 +593,9 @@ fn finish(
             family,
             arm: Box::new(SixGeometry {
                 axes,
-                offsets,
+                offsets: arm.offsets,
                 tool_rotation: zero.tip_rotation,
-                points: [0, 1, 2, 3, 4, 5].map(|i| chosen[i]),
+                points,
                 tip_point: zero.tip_point,
             }),
             free,

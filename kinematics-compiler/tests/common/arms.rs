@@ -3,7 +3,7 @@
 
 use kinematics_compiler::ik::{IkGeometry, IkPlan, SixFamily};
 use kinematics_core::Pose;
-use kinematics_core::ik::{Arm6, IkSolutions};
+use kinematics_core::ik::IkSolutions;
 
 /// splitmix64, uniform in [0, 1).
 pub struct Uniform(pub u64);
@@ -103,7 +103,7 @@ pub fn random_arm(rng: &mut Uniform, family: SixFamily) -> String {
 
 pub fn solve(plan: &IkPlan, target: &Pose<f64>) -> IkSolutions<6, 8> {
     let IkGeometry::Six { family, arm: six, .. } = &plan.geometry else { panic!("not a six-joint family") };
-    let arm = Arm6 { axes: six.axes, offsets: six.offsets, tool_rotation: six.tool_rotation };
+    let arm = six.arm();
     (family.facts().solver.function)(&arm, target)
 }
 

@@ -416,12 +416,22 @@ impl FreeArm6 {
         let r = &self.tool_rotation;
         let columns = [0, 1, 2].map(|j| super::vector::rotate_cs(k, c, s, [r[0][j], r[1][j], r[2][j]]));
         let tool_rotation = [0, 1, 2].map(|i| [columns[0][i], columns[1][i], columns[2][i]]);
+        Arm6::from_points(axes, &points, tip, tool_rotation)
+    }
+}
+
+impl Arm6 {
+    /// The arm whose axes pass through `points` (one on each, in the base frame at `q = 0`) with
+    /// its tip at `tip_point`: the offsets are the points' differences, from the base's origin
+    /// to the first and from the last to the tip (points placed at one meeting point subtract to
+    /// exact zeros).
+    pub fn from_points(axes: [V3; 6], points: &[V3; 6], tip_point: V3, tool_rotation: M3) -> Arm6 {
         let mut offsets = [[0.0; 3]; 7];
         offsets[0] = points[0];
         for i in 1..6 {
             offsets[i] = sub(points[i], points[i - 1]);
         }
-        offsets[6] = sub(tip, points[5]);
+        offsets[6] = sub(tip_point, points[5]);
         Arm6 { axes, offsets, tool_rotation }
     }
 }

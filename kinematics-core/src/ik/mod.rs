@@ -44,7 +44,7 @@ mod refine;
 mod solutions;
 pub mod subproblem;
 mod target;
-mod vector;
+pub mod vector;
 
 pub use bounded::{BoundedList, Full};
 pub use family::{

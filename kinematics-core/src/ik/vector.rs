@@ -1,47 +1,56 @@
-//! The few operations on 3-vectors and 3x3 rotations the solvers need, on plain arrays.
+//! The few operations on 3-vectors and 3x3 rotations the solvers need, on plain arrays; the
+//! compiler's classification of a chain uses the same ones.
 
-pub(crate) type V3 = [f64; 3];
-pub(crate) type M3 = [[f64; 3]; 3];
+/// A 3-vector.
+pub type V3 = [f64; 3];
+/// A 3x3 matrix, row by row.
+pub type M3 = [[f64; 3]; 3];
 
+/// `a . b`.
 #[inline(always)]
-pub(crate) fn dot(a: V3, b: V3) -> f64 {
+pub fn dot(a: V3, b: V3) -> f64 {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
 
+/// `a x b`.
 #[inline(always)]
-pub(crate) fn cross(a: V3, b: V3) -> V3 {
+pub fn cross(a: V3, b: V3) -> V3 {
     [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
 }
 
+/// `a + b`.
 #[inline(always)]
-pub(crate) fn add(a: V3, b: V3) -> V3 {
+pub fn add(a: V3, b: V3) -> V3 {
     [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
 }
 
+/// `a - b`.
 #[inline(always)]
-pub(crate) fn sub(a: V3, b: V3) -> V3 {
+pub fn sub(a: V3, b: V3) -> V3 {
     [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
 }
 
+/// `s a`.
 #[inline(always)]
-pub(crate) fn scale(a: V3, s: f64) -> V3 {
+pub fn scale(a: V3, s: f64) -> V3 {
     [a[0] * s, a[1] * s, a[2] * s]
 }
 
+/// `|a|^2`.
 #[inline(always)]
-pub(crate) fn norm_squared(a: V3) -> f64 {
+pub fn norm_squared(a: V3) -> f64 {
     dot(a, a)
 }
 
 /// `m * v`.
 #[inline(always)]
-pub(crate) fn mul(m: &M3, v: V3) -> V3 {
+pub fn mul(m: &M3, v: V3) -> V3 {
     [dot(m[0], v), dot(m[1], v), dot(m[2], v)]
 }
 
 /// `m^T * v`.
 #[inline(always)]
-pub(crate) fn mul_transposed(m: &M3, v: V3) -> V3 {
+pub fn mul_transposed(m: &M3, v: V3) -> V3 {
     [
         m[0][0] * v[0] + m[1][0] * v[1] + m[2][0] * v[2],
         m[0][1] * v[0] + m[1][1] * v[1] + m[2][1] * v[2],
@@ -51,7 +60,7 @@ pub(crate) fn mul_transposed(m: &M3, v: V3) -> V3 {
 
 /// `a * b^T`.
 #[inline(always)]
-pub(crate) fn mul_by_transpose(a: &M3, b: &M3) -> M3 {
+pub fn mul_by_transpose(a: &M3, b: &M3) -> M3 {
     let row = |r: V3| [dot(r, b[0]), dot(r, b[1]), dot(r, b[2])];
     [row(a[0]), row(a[1]), row(a[2])]
 }
@@ -59,7 +68,7 @@ pub(crate) fn mul_by_transpose(a: &M3, b: &M3) -> M3 {
 /// `v` rotated by the angle whose cosine and sine are `c`, `s` about the unit axis `k`
 /// (Rodrigues: `c v + s (k x v) + (1 - c)(k . v) k`).
 #[inline(always)]
-pub(crate) fn rotate_cs(k: V3, c: f64, s: f64, v: V3) -> V3 {
+pub fn rotate_cs(k: V3, c: f64, s: f64, v: V3) -> V3 {
     let kv = dot(k, v) * (1.0 - c);
     let kxv = cross(k, v);
     [c * v[0] + s * kxv[0] + kv * k[0], c * v[1] + s * kxv[1] + kv * k[1], c * v[2] + s * kxv[2] + kv * k[2]]
@@ -67,7 +76,7 @@ pub(crate) fn rotate_cs(k: V3, c: f64, s: f64, v: V3) -> V3 {
 
 /// `v` rotated by `angle` about the unit axis `k`.
 #[inline(always)]
-pub(crate) fn rotate(k: V3, angle: f64, v: V3) -> V3 {
+pub fn rotate(k: V3, angle: f64, v: V3) -> V3 {
     let (s, c) = libm::sincos(angle);
     rotate_cs(k, c, s, v)
 }
