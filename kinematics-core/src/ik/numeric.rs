@@ -14,8 +14,8 @@
 //!
 //! The constants were chosen on the Panda, the iiwa 14 and the UR5 (random reachable targets,
 //! random seeds within the limits, the IK benchmark's protocol) by the pose and Jacobian
-//! evaluations a solve takes, which is what its time follows: from 69 to 28 on the Panda, 36 to
-//! 17 on the iiwa 14, 52 to 22 on the UR5, against the ten-step stall, a damping of `1e-3` rising
+//! evaluations a solve takes, which is what its time follows: about 70 to 28 on the Panda, 36 to
+//! 18 on the iiwa 14, 52 to 22 on the UR5, against the ten-step stall, a damping of `1e-3` rising
 //! fourfold over ten tries, and unlimited steps. Most of the saving is in the starts that fail:
 //! on the Panda about two in three starts from a random seed stall short of the target (in the
 //! traces we read, against joint limits), and the sooner one is given up the cheaper; a step of at
