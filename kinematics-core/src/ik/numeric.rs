@@ -360,6 +360,8 @@ fn damped_step<const N: usize>(
             *lambda *= 10.0;
             continue;
         };
+        // A NaN step (none comes from a solve that succeeded) would make a NaN cost below, which
+        // is never lower: the try is rejected either way.
         let longest = dq.iter().fold(0.0, |m: f64, step| m.max(step.abs()));
         let scale = if longest > MAX_JOINT_STEP { MAX_JOINT_STEP / longest } else { 1.0 };
         let mut candidate = *q;
