@@ -198,6 +198,7 @@ struct Seeds(SplitMix);
 impl Seeds {
     /// `seed` with the joints marked in `moving` drawn anew within the limits (within one turn
     /// either side of zero where a joint has none); the others keep the seed's values.
+    #[inline(always)]
     fn within<const N: usize>(&mut self, limits: &[JointLimits; N], seed: &[f64; N], moving: &[bool; N]) -> [f64; N] {
         let mut q = *seed;
         for ((value, l), &moves) in q.iter_mut().zip(limits).zip(moving) {
@@ -247,47 +248,55 @@ pub fn levenberg_marquardt<const N: usize>(
         *moves = at_seed.1.iter().any(|row| row[i] != 0.0);
     }
     // One start: steps from the seed (start 0) or from a configuration drawn within the limits.
-    let mut attempt = |start: usize| {
-        starts += 1;
-        let mut q = if start == 0 { first } else { seeds.within(limits, &first, &moving) };
-        clamp(&mut q, limits);
-        let (mut pose, mut jacobian) = if start == 0 { at_seed } else { pose_and_jacobian(&q) };
-        let mut error = error_twist(&pose, target);
-        let mut cost = dot6(&error);
-        let mut lambda = INITIAL_DAMPING;
-        let mut steps = 0;
-        // The cost three steps ago: a start that has not halved it since is stuck (a local minimum
-        // or a limit), and a fresh start is cheaper than more steps (converging starts shrink the
-        // cost quadratically).
-        let mut checkpoint = cost;
-        while steps < options.max_iterations {
-            if steps > 0 && steps % STALL_STEPS == 0 {
-                if cost > 0.5 * checkpoint {
-                    break;
+    // Inlined like everything here: a closure is a function of its own, and one left a call is
+    // compiled for the build's baseline (SSE2), not the dispatched instruction set. It was: the
+    // whole iteration, the pose and Jacobian with it, ran as SSE2 code called from the AVX-512
+    // or AVX2 body (on an Intel Xeon, SSE code after AVX-512 code pays for the upper halves of
+    // the registers the latter left dirty).
+    let mut attempt = inlined(
+        #[inline(always)]
+        |start: usize| {
+            starts += 1;
+            let mut q = if start == 0 { first } else { seeds.within(limits, &first, &moving) };
+            clamp(&mut q, limits);
+            let (mut pose, mut jacobian) = if start == 0 { at_seed } else { pose_and_jacobian(&q) };
+            let mut error = error_twist(&pose, target);
+            let mut cost = dot6(&error);
+            let mut lambda = INITIAL_DAMPING;
+            let mut steps = 0;
+            // The cost three steps ago: a start that has not halved it since is stuck (a local minimum
+            // or a limit), and a fresh start is cheaper than more steps (converging starts shrink the
+            // cost quadratically).
+            let mut checkpoint = cost;
+            while steps < options.max_iterations {
+                if steps > 0 && steps % STALL_STEPS == 0 {
+                    if cost > 0.5 * checkpoint {
+                        break;
+                    }
+                    checkpoint = cost;
                 }
-                checkpoint = cost;
-            }
-            // Converged needs both errors within the tolerance, so a cost (their squares' sum, the
-            // same distance and angle to rounding) above twice its square cannot be; the margin
-            // of 4 absorbs the rounding, and the errors (an arcsine) are computed only near the end.
-            if cost <= 4.0 * options.tolerance * options.tolerance {
-                let (position, rotation) = pose_errors(&pose, target);
-                if position <= options.tolerance && rotation <= options.tolerance {
-                    break;
+                // Converged needs both errors within the tolerance, so a cost (their squares' sum, the
+                // same distance and angle to rounding) above twice its square cannot be; the margin
+                // of 4 absorbs the rounding, and the errors (an arcsine) are computed only near the end.
+                if cost <= 4.0 * options.tolerance * options.tolerance {
+                    let (position, rotation) = pose_errors(&pose, target);
+                    if position <= options.tolerance && rotation <= options.tolerance {
+                        break;
+                    }
                 }
+                steps += 1;
+                let (a, g) = normal_equations(&jacobian, &error);
+                let Some(next) = damped_step(&a, &g, &mut lambda, &q, cost, limits, target, &pose_and_jacobian) else {
+                    break;
+                };
+                Step { q, pose, jacobian, error, cost } = next;
             }
-            steps += 1;
-            let (a, g) = normal_equations(&jacobian, &error);
-            let Some(next) = damped_step(&a, &g, &mut lambda, &q, cost, limits, target, &pose_and_jacobian) else {
-                break;
-            };
-            Step { q, pose, jacobian, error, cost } = next;
-        }
-        iterations += steps;
-        let (position_error, rotation_error) = pose_errors(&pose, target);
-        let converged = position_error <= options.tolerance && rotation_error <= options.tolerance;
-        NumericSolution { q, converged, position_error, rotation_error, iterations, starts: start + 1 }
-    };
+            iterations += steps;
+            let (position_error, rotation_error) = pose_errors(&pose, target);
+            let converged = position_error <= options.tolerance && rotation_error <= options.tolerance;
+            NumericSolution { q, converged, position_error, rotation_error, iterations, starts: start + 1 }
+        },
+    );
     // The first start always runs, so there is a best from the start (no placeholder for none);
     // a start that converges ends the search and is kept, whatever the sum of its errors.
     let mut best = attempt(0);
@@ -303,6 +312,13 @@ pub fn levenberg_marquardt<const N: usize>(
     best.iterations = iterations;
     best.starts = starts;
     best
+}
+
+/// `closure` as it is: where a closure is an argument, it can be marked `#[inline(always)]`
+/// (an attribute on a closure bound by `let` is not stable Rust).
+#[inline(always)]
+fn inlined<F: FnMut(usize) -> R, R>(closure: F) -> F {
+    closure
 }
 
 /// An accepted step: the configuration, its pose and Jacobian, its error twist and cost.
