@@ -9,7 +9,10 @@
 //! [`SixFamily::facts`], each checked by the compiler (an exhaustive match).
 
 use kinematics_core::Pose;
+use kinematics_core::ik::branch::Composer;
 use kinematics_core::ik::{self, Arm6, IkSolutions};
+
+use super::closed_form::Builder;
 
 /// A closed-form family: a six-joint one, or the planar arms'.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -107,6 +110,10 @@ pub struct SixFacts {
     pub distance: Option<DistanceRule>,
     /// Its solver in `kinematics-core`.
     pub solver: Solver,
+    /// Its branch, written once in `kinematics_core::ik::branch` (where the solver runs it in
+    /// lanes), which the compiler builds as expressions and emits as `tip_ik`'s straight-line body;
+    /// `None` for a family whose first step is a quartic (generated code calls its solver).
+    pub(crate) branch: Option<Composer<Builder>>,
     /// Whether a plan is tried on sample poses of the arm before it is taken (`Arm6::pose` turns
     /// every joint, so not for a prismatic one: the Stanford family's tests are structural).
     pub tried_on_samples: bool,
@@ -130,6 +137,7 @@ const THREE_PARALLEL_TWO_INTERSECTING: SixFacts = SixFacts {
     ],
     distance: Some(ELBOW),
     solver: solver!(three_parallel_two_intersecting),
+    branch: Some(ik::branch::three_parallel_two_intersecting::<Builder>),
     tried_on_samples: true,
     subproblems: "q1 by SP4, q5 by SP4, q6 by SP1, q2+q3+q4 by SP1, q3 by SP3, q2 by SP1, q4 by difference",
 };
@@ -139,6 +147,7 @@ const SPHERICAL_TWO_PARALLEL: SixFacts = SixFacts {
     relations: &[Relation::Wrist, Relation::Parallel(1, 2), Relation::NotParallel(0, 1)],
     distance: Some(ELBOW),
     solver: solver!(spherical_two_parallel),
+    branch: Some(ik::branch::spherical_two_parallel::<Builder>),
     tried_on_samples: true,
     subproblems: "q1 by SP4, q3 by SP3, q2 by SP1; wrist: q5 by SP4, q4, q6 by SP1",
 };
@@ -148,6 +157,7 @@ const SPHERICAL_FIRST_TWO_INTERSECTING: SixFacts = SixFacts {
     relations: &[Relation::Wrist, Relation::Meet(0, 1)],
     distance: Some(ELBOW),
     solver: solver!(spherical_first_two_intersecting),
+    branch: Some(ik::branch::spherical_first_two_intersecting::<Builder>),
     tried_on_samples: true,
     subproblems: "q3 by SP3, q1, q2 by SP2; wrist: q5 by SP4, q4, q6 by SP1",
 };
@@ -158,6 +168,7 @@ const SPHERICAL_LAST_TWO_INTERSECTING: SixFacts = SixFacts {
     // |rot(h1, -q1) v - p12| is the distance: only p12 is the robot's.
     distance: Some(DistanceRule { joint: 0, sides: &[(0, 1)] }),
     solver: solver!(spherical_last_two_intersecting),
+    branch: Some(ik::branch::spherical_last_two_intersecting::<Builder>),
     tried_on_samples: true,
     subproblems: "q1 by SP3, q2, q3 by SP2; wrist: q5 by SP4, q4, q6 by SP1",
 };
@@ -168,6 +179,7 @@ const SPHERICAL_PRISMATIC_THIRD: SixFacts = SixFacts {
     // A slide changes the distance whatever its direction (the quadratic has its roots).
     distance: None,
     solver: solver!(spherical_prismatic_third),
+    branch: Some(ik::branch::spherical_prismatic_third::<Builder>),
     tried_on_samples: false,
     subproblems: "q3 from the wrist centre's distance (a quadratic), q1, q2 by SP2; wrist: q5 by SP4, q4, q6 by SP1",
 };
@@ -178,6 +190,7 @@ const SPHERICAL: SixFacts = SixFacts {
     // Subproblem 5 ties all three; the trial on sample poses catches an arm it cannot solve.
     distance: None,
     solver: solver!(spherical),
+    branch: None,
     tried_on_samples: true,
     subproblems: "q1, q2, q3 by SP5; wrist: q5 by SP4, q4, q6 by SP1",
 };
@@ -192,6 +205,7 @@ const THREE_PARALLEL: SixFacts = SixFacts {
     ],
     distance: Some(ELBOW),
     solver: solver!(three_parallel),
+    branch: None,
     tried_on_samples: true,
     subproblems: "q1, q5 by SP6, q6 by SP1, q2+q3+q4 by SP1, q3 by SP3, q2 by SP1, q4 by difference",
 };

@@ -35,6 +35,7 @@
 //! ```
 
 mod bounded;
+pub mod branch;
 mod family;
 mod ldl;
 mod numeric;

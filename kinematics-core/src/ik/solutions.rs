@@ -187,6 +187,12 @@ impl<const N: usize, const M: usize> IkSolutions<N, M> {
         }
     }
 
+    /// All `M` solutions, in order.
+    #[inline(always)]
+    pub(crate) fn from_array(solutions: [IkSolution<N>; M]) -> Self {
+        IkSolutions { solutions: BoundedList::from_first(solutions, M) }
+    }
+
     /// The branches a compiled closed form computed side by side, one per lane: lane `i`'s joint
     /// values and flags, and the pose `reached` there (the robot's forward kinematics of them, in
     /// the same lanes), its errors measured against `target`. The first `M` lanes are taken, in

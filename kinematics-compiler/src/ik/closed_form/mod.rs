@@ -13,15 +13,16 @@
 //! (its real roots found by an iteration), the planar arms and the six of a seven-joint arm (its
 //! geometry turned by the free joint at run time) keep the run time's family functions.
 //!
-//! Steps carry labels, for `expr --ik`'s per-subproblem counts. `algebra` writes vectors, turns and
-//! flags as expressions, `subproblem` subproblems 1-4 as the core writes them, `family` the five
-//! families.
+//! The families and their subproblems are written once, in `kinematics_core::ik::branch`, over an
+//! algebra; `algebra` makes the expression graph one (the run time's numbers are the other). Steps
+//! carry labels, for `expr --ik`'s per-subproblem counts.
 
 mod algebra;
-mod family;
-mod subproblem;
+
+pub(crate) use algebra::Builder;
 
 use kinematics_core::Pose;
+use kinematics_core::ik::branch::{Algebra, Problem};
 
 use super::classify::{IkGeometry, IkPlan};
 use super::families::SixFamily;
@@ -89,13 +90,15 @@ impl IkBody {
 
     fn build(plan: &IkPlan, singular_pass: bool) -> Option<IkBody> {
         let IkGeometry::Six { family, arm: six, free: None } = &plan.geometry else { return None };
-        let mut b = algebra::Builder::default();
+        let compose = family.facts().branch?;
+        let mut b = Builder::default();
         let inputs: Vec<ExprId> = (0..INPUTS).map(|i| b.g.input(i)).collect();
         let rotation = [0, 1, 2].map(|i| [0, 1, 2].map(|j| inputs[3 * i + j]));
         let translation = [inputs[9], inputs[10], inputs[11]];
         let signs = [inputs[FIRST_SIGN], inputs[FIRST_SIGN + 1], inputs[FIRST_SIGN + 2]];
-        let problem = family::Problem { six, rotation, translation, signs, singular_pass };
-        let branch = family::branch(&mut b, *family, &problem)?;
+        let arm = six.arm();
+        let problem = Problem { arm: &arm, rotation, translation, signs, singular_pass };
+        let branch = compose(&mut b, &problem);
         let (q, cos, sin) = (branch.q.to_vec(), branch.cos.to_vec(), branch.sin.to_vec());
         b.step(
             "the joint values, wrapped into (-pi, pi], and the flags",

@@ -1,108 +1,108 @@
-//! The six-joint families whose every step has two roots at most, composed of the subproblems
-//! as expressions: the run time's `kinematics_core::ik` family functions written over the graph,
-//! one branch at a time. Three binary choices pick the branch (`signs[0]` outermost, the order
-//! of the run time's nested loops), so the body evaluated with every combination of signs gives
-//! the eight solutions in the run time's order.
+//! The six-joint families whose every step has two roots at most, one branch at a time: each a
+//! fixed composition of subproblems 1 to 4 on an [`Algebra`]. Three binary choices pick the
+//! branch (`signs[0]` outermost), so a family evaluated with every combination of signs gives its
+//! eight solutions, in the order of [`crate::ik::branch_signs`]. The spherical wrist and the
+//! planar elbow after axes 2, 3, 4 parallel are also the last steps of the two families whose
+//! first step is a quartic (`crate::ik::spherical`, `crate::ik::three_parallel`), which call
+//! them once per root and sign.
 //!
 //! The UR family has its pass at the wrist's singularity (where `q6 = 0` leaves the elbow out of
-//! reach, the sum of the parallel joints moves: the core's `free_sixth`), which `IkBody::regular`
-//! leaves out.
+//! reach, the sum of the parallel joints moves: [`free_sixth`]), which [`Problem::singular_pass`]
+//! can leave out.
 
-use kinematics_core::ik::ORTHOGONAL;
+use super::algebra::{Algebra, Flags, Matrix, Turn, Vector};
+use super::subproblem::Subproblems;
+use crate::ik::family::{Arm6, ORTHOGONAL};
+use crate::ik::subproblem::distance_range;
+use crate::ik::vector::dot;
 
-use super::algebra::{Builder, Matrix, Quality, Turn, Vector};
-use crate::ik::classify::SixGeometry;
-use crate::ik::families::SixFamily;
-use crate::symbolic::graph::ExprId;
-
-/// What the body computes for one branch: joint values, each joint's cosine and sine (of the
-/// angle `q` is the `atan2` of; `1` and `0` for a prismatic joint), and the flags `exact` and
-/// `singular`.
-pub(super) struct Branch {
-    pub q: [ExprId; 6],
-    pub cos: [ExprId; 6],
-    pub sin: [ExprId; 6],
-    pub quality: Quality,
+/// What a branch computes: joint values (revolute angles in `(-pi, pi]`), each joint's cosine
+/// and sine (of the angle `q` is the `atan2` of; `1` and `0` for a prismatic joint), and the
+/// flags.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Branch<V> {
+    /// The joint values.
+    pub q: [V; 6],
+    /// Their cosines.
+    pub cos: [V; 6],
+    /// Their sines.
+    pub sin: [V; 6],
+    /// Whether every equation had a real solution, and whether any was singular.
+    pub quality: Flags<V>,
 }
 
-/// The arm's constants as expressions.
-struct Arm {
-    h: [Vector; 6],
-    p: [Vector; 7],
-    /// The axes and offsets in numbers, for what is decided at compile time.
-    axes: [[f64; 3]; 6],
-    offsets: [[f64; 3]; 7],
-}
-
-/// The chain's geometry, the target (rotation rows, translation) and the branch signs.
-pub(super) struct Problem<'a> {
-    pub six: &'a SixGeometry,
-    pub rotation: Matrix,
-    pub translation: Vector,
-    pub signs: [ExprId; 3],
-    /// Whether the UR family's body moves the sum of the parallel joints where `q6 = 0` leaves
-    /// the elbow out of reach at the wrist's singularity (`IkBody::regular` leaves it out).
+/// The arm (as numbers: what depends on them alone is decided as the branch is written), the
+/// target (rotation rows, translation) and the branch signs.
+#[derive(Debug, Clone, Copy)]
+pub struct Problem<'a, V> {
+    /// The arm.
+    pub arm: &'a Arm6,
+    /// The target's rotation, row-major.
+    pub rotation: Matrix<V>,
+    /// The target's translation.
+    pub translation: Vector<V>,
+    /// The branch signs, `+1` or `-1` each.
+    pub signs: [V; 3],
+    /// Whether the UR family moves the sum of the parallel joints where `q6 = 0` leaves the elbow
+    /// out of reach at the wrist's singularity (the compiler emits a body without it, run first,
+    /// the pass costing about a third of the body for targets a random pose almost never is).
     pub singular_pass: bool,
 }
 
-/// The family's branch, or `None` for a family this module does not compose (a quartic first
-/// step).
-pub(super) fn branch(b: &mut Builder, family: SixFamily, problem: &Problem<'_>) -> Option<Branch> {
-    let arm = Arm {
-        h: problem.six.axes.map(|v| b.vector(v)),
-        p: problem.six.offsets.map(|v| b.vector(v)),
-        axes: problem.six.axes,
-        offsets: problem.six.offsets,
-    };
-    let (r06, v0) = wrist_target(b, &arm, problem);
-    let [s1, s2, s3] = problem.signs;
-    let branch = match family {
-        SixFamily::ThreeParallelTwoIntersecting => {
-            three_parallel_two_intersecting(b, &arm, &r06, v0, [s1, s2, s3], problem.singular_pass)
-        }
-        SixFamily::SphericalTwoParallel => spherical_two_parallel(b, &arm, &r06, v0, [s1, s2, s3]),
-        SixFamily::SphericalFirstTwoIntersecting => spherical_first_two_intersecting(b, &arm, &r06, v0, [s1, s2, s3]),
-        SixFamily::SphericalLastTwoIntersecting => spherical_last_two_intersecting(b, &arm, &r06, v0, [s1, s2, s3]),
-        SixFamily::SphericalPrismaticThird => spherical_prismatic_third(b, &arm, &r06, v0, [s1, s2, s3]),
-        SixFamily::Spherical | SixFamily::ThreeParallel => return None,
-    };
-    Some(branch)
+/// A family's branch, on the algebra `A`.
+pub type Composer<A> = fn(&mut A, &Problem<'_, <A as Algebra>::Value>) -> Branch<<A as Algebra>::Value>;
+
+/// The arm's constants as values, beside the numbers they came from.
+pub(crate) struct Arm<'a, V> {
+    pub h: [Vector<V>; 6],
+    pub p: [Vector<V>; 7],
+    pub numbers: &'a Arm6,
 }
 
-/// The wrist's rotation `R06 = R R6T^T` and the point `p - R06 p6T - p01` the first joints must
-/// reach.
-fn wrist_target(b: &mut Builder, arm: &Arm, problem: &Problem<'_>) -> (Matrix, Vector) {
-    let tool = problem.six.tool_rotation.map(|row| b.vector(row));
+/// The arm's constants, then the wrist's rotation `R06 = R R6T^T` and the point
+/// `p - R06 p6T - p01` the first joints must reach.
+#[inline(always)]
+#[allow(clippy::type_complexity, reason = "the three things every family starts from")]
+pub(crate) fn wrist_target<'a, A: Algebra>(
+    b: &mut A,
+    problem: &Problem<'a, A::Value>,
+) -> (Arm<'a, A::Value>, Matrix<A::Value>, Vector<A::Value>) {
+    let numbers = problem.arm;
+    let arm = Arm { h: numbers.axes.map(|v| b.vector(v)), p: numbers.offsets.map(|v| b.vector(v)), numbers };
+    let tool = numbers.tool_rotation.map(|row| b.vector(row));
     let r06 = [0, 1, 2].map(|i| [0, 1, 2].map(|j| b.dot(problem.rotation[i], tool[j])));
     let tool_offset = b.mul_vector(&r06, arm.p[6]);
     let point = b.vsub(problem.translation, tool_offset);
     let point = b.vsub(point, arm.p[0]);
     b.step("the wrist's target: R06 = R R6T^T, the point p - R06 p6T - p01", point);
-    (r06, point)
+    (arm, r06, point)
 }
 
 /// The angle `x` moved by whole turns into `(-pi, pi]`, for a sum of at most three angles in
-/// `[-pi, pi]` (two conditional turns each way, as the run time's `wrap`).
-fn wrap_sum(b: &mut Builder, x: ExprId) -> ExprId {
+/// `[-pi, pi]` (two conditional turns each way).
+#[inline(always)]
+fn wrap_sum<A: Algebra>(b: &mut A, x: A::Value) -> A::Value {
     let once = wrap_both(b, x);
     wrap_both(b, once)
 }
 
 /// One conditional turn either way: `x - 2 pi` above `pi`, `x + 2 pi` at or below `-pi`.
-fn wrap_both(b: &mut Builder, x: ExprId) -> ExprId {
-    use std::f64::consts::PI;
+#[inline(always)]
+fn wrap_both<A: Algebra>(b: &mut A, x: A::Value) -> A::Value {
+    use core::f64::consts::{PI, TAU};
     let pi = b.constant(PI);
     let over = b.sub(x, pi);
-    let tau = b.constant(std::f64::consts::TAU);
+    let tau = b.constant(TAU);
     let down = b.sub(x, tau);
     let within = wrap(b, x);
     b.select(over, down, within)
 }
 
 /// The angle `x`, in `[-pi, pi]` (an `atan2`'s, or its negation), moved into `(-pi, pi]`: `-pi`
-/// becomes `pi`, which is all the run time's `wrap` does to such an angle.
-fn wrap(b: &mut Builder, x: ExprId) -> ExprId {
-    use std::f64::consts::{PI, TAU};
+/// becomes `pi`.
+#[inline(always)]
+fn wrap<A: Algebra>(b: &mut A, x: A::Value) -> A::Value {
+    use core::f64::consts::{PI, TAU};
     let (pi, tau) = (b.constant(PI), b.constant(TAU));
     let up = b.add(x, tau);
     let under = b.add(x, pi);
@@ -111,16 +111,21 @@ fn wrap(b: &mut Builder, x: ExprId) -> ExprId {
 
 /// The spherical wrist's `q4, q5, q6` for the arm's turns: `q5` by subproblem 4 (on the great
 /// circle for an orthogonal wrist), `q4` and `q6` by subproblem 1. `sign` picks `q5`'s root.
-fn spherical_wrist(
-    b: &mut Builder,
-    arm: &Arm,
-    r06: &Matrix,
-    [q1, q2, q3]: [Turn; 3],
-    quality: Quality,
-    sign: ExprId,
-) -> ([Turn; 3], Quality) {
+/// (Subproblem 2 would give `q4` with `q5`, but from where two cones nearly touch, which near the
+/// singularity loses half the digits of `q4` and `q6`; subproblem 1 loses only as many as the
+/// distance to it.)
+#[inline(always)]
+#[allow(clippy::type_complexity, reason = "three turns and their flags")]
+fn spherical_wrist<A: Algebra>(
+    b: &mut A,
+    arm: &Arm<'_, A::Value>,
+    r06: &Matrix<A::Value>,
+    [q1, q2, q3]: [Turn<A::Value>; 3],
+    quality: Flags<A::Value>,
+    sign: A::Value,
+) -> ([Turn<A::Value>; 3], Flags<A::Value>) {
     let h = &arm.h;
-    let back = |b: &mut Builder, v: Vector| {
+    let back = |b: &mut A, v: Vector<A::Value>| {
         let (t1, t2, t3) = (b.back(q1), b.back(q2), b.back(q3));
         let v = b.rotate(t1, h[0], v);
         let v = b.rotate(t2, h[1], v);
@@ -130,9 +135,9 @@ fn spherical_wrist(
     let r36_h6 = back(b, seen6);
     let seen5 = b.mul_vector(r06, h[4]);
     let r36_h5 = back(b, seen5);
-    let dot = |u: [f64; 3], v: [f64; 3]| u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
-    let axes = &arm.axes;
-    // Decided here, at compile time, as the run time decides it from the same constants.
+    // An orthogonal wrist (the usual one: h4 and h6 both square to h5) takes the well-conditioned
+    // form of subproblem 4; decided on the numbers, so a compiled body has one form.
+    let axes = &arm.numbers.axes;
     let orthogonal = dot(axes[3], axes[4]).abs() <= ORTHOGONAL && dot(axes[5], axes[4]).abs() <= ORTHOGONAL;
     let (q5, fifth) = if orthogonal {
         let q5 = b.rotation_to_height_on_great_circle(h[3], h[4], h[5], r36_h6, sign);
@@ -159,7 +164,13 @@ fn spherical_wrist(
 /// The elbow of an arm whose third joint turns the forearm `p34` about `h3` at the end of the
 /// upper arm `p23`: `q3` by subproblem 3 (the forearm's end at `distance` squared from the
 /// elbow's base), recorded as a step, and the vector from the base of `p23` to the forearm's end.
-fn elbow(b: &mut Builder, arm: &Arm, distance: ExprId, sign: ExprId) -> (Turn, Quality, Vector) {
+#[inline(always)]
+fn elbow<A: Algebra>(
+    b: &mut A,
+    arm: &Arm<'_, A::Value>,
+    distance: A::Value,
+    sign: A::Value,
+) -> (Turn<A::Value>, Flags<A::Value>, Vector<A::Value>) {
     let [_, _, h3, ..] = arm.h;
     let [_, _, p23, p34, ..] = arm.p;
     let minus_one = b.constant(-1.0);
@@ -173,15 +184,16 @@ fn elbow(b: &mut Builder, arm: &Arm, distance: ExprId, sign: ExprId) -> (Turn, Q
 
 /// A spherical-wrist branch as joint values: every angle wrapped, `slide` in place of `q3` for
 /// a prismatic third joint.
-fn spherical_branch(
-    b: &mut Builder,
-    arm: &Arm,
-    r06: &Matrix,
-    arm_turns: [Turn; 3],
-    slide: Option<ExprId>,
-    quality: Quality,
-    sign: ExprId,
-) -> Branch {
+#[inline(always)]
+pub(crate) fn spherical_branch<A: Algebra>(
+    b: &mut A,
+    arm: &Arm<'_, A::Value>,
+    r06: &Matrix<A::Value>,
+    arm_turns: [Turn<A::Value>; 3],
+    slide: Option<A::Value>,
+    quality: Flags<A::Value>,
+    sign: A::Value,
+) -> Branch<A::Value> {
     let ([q4, q5, q6], quality) = spherical_wrist(b, arm, r06, arm_turns, quality, sign);
     let [q1, q2, q3] = arm_turns;
     let turns = [q1, q2, q3, q4, q5, q6];
@@ -192,9 +204,14 @@ fn spherical_branch(
     Branch { q, cos: turns.map(|t| t.cos), sin: turns.map(|t| t.sin), quality }
 }
 
-/// Axes 2, 3 parallel (PUMA 560, IRB 120): `q1` by subproblem 4, `q3` by subproblem 3, `q2` by
-/// subproblem 1, then the wrist.
-fn spherical_two_parallel(b: &mut Builder, arm: &Arm, r06: &Matrix, v0: Vector, [s1, s2, s3]: [ExprId; 3]) -> Branch {
+/// Spherical wrist (axes 4, 5, 6 meet, `p45 = p56 = 0`) with axes 2 and 3 parallel (PUMA 560,
+/// IRB 120): `q1` by subproblem 4 (the wrist centre's height along `h2` is fixed), `q3` by
+/// subproblem 3 (its distance from axis 2), `q2` by subproblem 1, then the wrist. Needs `h1`
+/// not parallel to `h2`.
+#[inline(always)]
+pub fn spherical_two_parallel<A: Algebra>(b: &mut A, problem: &Problem<'_, A::Value>) -> Branch<A::Value> {
+    let (arm, r06, v0) = wrist_target(b, problem);
+    let [s1, s2, s3] = problem.signs;
     let [h1, h2, ..] = arm.h;
     let [_, p12, p23, p34, ..] = arm.p;
     let reach = b.vadd(p12, p23);
@@ -205,41 +222,39 @@ fn spherical_two_parallel(b: &mut Builder, arm: &Arm, r06: &Matrix, v0: Vector, 
     let turned = b.rotate(t1, h1, v0);
     let v1 = b.vsub(turned, p12);
     let distance = b.norm_squared(v1);
-    let (q3, third, forearm) = elbow(b, arm, distance, s2);
+    let (q3, third, forearm) = elbow(b, &arm, distance, s2);
     let (q2, second) = b.rotation_onto(h2, forearm, v1);
     b.step("q2 by SP1", q2.nodes().into_iter().chain(second.nodes()));
     let quality = b.both(first, third);
     let quality = b.both(quality, second);
     let q1 = b.back(t1);
-    spherical_branch(b, arm, r06, [q1, q2, q3], None, quality, s3)
+    spherical_branch(b, &arm, &r06, [q1, q2, q3], None, quality, s3)
 }
 
-/// Axes 1, 2 meeting: `q3` by subproblem 3, `q1`, `q2` by subproblem 2, then the wrist.
-fn spherical_first_two_intersecting(
-    b: &mut Builder,
-    arm: &Arm,
-    r06: &Matrix,
-    v0: Vector,
-    [s1, s2, s3]: [ExprId; 3],
-) -> Branch {
+/// Spherical wrist with axes 1 and 2 meeting (`p12 = 0`): `q3` by subproblem 3 (the wrist
+/// centre's distance from the shoulder), `q1`, `q2` by subproblem 2, then the wrist. Needs `h1`
+/// not parallel to `h2`.
+#[inline(always)]
+pub fn spherical_first_two_intersecting<A: Algebra>(b: &mut A, problem: &Problem<'_, A::Value>) -> Branch<A::Value> {
+    let (arm, r06, v0) = wrist_target(b, problem);
+    let [s1, s2, s3] = problem.signs;
     let [h1, h2, ..] = arm.h;
     let distance = b.norm_squared(v0);
-    let (q3, third, u) = elbow(b, arm, distance, s1);
+    let (q3, third, u) = elbow(b, &arm, distance, s1);
     let (t1, q2, shoulder) = b.two_rotations(h1, v0, h2, u, s2);
     b.step("q1, q2 by SP2", t1.nodes().into_iter().chain(q2.nodes()).chain(shoulder.nodes()));
     let quality = b.both(third, shoulder);
     let q1 = b.back(t1);
-    spherical_branch(b, arm, r06, [q1, q2, q3], None, quality, s3)
+    spherical_branch(b, &arm, &r06, [q1, q2, q3], None, quality, s3)
 }
 
-/// Axes 2, 3 meeting: `q1` by subproblem 3, `q2`, `q3` by subproblem 2, then the wrist.
-fn spherical_last_two_intersecting(
-    b: &mut Builder,
-    arm: &Arm,
-    r06: &Matrix,
-    v0: Vector,
-    [s1, s2, s3]: [ExprId; 3],
-) -> Branch {
+/// Spherical wrist with axes 2 and 3 meeting (`p23 = 0`): `q1` by subproblem 3 (the wrist
+/// centre seen from axis 1 lies at `|p34|` from the elbow), `q2`, `q3` by subproblem 2, then the
+/// wrist. Needs `h2` not parallel to `h3`.
+#[inline(always)]
+pub fn spherical_last_two_intersecting<A: Algebra>(b: &mut A, problem: &Problem<'_, A::Value>) -> Branch<A::Value> {
+    let (arm, r06, v0) = wrist_target(b, problem);
+    let [s1, s2, s3] = problem.signs;
     let [h1, h2, h3, ..] = arm.h;
     let [_, p12, _, p34, ..] = arm.p;
     let distance = b.norm_squared(p34);
@@ -251,18 +266,17 @@ fn spherical_last_two_intersecting(
     b.step("q2, q3 by SP2", t2.nodes().into_iter().chain(q3.nodes()).chain(elbow.nodes()));
     let quality = b.both(first, elbow);
     let (q1, q2) = (b.back(t1), b.back(t2));
-    spherical_branch(b, arm, r06, [q1, q2, q3], None, quality, s3)
+    spherical_branch(b, &arm, &r06, [q1, q2, q3], None, quality, s3)
 }
 
-/// Axes 1, 2 meeting and joint 3 prismatic (the Stanford arm): the slide from the wrist
-/// centre's distance (a quadratic), `q1`, `q2` by subproblem 2, then the wrist.
-fn spherical_prismatic_third(
-    b: &mut Builder,
-    arm: &Arm,
-    r06: &Matrix,
-    v0: Vector,
-    [s1, s2, s3]: [ExprId; 3],
-) -> Branch {
+/// Spherical wrist with axes 1 and 2 meeting (`p12 = 0`) and joint 3 prismatic along `h3` (the
+/// Stanford arm): the slide from the wrist centre's distance from the shoulder (a quadratic:
+/// `|p23 + p34 + q3 h3| = |W - S|`), `q1`, `q2` by subproblem 2, then the wrist. `q3` is a
+/// length, not wrapped. Needs `h1` not parallel to `h2`.
+#[inline(always)]
+pub fn spherical_prismatic_third<A: Algebra>(b: &mut A, problem: &Problem<'_, A::Value>) -> Branch<A::Value> {
+    let (arm, r06, v0) = wrist_target(b, problem);
+    let [s1, s2, s3] = problem.signs;
     let [h1, h2, h3, ..] = arm.h;
     let [_, _, p23, p34, ..] = arm.p;
     // |u + q3 h3|^2 = |v0|^2 with u = p23 + p34: q3^2 + 2 (u . h3) q3 + |u|^2 - |v0|^2 = 0.
@@ -282,7 +296,7 @@ fn spherical_prismatic_third(
     let signed = b.mul(s1, root);
     let minus_b = b.neg(half_b);
     let slide = b.add(minus_b, signed);
-    let reach = Quality { exact, singular: zero };
+    let reach = Flags { exact, singular: zero };
     b.step("q3 from the wrist centre's distance (a quadratic)", [slide, exact]);
     let along = b.scale(h3, slide);
     let u = b.vadd(u, along);
@@ -290,19 +304,17 @@ fn spherical_prismatic_third(
     b.step("q1, q2 by SP2", t1.nodes().into_iter().chain(q2.nodes()).chain(shoulder.nodes()));
     let quality = b.both(reach, shoulder);
     let (q1, none) = (b.back(t1), b.zero_turn());
-    spherical_branch(b, arm, r06, [q1, q2, none], Some(slide), quality, s3)
+    spherical_branch(b, &arm, &r06, [q1, q2, none], Some(slide), quality, s3)
 }
 
-/// Axes 2, 3, 4 parallel and axes 5, 6 meeting (the UR family): `q1` by subproblem 4, `q5` by
-/// subproblem 4, then the planar elbow.
-fn three_parallel_two_intersecting(
-    b: &mut Builder,
-    arm: &Arm,
-    r06: &Matrix,
-    v0: Vector,
-    [s1, s2, s3]: [ExprId; 3],
-    singular_pass: bool,
-) -> Branch {
+/// Axes 2, 3, 4 parallel (direction `h = h2`) and axes 5, 6 meeting (`p56 = 0`): the UR family.
+/// `q1` by subproblem 4 (the tool flange's height along `h` is fixed), `q5` by subproblem 4 (so
+/// is the angle between `h` and `h6`), then [`parallel_elbow`]. Needs `h1` and `h5` not parallel
+/// to `h`.
+#[inline(always)]
+pub fn three_parallel_two_intersecting<A: Algebra>(b: &mut A, problem: &Problem<'_, A::Value>) -> Branch<A::Value> {
+    let (arm, r06, v0) = wrist_target(b, problem);
+    let [s1, s2, s3] = problem.signs;
     let [h1, h, _, _, h5, h6] = arm.h;
     let [_, p12, p23, p34, p45, ..] = arm.p;
     let first_two = b.vadd(p12, p23);
@@ -314,12 +326,12 @@ fn three_parallel_two_intersecting(
     // `h` seen from the tool flange: R16^T h.
     let q1 = b.back(t1);
     let turned = b.rotate(q1, h1, h);
-    let w = b.mul_transposed(r06, turned);
-    // Decided here, at compile time, as the run time's `fifth_angle` decides it: an orthogonal
-    // wrist on the great circle (`h6 . rot(h5, -q5) h = h6 . w`), which keeps the digits of `q5`
-    // near the singularity.
-    let dot = |u: [f64; 3], v: [f64; 3]| u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
-    let axes = &arm.axes;
+    let w = b.mul_transposed(&r06, turned);
+    // An orthogonal wrist (`h` and `h6` both square to `h5`: every UR) on the great circle
+    // (`h6 . rot(h5, -q5) h = h6 . w`), whose half-width's sine comes from `|h6 x w|`: near the
+    // wrist's singularity (`w` near `+-h6`) that keeps the digits of `q5` which the general form,
+    // through `sqrt(1 - height^2)`, loses. Decided on the numbers.
+    let axes = &arm.numbers.axes;
     let orthogonal = dot(axes[1], axes[4]).abs() <= ORTHOGONAL && dot(axes[5], axes[4]).abs() <= ORTHOGONAL;
     let (q5, fifth) = if orthogonal {
         let minus_q5 = b.rotation_to_height_on_great_circle(h6, h5, h, w, s2);
@@ -330,24 +342,36 @@ fn three_parallel_two_intersecting(
     };
     b.step("q5 by SP4", q5.nodes().into_iter().chain(fifth.nodes()));
     let quality = b.both(first, fifth);
-    parallel_elbow(b, arm, r06, v0, t1, q5, quality, s3, singular_pass)
+    let elbow = Elbow { t1, q5, quality, sign: s3, singular_pass: problem.singular_pass, near_singular: 0.0 };
+    parallel_elbow(b, &arm, &r06, v0, elbow)
 }
 
-/// The rest of an arm with axes 2, 3, 4 parallel, once `q1` (as `t1 = -q1`) and `q5` are known:
-/// `q6` and the sum `q2 + q3 + q4` by subproblem 1, `q3` by subproblem 3, `q2` by subproblem 1,
-/// `q4` by difference.
-#[allow(clippy::too_many_arguments, reason = "the run time's parallel_elbow, argument for argument, and the pass")]
-fn parallel_elbow(
-    b: &mut Builder,
-    arm: &Arm,
-    r06: &Matrix,
-    v0: Vector,
-    t1: Turn,
-    q5: Turn,
-    quality: Quality,
-    sign: ExprId,
-    singular_pass: bool,
-) -> Branch {
+/// What [`parallel_elbow`] starts from: `q1` (as `t1 = -q1`) and `q5`, their flags, the branch
+/// sign of the elbow, and how the wrist's singularity is met.
+pub(crate) struct Elbow<V> {
+    pub t1: Turn<V>,
+    pub q5: Turn<V>,
+    pub quality: Flags<V>,
+    pub sign: V,
+    /// Whether the sum of the parallel joints moves where `q6 = 0` leaves the elbow out of reach.
+    pub singular_pass: bool,
+    /// Above zero, how near the singularity (the sine between axis 6 and the parallel axes) a
+    /// branch counts as at it even where subproblem 1 finds it regular ([`crate::ik::NEAR_SINGULAR_SIXTH`],
+    /// for a `q5` found by a quartic to about 1e-7 rad there); zero, subproblem 1's own test.
+    pub near_singular: f64,
+}
+
+/// The rest of an arm with axes 2, 3, 4 parallel, once `q1` and `q5` are known: `q6` and the sum
+/// `q2 + q3 + q4` (with the axes' signs) by subproblem 1, `q3` by subproblem 3, `q2` by
+/// subproblem 1, `q4` by difference.
+#[inline(always)]
+pub(crate) fn parallel_elbow<A: Algebra>(
+    b: &mut A,
+    arm: &Arm<'_, A::Value>,
+    r06: &Matrix<A::Value>,
+    v0: Vector<A::Value>,
+    Elbow { t1, q5, quality, sign, singular_pass, near_singular }: Elbow<A::Value>,
+) -> Branch<A::Value> {
     let [h1, h, h3, h4, h5, h6] = arm.h;
     let [_, p12, _, _, p45, p56, _] = arm.p;
     let (sign3, sign4) = (b.dot(h, h3), b.dot(h, h4));
@@ -373,10 +397,24 @@ fn parallel_elbow(
     let u = b.vadd(p45, u);
     let t6 = b.back(t6);
     let sixth_angle = wrap(b, t6.angle);
-    let (sum, t6, sixth_angle) = if singular_pass {
+    let (sum, t6, sixth_angle, sixth) = if singular_pass {
         let seen_along = b.dot(h6, seen);
         let free = free_sixth(b, arm, v1, u, sum, seen_along);
-        let moved = b.and(sixth.singular, free.moves);
+        let (moved, sixth) = if near_singular > 0.0 {
+            // Near the singularity, by the sine between axis 6 and the parallel axes.
+            let axis_across = b.cross(h6, seen);
+            let across_squared = b.norm_squared(axis_across);
+            let seen_squared = b.norm_squared(seen);
+            let limit = b.constant(near_singular * near_singular);
+            let bound = b.mul(limit, seen_squared);
+            let close = b.at_most(across_squared, bound);
+            let near = b.or(sixth.singular, close);
+            let moved = b.and(near, free.moves);
+            let singular = b.or(sixth.singular, moved);
+            (moved, Flags { exact: sixth.exact, singular })
+        } else {
+            (b.and(sixth.singular, free.moves), sixth)
+        };
         let sum = b.select_turn(moved, free.sum, sum);
         let t6 = b.select_turn(moved, free.sixth, t6);
         let sixth_angle = b.select(moved, free.sixth.angle, sixth_angle);
@@ -384,9 +422,9 @@ fn parallel_elbow(
             "at the wrist's singularity, the sum and q6 moved where q6 = 0 leaves the elbow out of reach",
             sum.nodes().into_iter().chain(t6.nodes()).chain([sixth_angle]),
         );
-        (sum, t6, sixth_angle)
+        (sum, t6, sixth_angle, sixth)
     } else {
-        (sum, t6, sixth_angle)
+        (sum, t6, sixth_angle, sixth)
     };
     let wrist = b.rotate(sum, h, u);
     let v = b.vsub(v1, wrist);
@@ -400,10 +438,8 @@ fn parallel_elbow(
     let third_part = b.mul(sign3, q3.angle);
     let rest = b.sub(rest, third_part);
     let q4 = b.mul(sign4, rest);
-    let [sign3_exact, sign4_exact] = [2, 3].map(|axis| {
-        let dot = |u: [f64; 3], v: [f64; 3]| u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
-        dot(arm.axes[1], arm.axes[axis]).signum()
-    });
+    let axes = &arm.numbers.axes;
+    let [sign3_exact, sign4_exact] = [2, 3].map(|axis| dot(axes[1], axes[axis]).signum());
     let t4 = b.difference(sum, q2);
     let t4 = if sign3_exact > 0.0 { b.difference(t4, q3) } else { b.angle_sum(t4, q3) };
     let t4 = if sign4_exact > 0.0 { t4 } else { b.back(t4) };
@@ -419,23 +455,34 @@ fn parallel_elbow(
     Branch { q: [w1, w2, w3, w4, w5, sixth_angle], cos: turns.map(|t| t.cos), sin: turns.map(|t| t.sin), quality }
 }
 
-/// The run time's `free_sixth`, as expressions: at the wrist's singularity (axis 6 in line with
-/// the parallel axes) the rotation fixes only `sum + e q6` (`e` the sign of `seen_along`), and
-/// where the sum found with `q6 = 0` leaves the elbow out of reach, the sum moves to where the
-/// elbow's squared distance is the middle of what both the elbow and the turning wrist offset `u`
-/// can reach, the root of that subproblem 4 nearest the sum found, and `q6` takes up the
-/// difference.
-struct FreeSixth {
+/// The sum `q2 + q3 + q4` and `q6` at the wrist's singularity, where axis 6 is in line with the
+/// parallel axes (`seen_along` the cosine between them, `e` its sign): the rotation then fixes
+/// only `sum + e q6`, and the sum found (with `q6 = 0` at the singularity itself) is one
+/// representative. The wrist's offset `u` turns with the sum, and the elbow must reach what it
+/// leaves (`v1 - rot(h, sum) u`), so where the sum found leaves the elbow out of reach the sum
+/// moves: to where the elbow's squared distance is the middle of what both the elbow and the
+/// turning offset can reach (so neither is at its limit), the root of that subproblem 4 nearest
+/// the sum found, and `q6` takes up the difference.
+struct FreeSixth<V> {
     /// `1` where the sum moves (the elbow misses with the sum found, and the distance turns with
-    /// the sum), else `0`; the caller ands it with the singularity.
-    moves: ExprId,
+    /// the sum: the offset has a part across the axes), else `0`; the caller ands it with the
+    /// singularity.
+    moves: V,
     /// The sum moved.
-    sum: Turn,
+    sum: Turn<V>,
     /// `q6` for it, its angle in `(-pi, pi]`.
-    sixth: Turn,
+    sixth: Turn<V>,
 }
 
-fn free_sixth(b: &mut Builder, arm: &Arm, v1: Vector, u: Vector, sum: Turn, seen_along: ExprId) -> FreeSixth {
+#[inline(always)]
+fn free_sixth<A: Algebra>(
+    b: &mut A,
+    arm: &Arm<'_, A::Value>,
+    v1: Vector<A::Value>,
+    u: Vector<A::Value>,
+    sum: Turn<A::Value>,
+    seen_along: A::Value,
+) -> FreeSixth<A::Value> {
     let [_, h, h3, ..] = arm.h;
     let [_, _, p23, p34, ..] = arm.p;
     let minus_one = b.constant(-1.0);
@@ -446,14 +493,14 @@ fn free_sixth(b: &mut Builder, arm: &Arm, v1: Vector, u: Vector, sum: Turn, seen
     let distance = b.norm_squared(v);
     // Whether the elbow reaches does not depend on which of its roots: either sign serves.
     let (_, reached) = b.rotation_to_distance(h3, p34, back23, distance, one);
-    // The elbow's squared distances (constants: the run time's `distance_range` of the same
-    // numbers), and those of `v1 - rot(h, t) u` over every `t`.
+    // The elbow's squared distances (numbers: the arm's alone), and those of
+    // `v1 - rot(h, t) u` over every `t`.
+    let numbers = arm.numbers;
     let minus = |v: [f64; 3]| v.map(|x| -x);
-    let (elbow_lo, elbow_hi) =
-        kinematics_core::ik::subproblem::distance_range(arm.axes[2], arm.offsets[3], minus(arm.offsets[2]));
+    let (elbow_lo, elbow_hi) = distance_range(numbers.axes[2], numbers.offsets[3], minus(numbers.offsets[2]));
     let (elbow_lo, elbow_hi) = (b.constant(elbow_lo), b.constant(elbow_hi));
     let (vv, uu) = (b.norm_squared(v1), b.norm_squared(u));
-    // Written as subproblem 4 below writes them (`v1 . h`, `h . u`, `h x u`), so they are its nodes.
+    // Written as subproblem 4 below writes them (`v1 . h`, `h . u`, `h x u`), so a graph shares them.
     let (hv, hu) = (b.dot(v1, h), b.dot(h, u));
     let lengths = b.add(vv, uu);
     let two = b.constant(2.0);
@@ -477,9 +524,9 @@ fn free_sixth(b: &mut Builder, arm: &Arm, v1: Vector, u: Vector, sum: Turn, seen
     let height = b.sub(lengths, goal);
     let height = b.mul(half, height);
     // The root nearest the sum found. The equation is `a cos t + b sin t = c` (subproblem 4's `a`
-    // and `b`, the same nodes), whose roots `t` have `cos(t - sum) = (c (a cos sum + b sin sum)
+    // and `b`, the same values), whose roots `t` have `cos(t - sum) = (c (a cos sum + b sin sum)
     // +- w (a sin sum - b cos sum)) / (a^2 + b^2)` with `w >= 0`: the sign of `a sin sum - b cos
-    // sum` picks the nearer (the run time compares both cosines; the same root but at a tie).
+    // sum` picks the nearer.
     let hu_along = b.mul(hv, hu);
     let vu = b.dot(v1, u);
     let a = b.sub(vu, hu_along);

@@ -1,19 +1,17 @@
-//! The Paden-Kahan subproblems 1 to 4 (IK-Geo's numbering, arXiv 2211.05737) as expressions: the
-//! run time's `kinematics_core::ik::subproblem` written over the graph, step for step and with
-//! its tolerances, so that the compiled body and the run time's solver compute the same numbers
-//! (up to the rounding of constants the graph folds). Where the run time returns both roots of an
-//! equation, these take a branch sign (`+1` or `-1`, an input of the body) and return the one it
+//! The Paden-Kahan subproblems 1 to 4 (IK-Geo's numbering, arXiv 2211.05737) for one branch, on
+//! any [`Algebra`], with the tolerances of [`crate::ik::subproblem`]. Where that module returns
+//! both roots of an equation, these take a branch sign (`+1` or `-1`) and return the root it
 //! picks; where it branches on a degenerate case, these select.
 
-use kinematics_core::ik::subproblem::{DEGENERATE, DOUBLE_ROOT, REACH_SLACK};
+use super::algebra::{Algebra, Flags, Turn, Vector};
+use crate::ik::subproblem::{DEGENERATE, DOUBLE_ROOT, REACH_SLACK};
 
-use super::algebra::{Builder, Quality, Turn, Vector};
-use crate::symbolic::graph::ExprId;
-
-impl Builder {
+/// The subproblems, for every [`Algebra`].
+pub trait Subproblems: Algebra {
     /// `atan2(y, x)` as a turn, its cosine and sine the vector normalised (one division, for the
     /// reciprocal of its length); no turn for the zero vector, nor where `none` is set.
-    fn turn_of(&mut self, y: ExprId, x: ExprId, none: ExprId) -> Turn {
+    #[inline(always)]
+    fn turn_of(&mut self, y: Self::Value, x: Self::Value, none: Self::Value) -> Turn<Self::Value> {
         let (xx, yy) = (self.mul(x, x), self.mul(y, y));
         let r2 = self.add(xx, yy);
         let r = self.sqrt(r2);
@@ -31,8 +29,14 @@ impl Builder {
 
     /// Subproblem 1: the angle `t` with `rot(k, t) p1 = p2` about the unit axis `k`, or the
     /// least-squares best; `0`, flagged singular, when either vector lies on the axis.
-    pub fn rotation_onto(&mut self, k: Vector, p1: Vector, p2: Vector) -> (Turn, Quality) {
-        let across_part = |b: &mut Builder, p: Vector| {
+    #[inline(always)]
+    fn rotation_onto(
+        &mut self,
+        k: Vector<Self::Value>,
+        p1: Vector<Self::Value>,
+        p2: Vector<Self::Value>,
+    ) -> (Turn<Self::Value>, Flags<Self::Value>) {
+        let across_part = |b: &mut Self, p: Vector<Self::Value>| {
             let along = b.dot(k, p);
             let on_axis = b.scale(k, along);
             b.vsub(p, on_axis)
@@ -43,7 +47,7 @@ impl Builder {
         let u1xu2 = self.cross(u1, u2);
         let y = self.dot(k, u1xu2);
         let limit = self.constant(DEGENERATE * DEGENERATE);
-        let on_axis = |b: &mut Builder, p: Vector| {
+        let on_axis = |b: &mut Self, p: Vector<Self::Value>| {
             let kxp = b.cross(k, p);
             let across = b.norm_squared(kxp);
             let length = b.norm_squared(p);
@@ -55,7 +59,7 @@ impl Builder {
         let singular = self.or(first, second);
         let turn = self.turn_of(y, x, singular);
         let one = self.constant(1.0);
-        (turn, Quality { exact: one, singular })
+        (turn, Flags { exact: one, singular })
     }
 
     /// The root `sign` picks of `a cos t + b sin t = c`: `atan2(b, a) + sign * acos(c / hypot(a, b))`,
@@ -63,11 +67,18 @@ impl Builder {
     ///
     /// Written on squares: with `r^2 = a^2 + b^2` and `w = sqrt(r^2 - c^2)`, `cos t = (a c - sign b w) /
     /// r^2` and `sin t = (b c + sign a w) / r^2`, one square root and one division on the way
-    /// (the run time's `cos_sin_equation` takes `r`, then three quotients by it, then a second
-    /// root: the same tests and the same values to rounding, on a path half as long). Near a
-    /// double root (`|c| / r` within `DOUBLE_ROOT` of 1) and out of reach the root is snapped
-    /// to `atan2(b, a)` or its opposite, as there.
-    pub fn cos_sin_equation(&mut self, a: ExprId, b: ExprId, c: ExprId, sign: ExprId) -> (Turn, Quality) {
+    /// (the looped `cos_sin_equation` takes `r`, then three quotients by it, then a second root: the
+    /// same tests and the same values to rounding, on a path half as long). Near a double root
+    /// (`|c| / r` within `DOUBLE_ROOT` of 1) and out of reach the root is snapped to `atan2(b, a)`
+    /// or its opposite, as there.
+    #[inline(always)]
+    fn cos_sin_equation(
+        &mut self,
+        a: Self::Value,
+        b: Self::Value,
+        c: Self::Value,
+        sign: Self::Value,
+    ) -> (Turn<Self::Value>, Flags<Self::Value>) {
         let (aa, bb, cc) = (self.mul(a, a), self.mul(b, b), self.mul(c, c));
         let r2 = self.add(aa, bb);
         // r <= DEGENERATE max(r, |c|), and |c| <= DEGENERATE max(r, |c|) for the degenerate case's
@@ -109,19 +120,20 @@ impl Builder {
         let zero_turn = self.zero_turn();
         let turn = self.select_turn(degenerate, zero_turn, turn);
         let exact = self.select(degenerate, exact_degenerate, exact);
-        (turn, Quality { exact, singular: degenerate })
+        (turn, Flags { exact, singular: degenerate })
     }
 
     /// Subproblem 3: the angle `t` with `|rot(k, t) p1 - p2| = d`, given `d^2`, the root `sign`
     /// picks.
-    pub fn rotation_to_distance(
+    #[inline(always)]
+    fn rotation_to_distance(
         &mut self,
-        k: Vector,
-        p1: Vector,
-        p2: Vector,
-        d_squared: ExprId,
-        sign: ExprId,
-    ) -> (Turn, Quality) {
+        k: Vector<Self::Value>,
+        p1: Vector<Self::Value>,
+        p2: Vector<Self::Value>,
+        d_squared: Self::Value,
+        sign: Self::Value,
+    ) -> (Turn<Self::Value>, Flags<Self::Value>) {
         let (kp1, kp2) = (self.dot(k, p1), self.dot(k, p2));
         let along = self.mul(kp1, kp2);
         let p1p2 = self.dot(p1, p2);
@@ -138,7 +150,15 @@ impl Builder {
     }
 
     /// Subproblem 4: the angle `t` with `h . rot(k, t) p = d`, the root `sign` picks.
-    pub fn rotation_to_height(&mut self, h: Vector, k: Vector, p: Vector, d: ExprId, sign: ExprId) -> (Turn, Quality) {
+    #[inline(always)]
+    fn rotation_to_height(
+        &mut self,
+        h: Vector<Self::Value>,
+        k: Vector<Self::Value>,
+        p: Vector<Self::Value>,
+        d: Self::Value,
+        sign: Self::Value,
+    ) -> (Turn<Self::Value>, Flags<Self::Value>) {
         let (hk, kp) = (self.dot(h, k), self.dot(k, p));
         let hk_kp = self.mul(hk, kp);
         let hp = self.dot(h, p);
@@ -152,14 +172,15 @@ impl Builder {
     /// Subproblem 4 for an orthogonal wrist (`h` and `p` square to `k`, all unit): the angle `t`
     /// with `h . rot(k, t) p = h . v`, the half-width's sine from `|h x v|` (its digits kept near
     /// the singularity). Always exact.
-    pub fn rotation_to_height_on_great_circle(
+    #[inline(always)]
+    fn rotation_to_height_on_great_circle(
         &mut self,
-        h: Vector,
-        k: Vector,
-        p: Vector,
-        v: Vector,
-        sign: ExprId,
-    ) -> Turn {
+        h: Vector<Self::Value>,
+        k: Vector<Self::Value>,
+        p: Vector<Self::Value>,
+        v: Vector<Self::Value>,
+        sign: Self::Value,
+    ) -> Turn<Self::Value> {
         let cos_phi = self.dot(h, p);
         let kxp = self.cross(k, p);
         let sin_phi = self.dot(h, kxp);
@@ -179,14 +200,15 @@ impl Builder {
     /// Subproblem 2: the pair `(t1, t2)` with `rot(k1, t1) p1 = rot(k2, t2) p2` about axes that
     /// are not parallel, the crossing of the two cones `sign` picks; the least-squares best when
     /// they do not cross, and no turns (singular) when a vector is zero.
-    pub fn two_rotations(
+    #[inline(always)]
+    fn two_rotations(
         &mut self,
-        k1: Vector,
-        p1: Vector,
-        k2: Vector,
-        p2: Vector,
-        sign: ExprId,
-    ) -> (Turn, Turn, Quality) {
+        k1: Vector<Self::Value>,
+        p1: Vector<Self::Value>,
+        k2: Vector<Self::Value>,
+        p2: Vector<Self::Value>,
+        sign: Self::Value,
+    ) -> (Turn<Self::Value>, Turn<Self::Value>, Flags<Self::Value>) {
         let (n1, n2) = (self.norm_squared(p1), self.norm_squared(p2));
         let (n1, n2) = (self.sqrt(n1), self.sqrt(n2));
         let zero = self.constant(0.0);
@@ -232,7 +254,7 @@ impl Builder {
         let x = self.vadd(base, out);
         let (t1, first) = self.rotation_onto(k1, u1, x);
         let (t2, second) = self.rotation_onto(k2, u2, x);
-        let quality = Quality { exact, singular: zero };
+        let quality = Flags { exact, singular: zero };
         let quality = self.both(quality, first);
         let quality = self.both(quality, second);
         let none = self.zero_turn();
@@ -240,6 +262,8 @@ impl Builder {
         let t2 = self.select_turn(degenerate, none, t2);
         let exact = self.select(degenerate, equal, quality.exact);
         let singular = self.select(degenerate, one, quality.singular);
-        (t1, t2, Quality { exact, singular })
+        (t1, t2, Flags { exact, singular })
     }
 }
+
+impl<A: Algebra> Subproblems for A {}
