@@ -3,8 +3,9 @@
 //! ([`geometry`]), the closed-form family that solves it, decided at compile time
 //! ([`mod@classify`]: which family's relations hold, and where to place the points on the axes;
 //! the plan is a six-joint family with six-joint geometry or a planar arm), the families composed as
-//! straight-line code over the expression graph ([`closed_form`]: subproblems with the geometry
-//! folded in, the eight branches side by side in lanes), the forward kinematics each solution is
+//! straight-line code over the expression graph ([`closed_form`]: each family's branch, written
+//! once in `kinematics_core::ik::branch` over an algebra, built with the graph as that algebra,
+//! the geometry folded in; the eight branches side by side in lanes), the forward kinematics each solution is
 //! measured with ([`measure`]: the compiled pose, on the solver's own sines and cosines), and the
 //! body's emission ([`emit`]: one branch as straight-line Rust). The robot's functions built on it
 //! (or on the family's solver in `kinematics-core`, called with the geometry as constants) are

@@ -26,7 +26,7 @@
 
 use super::branch::{self, Numbers};
 use super::solutions::{IkSolution, IkSolutions};
-use super::subproblem::{Quality, Turn, rotation_onto, rotation_to_distance, three_rotations, two_heights};
+use super::subproblem::{rotation_onto, rotation_to_distance, three_rotations, two_heights};
 use super::vector::{M3, V3, add, cross, dot, mul, norm_squared, scale, sub, wrap};
 use crate::pose::Pose;
 
@@ -103,19 +103,6 @@ fn numbers_problem<'a>(arm: &'a Arm6, target: &Pose<f64>) -> branch::Problem<'a,
     }
 }
 
-/// A turn of subproblems 5 and 6 as the branch's.
-#[inline(always)]
-fn turn(t: Turn) -> branch::Turn<f64> {
-    branch::Turn { angle: t.angle, cos: t.cos, sin: t.sin }
-}
-
-/// A quality as the branch's flags.
-#[inline(always)]
-fn flags(quality: Quality) -> branch::Flags<f64> {
-    let flag = |x: bool| if x { 1.0 } else { 0.0 };
-    branch::Flags { exact: flag(quality.exact), singular: flag(quality.singular) }
-}
-
 /// A branch computed on numbers as a solution.
 #[inline(always)]
 fn solution(branch: branch::Branch<f64>) -> IkSolution<6> {
@@ -148,9 +135,9 @@ pub fn three_parallel(arm: &Arm6, target: &Pose<f64>) -> IkSolutions<6, 8> {
             // to about 1e-7 rad, or as one at their tangency: short of the sixth subproblem's own
             // test, so near it an elbow out of reach counts as singular.
             let elbow = branch::Elbow {
-                t1: turn(t1),
-                q5: turn(q5),
-                quality: flags(pairs.quality),
+                t1: t1.into(),
+                q5: q5.into(),
+                quality: pairs.quality.into(),
                 sign,
                 singular_pass: true,
                 near_singular: NEAR_SINGULAR_SIXTH,
@@ -184,8 +171,8 @@ pub fn spherical(arm: &Arm6, target: &Pose<f64>) -> IkSolutions<6, 8> {
     let triples = three_rotations(scale(p12, -1.0), h1, v0, h2, p23, h3, p34);
     for &[t1, q2, q3] in triples.as_slice() {
         for sign in [1.0, -1.0] {
-            let turns = [turn(t1.back()), turn(q2), turn(q3)];
-            let branch = branch::spherical_branch(numbers, &values, &r06, turns, None, flags(triples.quality), sign);
+            let turns = [t1.back().into(), q2.into(), q3.into()];
+            let branch = branch::spherical_branch(numbers, &values, &r06, turns, None, triples.quality.into(), sign);
             #[allow(clippy::expect_used, reason = "invariant: two wrist flips per arm branch, four arm branches at most")]
             out.push(solution(branch))
                 .expect("invariant: two wrist flips for each of at most four arm branches: at most 8 solutions");

@@ -1,7 +1,8 @@
 //! Inverse kinematics at run time, for code the compiler generates: the Paden-Kahan subproblems
 //! ([`subproblem`]), the closed-form families they compose into (six-joint arms: [`Arm6`] and the
 //! family functions, [`FreeArm6`] for the six of a seven-joint arm; planar arms and the SCARA:
-//! [`PlanarArm`]), the numeric solver every chain gets ([`levenberg_marquardt`]), what a call
+//! [`PlanarArm`]), the families' branches and subproblems 1 to 4 written once over an algebra
+//! ([`branch`]: the solvers here run them on numbers, the compiler builds them as expressions), the numeric solver every chain gets ([`levenberg_marquardt`]), what a call
 //! returns ([`IkSolutions`], [`NumericSolution`], [`IkError`]) and the refinement of a closed
 //! form's solutions on the arm as written ([`IkSolutions::refined`]). The solver's steps and the
 //! refinement share one linear solve (`ldl`: `L D L^T`, on the stack, lane by lane). No heap, no

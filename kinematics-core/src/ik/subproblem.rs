@@ -14,13 +14,17 @@
 //!
 //! Subproblems 3 and 4 are both `a cos t + b sin t = c` ([`cos_sin_equation`]). No function here
 //! returns NaN for finite input: a degenerate case gives a representative angle and a flag.
+//! Subproblems 1 to 4 are written once, one root at a time, in [`super::branch::Subproblems`]
+//! (what the closed-form families and the compiled bodies are made of); the functions here run it
+//! on numbers, once per root.
 //!
 //! Each angle is a `Turn` carrying its cosine and sine from the same arithmetic, so rotating by a
 //! solved angle costs no trigonometric call. Every result is flagged exact or least-squares,
 //! singular or not. Subproblems 5 and 6 are in `circles` (reduced to a degree-two trigonometric
 //! polynomial in one angle) and `polynomial` (the real roots of its quartic).
 
-use super::vector::{V3, add, cross, dot, norm_squared, scale, sub};
+use super::branch::{self, Numbers, Subproblems};
+use super::vector::{V3, cross, dot, norm_squared};
 
 mod circles;
 mod polynomial;
@@ -103,26 +107,43 @@ impl Turn {
     }
 }
 
+impl From<branch::Turn<f64>> for Turn {
+    #[inline(always)]
+    fn from(turn: branch::Turn<f64>) -> Turn {
+        Turn { angle: turn.angle, cos: turn.cos, sin: turn.sin }
+    }
+}
+
+impl From<Turn> for branch::Turn<f64> {
+    #[inline(always)]
+    fn from(turn: Turn) -> branch::Turn<f64> {
+        branch::Turn { angle: turn.angle, cos: turn.cos, sin: turn.sin }
+    }
+}
+
+/// A branch's flags, `1` or `0` each, as a quality.
+impl From<branch::Flags<f64>> for Quality {
+    #[inline(always)]
+    fn from(flags: branch::Flags<f64>) -> Quality {
+        Quality { exact: flags.exact == 1.0, singular: flags.singular == 1.0 }
+    }
+}
+
+impl From<Quality> for branch::Flags<f64> {
+    #[inline(always)]
+    fn from(quality: Quality) -> branch::Flags<f64> {
+        let flag = |x: bool| if x { 1.0 } else { 0.0 };
+        branch::Flags { exact: flag(quality.exact), singular: flag(quality.singular) }
+    }
+}
+
 /// Subproblem 1: the angle `t` with `rot(k, t) p1 = p2` about the unit axis `k`, or the
 /// least-squares best when the two vectors differ in their component along `k` or in their
 /// distance from it. When `p1` lies on the axis every angle serves: `0`, flagged singular.
 #[inline(always)]
 pub fn rotation_onto(k: V3, p1: V3, p2: V3) -> (Turn, Quality) {
-    // The parts across the axis first, then their angle: `p1 . p2 - (k . p1)(k . p2)` would
-    // cancel to a few digits for vectors near the axis (a wrist near its singularity), where the
-    // parts across are small but still exact to rounding.
-    let u1 = sub(p1, scale(k, dot(k, p1)));
-    let u2 = sub(p2, scale(k, dot(k, p2)));
-    let x = dot(u1, u2);
-    let y = dot(k, cross(u1, u2));
-    // The squared distances from the axis, as |k x p|^2: the difference |p|^2 - (k . p)^2 would
-    // cancel to rounding noise for a vector nearly along the axis.
-    let across1 = norm_squared(cross(k, p1));
-    let across2 = norm_squared(cross(k, p2));
-    let singular =
-        across1 <= DEGENERATE * DEGENERATE * norm_squared(p1) || across2 <= DEGENERATE * DEGENERATE * norm_squared(p2);
-    let turn = if singular { Turn::ZERO } else { Turn::of(y, x) };
-    (turn, Quality { exact: true, singular })
+    let (turn, flags) = Numbers::<f64>::new().rotation_onto(k, p1, p2);
+    (turn.into(), flags.into())
 }
 
 /// The two solutions of `a cos t + b sin t = c`, `atan2(b, a) + acos(c / hypot(a, b))` first
@@ -131,40 +152,20 @@ pub fn rotation_onto(k: V3, p1: V3, p2: V3) -> (Turn, Quality) {
 /// when `a = b = 0`, both are `0`, exact (and singular) if `c = 0` too.
 #[inline(always)]
 pub fn cos_sin_equation(a: f64, b: f64, c: f64) -> ([Turn; 2], Quality) {
-    let r2 = a * a + b * b;
-    let r = libm::sqrt(r2);
-    let scale = if r > c.abs() { r } else { c.abs() };
-    // The solvers take finite targets (`check_target`), so no operand here is NaN.
-    if r <= DEGENERATE * scale {
-        let exact = c.abs() <= DEGENERATE * scale;
-        return ([Turn::ZERO; 2], Quality { exact, singular: true });
-    }
-    let (cos_phi, sin_phi) = (a / r, b / r);
-    let ratio = c / r;
-    let exact = ratio.abs() <= 1.0 + REACH_SLACK;
-    // t = phi +- delta with cos(delta) = ratio: the cosines and sines by the angle-sum formulas,
-    // and each angle from its own cosine and sine, so the angle and the pair the solvers rotate
-    // with agree to rounding.
-    let (cos_delta, sin_delta) = if ratio.abs() >= 1.0 - DOUBLE_ROOT {
-        (if ratio > 0.0 { 1.0 } else { -1.0 }, 0.0)
-    } else {
-        (ratio, libm::sqrt((1.0 - ratio) * (1.0 + ratio)))
-    };
-    let turn = |cos: f64, sin: f64| Turn { angle: crate::trig::atan2(sin, cos), cos, sin };
-    let plus = turn(cos_phi * cos_delta - sin_phi * sin_delta, sin_phi * cos_delta + cos_phi * sin_delta);
-    let minus = turn(cos_phi * cos_delta + sin_phi * sin_delta, sin_phi * cos_delta - cos_phi * sin_delta);
-    ([plus, minus], Quality { exact, singular: false })
+    let numbers = &mut Numbers::<f64>::new();
+    let (plus, quality) = numbers.cos_sin_equation(a, b, c, 1.0);
+    let (minus, _) = numbers.cos_sin_equation(a, b, c, -1.0);
+    ([plus.into(), minus.into()], quality.into())
 }
 
 /// Subproblem 3: the angles `t` with `|rot(k, t) p1 - p2| = d`, given `d^2` (the callers know
 /// the square, so no root is taken).
 #[inline(always)]
 pub fn rotation_to_distance(k: V3, p1: V3, p2: V3, d_squared: f64) -> ([Turn; 2], Quality) {
-    let along = dot(k, p1) * dot(k, p2);
-    let a = dot(p1, p2) - along;
-    let b = dot(k, cross(p1, p2));
-    let c = 0.5 * (norm_squared(p1) + norm_squared(p2) - d_squared) - along;
-    cos_sin_equation(a, b, c)
+    let numbers = &mut Numbers::<f64>::new();
+    let (plus, quality) = numbers.rotation_to_distance(k, p1, p2, d_squared, 1.0);
+    let (minus, _) = numbers.rotation_to_distance(k, p1, p2, d_squared, -1.0);
+    ([plus.into(), minus.into()], quality.into())
 }
 
 /// The squared distances subproblem 3 reaches exactly, `[lo, hi]`: `|rot(k, t) p1 - p2|^2` over
@@ -184,10 +185,10 @@ pub fn distance_range(k: V3, p1: V3, p2: V3) -> (f64, f64) {
 /// Subproblem 4: the angles `t` with `h . rot(k, t) p = d`.
 #[inline(always)]
 pub fn rotation_to_height(h: V3, k: V3, p: V3, d: f64) -> ([Turn; 2], Quality) {
-    let hk_kp = dot(h, k) * dot(k, p);
-    let a = dot(h, p) - hk_kp;
-    let b = dot(h, cross(k, p));
-    cos_sin_equation(a, b, d - hk_kp)
+    let numbers = &mut Numbers::<f64>::new();
+    let (plus, quality) = numbers.rotation_to_height(h, k, p, d, 1.0);
+    let (minus, _) = numbers.rotation_to_height(h, k, p, d, -1.0);
+    ([plus.into(), minus.into()], quality.into())
 }
 
 /// Subproblem 4 for an orthogonal wrist: the angles `t` with `h . rot(k, t) p = h . v`, for unit
@@ -199,14 +200,10 @@ pub fn rotation_to_height(h: V3, k: V3, p: V3, d: f64) -> ([Turn; 2], Quality) {
 /// of 1e-8 rad). Always exact: `v` is reached by construction.
 #[inline(always)]
 pub fn rotation_to_height_on_great_circle(h: V3, k: V3, p: V3, v: V3) -> [Turn; 2] {
-    let (cos_phi, sin_phi) = (dot(h, p), dot(h, cross(k, p)));
-    let cos_delta = dot(h, v);
-    let sin_delta = libm::sqrt(norm_squared(cross(h, v)));
-    let turn = |cos: f64, sin: f64| Turn { angle: crate::trig::atan2(sin, cos), cos, sin };
-    [
-        turn(cos_phi * cos_delta - sin_phi * sin_delta, sin_phi * cos_delta + cos_phi * sin_delta),
-        turn(cos_phi * cos_delta + sin_phi * sin_delta, sin_phi * cos_delta - cos_phi * sin_delta),
-    ]
+    let numbers = &mut Numbers::<f64>::new();
+    let plus = numbers.rotation_to_height_on_great_circle(h, k, p, v, 1.0);
+    let minus = numbers.rotation_to_height_on_great_circle(h, k, p, v, -1.0);
+    [plus.into(), minus.into()]
 }
 
 /// Subproblem 2: the angle pairs `(t1, t2)` with `rot(k1, t1) p1 = rot(k2, t2) p2` about unit
@@ -215,42 +212,16 @@ pub fn rotation_to_height_on_great_circle(h: V3, k: V3, p: V3, v: V3) -> [Turn; 
 /// `k1` and `k2` cross; when they do not, both pairs are the least-squares best.
 #[inline(always)]
 pub fn two_rotations(k1: V3, p1: V3, k2: V3, p2: V3) -> ([(Turn, Turn); 2], Quality) {
-    let n1 = libm::sqrt(norm_squared(p1));
-    let n2 = libm::sqrt(norm_squared(p2));
-    if n1 == 0.0 || n2 == 0.0 {
-        // A zero vector is rotated onto anything.
-        let exact = n1 == n2;
-        return ([(Turn::ZERO, Turn::ZERO); 2], Quality { exact, singular: true });
-    }
-    let u1 = scale(p1, 1.0 / n1);
-    let u2 = scale(p2, 1.0 / n2);
-    let c = dot(k1, k2);
-    let s2 = 1.0 - c * c;
-    let a1 = dot(k1, u1);
-    let a2 = dot(k2, u2);
-    // x = alpha k1 + beta k2 + gamma (k1 x k2), with k1 . x = a1, k2 . x = a2, |x| = 1.
-    let alpha = (a1 - c * a2) / s2;
-    let beta = (a2 - c * a1) / s2;
-    let rest = 1.0 - alpha * alpha - beta * beta - 2.0 * alpha * beta * c;
-    let exact = rest >= -REACH_SLACK;
-    let gamma = if rest > 0.0 { libm::sqrt(rest / s2) } else { 0.0 };
-    let base = add(scale(k1, alpha), scale(k2, beta));
-    let normal = cross(k1, k2);
-    let mut quality = Quality { exact, singular: false };
-    let mut pairs = [(Turn::ZERO, Turn::ZERO); 2];
-    for (pair, sign) in pairs.iter_mut().zip([1.0, -1.0]) {
-        let x = add(base, scale(normal, sign * gamma));
-        let (t1, q1) = rotation_onto(k1, u1, x);
-        let (t2, q2) = rotation_onto(k2, u2, x);
-        quality = quality.and(q1).and(q2);
-        *pair = (t1, t2);
-    }
-    (pairs, quality)
+    let numbers = &mut Numbers::<f64>::new();
+    let (t1, t2, first) = numbers.two_rotations(k1, p1, k2, p2, 1.0);
+    let (u1, u2, second) = numbers.two_rotations(k1, p1, k2, p2, -1.0);
+    let quality = Quality::from(first).and(second.into());
+    ([(t1.into(), t2.into()), (u1.into(), u2.into())], quality)
 }
 
 #[cfg(test)]
 mod tests {
-    use super::super::vector::{norm_squared, rotate, sub};
+    use super::super::vector::{norm_squared, rotate, scale, sub};
     use super::*;
 
     fn unit(v: V3) -> V3 {

@@ -7,9 +7,9 @@
 //! equation has no real solution in a lane, selects take its least-squares answer there and flag
 //! it.
 //!
-//! The families whose every step has at most two roots are composed here: the UR family, and the
-//! spherical wrist with axes 2, 3 parallel, axes 1, 2 or axes 2, 3 meeting, or a prismatic third
-//! joint. The general spherical wrist and the three-parallel arm, whose first step is a quartic
+//! The families whose every step has at most two roots are built here (each family's entry in
+//! `ik::families` holds its branch): the UR family, and the spherical wrist with axes 2, 3
+//! parallel, axes 1, 2 or axes 2, 3 meeting, or a prismatic third joint. The general spherical wrist and the three-parallel arm, whose first step is a quartic
 //! (its real roots found by an iteration), the planar arms and the six of a seven-joint arm (its
 //! geometry turned by the free joint at run time) keep the run time's family functions.
 //!
