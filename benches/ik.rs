@@ -108,8 +108,10 @@ trait Closed {
     fn pose(q: &[f64; 6]) -> Pose<f64>;
     fn all(target: &Pose<f64>) -> Result<IkSolutions<6, 8>, IkError>;
     fn nearest(target: &Pose<f64>, seed: &[f64; 6]) -> Result<Option<IkSolution<6>>, IkError>;
-    /// The run time's family function with the robot's geometry (what `tip_ik` calls for a
-    /// family with a quartic first step; the path before compilation for the others).
+    /// The run time's family function with the robot's geometry, dispatched as generated code
+    /// runs it (what `tip_ik` calls for a family with a quartic first step; for the others the
+    /// same branch as the compiled body, on numbers in `F64x8` lanes, the arm's geometry not
+    /// folded into it).
     fn solver(target: &Pose<f64>) -> IkSolutions<6, 8>;
 }
 
@@ -137,7 +139,10 @@ macro_rules! closed {
                 $robot::tip_ik_nearest(target, seed)
             }
             fn solver(target: &Pose<f64>) -> IkSolutions<6, 8> {
-                kinematics::ik::$family(&$robot::IK_ARM, target)
+                kinematics::dispatch(
+                    #[inline(always)]
+                    || kinematics::ik::$family(&$robot::IK_ARM, target),
+                )
             }
         }
     };
