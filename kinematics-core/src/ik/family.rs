@@ -173,7 +173,10 @@ pub fn spherical(arm: &Arm6, target: &Pose<f64>) -> IkSolutions<6, 8> {
         for sign in [1.0, -1.0] {
             let turns = [t1.back().into(), q2.into(), q3.into()];
             let branch = branch::spherical_branch(numbers, &values, &r06, turns, None, triples.quality.into(), sign);
-            #[allow(clippy::expect_used, reason = "invariant: two wrist flips per arm branch, four arm branches at most")]
+            #[allow(
+                clippy::expect_used,
+                reason = "invariant: two wrist flips per arm branch, four arm branches at most"
+            )]
             out.push(solution(branch))
                 .expect("invariant: two wrist flips for each of at most four arm branches: at most 8 solutions");
         }

@@ -193,7 +193,12 @@ pub trait Algebra {
     /// Rodrigues' `c v + s (k x v) + (1 - c)(k . v) k` would compute the kept entry as
     /// `c x + (1 - c) x`.
     #[inline(always)]
-    fn rotate(&mut self, turn: Turn<Self::Value>, k: Vector<Self::Value>, v: Vector<Self::Value>) -> Vector<Self::Value> {
+    fn rotate(
+        &mut self,
+        turn: Turn<Self::Value>,
+        k: Vector<Self::Value>,
+        v: Vector<Self::Value>,
+    ) -> Vector<Self::Value> {
         let kv = self.dot(k, v);
         let along = self.scale(k, kv);
         let across = self.vsub(v, along);
@@ -220,7 +225,12 @@ pub trait Algebra {
 
     /// `if_true` where the flag is set, else `if_false`, angle, cosine and sine alike.
     #[inline(always)]
-    fn select_turn(&mut self, flag: Self::Value, if_true: Turn<Self::Value>, if_false: Turn<Self::Value>) -> Turn<Self::Value> {
+    fn select_turn(
+        &mut self,
+        flag: Self::Value,
+        if_true: Turn<Self::Value>,
+        if_false: Turn<Self::Value>,
+    ) -> Turn<Self::Value> {
         Turn {
             angle: self.if_positive(flag, if_true.angle, if_false.angle),
             cos: self.if_positive(flag, if_true.cos, if_false.cos),

@@ -165,6 +165,7 @@ fn spherical_wrist<A: Algebra>(
 /// upper arm `p23`: `q3` by subproblem 3 (the forearm's end at `distance` squared from the
 /// elbow's base), recorded as a step, and the vector from the base of `p23` to the forearm's end.
 #[inline(always)]
+#[allow(clippy::type_complexity, reason = "a turn, its flags and the forearm's end")]
 fn elbow<A: Algebra>(
     b: &mut A,
     arm: &Arm<'_, A::Value>,

@@ -38,10 +38,10 @@ mod numbers;
 mod subproblem;
 
 pub use algebra::{Algebra, Flags, Matrix, Turn, Vector};
-pub(crate) use family::{Elbow, parallel_elbow, spherical_branch, wrist_target};
 pub use family::{
     Branch, Composer, Problem, spherical_first_two_intersecting, spherical_last_two_intersecting,
     spherical_prismatic_third, spherical_two_parallel, three_parallel_two_intersecting,
 };
+pub(crate) use family::{Elbow, parallel_elbow, spherical_branch, wrist_target};
 pub use numbers::{Numbers, solve_in_lanes};
 pub use subproblem::Subproblems;

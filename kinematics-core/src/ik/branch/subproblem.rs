@@ -201,6 +201,7 @@ pub trait Subproblems: Algebra {
     /// are not parallel, the crossing of the two cones `sign` picks; the least-squares best when
     /// they do not cross, and no turns (singular) when a vector is zero.
     #[inline(always)]
+    #[allow(clippy::type_complexity, reason = "the two turns and their flags")]
     fn two_rotations(
         &mut self,
         k1: Vector<Self::Value>,
