@@ -26,8 +26,8 @@
 
 use super::branch::{self, Numbers};
 use super::solutions::{IkSolution, IkSolutions};
-use super::subproblem::{rotation_onto, rotation_to_distance, three_rotations, two_heights};
-use super::vector::{M3, V3, add, cross, dot, mul, norm_squared, scale, sub, wrap};
+use super::subproblem::{self, rotation_onto, rotation_to_distance, three_rotations, two_heights};
+use super::vector::{M3, V3, add, cross, dot, mul, mul_transposed, norm_squared, scale, sub, wrap};
 use crate::pose::Pose;
 
 /// A six-joint revolute arm at its zero configuration (IK-Geo's form): unit axes `h1..h6`, the
@@ -53,7 +53,12 @@ pub const ORTHOGONAL: f64 = 1e-15;
 /// parallel to `h2`.
 #[inline(always)]
 pub fn spherical_prismatic_third(arm: &Arm6, target: &Pose<f64>) -> IkSolutions<6, 8> {
-    branch::solve_in_lanes(arm, target, branch::spherical_prismatic_third)
+    branch::solve_in_lanes(
+        arm,
+        target,
+        #[inline(always)]
+        |b, p| branch::spherical_prismatic_third(b, p),
+    )
 }
 
 /// Spherical wrist (axes 4, 5, 6 meet, `p45 = p56 = 0`) with axes 2 and 3 parallel (PUMA 560,
@@ -62,7 +67,12 @@ pub fn spherical_prismatic_third(arm: &Arm6, target: &Pose<f64>) -> IkSolutions<
 /// parallel to `h2`.
 #[inline(always)]
 pub fn spherical_two_parallel(arm: &Arm6, target: &Pose<f64>) -> IkSolutions<6, 8> {
-    branch::solve_in_lanes(arm, target, branch::spherical_two_parallel)
+    branch::solve_in_lanes(
+        arm,
+        target,
+        #[inline(always)]
+        |b, p| branch::spherical_two_parallel(b, p),
+    )
 }
 
 /// Spherical wrist with axes 1 and 2 meeting (`p12 = 0`): [`branch::spherical_first_two_intersecting`]'s
@@ -70,7 +80,12 @@ pub fn spherical_two_parallel(arm: &Arm6, target: &Pose<f64>) -> IkSolutions<6, 
 /// in lanes. Needs `h1` not parallel to `h2`.
 #[inline(always)]
 pub fn spherical_first_two_intersecting(arm: &Arm6, target: &Pose<f64>) -> IkSolutions<6, 8> {
-    branch::solve_in_lanes(arm, target, branch::spherical_first_two_intersecting)
+    branch::solve_in_lanes(
+        arm,
+        target,
+        #[inline(always)]
+        |b, p| branch::spherical_first_two_intersecting(b, p),
+    )
 }
 
 /// Spherical wrist with axes 2 and 3 meeting (`p23 = 0`): [`branch::spherical_last_two_intersecting`]'s
@@ -78,7 +93,12 @@ pub fn spherical_first_two_intersecting(arm: &Arm6, target: &Pose<f64>) -> IkSol
 /// in lanes. Needs `h2` not parallel to `h3`.
 #[inline(always)]
 pub fn spherical_last_two_intersecting(arm: &Arm6, target: &Pose<f64>) -> IkSolutions<6, 8> {
-    branch::solve_in_lanes(arm, target, branch::spherical_last_two_intersecting)
+    branch::solve_in_lanes(
+        arm,
+        target,
+        #[inline(always)]
+        |b, p| branch::spherical_last_two_intersecting(b, p),
+    )
 }
 
 /// Axes 2, 3, 4 parallel and axes 5, 6 meeting (`p56 = 0`), the UR family:
@@ -87,7 +107,22 @@ pub fn spherical_last_two_intersecting(arm: &Arm6, target: &Pose<f64>) -> IkSolu
 /// `h1` and `h5` not parallel to `h2`.
 #[inline(always)]
 pub fn three_parallel_two_intersecting(arm: &Arm6, target: &Pose<f64>) -> IkSolutions<6, 8> {
-    branch::solve_in_lanes(arm, target, branch::three_parallel_two_intersecting)
+    // As the compiled `tip_ik`: without the pass at the wrist's singularity first (it costs
+    // about a third of the branch), and again with it only where some lane is singular and missed.
+    let mut singular_pass = false;
+    loop {
+        let branches = branch::branches_in_lanes(
+            arm,
+            target,
+            singular_pass,
+            #[inline(always)]
+            |b, p| branch::three_parallel_two_intersecting(b, p),
+        );
+        if singular_pass || !branch::needs_singular_pass(&branches) {
+            return branch::unmeasured(&branches);
+        }
+        singular_pass = true;
+    }
 }
 
 /// The problem of a family whose first step is a quartic, on numbers: its branch signs are
@@ -130,6 +165,13 @@ pub fn three_parallel(arm: &Arm6, target: &Pose<f64>) -> IkSolutions<6, 8> {
         [dot(h, add(add(p12, p23), add(p34, p45))), 0.0],
     );
     for &(t1, q5) in pairs.as_slice() {
+        // The pass at the wrist's singularity (a third of the branch) only where it can apply:
+        // axis 6 near the parallel axes, tested here with twice the branch's limits, so that a
+        // branch the pass would change always takes it.
+        let seen = q5.back().rotate(h5, h);
+        let w = mul_transposed(&r06, t1.back().rotate(h1, h));
+        let singular_pass =
+            near_axis(h6, seen, 2.0 * NEAR_SINGULAR_SIXTH) || near_axis(h6, w, 2.0 * subproblem::DEGENERATE);
         for sign in [1.0, -1.0] {
             // Near the wrist singularity the quartic's two roots there (the wrist flips) are found
             // to about 1e-7 rad, or as one at their tangency: short of the sixth subproblem's own
@@ -139,7 +181,7 @@ pub fn three_parallel(arm: &Arm6, target: &Pose<f64>) -> IkSolutions<6, 8> {
                 q5: q5.into(),
                 quality: pairs.quality.into(),
                 sign,
-                singular_pass: true,
+                singular_pass,
                 near_singular: NEAR_SINGULAR_SIXTH,
             };
             #[allow(clippy::expect_used, reason = "invariant: two elbows per (q1, q5) pair, four pairs at most")]
@@ -148,6 +190,12 @@ pub fn three_parallel(arm: &Arm6, target: &Pose<f64>) -> IkSolutions<6, 8> {
         }
     }
     out
+}
+
+/// Whether `v` lies within the angle whose sine is `limit` of the unit axis `k` (either way).
+#[inline(always)]
+fn near_axis(k: V3, v: V3, limit: f64) -> bool {
+    norm_squared(cross(k, v)) <= limit * limit * norm_squared(v)
 }
 
 /// How near the wrist's singularity (the sine of the angle between axis 6 and the parallel axes,

@@ -1,6 +1,9 @@
 //! What a branch is written with: an [`Algebra`]'s few operations on its values, and, built on
 //! them once for every algebra, vectors, turns and flags.
 //!
+//! No method takes a closure of the algebra (such as `array::map`'s): on numbers in lanes each
+//! would be a function LLVM may leave uninlined, and run outside the caller's instruction set.
+//!
 //! Flags are values, `1` for true and `0` for false: `and` is a product, `or` and the choice
 //! between two values a select ([`Algebra::if_positive`]), so one branch evaluates every other
 //! branch in the lanes of a SIMD type without a branch in the code. The order of the operations
@@ -78,32 +81,32 @@ pub trait Algebra {
 
     /// Records a step (a subproblem solved, and the values it produced), for the compiler's
     /// per-subproblem operation counts; numbers ignore it.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn step(&mut self, label: &'static str, nodes: impl IntoIterator<Item = Self::Value>) {
         let _ = (label, nodes);
     }
 
     /// A vector of constants.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn vector(&mut self, v: [f64; 3]) -> Vector<Self::Value> {
-        v.map(|x| self.constant(x))
+        [self.constant(v[0]), self.constant(v[1]), self.constant(v[2])]
     }
 
     /// `then` where `condition > 0`, else `otherwise`.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn select(&mut self, condition: Self::Value, then: Self::Value, otherwise: Self::Value) -> Self::Value {
         self.if_positive(condition, then, otherwise)
     }
 
     /// `|a|`.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn abs(&mut self, a: Self::Value) -> Self::Value {
         let minus = self.neg(a);
         self.if_positive(a, a, minus)
     }
 
     /// The flag `a <= b`.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn at_most(&mut self, a: Self::Value, b: Self::Value) -> Self::Value {
         let over = self.sub(a, b);
         let (zero, one) = (self.constant(0.0), self.constant(1.0));
@@ -111,80 +114,79 @@ pub trait Algebra {
     }
 
     /// The flag `x` and `y`.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn and(&mut self, x: Self::Value, y: Self::Value) -> Self::Value {
         self.mul(x, y)
     }
 
     /// The flag `x` or `y`.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn or(&mut self, x: Self::Value, y: Self::Value) -> Self::Value {
         let one = self.constant(1.0);
         self.if_positive(x, one, y)
     }
 
     /// `a + b + c`, summed left to right.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn sum3(&mut self, [a, b, c]: [Self::Value; 3]) -> Self::Value {
         let ab = self.add(a, b);
         self.add(ab, c)
     }
 
     /// `a . b`.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn dot(&mut self, a: Vector<Self::Value>, b: Vector<Self::Value>) -> Self::Value {
-        let products = [0, 1, 2].map(|i| self.mul(a[i], b[i]));
+        let products = [self.mul(a[0], b[0]), self.mul(a[1], b[1]), self.mul(a[2], b[2])];
         self.sum3(products)
     }
 
     /// `a x b`.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn cross(&mut self, a: Vector<Self::Value>, b: Vector<Self::Value>) -> Vector<Self::Value> {
-        [0, 1, 2].map(|i| {
-            let (j, k) = ((i + 1) % 3, (i + 2) % 3);
-            let x = self.mul(a[j], b[k]);
-            let y = self.mul(a[k], b[j]);
-            self.sub(x, y)
-        })
+        let (x, y) = (self.mul(a[1], b[2]), self.mul(a[2], b[1]));
+        let first = self.sub(x, y);
+        let (x, y) = (self.mul(a[2], b[0]), self.mul(a[0], b[2]));
+        let second = self.sub(x, y);
+        let (x, y) = (self.mul(a[0], b[1]), self.mul(a[1], b[0]));
+        let third = self.sub(x, y);
+        [first, second, third]
     }
 
     /// `a + b`.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn vadd(&mut self, a: Vector<Self::Value>, b: Vector<Self::Value>) -> Vector<Self::Value> {
-        [0, 1, 2].map(|i| self.add(a[i], b[i]))
+        [self.add(a[0], b[0]), self.add(a[1], b[1]), self.add(a[2], b[2])]
     }
 
     /// `a - b`.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn vsub(&mut self, a: Vector<Self::Value>, b: Vector<Self::Value>) -> Vector<Self::Value> {
-        [0, 1, 2].map(|i| self.sub(a[i], b[i]))
+        [self.sub(a[0], b[0]), self.sub(a[1], b[1]), self.sub(a[2], b[2])]
     }
 
     /// `s a`.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn scale(&mut self, a: Vector<Self::Value>, s: Self::Value) -> Vector<Self::Value> {
-        a.map(|x| self.mul(x, s))
+        [self.mul(a[0], s), self.mul(a[1], s), self.mul(a[2], s)]
     }
 
     /// `|a|^2`.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn norm_squared(&mut self, a: Vector<Self::Value>) -> Self::Value {
         self.dot(a, a)
     }
 
     /// `m v`.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn mul_vector(&mut self, m: &Matrix<Self::Value>, v: Vector<Self::Value>) -> Vector<Self::Value> {
-        [0, 1, 2].map(|i| self.dot(m[i], v))
+        [self.dot(m[0], v), self.dot(m[1], v), self.dot(m[2], v)]
     }
 
     /// `m^T v`.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn mul_transposed(&mut self, m: &Matrix<Self::Value>, v: Vector<Self::Value>) -> Vector<Self::Value> {
-        [0, 1, 2].map(|j| {
-            let products = [0, 1, 2].map(|i| self.mul(m[i][j], v[i]));
-            self.sum3(products)
-        })
+        let column = |j: usize| [m[0][j], m[1][j], m[2][j]];
+        [self.dot(column(0), v), self.dot(column(1), v), self.dot(column(2), v)]
     }
 
     /// `v` rotated by `turn` about the unit axis `k`: its part along the axis kept, the part across
@@ -192,7 +194,7 @@ pub trait Algebra {
     /// (the usual case) the kept part is one entry, untouched, and the turned part four products:
     /// Rodrigues' `c v + s (k x v) + (1 - c)(k . v) k` would compute the kept entry as
     /// `c x + (1 - c) x`.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn rotate(
         &mut self,
         turn: Turn<Self::Value>,
@@ -203,28 +205,30 @@ pub trait Algebra {
         let along = self.scale(k, kv);
         let across = self.vsub(v, along);
         let kxv = self.cross(k, v);
-        [0, 1, 2].map(|i| {
+        let mut out = along;
+        for i in 0..3 {
             let a = self.mul(turn.cos, across[i]);
             let b = self.mul(turn.sin, kxv[i]);
-            self.sum3([along[i], a, b])
-        })
+            out[i] = self.sum3([along[i], a, b]);
+        }
+        out
     }
 
     /// No turn.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn zero_turn(&mut self) -> Turn<Self::Value> {
         let (zero, one) = (self.constant(0.0), self.constant(1.0));
         Turn { angle: zero, cos: one, sin: zero }
     }
 
     /// The opposite turn.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn back(&mut self, turn: Turn<Self::Value>) -> Turn<Self::Value> {
         Turn { angle: self.neg(turn.angle), cos: turn.cos, sin: self.neg(turn.sin) }
     }
 
     /// `if_true` where the flag is set, else `if_false`, angle, cosine and sine alike.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn select_turn(
         &mut self,
         flag: Self::Value,
@@ -239,7 +243,7 @@ pub trait Algebra {
     }
 
     /// The turn by `a + b`, its cosine and sine by the angle-sum formulas.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn angle_sum(&mut self, a: Turn<Self::Value>, b: Turn<Self::Value>) -> Turn<Self::Value> {
         let (cc, ss) = (self.mul(a.cos, b.cos), self.mul(a.sin, b.sin));
         let (sc, cs) = (self.mul(a.sin, b.cos), self.mul(a.cos, b.sin));
@@ -247,27 +251,27 @@ pub trait Algebra {
     }
 
     /// The turn by `a - b`, its cosine and sine by the angle-difference formulas.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn difference(&mut self, a: Turn<Self::Value>, b: Turn<Self::Value>) -> Turn<Self::Value> {
         let minus_b = self.back(b);
         self.angle_sum(a, minus_b)
     }
 
     /// The turn whose cosine and sine are given (already normalised): its angle by `atan2`.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn turn(&mut self, cos: Self::Value, sin: Self::Value) -> Turn<Self::Value> {
         Turn { angle: self.atan2(sin, cos), cos, sin }
     }
 
     /// An exact, regular result.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn exact(&mut self) -> Flags<Self::Value> {
         let (zero, one) = (self.constant(0.0), self.constant(1.0));
         Flags { exact: one, singular: zero }
     }
 
     /// Both results together: exact if both are, singular if either is.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn both(&mut self, a: Flags<Self::Value>, b: Flags<Self::Value>) -> Flags<Self::Value> {
         Flags { exact: self.and(a.exact, b.exact), singular: self.or(a.singular, b.singular) }
     }

@@ -61,16 +61,27 @@ pub(crate) struct Arm<'a, V> {
 
 /// The arm's constants, then the wrist's rotation `R06 = R R6T^T` and the point
 /// `p - R06 p6T - p01` the first joints must reach.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 #[allow(clippy::type_complexity, reason = "the three things every family starts from")]
 pub(crate) fn wrist_target<'a, A: Algebra>(
     b: &mut A,
     problem: &Problem<'a, A::Value>,
 ) -> (Arm<'a, A::Value>, Matrix<A::Value>, Vector<A::Value>) {
     let numbers = problem.arm;
-    let arm = Arm { h: numbers.axes.map(|v| b.vector(v)), p: numbers.offsets.map(|v| b.vector(v)), numbers };
-    let tool = numbers.tool_rotation.map(|row| b.vector(row));
-    let r06 = [0, 1, 2].map(|i| [0, 1, 2].map(|j| b.dot(problem.rotation[i], tool[j])));
+    let [a0, a1, a2, a3, a4, a5] = numbers.axes;
+    let h = [b.vector(a0), b.vector(a1), b.vector(a2), b.vector(a3), b.vector(a4), b.vector(a5)];
+    let [o0, o1, o2, o3, o4, o5, o6] = numbers.offsets;
+    let p = [b.vector(o0), b.vector(o1), b.vector(o2), b.vector(o3), b.vector(o4), b.vector(o5), b.vector(o6)];
+    let arm = Arm { h, p, numbers };
+    let [t0, t1, t2] = numbers.tool_rotation;
+    let tool = [b.vector(t0), b.vector(t1), b.vector(t2)];
+    let rows = problem.rotation;
+    let mut r06 = rows;
+    for i in 0..3 {
+        for j in 0..3 {
+            r06[i][j] = b.dot(rows[i], tool[j]);
+        }
+    }
     let tool_offset = b.mul_vector(&r06, arm.p[6]);
     let point = b.vsub(problem.translation, tool_offset);
     let point = b.vsub(point, arm.p[0]);
@@ -80,14 +91,14 @@ pub(crate) fn wrist_target<'a, A: Algebra>(
 
 /// The angle `x` moved by whole turns into `(-pi, pi]`, for a sum of at most three angles in
 /// `[-pi, pi]` (two conditional turns each way).
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn wrap_sum<A: Algebra>(b: &mut A, x: A::Value) -> A::Value {
     let once = wrap_both(b, x);
     wrap_both(b, once)
 }
 
 /// One conditional turn either way: `x - 2 pi` above `pi`, `x + 2 pi` at or below `-pi`.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn wrap_both<A: Algebra>(b: &mut A, x: A::Value) -> A::Value {
     use core::f64::consts::{PI, TAU};
     let pi = b.constant(PI);
@@ -100,7 +111,7 @@ fn wrap_both<A: Algebra>(b: &mut A, x: A::Value) -> A::Value {
 
 /// The angle `x`, in `[-pi, pi]` (an `atan2`'s, or its negation), moved into `(-pi, pi]`: `-pi`
 /// becomes `pi`.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn wrap<A: Algebra>(b: &mut A, x: A::Value) -> A::Value {
     use core::f64::consts::{PI, TAU};
     let (pi, tau) = (b.constant(PI), b.constant(TAU));
@@ -109,12 +120,38 @@ fn wrap<A: Algebra>(b: &mut A, x: A::Value) -> A::Value {
     b.select(under, x, up)
 }
 
+/// `v` turned back through the arm's first three joints: `R03^T v`.
+#[cfg_attr(not(debug_assertions), inline(always))]
+fn back_through_arm<A: Algebra>(
+    b: &mut A,
+    h: &[Vector<A::Value>; 6],
+    [q1, q2, q3]: [Turn<A::Value>; 3],
+    v: Vector<A::Value>,
+) -> Vector<A::Value> {
+    let (t1, t2, t3) = (b.back(q1), b.back(q2), b.back(q3));
+    let v = b.rotate(t1, h[0], v);
+    let v = b.rotate(t2, h[1], v);
+    b.rotate(t3, h[2], v)
+}
+
+/// A branch of these joint values and the turns' cosines and sines.
+#[cfg_attr(not(debug_assertions), inline(always))]
+fn branch<V: Copy>(q: [V; 6], turns: [Turn<V>; 6], quality: Flags<V>) -> Branch<V> {
+    let mut cos = q;
+    let mut sin = q;
+    for (j, turn) in turns.iter().enumerate() {
+        cos[j] = turn.cos;
+        sin[j] = turn.sin;
+    }
+    Branch { q, cos, sin, quality }
+}
+
 /// The spherical wrist's `q4, q5, q6` for the arm's turns: `q5` by subproblem 4 (on the great
 /// circle for an orthogonal wrist), `q4` and `q6` by subproblem 1. `sign` picks `q5`'s root.
 /// (Subproblem 2 would give `q4` with `q5`, but from where two cones nearly touch, which near the
 /// singularity loses half the digits of `q4` and `q6`; subproblem 1 loses only as many as the
 /// distance to it.)
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 #[allow(clippy::type_complexity, reason = "three turns and their flags")]
 fn spherical_wrist<A: Algebra>(
     b: &mut A,
@@ -125,16 +162,10 @@ fn spherical_wrist<A: Algebra>(
     sign: A::Value,
 ) -> ([Turn<A::Value>; 3], Flags<A::Value>) {
     let h = &arm.h;
-    let back = |b: &mut A, v: Vector<A::Value>| {
-        let (t1, t2, t3) = (b.back(q1), b.back(q2), b.back(q3));
-        let v = b.rotate(t1, h[0], v);
-        let v = b.rotate(t2, h[1], v);
-        b.rotate(t3, h[2], v)
-    };
     let seen6 = b.mul_vector(r06, h[5]);
-    let r36_h6 = back(b, seen6);
+    let r36_h6 = back_through_arm(b, h, [q1, q2, q3], seen6);
     let seen5 = b.mul_vector(r06, h[4]);
-    let r36_h5 = back(b, seen5);
+    let r36_h5 = back_through_arm(b, h, [q1, q2, q3], seen5);
     // An orthogonal wrist (the usual one: h4 and h6 both square to h5) takes the well-conditioned
     // form of subproblem 4; decided on the numbers, so a compiled body has one form.
     let axes = &arm.numbers.axes;
@@ -164,7 +195,7 @@ fn spherical_wrist<A: Algebra>(
 /// The elbow of an arm whose third joint turns the forearm `p34` about `h3` at the end of the
 /// upper arm `p23`: `q3` by subproblem 3 (the forearm's end at `distance` squared from the
 /// elbow's base), recorded as a step, and the vector from the base of `p23` to the forearm's end.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 #[allow(clippy::type_complexity, reason = "a turn, its flags and the forearm's end")]
 fn elbow<A: Algebra>(
     b: &mut A,
@@ -185,7 +216,7 @@ fn elbow<A: Algebra>(
 
 /// A spherical-wrist branch as joint values: every angle wrapped, `slide` in place of `q3` for
 /// a prismatic third joint.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub(crate) fn spherical_branch<A: Algebra>(
     b: &mut A,
     arm: &Arm<'_, A::Value>,
@@ -198,18 +229,21 @@ pub(crate) fn spherical_branch<A: Algebra>(
     let ([q4, q5, q6], quality) = spherical_wrist(b, arm, r06, arm_turns, quality, sign);
     let [q1, q2, q3] = arm_turns;
     let turns = [q1, q2, q3, q4, q5, q6];
-    let mut q = turns.map(|t| wrap(b, t.angle));
+    let mut q = [q1.angle; 6];
+    for (angle, turn) in q.iter_mut().zip(turns) {
+        *angle = wrap(b, turn.angle);
+    }
     if let Some(slide) = slide {
         q[2] = slide;
     }
-    Branch { q, cos: turns.map(|t| t.cos), sin: turns.map(|t| t.sin), quality }
+    branch(q, turns, quality)
 }
 
 /// Spherical wrist (axes 4, 5, 6 meet, `p45 = p56 = 0`) with axes 2 and 3 parallel (PUMA 560,
 /// IRB 120): `q1` by subproblem 4 (the wrist centre's height along `h2` is fixed), `q3` by
 /// subproblem 3 (its distance from axis 2), `q2` by subproblem 1, then the wrist. Needs `h1`
 /// not parallel to `h2`.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn spherical_two_parallel<A: Algebra>(b: &mut A, problem: &Problem<'_, A::Value>) -> Branch<A::Value> {
     let (arm, r06, v0) = wrist_target(b, problem);
     let [s1, s2, s3] = problem.signs;
@@ -235,7 +269,7 @@ pub fn spherical_two_parallel<A: Algebra>(b: &mut A, problem: &Problem<'_, A::Va
 /// Spherical wrist with axes 1 and 2 meeting (`p12 = 0`): `q3` by subproblem 3 (the wrist
 /// centre's distance from the shoulder), `q1`, `q2` by subproblem 2, then the wrist. Needs `h1`
 /// not parallel to `h2`.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn spherical_first_two_intersecting<A: Algebra>(b: &mut A, problem: &Problem<'_, A::Value>) -> Branch<A::Value> {
     let (arm, r06, v0) = wrist_target(b, problem);
     let [s1, s2, s3] = problem.signs;
@@ -252,7 +286,7 @@ pub fn spherical_first_two_intersecting<A: Algebra>(b: &mut A, problem: &Problem
 /// Spherical wrist with axes 2 and 3 meeting (`p23 = 0`): `q1` by subproblem 3 (the wrist
 /// centre seen from axis 1 lies at `|p34|` from the elbow), `q2`, `q3` by subproblem 2, then the
 /// wrist. Needs `h2` not parallel to `h3`.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn spherical_last_two_intersecting<A: Algebra>(b: &mut A, problem: &Problem<'_, A::Value>) -> Branch<A::Value> {
     let (arm, r06, v0) = wrist_target(b, problem);
     let [s1, s2, s3] = problem.signs;
@@ -274,7 +308,7 @@ pub fn spherical_last_two_intersecting<A: Algebra>(b: &mut A, problem: &Problem<
 /// Stanford arm): the slide from the wrist centre's distance from the shoulder (a quadratic:
 /// `|p23 + p34 + q3 h3| = |W - S|`), `q1`, `q2` by subproblem 2, then the wrist. `q3` is a
 /// length, not wrapped. Needs `h1` not parallel to `h2`.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn spherical_prismatic_third<A: Algebra>(b: &mut A, problem: &Problem<'_, A::Value>) -> Branch<A::Value> {
     let (arm, r06, v0) = wrist_target(b, problem);
     let [s1, s2, s3] = problem.signs;
@@ -312,7 +346,7 @@ pub fn spherical_prismatic_third<A: Algebra>(b: &mut A, problem: &Problem<'_, A:
 /// `q1` by subproblem 4 (the tool flange's height along `h` is fixed), `q5` by subproblem 4 (so
 /// is the angle between `h` and `h6`), then [`parallel_elbow`]. Needs `h1` and `h5` not parallel
 /// to `h`.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn three_parallel_two_intersecting<A: Algebra>(b: &mut A, problem: &Problem<'_, A::Value>) -> Branch<A::Value> {
     let (arm, r06, v0) = wrist_target(b, problem);
     let [s1, s2, s3] = problem.signs;
@@ -365,7 +399,7 @@ pub(crate) struct Elbow<V> {
 /// The rest of an arm with axes 2, 3, 4 parallel, once `q1` and `q5` are known: `q6` and the sum
 /// `q2 + q3 + q4` (with the axes' signs) by subproblem 1, `q3` by subproblem 3, `q2` by
 /// subproblem 1, `q4` by difference.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub(crate) fn parallel_elbow<A: Algebra>(
     b: &mut A,
     arm: &Arm<'_, A::Value>,
@@ -440,7 +474,7 @@ pub(crate) fn parallel_elbow<A: Algebra>(
     let rest = b.sub(rest, third_part);
     let q4 = b.mul(sign4, rest);
     let axes = &arm.numbers.axes;
-    let [sign3_exact, sign4_exact] = [2, 3].map(|axis| dot(axes[1], axes[axis]).signum());
+    let (sign3_exact, sign4_exact) = (dot(axes[1], axes[2]).signum(), dot(axes[1], axes[3]).signum());
     let t4 = b.difference(sum, q2);
     let t4 = if sign3_exact > 0.0 { b.difference(t4, q3) } else { b.angle_sum(t4, q3) };
     let t4 = if sign4_exact > 0.0 { t4 } else { b.back(t4) };
@@ -450,10 +484,10 @@ pub(crate) fn parallel_elbow<A: Algebra>(
     let quality = b.both(quality, third);
     let quality = b.both(quality, second);
     let turns = [q1, q2, q3, t4, q5, t6];
-    let [w1, w2, w3] = [q1.angle, q2.angle, q3.angle].map(|x| wrap(b, x));
+    let (w1, w2, w3) = (wrap(b, q1.angle), wrap(b, q2.angle), wrap(b, q3.angle));
     let w4 = wrap_sum(b, q4);
     let w5 = wrap(b, q5.angle);
-    Branch { q: [w1, w2, w3, w4, w5, sixth_angle], cos: turns.map(|t| t.cos), sin: turns.map(|t| t.sin), quality }
+    branch([w1, w2, w3, w4, w5, sixth_angle], turns, quality)
 }
 
 /// The sum `q2 + q3 + q4` and `q6` at the wrist's singularity, where axis 6 is in line with the
@@ -475,7 +509,7 @@ struct FreeSixth<V> {
     sixth: Turn<V>,
 }
 
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn free_sixth<A: Algebra>(
     b: &mut A,
     arm: &Arm<'_, A::Value>,
@@ -497,8 +531,8 @@ fn free_sixth<A: Algebra>(
     // The elbow's squared distances (numbers: the arm's alone), and those of
     // `v1 - rot(h, t) u` over every `t`.
     let numbers = arm.numbers;
-    let minus = |v: [f64; 3]| v.map(|x| -x);
-    let (elbow_lo, elbow_hi) = distance_range(numbers.axes[2], numbers.offsets[3], minus(numbers.offsets[2]));
+    let [x, y, z] = numbers.offsets[2];
+    let (elbow_lo, elbow_hi) = distance_range(numbers.axes[2], numbers.offsets[3], [-x, -y, -z]);
     let (elbow_lo, elbow_hi) = (b.constant(elbow_lo), b.constant(elbow_hi));
     let (vv, uu) = (b.norm_squared(v1), b.norm_squared(u));
     // Written as subproblem 4 below writes them (`v1 . h`, `h . u`, `h x u`), so a graph shares them.

@@ -32,6 +32,12 @@
 //! assert!(all.iter().any(|s| s.q.iter().zip([0.3, -0.4, 0.9, 0.2, 0.5, -0.1]).all(|(a, b)| (a - b).abs() < 1e-12)));
 //! ```
 
+//! **Inlining.** In an optimised build every function here is `#[inline(always)]`, so that in a
+//! dispatched body (a generated `tip_ik` calling a family's solver) the whole branch runs in the
+//! caller's instruction set; in a debug build none is forced inline, so that a frame holds one
+//! function's temporaries rather than a whole family's (a family inlined whole on `F64x8` lanes
+//! takes about 3 MB of stack unoptimised, more than a test thread has).
+
 mod algebra;
 mod family;
 mod numbers;
@@ -43,5 +49,5 @@ pub use family::{
     spherical_prismatic_third, spherical_two_parallel, three_parallel_two_intersecting,
 };
 pub(crate) use family::{Elbow, parallel_elbow, spherical_branch, wrist_target};
-pub use numbers::{Numbers, solve_in_lanes};
+pub use numbers::{Numbers, branches_in_lanes, needs_singular_pass, solve_in_lanes, unmeasured};
 pub use subproblem::Subproblems;

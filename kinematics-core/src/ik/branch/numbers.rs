@@ -8,7 +8,7 @@ use super::family::{Branch, Problem};
 use crate::ik::family::Arm6;
 use crate::ik::real::{BRANCH_SIGNS_8, IkReal};
 use crate::ik::solutions::{IkSolution, IkSolutions};
-use crate::lanes::{F64x8, Lanes};
+use crate::lanes::F64x8;
 use crate::pose::Pose;
 
 /// Arithmetic on numbers of type `T`: every operation computes at once.
@@ -24,39 +24,39 @@ impl<T> Numbers<T> {
 
 impl<T: IkReal> Algebra for Numbers<T> {
     type Value = T;
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn constant(&mut self, x: f64) -> T {
         T::from_f64(x)
     }
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn add(&mut self, a: T, b: T) -> T {
         a + b
     }
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn sub(&mut self, a: T, b: T) -> T {
         a - b
     }
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn mul(&mut self, a: T, b: T) -> T {
         a * b
     }
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn neg(&mut self, a: T) -> T {
         -a
     }
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn div(&mut self, a: T, b: T) -> T {
         a / b
     }
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn sqrt(&mut self, a: T) -> T {
         a.sqrt()
     }
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn atan2(&mut self, y: T, x: T) -> T {
         y.atan2(x)
     }
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn if_positive(&mut self, condition: T, then: T, otherwise: T) -> T {
         condition.if_positive(then, otherwise)
     }
@@ -64,24 +64,61 @@ impl<T: IkReal> Algebra for Numbers<T> {
 
 /// The eight branches of `family` for `target`, computed side by side in `F64x8` lanes (one
 /// branch per lane, [`BRANCH_SIGNS_8`]), as unmeasured solutions in the order of the signs.
-#[inline(always)]
+///
+/// Pass the family in an `#[inline(always)]` closure: a function item passed by name is called
+/// through a shim LLVM does not inline, and would run outside the caller's instruction set (see
+/// [`crate::dispatch`]).
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn solve_in_lanes(
     arm: &Arm6,
     target: &Pose<f64>,
     family: impl FnOnce(&mut Numbers<F64x8>, &Problem<'_, F64x8>) -> Branch<F64x8>,
 ) -> IkSolutions<6, 8> {
-    let splat = |x: f64| F64x8::from_fn(|_| x);
-    let problem = Problem {
-        arm,
-        rotation: target.rotation.map(|row| row.map(splat)),
-        translation: target.translation.map(splat),
-        signs: BRANCH_SIGNS_8,
-        singular_pass: true,
-    };
-    let branch = family(&mut Numbers::new(), &problem);
-    let solutions = core::array::from_fn(|lane| {
-        let q = branch.q.map(|column| column.lane(lane));
-        IkSolution::unmeasured(q, branch.quality.exact.lane(lane) == 1.0, branch.quality.singular.lane(lane) == 1.0)
-    });
+    unmeasured(&branches_in_lanes(arm, target, true, family))
+}
+
+/// The eight branches of `family` for `target` in `F64x8` lanes, with or without the UR family's
+/// pass at the wrist's singularity ([`Problem::singular_pass`]).
+#[cfg_attr(not(debug_assertions), inline(always))]
+pub fn branches_in_lanes(
+    arm: &Arm6,
+    target: &Pose<f64>,
+    singular_pass: bool,
+    family: impl FnOnce(&mut Numbers<F64x8>, &Problem<'_, F64x8>) -> Branch<F64x8>,
+) -> Branch<F64x8> {
+    let mut rotation = [[F64x8::splat(0.0); 3]; 3];
+    let mut translation = [F64x8::splat(0.0); 3];
+    for i in 0..3 {
+        for j in 0..3 {
+            rotation[i][j] = F64x8::splat(target.rotation[i][j]);
+        }
+        translation[i] = F64x8::splat(target.translation[i]);
+    }
+    let problem = Problem { arm, rotation, translation, signs: BRANCH_SIGNS_8, singular_pass };
+    family(&mut Numbers::new(), &problem)
+}
+
+/// Whether some lane of `branch` is singular and not exact: where the UR family's pass at the
+/// wrist's singularity can change the answer (elsewhere the branch is the same with or without it).
+#[cfg_attr(not(debug_assertions), inline(always))]
+pub fn needs_singular_pass(branch: &Branch<F64x8>) -> bool {
+    let mut needs = false;
+    for lane in 0..8 {
+        needs |= branch.quality.singular.lane(lane) == 1.0 && branch.quality.exact.lane(lane) != 1.0;
+    }
+    needs
+}
+
+/// The branches in lanes as unmeasured solutions, lane `i` the `i`-th.
+#[cfg_attr(not(debug_assertions), inline(always))]
+pub fn unmeasured(branch: &Branch<F64x8>) -> IkSolutions<6, 8> {
+    let mut solutions = [IkSolution::unmeasured([0.0; 6], false, false); 8];
+    for (lane, solution) in solutions.iter_mut().enumerate() {
+        for j in 0..6 {
+            solution.q[j] = branch.q[j].lane(lane);
+        }
+        solution.exact = branch.quality.exact.lane(lane) == 1.0;
+        solution.singular = branch.quality.singular.lane(lane) == 1.0;
+    }
     IkSolutions::from_array(solutions)
 }

@@ -10,7 +10,7 @@ use crate::ik::subproblem::{DEGENERATE, DOUBLE_ROOT, REACH_SLACK};
 pub trait Subproblems: Algebra {
     /// `atan2(y, x)` as a turn, its cosine and sine the vector normalised (one division, for the
     /// reciprocal of its length); no turn for the zero vector, nor where `none` is set.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn turn_of(&mut self, y: Self::Value, x: Self::Value, none: Self::Value) -> Turn<Self::Value> {
         let (xx, yy) = (self.mul(x, x), self.mul(y, y));
         let r2 = self.add(xx, yy);
@@ -27,35 +27,41 @@ pub trait Subproblems: Algebra {
         self.select_turn(none, zero_turn, turn)
     }
 
+    /// The part of `p` across the unit axis `k`: `p - (k . p) k`.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    fn across(&mut self, k: Vector<Self::Value>, p: Vector<Self::Value>) -> Vector<Self::Value> {
+        let along = self.dot(k, p);
+        let on_axis = self.scale(k, along);
+        self.vsub(p, on_axis)
+    }
+
+    /// The flag `|k x p|^2 <= limit |p|^2`: `p` on the axis `k`, to `limit` (a squared sine).
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    fn on_axis(&mut self, k: Vector<Self::Value>, p: Vector<Self::Value>, limit: Self::Value) -> Self::Value {
+        let kxp = self.cross(k, p);
+        let across = self.norm_squared(kxp);
+        let length = self.norm_squared(p);
+        let bound = self.mul(limit, length);
+        self.at_most(across, bound)
+    }
+
     /// Subproblem 1: the angle `t` with `rot(k, t) p1 = p2` about the unit axis `k`, or the
     /// least-squares best; `0`, flagged singular, when either vector lies on the axis.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn rotation_onto(
         &mut self,
         k: Vector<Self::Value>,
         p1: Vector<Self::Value>,
         p2: Vector<Self::Value>,
     ) -> (Turn<Self::Value>, Flags<Self::Value>) {
-        let across_part = |b: &mut Self, p: Vector<Self::Value>| {
-            let along = b.dot(k, p);
-            let on_axis = b.scale(k, along);
-            b.vsub(p, on_axis)
-        };
-        let u1 = across_part(self, p1);
-        let u2 = across_part(self, p2);
+        let u1 = self.across(k, p1);
+        let u2 = self.across(k, p2);
         let x = self.dot(u1, u2);
         let u1xu2 = self.cross(u1, u2);
         let y = self.dot(k, u1xu2);
         let limit = self.constant(DEGENERATE * DEGENERATE);
-        let on_axis = |b: &mut Self, p: Vector<Self::Value>| {
-            let kxp = b.cross(k, p);
-            let across = b.norm_squared(kxp);
-            let length = b.norm_squared(p);
-            let bound = b.mul(limit, length);
-            b.at_most(across, bound)
-        };
-        let first = on_axis(self, p1);
-        let second = on_axis(self, p2);
+        let first = self.on_axis(k, p1, limit);
+        let second = self.on_axis(k, p2, limit);
         let singular = self.or(first, second);
         let turn = self.turn_of(y, x, singular);
         let one = self.constant(1.0);
@@ -71,7 +77,7 @@ pub trait Subproblems: Algebra {
     /// same tests and the same values to rounding, on a path half as long). Near a double root
     /// (`|c| / r` within `DOUBLE_ROOT` of 1) and out of reach the root is snapped to `atan2(b, a)`
     /// or its opposite, as there.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn cos_sin_equation(
         &mut self,
         a: Self::Value,
@@ -125,7 +131,7 @@ pub trait Subproblems: Algebra {
 
     /// Subproblem 3: the angle `t` with `|rot(k, t) p1 - p2| = d`, given `d^2`, the root `sign`
     /// picks.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn rotation_to_distance(
         &mut self,
         k: Vector<Self::Value>,
@@ -150,7 +156,7 @@ pub trait Subproblems: Algebra {
     }
 
     /// Subproblem 4: the angle `t` with `h . rot(k, t) p = d`, the root `sign` picks.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn rotation_to_height(
         &mut self,
         h: Vector<Self::Value>,
@@ -172,7 +178,7 @@ pub trait Subproblems: Algebra {
     /// Subproblem 4 for an orthogonal wrist (`h` and `p` square to `k`, all unit): the angle `t`
     /// with `h . rot(k, t) p = h . v`, the half-width's sine from `|h x v|` (its digits kept near
     /// the singularity). Always exact.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn rotation_to_height_on_great_circle(
         &mut self,
         h: Vector<Self::Value>,
@@ -200,7 +206,7 @@ pub trait Subproblems: Algebra {
     /// Subproblem 2: the pair `(t1, t2)` with `rot(k1, t1) p1 = rot(k2, t2) p2` about axes that
     /// are not parallel, the crossing of the two cones `sign` picks; the least-squares best when
     /// they do not cross, and no turns (singular) when a vector is zero.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     #[allow(clippy::type_complexity, reason = "the two turns and their flags")]
     fn two_rotations(
         &mut self,
