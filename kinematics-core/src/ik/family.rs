@@ -52,6 +52,7 @@ pub const ORTHOGONAL: f64 = 1e-15;
 /// shoulders, two wrists), side by side in lanes. `q3` is a length, not wrapped. Needs `h1` not
 /// parallel to `h2`.
 #[inline(always)]
+#[allow(clippy::redundant_closure, reason = "a function passed by name is called through a shim LLVM leaves uninlined")]
 pub fn spherical_prismatic_third(arm: &Arm6, target: &Pose<f64>) -> IkSolutions<6, 8> {
     branch::solve_in_lanes(
         arm,
@@ -66,6 +67,7 @@ pub fn spherical_prismatic_third(arm: &Arm6, target: &Pose<f64>) -> IkSolutions<
 /// subproblem 3, `q2` by subproblem 1, then the wrist), side by side in lanes. Needs `h1` not
 /// parallel to `h2`.
 #[inline(always)]
+#[allow(clippy::redundant_closure, reason = "a function passed by name is called through a shim LLVM leaves uninlined")]
 pub fn spherical_two_parallel(arm: &Arm6, target: &Pose<f64>) -> IkSolutions<6, 8> {
     branch::solve_in_lanes(
         arm,
@@ -79,6 +81,7 @@ pub fn spherical_two_parallel(arm: &Arm6, target: &Pose<f64>) -> IkSolutions<6, 
 /// eight branches (`q3` by subproblem 3, `q1`, `q2` by subproblem 2, then the wrist), side by side
 /// in lanes. Needs `h1` not parallel to `h2`.
 #[inline(always)]
+#[allow(clippy::redundant_closure, reason = "a function passed by name is called through a shim LLVM leaves uninlined")]
 pub fn spherical_first_two_intersecting(arm: &Arm6, target: &Pose<f64>) -> IkSolutions<6, 8> {
     branch::solve_in_lanes(
         arm,
@@ -92,6 +95,7 @@ pub fn spherical_first_two_intersecting(arm: &Arm6, target: &Pose<f64>) -> IkSol
 /// eight branches (`q1` by subproblem 3, `q2`, `q3` by subproblem 2, then the wrist), side by side
 /// in lanes. Needs `h2` not parallel to `h3`.
 #[inline(always)]
+#[allow(clippy::redundant_closure, reason = "a function passed by name is called through a shim LLVM leaves uninlined")]
 pub fn spherical_last_two_intersecting(arm: &Arm6, target: &Pose<f64>) -> IkSolutions<6, 8> {
     branch::solve_in_lanes(
         arm,
@@ -106,6 +110,7 @@ pub fn spherical_last_two_intersecting(arm: &Arm6, target: &Pose<f64>) -> IkSolu
 /// then the planar elbow), side by side in lanes, with the pass at the wrist's singularity. Needs
 /// `h1` and `h5` not parallel to `h2`.
 #[inline(always)]
+#[allow(clippy::redundant_closure, reason = "a function passed by name is called through a shim LLVM leaves uninlined")]
 pub fn three_parallel_two_intersecting(arm: &Arm6, target: &Pose<f64>) -> IkSolutions<6, 8> {
     // As the compiled `tip_ik`: without the pass at the wrist's singularity first (it costs
     // about a third of the branch), and again with it only where some lane is singular and missed.

@@ -88,9 +88,9 @@ pub fn branches_in_lanes(
 ) -> Branch<F64x8> {
     let mut rotation = [[F64x8::splat(0.0); 3]; 3];
     let mut translation = [F64x8::splat(0.0); 3];
-    for i in 0..3 {
-        for j in 0..3 {
-            rotation[i][j] = F64x8::splat(target.rotation[i][j]);
+    for (i, row) in rotation.iter_mut().enumerate() {
+        for (j, entry) in row.iter_mut().enumerate() {
+            *entry = F64x8::splat(target.rotation[i][j]);
         }
         translation[i] = F64x8::splat(target.translation[i]);
     }
