@@ -344,7 +344,7 @@ pub fn spherical_prismatic_third<A: Algebra>(b: &mut A, problem: &Problem<'_, A:
 
 /// Axes 2, 3, 4 parallel (direction `h = h2`) and axes 5, 6 meeting (`p56 = 0`): the UR family.
 /// `q1` by subproblem 4 (the tool flange's height along `h` is fixed), `q5` by subproblem 4 (so
-/// is the angle between `h` and `h6`), then [`parallel_elbow`]. Needs `h1` and `h5` not parallel
+/// is the angle between `h` and `h6`), then the planar elbow. Needs `h1` and `h5` not parallel
 /// to `h`.
 #[cfg_attr(not(debug_assertions), inline(always))]
 pub fn three_parallel_two_intersecting<A: Algebra>(b: &mut A, problem: &Problem<'_, A::Value>) -> Branch<A::Value> {
