@@ -72,7 +72,10 @@ pub fn ik_section(ik: Option<&Ik>, machine: &str) -> String {
         s,
         "\n`tip_ik` is the compiled body on eight lanes, then every solution's pose at the cosines and sines the\n\
          body computed (no `sin_cos`), its errors against the target, and the eight solutions unpacked; the\n\
-         quartic families' `tip_ik` calls the run-time family function instead. The UR family's body has a pass\n\
+         quartic families' `tip_ik` calls the run-time family function instead. The run-time family function is\n\
+         timed dispatched, as generated code calls it; for the other families it runs the same branch as the\n\
+         compiled body (written once, `kinematics::ik::branch`) on numbers in eight lanes, with the arm's\n\
+         geometry as values rather than folded constants, and measures nothing. The UR family's body has a pass\n\
          at the wrist's singularity (where `q6 = 0` leaves the elbow out of reach): `tip_ik` runs the body\n\
          without it, and the whole body only when a lane comes back singular and not exact; `compiled body`\n\
          above times the whole body (`tip_ik_branch_generic`). `pose at q` is what the measure would cost with\n\
