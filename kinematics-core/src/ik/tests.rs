@@ -175,6 +175,30 @@ fn every_family_round_trips_on_random_arms() {
     }
 }
 
+/// Every solver fits a small thread's stack in an unoptimised build too: inlined whole on `F64x8`
+/// lanes, a family took about 3 MB there (the branch module forces inlining only in an optimised
+/// build); now each takes under 128 KB. 256 KB is an eighth of a test thread's stack. (An overflow
+/// aborts the test run.)
+#[test]
+fn every_solver_fits_a_small_stack() {
+    let solved = std::thread::Builder::new()
+        .stack_size(256 * 1024)
+        .spawn(|| {
+            let mut rng = Rng(5);
+            let mut count = 0;
+            for family in Family::ALL {
+                let arm = random_arm(&mut rng, family);
+                let target = arm.pose(&[0.3, -0.4, 0.9, 0.2, 0.5, -0.1]);
+                count += solve(family, &arm, &target).exact().count();
+            }
+            count
+        })
+        .expect("a thread")
+        .join()
+        .expect("the solvers return");
+    assert!(solved >= Family::ALL.len(), "{solved} exact solutions");
+}
+
 #[test]
 fn unreachable_targets_come_back_flagged_and_finite() {
     let mut rng = Rng(7);
