@@ -113,8 +113,8 @@ macro_rules! float {
     };
 }
 
-float!(f64, libm::sqrt, libm::atan2, libm::hypot, libm::sincos);
-float!(f32, libm::sqrtf, libm::atan2f, libm::hypotf, libm::sincosf);
+float!(f64, crate::real::square_root, libm::atan2, libm::hypot, libm::sincos);
+float!(f32, crate::real::square_root_f32, libm::atan2f, libm::hypotf, libm::sincosf);
 
 /// A constant in `T`.
 fn c<T: Float>(x: f64) -> T {

@@ -51,6 +51,38 @@ pub trait Real:
     }
 }
 
+/// The hardware's square root: std's `f64::sqrt`, which LLVM turns into one instruction, encoded
+/// for the instruction set of the body it lands in (a loop over lanes, one packed instruction);
+/// without `std`, libm's (the same correctly rounded value), which libm writes in assembly as the
+/// legacy SSE2 `sqrtsd`. Every square root in this crate goes through here: inside a body
+/// dispatched to AVX2 or AVX-512 that legacy instruction is the baseline code the dispatch is
+/// there to avoid (on some Intel cores, SSE code after AVX-512 pays on every instruction), and
+/// without `std` nothing is dispatched.
+#[inline(always)]
+pub(crate) fn square_root(x: f64) -> f64 {
+    #[cfg(feature = "std")]
+    {
+        std::primitive::f64::sqrt(x)
+    }
+    #[cfg(not(feature = "std"))]
+    {
+        libm::sqrt(x)
+    }
+}
+
+/// [`square_root`] for `f32`.
+#[inline(always)]
+pub(crate) fn square_root_f32(x: f32) -> f32 {
+    #[cfg(feature = "std")]
+    {
+        std::primitive::f32::sqrt(x)
+    }
+    #[cfg(not(feature = "std"))]
+    {
+        libm::sqrtf(x)
+    }
+}
+
 impl Real for f64 {
     #[inline(always)]
     fn from_f64(x: f64) -> Self {

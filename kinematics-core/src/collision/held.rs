@@ -16,7 +16,7 @@
 
 use core::marker::PhantomData;
 
-use libm::sqrt;
+use crate::real::square_root as sqrt;
 
 use super::obstacles::{Environment, SphereObstacle, Vec3};
 use super::verdicts::{CheckLanes, Flags};

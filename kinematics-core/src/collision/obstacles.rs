@@ -3,7 +3,7 @@
 //! infinities and sizes that are not positive. `SphereQuery` is how a check asks other obstacles (a
 //! point cloud) about a sphere; an `Environment` takes one with `with_query`.
 
-use libm::sqrt;
+use crate::real::square_root as sqrt;
 
 use super::verdicts::{CheckLanes, Flags};
 

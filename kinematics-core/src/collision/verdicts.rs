@@ -194,21 +194,8 @@ pub trait CheckLanes: Real {
     fn from_lanes(f: impl FnMut(usize) -> f64) -> Self;
 }
 
-// The square root of an `f64` (the IK's: the hardware's with `std`, libm's without).
-use crate::ik::square_root as root64;
-
-/// [`root64`] for `f32`.
-#[inline(always)]
-fn root32(x: f32) -> f32 {
-    #[cfg(feature = "std")]
-    {
-        std::primitive::f32::sqrt(x)
-    }
-    #[cfg(not(feature = "std"))]
-    {
-        libm::sqrtf(x)
-    }
-}
+// The square roots: the hardware's with `std`, libm's without.
+use crate::real::{square_root as root64, square_root_f32 as root32};
 
 macro_rules! scalar_check {
     ($t:ty, $root:ident) => {

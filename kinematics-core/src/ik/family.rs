@@ -414,7 +414,9 @@ impl<const N: usize> PlanarArm<N> {
         let mut slide = 0.0;
         match prismatic {
             Some((_, s)) => slide = s * rise,
-            None => exact &= rise.abs() <= PLANAR_SLACK * (1.0 + libm::sqrt(norm_squared(target.translation))),
+            None => {
+                exact &= rise.abs() <= PLANAR_SLACK * (1.0 + crate::real::square_root(norm_squared(target.translation)))
+            }
         }
         let p_target = sub(target.translation, scale(h, rise * f64::from(u8::from(prismatic.is_some()))));
         let (o1, o2) = (point(revolute[0]), point(revolute[1]));

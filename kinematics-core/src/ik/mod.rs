@@ -41,7 +41,6 @@ mod family;
 mod ldl;
 mod numeric;
 mod real;
-pub(crate) use real::square_root;
 mod refine;
 mod solutions;
 pub mod subproblem;

@@ -27,7 +27,7 @@ use super::solutions::pose_errors_inline as pose_errors;
 use super::vector::{V3, dot, sub};
 use crate::kinematics::JointLimits;
 use crate::pose::Pose;
-use crate::real::Real;
+use crate::real::{Real, square_root};
 use crate::splitmix::SplitMix;
 
 /// How hard the numeric solver tries, and when it is done.
@@ -71,7 +71,7 @@ pub struct NumericSolution<const N: usize> {
 #[inline(always)]
 fn rotation_vector(r: &[[f64; 3]; 3]) -> V3 {
     let vee = [r[2][1] - r[1][2], r[0][2] - r[2][0], r[1][0] - r[0][1]];
-    let sine2 = libm::sqrt(dot(vee, vee)); // 2 sin(angle)
+    let sine2 = square_root(dot(vee, vee)); // 2 sin(angle)
     let cosine2 = r[0][0] + r[1][1] + r[2][2] - 1.0; // 2 cos(angle)
     let angle = crate::trig::atan2(sine2, cosine2);
     if cosine2 > -1.0 {
@@ -95,7 +95,7 @@ fn rotation_vector(r: &[[f64; 3]; 3]) -> V3 {
     }
     let mut axis = [r[0][best], r[1][best], r[2][best]];
     axis[best] += 1.0;
-    let n = libm::sqrt(best_norm);
+    let n = square_root(best_norm);
     let mut axis = [axis[0] / n, axis[1] / n, axis[2] / n];
     if dot(axis, vee) < 0.0 {
         axis = [-axis[0], -axis[1], -axis[2]];

@@ -27,7 +27,7 @@
 //! `BRANCH_SIGNS_8` are the branch signs as lanes.
 
 use crate::lanes::{F64x4, F64x8};
-use crate::real::Real;
+use crate::real::{Real, square_root};
 use crate::trig;
 
 /// What compiled closed-form inverse kinematics computes with: [`Real`] and a square root, our
@@ -41,21 +41,6 @@ pub trait IkReal: Real {
     fn atan2(self, x: Self) -> Self;
     /// `then` where `self > 0`, else `otherwise`, lane by lane (a select, not a branch).
     fn if_positive(self, then: Self, otherwise: Self) -> Self;
-}
-
-/// The hardware's square root: std's `f64::sqrt`, which LLVM turns into one packed instruction
-/// for a loop over lanes; without `std`, libm's (the same correctly rounded value, one lane at a
-/// time, as libm writes the instruction in assembly).
-#[inline(always)]
-pub(crate) fn square_root(x: f64) -> f64 {
-    #[cfg(feature = "std")]
-    {
-        std::primitive::f64::sqrt(x)
-    }
-    #[cfg(not(feature = "std"))]
-    {
-        libm::sqrt(x)
-    }
 }
 
 impl IkReal for f64 {

@@ -89,7 +89,7 @@ impl Turn {
     /// normalised (no turn for the zero vector).
     #[inline(always)]
     pub fn of(y: f64, x: f64) -> Turn {
-        let r = libm::sqrt(x * x + y * y);
+        let r = crate::real::square_root(x * x + y * y);
         if r > 0.0 { Turn { angle: crate::trig::atan2(y, x), cos: x / r, sin: y / r } } else { Turn::ZERO }
     }
 
@@ -178,7 +178,7 @@ pub fn distance_range(k: V3, p1: V3, p2: V3) -> (f64, f64) {
     let b = dot(k, cross(p1, p2));
     // c = (|p1|^2 + |p2|^2 - d^2) / 2 - along, and |c| <= hypot(a, b).
     let middle = norm_squared(p1) + norm_squared(p2) - 2.0 * along;
-    let swing = 2.0 * libm::sqrt(a * a + b * b);
+    let swing = 2.0 * crate::real::square_root(a * a + b * b);
     (middle - swing, middle + swing)
 }
 
