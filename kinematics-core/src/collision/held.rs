@@ -333,15 +333,17 @@ impl<L: CheckLanes> Pose<L> {
     /// This pose, then `fixed` (a constant pose in this pose's frame).
     #[inline(always)]
     fn then_fixed(&self, fixed: &Pose<f64>) -> Pose<L> {
-        let r = &self.rotation;
-        let f = &fixed.rotation;
-        let row = |i: usize| {
-            let column = |j: usize| {
-                r[i][0] * L::from_f64(f[0][j]) + r[i][1] * L::from_f64(f[1][j]) + r[i][2] * L::from_f64(f[2][j])
-            };
-            [column(0), column(1), column(2)]
-        };
-        Pose { rotation: [row(0), row(1), row(2)], translation: self.place(fixed.translation) }
+        // Written out, not as closures: a closure is a function of its own, which LLVM left a
+        // call from the dispatched checks, running outside their instruction set.
+        let (r, f) = (&self.rotation, &fixed.rotation);
+        let mut rotation = self.rotation;
+        for (i, row) in rotation.iter_mut().enumerate() {
+            for (j, entry) in row.iter_mut().enumerate() {
+                *entry =
+                    r[i][0] * L::from_f64(f[0][j]) + r[i][1] * L::from_f64(f[1][j]) + r[i][2] * L::from_f64(f[2][j]);
+            }
+        }
+        Pose { rotation, translation: self.place(fixed.translation) }
     }
 }
 

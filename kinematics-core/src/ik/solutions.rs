@@ -245,15 +245,15 @@ impl<const N: usize, const M: usize> IkSolutions<N, M> {
                 best = Some((solution.exact, distance, k));
             }
         }
-        best.map(|(_, _, k)| {
-            let mut moved = self.as_slice()[k];
-            for i in 0..N {
-                if revolute[i] {
-                    moved.q[i] = seed[i] + super::vector::nearest_turn(moved.q[i] - seed[i]);
-                }
+        // Not `Option::map`: its closure was left a call from the dispatched `tip_ik_nearest`.
+        let (_, _, k) = best?;
+        let mut moved = self.as_slice()[k];
+        for i in 0..N {
+            if revolute[i] {
+                moved.q[i] = seed[i] + super::vector::nearest_turn(moved.q[i] - seed[i]);
             }
-            moved
-        })
+        }
+        Some(moved)
     }
 
     /// The solutions inside `limits` (closed intervals), each angle of a joint marked in
