@@ -6,8 +6,8 @@
 
 use std::collections::BTreeSet;
 
-use kinematics::collision::CollisionTables;
-use kinematics::model::collision::{LinkSphere, Meshes, fixed_apart_pairs, link_spheres, sphere_pairs};
+use kinematics::collision::{CollisionTables, PairGrid};
+use kinematics::model::collision::{LinkSphere, Meshes, fixed_apart_pairs, link_spheres, pair_grids, sphere_pairs};
 use kinematics::model::{KinematicTree, LinkId};
 use kinematics::{Pose, ReferenceFk, SceneObstacles};
 use kinematics_compiler::collision_layout::CollisionLayout;
@@ -73,6 +73,28 @@ pub fn check(tree: &KinematicTree, file: &str, samples: usize, setup: &Setup<'_>
     let index = |l: LinkId| layout.links.iter().position(|&k| k == l);
     let pairs: Vec<(usize, usize)> = plan.pairs.iter().filter_map(|&(a, b)| Some((index(a)?, index(b)?))).collect();
     let fixed = layout.fixed_in_order(&fixed_apart_pairs(tree, &spheres, &plan.pairs));
+    // The grids as the compiler writes them: each cell's code packed, each pair by its index.
+    let grids = pair_grids(tree, &spheres, &plan.pairs);
+    #[allow(clippy::expect_used, reason = "invariant: a grid decides checked pairs")]
+    let decided: Vec<(Vec<u8>, Vec<usize>)> = grids
+        .iter()
+        .map(|g| {
+            let index = |pair| plan.pairs.iter().position(|p| p == pair).expect("a grid decides checked pairs");
+            (g.packed(), g.pairs.iter().map(index).collect())
+        })
+        .collect();
+    let grids: Vec<PairGrid<'_>> = grids
+        .iter()
+        .zip(&decided)
+        .map(|(g, (states, pairs))| PairGrid {
+            dofs: g.dofs,
+            lower: g.lower,
+            scale: g.scale(),
+            cells: g.cells,
+            states,
+            pairs,
+        })
+        .collect();
     let tables = CollisionTables {
         links: &links,
         groups: &layout.groups,
@@ -80,6 +102,7 @@ pub fn check(tree: &KinematicTree, file: &str, samples: usize, setup: &Setup<'_>
         radii: &radii,
         pairs: &pairs,
         fixed: &fixed,
+        grids: &grids,
     };
 
     let request = Request {

@@ -54,7 +54,7 @@ pub struct CollisionView<'a> {
 /// pairs a self-collision check tests; fixed joints whose mimic had nothing to do. A cover that
 /// is not a positive length is the error returned.
 pub fn collision(tree: &KinematicTree, view: &CollisionView<'_>) -> Result<String, String> {
-    use kinematics::model::collision::{LinkSphere, Meshes, fixed_apart_pairs, link_spheres, sphere_pairs};
+    use kinematics::model::collision::{LinkSphere, Meshes, fixed_apart_pairs, link_spheres, pair_grids, sphere_pairs};
     if !(view.cover.is_finite() && view.cover > 0.0) {
         return Err(format!("{} is no finite positive length in metres", view.cover));
     }
@@ -143,6 +143,27 @@ pub fn collision(tree: &KinematicTree, view: &CollisionView<'_>) -> Result<Strin
         fixed.len(),
         if held.is_empty() { String::new() } else { format!(": {}", held.join(", ")) }
     );
+    let grids = pair_grids(tree, &spheres, &pairs.pairs);
+    out += &format!(
+        "self-collision grids (pairs decided ahead of time by the values of the one or two joints that move them): {}\n",
+        grids.len()
+    );
+    for grid in &grids {
+        let names: Vec<String> =
+            grid.pairs.iter().map(|&(a, b)| format!("{}-{}", tree.link(a).name, tree.link(b).name)).collect();
+        let joints: Vec<&str> = grid.joints.iter().map(|&j| tree.joint(j).name.as_str()).collect();
+        let (free, colliding, test) = grid.counts();
+        let share = |n: usize| format!("{:.1}%", 100.0 * n as f64 / grid.states.len() as f64);
+        out += &format!(
+            "  {} over {} ({} cells): {} free, {} colliding, {} to test\n",
+            names.join(", "),
+            joints.join(" x "),
+            grid.cells.iter().filter(|&&n| n > 1).map(ToString::to_string).collect::<Vec<_>>().join(" x "),
+            share(free),
+            share(colliding),
+            share(test)
+        );
+    }
     Ok(out)
 }
 

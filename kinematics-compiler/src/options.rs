@@ -18,7 +18,8 @@
 
 pub use kinematics_model::collision::Meshes;
 use kinematics_model::collision::{
-    CollisionPairs, FixedPair, LinkSphere, MeshRefused, fixed_apart_pairs, link_spheres, sphere_pairs,
+    CollisionPairs, FixedPair, LinkSphere, MeshRefused, PairGrid, fixed_apart_pairs, link_spheres, pair_grids,
+    sphere_pairs,
 };
 use kinematics_model::srdf::Srdf;
 use kinematics_model::{ExactAngles, FLOATING_BASE_JOINT, KinematicTree, UnknownLink};
@@ -273,6 +274,8 @@ pub struct CollisionPlan {
     /// The sphere pairs of `pairs` whose distance no joint changes (the model's
     /// `fixed_apart_pairs`).
     pub fixed: Vec<FixedPair>,
+    /// The grids deciding the pairs one or two joints move (the model's `pair_grids`).
+    pub grids: Vec<PairGrid>,
 }
 
 /// The inverse kinematics a checked robot gets.
@@ -487,7 +490,8 @@ fn collision_applies(options: &Options, tree: &KinematicTree) -> Result<Option<C
     };
     let pairs = sphere_pairs(tree, &spheres, disabled.as_ref());
     let fixed = fixed_apart_pairs(tree, &spheres, &pairs.pairs);
-    Ok(Some(CollisionPlan { spheres, pairs, fixed }))
+    let grids = pair_grids(tree, &spheres, &pairs.pairs);
+    Ok(Some(CollisionPlan { spheres, pairs, fixed, grids }))
 }
 
 /// Rule: `floating_base`'s new root link and joint are names `plain` (the description loaded

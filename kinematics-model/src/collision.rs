@@ -31,10 +31,12 @@
 //! the compiler's (`collision_layout`).
 
 pub mod fixed;
+pub mod grid;
 
 use std::collections::BTreeSet;
 
 pub use fixed::{FixedPair, ON_AXIS, fixed_apart_pairs};
+pub use grid::{CellState, PairGrid, pair_grids};
 
 use crate::transform::FixedTransform;
 use crate::tree::{KinematicTree, LinkId};

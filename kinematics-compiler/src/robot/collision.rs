@@ -203,6 +203,27 @@ fn tables(cx: &Context<'_>, frame: &CollisionLayout) -> Vec<TokenStream> {
         let (a, b) = (index(a), index(b));
         quote!((#a, #b))
     });
+    let checked = plan.map_or(&[][..], |plan| plan.pairs.pairs.as_slice());
+    let grids = plan.map_or(&[][..], |plan| plan.grids.as_slice()).iter().map(|grid| {
+        let [d0, d1] = grid.dofs.map(Literal::usize_unsuffixed);
+        let [n0, n1] = grid.cells.map(Literal::usize_unsuffixed);
+        let [l0, l1] = grid.lower.map(super::number);
+        let [s0, s1] = grid.scale().map(super::number);
+        let states = Literal::byte_string(&grid.packed());
+        let covered = grid.pairs.iter().map(|pair| {
+            #[allow(clippy::expect_used, reason = "invariant: a grid's pairs are checked pairs")]
+            let k = checked.iter().position(|p| p == pair).expect("a grid decides checked pairs");
+            Literal::usize_unsuffixed(k)
+        });
+        quote!(#p::collision::PairGrid {
+            dofs: [#d0, #d1],
+            lower: [#l0, #l1],
+            scale: [#s0, #s1],
+            cells: [#n0, #n1],
+            states: #states,
+            pairs: &[#(#covered),*],
+        })
+    });
     let centers = frame.order.iter().map(|&k| point(&frame.points[k].1));
     let radii = frame.order.iter().map(|&k| super::number(cx.spheres()[k].sphere.radius));
     let count = Literal::usize_unsuffixed(cx.spheres().len());
@@ -211,7 +232,8 @@ fn tables(cx: &Context<'_>, frame: &CollisionLayout) -> Vec<TokenStream> {
             /// The collision tables: each link with spheres (its groups, its bounding sphere's
             /// centre in its frame and radius), each group (its spheres, its bounding sphere),
             /// each sphere's centre in its link's frame and radius, the link pairs the
-            /// self-collision check tests, the sphere pairs among them held apart for good.
+            /// self-collision check tests, the sphere pairs among them held apart for good, and
+            /// the grids deciding the pairs one or two joints move.
             #[allow(clippy::approx_constant, clippy::unreadable_literal)] // radii are kept as given
             pub const COLLISION_TABLES: #p::collision::CollisionTables<'static> = #p::collision::CollisionTables {
                 links: &[#(#links),*],
@@ -220,6 +242,7 @@ fn tables(cx: &Context<'_>, frame: &CollisionLayout) -> Vec<TokenStream> {
                 radii: &RADII,
                 pairs: &[#(#pairs),*],
                 fixed: &[#(#fixed),*],
+                grids: &[#(#grids),*],
             };
         },
         quote! {

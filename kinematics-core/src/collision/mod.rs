@@ -13,6 +13,7 @@ mod clearance;
 #[cfg(feature = "point-cloud")]
 mod cloud;
 mod distance;
+mod grid;
 mod held;
 mod motion;
 mod obstacles;
@@ -22,6 +23,7 @@ mod verdicts;
 #[cfg(feature = "point-cloud")]
 #[cfg_attr(docsrs, doc(cfg(feature = "point-cloud")))]
 pub use cloud::PointCloud;
+pub use grid::{MAX_GRIDS, PairGrid};
 pub use held::{Carried, Held, HeldError, HeldLink, HeldObject, HoldTables, Holding, World};
 pub use motion::{Ends, Motion, first_collisions, motion_wide, motions_wide};
 pub use obstacles::{

@@ -10,6 +10,7 @@
 //! `CollisionTables` holds what a compiled robot's `collides` and `self_collides` run on its links'
 //! poses. The self pairs are tested group by group; each lane is decided once.
 
+use super::grid::{GridVerdicts, PairGrid};
 use super::held::HeldObject;
 use super::obstacles::{Environment, Obstacle, Prepared, SphereQuery, Vec3, Visit, query_lanes};
 use super::verdicts::{CheckLanes, Flags, LaneMask, non_finite};
@@ -35,6 +36,7 @@ use crate::pose::Pose;
 ///     radii: &[0.1, 0.1],
 ///     pairs: &[(0, 1)],
 ///     fixed: &[],
+///     grids: &[],
 /// };
 /// let poses = [Pose::from_rpy([0.0; 3], [0.0; 3]), Pose::from_rpy([0.0; 3], [1.0, 0.0, 0.0])];
 /// let ball = [SphereObstacle { center: [1.0, 0.3, 0.0], radius: 0.25 }];
@@ -62,6 +64,10 @@ pub struct CollisionTables<'a> {
     /// collide, and the distances leave them out (their constant would cap the clearance, with a
     /// zero gradient). The checks test them with the rest.
     pub fixed: &'a [(usize, usize)],
+    /// The grids deciding some of `pairs` by the values of the one or two joints that move
+    /// them (at most [`super::MAX_GRIDS`]): the checks test a grid's pairs only on the
+    /// configurations whose cells leave them to the tests. The distances do not read them.
+    pub grids: &'a [PairGrid<'a>],
 }
 
 impl CollisionTables<'_> {
@@ -78,21 +84,24 @@ impl CollisionTables<'_> {
         held: Option<HeldObject<'_>>,
     ) -> LaneMask {
         let poses = fence(poses);
-        let mut hit = self.obstacle_hits(poses, env, non_finite(q));
+        // The grids first: a lookup per configuration, which may settle some before any test.
+        let grids = GridVerdicts::of(self.grids, q);
+        let mut hit = self.obstacle_hits(poses, env, non_finite(q) | L::Flags::from_mask(grids.colliding));
         if let Some(held) = held {
             hit = held.hits(self, poses, env, hit);
         }
         if hit.all() {
             return hit.bits();
         }
-        self.self_hits(poses, hit).bits()
+        self.self_hits(poses, hit, &grids).bits()
     }
 
     /// The lanes where two links of a checked pair of the robot at `q` touch. A lane whose `q` is
     /// not finite is colliding.
     #[inline(always)]
     pub fn self_collides<L: CheckLanes, const N: usize>(&self, q: &[L; N], poses: &[Pose<L>]) -> LaneMask {
-        self.self_hits(fence(poses), non_finite(q)).bits()
+        let grids = GridVerdicts::of(self.grids, q);
+        self.self_hits(fence(poses), non_finite(q) | L::Flags::from_mask(grids.colliding), &grids).bits()
     }
 
     /// Link `k`'s bounding sphere's centre.
@@ -130,24 +139,29 @@ impl CollisionTables<'_> {
         hit
     }
 
-    /// `hit` and the lanes where two links of a checked pair touch: their bounding spheres first,
-    /// then each group of the first against the second's bounding sphere, then group against
-    /// group, then the spheres of two touching groups: each of the first's against the second
-    /// group's bounding sphere, and where that touches, against each of the second's.
+    /// `hit` and the lanes where two links of a checked pair touch, on the lanes `grids` leave
+    /// to the tests: their bounding spheres first, then each group of the first against the
+    /// second's bounding sphere, then group against group, then the spheres of two touching
+    /// groups: each of the first's against the second group's bounding sphere, and where that
+    /// touches, against each of the second's.
     #[inline(always)]
-    fn self_hits<L: CheckLanes>(&self, poses: &[Pose<L>], mut hit: L::Flags) -> L::Flags {
+    fn self_hits<L: CheckLanes>(&self, poses: &[Pose<L>], mut hit: L::Flags, grids: &GridVerdicts) -> L::Flags {
         // Filled anew for each pair of groups; made once (zeroing it per pair was measured).
         // (Placing every link's and group's bounding sphere once up front, rather than per pair,
         // was measured slower too: the Panda's self check in F32x16 lanes 1.05x.)
         let mut placed = [([L::from_f64(0.0); 3], L::from_f64(0.0)); PLACED];
-        for &(i, j) in self.pairs {
+        for (pair, &(i, j)) in self.pairs.iter().enumerate() {
             if hit.all() {
                 return hit;
+            }
+            let to_test = L::Flags::from_mask(grids.to_test(self.grids, pair)).and_not(hit);
+            if !to_test.any() {
+                continue;
             }
             let ((ga, ea, ..), (gb, eb, ..)) = (self.links[i], self.links[j]);
             let (bound_i, bound_j) = (self.bound(poses, i), self.bound(poses, j));
             let (ra, rb) = (L::from_f64(self.links[i].3), L::from_f64(self.links[j].3));
-            let near = touch(&bound_i, ra, &bound_j, rb).and_not(hit);
+            let near = touch(&bound_i, ra, &bound_j, rb) & to_test;
             if !near.any() {
                 continue;
             }
@@ -347,6 +361,7 @@ mod tests {
         radii: &[0.1, 0.1],
         pairs: &[(0, 1)],
         fixed: &[],
+        grids: &[],
     };
 
     fn at<T: Real>(x: T) -> Pose<T> {

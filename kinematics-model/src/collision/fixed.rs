@@ -78,7 +78,7 @@ fn fixed_gap(tree: &KinematicTree, (a, pa): (LinkId, [f64; 3]), (b, pb): (LinkId
 
 /// The joints from `a` and from `b` up to their nearest common ancestor, each list from its link
 /// upwards.
-fn paths(tree: &KinematicTree, a: LinkId, b: LinkId) -> (Vec<JointId>, Vec<JointId>) {
+pub(super) fn paths(tree: &KinematicTree, a: LinkId, b: LinkId) -> (Vec<JointId>, Vec<JointId>) {
     let ancestors = |mut link: LinkId| {
         let mut chain = vec![(link, None)];
         while let Some(j) = tree.link(link).parent_joint {
@@ -144,7 +144,8 @@ fn carry_down(tree: &KinematicTree, up: &[JointId], mut p: [f64; 3]) -> Option<[
     Some(p)
 }
 
-fn distance(a: [f64; 3], b: [f64; 3]) -> f64 {
+/// The distance between two points.
+pub(super) fn distance(a: [f64; 3], b: [f64; 3]) -> f64 {
     ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt()
 }
 
