@@ -44,9 +44,10 @@ struct Panda;
 #[kinematics(urdf = "robots/ur5_spherized.urdf", collision, scalars(f64, f32))]
 struct Ur5;
 
-/// 1,024 configurations of `N` joints within the limits.
+/// 1,024 configurations of `N` joints drawn uniformly within the limits, as a planner samples
+/// them (the agreement stream's special angles and values beyond the limits are for tests).
 fn inputs<const N: usize>(limits: &[kinematics::JointLimits]) -> Vec<[f64; N]> {
-    Configurations::within(limits).skip(5).take(1024).map(|q| q.try_into().unwrap()).collect()
+    Configurations::within(limits).uniform().take(1024).map(|q| q.try_into().unwrap()).collect()
 }
 
 /// The resolution motions are checked at (radians): the largest joint step between checked

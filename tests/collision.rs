@@ -144,6 +144,8 @@ fn batches_lanes_and_f32_agree_with_the_scalar_centres() {
 mod clearance;
 #[path = "collision/cloud.rs"]
 mod cloud;
+#[path = "collision/grid.rs"]
+mod grid;
 #[path = "collision/held.rs"]
 mod held;
 #[path = "collision/motion.rs"]

@@ -125,11 +125,11 @@ pub fn check(tree: &KinematicTree, file: &str, samples: usize, setup: &Setup<'_>
     for q in Configurations::new(tree).take(samples) {
         let poses: Vec<Pose<f64>> = compiled.eval(&q).iter().map(Pose::from_entries).collect();
         let s = fk.self_distance(&q, &spheres, &plan.pairs).map_err(runtime)?;
-        let verdict = tables.self_collides(&[0.0], &poses).any();
+        let verdict = tables.self_collides(&q, &poses).any();
         tally(&mut itself, s, verdict, file, "self_collides", &q)?;
         if let Some((env, reference)) = &environment {
             let d = fk.obstacle_distance(&q, &spheres, reference).map_err(runtime)?;
-            let verdict = tables.collides(&[0.0], &poses, env, None).any();
+            let verdict = tables.collides(&q, &poses, env, None).any();
             // `collides` is obstacles and self: the nearer decides (a NaN, which `min` would drop,
             // stays a NaN and fails).
             let nearest = if d.is_nan() || s.is_nan() { f64::NAN } else { d.min(s) };

@@ -67,11 +67,14 @@ impl PairGrid<'_> {
         self.states.get(k / 4).map_or(TEST, |byte| (byte >> (2 * (k % 4))) & 3)
     }
 
-    /// The lanes of `q` whose cells collide, and the lanes left to the tests.
+    /// The lanes of `q` whose cells collide, and the lanes left to the tests (every lane where
+    /// `q` has no entry the grid is over).
     #[inline(always)]
-    pub fn lanes<L: CheckLanes, const N: usize>(&self, q: &[L; N]) -> (LaneMask, LaneMask) {
+    pub fn lanes<L: CheckLanes>(&self, q: &[L]) -> (LaneMask, LaneMask) {
         let (mut colliding, mut test) = (0u32, 0u32);
-        let (a, b) = (q[self.dofs[0]], q[self.dofs[1]]);
+        let (Some(&a), Some(&b)) = (q.get(self.dofs[0]), q.get(self.dofs[1])) else {
+            return (LaneMask::NONE, LaneMask::full(L::WIDTH));
+        };
         for lane in 0..L::WIDTH {
             let code = u32::from(self.code(a.lane_f64(lane), b.lane_f64(lane)));
             colliding |= u32::from(code == u32::from(COLLIDING)) << lane;
@@ -94,7 +97,7 @@ pub(super) struct GridVerdicts {
 impl GridVerdicts {
     /// Every grid's verdicts on `q`.
     #[inline(always)]
-    pub fn of<L: CheckLanes, const N: usize>(grids: &[PairGrid<'_>], q: &[L; N]) -> Self {
+    pub fn of<L: CheckLanes>(grids: &[PairGrid<'_>], q: &[L]) -> Self {
         let mut verdicts = GridVerdicts { test: [LaneMask::NONE; MAX_GRIDS], colliding: LaneMask::NONE };
         for (slot, grid) in verdicts.test.iter_mut().zip(grids) {
             let (colliding, test) = grid.lanes(q);

@@ -13,7 +13,7 @@
 use super::grid::{GridVerdicts, PairGrid};
 use super::held::HeldObject;
 use super::obstacles::{Environment, Obstacle, Prepared, SphereQuery, Vec3, Visit, query_lanes};
-use super::verdicts::{CheckLanes, Flags, LaneMask, non_finite};
+use super::verdicts::{CheckLanes, Flags, LaneMask, non_finite_entries};
 use crate::pose::Pose;
 
 /// A compiled robot's collision tables, as its generated code holds them: each link with spheres
@@ -76,9 +76,9 @@ impl CollisionTables<'_> {
     /// a link it is tested against: the robot's obstacles first, then the held object's, then
     /// the pairs, each only on the lanes still free. A lane whose `q` is not finite is colliding.
     #[inline(always)]
-    pub fn collides<L: CheckLanes, const N: usize>(
+    pub fn collides<L: CheckLanes>(
         &self,
-        q: &[L; N],
+        q: &[L],
         poses: &[Pose<L>],
         env: &Environment<'_>,
         held: Option<HeldObject<'_>>,
@@ -86,7 +86,7 @@ impl CollisionTables<'_> {
         let poses = fence(poses);
         // The grids first: a lookup per configuration, which may settle some before any test.
         let grids = GridVerdicts::of(self.grids, q);
-        let mut hit = self.obstacle_hits(poses, env, non_finite(q) | L::Flags::from_mask(grids.colliding));
+        let mut hit = self.obstacle_hits(poses, env, non_finite_entries(q) | L::Flags::from_mask(grids.colliding));
         if let Some(held) = held {
             hit = held.hits(self, poses, env, hit);
         }
@@ -99,9 +99,9 @@ impl CollisionTables<'_> {
     /// The lanes where two links of a checked pair of the robot at `q` touch. A lane whose `q` is
     /// not finite is colliding.
     #[inline(always)]
-    pub fn self_collides<L: CheckLanes, const N: usize>(&self, q: &[L; N], poses: &[Pose<L>]) -> LaneMask {
+    pub fn self_collides<L: CheckLanes>(&self, q: &[L], poses: &[Pose<L>]) -> LaneMask {
         let grids = GridVerdicts::of(self.grids, q);
-        self.self_hits(fence(poses), non_finite(q) | L::Flags::from_mask(grids.colliding), &grids).bits()
+        self.self_hits(fence(poses), non_finite_entries(q) | L::Flags::from_mask(grids.colliding), &grids).bits()
     }
 
     /// Link `k`'s bounding sphere's centre.

@@ -412,6 +412,12 @@ lane_check!(F32x16, Flags32x16, u32, i32, 16, root32, "The flags of [`F32x16`]'s
 /// The lanes of `q` with a NaN or an infinite entry: configurations that are never free.
 #[inline(always)]
 pub fn non_finite<L: CheckLanes, const N: usize>(q: &[L; N]) -> L::Flags {
+    non_finite_entries(q)
+}
+
+/// [`non_finite`] of a configuration given as a slice.
+#[inline(always)]
+pub(crate) fn non_finite_entries<L: CheckLanes>(q: &[L]) -> L::Flags {
     let mut bad = L::Flags::NONE;
     for x in q {
         bad = bad | x.non_finite();
