@@ -369,3 +369,72 @@ fn rotate(axis: [f64; 3], (s, c): (f64, f64), p: [f64; 3]) -> [f64; 3] {
     let cross = [y * p[2] - z * p[1], z * p[0] - x * p[2], x * p[1] - y * p[0]];
     [0, 1, 2].map(|i| p[i] * c + cross[i] * s + axis[i] * dot * (1.0 - c))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::collision::{Meshes, link_spheres};
+    use crate::exactness::ExactAngles;
+    use crate::source::{Source, SourceFormat};
+
+    /// A base with a ball at (0.3, 0, 0) and an arm turning about z with a ball at (0.35, 0, 0.05):
+    /// their distance is a function of the joint's angle alone (touching within about 0.45 rad
+    /// of zero).
+    const ARM: &str = r#"<robot name="arm">
+      <link name="base"><collision><origin xyz="0.3 0 0"/><geometry><sphere radius="0.1"/></geometry></collision></link>
+      <link name="arm"><collision><origin xyz="0.35 0 0.05"/><geometry><sphere radius="0.05"/></geometry></collision></link>
+      <joint name="turn" type="revolute"><parent link="base"/><child link="arm"/><axis xyz="0 0 1"/>
+        <limit lower="-3" upper="3" effort="1" velocity="1"/></joint>
+    </robot>"#;
+
+    /// The one-joint grid (the pair kept by hand: the default rule leaves adjacent bodies out)
+    /// against the distance at sampled angles: free cells apart, colliding cells overlapping,
+    /// both seen, and the cells left to the tests few.
+    #[test]
+    fn a_one_joint_grid_holds_at_every_sampled_angle() {
+        let tree = Source::new(SourceFormat::Urdf, "arm.urdf", ARM).load(ExactAngles::default()).unwrap();
+        let spheres = link_spheres(&tree, 0.01, Meshes::Refuse).unwrap();
+        let pair = (tree.link_id("base").unwrap(), tree.link_id("arm").unwrap());
+        let grids = pair_grids(&tree, &spheres, &[pair]);
+        assert_eq!(grids.len(), 1);
+        let grid = &grids[0];
+        assert_eq!((grid.cells, grid.dofs, grid.scale()[1]), ([CELLS_1D, 1], [0, 0], 0.0));
+        let mut seen = [0usize; 3];
+        for k in 0..=60_000 {
+            let angle = -3.2 + 6.4 * k as f64 / 60_000.0;
+            // The arm's ball at angle `angle` about z, 0.05 above the base's.
+            let (s, c) = angle.sin_cos();
+            let gap = distance([0.35 * c, 0.35 * s, 0.05], [0.3, 0.0, 0.0]) - 0.15;
+            let state = grid.state(&[angle]);
+            match state {
+                CellState::Free => assert!(gap > 0.0, "free at {angle}: {gap}"),
+                CellState::Colliding => assert!(gap < 0.0, "colliding at {angle}: {gap}"),
+                // Beyond the limits every value is tested.
+                CellState::Test => {}
+            }
+            if angle.abs() > 3.0 {
+                assert_eq!(state, CellState::Test, "{angle} is beyond the limits");
+                continue;
+            }
+            seen[state.code() as usize] += 1;
+        }
+        let [test, free, colliding] = seen;
+        assert!(free > 0 && colliding > 0, "{seen:?}");
+        assert!(test * 50 < free + colliding, "{seen:?}");
+        // The packed codes say the same as the states.
+        let packed = grid.packed();
+        for (k, state) in grid.states.iter().enumerate() {
+            assert_eq!((packed[k / 4] >> (2 * (k % 4))) & 3, state.code(), "cell {k}");
+        }
+    }
+
+    /// A pair moved by a joint without limits (continuous) gets no grid.
+    #[test]
+    fn only_pairs_one_or_two_limited_joints_move_get_grids() {
+        let continuous = ARM.replace(r#"type="revolute""#, r#"type="continuous""#);
+        let tree = Source::new(SourceFormat::Urdf, "arm.urdf", continuous).load(ExactAngles::default()).unwrap();
+        let spheres = link_spheres(&tree, 0.01, Meshes::Refuse).unwrap();
+        let pair = (tree.link_id("base").unwrap(), tree.link_id("arm").unwrap());
+        assert!(pair_grids(&tree, &spheres, &[pair]).is_empty());
+    }
+}
