@@ -350,7 +350,7 @@ pub(super) fn touch<L: CheckLanes>(a: &[L; 3], ra: L, b: &[L; 3], rb: L) -> L::F
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::collision::SphereObstacle;
+    use crate::collision::{PairGrid, SphereObstacle};
     use crate::{F64x4, Lanes, Real};
 
     /// Two links of one sphere each at their origins.
@@ -376,6 +376,36 @@ mod tests {
         assert!(TABLES.self_collides(&[f64::NAN], &far).any());
         assert!(TABLES.collides(&[f64::INFINITY], &far, &Environment::empty(), None).any());
         assert!(!TABLES.collides(&[0.0], &far, &Environment::empty(), None).any());
+    }
+
+    /// A grid over `q[0]` from 0 to 4 in four cells (to test, free, colliding, to test) deciding
+    /// the one pair: its verdict is taken where it gives one, even against the spheres (which
+    /// the grid's own test in the model rules out), and the pair is tested elsewhere.
+    #[test]
+    fn a_grid_decides_its_pairs_where_its_cells_say() {
+        let grid = PairGrid {
+            dofs: [0, 0],
+            lower: [0.0, 0.0],
+            scale: [1.0, 0.0],
+            cells: [4, 1],
+            states: &[0b00_10_01_00],
+            pairs: &[0],
+        };
+        let tables = CollisionTables { grids: &[grid], ..TABLES };
+        let (touching, apart) = ([at(0.0), at(0.1)], [at(0.0), at(5.0)]);
+        // Cell 0 and beyond the grid: tested.
+        assert!(tables.self_collides(&[0.5], &touching).any());
+        assert!(!tables.self_collides(&[0.5], &apart).any());
+        assert!(tables.self_collides(&[9.0], &touching).any());
+        // Cell 1 free, cell 2 colliding, whatever the poses.
+        assert!(!tables.self_collides(&[1.5], &touching).any());
+        assert!(tables.self_collides(&[2.5], &apart).any());
+        assert!(tables.collides(&[2.5], &apart, &Environment::empty(), None).any());
+        assert!(!tables.collides(&[1.5], &touching, &Environment::empty(), None).any());
+        // In lanes, each lane by its own cell.
+        let q = [F64x4::new([0.5, 1.5, 2.5, 3.5])];
+        let poses = [at(F64x4::from_f64(0.0)), at(F64x4::new([0.1, 0.1, 5.0, 5.0]))];
+        assert_eq!(tables.self_collides(&q, &poses).bits(), 0b0101);
     }
 
     #[test]
