@@ -110,7 +110,7 @@ impl GridVerdicts {
     /// The lanes on which pair `pair` must be tested: those its grid leaves to the tests, or
     /// every lane if no grid covers it.
     #[inline(always)]
-    pub fn to_test(&self, grids: &[PairGrid<'_>], pair: usize) -> LaneMask {
+    pub fn tested(&self, grids: &[PairGrid<'_>], pair: usize) -> LaneMask {
         grids
             .iter()
             .zip(&self.test)
@@ -122,7 +122,7 @@ impl GridVerdicts {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{F64x4, Lanes};
+    use crate::F64x4;
 
     /// Two joints (q[1] and q[2]), two cells each over [0, 2): (0, 0) free, (0, 1) colliding,
     /// (1, 0) to test, (1, 1) free.
@@ -153,7 +153,7 @@ mod tests {
         let q = [0.0, 0.5, 1.5];
         let verdicts = GridVerdicts::of(&[GRID], &q);
         assert!(verdicts.colliding.lane(0));
-        assert_eq!(verdicts.to_test(&[GRID], 3), LaneMask::NONE);
-        assert_eq!(verdicts.to_test(&[GRID], 2), LaneMask::from_bits(u32::MAX));
+        assert_eq!(verdicts.tested(&[GRID], 3), LaneMask::NONE);
+        assert_eq!(verdicts.tested(&[GRID], 2), LaneMask::from_bits(u32::MAX));
     }
 }

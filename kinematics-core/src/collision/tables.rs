@@ -154,7 +154,7 @@ impl CollisionTables<'_> {
             if hit.all() {
                 return hit;
             }
-            let to_test = L::Flags::from_mask(grids.to_test(self.grids, pair)).and_not(hit);
+            let to_test = L::Flags::from_mask(grids.tested(self.grids, pair)).and_not(hit);
             if !to_test.any() {
                 continue;
             }

@@ -180,7 +180,7 @@ pub fn pair_grids(tree: &KinematicTree, spheres: &[LinkSphere], pairs: &[(LinkId
         .filter(|(_, grid)| 2 * grid.counts().2 < grid.states.len())
         .collect();
     // The most sphere pairs first (stable: ties in the joints' order).
-    grids.sort_by(|a, b| b.0.cmp(&a.0));
+    grids.sort_by_key(|g| core::cmp::Reverse(g.0));
     grids.truncate(MAX_GRIDS);
     grids.into_iter().map(|(_, grid)| grid).collect()
 }
