@@ -38,7 +38,7 @@ pub const CELLS_1D: usize = 1024;
 /// the numbers of spheres of each pair's links): a grid halves its cells along each joint until
 /// it keeps to this, and where 16 cells a joint would not, the pairs get no grid. It bounds the
 /// work at compile time; the regions classified whole leave far less (VAMP's Panda: 256 x 256
-/// cells of 324 sphere pairs, 21 million at most, a few milliseconds in fact).
+/// cells of 324 sphere pairs, 21 million at most; 19 ms in fact, optimised).
 pub const WORK: usize = 25_000_000;
 
 /// The most grids a robot gets (the core's checks read as many): those of the most sphere pairs.
@@ -46,6 +46,10 @@ pub const MAX_GRIDS: usize = 8;
 
 /// The fraction of a cell's width each cell is widened by on each side before it is classified.
 const WIDENING: f64 = 1e-3;
+
+/// How far (m) a gap must clear zero for a cell to be decided: far above the rounding of the
+/// distances computed here, far below any sphere's size.
+const MARGIN: f64 = 1e-9;
 
 /// What a cell says of every configuration in it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -128,12 +132,21 @@ impl PairGrid {
 /// One side of a pair: its link's joints up to the pair's common ancestor (from the link
 /// upwards), a sphere holding its spheres, and the spheres.
 struct Side {
-    /// The joints up to the ancestor.
-    up: Vec<JointId>,
+    /// The transform from the link's frame to the ancestor's, from the link upwards: fixed parts
+    /// (folded together) and the moving joints' turns.
+    pieces: Vec<Piece>,
     /// A sphere holding every sphere of the side.
     bound: Carried,
     /// The spheres.
     spheres: Vec<Carried>,
+}
+
+/// A part of the transform from a side's link up to the common ancestor.
+enum Piece {
+    /// A fixed transform: three rows of a rotation and a translation.
+    Fixed([[f64; 4]; 3]),
+    /// A moving joint's turn about its unit axis (in the frame below it).
+    Turn(JointId, [f64; 3]),
 }
 
 /// A sphere of a side, with what bounds its motion.
@@ -228,7 +241,7 @@ fn grid(
                 let n = own.len().max(1) as f64;
                 let middle = [0, 1, 2].map(|i| own.iter().map(|s| s.center[i]).sum::<f64>() / n);
                 let radius = own.iter().map(|s| distance(s.center, middle) + s.radius).fold(0.0, f64::max);
-                Side { bound: carried(middle, radius), spheres: own, up }
+                Side { bound: carried(middle, radius), spheres: own, pieces: pieces(tree, &up) }
             };
             [side(a, up_a), side(b, up_b)]
         })
@@ -242,7 +255,7 @@ fn grid(
         let extent = [0, 1].map(|d| to[d] - from[d]);
         let middle = [0, 1].map(|d| lower[d] + (from[d] + to[d]) as f64 / 2.0 * width[d]);
         let half = [0, 1].map(|d| width[d] * (extent[d] as f64 / 2.0 + WIDENING));
-        let state = classify(tree, &joints, &sides, (middle, half), extent == [1, 1]);
+        let state = classify(&joints, &sides, (middle, half), extent == [1, 1]);
         if state != CellState::Test || extent == [1, 1] {
             for i in from[0]..to[0] {
                 states[i * cells[1] + from[1]..i * cells[1] + to[1]].fill(state);
@@ -266,37 +279,34 @@ fn grid(
 /// `middle` (each side's spheres placed by its frame there; each gap moves by at most the
 /// spheres' reaches times `half`). Unless `whole`, the first pair left to the tests ends the
 /// search (a region that is split is searched again in its parts).
-fn classify(
-    tree: &KinematicTree,
-    joints: &[JointId],
-    sides: &[[Side; 2]],
-    (middle, half): ([f64; 2], [f64; 2]),
-    whole: bool,
-) -> CellState {
+fn classify(joints: &[JointId], sides: &[[Side; 2]], (middle, half): ([f64; 2], [f64; 2]), whole: bool) -> CellState {
     let turns = middle.map(f64::sin_cos);
     let turn = |j: JointId| if joints[0] == j { turns[0] } else { turns[1] };
     let slack =
         |s: &Carried| -> f64 { s.reach.iter().map(|&(j, r)| r * if joints[0] == j { half[0] } else { half[1] }).sum() };
-    // The least a gap between two spheres can be in the region, and the most.
-    let gap = |x: &Carried, cx: [f64; 3], y: &Carried, cy: [f64; 3]| {
-        let (gap, moves) = (distance(cx, cy) - x.radius - y.radius, slack(x) + slack(y));
+    // The least a gap between two spheres can be in the region, and the most, from their centres
+    // there and how far each moves (widened by `MARGIN` for the rounding of what is computed here).
+    let gap = |(x, cx, sx): (&Carried, [f64; 3], f64), (y, cy, sy): (&Carried, [f64; 3], f64)| {
+        let (gap, moves) = (distance(cx, cy) - x.radius - y.radius, sx + sy + MARGIN);
         (gap - moves, gap + moves)
     };
     let mut state = CellState::Free;
     for [a, b] in sides {
-        let (frame_a, frame_b) = (frame(tree, &a.up, &turn), frame(tree, &b.up, &turn));
-        let (at_a, at_b) = (place(&frame_a, a.bound.center), place(&frame_b, b.bound.center));
-        if gap(&a.bound, at_a, &b.bound, at_b).0 > 0.0 {
+        let (frame_a, frame_b) = (frame(&a.pieces, &turn), frame(&b.pieces, &turn));
+        let bound_a = (&a.bound, place(&frame_a, a.bound.center), slack(&a.bound));
+        let bound_b = (&b.bound, place(&frame_b, b.bound.center), slack(&b.bound));
+        if gap(bound_a, bound_b).0 > 0.0 {
             continue;
         }
-        let placed_b: Vec<[f64; 3]> = b.spheres.iter().map(|s| place(&frame_b, s.center)).collect();
+        let placed_b: Vec<(&Carried, [f64; 3], f64)> =
+            b.spheres.iter().map(|s| (s, place(&frame_b, s.center), slack(s))).collect();
         for sa in &a.spheres {
-            let ca = place(&frame_a, sa.center);
-            if gap(sa, ca, &b.bound, at_b).0 > 0.0 {
+            let sa = (sa, place(&frame_a, sa.center), slack(sa));
+            if gap(sa, bound_b).0 > 0.0 {
                 continue;
             }
-            for (sb, cb) in b.spheres.iter().zip(&placed_b) {
-                let (least, most) = gap(sa, ca, sb, *cb);
+            for &sb in &placed_b {
+                let (least, most) = gap(sa, sb);
                 if most < 0.0 {
                     return CellState::Colliding;
                 }
@@ -312,30 +322,64 @@ fn classify(
     state
 }
 
-/// The frame of a side's link in the common ancestor's, each moving joint on `up` turned by the
-/// angle whose sine and cosine are `turn(joint)`: its origin and the images of the axes.
-fn frame(tree: &KinematicTree, up: &[JointId], turn: &impl Fn(JointId) -> (f64, f64)) -> [[f64; 3]; 4] {
-    let carry = |mut p: [f64; 3]| {
-        for &j in up {
-            let joint = tree.joint(j);
-            let y = joint.after_motion.apply(p);
-            let y = if joint.kind == JointKind::Fixed { y } else { rotate(joint.axis, turn(j), y) };
-            p = joint.origin.apply(y);
+/// The pieces of the transform from the frame below the joints `up` (from a link upwards) to the
+/// frame above them: each joint's fixed transforms (folded with their neighbours) and its turn.
+fn pieces(tree: &KinematicTree, up: &[JointId]) -> Vec<Piece> {
+    let mut out = Vec::new();
+    let mut fixed = identity();
+    for &j in up {
+        let joint = tree.joint(j);
+        fixed = compose(&affine(&joint.after_motion), &fixed);
+        if joint.kind != JointKind::Fixed {
+            out.push(Piece::Fixed(fixed));
+            out.push(Piece::Turn(j, joint.axis));
+            fixed = identity();
         }
-        p
-    };
-    let origin = carry([0.0; 3]);
-    let axis = |e: [f64; 3]| {
-        let p = carry(e);
-        [p[0] - origin[0], p[1] - origin[1], p[2] - origin[2]]
-    };
-    [origin, axis([1.0, 0.0, 0.0]), axis([0.0, 1.0, 0.0]), axis([0.0, 0.0, 1.0])]
+        fixed = compose(&affine(&joint.origin), &fixed);
+    }
+    out.push(Piece::Fixed(fixed));
+    out
+}
+
+/// The frame of a side's link in the common ancestor's, each turn by the angle whose sine and
+/// cosine are `turn(joint)`.
+fn frame(pieces: &[Piece], turn: &impl Fn(JointId) -> (f64, f64)) -> [[f64; 4]; 3] {
+    pieces.iter().fold(identity(), |below, piece| match piece {
+        Piece::Fixed(m) => compose(m, &below),
+        Piece::Turn(j, axis) => compose(&rotation(*axis, turn(*j)), &below),
+    })
+}
+
+/// The identity transform.
+fn identity() -> [[f64; 4]; 3] {
+    [[1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0]]
+}
+
+/// A fixed transform's rows: its images of the axes and of the origin, in floating point.
+fn affine(t: &crate::transform::FixedTransform) -> [[f64; 4]; 3] {
+    let origin = t.apply([0.0; 3]);
+    let axes = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]].map(|e| t.apply(e));
+    [0, 1, 2].map(|i| [axes[0][i] - origin[i], axes[1][i] - origin[i], axes[2][i] - origin[i], origin[i]])
+}
+
+/// `a` after `b`.
+fn compose(a: &[[f64; 4]; 3], b: &[[f64; 4]; 3]) -> [[f64; 4]; 3] {
+    [0, 1, 2].map(|i| {
+        let row = |k: usize| a[i][0] * b[0][k] + a[i][1] * b[1][k] + a[i][2] * b[2][k];
+        [row(0), row(1), row(2), row(3) + a[i][3]]
+    })
+}
+
+/// The turn about the unit `axis` by the angle whose sine and cosine are `(s, c)` (Rodrigues'
+/// formula), as rows.
+fn rotation(axis: [f64; 3], turn: (f64, f64)) -> [[f64; 4]; 3] {
+    let columns = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]].map(|e| rotate(axis, turn, e));
+    [0, 1, 2].map(|i| [columns[0][i], columns[1][i], columns[2][i], 0.0])
 }
 
 /// The point `p` of a side's link placed by its `frame`.
-fn place(frame: &[[f64; 3]; 4], p: [f64; 3]) -> [f64; 3] {
-    let [o, x, y, z] = frame;
-    [0, 1, 2].map(|i| o[i] + x[i] * p[0] + y[i] * p[1] + z[i] * p[2])
+fn place(frame: &[[f64; 4]; 3], p: [f64; 3]) -> [f64; 3] {
+    frame.map(|r| r[0] * p[0] + r[1] * p[1] + r[2] * p[2] + r[3])
 }
 
 /// For each moving joint on `up` (from the link upwards): a bound on the distance of the point
