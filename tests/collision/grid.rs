@@ -102,3 +102,10 @@ fn the_generated_checks_take_the_grids_verdicts() {
     }
     assert!(decided[0] > 0 && decided[1] > 0, "{decided:?}");
 }
+
+/// The compiler writes at most as many grids as the checks read: a grid beyond the core's count
+/// would only leave its pairs to the tests, so the two counts are one.
+#[test]
+fn the_compiler_writes_no_more_grids_than_the_checks_read() {
+    assert_eq!(kinematics::collision::MAX_GRIDS, kinematics::model::collision::grid::MAX_GRIDS);
+}
