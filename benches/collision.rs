@@ -1,7 +1,8 @@
 //! Collision checking (issue 30), per configuration, on VAMP's spherized Panda and UR5:
 //!
 //! - `sphere_centers` (one configuration, and batches of 1,024 in lanes, f64 and f32) against the
-//!   runtime reference's;
+//!   runtime reference's, and the generic form on 16 `f32` configurations at a time, the centres
+//!   kept in lanes;
 //! - `collides` in the tabletop (12 boxes) and shelf (18 boxes, capsules and cylinders) scenes of
 //!   `scenes/`, each configuration with its own verdict (the fraction free printed), and on
 //!   all-free configurations (no early exit), one at a time and in batches (lanes);
@@ -34,7 +35,7 @@ use std::time::Duration;
 use criterion::Throughput;
 use kinematics::collision::{BoxObstacle, Environment, PointCloud, SphereObstacle};
 use kinematics::model::collision::{Meshes, fixed_apart_pairs, link_spheres, sphere_pairs};
-use kinematics::{Configurations, F64x4, Kinematics, Lanes, SceneObstacles};
+use kinematics::{Configurations, F32x16, F64x4, Kinematics, Lanes, SceneObstacles};
 
 #[derive(Kinematics)]
 #[kinematics(urdf = "robots/panda_spherized.urdf", collision(srdf = "robots/panda.srdf"), scalars(f64, f32))]
@@ -381,6 +382,25 @@ macro_rules! robot {
         group.bench_function("sphere_centers_batch_f32", |b| {
             b.iter(|| <$robot>::sphere_centers_batch_f32(black_box(&qs32), &mut centers32).unwrap())
         });
+        // The centres kept in lanes (what a check in lanes reads, and what VAMP's figure
+        // measures): the generic form on sixteen `f32` configurations at a time, the loop
+        // dispatched once.
+        let packs: Vec<[F32x16; $n]> =
+            qs32.chunks_exact(16).map(|pack| std::array::from_fn(|j| F32x16::from_fn(|i| pack[i][j]))).collect();
+        group.throughput(Throughput::Elements(16 * packs.len() as u64));
+        group.bench_function("sphere_centers_lanes_f32x16", |b| {
+            b.iter(|| {
+                kinematics::dispatch(
+                    #[inline(always)]
+                    || {
+                        for q in &packs {
+                            black_box(&<$robot>::sphere_centers_generic(black_box(q)));
+                        }
+                    },
+                )
+            })
+        });
+        group.throughput(Throughput::Elements(qs.len() as u64));
         group.bench_function("self_collides_batch", |b| {
             b.iter(|| <$robot>::self_collides_batch(black_box(&qs), &mut verdicts).unwrap())
         });

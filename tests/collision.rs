@@ -5,7 +5,7 @@
 #![allow(clippy::panic, clippy::unwrap_used, clippy::expect_used)] // test helpers fail loudly
 
 use kinematics::model::collision::{Meshes, link_spheres};
-use kinematics::{AGREEMENT_TOLERANCE, AGREEMENT_TOLERANCE_F32, Configurations, F64x4, Kinematics};
+use kinematics::{AGREEMENT_TOLERANCE, AGREEMENT_TOLERANCE_F32, Configurations, F32x8, F64x4, Kinematics};
 
 /// VAMP's spherized Panda (59 spheres).
 #[derive(Kinematics)]
@@ -85,9 +85,9 @@ fn batches_lanes_and_f32_agree_with_the_scalar_centres() {
     let reach = reference.tree().reach();
     let qs: Vec<[f64; 6]> = Configurations::new(reference.tree()).take(37).map(|q| q.try_into().unwrap()).collect();
     let qs32: Vec<[f32; 6]> = qs.iter().map(|q| q.map(|x| x as f32)).collect();
-    // The batches place each sphere by its link's pose (`collision::place_spheres`), the other
-    // forms run the straight-line body: the same products associated differently, so they agree
-    // to rounding, not bit for bit.
+    // The batches (and the generic form) place each sphere by its link's pose
+    // (`collision::place_spheres`), the typed functions run the straight-line body: the same
+    // products associated differently, so they agree to rounding, not bit for bit.
     let (mut out, mut out32) = (vec![[[0.0; 3]; 40]; qs.len()], vec![[[0.0_f32; 3]; 40]; qs.len()]);
     Ur5::sphere_centers_batch(&qs, &mut out).unwrap();
     Ur5::sphere_centers_batch_f32(&qs32, &mut out32).unwrap();
@@ -118,13 +118,24 @@ fn batches_lanes_and_f32_agree_with_the_scalar_centres() {
             assert!((0..3).all(|i| (batch[k][i] - scalar[k][i]).abs() <= AGREEMENT_TOLERANCE), "Panda sphere {k}");
         }
     }
+    // The generic form places the centres by the link poses, as the batches do: in lanes, each
+    // lane bit for bit the generic form on its own configuration; that, within rounding of the
+    // typed function's straight-line body.
     let lanes: [F64x4; 6] = std::array::from_fn(|j| F64x4::new(std::array::from_fn(|l| qs[l][j])));
     let centers = Ur5::sphere_centers_generic(&lanes);
-    for (l, q) in qs.iter().take(4).enumerate() {
+    let lanes32: [F32x8; 6] = std::array::from_fn(|j| F32x8::new(std::array::from_fn(|l| qs[l][j] as f32)));
+    let centers32 = Ur5::sphere_centers_generic(&lanes32);
+    for (l, q) in qs.iter().take(8).enumerate() {
+        let (generic, generic32) = (Ur5::sphere_centers_generic(q), Ur5::sphere_centers_generic(&q.map(|x| x as f32)));
         let scalar = Ur5::sphere_centers(q);
         for k in 0..40 {
             for i in 0..3 {
-                assert_eq!(centers[k][i].to_array()[l], scalar[k][i]);
+                if l < 4 {
+                    assert_eq!(centers[k][i].to_array()[l].to_bits(), generic[k][i].to_bits(), "sphere {k}, lane {l}");
+                }
+                assert_eq!(centers32[k][i].to_array()[l].to_bits(), generic32[k][i].to_bits(), "sphere {k}, lane {l}");
+                let error = (generic[k][i] - scalar[k][i]).abs();
+                assert!(error <= AGREEMENT_TOLERANCE * reach, "sphere {k}: {error:e}");
             }
         }
     }

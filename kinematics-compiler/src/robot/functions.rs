@@ -115,16 +115,26 @@ impl Functions {
                     }
                 }
                 Form::Generic => {
+                    // The lanes' body, as the batches run it: where it is not the typed functions'
+                    // (the sphere centres, placed from the link poses), the doc says so.
+                    let placed = if lanes_g == g {
+                        String::new()
+                    } else {
+                        " Each centre is placed by its link's pose (the batches' way: the straight-line body of \
+                         the typed functions, in 8 or 16 lanes, is more than LLVM's vectorizer schedules and runs \
+                         in scalar pieces), so it may differ from theirs in the last bits."
+                            .to_owned()
+                    };
                     let doc = format!(
                         "{doc}, for any scalar type: the lane types `F64x4`, `F64x8`, `F32x8` and `F32x16` (four to \
                          sixteen configurations per call), dual numbers, or a type of your own. Not dispatched (it \
                          runs with the instruction set of your build): wrap a loop of calls in \
-                         `kinematics::dispatch` to run it with the widest set the CPU has, once for the whole loop."
+                         `kinematics::dispatch` to run it with the widest set the CPU has, once for the whole loop.{placed}"
                     );
                     quote! {
                         #[doc = #doc]
                         #[inline]
-                        #sig { #g(q) }
+                        #sig { #lanes_g(q) }
                     }
                 }
             };
