@@ -245,9 +245,6 @@ fn packs_from<L: Lanes, const N: usize, O: LaneValue<L>>(
     let len = out.len();
     for (pack, o) in out.chunks_mut(L::LANES).enumerate() {
         let packed: [L; N] = source.pack(pack * L::LANES, len - 1);
-        let value = (*f)(&packed);
-        for (i, slot) in o.iter_mut().enumerate() {
-            *slot = value.lane(i);
-        }
+        (*f)(&packed).write_lanes(o);
     }
 }

