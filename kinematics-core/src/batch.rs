@@ -1,7 +1,8 @@
 //! Batches: many configurations through a lane type, one output per configuration.
 //!
 //! [`batch`] packs `L::LANES` configurations at a time into lanes (a structure of arrays), runs
-//! the generated code once per pack, and unpacks each lane's result into the caller's output. The
+//! the generated code once per pack, and unpacks each lane's result into the caller's output, entry
+//! by entry (`LaneValue::write_lanes`: each entry of every lane written in place). The
 //! last pack is filled up with copies of the batch's last configuration, whose results are thrown
 //! away: every lane always computes a real configuration, and the tail costs one pack.
 //!
