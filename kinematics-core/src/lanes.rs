@@ -104,14 +104,14 @@ impl<L: Lanes> LaneValue<L> for Pose<L> {
         // Entry by entry, each entry's lanes one after another.
         for row in 0..3 {
             for column in 0..3 {
-                let entry = self.rotation[row][column];
+                let entry = &self.rotation[row][column];
                 for (i, pose) in out.iter_mut().enumerate() {
                     pose.rotation[row][column] = entry.lane(i);
                 }
             }
         }
         for axis in 0..3 {
-            let entry = self.translation[axis];
+            let entry = &self.translation[axis];
             for (i, pose) in out.iter_mut().enumerate() {
                 pose.translation[axis] = entry.lane(i);
             }
@@ -357,6 +357,16 @@ mod tests {
             let mut one = zero;
             pose(3).write_lane(7, &mut one);
             assert_eq!(one, pose(3).lane(7));
+            // A mask's lanes as verdicts; past the output's end, whatever was there stays.
+            let mask = crate::collision::LaneMask::from_bits(0b1010_0110_0001_1011);
+            for before in [false, true] {
+                let mut verdicts = [before; 16];
+                LaneValue::<F32x16>::write_lanes(&mask, &mut verdicts[..count]);
+                for (i, &verdict) in verdicts.iter().enumerate() {
+                    let expected = if i < count { mask.lane(i) } else { before };
+                    assert_eq!(verdict, expected, "mask, lane {i} of {count}");
+                }
+            }
         }
     }
 }
