@@ -10,7 +10,7 @@
 
 use std::hint::black_box;
 
-use kinematics::{AGREEMENT_TOLERANCE, AGREEMENT_TOLERANCE_F32, F32x8, F32x16, F64x4, F64x8};
+use kinematics::{AGREEMENT_TOLERANCE, AGREEMENT_TOLERANCE_F32, F32x8, F64x4, F64x8};
 
 use crate::check::{nan_pose, verify, widen};
 use crate::floors::floor_fast;
@@ -115,7 +115,7 @@ pub fn batches<R: Generated<N>, const N: usize>(mode: &mut Mode, fk: &Setup<N>) 
     mode.run("batch_columns1024_f32", &mut columns_f32);
     mode.pair_calls("batch1024_f32/batch_columns1024_f32", 8, &mut batch_f32, &mut columns_f32);
     // The batches' lane floor: the sin/cos of 1,024 configurations in the lanes the batch runs on
-    // this CPU (eight f64 or sixteen f32 with AVX-512, else four or eight), dispatched.
+    // this CPU (eight f64 with AVX-512, else four; eight f32 on every CPU), dispatched.
     let (n, _) = fk.sin_cos;
     let wide = kinematics::dispatched_level().contains("AVX-512");
     let floor64: Box<dyn FnMut(usize) -> f64> = if wide {
@@ -128,10 +128,7 @@ pub fn batches<R: Generated<N>, const N: usize>(mode: &mut Mode, fk: &Setup<N>) 
     let mut floor64 = floor64;
     mode.run("floor_batch1024_f64", &mut floor64);
     mode.pair_calls("batch1024_f64/floor_batch1024_f64", 8, &mut batch_f64, &mut floor64);
-    let floor32: Box<dyn FnMut(usize) -> f32> = if wide {
-        let packs: Vec<[F32x16; N]> = packs(&batch32, BATCH / 16);
-        Box::new(move |_| packs.iter().map(|p| floor_fast(p, n).lane(0)).sum())
-    } else {
+    let floor32: Box<dyn FnMut(usize) -> f32> = {
         let packs: Vec<[F32x8; N]> = packs(&batch32, BATCH / 8);
         Box::new(move |_| packs.iter().map(|p| floor_fast(p, n).lane(0)).sum())
     };

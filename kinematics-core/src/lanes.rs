@@ -1,7 +1,8 @@
 //! SIMD lane types: several configurations side by side in one value, on stable Rust.
 //!
 //! [`F64x4`] holds four `f64`, [`F32x8`] eight `f32`; [`F64x8`] and [`F32x16`], twice as many, fill
-//! an AVX-512 register (the generated batches take them where the CPU has AVX-512). They are plain arrays with lane-wise
+//! an AVX-512 register (the generated batches take `F64x8` where the CPU has AVX-512; `f32` stays in
+//! [`F32x8`], measured faster, see the guide's Lanes page). They are plain arrays with lane-wise
 //! arithmetic written as loops over the lanes, which LLVM turns into packed instructions (AVX2
 //! `ymm` registers with `-C target-cpu=native` on a machine that has them, pairs of SSE2 `xmm`
 //! registers on baseline x86-64); their sines and cosines are [`crate::trig`]'s lane routines. They
@@ -320,7 +321,8 @@ lane_type!(
     16,
     64,
     trig::sin_cos_f32_lanes,
-    "Sixteen `f32` lanes (one AVX-512 register; the batches use it where the CPU has AVX-512)."
+    "Sixteen `f32` lanes (one AVX-512 register), for your own loops: the generated batches keep `f32` in `F32x8`, \
+     which LLVM vectorizes where it leaves many bodies on sixteen lanes in scalar pieces (the guide's Lanes page)."
 );
 
 #[cfg(test)]

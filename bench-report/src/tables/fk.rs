@@ -111,8 +111,8 @@ fn lanes_section(s: &mut String, run: &Run) {
          `kinematics::dispatch`, beside as many scalar calls and the lane type's floor. Batches of 1,024: `batch` is\n\
          `tip_pose_batch` (rows, one array per configuration), `batch columns` is `tip_pose_batch_columns` (one slice\n\
          per joint), `scalar loop` the loop of `tip_pose` calls, and `floor batch` the batch's lane floor: the sin/cos\n\
-         alone of its 1,024 configurations in the lanes the batch runs on this CPU (`F64x8` and `F32x16` with AVX-512,\n\
-         else `F64x4` and `F32x8`). Rayon: `parallel::batch` of 16,384 against `tip_pose_batch` on one thread.\n"
+         alone of its 1,024 configurations in the lanes the batch runs on this CPU (`F64x8` with AVX-512, else `F64x4`;\n\
+         `F32x8` on every CPU). Rayon: `parallel::batch` of 16,384 against `tip_pose_batch` on one thread.\n"
     );
     let columns: Vec<&str> = LANES.iter().map(|l| l.0).collect();
     table(s, &run.rows, &columns, |r, i| fmt(r.ns.get(LANES[i].1).copied()));

@@ -85,8 +85,8 @@ pub fn notes() -> String {
          the result more (the dispatched body is a call LLVM cannot see through). Lanes (`F64x4`, `F32x8`) evaluate `tip_pose_generic` on four or\n\
          eight configurations per call inside `kinematics::dispatch`, as a user's own loop over lanes would, and are\n\
          shown per configuration, beside as many scalar calls on the same configurations; batches are\n\
-         `tip_pose_batch` / `tip_pose_batch_f32` (lanes inside: `F64x8` / `F32x16` where the CPU has AVX-512, else\n\
-         `F64x4` / `F32x8`) and the column-wise `tip_pose_batch_columns` / `tip_pose_batch_columns_f32`, against the\n\
+         `tip_pose_batch` / `tip_pose_batch_f32` (lanes inside: `F64x8` where the CPU has AVX-512, else `F64x4`;\n\
+         `F32x8` on every CPU) and the column-wise `tip_pose_batch_columns` / `tip_pose_batch_columns_f32`, against the\n\
          scalar loop, per configuration; rayon is `parallel::batch` over 16,384 configurations against\n\
          `tip_pose_batch` on one thread.\n\
          `k` and galaw read URDF only: DH robots have no figures for them. `k` orders its joints its own way; its inputs\n\

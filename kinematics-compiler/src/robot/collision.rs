@@ -321,15 +321,12 @@ pub(super) fn checks(cx: &Context<'_>, out: &mut Functions) {
             }
             Form::Batch(scalar) => {
                 let ScalarType { suffix, lanes, wide, .. } = &scalar;
-                let ((narrow, _), (wide_name, _)) = scalar.lane_names();
                 let doc = format!(
                     "[`Self::{}{suffix}`] for every configuration of `qs`, into `out` (one verdict each), in SIMD \
-                     lanes (`{}`, or `{}` where the CPU has AVX-512), each lane with its own verdict and a pack \
-                     ending when all of its lanes collide. An `out` of another length than `qs` is an error, \
-                     and nothing is written.",
+                     lanes ({}), each lane with its own verdict and a pack ending when all of its lanes collide. \
+                     An `out` of another length than `qs` is an error, and nothing is written.",
                     function.name(),
-                    narrow,
-                    wide_name,
+                    scalar.lanes_doc(),
                 );
                 quote! {
                     #[doc = #doc]

@@ -4,7 +4,7 @@
 //!
 //! Per computation: the typed functions, each calling its body through the core's `dispatch`; a
 //! `_generic` one for any `Real` (not dispatched); and `_batch` and `_batch_columns` ones over
-//! slices (`F64x4`/`F32x8` lanes, `F64x8`/`F32x16` under AVX-512, through the core's `batch_wide`
+//! slices (`F64x4` lanes, `F64x8` under AVX-512, and `F32x8` on every CPU, through the core's `batch_wide`
 //! and `batch_columns`).
 
 use proc_macro2::TokenStream;
@@ -68,11 +68,10 @@ impl Functions {
                 Form::Batch(scalar) => {
                     let ScalarType { suffix, lanes, wide, .. } = &scalar;
                     let typed = format_ident!("{}{suffix}", output.name(cx.one));
-                    let ((lanes_name, narrow), (wide_name, wide_count)) = scalar.lane_names();
+                    let lanes_doc = scalar.lanes_doc();
                     let many = format!(
-                        "[`Self::{typed}`] for every configuration of `qs`, into `out` (one each), {narrow} at a \
-                         time in SIMD lanes (`{lanes_name}`; {wide_count} in `{wide_name}` where the CPU has \
-                         AVX-512). An `out` of another length than `qs` is an error, and nothing is written."
+                        "[`Self::{typed}`] for every configuration of `qs`, into `out` (one each), in SIMD lanes \
+                         ({lanes_doc}). An `out` of another length than `qs` is an error, and nothing is written."
                     );
                     quote! {
                         #[doc = #many]

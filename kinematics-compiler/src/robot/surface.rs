@@ -182,6 +182,18 @@ fn plural(one_tip: bool, word: &str) -> String {
 
 /// One scalar type's functions: the name suffix, the type, and the lane types its batches run on
 /// (narrow, and wide where the CPU has AVX-512).
+///
+/// `f32` runs in eight lanes (`F32x8`) on every CPU, AVX-512 ones included (the body compiled
+/// with AVX-512's instructions there): sixteen lanes were measured slower. Over 77 generated
+/// bodies of 13 robots (poses, Jacobians, in a dispatched loop on this project's AMD EPYC
+/// machine, whose AVX-512 runs each 512-bit operation as two 256-bit halves), sixteen lanes took
+/// 1.19 times as long as eight (geometric mean), 0.75 to 5.0 times, because LLVM's SLP
+/// vectorizer, which turns the lanes' loops into vector instructions, runs out of its scheduling
+/// budget on sixteen lanes of many bodies (not only large ones) and leaves them in scalar pieces;
+/// no count of operations told which. The collision checks, measured the same way in two
+/// scenes: the UR5's 1.08 to 1.21 times faster in eight lanes, the Panda's 1.02 to 1.07 times
+/// slower. `f64` keeps eight lanes under AVX-512: over the same bodies eight took 0.99 times as
+/// long as four (0.78 to 1.52), and the checks 0.74 to 0.82 times.
 #[derive(Debug, Clone)]
 pub struct ScalarType {
     /// `""` or `"_f32"`.
@@ -190,14 +202,22 @@ pub struct ScalarType {
     pub t: TokenStream,
     /// `F64x4` or `F32x8`.
     pub lanes: TokenStream,
-    /// `F64x8` or `F32x16`.
+    /// `F64x8` or `F32x8` (the same as `lanes`).
     pub wide: TokenStream,
 }
 
 impl ScalarType {
     /// The names of the lane types its batches run on (narrow, wide) and how many lanes each has.
     pub fn lane_names(&self) -> ((&'static str, usize), (&'static str, usize)) {
-        if self.suffix.is_empty() { (("F64x4", 4), ("F64x8", 8)) } else { (("F32x8", 8), ("F32x16", 16)) }
+        if self.suffix.is_empty() { (("F64x4", 4), ("F64x8", 8)) } else { (("F32x8", 8), ("F32x8", 8)) }
+    }
+
+    /// The lanes a batch runs on, for its doc: "`F64x4`, or `F64x8` where the CPU has AVX-512".
+    pub fn lanes_doc(&self) -> String {
+        match self.lane_names() {
+            ((narrow, _), (wide, _)) if narrow == wide => format!("`{narrow}`, on every CPU"),
+            ((narrow, _), (wide, _)) => format!("`{narrow}`, or `{wide}` where the CPU has AVX-512"),
+        }
     }
 }
 
@@ -266,7 +286,7 @@ impl Render {
         let p = &self.p;
         [
             (self.scalars.f64, "", quote!(f64), quote!(#p::F64x4), quote!(#p::F64x8)),
-            (self.scalars.f32, "_f32", quote!(f32), quote!(#p::F32x8), quote!(#p::F32x16)),
+            (self.scalars.f32, "_f32", quote!(f32), quote!(#p::F32x8), quote!(#p::F32x8)),
         ]
         .into_iter()
         .filter(|(on, ..)| *on)
