@@ -164,7 +164,7 @@ impl<L: Lanes, A: LaneValue<L>, B: LaneValue<L>> LaneValue<L> for (A, B) {
 }
 
 macro_rules! lane_type {
-    ($name:ident, $scalar:ident, $lanes:literal, $align:literal, $sin_cos:path, $doc:literal) => {
+    ($name:ident, $scalar:ident, $lanes:literal, $align:literal, $sin_cos:path, $doc:literal $(, many = $sin_cos_many:path)?) => {
         #[doc = $doc]
         #[derive(Debug, Clone, Copy, PartialEq)]
         #[repr(C, align($align))]
@@ -263,6 +263,13 @@ macro_rules! lane_type {
                 let (s, c) = $sin_cos(self.0);
                 ($name(s), $name(c))
             }
+            $(
+            #[inline(always)]
+            fn sin_cos_many<const M: usize>(x: [Self; M]) -> ([Self; M], [Self; M]) {
+                let (s, c) = $sin_cos_many(x.map(|v| v.0));
+                (s.map($name), c.map($name))
+            }
+            )?
         }
 
         impl Lanes for $name {
@@ -312,8 +319,9 @@ lane_type!(
     f64,
     8,
     64,
-    trig::sin_cos_f64_lanes,
-    "Eight `f64` lanes (one AVX-512 register; the batches use it where the CPU has AVX-512)."
+    trig::sin_cos_packed,
+    "Eight `f64` lanes (one AVX-512 register; the batches use it where the CPU has AVX-512).",
+    many = trig::sin_cos_packed_many
 );
 lane_type!(
     F32x16,
@@ -332,6 +340,32 @@ mod tests {
     /// A pack's values written entry by entry (`write_lanes`, as the batches unpack them) are each
     /// lane's own value (`lane`), for poses, arrays of them, arrays of arrays, pairs and masks;
     /// a short output (the last pack of a batch) takes the first lanes and nothing past them.
+    /// Every lane type's sines and cosines of several values, whichever routine it takes, are each
+    /// lane's scalar ones bit for bit, slow-path values (beyond the bound, NaN) among them.
+    #[test]
+    fn lane_sines_and_cosines_are_each_lanes_scalar_ones() {
+        fn check<L: Lanes + Real + PartialEq + core::fmt::Debug>(scalar: fn(L::Scalar) -> (L::Scalar, L::Scalar))
+        where
+            L::Scalar: Real + Into<f64>,
+        {
+            let values = [0.3, -2.5, 1e7, f64::NAN, -0.0, 100.0, 3.0, -1e4, f64::INFINITY];
+            let x: [L; 3] =
+                core::array::from_fn(|m| L::from_fn(|i| L::Scalar::from_f64(values[(4 * m + i) % values.len()])));
+            let (s, c) = L::sin_cos_many(x);
+            for m in 0..3 {
+                for i in 0..L::LANES {
+                    let (ss, sc) = scalar(x[m].lane(i));
+                    let bits = |v: L::Scalar| v.into().to_bits();
+                    assert_eq!((bits(s[m].lane(i)), bits(c[m].lane(i))), (bits(ss), bits(sc)));
+                }
+            }
+        }
+        check::<F64x4>(trig::sin_cos_f64);
+        check::<F64x8>(trig::sin_cos_f64);
+        check::<F32x8>(trig::sin_cos_f32);
+        check::<F32x16>(trig::sin_cos_f32);
+    }
+
     #[test]
     fn written_lanes_are_each_lanes_value() {
         let x = |k: usize| F32x16::from_fn(|i| (100 * k + i) as f32);

@@ -192,8 +192,9 @@ fn plural(one_tip: bool, word: &str) -> String {
 /// budget on sixteen lanes of many bodies (not only large ones) and leaves them in scalar pieces;
 /// no count of operations told which. The collision checks, measured the same way in two
 /// scenes: the UR5's 1.08 to 1.21 times faster in eight lanes, the Panda's 1.02 to 1.07 times
-/// slower. `f64` keeps eight lanes under AVX-512: over the same bodies eight took 0.99 times as
-/// long as four (0.78 to 1.52), and the checks 0.74 to 0.82 times.
+/// slower. `f64` keeps eight lanes under AVX-512: over the same bodies eight took 0.80 times as
+/// long as four (0.51 to 1.40; `F64x8` takes the core's packed sine and cosine), and the checks
+/// 0.74 to 0.82 times.
 #[derive(Debug, Clone)]
 pub struct ScalarType {
     /// `""` or `"_f32"`.

@@ -147,10 +147,20 @@ pub trait Kernel: Copy {
     fn in_fast_range(self) -> bool;
     /// The slow path ([`sin_cos_slow`]).
     fn sin_cos_slow(self) -> (Self, Self);
+    /// The magnitude's bits, ordered as the magnitudes are (a NaN's above infinity's).
+    fn magnitude_key(self) -> u64;
+    /// [`FAST_BOUND`]'s key: the fast path is right exactly for values whose key is at most it.
+    const BOUND_KEY: u64;
 }
 
 impl Kernel for f64 {
     const ZERO: Self = 0.0;
+    const BOUND_KEY: u64 = FAST_BOUND.to_bits();
+
+    #[inline(always)]
+    fn magnitude_key(self) -> u64 {
+        self.to_bits() & !(1 << 63)
+    }
 
     #[inline(always)]
     fn sin_cos_fast(self) -> (Self, Self) {
@@ -170,6 +180,13 @@ impl Kernel for f64 {
 
 impl Kernel for f32 {
     const ZERO: Self = 0.0;
+    // 2^20 is an f32.
+    const BOUND_KEY: u64 = (FAST_BOUND as f32).to_bits() as u64;
+
+    #[inline(always)]
+    fn magnitude_key(self) -> u64 {
+        u64::from(self.to_bits() & !(1 << 31))
+    }
 
     #[inline(always)]
     fn sin_cos_fast(self) -> (Self, Self) {

@@ -170,6 +170,49 @@ fn lanes_equal_scalar_bit_for_bit() {
     check(values);
 }
 
+/// The packed routines (one loop over every lane of several values, one test of the fast range
+/// for all of them) give each lane what the scalar routine gives its value, bit for bit, with the
+/// slow path's values (beyond the bound, NaN, infinities) anywhere among them.
+#[test]
+fn packed_lanes_equal_scalar_bit_for_bit() {
+    let values: [f64; 13] =
+        [0.0, -0.0, 0.3, -2.5, PI, 100.0, -1e4, FAST_BOUND, 2e6, f64::NAN, f64::INFINITY, 1e-310, f64::MAX];
+    let at = |k: usize| values[k % values.len()];
+    for start in 0..values.len() {
+        // Three values of eight lanes; the slow ones fall in every value and lane in turn.
+        let x: [[f64; 8]; 3] = core::array::from_fn(|m| core::array::from_fn(|i| at(start + 8 * m + i)));
+        let (s, c) = sin_cos_packed_many(x);
+        let x32 = x.map(|v| v.map(|v| v as f32));
+        let (s32, c32) = sin_cos_packed_many(x32);
+        for m in 0..3 {
+            for i in 0..8 {
+                let (ss, sc) = sin_cos_f64(x[m][i]);
+                assert_eq!((s[m][i].to_bits(), c[m][i].to_bits()), (ss.to_bits(), sc.to_bits()), "x = {:e}", x[m][i]);
+                let (ss, sc) = sin_cos_f32(x32[m][i]);
+                assert_eq!(
+                    (s32[m][i].to_bits(), c32[m][i].to_bits()),
+                    (ss.to_bits(), sc.to_bits()),
+                    "x = {:e}",
+                    x32[m][i]
+                );
+            }
+        }
+        let (one_s, one_c) = sin_cos_packed(x[0]);
+        assert_eq!(
+            (one_s.map(f64::to_bits), one_c.map(f64::to_bits)),
+            (s[0].map(f64::to_bits), c[0].map(f64::to_bits))
+        );
+    }
+    // Every value fast: the slow path's branch not taken.
+    let fast: [[f64; 8]; 2] = core::array::from_fn(|m| core::array::from_fn(|i| (m * 8 + i) as f64 - 7.5));
+    let (s, c) = sin_cos_packed_many(fast);
+    for m in 0..2 {
+        for i in 0..8 {
+            assert_eq!((s[m][i], c[m][i]), sin_cos_f64(fast[m][i]));
+        }
+    }
+}
+
 #[test]
 fn the_quadrant_factor_is_2_over_pi_as_the_script_computed_it() {
     assert_eq!(super::coefficients::FRAC_2_PI.to_bits(), super::coefficients::FRAC_2_PI_BITS);
