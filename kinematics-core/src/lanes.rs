@@ -337,9 +337,6 @@ lane_type!(
 mod tests {
     use super::*;
 
-    /// A pack's values written entry by entry (`write_lanes`, as the batches unpack them) are each
-    /// lane's own value (`lane`), for poses, arrays of them, arrays of arrays, pairs and masks;
-    /// a short output (the last pack of a batch) takes the first lanes and nothing past them.
     /// Every lane type's sines and cosines of several values, whichever routine it takes, are each
     /// lane's scalar ones bit for bit, slow-path values (beyond the bound, NaN) among them.
     #[test]
@@ -366,6 +363,9 @@ mod tests {
         check::<F32x16>(trig::sin_cos_f32);
     }
 
+    /// A pack's values written entry by entry (`write_lanes`, as the batches unpack them) are each
+    /// lane's own value (`lane`), for poses, arrays of them, arrays of arrays, pairs and masks;
+    /// a short output (the last pack of a batch) takes the first lanes and nothing past them.
     #[test]
     fn written_lanes_are_each_lanes_value() {
         let x = |k: usize| F32x16::from_fn(|i| (100 * k + i) as f32);
