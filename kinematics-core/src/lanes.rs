@@ -341,9 +341,11 @@ mod tests {
     /// lane's scalar ones bit for bit, slow-path values (beyond the bound, NaN) among them.
     #[test]
     fn lane_sines_and_cosines_are_each_lanes_scalar_ones() {
-        fn check<L: Lanes + Real + PartialEq + core::fmt::Debug>(scalar: fn(L::Scalar) -> (L::Scalar, L::Scalar))
+        fn check<L, F>(scalar: F)
         where
+            L: Lanes + Real,
             L::Scalar: Real + Into<f64>,
+            F: Fn(L::Scalar) -> (L::Scalar, L::Scalar),
         {
             let values = [0.3, -2.5, 1e7, f64::NAN, -0.0, 100.0, 3.0, -1e4, f64::INFINITY];
             let x: [L; 3] =
@@ -357,10 +359,10 @@ mod tests {
                 }
             }
         }
-        check::<F64x4>(trig::sin_cos_f64);
-        check::<F64x8>(trig::sin_cos_f64);
-        check::<F32x8>(trig::sin_cos_f32);
-        check::<F32x16>(trig::sin_cos_f32);
+        check::<F64x4, _>(trig::sin_cos_f64);
+        check::<F64x8, _>(trig::sin_cos_f64);
+        check::<F32x8, _>(trig::sin_cos_f32);
+        check::<F32x16, _>(trig::sin_cos_f32);
     }
 
     /// A pack's values written entry by entry (`write_lanes`, as the batches unpack them) are each
