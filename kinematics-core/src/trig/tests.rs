@@ -170,6 +170,27 @@ fn lanes_equal_scalar_bit_for_bit() {
     check(values);
 }
 
+/// The packed routines decide the slow path by the largest magnitude key (`widest.max(key)`, an
+/// integer maximum): that is right only if a key is at most the bound's key exactly where the
+/// fast path is right. Held at the bound and its neighbours, zeros, subnormals, infinities and
+/// NaNs of both signs and both types, so a NaN can never slip under the bound.
+#[test]
+fn the_magnitude_key_orders_as_the_fast_range() {
+    let f64s = [0.0, 1e-310, 1.0, FAST_BOUND.next_down(), FAST_BOUND, FAST_BOUND.next_up(), 1e22, f64::MAX];
+    for x in f64s.into_iter().chain([f64::INFINITY, f64::NAN, -f64::NAN]) {
+        for x in [x, -x] {
+            assert_eq!(x.magnitude_key() <= f64::BOUND_KEY, x.in_fast_range(), "x = {x:e}");
+        }
+    }
+    let bound = FAST_BOUND as f32;
+    let f32s = [0.0, 1e-40, 1.0, bound.next_down(), bound, bound.next_up(), 1e30, f32::MAX];
+    for x in f32s.into_iter().chain([f32::INFINITY, f32::NAN, -f32::NAN]) {
+        for x in [x, -x] {
+            assert_eq!(x.magnitude_key() <= f32::BOUND_KEY, Kernel::in_fast_range(x), "x = {x:e}");
+        }
+    }
+}
+
 /// The packed routines (one loop over every lane of several values, one test of the fast range
 /// for all of them) give each lane what the scalar routine gives its value, bit for bit, with the
 /// slow path's values (beyond the bound, NaN, infinities) anywhere among them.
