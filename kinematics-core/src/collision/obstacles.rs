@@ -121,6 +121,69 @@ pub struct Environment<'a> {
     pub(super) cylinders: &'a [CylinderObstacle],
     pub(super) boxes: &'a [BoxObstacle],
     pub(super) query: Option<&'a dyn SphereQuery>,
+    /// The box, its axes the world's, holding every obstacle of the four slices (`None` when
+    /// they are empty): a check tests each link's bounding sphere against it first and skips
+    /// the obstacles for a link no lane brings near it.
+    pub(super) extent: Option<Extent>,
+}
+
+/// A box, its axes the world's, holding obstacles: its centre and half extents, padded by
+/// 1e-5 of its largest coordinate plus 1e-5 m, far beyond the rounding of an `f32` test, so a
+/// sphere it misses misses every obstacle inside it in every lane type's arithmetic.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) struct Extent {
+    pub(super) center: Vec3,
+    pub(super) half: Vec3,
+}
+
+impl Extent {
+    /// The smallest box, its axes the world's, holding every obstacle, padded; `None` for none.
+    /// Each obstacle's own box: a sphere's and a capsule's ends give or take the radius; a
+    /// cylinder's too (its caps lie within the radius of its ends on every axis); a turned box
+    /// reaches `sum_k |axis_k[i]| half_k` from its centre along world axis `i`.
+    fn of(
+        spheres: &[SphereObstacle],
+        capsules: &[CapsuleObstacle],
+        cylinders: &[CylinderObstacle],
+        boxes: &[BoxObstacle],
+    ) -> Option<Self> {
+        let mut lower = [f64::INFINITY; 3];
+        let mut upper = [f64::NEG_INFINITY; 3];
+        let mut hold = |center: Vec3, reach: Vec3| {
+            for i in 0..3 {
+                lower[i] = lower[i].min(center[i] - reach[i]);
+                upper[i] = upper[i].max(center[i] + reach[i]);
+            }
+        };
+        for s in spheres {
+            hold(s.center, [s.radius; 3]);
+        }
+        for (a, b, radius) in
+            capsules.iter().map(|c| (c.a, c.b, c.radius)).chain(cylinders.iter().map(|c| (c.a, c.b, c.radius)))
+        {
+            hold(a, [radius; 3]);
+            hold(b, [radius; 3]);
+        }
+        for b in boxes {
+            let reach = [0, 1, 2].map(|i| (0..3).map(|k| b.rotation[k][i].abs() * b.half_extents[k]).sum());
+            hold(b.center, reach);
+        }
+        if lower[0] > upper[0] {
+            return None;
+        }
+        let largest = lower.iter().chain(&upper).fold(0.0_f64, |m, x| m.max(x.abs()));
+        let pad = 1e-5 * largest + 1e-5;
+        Some(Extent {
+            center: [0, 1, 2].map(|i| 0.5 * (lower[i] + upper[i])),
+            half: [0, 1, 2].map(|i| 0.5 * (upper[i] - lower[i]) + pad),
+        })
+    }
+
+    /// In lanes, for a check.
+    #[inline(always)]
+    pub(super) fn prepare<L: CheckLanes>(&self) -> AlignedBox<L> {
+        AlignedBox { center: splat(self.center), half: splat(self.half) }
+    }
 }
 
 /// Obstacles a check asks about one sphere at a time, behind an index of their own: a point
@@ -213,12 +276,13 @@ impl<'a> Environment<'a> {
             });
             check(&numbers, b.half_extents.iter().all(|&h| h > 0.0) && orthonormal, "box", index)?;
         }
-        Ok(Environment { spheres, capsules, cylinders, boxes, query: None })
+        let extent = Extent::of(spheres, capsules, cylinders, boxes);
+        Ok(Environment { spheres, capsules, cylinders, boxes, query: None, extent })
     }
 
     /// No obstacles.
     pub const fn empty() -> Self {
-        Environment { spheres: &[], capsules: &[], cylinders: &[], boxes: &[], query: None }
+        Environment { spheres: &[], capsules: &[], cylinders: &[], boxes: &[], query: None, extent: None }
     }
 
     /// These obstacles and those of `query` (a point cloud's index, say), which every check then
@@ -535,6 +599,117 @@ impl<L: CheckLanes> Prepared<L> for TurnedBox<L> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::splitmix::SplitMix;
+    use std::{vec, vec::Vec};
+
+    fn point(rng: &mut SplitMix, scale: f64) -> Vec3 {
+        [0; 3].map(|_| scale * (2.0 * rng.next() - 1.0))
+    }
+
+    /// A unit vector `u` and two more making a right-handed orthonormal frame with it.
+    fn frame(rng: &mut SplitMix) -> [Vec3; 3] {
+        let u = loop {
+            let v = point(rng, 1.0);
+            let n = sqrt(dot(v, v));
+            if n > 0.1 {
+                break v.map(|x| x / n);
+            }
+        };
+        let helper = if u[0].abs() < 0.9 { [1.0, 0.0, 0.0] } else { [0.0, 1.0, 0.0] };
+        let cross =
+            |a: Vec3, b: Vec3| [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+        let v = cross(u, helper);
+        let n = sqrt(dot(v, v));
+        let v = v.map(|x| x / n);
+        [u, v, cross(u, v)]
+    }
+
+    /// Random obstacles of every kind (boxes turned and not), and points of each on its
+    /// surface where it reaches farthest: a sphere's poles, a capsule's ends pushed out along
+    /// each axis, a cylinder's cap rims, a box's corners.
+    fn obstacles_and_extremes(rng: &mut SplitMix) -> Obstacles {
+        let (mut spheres, mut capsules, mut cylinders, mut boxes, mut extremes) =
+            (vec![], vec![], vec![], vec![], vec![]);
+        let axes = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+        let poles = axes.iter().flat_map(|e| [e.map(|x| x), e.map(|x| -x)]).collect::<Vec<Vec3>>();
+        let add = |c: Vec3, d: Vec3, k: f64| [c[0] + k * d[0], c[1] + k * d[1], c[2] + k * d[2]];
+        for _ in 0..1 + (rng.next() * 3.0) as usize {
+            let s = SphereObstacle { center: point(rng, 2.0), radius: 0.05 + rng.next() };
+            extremes.extend(poles.iter().map(|&e| add(s.center, e, s.radius)));
+            spheres.push(s);
+        }
+        for _ in 0..1 + (rng.next() * 3.0) as usize {
+            let c = CapsuleObstacle { a: point(rng, 2.0), b: point(rng, 2.0), radius: 0.05 + rng.next() };
+            extremes.extend(poles.iter().flat_map(|&e| [add(c.a, e, c.radius), add(c.b, e, c.radius)]));
+            capsules.push(c);
+        }
+        for _ in 0..1 + (rng.next() * 3.0) as usize {
+            let [u, v, w] = frame(rng);
+            let (a, radius) = (point(rng, 2.0), 0.05 + rng.next());
+            let b = add(a, u, 0.1 + rng.next());
+            for k in 0..64 {
+                let t = k as f64 * core::f64::consts::TAU / 64.0;
+                let rim = [0, 1, 2].map(|i| radius * (t.cos() * v[i] + t.sin() * w[i]));
+                extremes.extend([add(a, rim, 1.0), add(b, rim, 1.0)]);
+            }
+            cylinders.push(CylinderObstacle { a, b, radius });
+        }
+        for turned in [false, true] {
+            let rotation = if turned { frame(rng) } else { axes };
+            let b = BoxObstacle { center: point(rng, 2.0), rotation, half_extents: [0; 3].map(|_| 0.05 + rng.next()) };
+            for corner in 0..8 {
+                let signs = [0, 1, 2].map(|k| if corner >> k & 1 == 1 { 1.0 } else { -1.0 });
+                let offset = [0, 1, 2].map(|i| (0..3).map(|k| signs[k] * b.half_extents[k] * b.rotation[k][i]).sum());
+                extremes.push(add(b.center, offset, 1.0));
+            }
+            boxes.push(b);
+        }
+        Obstacles { spheres, capsules, cylinders, boxes, extremes }
+    }
+
+    /// Obstacles of every kind, and points where they reach farthest.
+    struct Obstacles {
+        spheres: Vec<SphereObstacle>,
+        capsules: Vec<CapsuleObstacle>,
+        cylinders: Vec<CylinderObstacle>,
+        boxes: Vec<BoxObstacle>,
+        extremes: Vec<Vec3>,
+    }
+
+    /// The box the checks test each link against first holds every point of every obstacle,
+    /// with at most its padding to spare on a side some obstacle reaches exactly (every side,
+    /// in environments of spheres and boxes alone); with no obstacle there is none.
+    #[test]
+    fn the_extent_holds_every_obstacle() {
+        let mut rng = SplitMix(0x6578_7465_6e74);
+        for round in 0..200 {
+            let Obstacles { spheres, capsules, cylinders, boxes, extremes } = obstacles_and_extremes(&mut rng);
+            let env = Environment::new(&spheres, &capsules, &cylinders, &boxes).unwrap();
+            let Extent { center, half } = env.extent.expect("obstacles: an extent");
+            for p in &extremes {
+                for i in 0..3 {
+                    assert!((p[i] - center[i]).abs() <= half[i], "round {round}: {p:?} outside on axis {i}");
+                }
+            }
+            // Spheres and boxes give their exact reach: the padding is all that is left over.
+            let env = Environment::new(&spheres, &[], &[], &boxes).unwrap();
+            let Extent { center, half } = env.extent.unwrap();
+            let largest = center.iter().zip(&half).fold(0.0_f64, |m, (c, h)| m.max(c.abs() + h));
+            for i in 0..3 {
+                for side in [-1.0, 1.0] {
+                    let face = center[i] + side * half[i];
+                    let nearest = extremes[..6 * spheres.len()]
+                        .iter()
+                        .chain(&extremes[extremes.len() - 16..])
+                        .map(|p| (face - p[i]).abs())
+                        .fold(f64::INFINITY, f64::min);
+                    assert!(nearest <= 1e-5 * largest + 1e-5 + 1e-12, "round {round}: axis {i}, {nearest} to spare");
+                }
+            }
+        }
+        assert_eq!(Environment::empty().extent, None);
+        assert_eq!(Environment::new(&[], &[], &[], &[]).unwrap().extent, None);
+    }
 
     /// `o` at distance `d` from `p`: a sphere there of radius a hair over `d` hits it, one a hair
     /// under does not (inside, `d` = 0, any radius hits); on `f64`, `f32` and lanes alike (lane 1
