@@ -123,30 +123,38 @@ impl CollisionTables<'_> {
             return hit;
         }
         let extent = env.extent.map(|extent| extent.prepare::<L>());
-        let mut bounds = [(0, [L::from_f64(0.0); 3], L::from_f64(0.0)); CHUNK];
-        let mut near = [(0, [L::from_f64(0.0); 3], L::from_f64(0.0)); CHUNK];
-        for first in (0..self.links.len()).step_by(CHUNK) {
-            let links = first..self.links.len().min(first + CHUNK);
-            for (slot, k) in bounds.iter_mut().zip(links.clone()) {
-                *slot = (k, self.bound(poses, k), L::from_f64(self.links[k].3));
+        let n = self.links.len();
+        // The links' bounds, and below the positions of those the obstacles are tested
+        // against: a second array of placed bounds, zeroed like this one on every check, was
+        // measured 10% of the Panda's check in `F32x8` lanes (a `memset` of kilobytes).
+        let mut bounds = [([L::from_f64(0.0); 3], L::from_f64(0.0)); CHUNK];
+        for first in (0..n).step_by(CHUNK) {
+            let count = CHUNK.min(n - first);
+            for (slot, k) in bounds.iter_mut().zip(first..first + count) {
+                *slot = (self.bound(poses, k), L::from_f64(self.links[k].3));
             }
-            let bounds = &bounds[..links.len()];
             if let Some(extent) = &extent {
-                let mut count = 0;
-                for bound in bounds {
-                    if extent.hits(&bound.1, bound.2).and_not(hit).any() {
-                        near[count] = *bound;
-                        count += 1;
+                let mut near = [0u8; CHUNK];
+                let mut listed = 0;
+                for (i, (center, radius)) in bounds[..count].iter().enumerate() {
+                    if extent.hits(center, *radius).and_not(hit).any() {
+                        near[listed] = i as u8;
+                        listed += 1;
                     }
                 }
-                let chunk = Chunk { tables: self, poses, bounds: &near[..count] };
+                let chunk = Chunk { tables: self, poses, first, bounds: &bounds, list: &near[..listed] };
                 hit = chunk.against(env.spheres, hit);
                 hit = chunk.against(env.capsules, hit);
                 hit = chunk.against(env.cylinders, hit);
                 hit = chunk.against(env.boxes, hit);
             }
             if let Some(query) = env.query {
-                hit = Chunk { tables: self, poses, bounds }.against_query(query, hit);
+                let mut every = [0u8; CHUNK];
+                for (i, slot) in (0..).zip(&mut every) {
+                    *slot = i;
+                }
+                hit = Chunk { tables: self, poses, first, bounds: &bounds, list: &every[..count] }
+                    .against_query(query, hit);
             }
             if hit.all() {
                 return hit;
@@ -273,12 +281,15 @@ pub fn place_spheres<T: crate::Real, const S: usize>(poses: &[Pose<T>], places: 
     centers
 }
 
-/// A few links of a check, each with its bounding sphere placed: its index, centre and radius.
+/// Consecutive links of a check from `first`, their bounding spheres placed, and which of them
+/// (positions in `bounds`) the tests take.
 #[derive(Clone, Copy)]
 struct Chunk<'c, 't, L> {
     tables: &'c CollisionTables<'t>,
     poses: &'c [Pose<L>],
-    bounds: &'c [(usize, [L; 3], L)],
+    first: usize,
+    bounds: &'c [([L; 3], L)],
+    list: &'c [u8],
 }
 
 impl<L: CheckLanes> Chunk<'_, '_, L> {
@@ -304,9 +315,10 @@ impl<L: CheckLanes> Chunk<'_, '_, L> {
     /// a time.
     #[inline(always)]
     fn against_query(&self, query: &dyn SphereQuery, mut hit: L::Flags) -> L::Flags {
-        let Chunk { tables, poses, bounds } = *self;
-        for &(k, ref bound, radius) in bounds {
-            let near = query_lanes(query, bound, radius, !hit.bits());
+        let Chunk { tables, poses, first, bounds, list } = *self;
+        for &i in list {
+            let (k, (bound, radius)) = (first + usize::from(i), bounds[usize::from(i)]);
+            let near = query_lanes(query, &bound, radius, !hit.bits());
             if !near.any() {
                 continue;
             }
@@ -337,10 +349,11 @@ struct Against<'a, 'c, 't, L: CheckLanes> {
 impl<L: CheckLanes> Visit<L> for Against<'_, '_, '_, L> {
     #[inline(always)]
     fn visit<P: Prepared<L>>(&mut self, prepared: &P) {
-        let Chunk { tables, poses, bounds } = *self.chunk;
+        let Chunk { tables, poses, first, bounds, list } = *self.chunk;
         let mut hit = self.hit;
-        for &(k, ref bound, radius) in bounds {
-            let near = prepared.hits(bound, radius).and_not(hit);
+        for &i in list {
+            let (k, (bound, radius)) = (first + usize::from(i), &bounds[usize::from(i)]);
+            let near = prepared.hits(bound, *radius).and_not(hit);
             if !near.any() {
                 continue;
             }
