@@ -321,8 +321,26 @@ impl<'a> Environment<'a> {
 
     /// [`Environment::hits`] on lanes: the lanes where the sphere touches an obstacle. The
     /// centre's lanes must be finite (a NaN coordinate counts as a hit; an infinite one does not).
+    /// The obstacles are asked only where the sphere touches, on some lane, the box along the
+    /// world's axes holding them all (worked out by [`Environment::new`]).
     #[inline(always)]
     pub fn hits_lanes<L: CheckLanes>(&self, center: &[L; 3], radius: L) -> L::Flags {
+        let mut hit = L::Flags::NONE;
+        // The obstacles only where the sphere touches the box holding them all on some lane.
+        if let Some(extent) = self.extent
+            && extent.prepare::<L>().hits(center, radius).any()
+        {
+            hit = self.shapes_hit(center, radius);
+        }
+        if let Some(query) = self.query {
+            hit = hit | query_lanes(query, center, radius, !hit.bits());
+        }
+        hit
+    }
+
+    /// The lanes where the sphere touches one of the four slices' obstacles.
+    #[inline(always)]
+    fn shapes_hit<L: CheckLanes>(&self, center: &[L; 3], radius: L) -> L::Flags {
         let mut hit = L::Flags::NONE;
         // Each loop ends when every lane is hit. Besides saving work, the exit keeps LLVM from
         // vectorizing across obstacles (a reduction it would otherwise pack, scattering each
@@ -350,9 +368,6 @@ impl<'a> Environment<'a> {
             if hit.all() {
                 return hit;
             }
-        }
-        if let Some(query) = self.query {
-            hit = hit | query_lanes(query, center, radius, !hit.bits());
         }
         hit
     }
@@ -674,6 +689,44 @@ mod tests {
         cylinders: Vec<CylinderObstacle>,
         boxes: Vec<BoxObstacle>,
         extremes: Vec<Vec3>,
+    }
+
+    /// `Environment::hits` (which asks the extent first) and its lanes answer as every obstacle
+    /// asked one by one, for spheres near the obstacles, far from them and astride the extent's
+    /// sides; both answers come up often.
+    #[test]
+    fn the_environment_answers_as_its_obstacles_one_by_one() {
+        let mut rng = SplitMix(0x6869_7473);
+        let mut counts = [0; 2];
+        for round in 0..200 {
+            let Obstacles { spheres, capsules, cylinders, boxes, .. } = obstacles_and_extremes(&mut rng);
+            let env = Environment::new(&spheres, &capsules, &cylinders, &boxes).unwrap();
+            let every = |c: Vec3, r: f64| {
+                spheres.iter().any(|o| o.hits(&c, r))
+                    || capsules.iter().any(|o| o.hits(&c, r))
+                    || cylinders.iter().any(|o| o.hits(&c, r))
+                    || boxes.iter().any(|o| o.hits(&c, r))
+            };
+            for _ in 0..16 {
+                let (centers, radii): ([Vec3; 4], [f64; 4]) =
+                    (core::array::from_fn(|_| point(&mut rng, 3.0)), core::array::from_fn(|_| 0.01 + 1.5 * rng.next()));
+                let lanes = env
+                    .hits_lanes(&[0, 1, 2].map(|i| crate::F64x4::new(centers.map(|c| c[i]))), crate::F64x4::new(radii));
+                for l in 0..4 {
+                    let expected = every(centers[l], radii[l]);
+                    assert_eq!(
+                        env.hits(centers[l], radii[l]),
+                        expected,
+                        "round {round}: {:?} {}",
+                        centers[l],
+                        radii[l]
+                    );
+                    assert_eq!(lanes.bits().lane(l), expected, "round {round}, lane {l}");
+                    counts[usize::from(expected)] += 1;
+                }
+            }
+        }
+        assert!(counts[0] > 2000 && counts[1] > 2000, "free and hit: {counts:?}");
     }
 
     /// The box the checks test each link against first holds every point of every obstacle,
