@@ -308,7 +308,8 @@ fn enclosing(balls: impl Iterator<Item = (Vec3, f64)> + Clone) -> (Vec3, f64) {
     if low[0] > high[0] {
         return ([0.0; 3], 0.0);
     }
-    let middle = [0.5 * (low[0] + high[0]), 0.5 * (low[1] + high[1]), 0.5 * (low[2] + high[2])];
+    // Halved before they are added, as the environment's extent is: `low + high` can overflow.
+    let middle = [0, 1, 2].map(|i| 0.5 * low[i] + 0.5 * high[i]);
     let reach = balls
         .map(|(c, r)| {
             let d = [c[0] - middle[0], c[1] - middle[1], c[2] - middle[2]];

@@ -129,7 +129,9 @@ pub struct Environment<'a> {
 
 /// A box, its axes the world's, holding obstacles: its centre and half extents, padded by
 /// 1e-5 of its largest coordinate plus 1e-5 m, far beyond the rounding of an `f32` test, so a
-/// sphere it misses misses every obstacle inside it in every lane type's arithmetic.
+/// sphere it misses misses every obstacle inside it in every lane type's arithmetic. Obstacles
+/// near `f64`'s largest values overflow it to infinities or NaN, which every test counts as
+/// touching: the obstacles are then asked, never skipped.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(super) struct Extent {
     pub(super) center: Vec3,
@@ -173,9 +175,11 @@ impl Extent {
         }
         let largest = lower.iter().chain(&upper).fold(0.0_f64, |m, x| m.max(x.abs()));
         let pad = 1e-5 * largest + 1e-5;
+        // Halved before they are added: `lower + upper` overflows near `f64`'s largest values
+        // (two ends at -1.5e308 gave a centre of minus infinity, and a box that held nothing).
         Some(Extent {
-            center: [0, 1, 2].map(|i| 0.5 * (lower[i] + upper[i])),
-            half: [0, 1, 2].map(|i| 0.5 * (upper[i] - lower[i]) + pad),
+            center: [0, 1, 2].map(|i| 0.5 * lower[i] + 0.5 * upper[i]),
+            half: [0, 1, 2].map(|i| (0.5 * upper[i] - 0.5 * lower[i]) + pad),
         })
     }
 
@@ -727,6 +731,30 @@ mod tests {
             }
         }
         assert!(counts[0] > 2000 && counts[1] > 2000, "free and hit: {counts:?}");
+        // Near `f64`'s largest values: obstacles whose ends, or whose box, overflow. The extent
+        // (finite, or infinite where an end overflows) skips only what its obstacle misses.
+        let far = [
+            SphereObstacle { center: [1.5e308, 0.0, 0.0], radius: 1.5e308 },
+            SphereObstacle { center: [-1.5e308, 0.0, 0.0], radius: 1.0 },
+            SphereObstacle { center: [-1.5e308, 0.0, 0.0], radius: 1e308 },
+            SphereObstacle { center: [0.0, 1.7e308, -1.7e308], radius: 2.0 },
+        ];
+        let points = [
+            [0.0; 3],
+            [1.5e308, 0.0, 0.0],
+            [-1.5e308, 0.5, 0.0],
+            [-1.5e308, 3.0, 0.0],
+            [-0.5e308, 0.0, 0.0],
+            [0.0, 1.7e308, -1.7e308],
+            [1.0, 1.7e308, -1.7e308],
+        ];
+        for (k, obstacle) in far.iter().enumerate() {
+            let env = Environment::new(core::slice::from_ref(obstacle), &[], &[], &[]).unwrap();
+            for p in points {
+                assert_eq!(env.hits(p, 1.5), obstacle.hits(&p, 1.5), "obstacle {k}, {p:?}");
+            }
+        }
+        assert!(Environment::new(&far[1..2], &[], &[], &[]).unwrap().hits([-1.5e308, 0.5, 0.0], 1.0));
     }
 
     /// The box the checks test each link against first holds every point of every obstacle,
