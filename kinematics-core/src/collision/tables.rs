@@ -5,8 +5,8 @@
 //! obstacle (the environment's extent), then against each obstacle where that touches, and the
 //! link's spheres only where the bound hits. Against the robot, each pair's bounding spheres come
 //! first, then their groups' (a few neighbouring spheres each), and a group's spheres (placed by
-//! the link's pose only when tested) only where that hits, then only on the lanes it hits; a lane found colliding is not tested again, and a check ends as soon as
-//! every lane is colliding. Every obstacle is tested until one is hit, so the order of the
+//! the link's pose only when tested) only where that hits, then only on the lanes it hits. A lane
+//! found colliding is not tested again, and a check ends as soon as every lane is colliding. Every obstacle is tested until one is hit, so the order of the
 //! obstacles does not change an answer.
 //!
 //! `CollisionTables` holds what a compiled robot's `collides` and `self_collides` run on its links'
@@ -124,9 +124,10 @@ impl CollisionTables<'_> {
         }
         let extent = env.extent.map(|extent| extent.prepare::<L>());
         let n = self.links.len();
-        // The links' bounds, and below the positions of those the obstacles are tested
-        // against: a second array of placed bounds, zeroed like this one on every check, was
-        // measured 10% of the Panda's check in `F32x8` lanes (a `memset` of kilobytes).
+        // The chunk's placed bounds; the links the obstacles are tested against are listed
+        // below by their positions in it, as bytes. A second array of placed bounds, zeroed on
+        // every check as this one is, was a tenth of the Panda's check in `F32x8` lanes (a
+        // `memset` of kilobytes, by `perf`).
         let mut bounds = [([L::from_f64(0.0); 3], L::from_f64(0.0)); CHUNK];
         for first in (0..n).step_by(CHUNK) {
             let count = CHUNK.min(n - first);
@@ -233,8 +234,10 @@ impl CollisionTables<'_> {
     }
 }
 
-/// How many links' bounding spheres the obstacle check places at a time.
+/// How many links' bounding spheres the obstacle check places at a time (each listed by its
+/// position, a byte).
 const CHUNK: usize = 16;
+const _: () = assert!(CHUNK <= 256, "a chunk's positions are bytes");
 
 /// How many spheres of a group the self check places at a time: the compiler's groups hold at
 /// most four (a larger group is taken four at a time).
@@ -462,7 +465,7 @@ mod tests {
         assert_eq!(tables.self_collides(&q, &poses).bits(), 0b0101);
     }
 
-    /// Three links of a few spheres each, posed at random in four lanes, in random environments
+    /// Three links of a few spheres each, posed at random in eight lanes, in random environments
     /// of every kind of obstacle (turned boxes among them) near and far: each lane's verdict is
     /// each of its placed spheres asked of every obstacle in turn (no bounding sphere, no box
     /// holding the obstacles), on `f64` and `f32` lanes; both verdicts come up often.
