@@ -139,10 +139,12 @@ pub(super) struct Extent {
 }
 
 impl Extent {
-    /// The smallest box, its axes the world's, holding every obstacle, padded; `None` for none.
-    /// Each obstacle's own box: a sphere's and a capsule's ends give or take the radius; a
-    /// cylinder's too (its caps lie within the radius of its ends on every axis); a turned box
-    /// reaches `sum_k |axis_k[i]| half_k` from its centre along world axis `i`.
+    /// A box, its axes the world's, holding every obstacle, padded; `None` for none. It holds
+    /// each obstacle's own box: a sphere's, and a capsule's ends, give or take the radius (the
+    /// smallest boxes); a cylinder's ends too (its caps lie within the radius of its ends on
+    /// every axis, a box a little larger than the smallest); a turned box reaches
+    /// `sum_k |axis_k[i]| half_k` from its centre along world axis `i` (its corners: the
+    /// smallest). Numbers the environment checked are finite, so no NaN reaches the minima.
     fn of(
         spheres: &[SphereObstacle],
         capsules: &[CapsuleObstacle],
@@ -330,7 +332,6 @@ impl<'a> Environment<'a> {
     #[inline(always)]
     pub fn hits_lanes<L: CheckLanes>(&self, center: &[L; 3], radius: L) -> L::Flags {
         let mut hit = L::Flags::NONE;
-        // The obstacles only where the sphere touches the box holding them all on some lane.
         if let Some(extent) = self.extent
             && extent.prepare::<L>().hits(center, radius).any()
         {
