@@ -151,6 +151,11 @@ impl Extent {
         cylinders: &[CylinderObstacle],
         boxes: &[BoxObstacle],
     ) -> Option<Self> {
+        // `None` only for no obstacles: a check then skips the four slices (there is nothing
+        // in them to skip).
+        if spheres.is_empty() && capsules.is_empty() && cylinders.is_empty() && boxes.is_empty() {
+            return None;
+        }
         let mut lower = [f64::INFINITY; 3];
         let mut upper = [f64::NEG_INFINITY; 3];
         let mut hold = |center: Vec3, reach: Vec3| {
@@ -171,9 +176,6 @@ impl Extent {
         for b in boxes {
             let reach = [0, 1, 2].map(|i| (0..3).map(|k| b.rotation[k][i].abs() * b.half_extents[k]).sum());
             hold(b.center, reach);
-        }
-        if lower[0] > upper[0] {
-            return None;
         }
         let largest = lower.iter().chain(&upper).fold(0.0_f64, |m, x| m.max(x.abs()));
         let pad = 1e-5 * largest + 1e-5;
