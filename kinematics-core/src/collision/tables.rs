@@ -175,9 +175,8 @@ impl CollisionTables<'_> {
         let mut placed = [([L::from_f64(0.0); 3], L::from_f64(0.0)); PLACED];
         // The compiler's pairs come sorted by their first link: its bound is placed once for
         // its run of pairs (any order gives the same answers; measured: the Panda's self check
-        // in `F32x8` lanes 1.08x faster). Placing every
-        // link's bound once up front, in an array, was measured slower (1.6x in `F32x8` lanes,
-        // 1.05x in `F32x16`).
+        // in `F32x8` lanes 1.08x faster). Placing every link's bound once up front, in an
+        // array, was measured slower (1.6x in `F32x8` lanes, 1.05x in `F32x16`).
         let (mut last, mut bound_i) = (usize::MAX, [L::from_f64(0.0); 3]);
         for (pair, &(i, j)) in self.pairs.iter().enumerate() {
             if hit.all() {
@@ -212,11 +211,11 @@ impl CollisionTables<'_> {
                         continue;
                     }
                     // The second group's spheres, a chunk at a time (a group holds a few),
-                    // all placed once the first of the first group's spheres touches the
-                    // second's bound (placed for none, measured: the Panda's check in `F32x8`
-                    // lanes 1.04x faster than placing them up front); testing each of them
-                    // against the first group's bound was measured slower (a branch per sphere
-                    // no predictor guesses).
+                    // placed together when the first of the first group's spheres to touch the
+                    // second group's bound does, and not at all when none does (measured: the
+                    // Panda's check in `F32x8` lanes 1.04x faster than placing them up front).
+                    // Testing each of them against the first group's bound was measured slower
+                    // (a branch per sphere no predictor guesses).
                     for first in (b0..b1).step_by(PLACED) {
                         let mut count = 0;
                         for s in a0..a1 {
