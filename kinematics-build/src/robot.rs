@@ -353,9 +353,12 @@ mod tests {
     use kinematics_compiler::options::FaultKind;
     use kinematics_model::LoadErrorKind;
 
-    /// A scratch directory holding `files`.
+    /// A scratch directory holding `files`, its own on every call: the tests run in parallel,
+    /// and two that shared a name (`links`) removed each other's files as they ran.
     fn fixture(test: &str, files: &[(&str, &str)]) -> std::path::PathBuf {
-        let dir = std::env::temp_dir().join(format!("kinematics-build-{test}-{}", std::process::id()));
+        static CALLS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+        let call = CALLS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+        let dir = std::env::temp_dir().join(format!("kinematics-build-{test}-{}-{call}", std::process::id()));
         let _ = std::fs::remove_dir_all(&dir);
         std::fs::create_dir_all(&dir).unwrap();
         for (name, text) in files {
