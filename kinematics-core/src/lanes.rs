@@ -328,9 +328,10 @@ lane_type!(
     f32,
     16,
     64,
-    trig::sin_cos_f32_lanes,
+    trig::sin_cos_packed,
     "Sixteen `f32` lanes (one AVX-512 register), for your own loops: the generated batches keep `f32` in `F32x8`, \
-     which LLVM vectorizes where it leaves many bodies on sixteen lanes in scalar pieces (the guide's Lanes page)."
+     which LLVM vectorizes where it leaves many bodies on sixteen lanes in scalar pieces (the guide's Lanes page).",
+    many = trig::sin_cos_packed_many
 );
 
 #[cfg(test)]

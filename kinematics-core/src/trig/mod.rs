@@ -110,13 +110,14 @@ pub fn sin_cos_f32_lanes<const N: usize>(x: [f32; N]) -> ([f32; N], [f32; N]) {
 /// Sines and cosines of a lane type's `N` values (`N` a whole number of registers), bit for bit
 /// what [`sin_cos_f64`] or [`sin_cos_f32`] gives for each: one loop over all of them, no chunks.
 ///
-/// `F64x8` takes it (and [`sin_cos_packed_many`] for several values): there the chunked
-/// [`sin_cos_lanes`] copies each chunk in and out value by value, and reduces the fast-range test
-/// across the lanes for every value. Measured in a scratch harness (generated bodies in a loop of
-/// 1,024 configurations inside `dispatch`, AVX-512), `F64x8` bodies ran 1.1 to 1.7 times faster
-/// with it (the UR5's tip Jacobian 24 against 14.6 ns a configuration, the quadruped's link poses
-/// 80 against 51); on `F64x4` and `F32x8` it was slower (up to 1.3 and 1.1 times), so they keep
-/// the chunked routine.
+/// `F64x8` and `F32x16` take it (and [`sin_cos_packed_many`] for several values): there the
+/// chunked [`sin_cos_lanes`] copies each chunk in and out value by value, and reduces the
+/// fast-range test across the lanes for every value. Measured in a scratch harness (generated
+/// bodies in a loop of 1,024 configurations inside `dispatch`, AVX-512), `F64x8` bodies ran 1.1 to
+/// 1.7 times faster with it (the UR5's tip Jacobian 24 against 14.6 ns a configuration, the
+/// quadruped's link poses 80 against 51), and the Panda's seven `F32x16` sines and cosines 1.1
+/// times (the sphere centres kept in lanes about 1.1 times); on `F64x4` and `F32x8` it was slower
+/// (up to 1.3 and 1.1 times), so they keep the chunked routine.
 #[inline(always)]
 pub(crate) fn sin_cos_packed<K: Kernel, const N: usize>(x: [K; N]) -> ([K; N], [K; N]) {
     let ([s], [c]) = sin_cos_packed_many([x]);
