@@ -5,7 +5,9 @@
 #![allow(clippy::panic, clippy::unwrap_used, clippy::expect_used)] // test helpers fail loudly
 
 use kinematics::model::collision::{Meshes, link_spheres};
-use kinematics::{AGREEMENT_TOLERANCE, AGREEMENT_TOLERANCE_F32, Configurations, F32x8, F64x4, Kinematics};
+use kinematics::{
+    AGREEMENT_TOLERANCE, AGREEMENT_TOLERANCE_F32, Configurations, F32x8, F32x16, F64x4, F64x8, Kinematics, Lanes,
+};
 
 /// VAMP's spherized Panda (59 spheres).
 #[derive(Kinematics)]
@@ -79,66 +81,86 @@ fn sphere_centers_agree_with_the_reference() {
     assert_eq!(Ur5::SPHERE_RADII.len(), 40);
 }
 
+/// Every form of `sphere_centers` runs one straight-line body: the batches, the column batches and
+/// the generic form on each lane type give every configuration the centres of the function on one
+/// configuration (`f64`, or the `f32` one for `f32` lanes), bit for bit, whichever lanes the CPU
+/// takes. Then the `f32` centres against the `f64` ones.
 #[test]
-fn batches_lanes_and_f32_agree_with_the_scalar_centres() {
+fn every_form_of_the_centres_is_the_one_configuration_function_bit_for_bit() {
+    /// Each lane of `centers` (the generic form on a pack of `L::LANES` configurations from
+    /// `first`) against `one` on that configuration, bit for bit.
+    fn lanes_equal<L: Lanes, const S: usize>(
+        centers: &[[L; 3]; S],
+        one: impl Fn(usize) -> [[L::Scalar; 3]; S],
+        first: usize,
+        what: &str,
+    ) where
+        L::Scalar: Into<f64>,
+    {
+        for l in 0..L::LANES {
+            let expected = one(first + l);
+            for (k, (center, expected)) in centers.iter().zip(&expected).enumerate() {
+                for i in 0..3 {
+                    let (got, want): (f64, f64) = (center[i].lane(l).into(), expected[i].into());
+                    assert_eq!(got.to_bits(), want.to_bits(), "{what}: sphere {k}, lane {l}");
+                }
+            }
+        }
+    }
+    fn pack<L: Lanes, const N: usize>(qs: &[[L::Scalar; N]], first: usize) -> [L; N]
+    where
+        L::Scalar: Copy,
+    {
+        std::array::from_fn(|j| L::from_fn(|l| qs[first + l][j]))
+    }
+
     let reference = Ur5::reference().unwrap();
-    let reach = reference.tree().reach();
     let qs: Vec<[f64; 6]> = Configurations::new(reference.tree()).take(37).map(|q| q.try_into().unwrap()).collect();
     let qs32: Vec<[f32; 6]> = qs.iter().map(|q| q.map(|x| x as f32)).collect();
-    // The batches (and the generic form) place each sphere by its link's pose
-    // (`collision::place_spheres`), the typed functions run the straight-line body: the same
-    // products associated differently, so they agree to rounding, not bit for bit.
     let (mut out, mut out32) = (vec![[[0.0; 3]; 40]; qs.len()], vec![[[0.0_f32; 3]; 40]; qs.len()]);
     Ur5::sphere_centers_batch(&qs, &mut out).unwrap();
     Ur5::sphere_centers_batch_f32(&qs32, &mut out32).unwrap();
-    let mut columns32 = vec![[[0.0_f32; 3]; 40]; qs.len()];
-    let joint = |j: usize| qs32.iter().map(|q| q[j]).collect::<Vec<f32>>();
-    let (c0, c1, c2, c3, c4, c5) = (joint(0), joint(1), joint(2), joint(3), joint(4), joint(5));
-    Ur5::sphere_centers_batch_columns_f32([&c0, &c1, &c2, &c3, &c4, &c5], &mut columns32).unwrap();
-    assert_eq!(columns32, out32);
-    for ((q, batch), batch32) in qs.iter().zip(&out).zip(&out32) {
-        let scalar = Ur5::sphere_centers(q);
-        for k in 0..40 {
-            for i in 0..3 {
-                let (error, error32) =
-                    ((batch[k][i] - scalar[k][i]).abs(), (f64::from(batch32[k][i]) - scalar[k][i]).abs());
-                assert!(error <= AGREEMENT_TOLERANCE * reach, "sphere {k}: {error:e}");
-                assert!(error32 <= AGREEMENT_TOLERANCE_F32 * reach, "sphere {k} (f32): {error32:e}");
-            }
-        }
+    let (mut columns, mut columns32) = (vec![[[0.0; 3]; 40]; qs.len()], vec![[[0.0_f32; 3]; 40]; qs.len()]);
+    let joint = |j: usize| qs.iter().map(|q| q[j]).collect::<Vec<f64>>();
+    let joint32 = |j: usize| qs32.iter().map(|q| q[j]).collect::<Vec<f32>>();
+    let c: [Vec<f64>; 6] = std::array::from_fn(joint);
+    let c32: [Vec<f32>; 6] = std::array::from_fn(joint32);
+    Ur5::sphere_centers_batch_columns([&c[0], &c[1], &c[2], &c[3], &c[4], &c[5]], &mut columns).unwrap();
+    Ur5::sphere_centers_batch_columns_f32([&c32[0], &c32[1], &c32[2], &c32[3], &c32[4], &c32[5]], &mut columns32)
+        .unwrap();
+    for (i, (q, q32)) in qs.iter().zip(&qs32).enumerate() {
+        let (one, one32) = (Ur5::sphere_centers(q), Ur5::sphere_centers_f32(q32));
+        let bits = |c: &[[f64; 3]; 40]| c.map(|p| p.map(f64::to_bits));
+        let bits32 = |c: &[[f32; 3]; 40]| c.map(|p| p.map(f32::to_bits));
+        assert_eq!(bits(&out[i]), bits(&one), "batch, configuration {i}");
+        assert_eq!(bits(&columns[i]), bits(&one), "column batch, configuration {i}");
+        assert_eq!(bits32(&out32[i]), bits32(&one32), "f32 batch, configuration {i}");
+        assert_eq!(bits32(&columns32[i]), bits32(&one32), "f32 column batch, configuration {i}");
+        assert_eq!(bits(&Ur5::sphere_centers_generic(q)), bits(&one), "generic f64, configuration {i}");
     }
-    // The Panda (59 spheres on 11 links, groups of several links' spheres) too.
+    let ur5 = |i: usize| Ur5::sphere_centers(&qs[i]);
+    let ur5_32 = |i: usize| Ur5::sphere_centers_f32(&qs32[i]);
+    for first in [0, 16] {
+        lanes_equal(&Ur5::sphere_centers_generic(&pack::<F64x4, 6>(&qs, first)), ur5, first, "UR5, F64x4");
+        lanes_equal(&Ur5::sphere_centers_generic(&pack::<F64x8, 6>(&qs, first)), ur5, first, "UR5, F64x8");
+        lanes_equal(&Ur5::sphere_centers_generic(&pack::<F32x8, 6>(&qs32, first)), ur5_32, first, "UR5, F32x8");
+        lanes_equal(&Ur5::sphere_centers_generic(&pack::<F32x16, 6>(&qs32, first)), ur5_32, first, "UR5, F32x16");
+    }
+    // The Panda (59 spheres on 11 links, the body long enough for several block marks) too.
     let panda: Vec<[f64; 7]> =
         Configurations::within(&Panda::JOINT_LIMITS).take(19).map(|q| q.try_into().unwrap()).collect();
+    let panda32: Vec<[f32; 7]> = panda.iter().map(|q| q.map(|x| x as f32)).collect();
     let mut centers = vec![[[0.0; 3]; 59]; panda.len()];
     Panda::sphere_centers_batch(&panda, &mut centers).unwrap();
     for (q, batch) in panda.iter().zip(&centers) {
-        let scalar = Panda::sphere_centers(q);
-        for k in 0..59 {
-            assert!((0..3).all(|i| (batch[k][i] - scalar[k][i]).abs() <= AGREEMENT_TOLERANCE), "Panda sphere {k}");
-        }
+        assert_eq!(batch.map(|p| p.map(f64::to_bits)), Panda::sphere_centers(q).map(|p| p.map(f64::to_bits)));
     }
-    // The generic form places the centres by the link poses, as the batches do: in lanes, each
-    // lane bit for bit the generic form on its own configuration; that, within rounding of the
-    // typed function's straight-line body.
-    let lanes: [F64x4; 6] = std::array::from_fn(|j| F64x4::new(std::array::from_fn(|l| qs[l][j])));
-    let centers = Ur5::sphere_centers_generic(&lanes);
-    let lanes32: [F32x8; 6] = std::array::from_fn(|j| F32x8::new(std::array::from_fn(|l| qs[l][j] as f32)));
-    let centers32 = Ur5::sphere_centers_generic(&lanes32);
-    for (l, q) in qs.iter().take(8).enumerate() {
-        let (generic, generic32) = (Ur5::sphere_centers_generic(q), Ur5::sphere_centers_generic(&q.map(|x| x as f32)));
-        let scalar = Ur5::sphere_centers(q);
-        for k in 0..40 {
-            for i in 0..3 {
-                if l < 4 {
-                    assert_eq!(centers[k][i].to_array()[l].to_bits(), generic[k][i].to_bits(), "sphere {k}, lane {l}");
-                }
-                assert_eq!(centers32[k][i].to_array()[l].to_bits(), generic32[k][i].to_bits(), "sphere {k}, lane {l}");
-                let error = (generic[k][i] - scalar[k][i]).abs();
-                assert!(error <= AGREEMENT_TOLERANCE * reach, "sphere {k}: {error:e}");
-            }
-        }
-    }
+    let one = |i: usize| Panda::sphere_centers(&panda[i]);
+    let one32 = |i: usize| Panda::sphere_centers_generic(&panda32[i]);
+    lanes_equal(&Panda::sphere_centers_generic(&pack::<F64x4, 7>(&panda, 2)), one, 2, "Panda, F64x4");
+    lanes_equal(&Panda::sphere_centers_generic(&pack::<F64x8, 7>(&panda, 2)), one, 2, "Panda, F64x8");
+    lanes_equal(&Panda::sphere_centers_generic(&pack::<F32x8, 7>(&panda32, 2)), one32, 2, "Panda, F32x8");
+    lanes_equal(&Panda::sphere_centers_generic(&pack::<F32x16, 7>(&panda32, 2)), one32, 2, "Panda, F32x16");
     for q in &qs {
         let single = Ur5::sphere_centers_f32(&q.map(|x| x as f32));
         let double = Ur5::sphere_centers(q);

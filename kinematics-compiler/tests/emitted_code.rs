@@ -142,3 +142,37 @@ fn ur5_urdf_ik_branch_and_measure() {
 fn stanford_arm_ik_branch_and_measure() {
     insta::assert_snapshot!(ik_source("stanford_arm.toml", "link6"));
 }
+
+/// Points fixed in links (as the sphere centres are) carry block marks, `T::block_mark(1);` on,
+/// numbered in order, about one per `BLOCK_MARK_OPS` operations of the body; the link poses'
+/// body, from the same compile, has none.
+#[test]
+fn points_carry_block_marks_about_every_block_mark_ops() {
+    let mut compiled = compile(&common::robot("ur5.toml"), &Request::all_links()).unwrap();
+    let places: Vec<(usize, [f64; 3])> = (0..compiled.frames().len())
+        .flat_map(|f| [(f, [0.1, 0.0, 0.02]), (f, [0.0, -0.05, 0.1]), (f, [0.03, 0.07, -0.2])])
+        .collect();
+    let points = compiled.points(&places);
+    let outputs: Vec<_> = points.iter().flatten().copied().collect();
+    let cost = kinematics_compiler::OpCount::of(compiled.graph(), outputs.iter().copied());
+    let ops = cost.mul + cost.add;
+    let options = EmitOptions::named("centers");
+    let text = kinematics_compiler::emit::emit_points(&compiled, &points, &options, " Points.").to_string();
+    let marks: Vec<usize> = text
+        .split("T :: block_mark (")
+        .skip(1)
+        .map(|rest| rest.split(')').next().unwrap().trim().parse().unwrap())
+        .collect();
+    assert_eq!(marks, (1..=marks.len()).collect::<Vec<_>>(), "numbered in order");
+    let spacing = kinematics_core::BLOCK_MARK_OPS;
+    assert!(ops >= 3 * spacing, "a body long enough to need marks: {ops} operations");
+    // A mark follows the statement that reaches the spacing, so at most one per `spacing`
+    // operations, and the last stretch is shorter than the spacing plus one statement.
+    assert!(
+        marks.len() <= ops / spacing && marks.len() + 2 >= ops / spacing,
+        "{} marks, {ops} operations",
+        marks.len()
+    );
+    let poses = emit_module_source(&compiled, &options).unwrap();
+    assert!(!poses.contains("block_mark"), "the poses' body has no marks");
+}

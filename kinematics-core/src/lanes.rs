@@ -164,7 +164,7 @@ impl<L: Lanes, A: LaneValue<L>, B: LaneValue<L>> LaneValue<L> for (A, B) {
 }
 
 macro_rules! lane_type {
-    ($name:ident, $scalar:ident, $lanes:literal, $align:literal, $sin_cos:path, $doc:literal $(, many = $sin_cos_many:path)?) => {
+    ($name:ident, $scalar:ident, $lanes:literal, $align:literal, $sin_cos:path, marks = $marks:literal, $doc:literal $(, many = $sin_cos_many:path)?) => {
         #[doc = $doc]
         #[derive(Debug, Clone, Copy, PartialEq)]
         #[repr(C, align($align))]
@@ -254,6 +254,7 @@ macro_rules! lane_type {
         }
 
         impl Real for $name {
+            const BLOCK_MARKS: Option<usize> = Some($marks);
             #[inline(always)]
             fn from_f64(x: f64) -> Self {
                 $name::splat(<$scalar as Real>::from_f64(x))
@@ -312,14 +313,21 @@ macro_rules! lane_type {
     };
 }
 
-lane_type!(F64x4, f64, 4, 32, trig::sin_cos_f64_lanes, "Four `f64` lanes (one AVX2 register).");
-lane_type!(F32x8, f32, 8, 32, trig::sin_cos_f32_lanes, "Eight `f32` lanes (one AVX2 register).");
+// Each type's block marks (`Real::BLOCK_MARKS`, a mark about every 75 operations), measured in a
+// scratch harness on the Panda's 59 sphere centres (526 operations; a dispatched loop over 1,024
+// configurations, AVX2 without AVX-512, 2026-11-28), ns a configuration against the body without
+// marks: `F64x4` best without them (59; a block every 150 or 300 operations 75 and 68), so a block
+// of 600; `F32x8` every 300 (38 against 140 without; 150 took 42); `F64x8` and `F32x16`, twice
+// the lanes, every 150 (72 against 215, and 300 took 129; 44 to 58 against 230).
+lane_type!(F64x4, f64, 4, 32, trig::sin_cos_f64_lanes, marks = 8, "Four `f64` lanes (one AVX2 register).");
+lane_type!(F32x8, f32, 8, 32, trig::sin_cos_f32_lanes, marks = 4, "Eight `f32` lanes (one AVX2 register).");
 lane_type!(
     F64x8,
     f64,
     8,
     64,
     trig::sin_cos_packed,
+    marks = 2,
     "Eight `f64` lanes (one AVX-512 register; the batches use it where the CPU has AVX-512).",
     many = trig::sin_cos_packed_many
 );
@@ -329,6 +337,7 @@ lane_type!(
     16,
     64,
     trig::sin_cos_packed,
+    marks = 2,
     "Sixteen `f32` lanes (one AVX-512 register), for your own loops: the generated batches keep `f32` in `F32x8`, \
      which LLVM vectorizes where it leaves many bodies on sixteen lanes in scalar pieces (the guide's Lanes page).",
     many = trig::sin_cos_packed_many

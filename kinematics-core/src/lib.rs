@@ -49,6 +49,6 @@ pub use kinematics::{JointLimits, Kinematics, check_output, q_array};
 pub use lanes::{F32x8, F32x16, F64x4, F64x8, LaneValue, Lanes};
 pub use orientation::OrientationError;
 pub use pose::{AGREEMENT_TOLERANCE, AGREEMENT_TOLERANCE_F32, Pose};
-pub use real::Real;
 #[cfg(feature = "std")]
 pub use real::StdTrig;
+pub use real::{BLOCK_MARK_OPS, Real};

@@ -40,8 +40,9 @@ impl<T: crate::Real> Pose<T> {
     ///
     /// A coordinate of `p` that is zero adds nothing and is skipped: most collision spheres sit
     /// on their link's axes, and their placing costs a third to two thirds of the products
-    /// (measured in a scratch harness: the Panda's sphere centres in `F32x16` lanes about 1.03
-    /// times faster, the whole check on free configurations unchanged). The
+    /// (measured in a scratch harness, when the sphere centres were placed this way: the Panda's
+    /// in `F32x16` lanes about 1.03 times faster; the checks, which place spheres as they test
+    /// them, unchanged on free configurations). The
     /// result differs from the full product only where a rotation entry is not finite, which
     /// `R p` would carry into the point through `inf * 0` or `NaN * 0`.
     ///

@@ -5,6 +5,7 @@
 //! centres. Generic bodies are `#[inline(always)]` into their typed callers, so arrays of poses are
 //! stored where the caller keeps them rather than copied there.
 
+use kinematics_core::BLOCK_MARK_OPS;
 use proc_macro2::{Delimiter, Group, Ident, Literal, Punct, Spacing, Span, TokenStream};
 use quote::{ToTokens as _, TokenStreamExt as _, format_ident, quote};
 
@@ -70,6 +71,30 @@ struct Writer<'a> {
     sizes: (usize, usize),
     /// The names of the inputs ([`Node::Input`]), by index.
     inputs: &'a [Ident],
+}
+
+/// The block marks of one body: `T::block_mark(1);`, `T::block_mark(2);`, ... about every
+/// [`BLOCK_MARK_OPS`] operations (the core's `Real::block_mark` says why: a lane type ends a block
+/// at every few marks, so that LLVM's vectorizer schedules each block whole).
+#[derive(Default)]
+struct Marks {
+    /// Operations since the last mark.
+    ops: usize,
+    /// Marks written.
+    written: usize,
+}
+
+impl Marks {
+    /// After a statement of `ops` operations: a mark if they bring the count to the spacing.
+    fn after(&mut self, ops: usize, out: &mut TokenStream) {
+        self.ops += ops;
+        if self.ops >= BLOCK_MARK_OPS {
+            self.ops = 0;
+            self.written += 1;
+            let mark = Literal::usize_unsuffixed(self.written);
+            out.extend(quote!(T::block_mark(#mark);));
+        }
+    }
 }
 
 /// The name of the graph's variable `i` (`sizes`: the lengths of `q` and `qd`): a joint position
@@ -212,6 +237,23 @@ impl Writer<'_> {
         group(out, Delimiter::Parenthesis, arguments);
     }
 
+    /// The operations `define(id)` writes: its own and those of the operands it writes out (a
+    /// negation folded into a difference counted as one), what a block mark's spacing counts.
+    fn ops_written(&self, id: ExprId) -> usize {
+        let g = self.g;
+        let operand = |a: ExprId| if self.inline(a) { self.ops_written(a) } else { 0 };
+        match g.node(id) {
+            Node::Const(_) | Node::Var(_) | Node::Sin(_) | Node::Cos(_) | Node::Input(_) => 0,
+            Node::Add(a, b) => {
+                let (a, b) = (g.unneg(a).1, g.unneg(b).1);
+                1 + operand(a) + operand(b)
+            }
+            Node::Neg(a) | Node::Sqrt(a) => 1 + operand(a),
+            Node::Mul(a, b) | Node::Div(a, b) | Node::Atan2(a, b) => 1 + operand(a) + operand(b),
+            Node::IfPositive(c, a, b) => 1 + operand(c) + operand(a) + operand(b),
+        }
+    }
+
     fn inline(&self, id: ExprId) -> bool {
         !self.schedule.bound.contains_key(&id)
     }
@@ -329,8 +371,10 @@ impl Writer<'_> {
         }
     }
 
-    /// The body's statements.
-    fn items(&self, trig: Trig, out: &mut TokenStream) {
+    /// The body's statements; with `marks`, a block mark after the first statement that brings
+    /// the operations since the last one to [`BLOCK_MARK_OPS`].
+    fn items(&self, trig: Trig, marks: Option<&mut Marks>, out: &mut TokenStream) {
+        let mut marks = marks;
         let items = &self.schedule.items;
         let mut k = 0;
         while k < items.len() {
@@ -348,6 +392,9 @@ impl Writer<'_> {
                     let mut value = TokenStream::new();
                     self.define(*id, &mut value);
                     out.extend(quote!(let #name = #value;));
+                    if let Some(marks) = marks.as_deref_mut() {
+                        marks.after(self.ops_written(*id), out);
+                    }
                     k += 1;
                 }
             }
@@ -374,7 +421,7 @@ pub fn emit_function(compiled: &Compiled, options: &EmitOptions) -> TokenStream 
     let n_lit = Literal::usize_unsuffixed(n);
     let nv_lit = Literal::usize_unsuffixed(nv);
     let twist = compiled.velocity.is_some_and(|v| v.form == VelocityForm::Twist);
-    let mut body = prologue(compiled, &w, twist, options.trig);
+    let mut body = prologue(compiled, &w, twist, options.trig, None);
     let layout = Layout::of(compiled);
     let array = compiled.returns_array();
     let mut value = TokenStream::new();
@@ -421,7 +468,7 @@ pub fn emit_function(compiled: &Compiled, options: &EmitOptions) -> TokenStream 
 /// The statements every body opens with: `q` (and with `rates` `qd`) unpacked into the variables
 /// the schedule uses, each floating or spherical joint's rotation from its quaternion, then the sines and
 /// cosines and every `let` of the schedule.
-fn prologue(compiled: &Compiled, w: &Writer<'_>, rates: bool, trig: Trig) -> TokenStream {
+fn prologue(compiled: &Compiled, w: &Writer<'_>, rates: bool, trig: Trig, marks: Option<&mut Marks>) -> TokenStream {
     let (schedule, private) = (w.schedule, w.private);
     let (n, nv) = (compiled.dof(), compiled.velocity_dof());
     let mut body = TokenStream::new();
@@ -456,7 +503,7 @@ fn prologue(compiled: &Compiled, w: &Writer<'_>, rates: bool, trig: Trig) -> Tok
         let [x, y, z, qw] = [start, start + 1, start + 2, start + 3].map(Literal::usize_unsuffixed);
         body.extend(quote!(let [#(#rows),*] = #private::quaternion_matrix(q[#x], q[#y], q[#z], q[#qw]);));
     }
-    w.items(trig, &mut body);
+    w.items(trig, marks, &mut body);
     body
 }
 
@@ -470,20 +517,24 @@ pub fn emit_points(compiled: &Compiled, points: &[[ExprId; 3]], options: &EmitOp
     let private = &options.private;
     let n = compiled.dof();
     let w = Writer { g, schedule: &schedule, private, sizes: (n, compiled.velocity_dof()), inputs: &[] };
-    let mut body = prologue(compiled, &w, false, options.trig);
-    let values = points.iter().map(|point| {
-        let mut value = TokenStream::new();
+    let mut marks = Marks::default();
+    let mut body = prologue(compiled, &w, false, options.trig, Some(&mut marks));
+    // Each point bound in turn (`center_0`, ...), so that the marks run on through them.
+    let mut names = Vec::with_capacity(points.len());
+    for (k, point) in points.iter().enumerate() {
         let mut entries = TokenStream::new();
-        for (k, &id) in point.iter().enumerate() {
-            if k > 0 {
+        for (i, &id) in point.iter().enumerate() {
+            if i > 0 {
                 punct(&mut entries, ',');
             }
             w.expr(id, &mut entries);
         }
-        group(&mut value, Delimiter::Bracket, entries);
-        value
-    });
-    body.extend(quote!([#(#values),*]));
+        let name = format_ident!("center_{k}");
+        body.extend(quote!(let #name = [#entries];));
+        marks.after(point.iter().map(|&id| if w.inline(id) { w.ops_written(id) } else { 0 }).sum(), &mut body);
+        names.push(name);
+    }
+    body.extend(quote!([#(#names),*]));
     let (n_lit, m) = (Literal::usize_unsuffixed(n), Literal::usize_unsuffixed(points.len()));
     let name = Ident::new(&options.name, Span::call_site());
     let vis = if options.public { quote!(pub) } else { quote!() };
@@ -531,7 +582,7 @@ pub fn straight_line(
     let schedule = Schedule::new(g, outputs);
     let w = Writer { g, schedule: &schedule, private, sizes: (dof, 0), inputs };
     let mut statements = TokenStream::new();
-    w.items(Trig::Fast, &mut statements);
+    w.items(Trig::Fast, None, &mut statements);
     let outputs = outputs
         .iter()
         .map(|&id| {

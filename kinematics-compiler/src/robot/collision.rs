@@ -62,7 +62,6 @@ pub(super) fn bodies(cx: &Context<'_>, name: &str) -> Result<(Vec<TokenStream>, 
     let mut items = vec![
         emit_points(&compiled, &centers, &cx.body_options(name), &body_doc),
         emit_function(&compiled, &cx.body_options(CHECK_BODY)),
-        lanes_body(cx, &frame),
     ];
     items.extend(tables(cx, &frame));
     items.push(hold_tables(cx, &frame)?);
@@ -138,38 +137,6 @@ fn hold_tables(cx: &Context<'_>, frame: &CollisionLayout) -> Result<TokenStream,
             links: &[#(#links),*],
         };
     })
-}
-
-/// The body `sphere_centers`' batches call ([`Output::lanes_body`](super::surface::Output::lanes_body)):
-/// the checks' link poses, then each sphere placed by its link's pose from a table of places.
-fn lanes_body(cx: &Context<'_>, frame: &CollisionLayout) -> TokenStream {
-    let p = &cx.p;
-    let n = cx.render.dof();
-    let count = Literal::usize_unsuffixed(frame.points.len());
-    let name = proc_macro2::Ident::new(
-        &super::surface::Output::SphereCenters.lanes_body(cx.one),
-        proc_macro2::Span::call_site(),
-    );
-    let g = proc_macro2::Ident::new(CHECK_BODY, proc_macro2::Span::call_site());
-    let poses = if frame.links.len() == 1 { quote!(&[#g(q)]) } else { quote!(&#g(q)) };
-    let places = frame.points.iter().map(|(link, v)| {
-        let link = Literal::usize_unsuffixed(*link);
-        let [x, y, z] = v.map(super::number);
-        quote!((#link, [#x, #y, #z]))
-    });
-    quote! {
-        /// Each sphere's link (its index in the checks' poses) and its centre in the link's frame, in
-        /// the order of `sphere_centers`.
-        #[allow(clippy::approx_constant, clippy::unreadable_literal)]
-        const SPHERE_PLACES: [(usize, [f64; 3]); #count] = [#(#places),*];
-
-        /// The sphere centres in lanes: the link poses, each sphere then placed by its link's pose.
-        #[allow(clippy::inline_always)]
-        #[inline(always)]
-        pub fn #name<T: #p::Real>(q: &[T; #n]) -> [[T; 3]; #count] {
-            #p::collision::place_spheres(#poses, &SPHERE_PLACES)
-        }
-    }
 }
 
 /// The collision tables (each link's groups and bounding sphere, each group's spheres and

@@ -37,7 +37,6 @@ impl Functions {
         let p = &cx.p;
         let n_lit = cx.render.dof();
         let g = format_ident!("{}", output.body(cx.one));
-        let lanes_g = format_ident!("{}", output.lanes_body(cx.one));
         let rates = output.takes_rates();
         for (form, signature) in cx.render.functions(output, cx.one) {
             let sig = signature.tokens();
@@ -79,7 +78,7 @@ impl Functions {
                         #[allow(clippy::redundant_closure)]
                         #sig {
                             #p::batch_wide::<#lanes, #wide, #n_lit, _, _>(
-                                Self::ROBOT, qs, out, #[inline(always)] |q| #lanes_g(q), #[inline(always)] |q| #lanes_g(q),
+                                Self::ROBOT, qs, out, #[inline(always)] |q| #g(q), #[inline(always)] |q| #g(q),
                             )
                         }
                     }
@@ -100,7 +99,7 @@ impl Functions {
                         #sig {
                             #p::batch_columns::<#lanes, #wide, #n_lit, _, _>(
                                 Self::ROBOT, &Self::JOINT_NAMES, columns, out,
-                                #[inline(always)] |q| #lanes_g(q), #[inline(always)] |q| #lanes_g(q),
+                                #[inline(always)] |q| #g(q), #[inline(always)] |q| #g(q),
                             )
                         }
                     }
@@ -114,26 +113,16 @@ impl Functions {
                     }
                 }
                 Form::Generic => {
-                    // The lanes' body, as the batches run it: where it is not the typed functions'
-                    // (the sphere centres, placed from the link poses), the doc says so.
-                    let placed = if lanes_g == g {
-                        String::new()
-                    } else {
-                        " Each centre is placed by its link's pose (the batches' way: the straight-line body of \
-                         the typed functions, in 8 or 16 lanes, is more than LLVM's vectorizer schedules and runs \
-                         in scalar pieces), so it may differ from theirs in the last bits."
-                            .to_owned()
-                    };
                     let doc = format!(
                         "{doc}, for any scalar type: the lane types `F64x4`, `F64x8`, `F32x8` and `F32x16` (four to \
                          sixteen configurations per call), dual numbers, or a type of your own. Not dispatched (it \
                          runs with the instruction set of your build): wrap a loop of calls in \
-                         `kinematics::dispatch` to run it with the widest set the CPU has, once for the whole loop.{placed}"
+                         `kinematics::dispatch` to run it with the widest set the CPU has, once for the whole loop."
                     );
                     quote! {
                         #[doc = #doc]
                         #[inline]
-                        #sig { #lanes_g(q) }
+                        #sig { #g(q) }
                     }
                 }
             };

@@ -136,18 +136,6 @@ impl Output {
         }
     }
 
-    /// The name of the body the batches (lanes) and the generic form call: [`Output::body`], but
-    /// for the sphere centres, whose straight-line body in 8 or 16 lanes exceeds what LLVM's
-    /// vectorizer schedules (they place each sphere by its link's pose instead:
-    /// `collision::place_spheres` in the core); the typed one-configuration functions keep
-    /// [`Output::body`].
-    pub fn lanes_body(self, one_tip: bool) -> String {
-        match self {
-            Output::SphereCenters => "generic_sphere_centers_lanes".to_owned(),
-            _ => self.body(one_tip),
-        }
-    }
-
     /// Whether the functions take the joint rates `qd` too (and have no batches).
     pub fn takes_rates(self) -> bool {
         matches!(self, Output::Twist(_))

@@ -29,7 +29,7 @@ pub use motion::{Ends, Motion, first_collisions, motion_wide, motions_wide};
 pub use obstacles::{
     BoxObstacle, CapsuleObstacle, CylinderObstacle, Environment, ObstacleError, SphereObstacle, SphereQuery, Vec3,
 };
-pub use tables::{CollisionTables, place_spheres};
+pub use tables::CollisionTables;
 pub use verdicts::{CheckLanes, Flags, Flags32x8, Flags32x16, Flags64x4, Flags64x8, LaneMask, non_finite};
 #[doc(hidden)]
 #[inline(always)]

@@ -263,38 +263,6 @@ pub(super) fn fence<T: ?Sized>(poses: &T) -> &T {
     core::hint::black_box(poses)
 }
 
-/// Each sphere's centre: `places[k]` is sphere `k`'s link (its index in `poses`) and its centre in
-/// that link's frame, placed by the link's pose (`R p + t`). Generated `sphere_centers` batches
-/// run this on the link poses rather than their straight-line body: in 8 or 16 lanes that body
-/// (every centre's few products, one block) is beyond what LLVM's vectorizer schedules, and ran
-/// in scalar pieces (measured: the Panda's `sphere_centers_batch_f32` about 4x slower).
-///
-/// ```
-/// use kinematics_core::{collision::place_spheres, Pose};
-/// let at = |x: f64| Pose { rotation: [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]], translation: [x, 0.0, 0.0] };
-/// let centers = place_spheres(&[at(1.0), at(2.0)], &[(0, [0.0, 0.5, 0.0]), (1, [0.0, 0.0, 0.5])]);
-/// assert_eq!(centers, [[1.0, 0.5, 0.0], [2.0, 0.0, 0.5]]);
-/// ```
-///
-/// The spheres of a link come one after another in the generated tables; each run of spheres on
-/// one link is placed by its pose read once (measured: the Panda's centres in `F32x16` lanes
-/// 1.2x faster than reading the pose for each sphere). Any order gives the same centres.
-#[inline(always)]
-pub fn place_spheres<T: crate::Real, const S: usize>(poses: &[Pose<T>], places: &[(usize, Vec3); S]) -> [[T; 3]; S] {
-    let poses = fence(poses);
-    let mut centers = [[T::from_f64(0.0); 3]; S];
-    let mut k = 0;
-    while k < S {
-        let link = places[k].0;
-        let pose = poses[link];
-        while k < S && places[k].0 == link {
-            centers[k] = pose.place(places[k].1);
-            k += 1;
-        }
-    }
-    centers
-}
-
 /// Consecutive links of a check from `first`, their bounding spheres placed, and which of them
 /// (positions in `bounds`) the tests take.
 #[derive(Clone, Copy)]
@@ -419,22 +387,6 @@ mod tests {
     fn at<T: Real>(x: T) -> Pose<T> {
         let (zero, one) = (T::from_f64(0.0), T::from_f64(1.0));
         Pose { rotation: [[one, zero, zero], [zero, one, zero], [zero, zero, one]], translation: [x, zero, zero] }
-    }
-
-    /// Runs of spheres on one link, links interleaved or repeated: each centre its own link's
-    /// `R p + t`, whatever the order.
-    #[test]
-    fn spheres_are_placed_by_their_own_links_in_any_order() {
-        let turned = Pose::from_rpy([0.3, -0.2, 0.1], [0.5, 0.4, -1.0]);
-        let poses = [at(1.0), turned, at(-2.0)];
-        let places =
-            [(1, [0.1, 0.0, 0.2]), (1, [0.0, 0.3, 0.0]), (0, [0.5, 0.0, 0.0]), (2, [0.0; 3]), (1, [-0.4, 0.1, 0.0])];
-        let centers = place_spheres(&poses, &places);
-        for (center, &(link, p)) in centers.iter().zip(&places) {
-            assert_eq!(*center, poses[link].place(p));
-        }
-        assert_eq!(centers[2], [1.5, 0.0, 0.0]);
-        assert_eq!(centers[3], [-2.0, 0.0, 0.0]);
     }
 
     #[test]
