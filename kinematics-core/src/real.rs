@@ -10,8 +10,7 @@
 //! `Real` asks for `Copy`, `+ - *`, negation, `from_f64`, `sin_cos` and `sin_cos_many` (the angles
 //! of a function computed together): nothing a lane type cannot give. `BLOCK_MARKS` and
 //! `block_mark` (where a lane type ends a block of long straight-line code) have defaults that
-//! ignore the marks. With `std`, `StdTrig` gives
-//! the platform's `sin_cos`, for `trig = "std"`.
+//! ignore the marks. With `std`, `StdTrig` gives the platform's `sin_cos`, for `trig = "std"`.
 
 use core::ops::{Add, Div, Mul, Neg, Sub};
 
