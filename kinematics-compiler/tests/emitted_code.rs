@@ -143,9 +143,60 @@ fn stanford_arm_ik_branch_and_measure() {
     insta::assert_snapshot!(ik_source("stanford_arm.toml", "link6"));
 }
 
+/// The operations `expr` writes: its sums, differences, products, quotients and negations, not
+/// counting calls (`T::from_f64(-0.5)` is a constant; the sines and cosines are no arithmetic).
+fn written_ops(expr: &syn::Expr) -> usize {
+    use syn::Expr;
+    match expr {
+        Expr::Binary(b) => 1 + written_ops(&b.left) + written_ops(&b.right),
+        Expr::Unary(u) if matches!(u.op, syn::UnOp::Neg(_)) => 1 + written_ops(&u.expr),
+        Expr::Unary(u) if matches!(u.op, syn::UnOp::Deref(_)) => 0, // `*q`, unpacked
+        Expr::Paren(p) => written_ops(&p.expr),
+        Expr::Array(a) => a.elems.iter().map(written_ops).sum(),
+        Expr::Tuple(t) => t.elems.iter().map(written_ops).sum(),
+        Expr::Struct(s) => s.fields.iter().map(|f| written_ops(&f.expr)).sum(),
+        Expr::Path(_) | Expr::Lit(_) | Expr::Call(_) | Expr::MethodCall(_) => 0,
+        other => panic!("an expression the emitter does not write: {}", quote::quote!(#other)),
+    }
+}
+
+/// The marks of one emitted function (`T::block_mark(n);`, their numbers in order), after
+/// checking where each stands: a mark follows the first statement that brings the operations
+/// since the previous mark to `BLOCK_MARK_OPS`, and what follows the last mark (statements and
+/// the returned value) is shorter than the spacing.
+fn checked_marks(source: &str, what: &str) -> Vec<usize> {
+    let file: syn::File = syn::parse_str(source).unwrap();
+    let syn::Item::Fn(function) = &file.items[0] else { panic!("{what}: one function") };
+    let spacing = kinematics_core::BLOCK_MARK_OPS;
+    let (mut marks, mut since, mut last) = (Vec::new(), 0, 0);
+    for stmt in &function.block.stmts {
+        match stmt {
+            syn::Stmt::Local(local) => {
+                last = local.init.as_ref().map_or(0, |init| written_ops(&init.expr));
+                since += last;
+            }
+            syn::Stmt::Expr(syn::Expr::Call(call), Some(_)) => {
+                let callee = quote::quote!(#call).to_string();
+                assert!(callee.starts_with("T :: block_mark"), "{what}: {callee}");
+                let syn::Expr::Lit(syn::ExprLit { lit: syn::Lit::Int(n), .. }) = &call.args[0] else {
+                    panic!("{what}: a numbered mark")
+                };
+                marks.push(n.base10_parse::<usize>().unwrap());
+                assert!(since >= spacing && since - last < spacing, "{what}: mark {n} after {since} operations");
+                since = 0;
+            }
+            syn::Stmt::Expr(value, None) => since += written_ops(value),
+            other => panic!("{what}: a statement the emitter does not write: {}", quote::quote!(#other)),
+        }
+    }
+    assert!(since < spacing, "{what}: {since} operations after the last mark");
+    assert_eq!(marks, (1..=marks.len()).collect::<Vec<_>>(), "{what}: numbered in order");
+    marks
+}
+
 /// Points fixed in links (as the sphere centres are) carry block marks, `T::block_mark(1);` on,
-/// numbered in order, about one per `BLOCK_MARK_OPS` operations of the body; the link poses'
-/// body, from the same compile, has none.
+/// numbered in order, one after the first statement that reaches `BLOCK_MARK_OPS` operations
+/// since the last.
 #[test]
 fn points_carry_block_marks_about_every_block_mark_ops() {
     let mut compiled = compile(&common::robot("ur5.toml"), &Request::all_links()).unwrap();
@@ -155,24 +206,40 @@ fn points_carry_block_marks_about_every_block_mark_ops() {
     let points = compiled.points(&places);
     let outputs: Vec<_> = points.iter().flatten().copied().collect();
     let cost = kinematics_compiler::OpCount::of(compiled.graph(), outputs.iter().copied());
-    let ops = cost.mul + cost.add;
     let options = EmitOptions::named("centers");
     let text = kinematics_compiler::emit::emit_points(&compiled, &points, &options, " Points.").to_string();
-    let marks: Vec<usize> = text
-        .split("T :: block_mark (")
-        .skip(1)
-        .map(|rest| rest.split(')').next().unwrap().trim().parse().unwrap())
-        .collect();
-    assert_eq!(marks, (1..=marks.len()).collect::<Vec<_>>(), "numbered in order");
-    let spacing = kinematics_core::BLOCK_MARK_OPS;
-    assert!(ops >= 3 * spacing, "a body long enough to need marks: {ops} operations");
-    // A mark follows the statement that reaches the spacing, so at most one per `spacing`
-    // operations, and the last stretch is shorter than the spacing plus one statement.
-    assert!(
-        marks.len() <= ops / spacing && marks.len() + 2 >= ops / spacing,
-        "{} marks, {ops} operations",
-        marks.len()
-    );
-    let poses = emit_module_source(&compiled, &options).unwrap();
-    assert!(!poses.contains("block_mark"), "the poses' body has no marks");
+    let marks = checked_marks(&text, "the points");
+    assert!(marks.len() >= 3, "{} operations, {} marks", cost.mul + cost.add, marks.len());
+}
+
+/// Poses and Jacobians carry block marks the same way, through their returned values too: a
+/// Jacobian's operations sit mostly in its entries, a tree's in its links' poses.
+#[test]
+fn poses_and_jacobians_carry_block_marks_through_their_values() {
+    let bodies = [
+        ("humanoid.urdf", Request::all_links(), "the humanoid's link poses"),
+        ("dual_arm_torso.urdf", Request::all_links(), "the dual-arm torso's link poses"),
+        (
+            "gen3.urdf",
+            Request::tip("end_effector_link").jacobian(JacobianFrame::LocalWorldAligned),
+            "the Gen3's Jacobian",
+        ),
+    ];
+    for (file, request, what) in bodies {
+        let compiled = compile(&common::robot(file), &request).unwrap();
+        let text = emit_module_source(&compiled, &EmitOptions::named("body")).unwrap();
+        let marks = checked_marks(&text, what);
+        assert!(marks.len() >= 2, "{what}: {} marks", marks.len());
+    }
+}
+
+/// A body shorter than `BLOCK_MARK_OPS` carries none.
+#[test]
+fn short_bodies_carry_no_marks() {
+    for (file, tip) in [("planar_3r.toml", "link3"), ("ur5.toml", "wrist_3_link")] {
+        let compiled = compile(&common::robot(file), &Request::tip(tip)).unwrap();
+        assert!(compiled.op_count().mul + compiled.op_count().add < kinematics_core::BLOCK_MARK_OPS);
+        let text = emit_module_source(&compiled, &EmitOptions::named("body")).unwrap();
+        assert!(checked_marks(&text, file).is_empty(), "{file}: {text}");
+    }
 }

@@ -76,7 +76,7 @@ struct Writer<'a> {
 /// The block marks of one body: `T::block_mark(1);`, `T::block_mark(2);`, ... about every
 /// [`BLOCK_MARK_OPS`] operations (the core's `Real::block_mark` says why: a lane type ends a block
 /// at every few marks, so that LLVM's vectorizer schedules each block whole).
-#[derive(Default)]
+#[derive(Default, Clone, Copy)]
 struct Marks {
     /// Operations since the last mark.
     ops: usize,
@@ -85,12 +85,34 @@ struct Marks {
 }
 
 impl Marks {
-    /// After a statement of `ops` operations: a mark if they bring the count to the spacing.
-    fn after(&mut self, ops: usize, out: &mut TokenStream) {
+    /// Of statements of `ops` operations each, written after the marks so far: the last one a
+    /// mark would follow, if any.
+    fn last_followed(self, ops: &[usize]) -> Option<usize> {
+        let mut marks = self;
+        let mut last = None;
+        for (k, &n) in ops.iter().enumerate() {
+            if marks.count(n) {
+                last = Some(k);
+            }
+        }
+        last
+    }
+
+    /// Counts a statement of `ops` operations: whether a mark follows it.
+    fn count(&mut self, ops: usize) -> bool {
         self.ops += ops;
         if self.ops >= BLOCK_MARK_OPS {
             self.ops = 0;
             self.written += 1;
+            true
+        } else {
+            false
+        }
+    }
+
+    /// After a statement of `ops` operations: a mark if they bring the count to the spacing.
+    fn after(&mut self, ops: usize, out: &mut TokenStream) {
+        if self.count(ops) {
             let mark = Literal::usize_unsuffixed(self.written);
             out.extend(quote!(T::block_mark(#mark);));
         }
@@ -244,10 +266,13 @@ impl Writer<'_> {
         let operand = |a: ExprId| if self.inline(a) { self.ops_written(a) } else { 0 };
         match g.node(id) {
             Node::Const(_) | Node::Var(_) | Node::Sin(_) | Node::Cos(_) | Node::Input(_) => 0,
-            Node::Add(a, b) => {
-                let (a, b) = (g.unneg(a).1, g.unneg(b).1);
-                1 + operand(a) + operand(b)
-            }
+            // As `define` writes it: one negated operand folded into a difference, otherwise a sum
+            // of the operands as they are (a negation written out counting one).
+            Node::Add(a, b) => match (g.unneg(a), g.unneg(b)) {
+                ((false, _), (true, b)) => 1 + operand(a) + operand(b),
+                ((true, a), (false, _)) => 1 + operand(a) + operand(b),
+                _ => 1 + operand(a) + operand(b),
+            },
             Node::Neg(a) | Node::Sqrt(a) => 1 + operand(a),
             Node::Mul(a, b) | Node::Div(a, b) | Node::Atan2(a, b) => 1 + operand(a) + operand(b),
             Node::IfPositive(c, a, b) => 1 + operand(c) + operand(a) + operand(b),
@@ -421,11 +446,35 @@ pub fn emit_function(compiled: &Compiled, options: &EmitOptions) -> TokenStream 
     let n_lit = Literal::usize_unsuffixed(n);
     let nv_lit = Literal::usize_unsuffixed(nv);
     let twist = compiled.velocity.is_some_and(|v| v.form == VelocityForm::Twist);
-    let mut body = prologue(compiled, &w, twist, options.trig, None);
+    let mut marks = Marks::default();
+    let mut body = prologue(compiled, &w, twist, options.trig, Some(&mut marks));
     let layout = Layout::of(compiled);
     let array = compiled.returns_array();
-    let mut value = TokenStream::new();
     let per_frame = layout.per_frame();
+    // Most of a body's operations may sit in its returned value (a pose's rows, a Jacobian's
+    // columns written out), so the marks run on through it: its entries up to the last one a
+    // mark follows are bound in turn (`frame0_0`, ... for frame 0's entries, those that compute
+    // something), and the value names them. Entries, not whole frames: a bound `Pose` of lanes is
+    // moved into the returned array, which LLVM left as copies (all link poses of the PUMA 560 in
+    // `F64x8` lanes 1.16 times as long).
+    // An entry another one repeats (a negation written out in both) is counted once.
+    let mut seen = std::collections::BTreeSet::new();
+    let ops: Vec<usize> =
+        outputs.iter().map(|&id| if w.inline(id) && seen.insert(id) { w.ops_written(id) } else { 0 }).collect();
+    let bound = marks.last_followed(&ops[..ops.len().saturating_sub(1)]).map_or(0, |k| k + 1);
+    let mut named = schedule.clone();
+    for (k, &id) in outputs.iter().enumerate().take(bound) {
+        if ops[k] > 0 && !named.bound.contains_key(&id) {
+            let name = format!("frame{}_{}", k / per_frame, k % per_frame);
+            let (name_ident, mut entry) = (ident(&name), TokenStream::new());
+            w.define(id, &mut entry);
+            body.extend(quote!(let #name_ident = #entry;));
+            named.bound.insert(id, name);
+        }
+        marks.after(ops[k], &mut body);
+    }
+    let w = Writer { schedule: &named, ..w };
+    let mut value = TokenStream::new();
     for k in 0..compiled.frames().len() {
         if k > 0 {
             punct(&mut value, ',');
