@@ -6,7 +6,8 @@
 //! - `collides` in the tabletop (12 boxes) and shelf (18 boxes, capsules and cylinders) scenes of
 //!   `scenes/`, each configuration with its own verdict (the fraction free printed), and on
 //!   all-free configurations (no early exit), one at a time and in batches (lanes);
-//! - `self_collides`, one at a time and in batches;
+//! - `self_collides`, one at a time and in batches, and with the link poses in the wide lanes
+//!   (`F64x8`, `F32x16`; the generic forms in a dispatched loop);
 //! - `motion_collides` (`f64` and `f32`) on motions between consecutive free configurations at
 //!   0.05 rad, per motion (the fraction colliding and the configurations a motion printed), and
 //!   per checked configuration on the free motions beside `collides_batch` on the same
@@ -35,7 +36,7 @@ use std::time::Duration;
 use criterion::Throughput;
 use kinematics::collision::{BoxObstacle, Environment, PointCloud, SphereObstacle};
 use kinematics::model::collision::{Meshes, fixed_apart_pairs, link_spheres, sphere_pairs};
-use kinematics::{Configurations, F32x16, F64x4, Kinematics, Lanes, SceneObstacles};
+use kinematics::{Configurations, F32x16, F64x4, F64x8, Kinematics, Lanes, SceneObstacles};
 
 #[derive(Kinematics)]
 #[kinematics(urdf = "robots/panda_spherized.urdf", collision(srdf = "robots/panda.srdf"), scalars(f64, f32))]
@@ -400,6 +401,32 @@ macro_rules! robot {
                 )
             })
         });
+        // The link poses and the self check on the wide lanes (`F64x8` and `F32x16`, which
+        // a user's own loop may take; their bodies are the ones most prone to run in scalar
+        // pieces without block marks), the loop dispatched once.
+        let packs64: Vec<[F64x8; $n]> =
+            qs.chunks_exact(8).map(|pack| std::array::from_fn(|j| F64x8::from_fn(|i| pack[i][j]))).collect();
+        macro_rules! wide {
+            ($id:literal, $packs:expr, $lanes:literal, $f:ident) => {
+                group.throughput(Throughput::Elements($lanes * $packs.len() as u64));
+                group.bench_function($id, |b| {
+                    b.iter(|| {
+                        kinematics::dispatch(
+                            #[inline(always)]
+                            || {
+                                for q in &$packs {
+                                    black_box(&<$robot>::$f(black_box(q)));
+                                }
+                            },
+                        )
+                    })
+                });
+            };
+        }
+        wide!("link_poses_lanes_f64x8", packs64, 8, link_poses_generic);
+        wide!("link_poses_lanes_f32x16", packs, 16, link_poses_generic);
+        wide!("self_collides_lanes_f64x8", packs64, 8, self_collides_generic);
+        wide!("self_collides_lanes_f32x16", packs, 16, self_collides_generic);
         group.throughput(Throughput::Elements(qs.len() as u64));
         group.bench_function("self_collides_batch", |b| {
             b.iter(|| <$robot>::self_collides_batch(black_box(&qs), &mut verdicts).unwrap())

@@ -54,7 +54,7 @@ pub trait Real:
     /// How many of straight-line code's block marks make one block for this type: `None` (the
     /// default, and `f64`'s and `f32`'s) ignores the marks.
     ///
-    /// Generated bodies of many statements (the sphere centres) call [`Real::block_mark`] about
+    /// Generated bodies of many statements (poses, Jacobians, sphere centres) call [`Real::block_mark`] about
     /// every [`BLOCK_MARK_OPS`] operations. A lane type's operations are loops over its lanes,
     /// which LLVM's SLP vectorizer turns back into vector instructions, and it schedules one block
     /// of code at a time within a budget: a block of a few thousand lane operations exceeds it, and
