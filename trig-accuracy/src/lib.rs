@@ -70,15 +70,16 @@ pub const RANGES_F64: [Range; 7] = [
     Range { name: "2^20 <= |x| < 2^1024 (slow path)", sampling: Sampling::Binades(20, 1024) },
 ];
 
-/// The ranges for f32 inputs (drawn as f64, rounded to f32).
+/// The ranges for f32 inputs (drawn as f64, rounded to f32). The f32 fast path ends at 2^8
+/// (`FAST_BOUND_F32`); [`exhaustive_f32`] measures every f32 below it.
 pub const RANGES_F32: [Range; 7] = [
     Range { name: "[-pi, pi]", sampling: Sampling::Uniform(core::f64::consts::PI) },
     Range { name: "[-100, 100]", sampling: Sampling::Uniform(100.0) },
+    Range { name: "[-256, 256] (fast bound)", sampling: Sampling::Uniform(256.0) },
     Range { name: "[-1e4, 1e4]", sampling: Sampling::Uniform(1e4) },
-    Range { name: "[-2^20, 2^20] (fast bound)", sampling: Sampling::Uniform(1_048_576.0) },
     Range { name: "|x| < 1, all binades", sampling: Sampling::Binades(-150, 0) },
-    Range { name: "1 <= |x| < 2^20, all binades", sampling: Sampling::Binades(0, 20) },
-    Range { name: "2^20 <= |x| < 2^128 (slow path)", sampling: Sampling::Binades(20, 128) },
+    Range { name: "1 <= |x| < 2^8, all binades", sampling: Sampling::Binades(0, 8) },
+    Range { name: "2^8 <= |x| < 2^128 (slow path)", sampling: Sampling::Binades(8, 128) },
 ];
 
 impl Sampling {
@@ -283,6 +284,26 @@ pub fn sweep_f32(subject: Subject, range: Range, points: u64, seed: u64) -> Erro
         .reduce(Errors::default, Errors::merge)
 }
 
+/// Every f32 of magnitude from `low` to `high`, both signs (about 2.3e9 values from 0 to the f32
+/// fast bound, 2^8), in parallel runs of bit patterns.
+pub fn exhaustive_f32(subject: Subject, low: f32, high: f32) -> Errors {
+    let bottom = u64::from(low.abs().to_bits());
+    let top = u64::from(high.abs().to_bits());
+    blocks(top + 1 - bottom)
+        .into_par_iter()
+        .map(|(block, len)| {
+            let first = bottom + block * BLOCK;
+            let inputs: Vec<f32> = (first..first + len)
+                .flat_map(|bits| {
+                    let magnitude = f32::from_bits(bits as u32);
+                    [magnitude, -magnitude]
+                })
+                .collect();
+            errors_f32(subject, &inputs)
+        })
+        .reduce(Errors::default, Errors::merge)
+}
+
 fn blocks(points: u64) -> Vec<(u64, u64)> {
     (0..points.div_ceil(BLOCK)).map(|b| (b, BLOCK.min(points - b * BLOCK))).collect()
 }
@@ -294,6 +315,8 @@ pub fn special_values_f64() -> Vec<f64> {
     let bound = kinematics_core::trig::FAST_BOUND;
     let mut v = vec![0.0, -0.0, f64::from_bits(1), f64::MIN_POSITIVE, f64::MIN_POSITIVE.next_down(), 1e-300, f64::MAX];
     v.extend([bound, bound.next_up(), bound.next_down(), 2.0 * bound, 1e22, 1e300]);
+    let bound_f32 = kinematics_core::trig::FAST_BOUND_F32;
+    v.extend([bound_f32, bound_f32.next_up(), bound_f32.next_down()].map(f64::from));
     for k in -4096..=4096 {
         for base in [f64::from(k) * core::f64::consts::FRAC_PI_4, f64::from(k) * core::f64::consts::FRAC_PI_2] {
             v.extend([base, base.next_up(), base.next_down()]);

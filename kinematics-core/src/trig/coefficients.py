@@ -18,10 +18,17 @@ What it derives:
   from the product x * (2/pi) in f64, which can put r a hair past pi/4), for
       sin(r) = r + r^3 * S(r^2),          S(z) ~ (sin(sqrt z) - sqrt z) / z^1.5
       cos(r) = 1 - r^2/2 + r^4 * C(r^2),   C(z) ~ (cos(sqrt z) - 1 + z/2) / z^2
-  with 6 coefficients each for f64 and 4 each for the f32 routines (evaluated in f64), each
-  minimising the error relative to sin(r) or cos(r). The coefficients are rounded to f64 one at a
-  time, the higher ones refitted after each rounding. The script prints each fit's levelled
-  relative error and the error after rounding (the doc comments in coefficients.rs).
+  with 6 coefficients each for f64, each minimising the error relative to sin(r) or cos(r). The
+  coefficients are rounded to f64 one at a time, the higher ones refitted after each rounding. The
+  script prints each fit's levelled relative error and the error after rounding (the doc comments
+  in coefficients.rs).
+* The f32 routines' own constants (they compute in f32): 2/pi rounded to f32; pi/2 split in two
+  16-bit parts, each rounded down (so the parts and the rest are positive, which keeps the sign of
+  a zero through the reduction), and the rest rounded to f32, so `k * part` is exact for every
+  integer |k| < 2^8 (the f32 fast path's bound |x| <= 256 gives |k| <= 163); and the same two
+  kernels with 3 coefficients each, fitted on [0, R32^2], R32 = pi/4 * (1 + 1e-4) (k is rounded from
+  the f32 product x * (2/pi), up to about 1.3e-5 of a quadrant off at |x| = 256), the
+  coefficients rounded to f32 one at a time.
 """
 
 import struct
@@ -133,9 +140,18 @@ def max_error(f, w, coeffs, a, b, grid=5000):
     return max(abs((horner(coeffs, x) - f(x)) * w(x)) for x in xs)
 
 
-def fit_rounded(f, w, a, b, n):
-    """Remez fit whose coefficients are rounded to f64 one at a time, lowest first, each later
-    coefficient refitted with the earlier ones fixed (so rounding the big ones costs little)."""
+def to_f64(v):
+    return mp.mpf(float(v))
+
+
+def to_f32(v):
+    return mp.mpf(struct.unpack("<f", struct.pack("<f", float(v)))[0])
+
+
+def fit_rounded(f, w, a, b, n, rounding=to_f64):
+    """Remez fit whose coefficients are rounded (to f64, or by `rounding`) one at a time, lowest
+    first, each later coefficient refitted with the earlier ones fixed (so rounding the big ones
+    costs little)."""
     fixed = []
     first_level = None
     for j in range(n):
@@ -148,15 +164,16 @@ def fit_rounded(f, w, a, b, n):
         coeffs, _ = remez(rest, weight, a, b, n - j)
         if first_level is None:
             first_level = max_error(f, w, coeffs, a, b)
-        fixed.append(mp.mpf(float(coeffs[0])))
+        fixed.append(rounding(coeffs[0]))
     return fixed, first_level
 
 
-def split(value, bits):
-    """value rounded to `bits` significant bits (as an exact mpf)."""
+def split(value, bits, rounding=mp.nint):
+    """value rounded to `bits` significant bits (as an exact mpf), to nearest unless `rounding` is
+    another of mpmath's (mp.floor: down)."""
     e = mp.floor(mp.log(abs(value), 2))
     scale = mp.mpf(2) ** (bits - 1 - e)
-    return mp.nint(value * scale) / scale
+    return rounding(value * scale) / scale
 
 
 def rust_f64(v):
@@ -202,8 +219,6 @@ def main():
     for name, f, w, weighting, n, what in (
         ("SIN_F64", sin_tail, sin_weight, sin_w, 6, "sin(r) = r + r^3 * S(r^2), f64 kernel"),
         ("COS_F64", cos_tail, cos_weight, cos_w, 6, "cos(r) = 1 - r^2/2 + r^4 * C(r^2), f64 kernel"),
-        ("SIN_F32", sin_tail, sin_weight, sin_w, 4, "sin(r) = r + r^3 * S(r^2), kernel of the f32 routines (evaluated in f64)"),
-        ("COS_F32", cos_tail, cos_weight, cos_w, 4, "cos(r) = 1 - r^2/2 + r^4 * C(r^2), kernel of the f32 routines (evaluated in f64)"),
     ):
         print()
         rounded, level = fit_rounded(f, w, ZLOW, ZMAX, n)
@@ -214,6 +229,63 @@ def main():
         print(f"pub const {name}: [f64; {n}] = [")
         for c in rounded:
             print(f"    {rust_f64(c)},")
+        print("];")
+    print_f32(half_pi, sin_w, cos_w)
+
+
+def rust_f32(v):
+    """The shortest decimal that reads back as the f32 `v` (an exact f32 value)."""
+    for digits in range(1, 12):
+        text = f"{float(v):.{digits}e}"
+        if to_f32(float(text)) == v:
+            mantissa, exponent = text.split("e")
+            mantissa = mantissa.rstrip("0").rstrip(".") if "." in mantissa else mantissa
+            if "." not in mantissa:
+                mantissa += ".0"
+            exponent = int(exponent)
+            return mantissa if exponent == 0 else f"{mantissa}e{exponent}"
+    raise AssertionError(v)
+
+
+def print_f32(half_pi, sin_w, cos_w):
+    """The f32 routines' constants: they compute in f32 (see the docstring)."""
+    q1 = split(half_pi, 16, mp.floor)
+    q2 = split(half_pi - q1, 16, mp.floor)
+    q3 = to_f32(half_pi - q1 - q2)
+    for q in (q1, q2, q3):
+        assert to_f32(q) == q and q > 0
+    tail = half_pi - q1 - q2 - q3
+    two_over_pi = to_f32(2 / mp.pi)
+    bits = struct.unpack("<I", struct.pack("<f", float(two_over_pi)))[0]
+    print()
+    print(f"/// 2/pi rounded to f32 ({rust_f32(two_over_pi)}, bits {bits:#010x}: core's constant);")
+    print("/// `x * FRAC_2_PI_F32` picks the f32 routines' quadrant count k.")
+    print("pub const FRAC_2_PI_F32: f32 = core::f32::consts::FRAC_2_PI;")
+    print("/// The bits of 2/pi rounded to f32, as computed here; a unit test holds core's constant to it.")
+    print("#[cfg(test)]")
+    print(f"pub const FRAC_2_PI_F32_BITS: u32 = {bits:#010x};")
+    print("/// pi/2 rounded down to 16 significant bits: `k * PIO2_F32_1` is exact in f32 for |k| < 2^8.")
+    print(f"pub const PIO2_F32_1: f32 = {rust_f32(q1)};")
+    print("/// The next 16 bits of pi/2, rounded down.")
+    print(f"pub const PIO2_F32_2: f32 = {rust_f32(q2)};")
+    print(f"/// The rest of pi/2 rounded to f32; pi/2 - (PIO2_F32_1 + .. + PIO2_F32_3) = {mp.nstr(tail, 3)}.")
+    print(f"pub const PIO2_F32_3: f32 = {rust_f32(q3)};")
+    r32 = mp.pi / 4 * (1 + mp.mpf("1e-4"))
+    zmax = r32 * r32
+    zlow = zmax * mp.mpf("1e-4")
+    for name, f, w, weighting, what in (
+        ("SIN_F32", sin_tail, sin_weight, sin_w, "sin(r) = r + r^3 * S(r^2), f32 kernel"),
+        ("COS_F32", cos_tail, cos_weight, cos_w, "cos(r) = 1 - r^2/2 + r^4 * C(r^2), f32 kernel"),
+    ):
+        print()
+        rounded, level = fit_rounded(f, w, zlow, zmax, 3, to_f32)
+        after = max_error(f, w, rounded, zlow, zmax)
+        print(f"/// Minimax coefficients of {what} (evaluated in f32), lowest power first, on r in")
+        print(f"/// [0, pi/4 (1 + 1e-4)], {weighting}. Error of the unrounded fit: {mp.nstr(level, 3)};")
+        print(f"/// with the coefficients rounded to f32 (one at a time, the rest refitted): {mp.nstr(after, 3)}.")
+        print(f"pub const {name}: [f32; 3] = [")
+        for c in rounded:
+            print(f"    {rust_f32(c)},")
         print("];")
 
 

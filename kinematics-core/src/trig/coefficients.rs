@@ -42,22 +42,33 @@ pub const COS_F64: [f64; 6] = [
     -1.136539623495634e-11,
 ];
 
-/// Minimax coefficients of sin(r) = r + r^3 * S(r^2), kernel of the f32 routines (evaluated in f64), lowest power first, on r in [0, pi/4 (1 + 1e-6)],
-/// error relative to sin(r). Error of the unrounded fit: 8.6e-12;
-/// with the coefficients rounded to f64 (one at a time, the rest refitted): 5.57e-12.
-pub const SIN_F32: [f64; 4] = [
-    -0.16666666644249678,
-    0.00833332958256502,
-    -0.00019839380654148686,
-    2.7186500489622307e-06,
+/// 2/pi rounded to f32 (6.3661975e-1, bits 0x3f22f983: core's constant);
+/// `x * FRAC_2_PI_F32` picks the f32 routines' quadrant count k.
+pub const FRAC_2_PI_F32: f32 = core::f32::consts::FRAC_2_PI;
+/// The bits of 2/pi rounded to f32, as computed here; a unit test holds core's constant to it.
+#[cfg(test)]
+pub const FRAC_2_PI_F32_BITS: u32 = 0x3f22f983;
+/// pi/2 rounded down to 16 significant bits: `k * PIO2_F32_1` is exact in f32 for |k| < 2^8.
+pub const PIO2_F32_1: f32 = 1.5707703;
+/// The next 16 bits of pi/2, rounded down.
+pub const PIO2_F32_2: f32 = 2.6063062e-5;
+/// The rest of pi/2 rounded to f32; pi/2 - (PIO2_F32_1 + .. + PIO2_F32_3) = -1.22e-18.
+pub const PIO2_F32_3: f32 = 6.0771006e-11;
+
+/// Minimax coefficients of sin(r) = r + r^3 * S(r^2), f32 kernel (evaluated in f32), lowest power first, on r in
+/// [0, pi/4 (1 + 1e-4)], error relative to sin(r). Error of the unrounded fit: 6.48e-9;
+/// with the coefficients rounded to f32 (one at a time, the rest refitted): 3.97e-9.
+pub const SIN_F32: [f32; 3] = [
+    -1.6666655e-1,
+    8.332189e-3,
+    -1.9518285e-4,
 ];
 
-/// Minimax coefficients of cos(r) = 1 - r^2/2 + r^4 * C(r^2), kernel of the f32 routines (evaluated in f64), lowest power first, on r in [0, pi/4 (1 + 1e-6)],
-/// error relative to cos(r). Error of the unrounded fit: 3.59e-13;
-/// with the coefficients rounded to f64 (one at a time, the rest refitted): 2.09e-13.
-pub const COS_F32: [f64; 4] = [
-    0.04166666664792151,
-    -0.0013888885478561556,
-    2.479989849502061e-05,
-    -2.7237002643676607e-07,
+/// Minimax coefficients of cos(r) = 1 - r^2/2 + r^4 * C(r^2), f32 kernel (evaluated in f32), lowest power first, on r in
+/// [0, pi/4 (1 + 1e-4)], error relative to cos(r). Error of the unrounded fit: 2.62e-10;
+/// with the coefficients rounded to f32 (one at a time, the rest refitted): 1.84e-10.
+pub const COS_F32: [f32; 3] = [
+    4.1666653e-2,
+    -1.3887612e-3,
+    2.4462202e-5,
 ];

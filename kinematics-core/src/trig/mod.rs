@@ -8,23 +8,29 @@
 //! # Method
 //! k = round(x * 2/pi) by the 1.5 * 2^52 trick; r = x - k pi/2 by Cody-Waite with pi/2 split in
 //! three 33-bit parts and a 53-bit tail, so `k * part` is exact for |k| < 2^20, carried as hi + lo
-//! (TwoSum) for f64; minimax kernels on [-pi/4, pi/4] (6 coefficients each for f64, 4 for f32);
-//! the quadrant (k mod 4, from the sum's bits) swaps and negates by bit masks. The f32 routines run
-//! the same steps in f64 and round once at the end.
+//! (TwoSum); minimax kernels on [-pi/4, pi/4] (6 coefficients each), with lo's first-order effect;
+//! the quadrant (k mod 4, from the sum's bits) swaps and negates by bit masks. The f32 routines
+//! take the same steps in f32 (eight values to an AVX2 register where f64 holds four): k by
+//! 1.5 * 2^23, pi/2 in two 16-bit parts and an f32 tail (exact products for |k| < 2^8), the
+//! reduction carried as hi + lo (Fast2Sum), 3 coefficients each.
 //!
-//! **Fast-path bound: |x| <= [`FAST_BOUND`] = 2^20** (about 1.05e6 rad). Beyond it, and for NaN and
-//! infinities, libm's `sincos` (Payne-Hanek) recomputes just those lanes, in one rarely taken
-//! branch. NaN and +-infinity give NaN for both outputs.
+//! **Fast-path bounds: |x| <= [`FAST_BOUND`] = 2^20** (about 1.05e6 rad) for f64, **|x| <=
+//! [`FAST_BOUND_F32`] = 2^8** (256 rad, about 41 turns) for f32. Beyond them, and for NaN and
+//! infinities, libm's f64 `sincos` (Payne-Hanek) recomputes just those lanes, in one rarely taken
+//! branch (f32 values rounded once from it). NaN and +-infinity give NaN for both outputs.
 //!
 //! # Accuracy contract (measured)
 //! `cargo run --release -p trig-accuracy -- --points 100000000 --wide`: 10^8 fixed-seed points per
 //! range, reference glibc's sin/cos (largest known error 1 ulp per the glibc manual's "Errors in
-//! Math Functions"), 418 s wall on 2 threads for all 28 rows (ours and wide). f64: at most 1 ulp
-//! from glibc on every range ([-pi, pi], [-100, 100], [-1e4, 1e4], [-2^20, 2^20], all binades below
-//! 1, all binades 1..2^20, beyond 2^20), so within 2 ulp of the truth; at most 1.11e-16 absolute
-//! (+ glibc's 1.11e-16: below 1e-15 everywhere). f32: at most 0.500 ulp (against the unrounded f64
-//! reference: the result is the correctly rounded f32 of a value within 2^-29 ulp) on every range,
-//! including beyond 2^20. `trig-accuracy`'s contract test checks this on 10^6 points per range.
+//! Math Functions"). f64: at most 1 ulp from glibc on every range ([-pi, pi], [-100, 100], [-1e4,
+//! 1e4], [-2^20, 2^20], all binades below 1, all binades 1..2^20, beyond 2^20), so within 2 ulp of
+//! the truth; at most 1.11e-16 absolute (+ glibc's 1.11e-16: below 1e-15 everywhere). f32: within
+//! 0.8 ulp of the truth on every f32 of the fast range (`trig-accuracy --exhaustive` measures all
+//! 2.3e9 of them: at most 0.79994 ulp), and at most 0.5 ulp plus 2^-29 beyond it (libm's f64
+//! values rounded once). `trig-accuracy`'s contract tests check this on 10^6 points per range and
+//! on every f32 from 2^-4 to the bound. (Until 2026-11-29 the f32 routines computed in f64 and
+//! were within 0.5 ulp; in f32 the Panda's link poses in eight `f32` lanes take 0.87 times the
+//! time, its sphere centres 0.91 times: see the Speed table below and the Lanes guide.)
 //!
 //! # Why not wide or libm
 //! wide 1.7.1's `f64x4::sin_cos` (the same sweep): 2 ulp from glibc on [-pi, pi] (so up to 3 from
@@ -63,8 +69,8 @@ mod kernel;
 mod tests;
 
 pub use atan::{atan2, atan2_f64_lanes};
-pub use kernel::FAST_BOUND;
 use kernel::Kernel;
+pub use kernel::{FAST_BOUND, FAST_BOUND_F32};
 
 /// `(sin x, cos x)` for `f64`; see the module doc for the accuracy contract.
 #[inline(always)]
