@@ -29,8 +29,8 @@
 //! 2.3e9 of them: at most 0.79994 ulp), and at most 0.5 ulp plus 2^-29 beyond it (libm's f64
 //! values rounded once). `trig-accuracy`'s contract tests check this on 10^6 points per range and
 //! on every f32 from 2^-4 to the bound. (Until 2026-11-29 the f32 routines computed in f64 and
-//! were within 0.5 ulp; in f32 the Panda's link poses in eight `f32` lanes take 0.87 times the
-//! time, its sphere centres 0.91 times: see the Speed table below and the Lanes guide.)
+//! were within 0.5 ulp; in f32 the Panda's link poses in eight `f32` lanes take 0.86 times the
+//! time, its sphere centres 0.89 times: the Lanes guide has the measurements.)
 //!
 //! # Why not wide or libm
 //! wide 1.7.1's `f64x4::sin_cos` (the same sweep): 2 ulp from glibc on [-pi, pi] (so up to 3 from
@@ -53,6 +53,10 @@
 //! |---|---|---|---|---|---|
 //! | f32 baseline | 10.8 | 14.0 | 5.4 | 5.6 | 2.4 |
 //! | f32 native | 9.6 | 10.4 | 1.54 | 1.25 | 0.94 |
+//!
+//! The f32 rows were measured when the f32 routines computed in f64. Computed in f32, on an AVX2
+//! machine (2026-11-29, baseline build, two runs each in alternation), eight lanes took 3.4 and
+//! 3.75 ns a pair against 4.5 and 4.6 before.
 //!
 //! The native build packs `sin_cos_f64_lanes::<8>` into zmm registers (`vmulpd zmm`, no `vfmadd`),
 //! baseline into `mulpd xmm` pairs; neither has a branch in the fast path, only the slow-path test.
