@@ -151,26 +151,14 @@ fn fast_bound_and_its_neighbours_agree_with_libm() {
     assert_eq!(sin_cos_f32(bound.next_up()), (s as f32, c as f32));
 }
 
+/// Values of every path mixed: zeros, both fast paths, 256 and 300 (the f32 bound and a value
+/// beyond it, on the f64 fast path), values beyond the f64 bound, NaN, infinity, a subnormal.
+const MIXED: [f64; 15] =
+    [0.0, -0.0, 0.3, -2.5, PI, 100.0, 256.0, -1e4, FAST_BOUND, 300.0, 2e6, f64::NAN, f64::INFINITY, 1e-310, f64::MAX];
+
 #[test]
 fn lanes_equal_scalar_bit_for_bit() {
-    // 256 and 300: the f32 bound and a value beyond it, on the f64 fast path.
-    let values: [f64; 15] = [
-        0.0,
-        -0.0,
-        0.3,
-        -2.5,
-        PI,
-        100.0,
-        256.0,
-        -1e4,
-        FAST_BOUND,
-        300.0,
-        2e6,
-        f64::NAN,
-        f64::INFINITY,
-        1e-310,
-        f64::MAX,
-    ];
+    let values = MIXED;
     fn check<const N: usize>(x: [f64; N]) {
         let (s, c) = sin_cos_f64_lanes(x);
         for i in 0..N {
@@ -227,24 +215,7 @@ fn the_magnitude_key_orders_as_the_fast_range() {
 /// slow path's values (beyond the bound, NaN, infinities) anywhere among them.
 #[test]
 fn packed_lanes_equal_scalar_bit_for_bit() {
-    // 256 and 300: the f32 bound and a value beyond it, on the f64 fast path.
-    let values: [f64; 15] = [
-        0.0,
-        -0.0,
-        0.3,
-        -2.5,
-        PI,
-        100.0,
-        256.0,
-        -1e4,
-        FAST_BOUND,
-        300.0,
-        2e6,
-        f64::NAN,
-        f64::INFINITY,
-        1e-310,
-        f64::MAX,
-    ];
+    let values = MIXED;
     let at = |k: usize| values[k % values.len()];
     for start in 0..values.len() {
         // Three values of eight lanes; the slow ones fall in every value and lane in turn.
