@@ -106,7 +106,7 @@ pub fn sin_cos_f64_lanes<const N: usize>(x: [f64; N]) -> ([f64; N], [f64; N]) {
 pub const F64_CHUNK: usize = 4;
 
 /// How many `f32` values [`sin_cos_f32_lanes`] puts through the fast path together: eight, one AVX2
-/// register of `f32` (the fast path runs in `f64`, so four to a register as it computes).
+/// register of `f32` (the fast path computes in `f32`).
 pub const F32_CHUNK: usize = 8;
 
 /// Sines and cosines of `N` independent `f32` values at once, bit for bit what [`sin_cos_f32`]
