@@ -631,6 +631,46 @@ mod tests {
         assert!(missing.starts_with("none.srdf: cannot read the file"), "{missing}");
     }
 
+    /// Up to 128 points (spheres, groups and links), the checks read them computed ahead; beyond,
+    /// they place the centres their tests reach from the links' poses (`MAX_POINTS_AHEAD` in the
+    /// compiler has the measurements). Both give the same verdicts (the core's tests).
+    #[test]
+    fn the_checks_compute_their_points_ahead_only_for_few_spheres() {
+        let geometry = |shape: &str| {
+            ARM.replace(
+                "<link name=\"upper\"/>",
+                &format!("<link name=\"upper\"><collision><geometry>{shape}</geometry></collision></link>"),
+            )
+            .replace(
+                "<link name=\"tool0\"/>",
+                "<link name=\"tool0\"><collision><geometry><sphere radius=\"0.1\"/></geometry></collision></link>",
+            )
+        };
+        let few = geometry("<sphere radius=\"0.1\"/>");
+        let many = geometry("<cylinder radius=\"0.1\" length=\"1.0\"/>");
+        let dir = fixture("ahead", &[("few.urdf", &few), ("many.urdf", &many)]);
+        let few = Robot::urdf("few.urdf").manifest_dir(&dir).collision().generate().unwrap();
+        let many = Robot::urdf("many.urdf").manifest_dir(&dir).collision().sphere_cover(0.002).generate().unwrap();
+        let spheres = |source: &str| {
+            let line = source.lines().find(|l| l.contains("const SPHERE_RADII: [f64; ")).expect("the radii's constant");
+            line.split("[f64; ")
+                .nth(1)
+                .and_then(|r| r.split(']').next())
+                .and_then(|n| n.parse::<usize>().ok())
+                .expect("its length")
+        };
+        assert!(spheres(&few) == 2 && spheres(&many) > 128, "{} and {} spheres", spheres(&few), spheres(&many));
+        // The calls as tokens, whatever the lines they are formatted on.
+        let (few, many): (String, String) = (few.split_whitespace().collect(), many.split_whitespace().collect());
+        assert!(
+            few.contains("fngeneric_collision_points") && few.contains("COLLISION_TABLES.collides_points("),
+            "{few}"
+        );
+        assert!(few.contains("COLLISION_TABLES.self_collides_points("), "{few}");
+        assert!(!many.contains("generic_collision_points") && many.contains("COLLISION_TABLES.collides("), "{many}");
+        assert!(many.contains("COLLISION_TABLES.self_collides("), "{many}");
+    }
+
     #[test]
     fn debug_is_the_message() {
         let dir = fixture("debug", &[("arm.urdf", ARM)]);

@@ -23,9 +23,15 @@ use crate::pose::Pose;
 /// of a few neighbouring spheres (its range of spheres, its bounding sphere), each sphere's centre
 /// in its link's frame and radius, and the link pairs its self-collision check tests.
 ///
-/// A check takes the poses of the links with spheres (in the order of `links`), as the generated
-/// `generic_collision_poses` returns them, and places a sphere (`R p + t`) only when it is
-/// tested: a link's spheres only where its bounding sphere hits.
+/// A check finds the centres of the robot's spheres and bounding spheres in one of two ways.
+/// [`CollisionTables::collides`] and [`CollisionTables::self_collides`] take the poses of the
+/// links with spheres (in the order of `links`) and place a centre (`R p + t`) only when it is
+/// tested: a link's spheres only where its bounding sphere hits. This is how a robot loaded at
+/// run time is checked. [`CollisionTables::collides_points`] and
+/// [`CollisionTables::self_collides_points`] take every centre computed ahead, as the generated
+/// `generic_collision_points` returns them: the compiler derives each centre symbolically with
+/// the link poses' simplifications, which costs less than placing the ones the tests reach,
+/// since a pair's tests place the same group and sphere centres again and again.
 ///
 /// ```
 /// use kinematics_core::collision::{CollisionTables, Environment, SphereObstacle};
@@ -86,16 +92,50 @@ impl CollisionTables<'_> {
         held: Option<HeldObject<'_>>,
     ) -> LaneMask {
         let poses = fence(poses);
+        let at = Placing { tables: self, poses };
         // The grids first: a lookup per configuration, which may settle some before any test.
         let grids = GridVerdicts::of(self.grids, q);
-        let mut hit = self.obstacle_hits(poses, env, non_finite_entries(q) | L::Flags::from_mask(grids.colliding));
+        let mut hit = self.obstacle_hits(&at, env, non_finite_entries(q) | L::Flags::from_mask(grids.colliding));
         if let Some(held) = held {
             hit = held.hits(self, poses, env, hit);
         }
         if hit.all() {
             return hit.bits();
         }
-        self.self_hits(poses, hit, &grids).bits()
+        self.self_hits(&at, hit, &grids).bits()
+    }
+
+    /// [`CollisionTables::collides`] on the robot's points as the generated
+    /// `generic_collision_points` returns them (every sphere's centre in the checks' order, then
+    /// each group's bounding sphere's, then each link's), with the links' poses only for a held
+    /// object, whose own centres are placed by them.
+    #[inline(always)]
+    pub fn collides_points<L: CheckLanes>(
+        &self,
+        q: &[L],
+        points: &[[L; 3]],
+        env: &Environment<'_>,
+        held: Option<(HeldObject<'_>, &[Pose<L>])>,
+    ) -> LaneMask {
+        let at = Placed::new(self, fence(points));
+        let grids = GridVerdicts::of(self.grids, q);
+        let mut hit = self.obstacle_hits(&at, env, non_finite_entries(q) | L::Flags::from_mask(grids.colliding));
+        if let Some((held, poses)) = held {
+            hit = held.hits(self, poses, env, hit);
+        }
+        if hit.all() {
+            return hit.bits();
+        }
+        self.self_hits(&at, hit, &grids).bits()
+    }
+
+    /// [`CollisionTables::self_collides`] on the robot's points (see
+    /// [`CollisionTables::collides_points`]).
+    #[inline(always)]
+    pub fn self_collides_points<L: CheckLanes>(&self, q: &[L], points: &[[L; 3]]) -> LaneMask {
+        let grids = GridVerdicts::of(self.grids, q);
+        let at = Placed::new(self, fence(points));
+        self.self_hits(&at, non_finite_entries(q) | L::Flags::from_mask(grids.colliding), &grids).bits()
     }
 
     /// The lanes where two links of a checked pair of the robot at `q` touch. A lane whose `q` is
@@ -103,13 +143,8 @@ impl CollisionTables<'_> {
     #[inline(always)]
     pub fn self_collides<L: CheckLanes>(&self, q: &[L], poses: &[Pose<L>]) -> LaneMask {
         let grids = GridVerdicts::of(self.grids, q);
-        self.self_hits(fence(poses), non_finite_entries(q) | L::Flags::from_mask(grids.colliding), &grids).bits()
-    }
-
-    /// Link `k`'s bounding sphere's centre.
-    #[inline(always)]
-    fn bound<L: CheckLanes>(&self, poses: &[Pose<L>], k: usize) -> [L; 3] {
-        poses[k].place(self.links[k].2)
+        let at = Placing { tables: self, poses: fence(poses) };
+        self.self_hits(&at, non_finite_entries(q) | L::Flags::from_mask(grids.colliding), &grids).bits()
     }
 
     /// `hit` and the lanes where a sphere touches an obstacle: a few links at a time (their
@@ -118,7 +153,12 @@ impl CollisionTables<'_> {
     /// each obstacle prepared once in lanes and tested against each link's bounding sphere, then
     /// against its spheres only where that hits.
     #[inline(always)]
-    fn obstacle_hits<L: CheckLanes>(&self, poses: &[Pose<L>], env: &Environment<'_>, mut hit: L::Flags) -> L::Flags {
+    fn obstacle_hits<L: CheckLanes, C: Centers<L>>(
+        &self,
+        at: &C,
+        env: &Environment<'_>,
+        mut hit: L::Flags,
+    ) -> L::Flags {
         if hit.all() || env.is_empty() {
             return hit;
         }
@@ -132,7 +172,7 @@ impl CollisionTables<'_> {
         for first in (0..n).step_by(CHUNK) {
             let count = CHUNK.min(n - first);
             for (slot, k) in bounds.iter_mut().zip(first..first + count) {
-                *slot = (self.bound(poses, k), L::from_f64(self.links[k].3));
+                *slot = (at.link(k), L::from_f64(self.links[k].3));
             }
             if let Some(extent) = &extent {
                 let mut near = [0u8; CHUNK];
@@ -143,7 +183,7 @@ impl CollisionTables<'_> {
                         listed += 1;
                     }
                 }
-                let chunk = Chunk { tables: self, poses, first, bounds: &bounds, list: &near[..listed] };
+                let chunk = Chunk { tables: self, at, first, bounds: &bounds, list: &near[..listed] };
                 hit = chunk.against(env.spheres, hit);
                 hit = chunk.against(env.capsules, hit);
                 hit = chunk.against(env.cylinders, hit);
@@ -154,8 +194,8 @@ impl CollisionTables<'_> {
                 for (i, slot) in (0..).zip(&mut every) {
                     *slot = i;
                 }
-                hit = Chunk { tables: self, poses, first, bounds: &bounds, list: &every[..count] }
-                    .against_query(query, hit);
+                hit =
+                    Chunk { tables: self, at, first, bounds: &bounds, list: &every[..count] }.against_query(query, hit);
             }
             if hit.all() {
                 return hit;
@@ -170,7 +210,7 @@ impl CollisionTables<'_> {
     /// groups: each of the first's against the second group's bounding sphere, and where that
     /// touches, against each of the second's.
     #[inline(always)]
-    fn self_hits<L: CheckLanes>(&self, poses: &[Pose<L>], mut hit: L::Flags, grids: &GridVerdicts) -> L::Flags {
+    fn self_hits<L: CheckLanes, C: Centers<L>>(&self, at: &C, mut hit: L::Flags, grids: &GridVerdicts) -> L::Flags {
         // Filled anew for each pair of groups; made once (zeroing it per pair was measured).
         let mut placed = [([L::from_f64(0.0); 3], L::from_f64(0.0)); PLACED];
         // The compiler's pairs come sorted by their first link: its bound is placed once for
@@ -188,24 +228,24 @@ impl CollisionTables<'_> {
             }
             let ((ga, ea, ..), (gb, eb, ..)) = (self.links[i], self.links[j]);
             if i != last {
-                (last, bound_i) = (i, self.bound(poses, i));
+                (last, bound_i) = (i, at.link(i));
             }
-            let bound_j = self.bound(poses, j);
+            let bound_j = at.link(j);
             let (ra, rb) = (L::from_f64(self.links[i].3), L::from_f64(self.links[j].3));
             let near = touch(&bound_i, ra, &bound_j, rb) & to_test;
             if !near.any() {
                 continue;
             }
             'pair: for a in ga..ea {
-                let (a0, a1, ca, ra) = self.groups[a];
-                let (ca, ra) = (poses[i].place(ca), L::from_f64(ra));
+                let (a0, a1, _, ra) = self.groups[a];
+                let (ca, ra) = (at.group(i, a), L::from_f64(ra));
                 let close_a = touch(&ca, ra, &bound_j, rb) & near;
                 if !close_a.any() {
                     continue;
                 }
                 for b in gb..eb {
-                    let (b0, b1, cb, rg) = self.groups[b];
-                    let (cb, rg) = (poses[j].place(cb), L::from_f64(rg));
+                    let (b0, b1, _, rg) = self.groups[b];
+                    let (cb, rg) = (at.group(j, b), L::from_f64(rg));
                     let close = touch(&ca, ra, &cb, rg) & close_a;
                     if !close.any() {
                         continue;
@@ -219,14 +259,14 @@ impl CollisionTables<'_> {
                     for first in (b0..b1).step_by(PLACED) {
                         let mut count = 0;
                         for s in a0..a1 {
-                            let (center, r) = (poses[i].place(self.centers[s]), L::from_f64(self.radii[s]));
+                            let (center, r) = (at.sphere(i, s), L::from_f64(self.radii[s]));
                             let close_s = touch(&center, r, &cb, rg) & close;
                             if !close_s.any() {
                                 continue;
                             }
                             if count == 0 {
                                 for t in first..b1.min(first + PLACED) {
-                                    placed[count] = (poses[j].place(self.centers[t]), L::from_f64(self.radii[t]));
+                                    placed[count] = (at.sphere(j, t), L::from_f64(self.radii[t]));
                                     count += 1;
                                 }
                             }
@@ -266,15 +306,15 @@ pub(super) fn fence<T: ?Sized>(poses: &T) -> &T {
 /// Consecutive links of a check from `first`, their bounding spheres placed, and which of them
 /// (positions in `bounds`) the tests take.
 #[derive(Clone, Copy)]
-struct Chunk<'c, 't, L> {
+struct Chunk<'c, 't, L, C> {
     tables: &'c CollisionTables<'t>,
-    poses: &'c [Pose<L>],
+    at: &'c C,
     first: usize,
     bounds: &'c [([L; 3], L)],
     list: &'c [u8],
 }
 
-impl<L: CheckLanes> Chunk<'_, '_, L> {
+impl<L: CheckLanes, C: Centers<L>> Chunk<'_, '_, L, C> {
     /// `hit` and the lanes where one of the links' spheres touches one of `obstacles`: per
     /// obstacle (prepared once), each link's bounding sphere first, then its spheres (placed as
     /// they are tested) on the lanes it hits until each of them is decided.
@@ -291,13 +331,13 @@ impl<L: CheckLanes> Chunk<'_, '_, L> {
     }
 }
 
-impl<L: CheckLanes> Chunk<'_, '_, L> {
+impl<L: CheckLanes, C: Centers<L>> Chunk<'_, '_, L, C> {
     /// `hit` and the lanes where one of the links' spheres touches an obstacle of `query`: each
     /// link's bounding sphere asked first, then its spheres on the lanes it touches, one lane at
     /// a time.
     #[inline(always)]
     fn against_query(&self, query: &dyn SphereQuery, mut hit: L::Flags) -> L::Flags {
-        let Chunk { tables, poses, first, bounds, list } = *self;
+        let Chunk { tables, at, first, bounds, list } = *self;
         for &i in list {
             let (k, (bound, radius)) = (first + usize::from(i), bounds[usize::from(i)]);
             let near = query_lanes(query, &bound, radius, !hit.bits());
@@ -307,7 +347,7 @@ impl<L: CheckLanes> Chunk<'_, '_, L> {
             let (g0, g1, ..) = tables.links[k];
             let (start, end) = (tables.groups[g0].0, tables.groups[g1 - 1].1);
             for s in start..end {
-                let center = poses[k].place(tables.centers[s]);
+                let center = at.sphere(k, s);
                 let asked = near.and_not(hit).bits();
                 hit = hit | query_lanes(query, &center, L::from_f64(tables.radii[s]), asked);
                 if !near.and_not(hit).any() {
@@ -323,15 +363,15 @@ impl<L: CheckLanes> Chunk<'_, '_, L> {
 }
 
 /// A chunk of links tested against one prepared obstacle after another.
-struct Against<'a, 'c, 't, L: CheckLanes> {
-    chunk: &'a Chunk<'c, 't, L>,
+struct Against<'a, 'c, 't, L: CheckLanes, C> {
+    chunk: &'a Chunk<'c, 't, L, C>,
     hit: L::Flags,
 }
 
-impl<L: CheckLanes> Visit<L> for Against<'_, '_, '_, L> {
+impl<L: CheckLanes, C: Centers<L>> Visit<L> for Against<'_, '_, '_, L, C> {
     #[inline(always)]
     fn visit<P: Prepared<L>>(&mut self, prepared: &P) {
-        let Chunk { tables, poses, first, bounds, list } = *self.chunk;
+        let Chunk { tables, at, first, bounds, list } = *self.chunk;
         let mut hit = self.hit;
         for &i in list {
             let (k, (bound, radius)) = (first + usize::from(i), &bounds[usize::from(i)]);
@@ -343,9 +383,8 @@ impl<L: CheckLanes> Visit<L> for Against<'_, '_, '_, L> {
             // bounds are not tested (measured slower: a link's few spheres cost about as much).
             let (g0, g1, ..) = tables.links[k];
             let (start, end) = (tables.groups[g0].0, tables.groups[g1 - 1].1);
-            let pose = &poses[k];
             for s in start..end {
-                let center = pose.place(tables.centers[s]);
+                let center = at.sphere(k, s);
                 hit = hit | (prepared.hits(&center, L::from_f64(tables.radii[s])) & near);
                 if !near.and_not(hit).any() {
                     break;
@@ -356,6 +395,68 @@ impl<L: CheckLanes> Visit<L> for Against<'_, '_, '_, L> {
             }
         }
         self.hit = hit;
+    }
+}
+
+/// Where a check finds the centres in the base frame of link `k`'s bounding sphere, of its group
+/// `g`'s and of its sphere `s` (`g` and `s` indices into the tables' `groups` and `centers`).
+trait Centers<L> {
+    fn link(&self, k: usize) -> [L; 3];
+    fn group(&self, k: usize, g: usize) -> [L; 3];
+    fn sphere(&self, k: usize, s: usize) -> [L; 3];
+}
+
+/// Centres placed by the links' poses (`R p + t`) when asked.
+#[derive(Clone, Copy)]
+struct Placing<'a, 't, L> {
+    tables: &'a CollisionTables<'t>,
+    poses: &'a [Pose<L>],
+}
+
+impl<L: CheckLanes> Centers<L> for Placing<'_, '_, L> {
+    #[inline(always)]
+    fn link(&self, k: usize) -> [L; 3] {
+        self.poses[k].place(self.tables.links[k].2)
+    }
+    #[inline(always)]
+    fn group(&self, k: usize, g: usize) -> [L; 3] {
+        self.poses[k].place(self.tables.groups[g].2)
+    }
+    #[inline(always)]
+    fn sphere(&self, k: usize, s: usize) -> [L; 3] {
+        self.poses[k].place(self.tables.centers[s])
+    }
+}
+
+/// Centres computed ahead, in the generated points' order: the spheres, the groups, the links.
+#[derive(Clone, Copy)]
+struct Placed<'a, L> {
+    spheres: &'a [[L; 3]],
+    groups: &'a [[L; 3]],
+    links: &'a [[L; 3]],
+}
+
+impl<'a, L> Placed<'a, L> {
+    #[inline(always)]
+    fn new(tables: &CollisionTables<'_>, points: &'a [[L; 3]]) -> Self {
+        let (spheres, rest) = points.split_at(tables.centers.len());
+        let (groups, links) = rest.split_at(tables.groups.len());
+        Placed { spheres, groups, links }
+    }
+}
+
+impl<L: CheckLanes> Centers<L> for Placed<'_, L> {
+    #[inline(always)]
+    fn link(&self, k: usize) -> [L; 3] {
+        self.links[k]
+    }
+    #[inline(always)]
+    fn group(&self, _: usize, g: usize) -> [L; 3] {
+        self.groups[g]
+    }
+    #[inline(always)]
+    fn sphere(&self, _: usize, s: usize) -> [L; 3] {
+        self.spheres[s]
     }
 }
 
@@ -384,6 +485,40 @@ mod tests {
         grids: &[],
     };
 
+    /// The points `collides_points` reads, placed from `poses`: each sphere's centre, each
+    /// group's bounding sphere's, each link's, as the generated `generic_collision_points` orders
+    /// them.
+    fn points_of<L: CheckLanes>(tables: &CollisionTables<'_>, poses: &[Pose<L>]) -> std::vec::Vec<[L; 3]> {
+        let at = Placing { tables, poses };
+        let link_of = |g: usize| tables.links.iter().position(|&(g0, g1, ..)| (g0..g1).contains(&g)).unwrap();
+        let group_of = |s: usize| tables.groups.iter().position(|&(s0, s1, ..)| (s0..s1).contains(&s)).unwrap();
+        let spheres = (0..tables.centers.len()).map(|s| at.sphere(link_of(group_of(s)), s));
+        let groups = (0..tables.groups.len()).map(|g| at.group(link_of(g), g));
+        spheres.chain(groups).chain((0..tables.links.len()).map(|k| at.link(k))).collect()
+    }
+
+    /// `tables.collides` on `poses`, asserted equal to `collides_points` on the points placed
+    /// from them.
+    fn collides<L: CheckLanes>(
+        tables: &CollisionTables<'_>,
+        q: &[L],
+        poses: &[Pose<L>],
+        env: &Environment<'_>,
+    ) -> LaneMask {
+        let by_poses = tables.collides(q, poses, env, None);
+        let by_points = tables.collides_points(q, &points_of(tables, poses), env, None);
+        assert_eq!(by_points.bits(), by_poses.bits(), "collides_points against collides");
+        by_poses
+    }
+
+    /// `tables.self_collides` on `poses`, asserted equal to `self_collides_points`.
+    fn self_collides<L: CheckLanes>(tables: &CollisionTables<'_>, q: &[L], poses: &[Pose<L>]) -> LaneMask {
+        let by_poses = tables.self_collides(q, poses);
+        let by_points = tables.self_collides_points(q, &points_of(tables, poses));
+        assert_eq!(by_points.bits(), by_poses.bits(), "self_collides_points against self_collides");
+        by_poses
+    }
+
     fn at<T: Real>(x: T) -> Pose<T> {
         let (zero, one) = (T::from_f64(0.0), T::from_f64(1.0));
         Pose { rotation: [[one, zero, zero], [zero, one, zero], [zero, zero, one]], translation: [x, zero, zero] }
@@ -392,10 +527,10 @@ mod tests {
     #[test]
     fn a_configuration_that_is_not_finite_is_never_free() {
         let far = [at(0.0), at(5.0)];
-        assert!(!TABLES.self_collides(&[0.0_f64], &far).any());
-        assert!(TABLES.self_collides(&[f64::NAN], &far).any());
-        assert!(TABLES.collides(&[f64::INFINITY], &far, &Environment::empty(), None).any());
-        assert!(!TABLES.collides(&[0.0], &far, &Environment::empty(), None).any());
+        assert!(!self_collides(&TABLES, &[0.0_f64], &far).any());
+        assert!(self_collides(&TABLES, &[f64::NAN], &far).any());
+        assert!(collides(&TABLES, &[f64::INFINITY], &far, &Environment::empty()).any());
+        assert!(!collides(&TABLES, &[0.0], &far, &Environment::empty()).any());
     }
 
     /// A grid over `q[0]` from 0 to 4 in four cells (to test, free, colliding, to test) deciding
@@ -414,18 +549,18 @@ mod tests {
         let tables = CollisionTables { grids: &[grid], ..TABLES };
         let (touching, apart) = ([at(0.0), at(0.1)], [at(0.0), at(5.0)]);
         // Cell 0 and beyond the grid: tested.
-        assert!(tables.self_collides(&[0.5], &touching).any());
-        assert!(!tables.self_collides(&[0.5], &apart).any());
-        assert!(tables.self_collides(&[9.0], &touching).any());
+        assert!(self_collides(&tables, &[0.5], &touching).any());
+        assert!(!self_collides(&tables, &[0.5], &apart).any());
+        assert!(self_collides(&tables, &[9.0], &touching).any());
         // Cell 1 free, cell 2 colliding, whatever the poses.
-        assert!(!tables.self_collides(&[1.5], &touching).any());
-        assert!(tables.self_collides(&[2.5], &apart).any());
-        assert!(tables.collides(&[2.5], &apart, &Environment::empty(), None).any());
-        assert!(!tables.collides(&[1.5], &touching, &Environment::empty(), None).any());
+        assert!(!self_collides(&tables, &[1.5], &touching).any());
+        assert!(self_collides(&tables, &[2.5], &apart).any());
+        assert!(collides(&tables, &[2.5], &apart, &Environment::empty()).any());
+        assert!(!collides(&tables, &[1.5], &touching, &Environment::empty()).any());
         // In lanes, each lane by its own cell.
         let q = [F64x4::new([0.5, 1.5, 2.5, 3.5])];
         let poses = [at(F64x4::from_f64(0.0)), at(F64x4::new([0.1, 0.1, 5.0, 5.0]))];
-        assert_eq!(tables.self_collides(&q, &poses).bits(), 0b0101);
+        assert_eq!(self_collides(&tables, &q, &poses).bits(), 0b0101);
     }
 
     /// Three links of a few spheres each, posed at random in eight lanes, in random environments
@@ -523,9 +658,9 @@ mod tests {
             let poses64_hi: [Pose<F64x4>; 3] = core::array::from_fn(|k| lanes_of(|l| lane_poses[l][k], 4));
             let poses32: [Pose<F32x8>; 3] = core::array::from_fn(|k| lanes_of(|l| lane_poses[l][k], 0));
             let q64 = [F64x4::from_f64(0.0)];
-            let got64 = tables.collides(&q64, &poses64, &env, None).bits()
-                | tables.collides(&q64, &poses64_hi, &env, None).bits() << 4;
-            let got32 = tables.collides(&[F32x8::from_f64(0.0)], &poses32, &env, None).bits();
+            let got64 =
+                collides(&tables, &q64, &poses64, &env).bits() | collides(&tables, &q64, &poses64_hi, &env).bits() << 4;
+            let got32 = collides(&tables, &[F32x8::from_f64(0.0)], &poses32, &env).bits();
             for l in 0..8 {
                 assert_eq!(got64 >> l & 1 == 1, expected[l], "round {round}, lane {l} (f64)");
                 counts[usize::from(expected[l])] += 1;
@@ -565,14 +700,14 @@ mod tests {
             let x = F64x4::from_fn(|k| offset + 0.1 * k as f64);
             let poses = [at(F64x4::from_f64(0.0)), at(x)];
             let q = [F64x4::from_f64(0.0)];
-            let collides = TABLES.collides(&q, &poses, &env, None);
-            let itself = TABLES.self_collides(&q, &poses);
+            let world = collides(&TABLES, &q, &poses, &env);
+            let itself = self_collides(&TABLES, &q, &poses);
             for k in 0..4 {
                 let scalar = [at(0.0), at(offset + 0.1 * k as f64)];
-                assert_eq!(itself.lane(k), TABLES.self_collides(&[0.0], &scalar).any(), "lane {k}");
-                assert_eq!(collides.lane(k), TABLES.collides(&[0.0], &scalar, &env, None).any(), "lane {k}");
+                assert_eq!(itself.lane(k), self_collides(&TABLES, &[0.0], &scalar).any(), "lane {k}");
+                assert_eq!(world.lane(k), collides(&TABLES, &[0.0], &scalar, &env).any(), "lane {k}");
             }
-            assert_eq!(collides.bits(), expected, "offset {offset}");
+            assert_eq!(world.bits(), expected, "offset {offset}");
         }
     }
 }
