@@ -41,8 +41,8 @@ fn link_frame(cx: &Context<'_>) -> CollisionLayout {
 /// and each link's) rather than placing those its tests reach from the links' poses. Computing
 /// them ahead shares the poses' simplifications and places no centre twice, but computes every
 /// point before the first test: measured in a scratch harness (`F32x8`, AVX2, 1,024
-/// configurations within the limits, tabletop scene), VAMP's Panda (95 points) checks in 0.73 to
-/// 0.84 of the time placing takes, while the primitives UR5 at a 2 cm cover (715 points), where
+/// configurations within the limits, tabletop scene), VAMP's Panda (90 points) checks in 0.73 to
+/// 0.84 of the time placing takes, while the primitives UR5 at a 2 cm cover (745 points), where
 /// every configuration collides and a placing check ends at its first hit, took 24 times as
 /// long, and its release build 9 times as long.
 const MAX_POINTS_AHEAD: usize = 128;
