@@ -44,7 +44,7 @@ fn link_frame(cx: &Context<'_>) -> CollisionLayout {
 /// configurations within the limits, tabletop scene), VAMP's Panda (90 points) checks in 0.73 to
 /// 0.84 of the time placing takes, while the primitives UR5 at a 2 cm cover (745 points), where
 /// every configuration collides and a placing check ends at its first hit, took 24 times as
-/// long, and its release build 9 times as long.
+/// long, and its release build more than 8 times as long.
 const MAX_POINTS_AHEAD: usize = 128;
 
 /// The points the checks read computed ahead, in the order `CollisionTables::collides_points`
