@@ -273,10 +273,11 @@ pub(super) fn checks(cx: &Context<'_>, out: &mut Functions) {
     let p = &cx.p;
     let n = cx.render.dof();
     let g = proc_macro2::Ident::new(CHECK_BODY, proc_macro2::Span::call_site());
+    let frame = link_frame(cx);
     // One link with spheres: the body returns its pose alone.
-    let poses = if link_frame(cx).links.len() == 1 { quote!(&[#g(q)]) } else { quote!(&#g(q)) };
-    let pose_values = if link_frame(cx).links.len() == 1 { quote!([#g(q)]) } else { quote!(#g(q)) };
-    let ahead = check_points(&link_frame(cx)).is_some();
+    let pose_values = if frame.links.len() == 1 { quote!([#g(q)]) } else { quote!(#g(q)) };
+    let poses = quote!(&#pose_values);
+    let ahead = check_points(&frame).is_some();
     let pairs_rule = match plan.pairs.rule {
         kinematics_model::collision::PairRule::Srdf => "less the SRDF's disabled pairs",
         kinematics_model::collision::PairRule::Adjacent => {
