@@ -306,12 +306,7 @@ pub(super) fn checks(cx: &Context<'_>, out: &mut Functions) {
                      bodies, {pairs_rule})",
                     plan.pairs.pairs.len()
                 ),
-                if ahead {
-                    let points = proc_macro2::Ident::new(POINTS_BODY, proc_macro2::Span::call_site());
-                    quote!(COLLISION_TABLES.self_collides_points(q, &#points(q)))
-                } else {
-                    quote!(COLLISION_TABLES.self_collides(q, #poses))
-                },
+                self_check(&poses, ahead),
             ),
             CollisionFunction::MotionCollides => {
                 out.typed.push(motion(cx, form, &sig, &pose_values, ahead));
@@ -402,6 +397,16 @@ fn generic_item(doc: &str, sig: &TokenStream, body: &TokenStream) -> TokenStream
         #[cfg_attr(debug_assertions, inline)]
         #[cfg_attr(not(debug_assertions), inline(always))]
         #sig { #body }
+    }
+}
+
+/// `self_collides`: on the points computed ahead if `ahead`, else on the links' `poses`.
+fn self_check(poses: &TokenStream, ahead: bool) -> TokenStream {
+    if ahead {
+        let points = proc_macro2::Ident::new(POINTS_BODY, proc_macro2::Span::call_site());
+        quote!(COLLISION_TABLES.self_collides_points(q, &#points(q)))
+    } else {
+        quote!(COLLISION_TABLES.self_collides(q, #poses))
     }
 }
 
