@@ -4,14 +4,14 @@
 //!
 //! The stub is the API surface the emitter writes ([`kinematics_compiler::robot::surface`]: the
 //! same list of items, the same signatures) with bodies that never run: the `compile_error!`s
-//! beside it stop the build. Its functions take and return arrays of the robot's lengths when the
-//! description loaded; lengths no one could know are the surface's stand-ins (a const parameter
-//! for the number of joints, `UnknownLength` for an array of links or tips). The fallible ones
-//! return errors; the infallible ones (`tip_pose`) have nothing to return and are
-//! `unreachable!`.
-//!
-//! An `UnknownLength` indexes, iterates and compares as the array would. A test holds the stub's
-//! items equal to the emitted ones for every combination of options.
+//! stop the build. Its functions take and return arrays of the robot's lengths when the
+//! description loaded. A length no one could know is the constant
+//! [`UNKNOWN_LENGTH`](kinematics_compiler::robot::surface::UNKNOWN_LENGTH), whose value is the
+//! derive's first `compile_error!` itself: to rustc its value is an error already reported, so
+//! every type it is part of is an error type, and rustc reports nothing more about code that uses
+//! one (a seed built by `std::array::from_fn`, links destructured into a pattern of any length).
+//! One mistake, one error. A test holds the stub's items equal to the emitted ones for every
+//! combination of options.
 
 use std::collections::BTreeSet;
 
@@ -24,7 +24,9 @@ use kinematics_compiler::collision_layout::held_words;
 use kinematics_compiler::ik::IkPlan;
 use kinematics_compiler::options::{IkKind, IkMode, Options, Scalars, choose};
 use kinematics_compiler::robot::scalar_parameter;
-use kinematics_compiler::robot::surface::{Constant, Dims, IkItem, IkShape, Render, constants, outputs};
+use kinematics_compiler::robot::surface::{
+    Constant, Dims, IkItem, IkShape, Render, UNKNOWN_LENGTH, constants, outputs,
+};
 use kinematics_model::KinematicTree;
 use kinematics_model::collision::link_spheres;
 
@@ -36,7 +38,7 @@ pub struct Implied {
     pub options: Options,
     /// Whether the tips could be counted (else the stub has both `tip_pose` and `tip_poses`).
     pub tips_counted: bool,
-    /// Whether `links` could be read (else `link_poses` returns `UnknownLength`).
+    /// Whether `links` could be read (else `link_poses` returns an array of unknown length).
     pub links_read: bool,
     /// The robot, when its description loaded.
     pub dims: Dims,
@@ -192,10 +194,18 @@ fn crate_path(input: &syn::DeriveInput, options: Option<&KinematicsInput>) -> To
 }
 
 /// The stub: `impl Type { ... }` with the constants and functions the surface lists for the
-/// implied options and `reference()`, and `impl Kinematics for Type`, in an anonymous block.
-pub fn stub(input: &syn::DeriveInput, options: Option<&KinematicsInput>, implied: &Implied) -> TokenStream {
+/// implied options and `reference()`, and `impl Kinematics for Type`, in an anonymous block
+/// beside the unknown length's constant, whose value is `first_error` (a `compile_error!`
+/// invocation: the derive's first error, which the stub thereby reports).
+pub fn stub(
+    input: &syn::DeriveInput,
+    options: Option<&KinematicsInput>,
+    implied: &Implied,
+    first_error: TokenStream,
+) -> TokenStream {
     let krate = crate_path(input, options);
     let p = quote!(#krate::__private);
+    let unknown = format_ident!("{UNKNOWN_LENGTH}");
     let ident = &input.ident;
     let (impl_generics, ty_generics, where_clause) = input.generics.split_for_impl();
     let message = "the derive failed: its compile errors say why";
@@ -236,9 +246,19 @@ pub fn stub(input: &syn::DeriveInput, options: Option<&KinematicsInput>, implied
     if let Some(shape) = IkShape::implied(&implied.options, implied.ik_plan.as_deref()) {
         for item in render.ik_items(&shape) {
             functions.push(match item {
-                IkItem::Family => quote!(
-                    pub const IK_FAMILY: &'static str = "";
-                ),
+                IkItem::Family => {
+                    // A family the derive could not tell: an `IK_ARM` of a type that is an error
+                    // (see the module's doc), so code using it reports nothing more.
+                    let arm = shape
+                        .closed_form
+                        .as_ref()
+                        .is_some_and(|closed| closed.arm.is_none())
+                        .then(|| quote!(pub const IK_ARM: [(); #unknown] = ::core::panic!(#message);));
+                    quote!(
+                        pub const IK_FAMILY: &'static str = "";
+                        #arm
+                    )
+                }
                 IkItem::Arm(ty) => quote!(pub const IK_ARM: #ty = ::core::panic!(#message);),
                 IkItem::Function(_, signature) => {
                     let sig = signature.tokens();
@@ -253,7 +273,6 @@ pub fn stub(input: &syn::DeriveInput, options: Option<&KinematicsInput>, implied
             functions.push(quote!(#attrs #sig { ::core::unreachable!(#message) }));
         }
     }
-    let unknown_length = unknown_length(message);
     let load_error = quote! {
         ::core::result::Result::Err(#p::LoadError::new(
             "",
@@ -265,7 +284,8 @@ pub fn stub(input: &syn::DeriveInput, options: Option<&KinematicsInput>, implied
     };
     quote! {
         const _: () = {
-            #unknown_length
+            #[allow(dead_code)]
+            const #unknown: usize = #first_error;
 
             #[allow(dead_code, missing_docs)]
             impl #impl_generics #ident #ty_generics #where_clause {
@@ -315,7 +335,10 @@ fn constant_value(render: &Render, constant: Constant, p: &TokenStream) -> Token
             let n = proc_macro2::Literal::usize_unsuffixed(n);
             quote!([#element; #n])
         }
-        None => quote!(&[]),
+        None => {
+            let unknown = format_ident!("{UNKNOWN_LENGTH}");
+            quote!([#element; #unknown])
+        }
     };
     let dims = render.dims;
     let limits = quote!(#p::JointLimits {
@@ -339,71 +362,6 @@ fn constant_value(render: &Render, constant: Constant, p: &TokenStream) -> Token
         Constant::Tips => count(dims.tips, quote!("")),
         Constant::SphereRadii => count(dims.spheres, quote!(0.0)),
         Constant::SphereLinks => count(dims.spheres, quote!("")),
-    }
-}
-
-/// The type a stub function returns for an array whose length no one knows (the links of a
-/// description that could not be read, tips that could not be counted): an array type would need
-/// that length, and a const parameter for it is "type annotations needed" wherever the call's
-/// value is used without one (`let poses = Robot::link_poses(&q); poses[2]`). It acts as the array
-/// would where no length is written: indexing, `len`, `iter`, `for` (through `Deref` to a slice
-/// and `IntoIterator`), `==` with arrays. Code that writes the length down
-/// (`let poses: [Pose<f64>; 9] = ...`, `let [a, b] = ...`) gets a second error naming
-/// `UnknownLength`: no one type can be an array of every length. The batches take their
-/// length from `out`, so they keep a const parameter.
-fn unknown_length(message: &str) -> TokenStream {
-    quote! {
-        /// The value of a stub function whose length the derive could not know.
-        #[allow(dead_code)]
-        #[derive(Debug, Clone, Copy)]
-        pub struct UnknownLength<T>(::core::marker::PhantomData<T>);
-
-        impl<T> ::core::ops::Deref for UnknownLength<T> {
-            type Target = [T];
-            fn deref(&self) -> &[T] {
-                ::core::unreachable!(#message)
-            }
-        }
-
-        impl<T> ::core::ops::DerefMut for UnknownLength<T> {
-            fn deref_mut(&mut self) -> &mut [T] {
-                ::core::unreachable!(#message)
-            }
-        }
-
-        impl<T> ::core::iter::IntoIterator for UnknownLength<T> {
-            type Item = T;
-            type IntoIter = ::core::iter::Empty<T>;
-            fn into_iter(self) -> Self::IntoIter {
-                ::core::unreachable!(#message)
-            }
-        }
-
-        impl<'a, T> ::core::iter::IntoIterator for &'a UnknownLength<T> {
-            type Item = &'a T;
-            type IntoIter = ::core::slice::Iter<'a, T>;
-            fn into_iter(self) -> Self::IntoIter {
-                ::core::unreachable!(#message)
-            }
-        }
-
-        impl<T> ::core::cmp::PartialEq for UnknownLength<T> {
-            fn eq(&self, _: &Self) -> bool {
-                ::core::unreachable!(#message)
-            }
-        }
-
-        impl<T, const N: usize> ::core::cmp::PartialEq<[T; N]> for UnknownLength<T> {
-            fn eq(&self, _: &[T; N]) -> bool {
-                ::core::unreachable!(#message)
-            }
-        }
-
-        impl<T, const N: usize> ::core::cmp::PartialEq<UnknownLength<T>> for [T; N] {
-            fn eq(&self, _: &UnknownLength<T>) -> bool {
-                ::core::unreachable!(#message)
-            }
-        }
     }
 }
 
@@ -525,7 +483,7 @@ mod tests {
                         ))
                         .unwrap();
                         let implied = Implied::from_options(options.clone()).with_robot(&tree).with_plan(plan);
-                        let stubbed = stub(&input, None, &implied);
+                        let stubbed = stub(&input, None, &implied, quote!(::core::compile_error!("")));
                         assert_eq!(surface(stubbed), surface(emitted), "{file}: {options:?}");
                         compared += 1;
                     }

@@ -63,14 +63,20 @@ pub fn expand(input: TokenStream) -> TokenStream {
         (result, _) => {
             // No robot means a fault was recorded; if none was, say so rather than emit a stub
             // that compiles into functions that never return.
-            let errors = match result {
-                Err(errors) => errors.write_errors(),
-                Ok(()) => quote!(::core::compile_error!(
+            let mut errors = match result {
+                Err(errors) => errors.into_iter().map(darling::Error::write_errors).collect(),
+                Ok(()) => Vec::new(),
+            }
+            .into_iter();
+            // The first error is the stub's unknown length (which reports it); the rest stand
+            // beside the stub.
+            let first = errors.next().unwrap_or_else(|| {
+                quote!(::core::compile_error!(
                     "kinematics derive: internal error: no code and no fault (the derive's invariant broke; please report)"
-                );),
-            };
-            let stub = fallback::stub(&input, options.as_ref(), &implied);
-            quote!(#errors #stub)
+                ))
+            });
+            let stub = fallback::stub(&input, options.as_ref(), &implied, first);
+            quote!(#stub #(#errors)*)
         }
     }
 }

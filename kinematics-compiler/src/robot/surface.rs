@@ -6,9 +6,11 @@
 //! test holds the two equal for every option set.
 //!
 //! Lengths the stub cannot know (the description did not load, a list could not be read) are
-//! [`None`] in [`Dims`]: the number of joints becomes a const parameter (`q: &[f64; N]`, which a
-//! call's `q` fixes), an array of links or tips an `UnknownLength` (which the stub defines, and
-//! which indexes and iterates as the array would), or in a batch a const parameter `out` fixes.
+//! [`None`] in [`Dims`]: every one is written as [`UNKNOWN_LENGTH`], a constant the stub defines
+//! whose value is the derive's first `compile_error!`. Its type is then an error to rustc, which
+//! reports nothing more of any type it is part of: a call's `q`, a seed built by
+//! `std::array::from_fn`, the links `link_poses` returns, destructured or not, all check without a
+//! second error.
 
 use kinematics_model::JacobianFrame;
 use proc_macro2::{Ident, Literal, Span, TokenStream};
@@ -261,13 +263,9 @@ pub struct Render {
     pub dims: Dims,
 }
 
-/// The const parameter standing for an unknown number of joints, and for an unknown number of
-/// frames in a batch's `out`.
-const DOF_PARAMETER: &str = "__KINEMATICS_DOF";
-const FRAMES_PARAMETER: &str = "__KINEMATICS_FRAMES";
-
-/// The type the stub defines for an array whose length it cannot know.
-pub const UNKNOWN_LENGTH: &str = "UnknownLength";
+/// The constant the stub defines for every length it cannot know (its value is the derive's first
+/// `compile_error!`, so it stands for an error, never a number).
+pub const UNKNOWN_LENGTH: &str = "__KINEMATICS_UNKNOWN_LENGTH";
 
 impl Render {
     /// Each scalar asked for, `f64` first.
@@ -283,9 +281,9 @@ impl Render {
         .collect()
     }
 
-    /// The number of joints: a literal, or the const parameter.
+    /// The number of joints: a literal, or the unknown length.
     pub fn dof(&self) -> TokenStream {
-        length(self.dims.dof, DOF_PARAMETER)
+        length(self.dims.dof)
     }
 
     /// The number of velocities: a literal, or (unknown) as many as the joints.
@@ -296,40 +294,21 @@ impl Render {
         }
     }
 
-    /// The const parameter of the number of joints, when it is unknown.
-    fn dof_generics(&self) -> Vec<TokenStream> {
-        let name = format_ident!("{DOF_PARAMETER}");
-        self.dims.dof.is_none().then(|| quote!(const #name: usize)).into_iter().collect()
-    }
-
     /// The generic scalar parameter with its bound.
     fn generic_scalar(&self) -> TokenStream {
         let (scalar, bound) = (&self.scalar, self.trig.bound(&self.p));
         quote!(#scalar: #bound)
     }
 
-    /// `output`'s value for scalar `t` (in a batch's `out`, where an unknown length is a const
-    /// parameter), and that const parameter, if any.
-    fn value(&self, output: Output, one_tip: bool, t: &TokenStream, batch: bool) -> (TokenStream, Option<TokenStream>) {
+    /// `output`'s value for scalar `t`.
+    fn value(&self, output: Output, one_tip: bool, t: &TokenStream) -> TokenStream {
         let element = output.element(t, &self.p, &self.velocities());
         let (count, always_array) = output.count(&self.dims);
         if !always_array && one_tip {
-            return (element, None);
+            return element;
         }
-        match count {
-            Some(n) => {
-                let n = literal(n);
-                (quote!([#element; #n]), None)
-            }
-            None if batch => {
-                let name = format_ident!("{FRAMES_PARAMETER}");
-                (quote!([#element; #name]), Some(quote!(const #name: usize)))
-            }
-            None => {
-                let name = format_ident!("{UNKNOWN_LENGTH}");
-                (quote!(#name<#element>), None)
-            }
-        }
+        let n = length(count);
+        quote!([#element; #n])
     }
 
     /// Every function of `output`, in the order emitted: per scalar the typed function and its two
@@ -343,22 +322,22 @@ impl Render {
         for scalar in self.scalar_types() {
             let (suffix, t) = (scalar.suffix, &scalar.t);
             let qd = if rates { quote!(, qd: &[#t; #nv]) } else { quote!() };
-            let (value, _) = self.value(output, one_tip, t, false);
+            let value = self.value(output, one_tip, t);
             let typed = Signature {
                 name: format_ident!("{name}{suffix}"),
-                generics: self.dof_generics(),
+                generics: Vec::new(),
                 inputs: quote!(q: &[#t; #n] #qd),
-                output: value,
+                output: value.clone(),
             };
             let batches = [
                 (format_ident!("{name}_batch{suffix}"), quote!(qs: &[[#t; #n]])),
                 (format_ident!("{name}_batch_columns{suffix}"), quote!(columns: [&[#t]; #n])),
             ]
-            .map(|(batch, input)| {
-                let (value, frames) = self.value(output, one_tip, t, true);
-                let mut generics = self.dof_generics();
-                generics.extend(frames);
-                Signature { name: batch, generics, inputs: quote!(#input, out: &mut [#value]), output: error.clone() }
+            .map(|(batch, input)| Signature {
+                name: batch,
+                generics: Vec::new(),
+                inputs: quote!(#input, out: &mut [#value]),
+                output: error.clone(),
             });
             out.push((Form::Typed(scalar.clone()), typed));
             if !rates {
@@ -369,14 +348,12 @@ impl Render {
         }
         let scalar = &self.scalar;
         let qd = if rates { quote!(, qd: &[#scalar; #nv]) } else { quote!() };
-        let mut generics = vec![self.generic_scalar()];
-        generics.extend(self.dof_generics());
-        let (value, _) = self.value(output, one_tip, scalar, false);
+        let value = self.value(output, one_tip, scalar);
         out.push((
             Form::Generic,
             Signature {
                 name: format_ident!("{name}_generic"),
-                generics,
+                generics: vec![self.generic_scalar()],
                 inputs: quote!(q: &[#scalar; #n] #qd),
                 output: value,
             },
@@ -398,13 +375,8 @@ impl Render {
             Constant::SphereRadii => (quote!(f64), self.dims.spheres),
             Constant::SphereLinks => (quote!(&'static str), self.dims.spheres),
         };
-        match length {
-            Some(n) => {
-                let n = literal(n);
-                quote!([#element; #n])
-            }
-            None => quote!(&'static [#element]),
-        }
+        let n = self::length(length);
+        quote!([#element; #n])
     }
 
     /// The inverse kinematics' items, in the order emitted.
@@ -436,16 +408,14 @@ impl Render {
             let free = if closed.free { quote!(, free: f64) } else { quote!() };
             items.push(IkItem::Function(
                 IkFunction::All,
-                signature("tip_ik", self.dof_generics(), quote!(#target #free), all.clone()),
+                signature("tip_ik", Vec::new(), quote!(#target #free), all.clone()),
             ));
             if closed.branch {
-                let mut generics = vec![quote!(S: #p::ik::IkReal)];
-                generics.extend(self.dof_generics());
                 items.push(IkItem::Function(
                     IkFunction::Branch,
                     signature(
                         "tip_ik_branch_generic",
-                        generics,
+                        vec![quote!(S: #p::ik::IkReal)],
                         quote!(target: &#p::Pose<S>, signs: &[S; 3]),
                         quote!(#p::ik::IkBranch<S, #n>),
                     ),
@@ -453,13 +423,13 @@ impl Render {
             }
             items.push(IkItem::Function(
                 IkFunction::WithinLimits,
-                signature("tip_ik_within_limits", self.dof_generics(), quote!(#target #free), all),
+                signature("tip_ik_within_limits", Vec::new(), quote!(#target #free), all),
             ));
             items.push(IkItem::Function(
                 IkFunction::Nearest,
                 signature(
                     "tip_ik_nearest",
-                    self.dof_generics(),
+                    Vec::new(),
                     quote!(#target, #seed),
                     result(quote!(::core::option::Option<#p::ik::IkSolution<#n>>)),
                 ),
@@ -468,13 +438,13 @@ impl Render {
         let numeric = result(quote!(#p::ik::NumericSolution<#n>));
         items.push(IkItem::Function(
             IkFunction::Numeric,
-            signature("tip_ik_numeric", self.dof_generics(), quote!(#target, #seed), numeric.clone()),
+            signature("tip_ik_numeric", Vec::new(), quote!(#target, #seed), numeric.clone()),
         ));
         items.push(IkItem::Function(
             IkFunction::NumericWith,
             signature(
                 "tip_ik_numeric_with",
-                self.dof_generics(),
+                Vec::new(),
                 quote!(#target, #seed, options: &#p::ik::NumericOptions),
                 numeric,
             ),
@@ -483,12 +453,12 @@ impl Render {
     }
 }
 
-/// A literal length, or the named const parameter.
-fn length(n: Option<usize>, parameter: &str) -> TokenStream {
+/// A literal length, or the unknown length's constant.
+fn length(n: Option<usize>) -> TokenStream {
     match n {
         Some(n) => literal(n),
         None => {
-            let name = format_ident!("{parameter}");
+            let name = format_ident!("{UNKNOWN_LENGTH}");
             quote!(#name)
         }
     }
@@ -688,7 +658,7 @@ impl Render {
                 let (suffix, t) = (scalar.suffix, &scalar.t);
                 let signature = |name: String, inputs: TokenStream, output: TokenStream| Signature {
                     name: Ident::new(&name, Span::call_site()),
-                    generics: self.dof_generics(),
+                    generics: Vec::new(),
                     inputs,
                     output,
                 };
@@ -717,8 +687,7 @@ impl Render {
                 ));
             }
             let scalar = &self.scalar;
-            let mut generics = vec![self.collision_scalar()];
-            generics.extend(self.dof_generics());
+            let generics = vec![self.collision_scalar()];
             out.push((
                 function,
                 Form::Generic,
@@ -737,7 +706,7 @@ impl Render {
                 Form::Typed(scalar.clone()),
                 Signature {
                     name: format_ident!("motion_collides{suffix}"),
-                    generics: self.dof_generics(),
+                    generics: Vec::new(),
                     inputs: quote!(q0: &[#t; #n], q1: &[#t; #n], #world, resolution: f64),
                     output: quote!(::core::result::Result<::core::option::Option<f64>, #p::KinematicsError>),
                 },
@@ -747,7 +716,7 @@ impl Render {
                 Form::Batch(scalar.clone()),
                 Signature {
                     name: format_ident!("motion_collides_batch{suffix}"),
-                    generics: self.dof_generics(),
+                    generics: Vec::new(),
                     inputs: quote!(
                         motions: &[([#t; #n], [#t; #n])], #world, resolution: f64,
                         out: &mut [::core::option::Option<f64>]
@@ -756,9 +725,7 @@ impl Render {
                 },
             ));
         }
-        // The stub of a robot whose spheres were not counted declares one word (its body never
-        // runs: the derive's error is what the user sees).
-        let words = literal(self.dims.held_words.unwrap_or(1));
+        let words = length(self.dims.held_words);
         out.push((
             CollisionFunction::Hold,
             Form::Generic,
@@ -808,15 +775,14 @@ impl Render {
                     Form::Typed(scalar.clone()),
                     Signature {
                         name: format_ident!("{name}{suffix}"),
-                        generics: self.dof_generics(),
+                        generics: Vec::new(),
                         inputs: quote!(q: &[#t; #n], #environment #margin),
                         output: output(t),
                     },
                 ));
             }
             let scalar = &self.scalar;
-            let mut generics = vec![self.collision_scalar()];
-            generics.extend(self.dof_generics());
+            let generics = vec![self.collision_scalar()];
             out.push((
                 function,
                 Form::Generic,

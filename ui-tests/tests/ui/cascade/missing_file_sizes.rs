@@ -1,8 +1,7 @@
 // A description that cannot be read, and code calling the functions whose lengths only the
 // description knows (issue 21): only the file's error, no "type annotations needed" where the
-// links' count is not written down. The joints' count comes from `q` and `seed`; `tip_ik` takes
-// neither, so its solutions' length comes from their use (here compared with `q`): where nothing
-// fixes it, the compiler asks for it, as no type stands for "an array of any length".
+// links' count is not written down. Every length only the description knows is an error to rustc
+// (see `missing_file_every_call.rs`), so nothing more is reported where it is used.
 use kinematics::Kinematics;
 
 #[derive(Kinematics)]

@@ -10,8 +10,7 @@ fn main() {
     let q = [0.0; 2];
     let [a, b] = Robot::tip_poses(&q);
     let [p, _] = Robot::tip_positions_f32(&[0.0f32; 2]);
-    // No length written down: the links' count is the description's, which was not read (a
-    // `let links: [[f64; 3]; 4]` would be a second error; see `missing_file_sizes.rs`).
-    let links = Robot::link_positions(&q);
+    // The links' count is the description's, which was not read: any length written down checks.
+    let links: [[f64; 3]; 4] = Robot::link_positions(&q);
     let _ = (a.translation, b.rotation, p, links.len());
 }
