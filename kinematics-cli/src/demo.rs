@@ -13,6 +13,8 @@ use crate::agreement::{Configurations, TOLERANCE, check_graph, distance, entries
 use crate::error::CliError;
 use crate::ur5::Ur5;
 
+mod collision;
+
 /// The robot shown when no file is given.
 const DEFAULT_FILE: &str = "robots/ur5.urdf";
 
@@ -110,7 +112,7 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
     }
     velocities(args, out, &tree, &file, (&base, &tip), built_in, &inputs)?;
     inverse(args, out, &tree, &file, built_in, &inputs)?;
-    collision(args, out, &tree, &file)
+    collision::run(args, out, &tree, &file)
 }
 
 /// The configuration whose pose the demo's inverse kinematics solves.
@@ -185,28 +187,6 @@ fn inverse(
         thousands(solves),
         numeric / closed.max(1e-3)
     )?;
-    Ok(())
-}
-
-/// The scene the demo checks `collides` against, when it is there.
-const DEMO_SCENE: &str = "scenes/tabletop.toml";
-
-/// Step 8: the robot's collision geometry as spheres, and the checks a `collision` robot gets,
-/// against the runtime reference's distances (in the tabletop scene when it is at hand).
-fn collision(args: &Args, out: &mut dyn Write, tree: &KinematicTree, file: &str) -> Result<(), CliError> {
-    writeln!(out, "\n8. Collision: the `<collision>` geometry as spheres (`kinematics check --collision`)\n")?;
-    let scene = Path::new(DEMO_SCENE).exists().then_some(DEMO_SCENE);
-    let cover = kinematics_compiler::options::DEFAULT_SPHERE_COVER;
-    let setup = crate::collision::setup(tree, cover, None, scene)?;
-    let samples = args.samples.clamp(1, 1_000);
-    match crate::collision::check(tree, file, samples, &setup)? {
-        Some(report) => write!(out, "{}", crate::collision::text(&report, samples))?,
-        None => writeln!(
-            out,
-            "  no <collision> geometry the cover reads (meshes are not read); try `kinematics demo \
-             robots/panda_spherized.urdf`"
-        )?,
-    }
     Ok(())
 }
 

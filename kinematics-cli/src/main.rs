@@ -7,7 +7,8 @@
 //! the runtime reference, `graph` the tree as Graphviz DOT, `draw` the robot at a configuration as
 //! SVG (three orthographic views of the runtime reference's link origins and joint axes), and
 //! `demo` all of it on one robot with a timing of the generated code built into this binary
-//! (`ur5.rs`, from `build.rs`). Errors go to stderr as `error: <file>: <element>: <fault>`, with a
+//! (`ur5.rs`, from `build.rs`), then collision checks timed on the built-in spherized Panda
+//! (`panda.rs`; `hand_loop.rs` is the naive check it is timed against). Errors go to stderr as `error: <file>: <element>: <fault>`, with a
 //! non-zero exit status; files are written atomically, so a failed run leaves none behind. Long
 //! work shows progress on stderr when stderr is a terminal, and nothing when it is not: a spinner
 //! while the compiler runs (`check`, `demo`, `generate`, `expr --all`), then a bar over the
@@ -28,8 +29,10 @@ mod expr;
 mod fk;
 mod generate;
 mod graph;
+mod hand_loop;
 mod ik;
 mod inspect;
+mod panda;
 mod progress;
 mod robot;
 mod ur5;
@@ -96,7 +99,7 @@ enum Command {
     /// relations; geometry left out), e.g. from an MJCF file.
     Convert(convert::Args),
     /// The whole pipeline on one robot: tree, symbolic pose, operation counts, agreement with the
-    /// runtime reference, and timing.
+    /// runtime reference, and timing; then collision checks on the built-in spherized Panda.
     Demo(demo::Args),
 }
 

@@ -472,7 +472,60 @@ fn demo_walks_through_the_pipeline() {
     assert!(out.contains("pose of tool0, plain product"), "{out}");
     assert!(out.contains("generated Rust in this binary (Ur5):     largest error"), "{out}");
     assert!(out.contains("generated code, Ur5::tip_pose:") && out.contains("x faster"), "{out}");
+    // Collision (issue 57): the built-in spherized Panda whatever the robot, its generated
+    // `collides` judged by the reference on every sample, the hand loop giving its verdicts, and
+    // the four timings.
+    let collision = &out[out.find("\n8. ").unwrap()..];
+    assert!(
+        collision.starts_with(
+            "\n8. Collision, on the spherized Panda (robots/panda_spherized.urdf, robots/panda.srdf) in \
+             scenes/tabletop.toml\n\n  59 spheres on 11 links at a cover of 0.01 m, 21 self-collision pairs (less \
+             the pairs robots/panda.srdf disables); scene scenes/tabletop.toml (12 obstacles)\n"
+        ),
+        "{collision}"
+    );
+    let judged = collision.lines().find(|l| l.contains(" as the reference says, ")).unwrap();
+    let words: Vec<&str> = judged.split_whitespace().collect();
+    let count = |word: &str| -> usize {
+        let before = words.windows(2).find(|w| w[1] == word).unwrap_or_else(|| panic!("no `{word}` in {judged}"));
+        before[0].replace(',', "").parse().unwrap()
+    };
+    let (colliding, free, banded, disagreeing) =
+        (count("colliding"), count("free"), count("within"), count("disagreeing"));
+    assert!(colliding > 0 && free > 0 && colliding + free + banded == 300 && disagreeing == 0, "{judged}");
+    assert!(judged.ends_with(", 0 disagreeing"), "{judged}");
+    assert!(collision.contains("generated Panda::collides against the runtime reference (parry3d-f64 distances), 300"));
+    assert!(
+        collision.contains("the hand loop below against Panda::collides on 1,024 configurations: 0 differing\n"),
+        "{collision}"
+    );
+    for timing in [
+        "  runtime reference, every distance (parry3d-f64):  ",
+        "  the naive way: Panda::link_poses and a hand loop:  ",
+        "  generated code, Panda::collides:  ",
+        "  generated code, Panda::collides_batch, 1,024 a call:  ",
+        "  generated code, Panda::collides_batch_f32, 1,024 a call:  ",
+    ] {
+        let line = collision.lines().find(|l| l.starts_with(timing)).unwrap_or_else(|| panic!("no `{timing}`"));
+        let ns: f64 = line[timing.len()..].split_whitespace().next().unwrap().parse().unwrap();
+        assert!(ns > 0.0 && line.contains(" ns"), "{line}");
+        if timing.contains("generated") {
+            assert!(
+                line.contains("x faster than the reference, ") && line.ends_with("x than the hand loop)"),
+                "{line}"
+            );
+        }
+    }
     let other = ok(&["demo", "robots/planar_3r.toml", "--samples", "100", "--evaluations", "100"]);
+    // A robot given on the command line: the Panda's section, then its own geometry (none here).
+    assert!(other.contains("\n8. Collision, on the spherized Panda"), "{other}");
+    assert!(
+        other.ends_with(
+            "robots/planar_3r.toml, its own <collision> geometry against the reference in scenes/tabletop.toml \
+             (not timed):\n  no <collision> geometry the cover reads (meshes are not read)\n"
+        ),
+        "{other}"
+    );
     assert!(other.contains("runtime reference, ReferenceFk::link_pose:"), "{other}");
     assert!(other.contains("generated code: not timed."), "{other}");
     assert!(!other.contains("generated Rust in this binary"), "{other}");
