@@ -4,10 +4,13 @@
 //! for DH tables, from the same table written inline in the attribute. It also writes a fixed-seed
 //! set of random robots (`build/random_robots.rs`) as description files into `OUT_DIR/random/`,
 //! compiled through `kinematics_compiler::robot::emit_robot` (the derive's own path) into
-//! `OUT_DIR/random_robots.rs`.
+//! `OUT_DIR/random_robots.rs`; and `OUT_DIR/stack.rs` (`build/stack_cases.rs`), every robot derived
+//! with every option it takes and a case calling each function, for `tests/debug_stack.rs`.
 
 #[path = "build/random_robots.rs"]
 mod random_robots;
+#[path = "build/stack_cases.rs"]
+mod stack_cases;
 
 use std::fmt::Write as _;
 use std::path::Path;
@@ -31,6 +34,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let mut registry = String::new();
     let mut derived = String::new();
     let mut derived_registry = String::new();
+    let (mut stack_structs, mut stack_cases) = (String::new(), String::new());
     for path in files {
         let file = path.file_name().and_then(|f| f.to_str()).unwrap_or_default().to_owned();
         if kinematics_model::SourceFormat::from_file_name(&file).is_none() {
@@ -78,6 +82,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             let table = kinematics_model::dh::parse_dh_toml(&std::fs::read_to_string(&path)?)?;
             sources.push((inline_dh(&table), "inline"));
         }
+        stack_cases::write(&file, &module, &sources[0].0, &tree, &mut stack_structs, &mut stack_cases)?;
         for (source, how) in sources {
             let ty = format!("Derived_{module}_{how}");
             // Keyword rows repeat keys (`a = ..` in every `joint(..)`), which clippy's
@@ -116,6 +121,12 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let out = Path::new(&std::env::var("OUT_DIR")?).to_path_buf();
     std::fs::write(out.join("robots.rs"), code)?;
     std::fs::write(out.join("derived.rs"), derived)?;
+    std::fs::write(
+        out.join("stack.rs"),
+        format!(
+            "{stack_structs}\n/// Every function of every robot in `robots/`, each its own case.\npub const STACK_CASES: &[StackCase] = &[{stack_cases}];\n"
+        ),
+    )?;
     write_random_robots(&out)?;
     Ok(())
 }

@@ -292,3 +292,25 @@ pub mod random {
 
 include!(concat!(env!("OUT_DIR"), "/robots.rs"));
 include!(concat!(env!("OUT_DIR"), "/derived.rs"));
+
+/// Every robot in `robots/` derived with every option it takes (its tips with positions and
+/// Jacobians; its deepest link's inverse kinematics; its collision checks), and one case for
+/// each function those derives wrote (`build/stack_cases.rs`).
+#[allow(clippy::expect_used, reason = "a case whose call fails is a failed test, which names it")]
+pub mod stack {
+    /// One generated function, called on inputs of the robot's lengths.
+    pub struct StackCase {
+        /// File name in `robots/`.
+        pub robot: &'static str,
+        /// `Struct::function`.
+        pub function: &'static str,
+        /// The bytes of the value the function holds in its widest lanes: its own value, one
+        /// pack of a batch's outputs (`F64x8` for `f64`, `F32x8` for `f32`), a generic function's
+        /// value in `F64x8` (the inverse kinematics and collision checks: none counted).
+        pub value: usize,
+        /// Makes the inputs and calls the function: a frame of its own.
+        pub run: fn(),
+    }
+
+    include!(concat!(env!("OUT_DIR"), "/stack.rs"));
+}

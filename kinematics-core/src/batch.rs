@@ -35,7 +35,7 @@ use crate::lanes::{LaneValue, Lanes};
 /// assert!(batch::<F64x4, 2, _>("demo", &qs, &mut out[..6], norm2).is_err());
 /// # Ok::<(), kinematics_core::KinematicsError>(())
 /// ```
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn batch<L: Lanes, const N: usize, O: LaneValue<L>>(
     robot: &'static str,
     qs: &[[L::Scalar; N]],
@@ -65,7 +65,7 @@ pub fn batch<L: Lanes, const N: usize, O: LaneValue<L>>(
 /// assert_eq!(out, qs.iter().map(norm2).collect::<Vec<f64>>());
 /// # Ok::<(), kinematics_core::KinematicsError>(())
 /// ```
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn batch_wide<L, W, const N: usize, O, P>(
     robot: &'static str,
     qs: &[[L::Scalar; N]],
@@ -99,7 +99,7 @@ where
 /// assert!(batch_columns::<F64x4, F64x8, 2, _, _>("demo", &["x", "y"], [&x, &y[1..]], &mut out, norm2, norm2).is_err());
 /// # Ok::<(), kinematics_core::KinematicsError>(())
 /// ```
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn batch_columns<L, W, const N: usize, O, P>(
     robot: &'static str,
     joints: &'static [&'static str; N],
@@ -135,7 +135,7 @@ trait Configurations<S: Copy, const N: usize>: Copy {
 struct Rows<'a, S, const N: usize>(&'a [[S; N]]);
 
 impl<S: Copy, const N: usize> Configurations<S, N> for Rows<'_, S, N> {
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn pack<L: Lanes<Scalar = S>>(self, start: usize, last: usize) -> [L; N] {
         let mut packed = [L::from_f64(0.0); N];
         for (j, lanes) in packed.iter_mut().enumerate() {
@@ -150,7 +150,7 @@ impl<S: Copy, const N: usize> Configurations<S, N> for Rows<'_, S, N> {
 struct Columns<'a, S, const N: usize>([&'a [S]; N]);
 
 impl<S: Copy, const N: usize> Configurations<S, N> for Columns<'_, S, N> {
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn pack<L: Lanes<Scalar = S>>(self, start: usize, last: usize) -> [L; N] {
         let mut packed = [L::from_f64(0.0); N];
         for (lanes, column) in packed.iter_mut().zip(self.0) {
@@ -165,7 +165,7 @@ impl<S: Copy, const N: usize> Configurations<S, N> for Columns<'_, S, N> {
 }
 
 /// The loop on the lanes that fill the CPU's registers (see [`batch_wide`]).
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn run<L, W, const N: usize, O, P, C>(
     source: C,
     out: &mut [O::Scalar],
@@ -218,7 +218,7 @@ struct Packs<'a, L: Lanes, const N: usize, O: LaneValue<L>, C, F> {
 #[cfg(feature = "dispatch")]
 impl<'a, L: Lanes, const N: usize, O: LaneValue<L>, C, F> Packs<'a, L, N, O, C, F> {
     /// The loop over `source` into `out`, evaluating `f`.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn new(source: C, out: &'a mut [O::Scalar], f: &'a F) -> Self {
         Packs { source, out, f, lanes: core::marker::PhantomData }
     }
@@ -229,7 +229,7 @@ impl<L: Lanes, const N: usize, O: LaneValue<L>, C: Configurations<L::Scalar, N>,
     for Packs<'_, L, N, O, C, F>
 {
     type Output = ();
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn with_simd<S: pulp::Simd>(self, _: S) {
         packs_from(self.source, self.out, self.f);
     }
@@ -237,7 +237,7 @@ impl<L: Lanes, const N: usize, O: LaneValue<L>, C: Configurations<L::Scalar, N>,
 
 /// Pack, evaluate, unpack, `L::LANES` configurations at a time; the last pack padded with the
 /// last configuration. The source holds `out.len()` configurations (checked by the callers).
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn packs_from<L: Lanes, const N: usize, O: LaneValue<L>>(
     source: impl Configurations<L::Scalar, N>,
     out: &mut [O::Scalar],

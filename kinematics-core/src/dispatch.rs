@@ -35,7 +35,7 @@
 /// let (s, c) = f64::sin_cos_many(q);
 /// assert_eq!(x, s[0] * c[1]); // bit for bit
 /// ```
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn dispatch<R>(f: impl FnOnce() -> R) -> R {
     #[cfg(all(feature = "dispatch", not(target_feature = "avx512f")))]
     {
@@ -58,7 +58,7 @@ struct Call<F>(F);
 #[cfg(all(feature = "dispatch", not(target_feature = "avx512f")))]
 impl<R, F: FnOnce() -> R> pulp::WithSimd for Call<F> {
     type Output = R;
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn with_simd<S: pulp::Simd>(self, _: S) -> R {
         (self.0)()
     }

@@ -22,7 +22,7 @@ use crate::real::Real;
 /// assert!((r[1][0] - 1.0).abs() < 1e-15 && r[0][0].abs() < 1e-15);
 /// assert!(quaternion_matrix(0.0f64, 0.0, 0.0, 0.0)[0][0].is_nan());
 /// ```
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn quaternion_matrix<T: Real>(x: T, y: T, z: T, w: T) -> [[T; 3]; 3] {
     let s = T::from_f64(2.0) / (x * x + y * y + z * z + w * w);
     let one = T::from_f64(1.0);

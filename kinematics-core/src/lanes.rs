@@ -57,14 +57,14 @@ pub trait LaneValue<L: Lanes> {
     /// arrays and poses write each entry of every lane in place, read from the value where it
     /// lies, so no lane's value is built whole and then copied (measured on the Panda's batches
     /// in `F32x16` lanes: all link poses 2.4x faster, the sphere centres 1.4x).
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn write_lanes(&self, out: &mut [Self::Scalar]) {
         for (i, slot) in out.iter_mut().enumerate() {
             self.write_lane(i, slot);
         }
     }
     /// Lane `i` into `out`, entry by entry where the value has entries.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn write_lane(&self, i: usize, out: &mut Self::Scalar) {
         *out = self.lane(i);
     }
@@ -76,7 +76,7 @@ pub trait LaneValue<L: Lanes> {
 
 impl<L: Lanes> LaneValue<L> for Pose<L> {
     type Scalar = Pose<L::Scalar>;
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn lane(&self, i: usize) -> Self::Scalar {
         let r = &self.rotation;
         let t = &self.translation;
@@ -89,7 +89,7 @@ impl<L: Lanes> LaneValue<L> for Pose<L> {
             translation: [t[0].lane(i), t[1].lane(i), t[2].lane(i)],
         }
     }
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn write_lane(&self, i: usize, out: &mut Self::Scalar) {
         for row in 0..3 {
             for column in 0..3 {
@@ -100,7 +100,7 @@ impl<L: Lanes> LaneValue<L> for Pose<L> {
             out.translation[axis] = self.translation[axis].lane(i);
         }
     }
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn write_lanes(&self, out: &mut [Self::Scalar]) {
         // Entry by entry, each entry's lanes one after another.
         for row in 0..3 {
@@ -125,7 +125,7 @@ where
     V::Scalar: Copy,
 {
     type Scalar = [V::Scalar; M];
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn lane(&self, i: usize) -> Self::Scalar {
         let Some(first) = self.first() else {
             // M = 0 (a robot with no link but its base): nothing to take.
@@ -137,7 +137,7 @@ where
         }
         out
     }
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn write_lanes(&self, out: &mut [Self::Scalar]) {
         // Entry by entry, each entry's lanes one after another.
         for k in 0..M {
@@ -146,7 +146,7 @@ where
             }
         }
     }
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn write_lane(&self, i: usize, out: &mut Self::Scalar) {
         for k in 0..M {
             self[k].write_lane(i, &mut out[k]);
@@ -157,7 +157,7 @@ where
 /// A pose with its Jacobian (`tip_pose_and_jacobian`), or any pair of lane values.
 impl<L: Lanes, A: LaneValue<L>, B: LaneValue<L>> LaneValue<L> for (A, B) {
     type Scalar = (A::Scalar, B::Scalar);
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn lane(&self, i: usize) -> Self::Scalar {
         (self.0.lane(i), self.1.lane(i))
     }
@@ -172,22 +172,22 @@ macro_rules! lane_type {
 
         impl $name {
             /// The lanes given.
-            #[inline(always)]
+            #[cfg_attr(not(debug_assertions), inline(always))]
             pub const fn new(lanes: [$scalar; $lanes]) -> Self {
                 $name(lanes)
             }
             /// Every lane `x`.
-            #[inline(always)]
+            #[cfg_attr(not(debug_assertions), inline(always))]
             pub const fn splat(x: $scalar) -> Self {
                 $name([x; $lanes])
             }
             /// Lane `i`.
-            #[inline(always)]
+            #[cfg_attr(not(debug_assertions), inline(always))]
             pub const fn lane(self, i: usize) -> $scalar {
                 self.0[i]
             }
             /// The lanes as an array.
-            #[inline(always)]
+            #[cfg_attr(not(debug_assertions), inline(always))]
             pub const fn to_array(self) -> [$scalar; $lanes] {
                 self.0
             }
@@ -195,7 +195,7 @@ macro_rules! lane_type {
 
         impl Add for $name {
             type Output = Self;
-            #[inline(always)]
+            #[cfg_attr(not(debug_assertions), inline(always))]
             fn add(self, rhs: Self) -> Self {
                 let mut out = self.0;
                 for i in 0..$lanes {
@@ -207,7 +207,7 @@ macro_rules! lane_type {
 
         impl Sub for $name {
             type Output = Self;
-            #[inline(always)]
+            #[cfg_attr(not(debug_assertions), inline(always))]
             fn sub(self, rhs: Self) -> Self {
                 let mut out = self.0;
                 for i in 0..$lanes {
@@ -219,7 +219,7 @@ macro_rules! lane_type {
 
         impl Mul for $name {
             type Output = Self;
-            #[inline(always)]
+            #[cfg_attr(not(debug_assertions), inline(always))]
             fn mul(self, rhs: Self) -> Self {
                 let mut out = self.0;
                 for i in 0..$lanes {
@@ -231,7 +231,7 @@ macro_rules! lane_type {
 
         impl Div for $name {
             type Output = Self;
-            #[inline(always)]
+            #[cfg_attr(not(debug_assertions), inline(always))]
             fn div(self, rhs: Self) -> Self {
                 let mut out = self.0;
                 for i in 0..$lanes {
@@ -243,7 +243,7 @@ macro_rules! lane_type {
 
         impl Neg for $name {
             type Output = Self;
-            #[inline(always)]
+            #[cfg_attr(not(debug_assertions), inline(always))]
             fn neg(self) -> Self {
                 let mut out = self.0;
                 for x in &mut out {
@@ -255,17 +255,17 @@ macro_rules! lane_type {
 
         impl Real for $name {
             const BLOCK_MARKS: Option<usize> = Some($marks);
-            #[inline(always)]
+            #[cfg_attr(not(debug_assertions), inline(always))]
             fn from_f64(x: f64) -> Self {
                 $name::splat(<$scalar as Real>::from_f64(x))
             }
-            #[inline(always)]
+            #[cfg_attr(not(debug_assertions), inline(always))]
             fn sin_cos(self) -> (Self, Self) {
                 let (s, c) = $sin_cos(self.0);
                 ($name(s), $name(c))
             }
             $(
-            #[inline(always)]
+            #[cfg_attr(not(debug_assertions), inline(always))]
             fn sin_cos_many<const M: usize>(x: [Self; M]) -> ([Self; M], [Self; M]) {
                 let (s, c) = $sin_cos_many(x.map(|v| v.0));
                 (s.map($name), c.map($name))
@@ -276,7 +276,7 @@ macro_rules! lane_type {
         impl Lanes for $name {
             type Scalar = $scalar;
             const LANES: usize = $lanes;
-            #[inline(always)]
+            #[cfg_attr(not(debug_assertions), inline(always))]
             fn from_fn(mut f: impl FnMut(usize) -> $scalar) -> Self {
                 let mut lanes = [0.0; $lanes];
                 for (i, lane) in lanes.iter_mut().enumerate() {
@@ -284,7 +284,7 @@ macro_rules! lane_type {
                 }
                 $name(lanes)
             }
-            #[inline(always)]
+            #[cfg_attr(not(debug_assertions), inline(always))]
             fn lane(&self, i: usize) -> $scalar {
                 self.0[i]
             }
@@ -292,7 +292,7 @@ macro_rules! lane_type {
 
         impl LaneValue<$name> for $name {
             type Scalar = $scalar;
-            #[inline(always)]
+            #[cfg_attr(not(debug_assertions), inline(always))]
             fn lane(&self, i: usize) -> $scalar {
                 self.0[i]
             }
@@ -300,7 +300,7 @@ macro_rules! lane_type {
 
         #[cfg(feature = "std")]
         impl crate::real::StdTrig for $name {
-            #[inline(always)]
+            #[cfg_attr(not(debug_assertions), inline(always))]
             fn sin_cos_std(self) -> (Self, Self) {
                 let mut s = self.0;
                 let mut c = self.0;

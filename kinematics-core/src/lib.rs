@@ -51,4 +51,4 @@ pub use orientation::OrientationError;
 pub use pose::{AGREEMENT_TOLERANCE, AGREEMENT_TOLERANCE_F32, Pose};
 #[cfg(feature = "std")]
 pub use real::StdTrig;
-pub use real::{BLOCK_MARK_OPS, Real};
+pub use real::{BLOCK_MARK_OPS, Real, chunk};

@@ -51,7 +51,7 @@ impl<T: crate::Real> Pose<T> {
     /// let quarter_turn = Pose { rotation: [[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]], translation: [1.0, 2.0, 3.0] };
     /// assert_eq!(quarter_turn.place([1.0, 0.0, 0.5]), [1.0, 3.0, 3.5]);
     /// ```
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     pub fn place(&self, p: [f64; 3]) -> [T; 3] {
         let (r, t) = (&self.rotation, &self.translation);
         let mut c = *t;

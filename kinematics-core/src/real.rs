@@ -41,7 +41,7 @@ pub trait Real:
     /// Generated code asks for every angle of a pose in one call, so a type can compute them side
     /// by side (for `f64` and `f32`, packed into SIMD registers). The default calls
     /// [`Real::sin_cos`] on each.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn sin_cos_many<const N: usize>(x: [Self; N]) -> ([Self; N], [Self; N]) {
         let mut sines = x;
         let mut cosines = x;
@@ -65,7 +65,7 @@ pub trait Real:
     /// Block mark `mark` (numbered from 1) of straight-line code: every
     /// [`BLOCK_MARKS`](Real::BLOCK_MARKS)-th ends the block there, by a branch on a value the
     /// optimiser cannot see (always false). It computes nothing; the values stay in registers.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn block_mark(mark: usize) {
         if let Some(every) = Self::BLOCK_MARKS
             && mark.is_multiple_of(every)
@@ -79,12 +79,38 @@ pub trait Real:
 /// ([`Real::block_mark`]): a mark follows the first statement that reaches it.
 pub const BLOCK_MARK_OPS: usize = 75;
 
+/// Runs one chunk of generated straight-line code: `f`, always inlined in an optimised build (the
+/// chunk is then the code around it, as if the closure were not there), a call of its own in a
+/// debug build (`debug_assertions`).
+///
+/// Why: without optimisation every `let` and every temporary of a function keeps its own stack
+/// slot for the whole call, and an always-inlined callee's slots join its caller's. A robot's
+/// body of thousands of lane operations (each slot 32 to 64 bytes) then needed megabytes of a
+/// debug build's stack, more than a test thread has. Generated bodies put each stretch between
+/// two block marks ([`BLOCK_MARK_OPS`]) in a closure run by `chunk`, which returns what the
+/// stretch binds: in a debug build only one stretch's slots are live at a time.
+///
+/// ```
+/// use kinematics_core::chunk;
+/// let a = 1.5_f64;
+/// let (b, c) = chunk(|| {
+///     let b = a * a;
+///     let c = b + a;
+///     (b, c)
+/// });
+/// assert_eq!((b, c), (2.25, 3.75));
+/// ```
+#[cfg_attr(not(debug_assertions), inline(always))]
+pub fn chunk<R>(f: impl FnOnce() -> R) -> R {
+    f()
+}
+
 /// Ends the basic block: a branch LLVM cannot fold (its condition is a `black_box`), whose taken
 /// side it cannot remove (another `black_box`). Measured in a scratch harness (the Panda's 59
 /// sphere centres, 526 operations, in a dispatched loop over 1,024 configurations, AVX2): a
 /// `black_box` alone, without the branch, left the centres in eight `f32` lanes at 141 ns a
 /// configuration; with the branch, 38 ns.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn end_block() {
     if core::hint::black_box(false) {
         core::hint::black_box(0_u8);
@@ -98,7 +124,7 @@ fn end_block() {
 /// dispatched to AVX2 or AVX-512 that legacy instruction is the baseline code the dispatch is
 /// there to avoid (on some Intel cores, SSE code after AVX-512 pays on every instruction), and
 /// without `std` nothing is dispatched.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub(crate) fn square_root(x: f64) -> f64 {
     #[cfg(feature = "std")]
     {
@@ -111,7 +137,7 @@ pub(crate) fn square_root(x: f64) -> f64 {
 }
 
 /// [`square_root`] for `f32`.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub(crate) fn square_root_f32(x: f32) -> f32 {
     #[cfg(feature = "std")]
     {
@@ -124,30 +150,30 @@ pub(crate) fn square_root_f32(x: f32) -> f32 {
 }
 
 impl Real for f64 {
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn from_f64(x: f64) -> Self {
         x
     }
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn sin_cos(self) -> (Self, Self) {
         trig::sin_cos_f64(self)
     }
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn sin_cos_many<const N: usize>(x: [Self; N]) -> ([Self; N], [Self; N]) {
         trig::sin_cos_f64_lanes(x)
     }
 }
 
 impl Real for f32 {
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn from_f64(x: f64) -> Self {
         x as f32
     }
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn sin_cos(self) -> (Self, Self) {
         trig::sin_cos_f32(self)
     }
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn sin_cos_many<const N: usize>(x: [Self; N]) -> ([Self; N], [Self; N]) {
         trig::sin_cos_f32_lanes(x)
     }
@@ -166,7 +192,7 @@ pub trait StdTrig: Real {
 
 #[cfg(feature = "std")]
 impl StdTrig for f64 {
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn sin_cos_std(self) -> (Self, Self) {
         std::primitive::f64::sin_cos(self)
     }
@@ -174,7 +200,7 @@ impl StdTrig for f64 {
 
 #[cfg(feature = "std")]
 impl StdTrig for f32 {
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn sin_cos_std(self) -> (Self, Self) {
         std::primitive::f32::sin_cos(self)
     }

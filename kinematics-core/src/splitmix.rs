@@ -6,7 +6,7 @@ pub(crate) struct SplitMix(pub(crate) u64);
 
 impl SplitMix {
     /// The next value in `[0, 1)`.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     pub(crate) fn next(&mut self) -> f64 {
         self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
         let mut z = self.0;

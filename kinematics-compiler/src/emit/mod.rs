@@ -4,6 +4,7 @@
 //! shared intermediate values are `t0, t1, ...` in schedule order, so a small change to a robot
 //! makes a small diff in its code.
 
+mod chunks;
 mod names;
 mod rust;
 mod schedule;

@@ -9,6 +9,7 @@ use kinematics_core::BLOCK_MARK_OPS;
 use proc_macro2::{Delimiter, Group, Ident, Literal, Punct, Spacing, Span, TokenStream};
 use quote::{ToTokens as _, TokenStreamExt as _, format_ident, quote};
 
+use super::chunks::chunked;
 use super::schedule::{Item, Schedule};
 use crate::request::{Compiled, VelocityForm};
 use crate::stats::OpCount;
@@ -499,6 +500,7 @@ pub fn emit_function(compiled: &Compiled, options: &EmitOptions) -> TokenStream 
     let vis = if options.public { quote!(pub) } else { quote!() };
     let bound = options.trig.bound(private);
     let params = if twist { quote!(q: &[T; #n_lit], qd: &[T; #nv_lit]) } else { quote!(q: &[T; #n_lit]) };
+    let body = chunked(body, private);
     quote! {
         #(#[doc = #docs])*
         // Always inlined into its (small, `#[inline]`) typed callers: a function returning an array
@@ -506,7 +508,7 @@ pub fn emit_function(compiled: &Compiled, options: &EmitOptions) -> TokenStream 
         // `memcpy` for a 6-link arm, measured at about a tenth of the PUMA 560's all-link time);
         // inlined, the poses are stored where the caller keeps them.
         #[allow(clippy::inline_always)]
-        #[inline(always)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         #[allow(clippy::approx_constant)] // a robot's own decimals may resemble pi; they are kept as given
         #vis fn #name<T: #bound>(#params) -> #ret {
             #body
@@ -589,12 +591,13 @@ pub fn emit_points(compiled: &Compiled, points: &[[ExprId; 3]], options: &EmitOp
     let vis = if options.public { quote!(pub) } else { quote!() };
     let bound = options.trig.bound(private);
     let cost = format!(" Cost: {}.", OpCount::of(g, outputs.iter().copied()));
+    let body = chunked(body, private);
     quote! {
         #[doc = #doc]
         #[doc = ""]
         #[doc = #cost]
         #[allow(clippy::inline_always)]
-        #[inline(always)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         #[allow(clippy::approx_constant)] // a robot's own decimals may resemble pi; they are kept as given
         #vis fn #name<T: #bound>(q: &[T; #n_lit]) -> [[T; 3]; #m] {
             #body

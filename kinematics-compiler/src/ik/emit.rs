@@ -55,7 +55,7 @@ pub fn emit_branch_body(body: &IkBody, private: &TokenStream, name: &str, doc: &
         #[doc = ""]
         #[doc = #cost]
         #[allow(clippy::inline_always)]
-        #[inline(always)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         #[allow(clippy::approx_constant)] // a robot's own decimals may resemble pi; they are kept as given
         pub fn #name<T: #p::ik::IkReal>(target: &#p::Pose<T>, signs: &[T; 3]) -> #p::ik::IkBranch<T, #n> {
             let [#(#rows),*] = target.rotation;

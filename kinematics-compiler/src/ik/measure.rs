@@ -123,7 +123,7 @@ pub fn emit_measure(measure: &Measure, private: &TokenStream, tip: &str, base: &
     quote! {
         #[doc = #doc]
         #[allow(clippy::inline_always)]
-        #[inline(always)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         #[allow(clippy::approx_constant)] // a robot's own decimals may resemble pi; they are kept as given
         pub fn #name<T: #p::Real>(q: &[T; #n_lit], cos: &[T; #n_lit], sin: &[T; #n_lit]) -> #p::Pose<T> {
             let [#(#qs),*] = *q;

@@ -527,7 +527,14 @@ fn distance(
     let split = if link_frame(cx).links.len() == 1 {
         quote!(let (pose, jacobian) = #j(q); let (poses, jacobians) = ([pose], [jacobian]);)
     } else {
-        quote!(let both = #j(q); let (poses, jacobians) = (both.map(|(pose, _)| pose), both.map(|(_, j)| j));)
+        // Read out of `both` in place: `both.map(..)` takes the array by value, and an unoptimised
+        // build copies it for each call (with lanes, hundreds of KB of a debug build's stack).
+        let m = proc_macro2::Literal::usize_unsuffixed(link_frame(cx).links.len());
+        quote!(
+            let both = #j(q);
+            let poses: [_; #m] = ::core::array::from_fn(|k| both[k].0);
+            let jacobians: [_; #m] = ::core::array::from_fn(|k| both[k].1);
+        )
     };
     let (value, what, margin) = match function {
         CollisionFunction::Clearance => (

@@ -48,7 +48,7 @@ trait Sink<L: CheckLanes> {
 }
 
 /// Every primitive obstacle of `env`, prepared and visited in turn.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn each_obstacle<L: CheckLanes, V: Visit<L>>(env: &Environment<'_>, visit: &mut V) {
     for o in env.spheres {
         o.prepare(visit);
@@ -72,7 +72,7 @@ impl CollisionTables<'_> {
     /// distance (m; negative, the depth of the deepest overlap) between one of its spheres and
     /// an obstacle of `env`, or between two spheres of a checked self pair; infinite with neither.
     /// NaN in a lane whose `q` is not finite.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     pub fn clearance<L: CheckLanes, const N: usize, const K: usize>(
         &self,
         q: &[L; N],
@@ -89,7 +89,7 @@ impl CollisionTables<'_> {
     /// the base's axes, `LOCAL_WORLD_ALIGNED`): the nearest pair's ends moved by their links.
     /// Where the nearest pair changes, the clearance has a kink and the gradient is the nearest
     /// pair's found first; a zero gradient where there is no pair.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     pub fn clearance_gradient<L: CheckLanes, const N: usize, const K: usize, const V: usize>(
         &self,
         q: &[L; N],
@@ -125,7 +125,7 @@ impl CollisionTables<'_> {
     /// pair is at least `margin` apart. Smooth where no pair is exactly at the margin or has a
     /// zero distance between centres. NaN in a lane whose `q` is not finite, and everywhere for
     /// a margin that is negative or not finite (the generated functions refuse those first).
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     pub fn proximity_cost<L: CheckLanes, const N: usize, const K: usize>(
         &self,
         q: &[L; N],
@@ -141,7 +141,7 @@ impl CollisionTables<'_> {
     /// The proximity cost ([`CollisionTables::proximity_cost`]) and its gradient with respect
     /// to the velocities (`jacobians` as for [`CollisionTables::clearance_gradient`]): each pair
     /// within the margin contributes `-2 (margin - d)` times its distance's gradient.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     pub fn proximity_cost_gradient<L: CheckLanes, const N: usize, const K: usize, const V: usize>(
         &self,
         q: &[L; N],
@@ -168,7 +168,7 @@ impl CollisionTables<'_> {
     /// obstacle, each pruned by bounding spheres against the sink's limit. The self pairs come
     /// first: a few sphere pairs of links near one another (no obstacle's distance, which costs
     /// more) often give the nearest pair, or a limit that prunes most of the obstacles' work.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn scan<L: CheckLanes, S: Sink<L>>(&self, poses: &[Pose<L>], env: &Environment<'_>, sink: &mut S) {
         let poses = fence(poses);
         self.scan_pairs(poses, sink);
@@ -183,7 +183,7 @@ impl CollisionTables<'_> {
     }
 
     /// The bounding spheres of up to [`CHUNK`] links from `first`, placed, and how many.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn bounds<L: CheckLanes>(&self, poses: &[Pose<L>], first: usize) -> ([([L; 3], L); CHUNK], usize) {
         let mut bounds = [([L::from_f64(0.0); 3], L::from_f64(0.0)); CHUNK];
         let links = first..self.links.len().min(first + CHUNK);
@@ -194,7 +194,7 @@ impl CollisionTables<'_> {
     }
 
     /// The spheres of link `k`, `start..end` in the tables.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn spheres_of(&self, k: usize) -> core::ops::Range<usize> {
         let (g0, g1, ..) = self.links[k];
         self.groups[g0].0..self.groups[g1 - 1].1
@@ -202,7 +202,7 @@ impl CollisionTables<'_> {
 
     /// The self pairs: each pair of links by their bounds, their groups' bounds, their spheres,
     /// less the sphere pairs held apart for good (`fixed`).
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn scan_pairs<L: CheckLanes, S: Sink<L>>(&self, poses: &[Pose<L>], sink: &mut S) {
         for &(i, j) in self.pairs {
             let ((ga, ea, ba, ra), (gb, eb, bb, rb)) = (self.links[i], self.links[j]);
@@ -249,7 +249,7 @@ impl CollisionTables<'_> {
 /// or zero where that is negative (a signed distance below a negative reach needs the centre
 /// inside, which a reach of zero still lets through). A NaN limit (only in a lane whose `q` is not
 /// finite, whose answer is made NaN at the end) gives zero too.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn reach<L: CheckLanes>(limit: L, radius: L) -> L {
     (limit + radius).max(L::from_f64(0.0))
 }
@@ -257,7 +257,7 @@ fn reach<L: CheckLanes>(limit: L, radius: L) -> L {
 /// The lanes where spheres at `a` and `b` with radii summing to `radii` may be nearer than
 /// `limit`: `|a - b| - radii <= limit`, tested on squares (no root; the exact distance follows
 /// where it passes). NaN lanes pass.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn may_reach<L: CheckLanes>(a: &[L; 3], b: &[L; 3], radii: f64, limit: L) -> L::Flags {
     let reach = reach(limit, L::from_f64(radii));
     let d = lane_sub(a, b);
@@ -275,7 +275,7 @@ struct Measuring<'a, 'c, 't, L: CheckLanes, S> {
 }
 
 impl<L: CheckLanes, S: Sink<L>> Visit<L> for Measuring<'_, '_, '_, L, S> {
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn visit<P: Prepared<L>>(&mut self, prepared: &P) {
         // The bounds first: each near enough to pass the limit gives an upper bound on the
         // nearest pair (a link whose bound is at `d` has every sphere within `d + R`), which
@@ -323,7 +323,7 @@ impl<L: CheckLanes, S: Sink<L>> Visit<L> for Measuring<'_, '_, '_, L, S> {
 impl<L: CheckLanes, S: Sink<L>> Measuring<'_, '_, '_, L, S> {
     /// The links against `query`'s obstacles, asked one lane at a time: each link's bound,
     /// then its spheres in the lanes where the bound is nearer than the limit.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn query(&mut self, query: &dyn SphereQuery) {
         for (k, (bound, radius)) in self.bounds.iter().enumerate() {
             let link = self.first + k;
@@ -392,18 +392,18 @@ impl<L: CheckLanes, const WITNESS: bool> Least<L, WITNESS> {
 impl<L: CheckLanes, const WITNESS: bool> Sink<L> for Least<L, WITNESS> {
     const WANTS_UPPER: bool = true;
 
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn upper(&mut self, bound: L) {
         // A nanometre over: the bound and the distances are rounded apart.
         self.upper = self.upper.min(bound + L::from_f64(1e-9));
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn limit(&self) -> L {
         self.best.min(self.upper)
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn take(&mut self, d: L, a: &End<L>, b: Option<&End<L>>) {
         // Strictly nearer: the first pair found keeps a tie (and a lane whose distance is NaN,
         // from a configuration that is not finite, is made NaN at the end).
@@ -444,7 +444,7 @@ impl<'p, L: CheckLanes, const K: usize, const GRADIENT: bool> Cost<'p, L, K, GRA
         Cost { margin: L::from_f64(margin), sum: zero, poses, coefficients: [[zero; 6]; K], touched: [false; K] }
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn add(&mut self, weight: L, end: &End<L>) {
         let m = moment(&end.center, &end.normal, &self.poses[end.link]);
         let c = &mut self.coefficients[end.link];
@@ -458,15 +458,15 @@ impl<'p, L: CheckLanes, const K: usize, const GRADIENT: bool> Cost<'p, L, K, GRA
 impl<L: CheckLanes, const K: usize, const GRADIENT: bool> Sink<L> for Cost<'_, L, K, GRADIENT> {
     const WANTS_UPPER: bool = false;
 
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn upper(&mut self, _: L) {}
 
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn limit(&self) -> L {
         self.margin
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn take(&mut self, d: L, a: &End<L>, b: Option<&End<L>>) {
         let zero = L::from_f64(0.0);
         // Lanes beyond the margin (an infinite distance from a query's lane not asked too)
@@ -489,14 +489,14 @@ impl<L: CheckLanes, const K: usize, const GRADIENT: bool> Sink<L> for Cost<'_, L
 
 /// A sphere end's six coefficients on its link's Jacobian rows: the direction `n` (linear rows)
 /// and `(c - t) x n` (angular rows), `t` the link's origin.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn moment<L: CheckLanes>(center: &[L; 3], normal: &[L; 3], pose: &Pose<L>) -> [L; 6] {
     let arm = cross(&lane_sub(center, &pose.translation), normal);
     [normal[0], normal[1], normal[2], arm[0], arm[1], arm[2]]
 }
 
 /// `gradient += coefficients^T jacobian`.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn contract<L: CheckLanes, const V: usize>(coefficients: &[L; 6], jacobian: &[[L; V]; 6], gradient: &mut [L; V]) {
     for (c, row) in coefficients.iter().zip(jacobian) {
         for (g, x) in gradient.iter_mut().zip(row) {
@@ -506,13 +506,13 @@ fn contract<L: CheckLanes, const V: usize>(coefficients: &[L; 6], jacobian: &[[L
 }
 
 /// Whether `a` and `b` are the same link number (both whole numbers).
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn same<L: CheckLanes>(a: L, b: L) -> L::Flags {
     (a - b).abs().not_above(L::from_f64(0.25))
 }
 
 /// `k` as a number (links number far below 2^24: exact in `f32` too).
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn index_f64(k: usize) -> f64 {
     #[allow(clippy::cast_precision_loss, reason = "a link index is far below 2^52")]
     let k = k as f64;
@@ -520,14 +520,14 @@ fn index_f64(k: usize) -> f64 {
 }
 
 /// `x`, NaN in the lanes of `bad`.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn nan_where<L: CheckLanes>(bad: L::Flags, x: L) -> L {
     L::select(bad, L::from_f64(f64::NAN), x)
 }
 
 /// Every entry of `values` NaN in the lanes of `bad` (a loop, not an array's `map`: see
 /// [`each3`]).
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn nan_each<L: CheckLanes, const V: usize>(bad: L::Flags, values: &mut [L; V]) {
     for x in values.iter_mut() {
         *x = nan_where(bad, *x);
@@ -535,7 +535,7 @@ fn nan_each<L: CheckLanes, const V: usize>(bad: L::Flags, values: &mut [L; V]) {
 }
 
 /// Every lane when `margin` is negative or not finite.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn bad_margin<L: CheckLanes>(margin: f64) -> L::Flags {
     let bad = !(margin.is_finite() && margin >= 0.0);
     L::Flags::from_mask(if bad { super::LaneMask::full(L::WIDTH) } else { super::LaneMask::NONE })

@@ -24,13 +24,13 @@ pub(crate) trait Measure<L: CheckLanes> {
 /// closures LLVM left as calls, compiled for the baseline instruction set, inside a dispatched
 /// lane body (measured: the clearance in `F64x4` lanes spent a third of its time in them, in
 /// SSE2); direct calls of a small closure are inlined.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub(super) fn each3<T>(mut f: impl FnMut(usize) -> T) -> [T; 3] {
     [f(0), f(1), f(2)]
 }
 
 /// `v / length`, or zero in the lanes where `length` is zero (`v` is then zero too).
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub(super) fn unit<L: CheckLanes>(v: &[L; 3], length: L) -> [L; 3] {
     let zero = L::from_f64(0.0);
     let at_zero = length.not_above(zero);
@@ -38,19 +38,19 @@ pub(super) fn unit<L: CheckLanes>(v: &[L; 3], length: L) -> [L; 3] {
 }
 
 /// The length of `v`.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub(super) fn length<L: CheckLanes>(v: &[L; 3]) -> L {
     lane_dot(v, v).sqrt()
 }
 
 /// Every lane's flag set.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn every<L: CheckLanes>() -> L::Flags {
     L::Flags::from_mask(LaneMask::full(L::WIDTH))
 }
 
 impl<L: CheckLanes> Measure<L> for PreparedSphere<L> {
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn distance(&self, p: &[L; 3]) -> (L, [L; 3]) {
         let d = lane_sub(p, &self.center);
         let l = length(&d);
@@ -60,7 +60,7 @@ impl<L: CheckLanes> Measure<L> for PreparedSphere<L> {
 
 impl<L: CheckLanes> Measure<L> for PreparedCapsule<L> {
     /// From the nearest point of the axis segment.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn distance(&self, p: &[L; 3]) -> (L, [L; 3]) {
         let ab = &self.axis;
         let ap = lane_sub(p, &self.a);
@@ -77,7 +77,7 @@ impl<L: CheckLanes> Measure<L> for PreparedCylinder<L> {
     /// beyond the nearer cap's plane (negative between the caps): outside, the length of
     /// `(max(dr, 0), max(over, 0))` along the radial direction and the axis; inside (both
     /// negative), the larger of the two, from the curved side or the nearer cap.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn distance(&self, p: &[L; 3]) -> (L, [L; 3]) {
         let zero = L::from_f64(0.0);
         let u = &self.unit;
@@ -106,7 +106,7 @@ impl<L: CheckLanes> Measure<L> for PreparedCylinder<L> {
 /// The signed distance from a point at `local` in a box's frame to the box of half extents `half`
 /// and its gradient in the box's frame: outside, the length of the coordinates beyond the half
 /// extents; inside, the largest (nearest face) of those differences, all negative.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn box_distance<L: CheckLanes>(local: &[L; 3], half: &[L; 3]) -> (L, [L; 3]) {
     let (zero, one) = (L::from_f64(0.0), L::from_f64(1.0));
     let sign = each3(|i| L::select(local[i].not_above(zero), -one, one));
@@ -129,14 +129,14 @@ fn box_distance<L: CheckLanes>(local: &[L; 3], half: &[L; 3]) -> (L, [L; 3]) {
 }
 
 impl<L: CheckLanes> Measure<L> for AlignedBox<L> {
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn distance(&self, p: &[L; 3]) -> (L, [L; 3]) {
         box_distance(&lane_sub(p, &self.center), &self.half)
     }
 }
 
 impl<L: CheckLanes> Measure<L> for TurnedBox<L> {
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn distance(&self, p: &[L; 3]) -> (L, [L; 3]) {
         let d = lane_sub(p, &self.center);
         let rows = &self.rows;
@@ -149,7 +149,7 @@ impl<L: CheckLanes> Measure<L> for TurnedBox<L> {
 }
 
 /// `a x b`.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub(super) fn cross<L: CheckLanes>(a: &[L; 3], b: &[L; 3]) -> [L; 3] {
     [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
 }

@@ -54,7 +54,7 @@ pub struct PairGrid<'a> {
 impl PairGrid<'_> {
     /// The code of the cell the joints' values `(a, b)` fall in: 0 (to test) outside the grid, for
     /// a NaN, and for a cell the states do not hold.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     pub fn code(&self, a: f64, b: f64) -> u8 {
         let x = (a - self.lower[0]) * self.scale[0];
         let y = (b - self.lower[1]) * self.scale[1];
@@ -69,7 +69,7 @@ impl PairGrid<'_> {
 
     /// The lanes of `q` whose cells collide, and the lanes left to the tests (every lane where
     /// `q` has no entry the grid is over).
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     pub fn lanes<L: CheckLanes>(&self, q: &[L]) -> (LaneMask, LaneMask) {
         let (mut colliding, mut test) = (0u32, 0u32);
         let (Some(&a), Some(&b)) = (q.get(self.dofs[0]), q.get(self.dofs[1])) else {
@@ -96,7 +96,7 @@ pub(super) struct GridVerdicts {
 
 impl GridVerdicts {
     /// Every grid's verdicts on `q`.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     pub fn of<L: CheckLanes>(grids: &[PairGrid<'_>], q: &[L]) -> Self {
         let mut verdicts = GridVerdicts { test: [LaneMask::NONE; MAX_GRIDS], colliding: LaneMask::NONE };
         for (slot, grid) in verdicts.test.iter_mut().zip(grids) {
@@ -109,7 +109,7 @@ impl GridVerdicts {
 
     /// The lanes on which pair `pair` must be tested: those its grid leaves to the tests, or
     /// every lane if no grid covers it.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     pub fn tested(&self, grids: &[PairGrid<'_>], pair: usize) -> LaneMask {
         grids
             .iter()

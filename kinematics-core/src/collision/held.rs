@@ -40,11 +40,11 @@ mod sealed {
 }
 
 impl<R> World<R> for Environment<'_> {
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn environment(&self) -> &Environment<'_> {
         self
     }
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn held(&self) -> Option<HeldObject<'_>> {
         None
     }
@@ -59,11 +59,11 @@ pub struct Holding<'a, R, const W: usize = 1> {
 }
 
 impl<R, const W: usize> World<R> for Holding<'_, R, W> {
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn environment(&self) -> &Environment<'_> {
         self.environment
     }
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn held(&self) -> Option<HeldObject<'_>> {
         Some(self.held.object())
     }
@@ -91,7 +91,7 @@ pub struct Held<'a, R, const W: usize = 1> {
 
 impl<R, const W: usize> Held<'_, R, W> {
     /// What the checks read.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn object(&self) -> HeldObject<'_> {
         HeldObject {
             carrier: self.carrier,
@@ -332,7 +332,7 @@ impl Pose<f64> {
 
 impl<L: CheckLanes> Pose<L> {
     /// This pose, then `fixed` (a constant pose in this pose's frame).
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn then_fixed(&self, fixed: &Pose<f64>) -> Pose<L> {
         // Written out, not as closures: a closure is a function of its own, which LLVM left a
         // call from the dispatched checks, running outside their instruction set.
@@ -352,7 +352,7 @@ impl HeldObject<'_> {
     /// `hit` and the lanes where the object, carried by the robot's links at `poses`, touches an
     /// obstacle of `env` or a link of the robot it is tested against (`links`: each link's
     /// groups and bounding sphere; `groups`, `centers`, `radii` as the tables hold them).
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     pub(super) fn hits<L: CheckLanes>(
         &self,
         tables: &super::CollisionTables<'_>,

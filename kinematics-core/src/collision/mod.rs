@@ -32,7 +32,7 @@ pub use obstacles::{
 pub use tables::CollisionTables;
 pub use verdicts::{CheckLanes, Flags, Flags32x8, Flags32x16, Flags64x4, Flags64x8, LaneMask, non_finite};
 #[doc(hidden)]
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn box_hits<L: CheckLanes>(b: &BoxObstacle, c: &[L; 3], r: L) -> L::Flags {
     obstacles::Obstacle::hits(b, c, r)
 }

@@ -77,7 +77,7 @@ impl<S: Real + Into<f64>, const N: usize> Motion<S, N> {
 
     /// Configuration `k` (`0..=steps`): `(1 - t) q0 + t q1` at `t = k / steps`, exactly `q0` and
     /// `q1` at the ends.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     pub fn configuration(&self, k: usize) -> [S; N] {
         let mut q = self.q0;
         for (j, x) in q.iter_mut().enumerate() {
@@ -86,7 +86,7 @@ impl<S: Real + Into<f64>, const N: usize> Motion<S, N> {
         q
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn joint(&self, k: usize, j: usize) -> S {
         // The ends as given: `0 * q1` is NaN where `q1` is infinite.
         if k == 0 {
@@ -101,7 +101,7 @@ impl<S: Real + Into<f64>, const N: usize> Motion<S, N> {
 
     /// The first colliding configuration's index (`None`: every one is free), `check` answering
     /// for `L::LANES` configurations at a time.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     pub fn first_collision<L: Lanes<Scalar = S>>(&self, check: impl Fn(&[L; N]) -> LaneMask) -> Option<usize> {
         // Saturating: a motion of `usize::MAX` steps (a resolution far below its span) loses its
         // last configuration to the count rather than overflow.
@@ -180,7 +180,7 @@ const MOST_LANES: usize = 32;
 /// first_collisions::<F64x4, 1>(&motions, 0.05, beyond, &mut out);
 /// assert_eq!(out, [Some(0.65), None, Some(0.0)]);
 /// ```
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn first_collisions<L: Lanes, const N: usize>(
     motions: &[Ends<L::Scalar, N>],
     resolution: f64,
@@ -253,7 +253,7 @@ pub fn first_collisions<L: Lanes, const N: usize>(
 /// assert_eq!(motion_wide::<F64x4, F64x8, 1>(&motion, beyond, beyond), Some(0.65));
 /// # Ok::<(), kinematics_core::KinematicsError>(())
 /// ```
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn motion_wide<L, W, const N: usize>(
     motion: &Motion<L::Scalar, N>,
     narrow: impl Fn(&[L; N]) -> LaneMask,
@@ -295,7 +295,7 @@ where
 /// them), after checking `resolution` (positive and finite) and that `out` has one entry per
 /// motion (else an error naming `robot`, and nothing is written): each motion's first colliding
 /// configuration's fraction, or `None` when every one is free.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn motions_wide<L, W, const N: usize>(
     robot: &'static str,
     motions: &[Ends<L::Scalar, N>],
@@ -357,7 +357,7 @@ impl<S: Real + Into<f64>, const N: usize, L: Lanes<Scalar = S>, F: Fn(&[L; N]) -
     for Searches<'_, S, N, L, F>
 {
     type Output = ();
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn with_simd<Q: pulp::Simd>(self, _: Q) {
         first_collisions(self.motions, self.resolution, self.check, self.out);
     }
@@ -379,7 +379,7 @@ impl<S: Real + Into<f64>, const N: usize, L: Lanes<Scalar = S>, F: Fn(&[L; N]) -
     for Search<'_, S, N, L, F>
 {
     type Output = Option<usize>;
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn with_simd<Q: pulp::Simd>(self, _: Q) -> Option<usize> {
         self.motion.first_collision(self.check)
     }

@@ -188,7 +188,7 @@ impl Extent {
     }
 
     /// In lanes, for a check.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     pub(super) fn prepare<L: CheckLanes>(&self) -> AlignedBox<L> {
         AlignedBox { center: splat(self.center), half: splat(self.half) }
     }
@@ -218,7 +218,7 @@ pub trait SphereQuery: core::fmt::Debug + Sync {
 
 /// The lanes of `asked` where the sphere of `center` and `radius` touches an obstacle of `query`,
 /// asked one lane at a time.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub(super) fn query_lanes<L: CheckLanes>(
     query: &dyn SphereQuery,
     center: &[L; 3],
@@ -331,7 +331,7 @@ impl<'a> Environment<'a> {
     /// centre's lanes must be finite (a NaN coordinate counts as a hit; an infinite one does not).
     /// The obstacles are asked only where the sphere touches, on some lane, the box along the
     /// world's axes holding them all (worked out by [`Environment::new`]).
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     pub fn hits_lanes<L: CheckLanes>(&self, center: &[L; 3], radius: L) -> L::Flags {
         let mut hit = L::Flags::NONE;
         if let Some(extent) = self.extent
@@ -346,7 +346,7 @@ impl<'a> Environment<'a> {
     }
 
     /// The lanes where the sphere touches one of the four slices' obstacles.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn shapes_hit<L: CheckLanes>(&self, center: &[L; 3], radius: L) -> L::Flags {
         let mut hit = L::Flags::NONE;
         // Each loop ends when every lane is hit. Besides saving work, the exit keeps LLVM from
@@ -399,7 +399,7 @@ pub(crate) trait Obstacle {
     fn prepare<L: CheckLanes, V: Visit<L>>(&self, visit: &mut V);
 
     /// The lanes where the sphere of `center` and `radius` touches the obstacle.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn hits<L: CheckLanes>(&self, center: &[L; 3], radius: L) -> L::Flags {
         let mut one = One { center, radius, hit: L::Flags::NONE };
         self.prepare(&mut one);
@@ -428,23 +428,23 @@ struct One<'a, L: CheckLanes> {
 }
 
 impl<L: CheckLanes> Visit<L> for One<'_, L> {
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn visit<P: Prepared<L>>(&mut self, obstacle: &P) {
         self.hit = obstacle.hits(self.center, self.radius);
     }
 }
 
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn splat<L: CheckLanes>(v: Vec3) -> [L; 3] {
     [L::from_f64(v[0]), L::from_f64(v[1]), L::from_f64(v[2])]
 }
 
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub(super) fn lane_dot<L: CheckLanes>(a: &[L; 3], b: &[L; 3]) -> L {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
 
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub(super) fn lane_sub<L: CheckLanes>(a: &[L; 3], b: &[L; 3]) -> [L; 3] {
     [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
 }
@@ -458,7 +458,7 @@ pub(crate) struct PreparedSphere<L> {
 }
 
 impl Obstacle for SphereObstacle {
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn prepare<L: CheckLanes, V: Visit<L>>(&self, visit: &mut V) {
         visit.visit(&PreparedSphere { center: splat::<L>(self.center), radius: L::from_f64(self.radius) });
     }
@@ -466,7 +466,7 @@ impl Obstacle for SphereObstacle {
 
 impl<L: CheckLanes> Prepared<L> for PreparedSphere<L> {
     /// Centres within the sum of the radii.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn hits(&self, center: &[L; 3], radius: L) -> L::Flags {
         let d = lane_sub(center, &self.center);
         let reach = radius + self.radius;
@@ -483,7 +483,7 @@ pub(crate) struct PreparedCapsule<L> {
 }
 
 impl Obstacle for CapsuleObstacle {
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn prepare<L: CheckLanes, V: Visit<L>>(&self, visit: &mut V) {
         let axis = sub(self.b, self.a);
         let length = dot(axis, axis);
@@ -500,7 +500,7 @@ impl Obstacle for CapsuleObstacle {
 
 impl<L: CheckLanes> Prepared<L> for PreparedCapsule<L> {
     /// The centre within the sum of the radii of the axis segment's nearest point.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn hits(&self, center: &[L; 3], radius: L) -> L::Flags {
         let ab = &self.axis;
         let ap = lane_sub(center, &self.a);
@@ -523,7 +523,7 @@ pub(crate) struct PreparedCylinder<L> {
 }
 
 impl Obstacle for CylinderObstacle {
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn prepare<L: CheckLanes, V: Visit<L>>(&self, visit: &mut V) {
         let axis = sub(self.b, self.a);
         // Positive: `Environment::new` refuses a cylinder without an axis.
@@ -546,7 +546,7 @@ impl<L: CheckLanes> Prepared<L> for PreparedCylinder<L> {
     /// `rho <= R + sqrt(u)`, which squares (both sides non-negative) to
     /// `rho^2 - R^2 - u <= 2 R sqrt(u)`: true when the left side is not positive, and otherwise
     /// exactly when its square is at most `4 R^2 u`. No root is taken.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn hits(&self, center: &[L; 3], radius: L) -> L::Flags {
         let ap = lane_sub(center, &self.a);
         let along = lane_dot(&ap, &self.unit);
@@ -573,7 +573,7 @@ pub(crate) struct TurnedBox<L> {
 }
 
 impl Obstacle for BoxObstacle {
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn prepare<L: CheckLanes, V: Visit<L>>(&self, visit: &mut V) {
         const WORLD: [Vec3; 3] = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
         let (center, half) = (splat::<L>(self.center), splat::<L>(self.half_extents));
@@ -591,7 +591,7 @@ impl Obstacle for BoxObstacle {
 /// Within `radius` of the box of half extents `half`, `local` being the centre's offset in the
 /// box's frame: the squared distance to the box (the coordinates beyond the half extents) within
 /// the radius squared.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn box_hits<L: CheckLanes>(local: [L; 3], half: &[L; 3], radius: L) -> L::Flags {
     let zero = L::from_f64(0.0);
     let mut sum = zero;
@@ -603,14 +603,14 @@ fn box_hits<L: CheckLanes>(local: [L; 3], half: &[L; 3], radius: L) -> L::Flags 
 }
 
 impl<L: CheckLanes> Prepared<L> for AlignedBox<L> {
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn hits(&self, center: &[L; 3], radius: L) -> L::Flags {
         box_hits(lane_sub(center, &self.center), &self.half, radius)
     }
 }
 
 impl<L: CheckLanes> Prepared<L> for TurnedBox<L> {
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn hits(&self, center: &[L; 3], radius: L) -> L::Flags {
         let d = lane_sub(center, &self.center);
         let rows = &self.rows;

@@ -83,7 +83,7 @@ impl CollisionTables<'_> {
     /// of `env` or itself, or where the object it holds (`held`, if any) touches an obstacle or
     /// a link it is tested against: the robot's obstacles first, then the held object's, then
     /// the pairs, each only on the lanes still free. A lane whose `q` is not finite is colliding.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     pub fn collides<L: CheckLanes>(
         &self,
         q: &[L],
@@ -109,7 +109,7 @@ impl CollisionTables<'_> {
     /// `generic_collision_points` returns them (every sphere's centre in the checks' order, then
     /// each group's bounding sphere's, then each link's), with the links' poses only for a held
     /// object, whose own centres are placed by them.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     pub fn collides_points<L: CheckLanes>(
         &self,
         q: &[L],
@@ -131,7 +131,7 @@ impl CollisionTables<'_> {
 
     /// [`CollisionTables::self_collides`] on the robot's points (see
     /// [`CollisionTables::collides_points`]).
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     pub fn self_collides_points<L: CheckLanes>(&self, q: &[L], points: &[[L; 3]]) -> LaneMask {
         let grids = GridVerdicts::of(self.grids, q);
         let at = Placed::new(self, fence(points));
@@ -140,7 +140,7 @@ impl CollisionTables<'_> {
 
     /// The lanes where two links of a checked pair of the robot at `q` touch. A lane whose `q` is
     /// not finite is colliding.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     pub fn self_collides<L: CheckLanes>(&self, q: &[L], poses: &[Pose<L>]) -> LaneMask {
         let grids = GridVerdicts::of(self.grids, q);
         let at = Placing { tables: self, poses: fence(poses) };
@@ -152,7 +152,7 @@ impl CollisionTables<'_> {
     /// holding every obstacle (and the link left out where no lane still free touches it), then
     /// each obstacle prepared once in lanes and tested against each link's bounding sphere, then
     /// against its spheres only where that hits.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn obstacle_hits<L: CheckLanes, C: Centers<L>>(
         &self,
         at: &C,
@@ -209,7 +209,7 @@ impl CollisionTables<'_> {
     /// second's bounding sphere, then group against group, then the spheres of two touching
     /// groups: each of the first's against the second group's bounding sphere, and where that
     /// touches, against each of the second's.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn self_hits<L: CheckLanes, C: Centers<L>>(&self, at: &C, mut hit: L::Flags, grids: &GridVerdicts) -> L::Flags {
         // Filled anew for each pair of groups; made once (zeroing it per pair was measured).
         let mut placed = [([L::from_f64(0.0); 3], L::from_f64(0.0)); PLACED];
@@ -298,7 +298,7 @@ const PLACED: usize = 4;
 /// together, the straight-line poses and the work on them made one block too large for LLVM's
 /// vectorizer to schedule whole, and parts of it ran in 4-lane pieces (measured: the Panda's
 /// `collides` in `F32x16` lanes 1.15x slower without it).
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub(super) fn fence<T: ?Sized>(poses: &T) -> &T {
     core::hint::black_box(poses)
 }
@@ -318,7 +318,7 @@ impl<L: CheckLanes, C: Centers<L>> Chunk<'_, '_, L, C> {
     /// `hit` and the lanes where one of the links' spheres touches one of `obstacles`: per
     /// obstacle (prepared once), each link's bounding sphere first, then its spheres (placed as
     /// they are tested) on the lanes it hits until each of them is decided.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn against<O: Obstacle>(&self, obstacles: &[O], hit: L::Flags) -> L::Flags {
         let mut visit = Against { chunk: self, hit };
         for obstacle in obstacles {
@@ -335,7 +335,7 @@ impl<L: CheckLanes, C: Centers<L>> Chunk<'_, '_, L, C> {
     /// `hit` and the lanes where one of the links' spheres touches an obstacle of `query`: each
     /// link's bounding sphere asked first, then its spheres on the lanes it touches, one lane at
     /// a time.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn against_query(&self, query: &dyn SphereQuery, mut hit: L::Flags) -> L::Flags {
         let Chunk { tables, at, first, bounds, list } = *self;
         for &i in list {
@@ -369,7 +369,7 @@ struct Against<'a, 'c, 't, L: CheckLanes, C> {
 }
 
 impl<L: CheckLanes, C: Centers<L>> Visit<L> for Against<'_, '_, '_, L, C> {
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn visit<P: Prepared<L>>(&mut self, prepared: &P) {
         let Chunk { tables, at, first, bounds, list } = *self.chunk;
         let mut hit = self.hit;
@@ -414,15 +414,15 @@ struct Placing<'a, 't, L> {
 }
 
 impl<L: CheckLanes> Centers<L> for Placing<'_, '_, L> {
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn link(&self, k: usize) -> [L; 3] {
         self.poses[k].place(self.tables.links[k].2)
     }
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn group(&self, k: usize, g: usize) -> [L; 3] {
         self.poses[k].place(self.tables.groups[g].2)
     }
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn sphere(&self, k: usize, s: usize) -> [L; 3] {
         self.poses[k].place(self.tables.centers[s])
     }
@@ -437,7 +437,7 @@ struct Placed<'a, L> {
 }
 
 impl<'a, L> Placed<'a, L> {
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn new(tables: &CollisionTables<'_>, points: &'a [[L; 3]]) -> Self {
         let (spheres, rest) = points.split_at(tables.centers.len());
         let (groups, links) = rest.split_at(tables.groups.len());
@@ -446,22 +446,22 @@ impl<'a, L> Placed<'a, L> {
 }
 
 impl<L: CheckLanes> Centers<L> for Placed<'_, L> {
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn link(&self, k: usize) -> [L; 3] {
         self.links[k]
     }
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn group(&self, _: usize, g: usize) -> [L; 3] {
         self.groups[g]
     }
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn sphere(&self, _: usize, s: usize) -> [L; 3] {
         self.spheres[s]
     }
 }
 
 /// The lanes where two spheres touch (or a distance is NaN).
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub(super) fn touch<L: CheckLanes>(a: &[L; 3], ra: L, b: &[L; 3], rb: L) -> L::Flags {
     let d = [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
     let reach = ra + rb;

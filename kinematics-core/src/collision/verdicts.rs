@@ -29,49 +29,49 @@ impl LaneMask {
     pub const NONE: LaneMask = LaneMask(0);
 
     /// The mask of these bits.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     pub const fn from_bits(bits: u32) -> Self {
         LaneMask(bits)
     }
 
     /// Every one of `width` lanes set (`width <= 32`).
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     pub const fn full(width: usize) -> Self {
         LaneMask(if width >= 32 { u32::MAX } else { (1u32 << width) - 1 })
     }
 
     /// The bits.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     pub const fn bits(self) -> u32 {
         self.0
     }
 
     /// Lane `i`'s verdict.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     pub const fn lane(self, i: usize) -> bool {
         i < 32 && (self.0 >> i) & 1 == 1
     }
 
     /// Whether some lane is set.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     pub const fn any(self) -> bool {
         self.0 != 0
     }
 
     /// Whether every one of `width` lanes is set.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     pub const fn is_full(self, width: usize) -> bool {
         self.0 == LaneMask::full(width).0
     }
 
     /// How many lanes are set.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     pub const fn count(self) -> u32 {
         self.0.count_ones()
     }
 
     /// The lanes set here and not in `other`.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     pub const fn and_not(self, other: LaneMask) -> Self {
         LaneMask(self.0 & !other.0)
     }
@@ -79,7 +79,7 @@ impl LaneMask {
 
 impl BitOr for LaneMask {
     type Output = Self;
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn bitor(self, rhs: Self) -> Self {
         LaneMask(self.0 | rhs.0)
     }
@@ -87,7 +87,7 @@ impl BitOr for LaneMask {
 
 impl BitAnd for LaneMask {
     type Output = Self;
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn bitand(self, rhs: Self) -> Self {
         LaneMask(self.0 & rhs.0)
     }
@@ -95,7 +95,7 @@ impl BitAnd for LaneMask {
 
 impl Not for LaneMask {
     type Output = Self;
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn not(self) -> Self {
         LaneMask(!self.0)
     }
@@ -105,7 +105,7 @@ impl Not for LaneMask {
 /// the batches ([`crate::batch_wide`]) write a check's verdicts into a `&mut [bool]`.
 impl<L: Lanes> LaneValue<L> for LaneMask {
     type Scalar = bool;
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn lane(&self, i: usize) -> bool {
         LaneMask::lane(*self, i)
     }
@@ -133,23 +133,23 @@ pub trait Flags: Copy + BitOr<Output = Self> + BitAnd<Output = Self> {
 
 impl Flags for bool {
     const NONE: Self = false;
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn any(self) -> bool {
         self
     }
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn all(self) -> bool {
         self
     }
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn and_not(self, other: Self) -> Self {
         self && !other
     }
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn bits(self) -> LaneMask {
         LaneMask(u32::from(self))
     }
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn from_mask(mask: LaneMask) -> Self {
         mask.lane(0)
     }
@@ -202,40 +202,40 @@ macro_rules! scalar_check {
         impl CheckLanes for $t {
             type Flags = bool;
             const WIDTH: usize = 1;
-            #[inline(always)]
+            #[cfg_attr(not(debug_assertions), inline(always))]
             fn max(self, other: Self) -> Self {
                 if self > other { self } else { other }
             }
-            #[inline(always)]
+            #[cfg_attr(not(debug_assertions), inline(always))]
             fn min(self, other: Self) -> Self {
                 if self < other { self } else { other }
             }
-            #[inline(always)]
+            #[cfg_attr(not(debug_assertions), inline(always))]
             fn abs(self) -> Self {
                 if self < 0.0 { -self } else { self }
             }
-            #[inline(always)]
+            #[cfg_attr(not(debug_assertions), inline(always))]
             fn not_above(self, limit: Self) -> bool {
                 // Not above: below, equal, or unordered (a NaN on either side).
                 self.partial_cmp(&limit) != Some(core::cmp::Ordering::Greater)
             }
-            #[inline(always)]
+            #[cfg_attr(not(debug_assertions), inline(always))]
             fn non_finite(self) -> bool {
                 !self.is_finite()
             }
-            #[inline(always)]
+            #[cfg_attr(not(debug_assertions), inline(always))]
             fn lane_f64(self, _: usize) -> f64 {
                 f64::from(self)
             }
-            #[inline(always)]
+            #[cfg_attr(not(debug_assertions), inline(always))]
             fn sqrt(self) -> Self {
                 $root(self)
             }
-            #[inline(always)]
+            #[cfg_attr(not(debug_assertions), inline(always))]
             fn select(flags: bool, then: Self, otherwise: Self) -> Self {
                 if flags { then } else { otherwise }
             }
-            #[inline(always)]
+            #[cfg_attr(not(debug_assertions), inline(always))]
             #[allow(clippy::cast_possible_truncation, reason = "f32 lanes take f32's rounding")]
             fn from_lanes(mut f: impl FnMut(usize) -> f64) -> Self {
                 f(0) as $t
@@ -258,7 +258,7 @@ macro_rules! lane_check {
 
         impl BitOr for $flags {
             type Output = Self;
-            #[inline(always)]
+            #[cfg_attr(not(debug_assertions), inline(always))]
             fn bitor(self, rhs: Self) -> Self {
                 let mut out = self.0;
                 for i in 0..$lanes {
@@ -270,7 +270,7 @@ macro_rules! lane_check {
 
         impl BitAnd for $flags {
             type Output = Self;
-            #[inline(always)]
+            #[cfg_attr(not(debug_assertions), inline(always))]
             fn bitand(self, rhs: Self) -> Self {
                 let mut out = self.0;
                 for i in 0..$lanes {
@@ -285,15 +285,15 @@ macro_rules! lane_check {
             // Through the packed bits: an OR (AND) over the words instead became a chain of
             // shuffles in 4-lane pieces that LLVM then spread to the whole check's arithmetic
             // (measured: the Panda's obstacle check in F32x16 lanes took twice as long).
-            #[inline(always)]
+            #[cfg_attr(not(debug_assertions), inline(always))]
             fn any(self) -> bool {
                 self.bits().any()
             }
-            #[inline(always)]
+            #[cfg_attr(not(debug_assertions), inline(always))]
             fn all(self) -> bool {
                 self.bits().is_full($lanes)
             }
-            #[inline(always)]
+            #[cfg_attr(not(debug_assertions), inline(always))]
             fn and_not(self, other: Self) -> Self {
                 let mut out = self.0;
                 for i in 0..$lanes {
@@ -301,7 +301,7 @@ macro_rules! lane_check {
                 }
                 $flags(out)
             }
-            #[inline(always)]
+            #[cfg_attr(not(debug_assertions), inline(always))]
             fn bits(self) -> LaneMask {
                 // Each word is all ones or all zeros: its low bit is the flag. (Written as
                 // `word != 0`, the packing made LLVM split the whole check's lanes into pieces:
@@ -312,7 +312,7 @@ macro_rules! lane_check {
                 }
                 LaneMask(bits)
             }
-            #[inline(always)]
+            #[cfg_attr(not(debug_assertions), inline(always))]
             fn from_mask(mask: LaneMask) -> Self {
                 let mut out = [0; $lanes];
                 for i in 0..$lanes {
@@ -325,7 +325,7 @@ macro_rules! lane_check {
         impl CheckLanes for $name {
             type Flags = $flags;
             const WIDTH: usize = $lanes;
-            #[inline(always)]
+            #[cfg_attr(not(debug_assertions), inline(always))]
             fn max(self, other: Self) -> Self {
                 let mut out = other.0;
                 for i in 0..$lanes {
@@ -335,7 +335,7 @@ macro_rules! lane_check {
                 }
                 $name(out)
             }
-            #[inline(always)]
+            #[cfg_attr(not(debug_assertions), inline(always))]
             fn min(self, other: Self) -> Self {
                 let mut out = other.0;
                 for i in 0..$lanes {
@@ -345,7 +345,7 @@ macro_rules! lane_check {
                 }
                 $name(out)
             }
-            #[inline(always)]
+            #[cfg_attr(not(debug_assertions), inline(always))]
             fn abs(self) -> Self {
                 let mut out = self.0;
                 for x in &mut out {
@@ -353,7 +353,7 @@ macro_rules! lane_check {
                 }
                 $name(out)
             }
-            #[inline(always)]
+            #[cfg_attr(not(debug_assertions), inline(always))]
             fn not_above(self, limit: Self) -> $flags {
                 let mut out = [0; $lanes];
                 for i in 0..$lanes {
@@ -361,7 +361,7 @@ macro_rules! lane_check {
                 }
                 $flags(out)
             }
-            #[inline(always)]
+            #[cfg_attr(not(debug_assertions), inline(always))]
             fn non_finite(self) -> $flags {
                 let mut out = [0; $lanes];
                 for i in 0..$lanes {
@@ -369,11 +369,11 @@ macro_rules! lane_check {
                 }
                 $flags(out)
             }
-            #[inline(always)]
+            #[cfg_attr(not(debug_assertions), inline(always))]
             fn lane_f64(self, i: usize) -> f64 {
                 f64::from(self.0[i])
             }
-            #[inline(always)]
+            #[cfg_attr(not(debug_assertions), inline(always))]
             fn sqrt(self) -> Self {
                 let mut out = self.0;
                 for x in &mut out {
@@ -381,7 +381,7 @@ macro_rules! lane_check {
                 }
                 $name(out)
             }
-            #[inline(always)]
+            #[cfg_attr(not(debug_assertions), inline(always))]
             fn select(flags: $flags, then: Self, otherwise: Self) -> Self {
                 let mut out = otherwise.0;
                 for i in 0..$lanes {
@@ -391,7 +391,7 @@ macro_rules! lane_check {
                 }
                 $name(out)
             }
-            #[inline(always)]
+            #[cfg_attr(not(debug_assertions), inline(always))]
             #[allow(clippy::cast_possible_truncation, reason = "f32 lanes take f32's rounding")]
             fn from_lanes(mut f: impl FnMut(usize) -> f64) -> Self {
                 let mut out = [0.0; $lanes];
@@ -410,13 +410,13 @@ lane_check!(F32x8, Flags32x8, u32, i32, 8, root32, "The flags of [`F32x8`]'s lan
 lane_check!(F32x16, Flags32x16, u32, i32, 16, root32, "The flags of [`F32x16`]'s lanes.");
 
 /// The lanes of `q` with a NaN or an infinite entry: configurations that are never free.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn non_finite<L: CheckLanes, const N: usize>(q: &[L; N]) -> L::Flags {
     non_finite_entries(q)
 }
 
 /// [`non_finite`] of a configuration given as a slice.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub(crate) fn non_finite_entries<L: CheckLanes>(q: &[L]) -> L::Flags {
     let mut bad = L::Flags::NONE;
     for x in q {

@@ -38,13 +38,13 @@ impl<T: Copy, const M: usize> BoundedList<T, M> {
     }
 
     /// The first `len` of `items` (all of them when `len` is more than `M`).
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     pub(crate) fn from_first(items: [T; M], len: usize) -> Self {
         BoundedList { items, len: if len < M { len } else { M } }
     }
 
     /// Appends `value`, or returns [`Full`] (and stores nothing) when there are `M` already.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     pub fn push(&mut self, value: T) -> Result<(), Full> {
         let slot = self.items.get_mut(self.len).ok_or(Full)?;
         *slot = value;
@@ -53,31 +53,31 @@ impl<T: Copy, const M: usize> BoundedList<T, M> {
     }
 
     /// The values, in the order pushed.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     pub fn as_slice(&self) -> &[T] {
         &self.items[..self.len]
     }
 
     /// The values, to change in place.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     pub fn as_mut_slice(&mut self) -> &mut [T] {
         &mut self.items[..self.len]
     }
 
     /// How many there are.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     pub fn len(&self) -> usize {
         self.len
     }
 
     /// Whether there are none.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     pub fn is_empty(&self) -> bool {
         self.len == 0
     }
 
     /// The last value pushed.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     pub fn last(&self) -> Option<&T> {
         self.as_slice().last()
     }

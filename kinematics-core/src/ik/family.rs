@@ -51,13 +51,13 @@ pub const ORTHOGONAL: f64 = 1e-15;
 /// Stanford arm): [`branch::spherical_prismatic_third`]'s eight branches (two slides, two
 /// shoulders, two wrists), side by side in lanes. `q3` is a length, not wrapped. Needs `h1` not
 /// parallel to `h2`.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 #[allow(clippy::redundant_closure, reason = "a function passed by name is called through a shim LLVM leaves uninlined")]
 pub fn spherical_prismatic_third(arm: &Arm6, target: &Pose<f64>) -> IkSolutions<6, 8> {
     branch::solve_in_lanes(
         arm,
         target,
-        #[inline(always)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         |b, p| branch::spherical_prismatic_third(b, p),
     )
 }
@@ -66,13 +66,13 @@ pub fn spherical_prismatic_third(arm: &Arm6, target: &Pose<f64>) -> IkSolutions<
 /// IRB 120): [`branch::spherical_two_parallel`]'s eight branches (`q1` by subproblem 4, `q3` by
 /// subproblem 3, `q2` by subproblem 1, then the wrist), side by side in lanes. Needs `h1` not
 /// parallel to `h2`.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 #[allow(clippy::redundant_closure, reason = "a function passed by name is called through a shim LLVM leaves uninlined")]
 pub fn spherical_two_parallel(arm: &Arm6, target: &Pose<f64>) -> IkSolutions<6, 8> {
     branch::solve_in_lanes(
         arm,
         target,
-        #[inline(always)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         |b, p| branch::spherical_two_parallel(b, p),
     )
 }
@@ -80,13 +80,13 @@ pub fn spherical_two_parallel(arm: &Arm6, target: &Pose<f64>) -> IkSolutions<6, 
 /// Spherical wrist with axes 1 and 2 meeting (`p12 = 0`): [`branch::spherical_first_two_intersecting`]'s
 /// eight branches (`q3` by subproblem 3, `q1`, `q2` by subproblem 2, then the wrist), side by side
 /// in lanes. Needs `h1` not parallel to `h2`.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 #[allow(clippy::redundant_closure, reason = "a function passed by name is called through a shim LLVM leaves uninlined")]
 pub fn spherical_first_two_intersecting(arm: &Arm6, target: &Pose<f64>) -> IkSolutions<6, 8> {
     branch::solve_in_lanes(
         arm,
         target,
-        #[inline(always)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         |b, p| branch::spherical_first_two_intersecting(b, p),
     )
 }
@@ -94,13 +94,13 @@ pub fn spherical_first_two_intersecting(arm: &Arm6, target: &Pose<f64>) -> IkSol
 /// Spherical wrist with axes 2 and 3 meeting (`p23 = 0`): [`branch::spherical_last_two_intersecting`]'s
 /// eight branches (`q1` by subproblem 3, `q2`, `q3` by subproblem 2, then the wrist), side by side
 /// in lanes. Needs `h2` not parallel to `h3`.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 #[allow(clippy::redundant_closure, reason = "a function passed by name is called through a shim LLVM leaves uninlined")]
 pub fn spherical_last_two_intersecting(arm: &Arm6, target: &Pose<f64>) -> IkSolutions<6, 8> {
     branch::solve_in_lanes(
         arm,
         target,
-        #[inline(always)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         |b, p| branch::spherical_last_two_intersecting(b, p),
     )
 }
@@ -109,7 +109,7 @@ pub fn spherical_last_two_intersecting(arm: &Arm6, target: &Pose<f64>) -> IkSolu
 /// [`branch::three_parallel_two_intersecting`]'s eight branches (`q1` and `q5` by subproblem 4,
 /// then the planar elbow), side by side in lanes, with the pass at the wrist's singularity. Needs
 /// `h1` and `h5` not parallel to `h2`.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 #[allow(clippy::redundant_closure, reason = "a function passed by name is called through a shim LLVM leaves uninlined")]
 pub fn three_parallel_two_intersecting(arm: &Arm6, target: &Pose<f64>) -> IkSolutions<6, 8> {
     // As the compiled `tip_ik`: without the pass at the wrist's singularity first (it costs
@@ -120,7 +120,7 @@ pub fn three_parallel_two_intersecting(arm: &Arm6, target: &Pose<f64>) -> IkSolu
             arm,
             target,
             singular_pass,
-            #[inline(always)]
+            #[cfg_attr(not(debug_assertions), inline(always))]
             |b, p| branch::three_parallel_two_intersecting(b, p),
         );
         if singular_pass || !branch::needs_singular_pass(&branches) {
@@ -132,7 +132,7 @@ pub fn three_parallel_two_intersecting(arm: &Arm6, target: &Pose<f64>) -> IkSolu
 
 /// The problem of a family whose first step is a quartic, on numbers: its branch signs are
 /// given where each root's branches are taken.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn numbers_problem<'a>(arm: &'a Arm6, target: &Pose<f64>) -> branch::Problem<'a, f64> {
     branch::Problem {
         arm,
@@ -144,7 +144,7 @@ fn numbers_problem<'a>(arm: &'a Arm6, target: &Pose<f64>) -> branch::Problem<'a,
 }
 
 /// A branch computed on numbers as a solution.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn solution(branch: branch::Branch<f64>) -> IkSolution<6> {
     IkSolution::unmeasured(branch.q, branch.quality.exact == 1.0, branch.quality.singular == 1.0)
 }
@@ -154,7 +154,7 @@ fn solution(branch: branch::Branch<f64>) -> IkSolution<6> {
 /// both fixed, and each depends on `q1` and `q5` alone; at most four pairs), then the planar
 /// elbow of [`mod@branch`] for each pair, two branches each. Needs `h1` and `h5` not parallel
 /// to `h`.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn three_parallel(arm: &Arm6, target: &Pose<f64>) -> IkSolutions<6, 8> {
     let [h1, h, _, _, h5, h6] = arm.axes;
     let [_, p12, p23, p34, p45, p56, _] = arm.offsets;
@@ -198,7 +198,7 @@ pub fn three_parallel(arm: &Arm6, target: &Pose<f64>) -> IkSolutions<6, 8> {
 }
 
 /// Whether `v` lies within the angle whose sine is `limit` of the unit axis `k` (either way).
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn near_axis(k: V3, v: V3, limit: f64) -> bool {
     norm_squared(cross(k, v)) <= limit * limit * norm_squared(v)
 }
@@ -214,7 +214,7 @@ pub const NEAR_SINGULAR_SIXTH: f64 = 1e-6;
 /// Spherical wrist (axes 4, 5, 6 meet, `p45 = p56 = 0`) with no two of axes 1, 2, 3 parallel or
 /// meeting: `q1`, `q2`, `q3` by subproblem 5 (`R1^T W - p12 = R2 (p23 + R3 p34)` for the wrist
 /// centre `W`; at most four triples), then the wrist of [`mod@branch`] for each, two branches each.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn spherical(arm: &Arm6, target: &Pose<f64>) -> IkSolutions<6, 8> {
     let [h1, h2, h3, ..] = arm.axes;
     let [_, p12, p23, p34, ..] = arm.offsets;
@@ -262,7 +262,7 @@ pub struct FreeArm6 {
 impl FreeArm6 {
     /// The six-joint arm with the free joint at `angle`: everything after it turned about its
     /// axis.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     pub fn at(&self, angle: f64) -> Arm6 {
         let (s, c) = libm::sincos(angle);
         let k = self.free_axis;
@@ -298,7 +298,7 @@ impl Arm6 {
 }
 
 /// Six-joint solutions as seven-joint ones: `value` (the free joint's) inserted at `index`.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn insert_free<const M: usize>(six: &IkSolutions<6, M>, index: usize, value: f64) -> IkSolutions<7, M> {
     let mut out = IkSolutions::new();
     for s in six.iter() {
@@ -384,7 +384,7 @@ impl<const N: usize> PlanarArm<N> {
     }
 
     /// Both solutions (elbow one way and the other) for `target`.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     pub fn solve(&self, target: &Pose<f64>) -> IkSolutions<N, 2> {
         let h = self.axis;
         let mut revolute = [0usize; 3];

@@ -11,7 +11,7 @@ use super::real::IkReal;
 /// and multiplied by (a division takes several times a multiplication's latency). `L` (unit
 /// diagonal) is left below the diagonal, `D` on it, and `L D` above it.
 #[allow(clippy::needless_range_loop, reason = "a factorisation reads as the index arithmetic it is")]
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub(super) fn ldl_solve<T: IkReal, const N: usize>(a: &mut [[T; N]; N], b: &mut [T; N]) -> T {
     let (one, zero) = (T::from_f64(1.0), T::from_f64(0.0));
     let mut positive = one;

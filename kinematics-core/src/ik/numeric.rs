@@ -68,7 +68,7 @@ pub struct NumericSolution<const N: usize> {
 }
 
 /// The rotation vector (axis times angle) of the rotation `r`, accurate near 0 and near pi.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn rotation_vector(r: &[[f64; 3]; 3]) -> V3 {
     let vee = [r[2][1] - r[1][2], r[0][2] - r[2][0], r[1][0] - r[0][1]];
     let sine2 = square_root(dot(vee, vee)); // 2 sin(angle)
@@ -105,7 +105,7 @@ fn rotation_vector(r: &[[f64; 3]; 3]) -> V3 {
 
 /// The error twist from `reached` to `target`: position difference, then rotation vector of
 /// `R_target R_reached^T`, both in the base frame.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub(super) fn error_twist(reached: &Pose<f64>, target: &Pose<f64>) -> [f64; 6] {
     let p = sub(target.translation, reached.translation);
     let t = &target.rotation;
@@ -131,7 +131,7 @@ const DAMPING_TRIES: usize = 4;
 /// longer step is scaled down whole, keeping its direction.
 pub const MAX_JOINT_STEP: f64 = 1.0;
 
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn clamp<const N: usize>(q: &mut [f64; N], limits: &[JointLimits; N]) {
     for (value, l) in q.iter_mut().zip(limits) {
         // Infinite limits clamp nothing; the model keeps lower <= upper.
@@ -148,7 +148,7 @@ fn clamp<const N: usize>(q: &mut [f64; N], limits: &[JointLimits; N]) {
 /// would step past it held still (their rows and columns dropped), so the others still take the
 /// step the error asks of them rather than a clamped remnant; `None` if the system is singular.
 #[allow(clippy::needless_range_loop, reason = "rows and columns of one matrix, by index")]
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn bounded_step<const N: usize>(
     a: &[[f64; N]; N],
     g: &[f64; N],
@@ -198,7 +198,7 @@ struct Seeds(SplitMix);
 impl Seeds {
     /// `seed` with the joints marked in `moving` drawn anew within the limits (within one turn
     /// either side of zero where a joint has none); the others keep the seed's values.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn within<const N: usize>(&mut self, limits: &[JointLimits; N], seed: &[f64; N], moving: &[bool; N]) -> [f64; N] {
         let mut q = *seed;
         for ((value, l), &moves) in q.iter_mut().zip(limits).zip(moving) {
@@ -223,7 +223,7 @@ impl Seeds {
 // Always inlined: the generated `tip_ik_numeric_with` calls it inside `dispatch`, and only code
 // inlined there is compiled for the CPU's widest instruction set (called, it ran the baseline's:
 // the pose and Jacobian's `sin_cos` two lanes wide instead of four or eight).
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn levenberg_marquardt<const N: usize>(
     target: &Pose<f64>,
     seed: &[f64; N],
@@ -254,7 +254,7 @@ pub fn levenberg_marquardt<const N: usize>(
     // or AVX2 body (on an Intel Xeon, SSE code after AVX-512 code pays for the upper halves of
     // the registers the latter left dirty).
     let mut attempt = inlined(
-        #[inline(always)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         |start: usize| {
             starts += 1;
             let mut q = if start == 0 { first } else { seeds.within(limits, &first, &moving) };
@@ -316,7 +316,7 @@ pub fn levenberg_marquardt<const N: usize>(
 
 /// `closure` as it is: where a closure is an argument, it can be marked `#[inline(always)]`
 /// (an attribute on a closure bound by `let` is not stable Rust).
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn inlined<F: FnMut(usize) -> R, R>(closure: F) -> F {
     closure
 }
@@ -331,7 +331,7 @@ struct Step<const N: usize> {
 }
 
 /// The normal equations of the least-squares step: `J^T J` and `J^T e`.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub(super) fn normal_equations<T: Real, const N: usize>(
     jacobian: &[[T; N]; 6],
     error: &[T; 6],
@@ -359,7 +359,7 @@ pub(super) fn normal_equations<T: Real, const N: usize>(
 /// rejected step raises `lambda` and tries again, and after [`DAMPING_TRIES`] there is none (`None`: the
 /// start is done). `#[inline(always)]`, like the rest of the iteration, so that it runs inside the
 /// caller's dispatched body.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 #[allow(clippy::too_many_arguments)] // the iteration's state, passed as it is
 fn damped_step<const N: usize>(
     a: &[[f64; N]; N],
@@ -403,7 +403,7 @@ fn damped_step<const N: usize>(
     None
 }
 
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn dot6(e: &[f64; 6]) -> f64 {
     e.iter().map(|x| x * x).sum()
 }

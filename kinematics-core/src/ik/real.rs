@@ -44,15 +44,15 @@ pub trait IkReal: Real {
 }
 
 impl IkReal for f64 {
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn sqrt(self) -> Self {
         square_root(self)
     }
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn atan2(self, x: Self) -> Self {
         trig::atan2(self, x)
     }
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn if_positive(self, then: Self, otherwise: Self) -> Self {
         if self > 0.0 { then } else { otherwise }
     }
@@ -61,7 +61,7 @@ impl IkReal for f64 {
 macro_rules! ik_lanes {
     ($name:ident, $lanes:literal) => {
         impl IkReal for $name {
-            #[inline(always)]
+            #[cfg_attr(not(debug_assertions), inline(always))]
             fn sqrt(self) -> Self {
                 let mut out = self.0;
                 for x in &mut out {
@@ -69,11 +69,11 @@ macro_rules! ik_lanes {
                 }
                 $name(out)
             }
-            #[inline(always)]
+            #[cfg_attr(not(debug_assertions), inline(always))]
             fn atan2(self, x: Self) -> Self {
                 $name(trig::atan2_f64_lanes(self.0, x.0))
             }
-            #[inline(always)]
+            #[cfg_attr(not(debug_assertions), inline(always))]
             fn if_positive(self, then: Self, otherwise: Self) -> Self {
                 let mut out = otherwise.0;
                 for i in 0..$lanes {
@@ -111,7 +111,7 @@ impl<L: crate::lanes::Lanes<Scalar = f64>, const N: usize> IkBranch<L, N> {
     /// Whether some lane is singular and not exact: a branch at a singularity whose equations
     /// missed, which a body's pass at that singularity may still solve (the generated `tip_ik`
     /// runs the full body again then).
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     pub fn misses_at_a_singularity(&self) -> bool {
         let mut missed = false;
         for lane in 0..L::LANES {
@@ -156,7 +156,7 @@ pub const fn branch_signs_4(half: usize) -> [F64x4; 3] {
 }
 
 /// A target pose in every lane.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn splat_pose<L: crate::lanes::Lanes<Scalar = f64>>(pose: &crate::pose::Pose<f64>) -> crate::pose::Pose<L> {
     let r = &pose.rotation;
     let t = &pose.translation;

@@ -56,7 +56,7 @@ impl<const N: usize, const M: usize> IkSolutions<N, M> {
     /// step kept only when it brings its solution closer; the errors are those of the pose at the
     /// refined `q`. Least-squares solutions (`exact` false) are left as solved, and so are all
     /// when none is that far (one comparison each).
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     #[must_use]
     pub fn refined<L: Lanes<Scalar = f64> + IkReal>(
         mut self,
@@ -86,7 +86,7 @@ impl<const N: usize, const M: usize> IkSolutions<N, M> {
     /// Refines the pending solutions of `start..end` (at most `L::LANES`), lane `k` solution
     /// `start + k`.
     #[allow(clippy::needless_range_loop, reason = "joints and lanes, by index")]
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn refine_lanes<L: Lanes<Scalar = f64> + IkReal>(
         &mut self,
         start: usize,
@@ -168,7 +168,7 @@ impl<const N: usize, const M: usize> IkSolutions<N, M> {
 
 /// The larger of the position error and the rotation error times the reach, over the reach
 /// (NaN if either is NaN, so that it never compares as far or as close).
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn distance(reach: f64, position: f64, rotation: f64) -> f64 {
     let larger = if position > rotation * reach { position } else { rotation * reach };
     if position.is_nan() || rotation.is_nan() { f64::NAN } else { larger / reach }
@@ -178,7 +178,7 @@ fn distance(reach: f64, position: f64, rotation: f64) -> f64 {
 /// `vee(R_target R_reached^T) / 2`, which is the rotation vector `angle axis` to within
 /// `angle^2 / 6` of it (a refinement's angles are under `1e-4`; the numeric solver's exact
 /// rotation vector needs an `atan2` and a branch at a half turn).
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn small_angle_twist<L: IkReal>(reached: &Pose<L>, target: &Pose<L>) -> [L; 6] {
     let (t, r) = (&target.rotation, &reached.rotation);
     // Entry (i, j) of R_target R_reached^T: row i of the target against row j of the reached.
@@ -196,7 +196,7 @@ fn small_angle_twist<L: IkReal>(reached: &Pose<L>, target: &Pose<L>) -> [L; 6] {
 
 /// `x` moved by a whole turn into `(-pi, pi]` if a correction took it just past either end,
 /// lane by lane.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn within_half_turn<L: IkReal>(x: L) -> L {
     let (pi, tau) = (L::from_f64(core::f64::consts::PI), L::from_f64(core::f64::consts::TAU));
     let below = (x - pi).if_positive(x - tau, x);

@@ -140,7 +140,7 @@ impl<const N: usize, const M: usize> IkSolutions<N, M> {
     /// Adds a solution, or returns [`Full`] (and adds nothing) when there are `M` already (the
     /// solvers never produce more than their family's maximum, which is the capacity they
     /// declare).
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     pub fn push(&mut self, solution: IkSolution<N>) -> Result<(), Full> {
         self.solutions.push(solution)
     }
@@ -177,7 +177,7 @@ impl<const N: usize, const M: usize> IkSolutions<N, M> {
 
     /// Measures every solution's pose errors against `target` with `forward` (the robot's
     /// generated forward kinematics). A pose with a non-finite entry counts as infinitely far.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     pub fn measure(&mut self, target: &Pose<f64>, forward: impl Fn(&[f64; N]) -> Pose<f64>) {
         for solution in self.solutions.as_mut_slice() {
             let reached = forward(&solution.q);
@@ -188,7 +188,7 @@ impl<const N: usize, const M: usize> IkSolutions<N, M> {
     }
 
     /// All `M` solutions, in order.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     pub(crate) fn from_array(solutions: [IkSolution<N>; M]) -> Self {
         IkSolutions { solutions: BoundedList::from_first(solutions, M) }
     }
@@ -197,7 +197,7 @@ impl<const N: usize, const M: usize> IkSolutions<N, M> {
     /// values and flags, and the pose `reached` there (the robot's forward kinematics of them, in
     /// the same lanes), its errors measured against `target`. The first `M` lanes are taken, in
     /// lane order.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     pub fn from_lanes<L: Lanes<Scalar = f64> + IkReal>(
         branches: &super::real::IkBranch<L, N>,
         reached: &Pose<L>,
@@ -225,7 +225,7 @@ impl<const N: usize, const M: usize> IkSolutions<N, M> {
     /// The solution nearest `seed` (Euclidean distance in joint space, each angle of a joint
     /// marked in `revolute` first moved by a multiple of 2 pi to the seed's side), preferring
     /// exact solutions to least-squares ones. `None` only when there are no solutions.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     pub fn nearest(&self, seed: &[f64; N], revolute: &[bool; N]) -> Option<IkSolution<N>> {
         // The distances first, without a branch on the angles (their turns are selects), then the
         // choice: a branch per solution, not per joint.
@@ -296,7 +296,7 @@ pub(super) struct LaneErrors<L> {
 
 impl<L: Lanes<Scalar = f64> + IkReal> LaneErrors<L> {
     /// The errors of `reached`'s lanes against `target`.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     pub(super) fn of(reached: &Pose<L>, target: &Pose<f64>) -> Self {
         let (distance2, frobenius2) = squared_differences(reached, &super::real::splat_pose(target));
         let (position, sine) = (distance2.sqrt(), (frobenius2 * L::from_f64(0.125)).sqrt());
@@ -305,7 +305,7 @@ impl<L: Lanes<Scalar = f64> + IkReal> LaneErrors<L> {
     }
 
     /// Lane `lane`'s position and rotation errors, as [`pose_errors`] gives them.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     pub(super) fn lane(&self, lane: usize) -> (f64, f64) {
         let (position, frobenius2, sine) = (self.position.lane(lane), self.frobenius2.lane(lane), self.sine.lane(lane));
         if sine < SERIES_BOUND && position.is_finite() && frobenius2.is_finite() {
@@ -336,7 +336,7 @@ pub fn pose_errors(a: &Pose<f64>, b: &Pose<f64>) -> (f64, f64) {
 }
 
 /// [`pose_errors`], always inlined (into the numeric solver's dispatched body).
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub(crate) fn pose_errors_inline(a: &Pose<f64>, b: &Pose<f64>) -> (f64, f64) {
     let (distance2, frobenius2) = squared_differences(a, b);
     errors_of_squares(IkReal::sqrt(distance2), frobenius2, IkReal::sqrt(frobenius2 / 8.0))
@@ -344,7 +344,7 @@ pub(crate) fn pose_errors_inline(a: &Pose<f64>, b: &Pose<f64>) -> (f64, f64) {
 
 /// The squared distance between two poses' translations and the squared Frobenius norm of the
 /// difference of their rotations, for any scalar (lanes: every lane's at once).
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn squared_differences<T: IkReal>(a: &Pose<T>, b: &Pose<T>) -> (T, T) {
     let square = |x: T| x * x;
     let [ax, ay, az] = a.translation;
@@ -362,7 +362,7 @@ fn squared_differences<T: IkReal>(a: &Pose<T>, b: &Pose<T>) -> (T, T) {
 const SERIES_BOUND: f64 = 1e-4;
 
 /// [`pose_errors`] from the distance, the squared Frobenius norm and its sine `sqrt(f^2 / 8)`.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn errors_of_squares(position: f64, frobenius2: f64, sine: f64) -> (f64, f64) {
     // For the small angles exact solutions have, the series 2 asin(s) = 2 s (1 + s^2 / 6 + ...)
     // is exact to rounding below s = 1e-4 (the next term is 3 s^4 / 40 < 1e-17 of it) and

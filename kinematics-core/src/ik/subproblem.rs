@@ -61,7 +61,7 @@ impl Quality {
     pub const EXACT: Quality = Quality { exact: true, singular: false };
 
     /// Both qualities together: exact if both are, singular if either is.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     #[must_use]
     pub fn and(self, other: Quality) -> Quality {
         Quality { exact: self.exact && other.exact, singular: self.singular || other.singular }
@@ -87,35 +87,35 @@ impl Turn {
 
     /// The angle of the vector `(x, y)`: `atan2(y, x)`, its cosine and sine the vector
     /// normalised (no turn for the zero vector).
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     pub fn of(y: f64, x: f64) -> Turn {
         let r = crate::real::square_root(x * x + y * y);
         if r > 0.0 { Turn { angle: crate::trig::atan2(y, x), cos: x / r, sin: y / r } } else { Turn::ZERO }
     }
 
     /// The opposite turn.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     #[must_use]
     pub fn back(self) -> Turn {
         Turn { angle: -self.angle, cos: self.cos, sin: -self.sin }
     }
 
     /// `v` rotated by this turn about the unit axis `k`.
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     pub fn rotate(self, k: V3, v: V3) -> V3 {
         super::vector::rotate_cs(k, self.cos, self.sin, v)
     }
 }
 
 impl From<branch::Turn<f64>> for Turn {
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn from(turn: branch::Turn<f64>) -> Turn {
         Turn { angle: turn.angle, cos: turn.cos, sin: turn.sin }
     }
 }
 
 impl From<Turn> for branch::Turn<f64> {
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn from(turn: Turn) -> branch::Turn<f64> {
         branch::Turn { angle: turn.angle, cos: turn.cos, sin: turn.sin }
     }
@@ -123,14 +123,14 @@ impl From<Turn> for branch::Turn<f64> {
 
 /// A branch's flags, `1` or `0` each, as a quality.
 impl From<branch::Flags<f64>> for Quality {
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn from(flags: branch::Flags<f64>) -> Quality {
         Quality { exact: flags.exact == 1.0, singular: flags.singular == 1.0 }
     }
 }
 
 impl From<Quality> for branch::Flags<f64> {
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn from(quality: Quality) -> branch::Flags<f64> {
         let flag = |x: bool| if x { 1.0 } else { 0.0 };
         branch::Flags { exact: flag(quality.exact), singular: flag(quality.singular) }
@@ -140,7 +140,7 @@ impl From<Quality> for branch::Flags<f64> {
 /// Subproblem 1: the angle `t` with `rot(k, t) p1 = p2` about the unit axis `k`, or the
 /// least-squares best when the two vectors differ in their component along `k` or in their
 /// distance from it. When `p1` lies on the axis every angle serves: `0`, flagged singular.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn rotation_onto(k: V3, p1: V3, p2: V3) -> (Turn, Quality) {
     let (turn, flags) = Numbers::<f64>::new().rotation_onto(k, p1, p2);
     (turn.into(), flags.into())
@@ -150,7 +150,7 @@ pub fn rotation_onto(k: V3, p1: V3, p2: V3) -> (Turn, Quality) {
 /// and the one with the minus second, wrapped into `(-pi, pi]`. Out of reach
 /// (`|c| > hypot(a, b)`), both are the least-squares best (`t` at or opposite `atan2(b, a)`);
 /// when `a = b = 0`, both are `0`, exact (and singular) if `c = 0` too.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn cos_sin_equation(a: f64, b: f64, c: f64) -> ([Turn; 2], Quality) {
     let numbers = &mut Numbers::<f64>::new();
     let (plus, quality) = numbers.cos_sin_equation(a, b, c, 1.0);
@@ -160,7 +160,7 @@ pub fn cos_sin_equation(a: f64, b: f64, c: f64) -> ([Turn; 2], Quality) {
 
 /// Subproblem 3: the angles `t` with `|rot(k, t) p1 - p2| = d`, given `d^2` (the callers know
 /// the square, so no root is taken).
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn rotation_to_distance(k: V3, p1: V3, p2: V3, d_squared: f64) -> ([Turn; 2], Quality) {
     let numbers = &mut Numbers::<f64>::new();
     let (plus, quality) = numbers.rotation_to_distance(k, p1, p2, d_squared, 1.0);
@@ -171,7 +171,7 @@ pub fn rotation_to_distance(k: V3, p1: V3, p2: V3, d_squared: f64) -> ([Turn; 2]
 /// The squared distances subproblem 3 reaches exactly, `[lo, hi]`: `|rot(k, t) p1 - p2|^2` over
 /// every `t` (the same equation [`rotation_to_distance`] solves: `d^2` within them is exact, to its
 /// [`REACH_SLACK`]).
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn distance_range(k: V3, p1: V3, p2: V3) -> (f64, f64) {
     let along = dot(k, p1) * dot(k, p2);
     let a = dot(p1, p2) - along;
@@ -183,7 +183,7 @@ pub fn distance_range(k: V3, p1: V3, p2: V3) -> (f64, f64) {
 }
 
 /// Subproblem 4: the angles `t` with `h . rot(k, t) p = d`.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn rotation_to_height(h: V3, k: V3, p: V3, d: f64) -> ([Turn; 2], Quality) {
     let numbers = &mut Numbers::<f64>::new();
     let (plus, quality) = numbers.rotation_to_height(h, k, p, d, 1.0);
@@ -198,7 +198,7 @@ pub fn rotation_to_height(h: V3, k: V3, p: V3, d: f64) -> ([Turn; 2], Quality) {
 /// taking the sine from the cross product keeps its digits where the height is near `+-1` (near
 /// the wrist's singularity), which `sqrt(1 - height^2)` would lose (half of them at a distance
 /// of 1e-8 rad). Always exact: `v` is reached by construction.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn rotation_to_height_on_great_circle(h: V3, k: V3, p: V3, v: V3) -> [Turn; 2] {
     let numbers = &mut Numbers::<f64>::new();
     let plus = numbers.rotation_to_height_on_great_circle(h, k, p, v, 1.0);
@@ -210,7 +210,7 @@ pub fn rotation_to_height_on_great_circle(h: V3, k: V3, p: V3, v: V3) -> [Turn; 
 /// axes that are not parallel. The vectors are taken as directions (their lengths are equal
 /// when the target is reachable). Two pairs: the rotated vector `x` is where the two cones about
 /// `k1` and `k2` cross; when they do not, both pairs are the least-squares best.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn two_rotations(k1: V3, p1: V3, k2: V3, p2: V3) -> ([(Turn, Turn); 2], Quality) {
     let numbers = &mut Numbers::<f64>::new();
     let (t1, t2, first) = numbers.two_rotations(k1, p1, k2, p2, 1.0);

@@ -21,7 +21,7 @@ pub trait IkTarget {
 }
 
 impl IkTarget for Pose<f64> {
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn target_pose(&self) -> Pose<f64> {
         *self
     }

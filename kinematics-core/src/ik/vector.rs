@@ -7,49 +7,49 @@ pub type V3 = [f64; 3];
 pub type M3 = [[f64; 3]; 3];
 
 /// `a . b`.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn dot(a: V3, b: V3) -> f64 {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
 
 /// `a x b`.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn cross(a: V3, b: V3) -> V3 {
     [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
 }
 
 /// `a + b`.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn add(a: V3, b: V3) -> V3 {
     [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
 }
 
 /// `a - b`.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn sub(a: V3, b: V3) -> V3 {
     [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
 }
 
 /// `s a`.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn scale(a: V3, s: f64) -> V3 {
     [a[0] * s, a[1] * s, a[2] * s]
 }
 
 /// `|a|^2`.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn norm_squared(a: V3) -> f64 {
     dot(a, a)
 }
 
 /// `m * v`.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn mul(m: &M3, v: V3) -> V3 {
     [dot(m[0], v), dot(m[1], v), dot(m[2], v)]
 }
 
 /// `m^T * v`.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn mul_transposed(m: &M3, v: V3) -> V3 {
     [
         m[0][0] * v[0] + m[1][0] * v[1] + m[2][0] * v[2],
@@ -59,7 +59,7 @@ pub fn mul_transposed(m: &M3, v: V3) -> V3 {
 }
 
 /// `a * b^T`.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn mul_by_transpose(a: &M3, b: &M3) -> M3 {
     let row = |r: V3| [dot(r, b[0]), dot(r, b[1]), dot(r, b[2])];
     [row(a[0]), row(a[1]), row(a[2])]
@@ -67,7 +67,7 @@ pub fn mul_by_transpose(a: &M3, b: &M3) -> M3 {
 
 /// `v` rotated by the angle whose cosine and sine are `c`, `s` about the unit axis `k`
 /// (Rodrigues: `c v + s (k x v) + (1 - c)(k . v) k`).
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn rotate_cs(k: V3, c: f64, s: f64, v: V3) -> V3 {
     let kv = dot(k, v) * (1.0 - c);
     let kxv = cross(k, v);
@@ -75,7 +75,7 @@ pub fn rotate_cs(k: V3, c: f64, s: f64, v: V3) -> V3 {
 }
 
 /// `v` rotated by `angle` about the unit axis `k`.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn rotate(k: V3, angle: f64, v: V3) -> V3 {
     let (s, c) = libm::sincos(angle);
     rotate_cs(k, c, s, v)
@@ -85,7 +85,7 @@ pub fn rotate(k: V3, angle: f64, v: V3) -> V3 {
 /// most a few angles in `[-pi, pi]`, which two conditional turns bring back; anything larger
 /// takes the general path (`round` in software costs more than the rest: baseline x86-64 has no
 /// rounding instruction).
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub(crate) fn wrap(angle: f64) -> f64 {
     use core::f64::consts::{PI, TAU};
     if angle.abs() <= 3.0 * PI {
@@ -112,7 +112,7 @@ pub(crate) fn wrap(angle: f64) -> f64 {
 /// where it falls on one), with no branch. The turns are rounded by adding and subtracting
 /// `1.5 * 2^52`, exact for fewer than 2^51 turns; beyond that (angles past 1e16 rad) the
 /// subtraction of a float's worth of turns is already all the precision the angle has.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub(crate) fn nearest_turn(angle: f64) -> f64 {
     use core::f64::consts::TAU;
     const ROUND: f64 = 6_755_399_441_055_744.0; // 1.5 * 2^52

@@ -22,7 +22,7 @@
 use super::atan_coefficients::{ATAN_F64, FRAC_PI_2_LO, FRAC_PI_4_LO, PI_LO, TAN_PI_8};
 
 /// `atan2(y, x)`: the angle of `(x, y)` in `[-pi, pi]`.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn atan2(y: f64, x: f64) -> f64 {
     if !(x.is_finite() && y.is_finite()) {
         return atan2_slow(y, x);
@@ -33,7 +33,7 @@ pub fn atan2(y: f64, x: f64) -> f64 {
 /// `atan2` of `N` independent pairs at once, bit for bit what [`atan2`] gives for each: every
 /// lane through the branch-free fast path (so the loop vectorises), then, in one rarely taken
 /// branch, the lanes with a non-finite argument again through libm.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn atan2_f64_lanes<const N: usize>(y: [f64; N], x: [f64; N]) -> [f64; N] {
     let mut out = [0.0; N];
     let mut all_finite = true;
@@ -60,7 +60,7 @@ fn atan2_slow(y: f64, x: f64) -> f64 {
 }
 
 /// The fast path for finite arguments: no branch, the octant and quadrant chosen by selects.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn atan2_fast(y: f64, x: f64) -> f64 {
     let (ax, ay) = (x.abs(), y.abs());
     let below = ay <= ax * TAN_PI_8;

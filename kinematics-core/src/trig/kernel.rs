@@ -29,7 +29,7 @@ const ROUNDING_MAGIC: f64 = 6_755_399_441_055_744.0;
 
 /// `c[0] + z * (c[1] + z * (...))`, Horner, no fused multiply-add (bit-identical on any target).
 /// Starts from the last coefficient: a start at 0.0 would cost a multiply LLVM may not drop.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn horner<const D: usize>(coefficients: &[f64; D], z: f64) -> f64 {
     let mut acc = coefficients[D - 1];
     let mut i = D - 1;
@@ -41,7 +41,7 @@ fn horner<const D: usize>(coefficients: &[f64; D], z: f64) -> f64 {
 }
 
 /// The quadrant count k (as an f64 integer) and its bits (k mod 4 in the low two) for `x`.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn quadrant(x: f64) -> (f64, u64) {
     let shifted = x * FRAC_2_PI + ROUNDING_MAGIC;
     (shifted - ROUNDING_MAGIC, shifted.to_bits())
@@ -50,7 +50,7 @@ fn quadrant(x: f64) -> (f64, u64) {
 /// `x - k * pi/2` as an unevaluated sum `hi + lo` (|lo| <= half an ulp of hi, up to roundings
 /// of order 2^-100): the f64 kernels add `lo`'s first-order effect, which keeps them within one
 /// ulp where a single f64 with three roundings reached two (measured at |x| ~ 9e3).
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn reduce_double(x: f64, k: f64) -> (f64, f64) {
     let t = x - k * PIO2_1; // exact, as above
     let w = k * PIO2_2; // exact
@@ -70,7 +70,7 @@ fn reduce_double(x: f64, k: f64) -> (f64, f64) {
 /// `(sin x, cos x)` from the kernels' `(sin r, cos r)`: sin(r + k pi/2) is sin r, cos r, -sin r,
 /// -cos r for k mod 4 = 0..3, and cos(r + k pi/2) is cos r, -sin r, -cos r, sin r. Swaps and sign
 /// flips are bit masks, so lanes never branch.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn place_in_quadrant(quadrant: u64, sin_r: f64, cos_r: f64) -> (f64, f64) {
     let swap = (quadrant & 1).wrapping_neg();
     let (s, c) = (sin_r.to_bits(), cos_r.to_bits());
@@ -83,14 +83,14 @@ fn place_in_quadrant(quadrant: u64, sin_r: f64, cos_r: f64) -> (f64, f64) {
 
 /// `magnitude` with the sign of `sign`. sin(r) has the sign of r on [-pi/4, pi/4], and this keeps
 /// sin(-0) = -0, which `r + (r * z) * S` alone would turn into +0 (the correction is +0 there).
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn with_sign_of(magnitude: f64, sign: f64) -> f64 {
     const SIGN: u64 = 1 << 63;
     f64::from_bits((magnitude.to_bits() & !SIGN) | (sign.to_bits() & SIGN))
 }
 
 /// Branch-free f64 sin and cos, right for |x| <= [`FAST_BOUND`]; NaN or garbage beyond it.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn sin_cos_fast_f64(x: f64) -> (f64, f64) {
     let (k, quadrant) = quadrant(x);
     let (r, r_lo) = reduce_double(x, k);
@@ -112,7 +112,7 @@ pub fn sin_cos_fast_f64(x: f64) -> (f64, f64) {
 /// exact, and the rounding error of their difference is recovered (Fast2Sum) and carried with the
 /// third part's product into `lo`. Every part is positive, so -0 stays -0: each step subtracts a
 /// +0 from it, and the last sum is written as a difference for the same reason.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn reduce_f32(x: f32, k: f32) -> (f32, f32) {
     let t = x - k * PIO2_F32_1;
     let w = k * PIO2_F32_2;
@@ -124,7 +124,7 @@ fn reduce_f32(x: f32, k: f32) -> (f32, f32) {
 }
 
 /// [`place_in_quadrant`] for f32.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn place_in_quadrant_f32(quadrant: u32, sin_r: f32, cos_r: f32) -> (f32, f32) {
     let swap = (quadrant & 1).wrapping_neg();
     let (s, c) = (sin_r.to_bits(), cos_r.to_bits());
@@ -136,7 +136,7 @@ fn place_in_quadrant_f32(quadrant: u32, sin_r: f32, cos_r: f32) -> (f32, f32) {
 }
 
 /// `c[0] + z * (c[1] + z * c[2])` in f32 (the f32 kernels' three coefficients).
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn horner_f32(coefficients: &[f32; 3], z: f32) -> f32 {
     (coefficients[2] * z + coefficients[1]) * z + coefficients[0]
 }
@@ -146,7 +146,7 @@ fn horner_f32(coefficients: &[f32; 3], z: f32) -> f32 {
 /// [`sin_cos_fast_f64`]: the reduction carried as `hi + lo`, the kernels with `lo`'s first-order
 /// effect, and `1 - z/2`'s rounding error added back. Every f32 in the range is within 0.8 ulp of
 /// the true values (checked on each of them: `trig-accuracy --exhaustive`).
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn sin_cos_fast_f32(x: f32) -> (f32, f32) {
     let shifted = x * FRAC_2_PI_F32 + ROUNDING_MAGIC_F32;
     let k = shifted - ROUNDING_MAGIC_F32;
@@ -161,20 +161,20 @@ pub fn sin_cos_fast_f32(x: f32) -> (f32, f32) {
 }
 
 /// [`with_sign_of`] for f32.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn with_sign_of_f32(magnitude: f32, sign: f32) -> f32 {
     const SIGN: u32 = 1 << 31;
     f32::from_bits((magnitude.to_bits() & !SIGN) | (sign.to_bits() & SIGN))
 }
 
 /// Whether the f64 fast path is right for `x`: false beyond the bound, for infinities and for NaN.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn in_fast_range(x: f64) -> bool {
     x.abs() <= FAST_BOUND
 }
 
 /// Whether the f32 fast path is right for `x`: false beyond its bound, for infinities and for NaN.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn in_fast_range_f32(x: f32) -> bool {
     x.abs() <= FAST_BOUND_F32
 }
@@ -209,22 +209,22 @@ impl Kernel for f64 {
     const ZERO: Self = 0.0;
     const BOUND_KEY: u64 = FAST_BOUND.to_bits();
 
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn magnitude_key(self) -> u64 {
         self.to_bits() & !(1 << 63)
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn sin_cos_fast(self) -> (Self, Self) {
         sin_cos_fast_f64(self)
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn in_fast_range(self) -> bool {
         in_fast_range(self)
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn sin_cos_slow(self) -> (Self, Self) {
         sin_cos_slow(self)
     }
@@ -234,22 +234,22 @@ impl Kernel for f32 {
     const ZERO: Self = 0.0;
     const BOUND_KEY: u64 = FAST_BOUND_F32.to_bits() as u64;
 
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn magnitude_key(self) -> u64 {
         u64::from(self.to_bits() & !(1 << 31))
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn sin_cos_fast(self) -> (Self, Self) {
         sin_cos_fast_f32(self)
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn in_fast_range(self) -> bool {
         in_fast_range_f32(self)
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
     fn sin_cos_slow(self) -> (Self, Self) {
         let (s, c) = sin_cos_slow(f64::from(self));
         // One rounding of libm's f64 result (itself within 1 ulp of f64): the f32 result is

@@ -77,14 +77,14 @@ use kernel::Kernel;
 pub use kernel::{FAST_BOUND, FAST_BOUND_F32};
 
 /// `(sin x, cos x)` for `f64`; see the module doc for the accuracy contract.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn sin_cos_f64(x: f64) -> (f64, f64) {
     let ([s], [c]) = sin_cos_f64_lanes([x]);
     (s, c)
 }
 
 /// `(sin x, cos x)` for `f32`; see the module doc for the accuracy contract.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn sin_cos_f32(x: f32) -> (f32, f32) {
     let ([s], [c]) = sin_cos_f32_lanes([x]);
     (s, c)
@@ -96,7 +96,7 @@ pub fn sin_cos_f32(x: f32) -> (f32, f32) {
 /// arm's angles, was left scalar by LLVM: measured as slow as std's `sin_cos`). Then, in one
 /// rarely taken branch, values beyond [`FAST_BOUND`] or not finite are computed again on the slow
 /// path.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn sin_cos_f64_lanes<const N: usize>(x: [f64; N]) -> ([f64; N], [f64; N]) {
     sin_cos_lanes::<f64, N, F64_CHUNK>(x)
 }
@@ -112,7 +112,7 @@ pub const F32_CHUNK: usize = 8;
 /// Sines and cosines of `N` independent `f32` values at once, bit for bit what [`sin_cos_f32`]
 /// gives for each; the fast path [`F32_CHUNK`] values at a time (the last chunk padded with
 /// zeros), the slow path only for values that need it.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn sin_cos_f32_lanes<const N: usize>(x: [f32; N]) -> ([f32; N], [f32; N]) {
     sin_cos_lanes::<f32, N, F32_CHUNK>(x)
 }
@@ -128,7 +128,7 @@ pub fn sin_cos_f32_lanes<const N: usize>(x: [f32; N]) -> ([f32; N], [f32; N]) {
 /// quadruped's link poses 80 against 51), and the Panda's seven `F32x16` sines and cosines 1.1
 /// times (the sphere centres kept in lanes about 1.1 times); on `F64x4` and `F32x8` it was slower
 /// (up to 1.3 and 1.1 times), so they keep the chunked routine.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub(crate) fn sin_cos_packed<K: Kernel, const N: usize>(x: [K; N]) -> ([K; N], [K; N]) {
     let ([s], [c]) = sin_cos_packed_many([x]);
     (s, c)
@@ -138,7 +138,7 @@ pub(crate) fn sin_cos_packed<K: Kernel, const N: usize>(x: [K; N]) -> ([K; N], [
 /// and the fast range tested once for all of them by the largest magnitude's bits (an integer
 /// maximum, lane by lane, which vectorises; a NaN's bits are above every number's), so one
 /// branch decides the slow path where a test per value reduced across the lanes each time.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub(crate) fn sin_cos_packed_many<K: Kernel, const N: usize, const M: usize>(
     x: [[K; N]; M],
 ) -> ([[K; N]; M], [[K; N]; M]) {
@@ -161,7 +161,7 @@ pub(crate) fn sin_cos_packed_many<K: Kernel, const N: usize, const M: usize>(
 /// last chunk padded with zeros, then, in one rarely taken branch, the values beyond its range
 /// again on the slow path. `CHUNK` is a parameter rather than a constant of `K` because an
 /// array's length cannot be a generic type's constant on stable Rust.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn sin_cos_lanes<K: Kernel, const N: usize, const CHUNK: usize>(x: [K; N]) -> ([K; N], [K; N]) {
     let mut s = [K::ZERO; N];
     let mut c = [K::ZERO; N];
