@@ -12,7 +12,7 @@
 //! copied out of it again); in an optimised build the closure is always inlined, and the
 //! statements run as they were written, in the same order, on the same values.
 
-use std::collections::{BTreeMap, BTreeSet};
+use std::collections::BTreeMap;
 
 use proc_macro2::{Delimiter, Group, Ident, Literal, TokenStream, TokenTree};
 use quote::{format_ident, quote};
@@ -24,20 +24,23 @@ pub(super) fn chunked(body: TokenStream, private: &TokenStream) -> TokenStream {
     if !statements.iter().any(|s| is_mark(s)) {
         return statements.into_iter().flatten().chain(value).collect();
     }
-    // The names read after each statement: what a stretch ending there returns of its own.
-    let mut read_after = vec![BTreeSet::new(); statements.len()];
-    let mut read = BTreeSet::new();
-    collect_idents(&value, &mut read);
-    for (k, statement) in statements.iter().enumerate().rev() {
-        read_after[k] = read.clone();
-        collect_idents(statement, &mut read);
+    // The last statement reading each name (the value counting as one past the last statement):
+    // a stretch ending at statement `k` returns the names it binds that are read after `k`.
+    let mut last_read: BTreeMap<String, usize> = BTreeMap::new();
+    for (k, statement) in statements.iter().enumerate() {
+        for name in idents(statement) {
+            last_read.insert(name, k);
+        }
+    }
+    for name in idents(&value) {
+        last_read.insert(name, statements.len());
     }
     let mut out = TokenStream::new();
     // Each name a chunk returned, and where it is now: `chunk_3.4`.
     let mut held: BTreeMap<String, TokenStream> = BTreeMap::new();
     let mut stretch: Vec<Vec<TokenTree>> = Vec::new();
     let mut chunks = 0;
-    for (statement, read_after) in statements.into_iter().zip(&read_after) {
+    for (k, statement) in statements.into_iter().enumerate() {
         let statement = reading_held(statement, &held);
         for name in bound_names(&statement) {
             held.remove(&name.to_string());
@@ -47,7 +50,8 @@ pub(super) fn chunked(body: TokenStream, private: &TokenStream) -> TokenStream {
         if mark {
             let tuple = format_ident!("chunk_{chunks}");
             chunks += 1;
-            let names = chunk(&stretch, &tuple, read_after, private, &mut out);
+            let names =
+                chunk(&stretch, &tuple, |name| last_read.get(name).is_some_and(|&last| last > k), private, &mut out);
             for (i, name) in names.iter().enumerate() {
                 let i = Literal::usize_unsuffixed(i);
                 held.insert(name.to_string(), quote!(#tuple.#i));
@@ -65,12 +69,12 @@ pub(super) fn chunked(body: TokenStream, private: &TokenStream) -> TokenStream {
 fn chunk(
     stretch: &[Vec<TokenTree>],
     tuple: &Ident,
-    read_after: &BTreeSet<String>,
+    read_after: impl Fn(&str) -> bool,
     private: &TokenStream,
     out: &mut TokenStream,
 ) -> Vec<TokenTree> {
     let names: Vec<TokenTree> =
-        stretch.iter().flat_map(|s| bound_names(s)).filter(|name| read_after.contains(&name.to_string())).collect();
+        stretch.iter().flat_map(|s| bound_names(s)).filter(|name| read_after(&name.to_string())).collect();
     let statements: TokenStream = stretch.iter().flatten().cloned().collect();
     let inline = quote!(#[cfg_attr(not(debug_assertions), inline(always))]);
     out.extend(if names.is_empty() {
@@ -154,20 +158,20 @@ fn bound_names(statement: &[TokenTree]) -> Vec<TokenTree> {
     names
 }
 
-/// Every identifier in `tokens`, groups included.
-fn collect_idents(tokens: &[TokenTree], out: &mut BTreeSet<String>) {
+/// Every identifier in `tokens`, groups included, in order (repeated as often as it appears).
+fn idents(tokens: &[TokenTree]) -> Vec<String> {
+    let mut out = Vec::new();
     for token in tokens {
         match token {
-            TokenTree::Ident(name) => {
-                out.insert(name.to_string());
-            }
+            TokenTree::Ident(name) => out.push(name.to_string()),
             TokenTree::Group(group) => {
                 let inner: Vec<TokenTree> = group.stream().into_iter().collect();
-                collect_idents(&inner, out);
+                out.extend(idents(&inner));
             }
             _ => {}
         }
     }
+    out
 }
 
 fn collect_names<'a>(tokens: impl Iterator<Item = &'a TokenTree>, names: &mut Vec<TokenTree>) {
