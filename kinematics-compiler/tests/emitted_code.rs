@@ -156,6 +156,7 @@ fn written_ops(expr: &syn::Expr) -> usize {
         Expr::Tuple(t) => t.elems.iter().map(written_ops).sum(),
         Expr::Struct(s) => s.fields.iter().map(|f| written_ops(&f.expr)).sum(),
         Expr::Path(_) | Expr::Lit(_) | Expr::Call(_) | Expr::MethodCall(_) => 0,
+        Expr::Field(_) => 0, // `chunk_0.4`, a value a chunk returned
         other => panic!("an expression the emitter does not write: {}", quote::quote!(#other)),
     }
 }
@@ -167,13 +168,40 @@ fn written_ops(expr: &syn::Expr) -> usize {
 fn checked_marks(source: &str, what: &str) -> Vec<usize> {
     let file: syn::File = syn::parse_str(source).unwrap();
     let syn::Item::Fn(function) = &file.items[0] else { panic!("{what}: one function") };
-    let spacing = kinematics_core::BLOCK_MARK_OPS;
     let (mut marks, mut since, mut last) = (Vec::new(), 0, 0);
-    for stmt in &function.block.stmts {
+    walk_marks(&function.block.stmts, what, &mut marks, &mut since, &mut last);
+    assert!(since < kinematics_core::BLOCK_MARK_OPS, "{what}: {since} operations after the last mark");
+    assert_eq!(marks, (1..=marks.len()).collect::<Vec<_>>(), "{what}: numbered in order");
+    marks
+}
+
+/// The statements of a body, in order, the statements of each chunk's closure (`chunk(|| { .. })`,
+/// as a `let chunk_0 = ...;` or a statement) in place of the chunk: the marks as
+/// [`checked_marks`] checks them.
+fn walk_marks(stmts: &[syn::Stmt], what: &str, marks: &mut Vec<usize>, since: &mut usize, last: &mut usize) {
+    let spacing = kinematics_core::BLOCK_MARK_OPS;
+    // A chunk's closure: `private::chunk(|| { .. })`.
+    let chunk = |expr: &syn::Expr| -> Option<Vec<syn::Stmt>> {
+        let syn::Expr::Call(call) = expr else { return None };
+        let callee = &call.func;
+        if !quote::quote!(#callee).to_string().ends_with(":: chunk") {
+            return None;
+        }
+        let Some(syn::Expr::Closure(closure)) = call.args.first() else { panic!("{what}: a chunk runs a closure") };
+        let syn::Expr::Block(block) = &*closure.body else { panic!("{what}: a chunk's closure is a block") };
+        Some(block.block.stmts.clone())
+    };
+    for stmt in stmts {
         match stmt {
-            syn::Stmt::Local(local) => {
-                last = local.init.as_ref().map_or(0, |init| written_ops(&init.expr));
-                since += last;
+            syn::Stmt::Local(local) => match local.init.as_ref().and_then(|init| chunk(&init.expr)) {
+                Some(inner) => walk_marks(&inner, what, marks, since, last),
+                None => {
+                    *last = local.init.as_ref().map_or(0, |init| written_ops(&init.expr));
+                    *since += *last;
+                }
+            },
+            syn::Stmt::Expr(expr, Some(_)) if chunk(expr).is_some() => {
+                walk_marks(&chunk(expr).unwrap_or_default(), what, marks, since, last);
             }
             syn::Stmt::Expr(syn::Expr::Call(call), Some(_)) => {
                 let callee = quote::quote!(#call).to_string();
@@ -182,16 +210,15 @@ fn checked_marks(source: &str, what: &str) -> Vec<usize> {
                     panic!("{what}: a numbered mark")
                 };
                 marks.push(n.base10_parse::<usize>().unwrap());
-                assert!(since >= spacing && since - last < spacing, "{what}: mark {n} after {since} operations");
-                since = 0;
+                assert!(*since >= spacing && *since - *last < spacing, "{what}: mark {n} after {since} operations");
+                *since = 0;
             }
-            syn::Stmt::Expr(value, None) => since += written_ops(value),
+            // A chunk's value, the tuple of what it returns, computes nothing.
+            syn::Stmt::Expr(syn::Expr::Tuple(_), None) => {}
+            syn::Stmt::Expr(value, None) => *since += written_ops(value),
             other => panic!("{what}: a statement the emitter does not write: {}", quote::quote!(#other)),
         }
     }
-    assert!(since < spacing, "{what}: {since} operations after the last mark");
-    assert_eq!(marks, (1..=marks.len()).collect::<Vec<_>>(), "{what}: numbered in order");
-    marks
 }
 
 /// Points fixed in links (as the sphere centres are) carry block marks, `T::block_mark(1);` on,
