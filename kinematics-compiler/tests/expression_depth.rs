@@ -49,7 +49,26 @@ impl Measure {
             syn::Expr::Array(a) => a.elems.iter().for_each(|x| self.expr(x, level)),
             syn::Expr::Struct(s) => s.fields.iter().for_each(|f| self.expr(&f.expr, level)),
             syn::Expr::Path(_) | syn::Expr::Lit(_) => {}
+            // A chunk (`chunk(|| { ..; (a, b) })`, for debug builds' stack) and what it returned
+            // read back (`chunk_0.1`): the closure's statements nest inside the call.
+            syn::Expr::Closure(c) => self.expr(&c.body, level),
+            syn::Expr::Block(b) => self.statements(&b.block.stmts, level),
+            syn::Expr::Tuple(t) => t.elems.iter().for_each(|x| self.expr(x, level)),
+            syn::Expr::Field(f) => self.expr(&f.base, level),
             other => panic!("unexpected expression `{}`", quote!(#other)),
+        }
+    }
+}
+
+impl Measure {
+    /// Walks each statement's expression at `level`.
+    fn statements(&mut self, stmts: &[syn::Stmt], level: usize) {
+        for stmt in stmts {
+            match stmt {
+                syn::Stmt::Local(local) => self.expr(&local.init.as_ref().unwrap().expr, level),
+                syn::Stmt::Expr(e, _) => self.expr(e, level),
+                other => panic!("unexpected statement `{}`", quote!(#other)),
+            }
         }
     }
 }
@@ -63,13 +82,7 @@ fn measure(compiled: Compiled) -> (Measure, OpCount) {
             let tokens = emit_function(&compiled, &EmitOptions::named("fk"));
             let function: syn::ItemFn = syn::parse2(tokens).unwrap();
             let mut m = Measure::default();
-            for stmt in &function.block.stmts {
-                match stmt {
-                    syn::Stmt::Local(local) => m.expr(&local.init.as_ref().unwrap().expr, 0),
-                    syn::Stmt::Expr(e, _) => m.expr(e, 0),
-                    other => panic!("unexpected statement `{}`", quote!(#other)),
-                }
-            }
+            m.statements(&function.block.stmts, 0);
             (m, compiled.op_count())
         })
         .unwrap()
