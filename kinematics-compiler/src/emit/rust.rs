@@ -9,7 +9,7 @@ use kinematics_core::BLOCK_MARK_OPS;
 use proc_macro2::{Delimiter, Group, Ident, Literal, Punct, Spacing, Span, TokenStream};
 use quote::{ToTokens as _, TokenStreamExt as _, format_ident, quote};
 
-use super::chunks::chunked;
+use super::chunks::function;
 use super::schedule::{Item, Schedule};
 use crate::request::{Compiled, VelocityForm};
 use crate::stats::OpCount;
@@ -500,20 +500,15 @@ pub fn emit_function(compiled: &Compiled, options: &EmitOptions) -> TokenStream 
     let vis = if options.public { quote!(pub) } else { quote!() };
     let bound = options.trig.bound(private);
     let params = if twist { quote!(q: &[T; #n_lit], qd: &[T; #nv_lit]) } else { quote!(q: &[T; #n_lit]) };
-    let body = chunked(body, private);
-    quote! {
+    // Always inlined (in an optimised build) into its (small, `#[inline]`) typed callers: a
+    // function returning an array of poses writes them to a temporary and the caller copies them
+    // where they belong (a 576-byte `memcpy` for a 6-link arm, measured at about a tenth of the
+    // PUMA 560's all-link time); inlined, the poses are stored where the caller keeps them.
+    let attrs = quote! {
         #(#[doc = #docs])*
-        // Always inlined into its (small, `#[inline]`) typed callers: a function returning an array
-        // of poses writes them to a temporary and the caller copies them where they belong (a 576-byte
-        // `memcpy` for a 6-link arm, measured at about a tenth of the PUMA 560's all-link time);
-        // inlined, the poses are stored where the caller keeps them.
-        #[allow(clippy::inline_always)]
-        #[cfg_attr(not(debug_assertions), inline(always))]
         #[allow(clippy::approx_constant)] // a robot's own decimals may resemble pi; they are kept as given
-        #vis fn #name<T: #bound>(#params) -> #ret {
-            #body
-        }
-    }
+    };
+    function(attrs, quote!(#vis fn #name<T: #bound>(#params) -> #ret), body, private)
 }
 
 /// The statements every body opens with: `q` (and with `rates` `qd`) unpacked into the variables
@@ -591,18 +586,13 @@ pub fn emit_points(compiled: &Compiled, points: &[[ExprId; 3]], options: &EmitOp
     let vis = if options.public { quote!(pub) } else { quote!() };
     let bound = options.trig.bound(private);
     let cost = format!(" Cost: {}.", OpCount::of(g, outputs.iter().copied()));
-    let body = chunked(body, private);
-    quote! {
+    let attrs = quote! {
         #[doc = #doc]
         #[doc = ""]
         #[doc = #cost]
-        #[allow(clippy::inline_always)]
-        #[cfg_attr(not(debug_assertions), inline(always))]
         #[allow(clippy::approx_constant)] // a robot's own decimals may resemble pi; they are kept as given
-        #vis fn #name<T: #bound>(q: &[T; #n_lit]) -> [[T; 3]; #m] {
-            #body
-        }
-    }
+    };
+    function(attrs, quote!(#vis fn #name<T: #bound>(q: &[T; #n_lit]) -> [[T; 3]; #m]), body, private)
 }
 
 /// Straight-line code for a graph of inputs (no joint variables): [`straight_line`]'s result.
