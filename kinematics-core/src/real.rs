@@ -79,16 +79,16 @@ pub trait Real:
 /// ([`Real::block_mark`]): a mark follows the first statement that reaches it.
 pub const BLOCK_MARK_OPS: usize = 75;
 
-/// Runs one chunk of generated straight-line code: `f`, always inlined in an optimised build (the
-/// chunk is then the code around it, as if the closure were not there), a call of its own in a
-/// debug build (`debug_assertions`).
+/// Runs one chunk of generated straight-line code, `f`: a call of its own in a debug build
+/// (`debug_assertions`), always inlined otherwise.
 ///
 /// Why: without optimisation every `let` and every temporary of a function keeps its own stack
 /// slot for the whole call, and an always-inlined callee's slots join its caller's. A robot's
 /// body of thousands of lane operations (each slot 32 to 64 bytes) then needed megabytes of a
-/// debug build's stack, more than a test thread has. Generated bodies put each stretch between
-/// two block marks ([`BLOCK_MARK_OPS`]) in a closure run by `chunk`, which returns what the
-/// stretch binds: in a debug build only one stretch's slots are live at a time.
+/// debug build's stack, more than a test thread has. A generated body's form for debug builds
+/// puts each stretch between two block marks ([`BLOCK_MARK_OPS`]) in a closure run by `chunk`,
+/// which returns what the stretch binds: only one stretch's slots are live at a time. (The form
+/// for optimised builds is the statements as written, without chunks.)
 ///
 /// ```
 /// use kinematics_core::chunk;
