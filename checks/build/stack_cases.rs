@@ -43,57 +43,8 @@ pub fn write(
     structs: &mut String,
     cases: &mut String,
 ) -> Result<(), Box<dyn std::error::Error>> {
-    let leaves: Vec<String> = tree.leaves().map(|l| tree.link(l).name.clone()).collect();
-    let deepest = (0..tree.links().len()).map(LinkId).max_by_key(|&l| (tree.depth(l), l)).unwrap_or(tree.root());
-    let deepest = tree.link(deepest).name.clone();
     let both = Scalars { f64: true, f32: true };
-    // (struct, options, its attribute's keys, the outputs whose functions get cases): the
-    // derive of `derived.rs` for the links and tips (not derived again here), then one struct per
-    // option that adds functions, each with cases for what it adds.
-    let mut sets: Vec<(String, Options, Option<String>, Vec<Output>)> = Vec::new();
-    let fk = Options { tips: leaves.clone(), positions: true, scalars: both, ..Options::default() };
-    let fk_outputs = outputs(&fk);
-    sets.push((format!("crate::Derived_{module}_file"), fk, None, fk_outputs));
-    // The velocities of the deepest link (one tip: a Jacobian of every leaf of a humanoid is
-    // minutes of compile time, and the same code per tip).
-    let tip = vec![deepest.clone()];
-    let velocities =
-        Options { tips: tip.clone(), positions: true, jacobians: true, scalars: both, ..Options::default() };
-    let added = outputs(&velocities)
-        .into_iter()
-        .filter(|o| {
-            matches!(o, Output::Jacobian(_) | Output::PoseAndJacobian | Output::PositionJacobian | Output::Twist(_))
-        })
-        .collect();
-    sets.push((
-        format!("StackVelocities_{module}"),
-        velocities,
-        Some(format!("tip = {deepest:?}, positions, jacobians")),
-        added,
-    ));
-    // The inverse: the closed form, with the third joint given for seven joints, else numeric.
-    let third = tree.joints().iter().filter(|j| j.kind.positions() > 0).nth(2).map(|j| j.name.clone());
-    let tries = [
-        (IkMode::ClosedForm { free: None }, "ik".to_owned()),
-        (IkMode::ClosedForm { free: third.clone() }, format!("ik(free = {:?})", third.clone().unwrap_or_default())),
-        (IkMode::Numeric, "ik = \"numeric\"".to_owned()),
-    ];
-    for (ik, key) in tries {
-        let options = Options { tips: tip.clone(), ik, scalars: both, ..Options::default() };
-        if options.check(tree).is_ok() {
-            sets.push((format!("StackIk_{module}"), options, Some(format!("tip = {deepest:?}, {key}")), Vec::new()));
-            break;
-        }
-    }
-    let collision = Options { collision: Some(CollisionOptions::default()), scalars: both, ..Options::default() };
-    if collision.check(tree).is_ok() {
-        sets.push((
-            format!("StackCollision_{module}"),
-            collision,
-            Some("collision".to_owned()),
-            vec![Output::SphereCenters],
-        ));
-    }
+    let sets = option_sets(module, tree, both);
     for (ty, options, keys, cased) in sets {
         let checked = options.check(tree).map_err(|e| format!("{file}: {e}"))?;
         if let Some(keys) = keys {
@@ -164,6 +115,68 @@ pub fn write(
         }
     }
     Ok(())
+}
+
+/// One struct's derive and cases: its name, options, attribute keys (`None`: the derive of
+/// `derived.rs`, not derived again) and the outputs whose functions get cases.
+type OptionSet = (String, Options, Option<String>, Vec<Output>);
+
+/// The structs of the robot `tree` (`module`: its name in identifiers): the derive of
+/// `derived.rs` for the links and tips, then one struct per option that adds functions, each with
+/// cases for what it adds, where the compiler's rules take the option.
+fn option_sets(module: &str, tree: &KinematicTree, both: Scalars) -> Vec<OptionSet> {
+    let leaves: Vec<String> = tree.leaves().map(|l| tree.link(l).name.clone()).collect();
+    let deepest = (0..tree.links().len()).map(LinkId).max_by_key(|&l| (tree.depth(l), l)).unwrap_or(tree.root());
+    let deepest = tree.link(deepest).name.clone();
+    // (struct, options, its attribute's keys, the outputs whose functions get cases): the
+    // derive of `derived.rs` for the links and tips (not derived again here), then one struct per
+    // option that adds functions, each with cases for what it adds.
+    let mut sets: Vec<OptionSet> = Vec::new();
+    let fk = Options { tips: leaves.clone(), positions: true, scalars: both, ..Options::default() };
+    let fk_outputs = outputs(&fk);
+    sets.push((format!("crate::Derived_{module}_file"), fk, None, fk_outputs));
+    // The velocities of the deepest link (one tip: a Jacobian of every leaf of a humanoid is
+    // minutes of compile time, and the same code per tip).
+    let tip = vec![deepest.clone()];
+    let velocities =
+        Options { tips: tip.clone(), positions: true, jacobians: true, scalars: both, ..Options::default() };
+    let added = outputs(&velocities)
+        .into_iter()
+        .filter(|o| {
+            matches!(o, Output::Jacobian(_) | Output::PoseAndJacobian | Output::PositionJacobian | Output::Twist(_))
+        })
+        .collect();
+    sets.push((
+        format!("StackVelocities_{module}"),
+        velocities,
+        Some(format!("tip = {deepest:?}, positions, jacobians")),
+        added,
+    ));
+    // The inverse: the closed form, with the third joint given for seven joints, else numeric.
+    let third = tree.joints().iter().filter(|j| j.kind.positions() > 0).nth(2).map(|j| j.name.clone());
+    let mut tries = vec![(IkMode::ClosedForm { free: None }, "ik".to_owned())];
+    if let Some(third) = third {
+        let key = format!("ik(free = {third:?})");
+        tries.push((IkMode::ClosedForm { free: Some(third) }, key));
+    }
+    tries.push((IkMode::Numeric, "ik = \"numeric\"".to_owned()));
+    for (ik, key) in tries {
+        let options = Options { tips: tip.clone(), ik, scalars: both, ..Options::default() };
+        if options.check(tree).is_ok() {
+            sets.push((format!("StackIk_{module}"), options, Some(format!("tip = {deepest:?}, {key}")), Vec::new()));
+            break;
+        }
+    }
+    let collision = Options { collision: Some(CollisionOptions::default()), scalars: both, ..Options::default() };
+    if collision.check(tree).is_ok() {
+        sets.push((
+            format!("StackCollision_{module}"),
+            collision,
+            Some("collision".to_owned()),
+            vec![Output::SphereCenters],
+        ));
+    }
+    sets
 }
 
 impl Derived<'_> {
