@@ -244,28 +244,7 @@ pub fn stub(
         }
     }
     if let Some(shape) = IkShape::implied(&implied.options, implied.ik_plan.as_deref()) {
-        for item in render.ik_items(&shape) {
-            functions.push(match item {
-                IkItem::Family => {
-                    // A family the derive could not tell: an `IK_ARM` of a type that is an error
-                    // (see the module's doc), so code using it reports nothing more.
-                    let arm = shape
-                        .closed_form
-                        .as_ref()
-                        .is_some_and(|closed| closed.arm.is_none())
-                        .then(|| quote!(pub const IK_ARM: [(); #unknown] = ::core::panic!(#message);));
-                    quote!(
-                        pub const IK_FAMILY: &'static str = "";
-                        #arm
-                    )
-                }
-                IkItem::Arm(ty) => quote!(pub const IK_ARM: #ty = ::core::panic!(#message);),
-                IkItem::Function(_, signature) => {
-                    let sig = signature.tokens();
-                    quote!(#attrs #sig { ::core::unreachable!(#message) })
-                }
-            });
-        }
+        functions.extend(ik_items(&render, &shape, &attrs, message));
     }
     if implied.options.collision.is_some() {
         for (_, _, signature) in render.collision_items() {
@@ -325,6 +304,35 @@ pub fn stub(
             }
         };
     }
+}
+
+/// The inverse kinematics' stub items of `shape`: constants whose values never run, functions
+/// that are `unreachable!`. A family the derive could not tell gets an `IK_ARM` of a type that
+/// is an error (see the module's doc), so code using it reports nothing more.
+fn ik_items(render: &Render, shape: &IkShape, attrs: &TokenStream, message: &str) -> Vec<TokenStream> {
+    let unknown = format_ident!("{UNKNOWN_LENGTH}");
+    render
+        .ik_items(shape)
+        .into_iter()
+        .map(|item| match item {
+            IkItem::Family => {
+                let arm = shape
+                    .closed_form
+                    .as_ref()
+                    .is_some_and(|closed| closed.arm.is_none())
+                    .then(|| quote!(pub const IK_ARM: [(); #unknown] = ::core::panic!(#message);));
+                quote!(
+                    pub const IK_FAMILY: &'static str = "";
+                    #arm
+                )
+            }
+            IkItem::Arm(ty) => quote!(pub const IK_ARM: #ty = ::core::panic!(#message);),
+            IkItem::Function(_, signature) => {
+                let sig = signature.tokens();
+                quote!(#attrs #sig { ::core::unreachable!(#message) })
+            }
+        })
+        .collect()
 }
 
 /// A stand-in value of a constant of the type the surface gives it: empty names, no limits, the
