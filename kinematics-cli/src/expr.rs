@@ -159,6 +159,9 @@ fn ik_text(
     for note in &plan.notes {
         out += &format!("note: {note}\n");
     }
+    if plan.made_exact {
+        out += "note: solved with these relations made exact; `tip_ik` refines its solutions on the arm as written\n";
+    }
     out += &format!(
         "solutions: up to {} (every branch, exact or least-squares, flagged)\n",
         plan.family().max_solutions()

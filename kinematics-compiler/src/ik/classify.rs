@@ -34,6 +34,11 @@ pub const PARALLEL_TOLERANCE: f64 = 1e-12;
 /// Axes that pass closer than this times the chain's reach meet.
 pub const MEET_TOLERANCE: f64 = 1e-12;
 
+/// A change of the geometry below this (radians, or times the reach) is rounding of its
+/// computation, which leaves the solutions within rounding of the arm as written: such a plan is
+/// not [`IkPlan::made_exact`].
+const PLAN_ROUNDING: f64 = 1e-15;
+
 /// The joint of a seven-joint arm whose value is given, so that the other six are solved in
 /// closed form.
 #[derive(Debug, Clone, PartialEq)]
@@ -65,6 +70,12 @@ pub struct IkPlan {
     /// What the plan changed of the description's geometry (points moved along their axes,
     /// axes within tolerance made parallel), for `kinematics inspect` and `expr --ik`.
     pub notes: Vec<String>,
+    /// Whether the geometry the family solves differs from the description's (an axis within
+    /// tolerance made parallel to another, or a common point of axes that pass within tolerance
+    /// of each other off one of them): its solutions then miss the arm as written by about what
+    /// was changed, and `tip_ik` refines every one of them (points moved along their own axes
+    /// change nothing).
+    pub made_exact: bool,
 }
 
 /// The family and the geometry its solver takes: a six-joint family with six-joint geometry, or
@@ -260,6 +271,8 @@ pub fn classify_with(tree: &KinematicTree, base: &str, tip: &str, free: Option<&
                 geometry: IkGeometry::Planar(geometry),
                 reach: zero.reach,
                 notes,
+                // A planar arm's solutions reach what it can; they are not refined.
+                made_exact: false,
             })
             .map_err(|reason| none(format!("{}: {reason}", IkFamily::Planar.name())));
     }
@@ -573,8 +586,14 @@ fn finish(
         }
     }
     let chosen: Vec<V3> = (0..6).map(|i| points[i].unwrap_or(zero.joints[i].point)).collect();
+    // Changes past rounding: an axis turned, or a point moved off its written axis line.
+    let rounding = |length_squared: f64| length_squared > PLAN_ROUNDING * PLAN_ROUNDING;
+    let mut made_exact =
+        axes.iter().zip(&zero.joints).any(|(axis, joint)| rounding(norm_squared(cross(*axis, joint.axis))));
     for i in 0..6 {
         let moved = dot(sub(chosen[i], zero.joints[i].point), axes[i]);
+        let across = sub(sub(chosen[i], zero.joints[i].point), axes[i].map(|x| x * moved));
+        made_exact |= rounding(norm_squared(across) / (zero.reach * zero.reach));
         if points[i].is_some() && moved != 0.0 {
             notes.push(format!(
                 "point of axis {} (joint `{}`) moved {moved:+.6} m along it",
@@ -602,5 +621,6 @@ fn finish(
         },
         reach: zero.reach,
         notes,
+        made_exact,
     }
 }

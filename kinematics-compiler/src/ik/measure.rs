@@ -21,11 +21,15 @@ use crate::simplify::{linear_form, sum_formula};
 use crate::stats::{OpCount, reachable};
 use crate::symbolic::graph::{ExprGraph, ExprId, Node};
 
-/// The name of the generic function [`emit_measure`] writes.
+/// The name of the generic function [`emit_measure`] writes for a pose.
 pub const MEASURE_BODY: &str = "generic_tip_pose_from_cos_sin";
 
-/// The tip's pose with every joint's cosine and sine an input: cosine of joint `i` input `i`,
-/// its sine input `dof + i`; joint values (a prismatic joint's) stay variables.
+/// The name of the generic function [`emit_measure`] writes for a pose and its Jacobian.
+pub const MEASURE_JACOBIAN_BODY: &str = "generic_tip_pose_and_jacobian_from_cos_sin";
+
+/// The tip's pose (and, measured from a pose and Jacobian, its Jacobian) with every joint's
+/// cosine and sine an input: cosine of joint `i` input `i`, its sine input `dof + i`; joint
+/// values (a prismatic joint's) stay variables.
 #[derive(Debug, Clone)]
 pub struct Measure {
     graph: ExprGraph,
@@ -34,7 +38,7 @@ pub struct Measure {
 }
 
 impl Measure {
-    /// The measure of `compiled` (one tip's pose), or `None` when an angle is no sum or difference
+    /// The measure of `compiled` (one tip's pose, or its pose and Jacobian), or `None` when an angle is no sum or difference
     /// of joint values plus a constant.
     pub fn of(compiled: &Compiled) -> Option<Measure> {
         let dof = compiled.dof();
@@ -98,8 +102,9 @@ fn sin_cos_of(g: &mut ExprGraph, angle: ExprId, dof: usize) -> Option<(ExprId, E
     })
 }
 
-/// The generic function computing the tip's pose from `q` (for prismatic joints) and every
-/// joint's cosine and sine.
+/// The generic function computing the tip's pose (or its pose and Jacobian, `(Pose<T>, [[T; N]; 6])`,
+/// where `measure` has one: [`MEASURE_JACOBIAN_BODY`], else [`MEASURE_BODY`]) from `q` (for
+/// prismatic joints) and every joint's cosine and sine.
 pub fn emit_measure(measure: &Measure, private: &TokenStream, tip: &str, base: &str) -> TokenStream {
     let p = private;
     let n = measure.dof;
@@ -113,11 +118,24 @@ pub fn emit_measure(measure: &Measure, private: &TokenStream, tip: &str, base: &
     let statements = &line.statements;
     let o = &line.outputs;
     let (r0, r1, r2, t) = (&o[0..3], &o[3..6], &o[6..9], &o[9..12]);
+    let pose = quote!(#p::Pose { rotation: [[#(#r0),*], [#(#r1),*], [#(#r2),*]], translation: [#(#t),*] });
     let n_lit = Literal::usize_unsuffixed(n);
-    let name = Ident::new(MEASURE_BODY, Span::call_site());
+    let (name, what, ty, value) = if o.len() == 12 {
+        (MEASURE_BODY, "pose", quote!(#p::Pose<T>), pose)
+    } else {
+        assert_eq!(o.len(), 12 + 6 * n, "invariant: a measure is a pose, or a pose and its 6 x N Jacobian");
+        let rows = o[12..].chunks(n).map(|row| quote!([#(#row),*]));
+        (
+            MEASURE_JACOBIAN_BODY,
+            "pose and `LOCAL_WORLD_ALIGNED` Jacobian",
+            quote!((#p::Pose<T>, [[T; #n_lit]; 6])),
+            quote!((#pose, [#(#rows),*])),
+        )
+    };
+    let name = Ident::new(name, Span::call_site());
     let doc = format!(
-        " The pose of `{tip}` in `{base}` from the joint values (a prismatic joint's) and every joint's \
-         cosine and sine: the tip's pose function with its sines and cosines given. Cost: {}.",
+        " The {what} of `{tip}` in `{base}` from the joint values (a prismatic joint's) and every joint's \
+         cosine and sine: the tip's {what} function with its sines and cosines given. Cost: {}.",
         measure.op_count()
     );
     quote! {
@@ -125,12 +143,12 @@ pub fn emit_measure(measure: &Measure, private: &TokenStream, tip: &str, base: &
         #[allow(clippy::inline_always)]
         #[cfg_attr(not(debug_assertions), inline(always))]
         #[allow(clippy::approx_constant)] // a robot's own decimals may resemble pi; they are kept as given
-        pub fn #name<T: #p::Real>(q: &[T; #n_lit], cos: &[T; #n_lit], sin: &[T; #n_lit]) -> #p::Pose<T> {
+        pub fn #name<T: #p::Real>(q: &[T; #n_lit], cos: &[T; #n_lit], sin: &[T; #n_lit]) -> #ty {
             let [#(#qs),*] = *q;
             let [#(#cosines),*] = *cos;
             let [#(#sines),*] = *sin;
             #statements
-            #p::Pose { rotation: [[#(#r0),*], [#(#r1),*], [#(#r2),*]], translation: [#(#t),*] }
+            #value
         }
     }
 }

@@ -19,9 +19,9 @@
 //! a step that long could leave the branch the solver chose.
 
 use super::ldl::ldl_solve;
-use super::numeric::normal_equations;
+use super::real::IkBranch;
 use super::real::{IkReal, splat_pose};
-use super::solutions::{IkSolutions, LaneErrors};
+use super::solutions::{IkSolution, IkSolutions, LaneErrors};
 use crate::lanes::Lanes;
 use crate::pose::Pose;
 
@@ -83,6 +83,67 @@ impl<const N: usize, const M: usize> IkSolutions<N, M> {
         self
     }
 
+    /// The branches a compiled closed form computed side by side, one per lane, as
+    /// [`IkSolutions::from_lanes`] takes them, with every exact solution farther than
+    /// [`REFINE_ABOVE`] x reach from `target` refined on the arm as written in one pass of the
+    /// lanes: `reached` is the robot's generated pose and `LOCAL_WORLD_ALIGNED` Jacobian at the
+    /// branches' own cosines and sines, one Gauss-Newton step is taken in every lane, its
+    /// cosines and sines turned by the correction (no `sin_cos`: a correction is at most
+    /// [`LONGEST_CORRECTION`]), and `pose_from_cos_sin` (the generated pose at them) measures it,
+    /// each lane's step kept only if it brings its solution closer. A solution still farther (near
+    /// a singularity) takes the steps of [`IkSolutions::refined`] on `pose_and_jacobian`.
+    ///
+    /// What a pass costs beside the measure: the Jacobian's entries, one linear solve in lanes,
+    /// and the pose again; nothing when no solution is that far, but the Jacobian.
+    #[allow(clippy::needless_range_loop, reason = "joints and lanes, by index")]
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[must_use]
+    pub fn from_lanes_refined<L: Lanes<Scalar = f64> + IkReal>(
+        branches: &IkBranch<L, N>,
+        reached: &(Pose<L>, [[L; N]; 6]),
+        target: &Pose<f64>,
+        arm: &RefineArm<N>,
+        pose_from_cos_sin: impl Fn(&[L; N], &[L; N], &[L; N]) -> Pose<L>,
+        pose_and_jacobian: impl Fn(&[L; N]) -> (Pose<L>, [[L; N]; 6]),
+    ) -> Self {
+        let (pose, jacobian) = reached;
+        let mut solutions = Self::from_lanes(branches, pose, target);
+        let count = solutions.len();
+        let mut pending = [false; M];
+        let mut any = false;
+        for (flag, solution) in pending.iter_mut().zip(solutions.as_slice()) {
+            *flag =
+                solution.exact && distance(arm.reach, solution.position_error, solution.rotation_error) > REFINE_ABOVE;
+            any |= *flag;
+        }
+        if !any {
+            return solutions;
+        }
+        let (dq, positive) = gauss_newton_step(pose, jacobian, &splat_pose::<L>(target), arm);
+        let (mut q, mut cos, mut sin) = (branches.q, branches.cos, branches.sin);
+        for i in 0..N {
+            q[i] = q[i] + dq[i];
+            if arm.revolute[i] {
+                q[i] = within_half_turn(q[i]);
+                (cos[i], sin[i]) = turned(cos[i], sin[i], dq[i]);
+            }
+        }
+        let errors = LaneErrors::of(&pose_from_cos_sin(&q, &cos, &sin), target);
+        let more = take_closer(
+            &mut solutions.solutions_mut()[..count],
+            &mut pending[..count],
+            &q,
+            &dq,
+            positive,
+            &errors,
+            arm,
+        );
+        if more {
+            solutions.refine_lanes(0, count, &mut pending, target, arm, &pose_and_jacobian);
+        }
+        solutions
+    }
+
     /// Refines the pending solutions of `start..end` (at most `L::LANES`), lane `k` solution
     /// `start + k`.
     #[allow(clippy::needless_range_loop, reason = "joints and lanes, by index")]
@@ -108,25 +169,7 @@ impl<const N: usize, const M: usize> IkSolutions<N, M> {
         let target_lanes = splat_pose::<L>(target);
         let (mut pose, mut jacobian) = pose_and_jacobian(&q);
         for _ in 0..REFINE_STEPS {
-            let (mut a, mut dq) = normal_equations(&jacobian, &small_angle_twist(&pose, &target_lanes));
-            for i in 0..N {
-                if arm.moving[i] {
-                    // A trace of damping, below the rounding of a well-conditioned system, so
-                    // that a Jacobian singular to rounding still has a solve (1e-12 held steps
-                    // near a singularity short of the target: of 400 quartic targets 1e-3 rad from
-                    // the wrist's singularity, 398 had a solution within 1e-13 and 397 their
-                    // configuration so, against 400 and 399 with this, 232 and 49 unrefined).
-                    a[i][i] = a[i][i] * L::from_f64(1.0 + 1e-15);
-                } else {
-                    for j in 0..N {
-                        a[i][j] = L::from_f64(0.0);
-                        a[j][i] = L::from_f64(0.0);
-                    }
-                    a[i][i] = L::from_f64(1.0);
-                    dq[i] = L::from_f64(0.0);
-                }
-            }
-            let positive = ldl_solve(&mut a, &mut dq);
+            let (dq, positive) = gauss_newton_step(&pose, &jacobian, &target_lanes, arm);
             let mut next = q;
             for i in 0..N {
                 next[i] = q[i] + dq[i];
@@ -136,34 +179,105 @@ impl<const N: usize, const M: usize> IkSolutions<N, M> {
             }
             let (next_pose, next_jacobian) = pose_and_jacobian(&next);
             let errors = LaneErrors::of(&next_pose, target);
-            let mut more = false;
-            for k in 0..end - start {
-                let solution = &mut solutions[start + k];
-                if !pending[start + k] {
-                    continue;
-                }
-                let (position, rotation) = errors.lane(k);
-                let closer = distance(arm.reach, position, rotation);
-                let short = positive.lane(k) == 1.0 && (0..N).all(|i| dq[i].lane(k).abs() <= LONGEST_CORRECTION);
-                // The current distance is a number (a NaN one is never pending); a NaN `closer`
-                // is no closer.
-                if short && closer < distance(arm.reach, solution.position_error, solution.rotation_error) {
-                    for i in 0..N {
-                        solution.q[i] = next[i].lane(k);
-                    }
-                    (solution.position_error, solution.rotation_error) = (position, rotation);
-                    pending[start + k] = closer > REFINE_ABOVE;
-                } else {
-                    pending[start + k] = false;
-                }
-                more |= pending[start + k];
-            }
+            let more =
+                take_closer(&mut solutions[start..end], &mut pending[start..end], &next, &dq, positive, &errors, arm);
             if !more {
                 return;
             }
             (q, pose, jacobian) = (next, next_pose, next_jacobian);
         }
     }
+}
+
+/// Lane `k`'s step taken for solution `k` of `solutions` where it is pending, short (every
+/// correction within [`LONGEST_CORRECTION`], from positive normal equations) and brings it
+/// closer by its `errors`; each stays pending if taken and still farther than [`REFINE_ABOVE`].
+/// Whether any does.
+#[allow(clippy::needless_range_loop, reason = "joints and lanes, by index")]
+#[cfg_attr(not(debug_assertions), inline(always))]
+fn take_closer<L: Lanes<Scalar = f64> + IkReal, const N: usize>(
+    solutions: &mut [IkSolution<N>],
+    pending: &mut [bool],
+    next: &[L; N],
+    dq: &[L; N],
+    positive: L,
+    errors: &LaneErrors<L>,
+    arm: &RefineArm<N>,
+) -> bool {
+    let mut more = false;
+    for (k, (solution, pending)) in solutions.iter_mut().zip(pending.iter_mut()).enumerate() {
+        if !*pending {
+            continue;
+        }
+        let (position, rotation) = errors.lane(k);
+        let closer = distance(arm.reach, position, rotation);
+        let short = positive.lane(k) == 1.0 && (0..N).all(|i| dq[i].lane(k).abs() <= LONGEST_CORRECTION);
+        // The current distance is a number (a NaN one is never pending); a NaN `closer` is no
+        // closer.
+        if short && closer < distance(arm.reach, solution.position_error, solution.rotation_error) {
+            for i in 0..N {
+                solution.q[i] = next[i].lane(k);
+            }
+            (solution.position_error, solution.rotation_error) = (position, rotation);
+            *pending = closer > REFINE_ABOVE;
+        } else {
+            *pending = false;
+        }
+        more |= *pending;
+    }
+    more
+}
+
+/// One Gauss-Newton step of every lane from `pose` (with its `jacobian`) toward `target`: the
+/// correction of each joint (zero for one that may not move), and `1` in the lanes whose normal
+/// equations were positive definite (a step to take), else `0`.
+#[allow(clippy::needless_range_loop, reason = "joints and lanes, by index")]
+#[cfg_attr(not(debug_assertions), inline(always))]
+fn gauss_newton_step<L: IkReal, const N: usize>(
+    pose: &Pose<L>,
+    jacobian: &[[L; N]; 6],
+    target: &Pose<L>,
+    arm: &RefineArm<N>,
+) -> ([L; N], L) {
+    let error = small_angle_twist(pose, target);
+    // The normal equations `J^T J dq = J^T e`, built where they are solved (returned from a
+    // function, the 36 entries in lanes were copied by `memcpy`); `ldl_solve` reads the lower
+    // triangle only.
+    let zero = L::from_f64(0.0);
+    let (mut a, mut dq) = ([[zero; N]; N], [zero; N]);
+    for i in 0..N {
+        for j in 0..=i {
+            let mut s = jacobian[0][i] * jacobian[0][j];
+            for row in &jacobian[1..] {
+                s = s + row[i] * row[j];
+            }
+            a[i][j] = s;
+        }
+        let mut s = jacobian[0][i] * error[0];
+        for (row, &e) in jacobian[1..].iter().zip(&error[1..]) {
+            s = s + row[i] * e;
+        }
+        dq[i] = s;
+    }
+    for i in 0..N {
+        if arm.moving[i] {
+            // A trace of damping, below the rounding of a well-conditioned system, so that a
+            // Jacobian singular to rounding still has a solve (1e-12 held steps near a
+            // singularity short of the target: of 400 quartic targets 1e-3 rad from the wrist's
+            // singularity, 398 had a solution within 1e-13 and 397 their configuration so,
+            // against 400 and 399 with this, 232 and 49 unrefined).
+            a[i][i] = a[i][i] * L::from_f64(1.0 + 1e-15);
+        } else {
+            for j in 0..N {
+                a[i][j] = zero;
+                a[j][i] = zero;
+            }
+            a[i][i] = L::from_f64(1.0);
+            dq[i] = zero;
+        }
+    }
+    let positive = ldl_solve(&mut a, &mut dq);
+    (dq, positive)
 }
 
 /// The larger of the position error and the rotation error times the reach, over the reach
@@ -192,6 +306,17 @@ fn small_angle_twist<L: IkReal>(reached: &Pose<L>, target: &Pose<L>) -> [L; 6] {
         (m(0, 2) - m(2, 0)) * half,
         (m(1, 0) - m(0, 1)) * half,
     ]
+}
+
+/// The cosine and sine of an angle whose cosine and sine are `(cos, sin)`, turned by `d`
+/// radians, `|d|` at most [`LONGEST_CORRECTION`]: the angle-sum formulas with `cos d` and
+/// `sin d` from their series to `d^2` and `d^3`, whose next terms (`d^4 / 24`, `d^5 / 120`) are
+/// below the rounding of either at that length.
+#[cfg_attr(not(debug_assertions), inline(always))]
+fn turned<L: IkReal>(cos: L, sin: L, d: L) -> (L, L) {
+    let d2 = d * d;
+    let (cos_d, sin_d) = (L::from_f64(1.0) - d2 * L::from_f64(0.5), d - d * d2 * L::from_f64(1.0 / 6.0));
+    (cos * cos_d - sin * sin_d, sin * cos_d + cos * sin_d)
 }
 
 /// `x` moved by a whole turn into `(-pi, pi]` if a correction took it just past either end,
@@ -268,6 +393,71 @@ mod tests {
             let before = solutions;
             let solutions = solutions.refined::<F64x8>(&target, &refine, arm_in_lanes(&exact));
             assert_eq!(solutions, before);
+        }
+        assert!(refined >= 12, "{refined}");
+    }
+
+    /// A pose and Jacobian in lanes.
+    type PoseAndJacobian = (Pose<F64x8>, [[F64x8; 6]; 6]);
+
+    /// The solutions of `arm` for `target` as a compiled body returns them, one per lane, and
+    /// `measured`'s pose and Jacobian there.
+    fn in_lanes(arm: &Arm6, measured: &Arm6, target: &Pose<f64>) -> (IkBranch<F64x8, 6>, PoseAndJacobian) {
+        let solutions = crate::ik::spherical_two_parallel(arm, target);
+        assert_eq!(solutions.len(), 8);
+        let s = solutions.as_slice();
+        let q: [F64x8; 6] = core::array::from_fn(|j| F64x8::from_fn(|k| s[k].q[j]));
+        let branches = IkBranch {
+            q,
+            cos: q.map(|x| F64x8::from_fn(|k| libm::cos(x.lane(k)))),
+            sin: q.map(|x| F64x8::from_fn(|k| libm::sin(x.lane(k)))),
+            exact: F64x8::from_fn(|k| if s[k].exact { 1.0 } else { 0.0 }),
+            singular: F64x8::from_fn(|k| if s[k].singular { 1.0 } else { 0.0 }),
+        };
+        let reached = arm_in_lanes(measured)(&q);
+        (branches, reached)
+    }
+
+    /// One pass in lanes does what the steps of `refined` do: on the tilted arm every exact
+    /// solution ends within `REFINE_ABOVE` x reach (its errors those of the generated pose at
+    /// its cosines and sines, here the arm's pose at `q`), within 1e-12 rad of the solution
+    /// `refined` gives; the exact arm's solutions are those of `from_lanes`, bit for bit.
+    #[test]
+    fn one_pass_in_lanes_refines_as_the_steps_do() {
+        let (exact, written) = arms(1e-12);
+        let refine = RefineArm { reach: 1.0, moving: [true; 6], revolute: [true; 6] };
+        let mut refined = 0;
+        for q in [[0.3, -0.4, 0.5, 0.6, -0.7, 0.8], [-1.2, 0.2, -0.3, 2.0, 1.1, -2.5], [2.5, 0.9, -1.0, -0.4, 0.5, 0.1]]
+        {
+            for (arm, tilted) in [(&written, true), (&exact, false)] {
+                let target = arm.pose(&q);
+                let (branches, reached) = in_lanes(&exact, arm, &target);
+                let pose_at = |q: &[F64x8; 6], _: &[F64x8; 6], _: &[F64x8; 6]| arm_in_lanes(arm)(q).0;
+                let one_pass = IkSolutions::<6, 8>::from_lanes_refined(
+                    &branches,
+                    &reached,
+                    &target,
+                    &refine,
+                    pose_at,
+                    arm_in_lanes(arm),
+                );
+                let unrefined = IkSolutions::<6, 8>::from_lanes(&branches, &reached.0, &target);
+                if !tilted {
+                    assert_eq!(one_pass, unrefined);
+                    continue;
+                }
+                let stepped = unrefined.refined::<F64x8>(&target, &refine, arm_in_lanes(arm));
+                for ((pass, steps), before) in one_pass.iter().zip(stepped.iter()).zip(unrefined.iter()) {
+                    if !before.exact {
+                        assert_eq!(pass, before);
+                        continue;
+                    }
+                    refined += 1;
+                    assert!(before.position_error > REFINE_ABOVE || before.rotation_error > REFINE_ABOVE, "{before:?}");
+                    assert!(pass.position_error <= REFINE_ABOVE && pass.rotation_error <= REFINE_ABOVE, "{pass:?}");
+                    assert!(pass.q.iter().zip(&steps.q).all(|(a, b)| (a - b).abs() < 1e-12), "{pass:?} {steps:?}");
+                }
+            }
         }
         assert!(refined >= 12, "{refined}");
     }

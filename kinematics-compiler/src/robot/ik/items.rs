@@ -21,7 +21,7 @@ use proc_macro2::{Ident, Literal, Span, TokenStream};
 use quote::{format_ident, quote};
 
 use crate::ik::emit::{BRANCH_BODY, REGULAR_BODY, emit_branch_body};
-use crate::ik::measure::{MEASURE_BODY, Measure, emit_measure};
+use crate::ik::measure::{MEASURE_BODY, MEASURE_JACOBIAN_BODY, Measure, emit_measure};
 use crate::ik::{IkBody, IkGeometry, IkPlan};
 use crate::robot::number;
 
@@ -70,20 +70,22 @@ fn vector(v: &[f64; 3]) -> TokenStream {
 }
 
 /// The associated constants and functions (inside the robot's `impl`) for `plan`. `forward`
-/// names the generic function computing the tip's pose, `measure` is the same pose from the
-/// joints' cosines and sines (when the chain has that form), `revolute` says which entries of `q`
-/// are angles (moved by whole turns into limits or toward a seed).
+/// names the generic function computing the tip's pose, `measures` are the same pose (and its
+/// Jacobian) from the joints' cosines and sines (when the chain has that form), `revolute` says
+/// which entries of `q` are angles (moved by whole turns into limits or toward a seed).
 pub fn emit_ik(
     plan: &IkPlan,
     private: &TokenStream,
     forward: &TokenStream,
     pose_and_jacobian: &TokenStream,
-    measure: Option<&Measure>,
+    measures: &Measures,
     revolute: &[bool],
 ) -> IkItems {
+    let measure = measures.pose.as_ref();
     let p = private;
     let compiled = IkBody::of(plan);
-    let refine = refine(plan, p, pose_and_jacobian, revolute);
+    let refine_arm = refine_arm(plan, p, revolute);
+    let refine = refine(refine_arm.as_ref(), p, pose_and_jacobian);
     let solutions_refined = refine.clone().unwrap_or_else(|| quote!(solutions));
     let family = plan.family().name();
     let capacity = Literal::usize_unsuffixed(plan.family().max_solutions());
@@ -96,7 +98,14 @@ pub fn emit_ik(
     let doc_all = doc_all(plan, compiled.is_some() && measure.is_some(), &free_doc);
     let doc_nearest = doc_nearest(plan);
     let Solving { bodies, solve_and_measure, branch_fn } = match &compiled {
-        Some(body) => solving_compiled(plan, body, measure, forward, refine.as_ref(), p),
+        Some(body) => {
+            let refinement = refine_arm.map(|arm| Refinement {
+                arm,
+                pose_and_jacobian,
+                one_pass: measures.pose_and_jacobian.as_ref(),
+            });
+            solving_compiled(plan, body, measure, forward, refinement.as_ref(), p)
+        }
         None => Solving {
             bodies: Vec::new(),
             solve_and_measure: quote! {
@@ -243,21 +252,23 @@ fn arm_and_solver(plan: &IkPlan, p: &TokenStream) -> ArmAndSolver {
     }
 }
 
-/// `solutions` refined on the arm's generated pose and Jacobian, for a six-joint arm (`None` for a
-/// planar arm: its exact solutions reach what the arm can, not the whole
-/// pose, and a step on the whole pose's error would trade the one for the other).
-fn refine(plan: &IkPlan, p: &TokenStream, pose_and_jacobian: &TokenStream, revolute: &[bool]) -> Option<TokenStream> {
+/// What the refinement takes of a six-joint arm (`kinematics::ik::RefineArm`), `None` for a
+/// planar arm: its exact solutions reach what the arm can, not the whole pose, and a step on the
+/// whole pose's error would trade the one for the other.
+fn refine_arm(plan: &IkPlan, p: &TokenStream, revolute: &[bool]) -> Option<TokenStream> {
     plan.six()?;
     let reach = number(plan.reach);
     let free = plan.free().map(|f| f.index);
     let moving = (0..revolute.len()).map(|i| Some(i) != free);
+    Some(quote!(#p::ik::RefineArm { reach: #reach, moving: [#(#moving),*], revolute: [#(#revolute),*] }))
+}
+
+/// `solutions` refined on the arm's generated pose and Jacobian (see [`refine_arm`]).
+fn refine(arm: Option<&TokenStream>, p: &TokenStream, pose_and_jacobian: &TokenStream) -> Option<TokenStream> {
+    let arm = arm?;
     Some(quote! {
         // Back to the arm as written where the family's exact relations missed it.
-        solutions.refined::<#p::F64x8>(
-            target,
-            &#p::ik::RefineArm { reach: #reach, moving: [#(#moving),*], revolute: [#(#revolute),*] },
-            #[inline(always)] |q| #pose_and_jacobian(q),
-        )
+        solutions.refined::<#p::F64x8>(target, &#arm, #[inline(always)] |q| #pose_and_jacobian(q))
     })
 }
 
@@ -319,6 +330,25 @@ fn doc_nearest(plan: &IkPlan) -> String {
     }
 }
 
+/// The measures of a chain whose angles are sums of joint values ([`Measure`]): the tip's pose,
+/// and for an arm the family solved with its relations made exact, its pose and Jacobian (which
+/// refine the solutions in one pass: `IkSolutions::from_lanes_refined`).
+pub struct Measures {
+    /// The tip's pose from the joints' cosines and sines.
+    pub pose: Option<Measure>,
+    /// Its pose and Jacobian from them.
+    pub pose_and_jacobian: Option<Measure>,
+}
+
+/// How a compiled family's solutions are refined on the arm as written: what the refinement
+/// takes of the arm, the generic pose and Jacobian at `q`, and the pose and Jacobian at the
+/// solver's cosines and sines, for one pass in lanes where the arm was made exact.
+struct Refinement<'a> {
+    arm: TokenStream,
+    pose_and_jacobian: &'a TokenStream,
+    one_pass: Option<&'a Measure>,
+}
+
 /// How `tip_ik` solves and measures: the statements computing its `IkSolutions`, the generic
 /// bodies they call, and `tip_ik_branch_generic` where the family is compiled.
 struct Solving {
@@ -334,7 +364,7 @@ fn solving_compiled(
     body: &IkBody,
     measure: Option<&Measure>,
     forward: &TokenStream,
-    refine: Option<&TokenStream>,
+    refinement: Option<&Refinement<'_>>,
     p: &TokenStream,
 ) -> Solving {
     let (tip, base, family) = (&plan.tip, &plan.base, plan.family().name());
@@ -381,11 +411,35 @@ fn solving_compiled(
         }
         None => quote!(#forward(&branches.q)),
     };
-    let from_lanes = match refine {
-        None => quote!(#p::ik::IkSolutions::from_lanes(&branches, &reached, target)),
-        Some(refined) => quote! {
+    let from_lanes = match refinement {
+        None => quote! {
+            let reached = #reached;
+            #p::ik::IkSolutions::from_lanes(&branches, &reached, target)
+        },
+        // An arm made exact: its pose and Jacobian at the solver's cosines and sines, one step
+        // in every lane, measured by the pose at the cosines and sines turned by it.
+        Some(Refinement { arm, pose_and_jacobian, one_pass: Some(with_jacobian) }) if measure.is_some() => {
+            bodies.push(emit_measure(with_jacobian, p, tip, base));
+            let (mj, m) =
+                (Ident::new(MEASURE_JACOBIAN_BODY, Span::call_site()), Ident::new(MEASURE_BODY, Span::call_site()));
+            quote! {
+                let reached = #mj(&branches.q, &branches.cos, &branches.sin);
+                // Back to the arm as written where the family's exact relations missed it.
+                #p::ik::IkSolutions::from_lanes_refined(
+                    &branches,
+                    &reached,
+                    target,
+                    &#arm,
+                    #[inline(always)] |q, cos, sin| #m(q, cos, sin),
+                    #[inline(always)] |q| #pose_and_jacobian(q),
+                )
+            }
+        }
+        Some(Refinement { arm, pose_and_jacobian, .. }) => quote! {
+            let reached = #reached;
             let solutions = #p::ik::IkSolutions::from_lanes(&branches, &reached, target);
-            #refined
+            // Back to the arm as written where the family's exact relations missed it.
+            solutions.refined::<#p::F64x8>(target, &#arm, #[inline(always)] |q| #pose_and_jacobian(q))
         },
     };
     Solving {
@@ -394,7 +448,6 @@ fn solving_compiled(
             // The eight branches side by side, one per lane.
             let lanes = #p::ik::splat_pose::<#p::F64x8>(target);
             #solve
-            let reached = #reached;
             #from_lanes
         },
         branch_fn: Some(Part {

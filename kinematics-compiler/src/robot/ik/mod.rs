@@ -14,7 +14,7 @@ use super::surface::{IkFunction, IkItem, IkShape, Signature};
 use crate::error::CompileError;
 use crate::options::CheckedIk;
 use crate::request::compile;
-use items::{IkItems, Part, emit_ik, emit_numeric};
+use items::{IkItems, Measures, Part, emit_ik, emit_numeric};
 
 /// The functions the checked options ask for (none when `ik` is off).
 #[allow(clippy::expect_used)] // internal invariants, named
@@ -35,8 +35,18 @@ pub(super) fn ik(cx: &Context<'_>, out: &mut Functions) -> Result<(), CompileErr
             let revolute: Vec<bool> =
                 tree.dof_joints().iter().map(|&j| tree.joint(j).kind != JointKind::Prismatic).collect();
             let tip_pose = compile(tree, &cx.tip_request)?;
-            let measure = crate::ik::Measure::of(&tip_pose);
-            Some(emit_ik(plan, p, &quote!(generic_tip_poses), &pose_and_jacobian, measure.as_ref(), &revolute))
+            // An arm the family solves with its relations made exact is refined in one pass,
+            // from its pose and Jacobian at the solver's cosines and sines.
+            let pose_and_jacobian_measure = if plan.made_exact {
+                let with_jacobian =
+                    compile(tree, &cx.tip_request.clone().pose_and_jacobian(JacobianFrame::LocalWorldAligned))?;
+                crate::ik::Measure::of(&with_jacobian)
+            } else {
+                None
+            };
+            let measures =
+                Measures { pose: crate::ik::Measure::of(&tip_pose), pose_and_jacobian: pose_and_jacobian_measure };
+            Some(emit_ik(plan, p, &quote!(generic_tip_poses), &pose_and_jacobian, &measures, &revolute))
         }
     };
     let shape = IkShape::of(spec.robot.ik(), closed.as_ref().is_some_and(|c| c.branch))
