@@ -416,6 +416,24 @@ fn numeric<const N: usize>(c: Option<&mut Criterion>, robot: &Numeric<N>) {
     record_pair(robot.name, "k-jacobian-ik/numeric", 51, 20, count, k_solve, |i| (robot.solve)(&targets[i], &seeds[i]));
 }
 
+/// What refining costs: the IRB 120 read with its half turns as written (every solution refined)
+/// against the IRB 120 written exactly (none), `tip_ik` on the same targets, paired.
+fn refinement_cost(timed: bool) {
+    if !timed {
+        return;
+    }
+    let Inputs { targets, .. } = inputs::<Irb120HalfTurns>();
+    record_pair(
+        Irb120HalfTurns::NAME,
+        "all/exactly-written-all",
+        101,
+        2000,
+        INPUTS,
+        |i| Irb120HalfTurns::all(&targets[i]),
+        |i| Irb120::all(&targets[i]),
+    );
+}
+
 /// Times `numerator` against `denominator` in alternation (`common::paired_ratio`), prints the
 /// ratio and records it in `target/criterion/kinematics-ik-paired.tsv` for `bench-report`
 /// (`robot, pair, ratio`), replacing the robot's last figure for that pair.
@@ -476,6 +494,7 @@ fn all(mut c: Option<&mut Criterion>) {
     closed::<Puma560>(c.as_deref_mut());
     compiled::<Puma560>(c.as_deref_mut());
     closed::<Irb120HalfTurns>(c.as_deref_mut());
+    refinement_cost(c.is_some());
     closed::<SkewSpherical>(c.as_deref_mut());
     closed::<OffsetWristUr>(c.as_deref_mut());
     numeric(

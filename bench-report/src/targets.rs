@@ -415,6 +415,10 @@ pub fn ik_targets(ik: &Ik) -> String {
     for robot in &ik.closed {
         let nearest_over_all = robot.paired.get("nearest/all").copied().or(ratio(robot.nearest, robot.all));
         target(&format!("{}: nearest / all <= 1.2", robot.name), nearest_over_all, Bound::AtMost(1.2));
+        if let Some(&refined) = robot.paired.get("all/exactly-written-all") {
+            let what = format!("{}: tip_ik / exactly written tip_ik <= 1.25", robot.name);
+            target(&what, Some(refined), Bound::AtMost(1.25));
+        }
     }
     for robot in &ik.numeric {
         if let Some(&(_, bound)) = NUMERIC_SOLVE_BOUNDS.iter().find(|(name, _)| *name == robot.name) {

@@ -53,19 +53,21 @@ pub fn ik_section(ik: Option<&Ik>, machine: &str) -> String {
         s,
         "\nPaired ratios (timed in alternation, the median of the rounds' ratios): the nearest solution against\n\
          all, the scalar loop and the four-lane body against the eight-lane one, and the run-time family function\n\
-         against the compiled `tip_ik`.\n\n\
-         | robot | nearest / all | scalar / 8 lanes | 4 lanes / 8 lanes | family function / `tip_ik` |\n|---|---|---|---|---|"
+         against the compiled `tip_ik`; for the IRB 120 read with its half turns as written, its `tip_ik` (every\n\
+         solution refined) against the exactly written IRB 120's on the same targets.\n\n\
+         | robot | nearest / all | scalar / 8 lanes | 4 lanes / 8 lanes | family function / `tip_ik` | refined / exactly written |\n|---|---|---|---|---|---|"
     );
     for r in &ik.closed {
         let pair = |name: &str| r.paired.get(name).map_or("n/a".to_owned(), |v| format!("{v:.2}"));
         let _ = writeln!(
             s,
-            "| {} | {} | {} | {} | {} |",
+            "| {} | {} | {} | {} | {} | {} |",
             r.name,
             pair("nearest/all"),
             pair("branches-scalar/branches-f64x8"),
             pair("branches-f64x4/branches-f64x8"),
-            pair("solver/all")
+            pair("solver/all"),
+            pair("all/exactly-written-all")
         );
     }
     let _ = writeln!(
@@ -80,9 +82,10 @@ pub fn ik_section(ik: Option<&Ik>, machine: &str) -> String {
          without it, and the whole body only when a lane comes back singular and not exact; `compiled body`\n\
          above times the whole body (`tip_ik_branch_generic`). `pose at q` is what the measure would cost with\n\
          `sin_cos`. Every exact solution farther than 1e-14 x reach from its target is then refined in lanes on\n\
-         the generated pose and Jacobian (`IkSolutions::refined`): nearly every solution of the IRB 120 read with\n\
-         its half turns as written (`tests/arms/irb120_half_turns.urdf`), and quartic families' solutions near their\n\
-         singularity; the other arms' solutions are within rounding and cost a comparison each. Operations per\n\
+         the generated pose and Jacobian: every solution of the IRB 120 read with its half turns as written\n\
+         (`tests/arms/irb120_half_turns.urdf`, measured by its pose and Jacobian, one step in every lane and the\n\
+         pose again: `IkSolutions::from_lanes_refined`), and quartic families' solutions near their singularity\n\
+         (`IkSolutions::refined`); the other arms' solutions are within rounding and cost a comparison each. Operations per\n\
          branch (one per lane),\n\
          `sin_cos/mul/add/div/sqrt/atan2/select`, from `kinematics expr --ik`:\n\n\
          | robot | body `tip_ik` runs | whole body, with the singular pass | measure |\n|---|---|---|---|"
