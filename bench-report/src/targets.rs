@@ -593,7 +593,14 @@ mod tests {
     #[test]
     fn ik_targets_show_two_decimals_and_n_a_without_a_figure() {
         let ik = Ik {
-            closed: vec![ClosedIk { name: "UR5", all: Some(400.0), nearest: Some(500.0), ..ClosedIk::default() }],
+            closed: vec![
+                ClosedIk { name: "UR5", all: Some(400.0), nearest: Some(500.0), ..ClosedIk::default() },
+                ClosedIk {
+                    name: "IRB 120, as written",
+                    paired: [("all/exactly-written-all".to_owned(), 1.2)].into_iter().collect(),
+                    ..ClosedIk::default()
+                },
+            ],
             numeric: vec![NumericIk {
                 name: "Panda",
                 ours: Some(25_000.0),
@@ -608,6 +615,9 @@ mod tests {
         assert!(s.contains("| UR5: ik-geo / our tip_ik (with errors) >= 4 | 4.50 | yes |\n"), "{s}");
         assert!(s.contains("| IRB 120: ik-geo / our solver >= 4 | n/a | n/a |\n"), "{s}");
         assert!(s.contains("| UR5: nearest / all <= 1.2 | 1.25 | no |\n"), "{s}");
+        // The refinement's cost only where it was timed.
+        assert!(s.contains("| IRB 120, as written: tip_ik / exactly written tip_ik <= 1.25 | 1.20 | yes |\n"), "{s}");
+        assert!(!s.contains("UR5: tip_ik / exactly written"), "{s}");
         assert!(s.contains("| Panda: numeric solve <= 20 us | 25.00 | no |\n"), "{s}");
         assert!(s.contains("| Panda: k / ours per solve >= 10 | 20.00 | yes |\n"), "{s}");
         assert!(s.contains("| Panda: converged to 1e-10, % >= 99.5 | 99.80 | yes |\n"), "{s}");

@@ -172,7 +172,9 @@ mod tests {
                     with_pass: Some("0/2/3/4/5/6/7".to_owned()),
                     measure: "0/7/8/0/0/0/0".to_owned(),
                 }),
-                paired: [("nearest/all".to_owned(), 1.1)].into_iter().collect(),
+                paired: [("nearest/all".to_owned(), 1.1), ("all/exactly-written-all".to_owned(), 2.345)]
+                    .into_iter()
+                    .collect(),
             }],
             numeric: vec![NumericIk {
                 name: "Panda",
@@ -185,7 +187,7 @@ mod tests {
         };
         let s = ik_section(Some(&ik), "a machine");
         assert!(s.contains("\n| UR5 | 400 | 440 | 200 | n/a | 800 | 250 | 300 |\n"), "{s}");
-        assert!(s.contains("\n| UR5 | 1.10 | n/a | n/a | n/a |\n"), "{s}");
+        assert!(s.contains("\n| UR5 | 1.10 | n/a | n/a | n/a | 2.35 |\n"), "{s}");
         assert!(s.contains("\n| UR5 | 0/1/2/3/4/5/6 | 0/2/3/4/5/6/7 | 0/7/8/0/0/0/0 |\n"), "{s}");
         assert!(s.contains("\n| Panda | 25.0 us | n/a | n/a | 99.8% (499 of 500) | 60.0% (300 of 500) |\n"), "{s}");
         assert!(s.ends_with("\nNo ik-geo results: run `bash benches/ik-geo/run.sh`.\n"), "{s}");
