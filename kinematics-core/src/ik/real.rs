@@ -58,16 +58,14 @@ impl IkReal for f64 {
     }
 }
 
+// Lane by lane written out, not as loops (see `crate::lanes`).
 macro_rules! ik_lanes {
-    ($name:ident, $lanes:literal) => {
+    ($name:ident, [$($i:literal),*]) => {
         impl IkReal for $name {
             #[cfg_attr(not(debug_assertions), inline(always))]
             fn sqrt(self) -> Self {
-                let mut out = self.0;
-                for x in &mut out {
-                    *x = square_root(*x);
-                }
-                $name(out)
+                let a = self.0;
+                $name([$(square_root(a[$i])),*])
             }
             #[cfg_attr(not(debug_assertions), inline(always))]
             fn atan2(self, x: Self) -> Self {
@@ -75,20 +73,15 @@ macro_rules! ik_lanes {
             }
             #[cfg_attr(not(debug_assertions), inline(always))]
             fn if_positive(self, then: Self, otherwise: Self) -> Self {
-                let mut out = otherwise.0;
-                for i in 0..$lanes {
-                    if self.0[i] > 0.0 {
-                        out[i] = then.0[i];
-                    }
-                }
-                $name(out)
+                let (x, a, b) = (self.0, then.0, otherwise.0);
+                $name([$(if x[$i] > 0.0 { a[$i] } else { b[$i] }),*])
             }
         }
     };
 }
 
-ik_lanes!(F64x4, 4);
-ik_lanes!(F64x8, 8);
+ik_lanes!(F64x4, [0, 1, 2, 3]);
+ik_lanes!(F64x8, [0, 1, 2, 3, 4, 5, 6, 7]);
 
 /// One branch of a compiled closed form, as its generic body returns it (for a lane type, one
 /// branch per lane): the joint values, each joint's cosine and sine (`1` and `0` for a prismatic
