@@ -3,7 +3,7 @@
 //! [`F64x4`] holds four `f64`, [`F32x8`] eight `f32`; [`F64x8`] and [`F32x16`], twice as many, fill
 //! an AVX-512 register (the generated batches take `F64x8` where the CPU has AVX-512; `f32` stays in
 //! [`F32x8`], measured faster, see the guide's Lanes page). They are plain arrays with lane-wise
-//! arithmetic written as loops over the lanes, which LLVM turns into packed instructions (AVX2
+//! arithmetic written out lane by lane, which LLVM turns into packed instructions (AVX2
 //! `ymm` registers with `-C target-cpu=native` on a machine that has them, pairs of SSE2 `xmm`
 //! registers on baseline x86-64); their sines and cosines are [`crate::trig`]'s lane routines. They
 //! implement [`Real`], so the very code generated for `f64` evaluates four (or eight)

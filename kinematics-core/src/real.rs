@@ -55,8 +55,8 @@ pub trait Real:
     /// default, and `f64`'s and `f32`'s) ignores the marks.
     ///
     /// Generated bodies of many statements (poses, Jacobians, sphere centres) call [`Real::block_mark`] about
-    /// every [`BLOCK_MARK_OPS`] operations. A lane type's operations are loops over its lanes,
-    /// which LLVM's SLP vectorizer turns back into vector instructions, and it schedules one block
+    /// every [`BLOCK_MARK_OPS`] operations. A lane type's operations are written out lane by lane,
+    /// which LLVM's SLP vectorizer turns into vector instructions, and it schedules one block
     /// of code at a time within a budget: a block of a few thousand lane operations exceeds it, and
     /// then runs in scalar pieces. A branch every few hundred operations keeps each block within
     /// the budget (see [`Real::block_mark`]).
