@@ -12,7 +12,9 @@
 //! function with the chain's geometry as constants, so the optimiser folds them into the body;
 //! the generated `tip_ik` then measures every solution's pose errors with the robot's own
 //! generated forward kinematics ([`IkSolutions::measure`]) and, for a six-joint arm, refines the
-//! exact solutions that miss their target by more than rounding ([`IkSolutions::refined`]).
+//! exact solutions that miss their target by more than rounding ([`IkSolutions::refined`], or in
+//! one pass of the lanes where the compiler made the arm's relations exact:
+//! [`IkSolutions::from_lanes_refined`]).
 //!
 //! ```
 //! use kinematics_core::ik::{Arm6, three_parallel_two_intersecting};

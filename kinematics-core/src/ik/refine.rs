@@ -13,14 +13,17 @@
 //!
 //! The solutions are refined side by side, one per lane (`F64x8` in generated code: the eight
 //! branches of a six-joint family at once), each step one pose and Jacobian of every lane, a
-//! linear solve in lanes, and each lane's step kept or dropped on its own.
+//! linear solve in lanes, and each lane's step kept or dropped on its own. A compiled family on an
+//! arm the compiler made exact, whose every solution needs it, is refined in one pass
+//! ([`IkSolutions::from_lanes_refined`]): the measure at the solver's cosines and sines carries the
+//! Jacobian, and the pose after the step is measured at the cosines and sines turned by it, so no
+//! step computes a sine; what is still far then takes the steps above.
 //!
 //! A correction longer than [`LONGEST_CORRECTION`] is not taken: that is no rounding to undo, and
 //! a step that long could leave the branch the solver chose.
 
 use super::ldl::ldl_solve;
-use super::real::IkBranch;
-use super::real::{IkReal, splat_pose};
+use super::real::{IkBranch, IkReal, splat_pose};
 use super::solutions::{IkSolution, IkSolutions, LaneErrors};
 use crate::lanes::Lanes;
 use crate::pose::Pose;
