@@ -94,7 +94,7 @@ fn one_sin_cos_call_for_every_angle_comes_first() {
         let text = source(&file, &Request::all_links(), "all_links");
         // The body as written (a body with block marks is also written in chunks for debug
         // builds, after `#[cfg(debug_assertions)]`: the same statements).
-        let text = text.split("#[cfg(debug_assertions)]").next().unwrap_or_default().to_owned();
+        let text = text.split("#[cfg(debug_assertions)]").next().expect("a split has a first piece").to_owned();
         let lines: Vec<&str> = text.lines().map(str::trim).collect();
         // Every angle in one call: `let ([s1, ..], [c1, ..]) = T::sin_cos_many([q1, ..]);`
         // (one `Real::sin_cos` for a single angle), written over one or more lines.
@@ -211,7 +211,7 @@ fn walk_marks(stmts: &[syn::Stmt], what: &str, marks: &mut Vec<usize>, since: &m
                 }
             },
             syn::Stmt::Expr(expr, Some(_)) if chunk(expr).is_some() => {
-                walk_marks(&chunk(expr).unwrap_or_default(), what, marks, since, last);
+                walk_marks(&chunk(expr).expect("the guard found a chunk"), what, marks, since, last);
             }
             syn::Stmt::Expr(syn::Expr::Call(call), Some(_)) => {
                 let callee = quote::quote!(#call).to_string();

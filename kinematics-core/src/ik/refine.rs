@@ -67,13 +67,7 @@ impl<const N: usize, const M: usize> IkSolutions<N, M> {
         arm: &RefineArm<N>,
         pose_and_jacobian: impl Fn(&[L; N]) -> (Pose<L>, [[L; N]; 6]),
     ) -> Self {
-        let mut pending = [false; M];
-        let mut any = false;
-        for (flag, solution) in pending.iter_mut().zip(self.as_slice()) {
-            *flag =
-                solution.exact && distance(arm.reach, solution.position_error, solution.rotation_error) > REFINE_ABOVE;
-            any |= *flag;
-        }
+        let (mut pending, any) = self.pending(arm.reach);
         if !any {
             return self;
         }
@@ -112,13 +106,7 @@ impl<const N: usize, const M: usize> IkSolutions<N, M> {
         let (pose, jacobian) = reached;
         let mut solutions = Self::from_lanes(branches, pose, target);
         let count = solutions.len();
-        let mut pending = [false; M];
-        let mut any = false;
-        for (flag, solution) in pending.iter_mut().zip(solutions.as_slice()) {
-            *flag =
-                solution.exact && distance(arm.reach, solution.position_error, solution.rotation_error) > REFINE_ABOVE;
-            any |= *flag;
-        }
+        let (mut pending, any) = solutions.pending(arm.reach);
         if !any {
             return solutions;
         }
@@ -145,6 +133,17 @@ impl<const N: usize, const M: usize> IkSolutions<N, M> {
             solutions.refine_lanes(0, count, &mut pending, target, arm, &pose_and_jacobian);
         }
         solutions
+    }
+
+    /// Which solutions to refine (the exact ones farther than [`REFINE_ABOVE`] x `reach` from
+    /// their targets by their errors), and whether any is.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    fn pending(&self, reach: f64) -> ([bool; M], bool) {
+        let mut pending = [false; M];
+        for (flag, solution) in pending.iter_mut().zip(self.as_slice()) {
+            *flag = solution.exact && distance(reach, solution.position_error, solution.rotation_error) > REFINE_ABOVE;
+        }
+        (pending, pending.contains(&true))
     }
 
     /// Refines the pending solutions of `start..end` (at most `L::LANES`), lane `k` solution

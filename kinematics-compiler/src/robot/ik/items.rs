@@ -99,9 +99,10 @@ pub fn emit_ik(
     let doc_nearest = doc_nearest(plan);
     let Solving { bodies, solve_and_measure, branch_fn } = match &compiled {
         Some(body) => {
-            let refinement = refine_arm.map(|arm| Refinement {
+            let refinement = refine_arm.zip(refine.clone()).map(|(arm, steps)| Refinement {
                 arm,
                 pose_and_jacobian,
+                steps,
                 one_pass: measures.pose_and_jacobian.as_ref(),
             });
             solving_compiled(plan, body, measure, forward, refinement.as_ref(), p)
@@ -341,11 +342,13 @@ pub struct Measures {
 }
 
 /// How a compiled family's solutions are refined on the arm as written: what the refinement
-/// takes of the arm, the generic pose and Jacobian at `q`, and the pose and Jacobian at the
-/// solver's cosines and sines, for one pass in lanes where the arm was made exact.
+/// takes of the arm, the generic pose and Jacobian at `q`, the steps on it refining `solutions`
+/// ([`refine`]), and the pose and Jacobian at the solver's cosines and sines, for one pass in
+/// lanes where the arm was made exact.
 struct Refinement<'a> {
     arm: TokenStream,
     pose_and_jacobian: &'a TokenStream,
+    steps: TokenStream,
     one_pass: Option<&'a Measure>,
 }
 
@@ -418,7 +421,7 @@ fn solving_compiled(
         },
         // An arm made exact: its pose and Jacobian at the solver's cosines and sines, one step
         // in every lane, measured by the pose at the cosines and sines turned by it.
-        Some(Refinement { arm, pose_and_jacobian, one_pass: Some(with_jacobian) }) if measure.is_some() => {
+        Some(Refinement { arm, pose_and_jacobian, one_pass: Some(with_jacobian), .. }) if measure.is_some() => {
             bodies.push(emit_measure(with_jacobian, p, tip, base));
             let (mj, m) =
                 (Ident::new(MEASURE_JACOBIAN_BODY, Span::call_site()), Ident::new(MEASURE_BODY, Span::call_site()));
@@ -435,11 +438,10 @@ fn solving_compiled(
                 )
             }
         }
-        Some(Refinement { arm, pose_and_jacobian, .. }) => quote! {
+        Some(Refinement { steps, .. }) => quote! {
             let reached = #reached;
             let solutions = #p::ik::IkSolutions::from_lanes(&branches, &reached, target);
-            // Back to the arm as written where the family's exact relations missed it.
-            solutions.refined::<#p::F64x8>(target, &#arm, #[inline(always)] |q| #pose_and_jacobian(q))
+            #steps
         },
     };
     Solving {
