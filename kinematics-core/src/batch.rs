@@ -123,6 +123,132 @@ where
     Ok(())
 }
 
+/// Whether `f` holds for some configuration of `qs` (`false` for none), `L::LANES`
+/// configurations per call of `f` (`W::LANES` where the CPU has AVX-512, as [`batch_wide`]
+/// chooses), the packs taken in order and the first that answers `true` ending the work: one
+/// verdict shared by every configuration, as a planner validating a path or a batch of samples
+/// wants it. The last pack is filled up with the last configuration.
+///
+/// ```
+/// use kinematics_core::{any_wide, F64x4, F64x8, Lanes};
+/// // Some configuration's first joint beyond 2.5.
+/// fn beyond<L: Lanes<Scalar = f64>>(q: &[L; 2]) -> bool {
+///     (0..L::LANES).any(|i| q[0].lane(i) > 2.5)
+/// }
+/// let qs: Vec<[f64; 2]> = (0..12).map(|i| [0.25 * i as f64, 1.0]).collect(); // to 2.75
+/// assert!(any_wide::<F64x4, F64x8, 2>(&qs, beyond, beyond));
+/// assert!(!any_wide::<F64x4, F64x8, 2>(&qs[..11], beyond, beyond));
+/// assert!(!any_wide::<F64x4, F64x8, 2>(&[], beyond, beyond));
+/// ```
+#[cfg_attr(not(debug_assertions), inline(always))]
+pub fn any_wide<L, W, const N: usize>(
+    qs: &[[L::Scalar; N]],
+    narrow: impl Fn(&[L; N]) -> bool,
+    wide: impl Fn(&[W; N]) -> bool,
+) -> bool
+where
+    L: Lanes,
+    W: Lanes<Scalar = L::Scalar>,
+{
+    on_widest(AnyPack { qs, narrow, wide, lanes: core::marker::PhantomData })
+}
+
+/// [`any_wide`]'s work: its configurations and its two bodies.
+struct AnyPack<'a, L: Lanes, W, const N: usize, F, G> {
+    qs: &'a [[L::Scalar; N]],
+    narrow: F,
+    wide: G,
+    lanes: core::marker::PhantomData<fn(L, W)>,
+}
+
+impl<L, W, const N: usize, F, G> OnLanes for AnyPack<'_, L, W, N, F, G>
+where
+    L: Lanes,
+    W: Lanes<Scalar = L::Scalar>,
+    F: Fn(&[L; N]) -> bool,
+    G: Fn(&[W; N]) -> bool,
+{
+    type Output = bool;
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    fn narrow(self) -> bool {
+        any_pack(self.qs, &self.narrow)
+    }
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    fn wide(self) -> bool {
+        any_pack(self.qs, &self.wide)
+    }
+}
+
+/// Pack and evaluate `L::LANES` configurations at a time until `f` answers `true`.
+#[cfg_attr(not(debug_assertions), inline(always))]
+fn any_pack<L: Lanes, const N: usize>(qs: &[[L::Scalar; N]], f: &impl Fn(&[L; N]) -> bool) -> bool {
+    let Some(last) = qs.len().checked_sub(1) else { return false };
+    (0..qs.len()).step_by(L::LANES).any(|start| (*f)(&Rows(qs).pack(start, last)))
+}
+
+/// Work with two bodies, one on narrow lanes (AVX2 and the baseline) and one on wide lanes
+/// (AVX-512), for [`on_widest`] to run the one that fills the CPU's registers.
+pub(crate) trait OnLanes {
+    /// What the work answers.
+    type Output;
+    /// The work on the narrow lanes.
+    fn narrow(self) -> Self::Output;
+    /// The work on the wide lanes.
+    fn wide(self) -> Self::Output;
+}
+
+/// `job` on the lanes that fill the CPU's registers, chosen as the batches choose them: with the
+/// `dispatch` feature, compiled for each instruction set and chosen at run time (the wide body
+/// under AVX-512, the narrow one under AVX2 and the baseline); without it, or for a target that
+/// has AVX-512 already, the lanes the build's target fills.
+#[cfg_attr(not(debug_assertions), inline(always))]
+pub(crate) fn on_widest<J: OnLanes>(job: J) -> J::Output {
+    #[cfg(all(feature = "dispatch", target_arch = "x86_64", not(target_feature = "avx512f")))]
+    {
+        use pulp::Simd;
+        match pulp::Arch::new() {
+            pulp::Arch::V4(simd) => Simd::vectorize(simd, Wide(job)),
+            pulp::Arch::V3(simd) => Simd::vectorize(simd, Narrow(job)),
+            _ => job.narrow(),
+        }
+    }
+    #[cfg(all(feature = "dispatch", not(target_arch = "x86_64"), not(target_feature = "avx512f")))]
+    {
+        pulp::Arch::new().dispatch(Narrow(job))
+    }
+    #[cfg(any(not(feature = "dispatch"), target_feature = "avx512f"))]
+    {
+        if cfg!(target_feature = "avx512f") { job.wide() } else { job.narrow() }
+    }
+}
+
+/// A job's narrow body as pulp's operation (a closure would not be inlined into pulp's
+/// `#[target_feature]` function; see [`Packs`]).
+#[cfg(feature = "dispatch")]
+struct Narrow<J>(J);
+
+#[cfg(feature = "dispatch")]
+impl<J: OnLanes> pulp::WithSimd for Narrow<J> {
+    type Output = J::Output;
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    fn with_simd<S: pulp::Simd>(self, _: S) -> J::Output {
+        self.0.narrow()
+    }
+}
+
+/// A job's wide body as pulp's operation.
+#[cfg(all(feature = "dispatch", target_arch = "x86_64", not(target_feature = "avx512f")))]
+struct Wide<J>(J);
+
+#[cfg(all(feature = "dispatch", target_arch = "x86_64", not(target_feature = "avx512f")))]
+impl<J: OnLanes> pulp::WithSimd for Wide<J> {
+    type Output = J::Output;
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    fn with_simd<S: pulp::Simd>(self, _: S) -> J::Output {
+        self.0.wide()
+    }
+}
+
 /// Where a batch's configurations come from: packs of `L::LANES` of them as lanes.
 trait Configurations<S: Copy, const N: usize>: Copy {
     /// Configurations `start..start + L::LANES` as lanes, those past `last` replaced by `last`

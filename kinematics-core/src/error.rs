@@ -78,8 +78,8 @@ impl fmt::Display for KinematicsError {
             ),
             KinematicsError::BadResolution { robot, resolution } => write!(
                 f,
-                "robot `{robot}`: a motion's resolution must be positive and finite (the largest joint step \
-                 between checked configurations), not {resolution}"
+                "robot `{robot}`: a motion's resolution (a joint step, or states per unit of joint-space \
+                 distance) must be positive and finite, not {resolution}"
             ),
             KinematicsError::BadMargin { robot, margin } => write!(
                 f,

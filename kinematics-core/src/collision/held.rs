@@ -19,7 +19,7 @@ use core::marker::PhantomData;
 use crate::real::square_root as sqrt;
 
 use super::obstacles::{Environment, SphereObstacle, Vec3};
-use super::verdicts::{CheckLanes, Flags};
+use super::verdicts::{CheckLanes, Flags, Until};
 use crate::pose::Pose;
 
 /// What a compiled robot's `collides` checks it against: the obstacles of an [`Environment`],
@@ -353,14 +353,14 @@ impl HeldObject<'_> {
     /// obstacle of `env` or a link of the robot it is tested against (`links`: each link's
     /// groups and bounding sphere; `groups`, `centers`, `radii` as the tables hold them).
     #[cfg_attr(not(debug_assertions), inline(always))]
-    pub(super) fn hits<L: CheckLanes>(
+    pub(super) fn hits<L: CheckLanes, G: Until>(
         &self,
         tables: &super::CollisionTables<'_>,
         poses: &[Pose<L>],
         env: &Environment<'_>,
         mut hit: L::Flags,
     ) -> L::Flags {
-        if self.spheres.is_empty() || hit.all() {
+        if self.spheres.is_empty() || G::done(hit) {
             return hit;
         }
         let carrier = &poses[self.carrier];
@@ -371,7 +371,7 @@ impl HeldObject<'_> {
         if near.any() {
             for s in self.spheres {
                 hit = hit | (env.hits_lanes(&pose.place(s.center), L::from_f64(s.radius)) & near);
-                if !near.and_not(hit).any() {
+                if G::settled(near, hit) {
                     break;
                 }
             }
@@ -379,7 +379,7 @@ impl HeldObject<'_> {
         // Against the robot's links: each link's bound against the object's, then each sphere of
         // the object against the link's bound, its groups' and their spheres.
         for (k, &(g0, g1, link_center, link_radius)) in tables.links.iter().enumerate() {
-            if hit.all() {
+            if G::done(hit) {
                 return hit;
             }
             if self.skip[k / 64] >> (k % 64) & 1 == 1 {
@@ -406,7 +406,7 @@ impl HeldObject<'_> {
                         let other = poses[k].place(tables.centers[t]);
                         hit = hit
                             | (super::tables::touch(&center, radius, &other, L::from_f64(tables.radii[t])) & close_g);
-                        if !near.and_not(hit).any() {
+                        if G::settled(near, hit) {
                             break 'object;
                         }
                     }

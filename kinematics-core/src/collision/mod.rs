@@ -25,7 +25,9 @@ mod verdicts;
 pub use cloud::PointCloud;
 pub use grid::{MAX_GRIDS, PairGrid};
 pub use held::{Carried, Held, HeldError, HeldLink, HeldObject, HoldTables, Holding, World};
-pub use motion::{Ends, Motion, first_collisions, motion_wide, motions_wide};
+pub use motion::{
+    Ends, Motion, Resolution, first_collisions, motion_any_wide, motion_wide, motions_any_wide, motions_wide,
+};
 pub use obstacles::{
     BoxObstacle, CapsuleObstacle, CylinderObstacle, Environment, ObstacleError, SphereObstacle, SphereQuery, Vec3,
 };

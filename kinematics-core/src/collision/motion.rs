@@ -14,10 +14,10 @@
 use crate::error::KinematicsError;
 use crate::lanes::Lanes;
 use crate::real::Real;
-#[cfg(feature = "dispatch")]
 use core::marker::PhantomData;
 
 use super::verdicts::LaneMask;
+use crate::batch::{OnLanes, on_widest};
 
 /// A straight motion from `q0` to `q1` checked at a resolution: configurations `k = 0..=steps`
 /// at fractions `k / steps`, `steps` the fewest that keep every joint's move between two checked
@@ -41,25 +41,37 @@ pub struct Motion<S, const N: usize> {
 }
 
 impl<S: Real + Into<f64>, const N: usize> Motion<S, N> {
-    /// The motion from `q0` to `q1` at `resolution` (radians or metres per joint, positive and
-    /// finite, else an error naming the robot). A NaN or infinite entry in `q0` or `q1` gives one
-    /// step (both ends checked, and a configuration that is not finite is colliding).
-    pub fn new(robot: &'static str, q0: [S; N], q1: [S; N], resolution: f64) -> Result<Self, KinematicsError> {
+    /// The motion from `q0` to `q1` at `resolution` (a [`Resolution`]; an `f64` is a
+    /// [`Resolution::JointStep`]), its value positive and finite, else an error naming the robot.
+    /// A NaN or infinite entry in `q0` or `q1` gives one step (both ends checked, and a
+    /// configuration that is not finite is colliding).
+    pub fn new(
+        robot: &'static str,
+        q0: [S; N],
+        q1: [S; N],
+        resolution: impl Into<Resolution>,
+    ) -> Result<Self, KinematicsError> {
+        let resolution = resolution.into();
         check_resolution(robot, resolution)?;
         Ok(Self::at(q0, q1, resolution))
     }
 
     /// [`Motion::new`] for a resolution already checked.
-    fn at(q0: [S; N], q1: [S; N], resolution: f64) -> Self {
-        let mut span = 0.0_f64;
+    fn at(q0: [S; N], q1: [S; N], resolution: Resolution) -> Self {
+        let mut largest = 0.0_f64;
+        let mut squares = 0.0_f64;
         for j in 0..N {
             let step = (q1[j].into() - q0[j].into()).abs();
-            // A NaN step makes `span` NaN rather than being skipped (as `f64::max` would).
-            if step.is_nan() || step > span {
-                span = step;
+            squares += step * step;
+            // A NaN step makes `largest` NaN rather than being skipped (as `f64::max` would).
+            if step.is_nan() || step > largest {
+                largest = step;
             }
         }
-        let steps = libm::ceil(span / resolution);
+        let steps = match resolution {
+            Resolution::JointStep(step) => libm::ceil(largest / step),
+            Resolution::StatesPerUnit(states) => libm::ceil(libm::sqrt(squares) * states),
+        };
         // `as` saturates: a span beyond `usize::MAX` resolutions asks for what it asks for.
         let steps = if steps.is_finite() { (steps as usize).max(1) } else { 1 };
         Motion { q0, q1, steps }
@@ -135,12 +147,87 @@ impl<S: Real + Into<f64>, const N: usize> Motion<S, N> {
     }
 }
 
-/// A resolution that is positive and finite, else an error naming the robot.
-fn check_resolution(robot: &'static str, resolution: f64) -> Result<(), KinematicsError> {
-    if resolution.is_finite() && resolution > 0.0 {
+impl<S: Real + Into<f64>, const N: usize> Motion<S, N> {
+    /// Whether some checked configuration collides, `check` answering whether any of
+    /// `L::LANES` configurations does (ending at its first hit on any lane), and the first pack
+    /// with a hit ending the search.
+    ///
+    /// The lanes are spread along the motion (lane `i` in the `i`-th stretch of consecutive
+    /// configurations, `run` of them), and the rounds take the stretches' offsets coarse to fine
+    /// (0, then `run / 2`, then `run / 4` and `3 run / 4`, ..., the bit-reversed order), so the
+    /// first rounds sample the whole motion evenly and a colliding stretch of it is met early,
+    /// wherever it lies. Every configuration is checked once when the motion is free.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    pub fn any_collision<L: Lanes<Scalar = S>>(&self, check: impl Fn(&[L; N]) -> bool) -> bool {
+        let count = self.steps.saturating_add(1);
+        let run = count.div_ceil(L::LANES);
+        // The offsets: 0..2^bits in bit-reversed order, those at or past `run` skipped.
+        let bits = usize::BITS - (run - 1).leading_zeros();
+        for round in 0..(1usize << bits) {
+            let offset = if bits == 0 { 0 } else { round.reverse_bits() >> (usize::BITS - bits) };
+            if offset >= run {
+                continue;
+            }
+            // A lane past the end repeats the last configuration (checked, and the same answer).
+            let mut q = [L::from_fn(|_| self.q0[0]); N];
+            for (j, lanes) in q.iter_mut().enumerate() {
+                *lanes = L::from_fn(|i| self.joint((i * run + offset).min(count - 1), j));
+            }
+            if check(&q) {
+                return true;
+            }
+        }
+        false
+    }
+}
+
+/// A resolution whose value is positive and finite, else an error naming the robot.
+fn check_resolution(robot: &'static str, resolution: Resolution) -> Result<(), KinematicsError> {
+    let value = resolution.value();
+    if value.is_finite() && value > 0.0 {
         Ok(())
     } else {
-        Err(KinematicsError::BadResolution { robot, resolution })
+        Err(KinematicsError::BadResolution { robot, resolution: value })
+    }
+}
+
+/// How finely a straight motion is checked: how many configurations along it, both ends
+/// included, are checked (the motion's `steps + 1`).
+///
+/// ```
+/// use kinematics_core::collision::{Motion, Resolution};
+/// let (q0, q1) = ([0.0_f64, 0.0], [0.3, 0.4]); // 0.5 apart, 0.4 the largest joint move
+/// assert_eq!(Motion::new("demo", q0, q1, Resolution::JointStep(0.1))?.steps(), 4);
+/// assert_eq!(Motion::new("demo", q0, q1, 0.1)?.steps(), 4); // an f64 is a joint step
+/// assert_eq!(Motion::new("demo", q0, q1, Resolution::StatesPerUnit(32.0))?.steps(), 16);
+/// # Ok::<(), kinematics_core::KinematicsError>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Resolution {
+    /// The largest move of any one joint between two checked configurations (radians, or metres
+    /// for a prismatic joint): `steps = ceil(max_j |q1_j - q0_j| / step)`. It bounds every
+    /// joint's move, whatever the others do.
+    JointStep(f64),
+    /// Checked configurations per unit of joint-space distance, the unit VAMP's planners and
+    /// OMPL's motion validators count in (VAMP's default is 32 per radian):
+    /// `steps = ceil(|q1 - q0| * states)`, `|.|` the Euclidean norm over the joints. A motion
+    /// of many joints moving together takes fewer checks than at the same joint step.
+    StatesPerUnit(f64),
+}
+
+impl Resolution {
+    /// The number given (a step or a count per unit).
+    pub fn value(self) -> f64 {
+        match self {
+            Resolution::JointStep(x) | Resolution::StatesPerUnit(x) => x,
+        }
+    }
+}
+
+impl From<f64> for Resolution {
+    /// A joint step.
+    fn from(step: f64) -> Self {
+        Resolution::JointStep(step)
     }
 }
 
@@ -183,12 +270,13 @@ const MOST_LANES: usize = 32;
 #[cfg_attr(not(debug_assertions), inline(always))]
 pub fn first_collisions<L: Lanes, const N: usize>(
     motions: &[Ends<L::Scalar, N>],
-    resolution: f64,
+    resolution: impl Into<Resolution>,
     check: impl Fn(&[L; N]) -> LaneMask,
     out: &mut [Option<f64>],
 ) where
     L::Scalar: Real + Into<f64>,
 {
+    let resolution = resolution.into();
     // Each lane's motion: its index in the batch, the motion, the configuration it is at.
     let mut lanes: [Option<LaneMotion<L::Scalar, N>>; MOST_LANES] = [None; MOST_LANES];
     let mut next = 0;
@@ -264,31 +352,65 @@ where
     W: Lanes<Scalar = L::Scalar>,
     L::Scalar: Real + Into<f64>,
 {
-    #[cfg(all(feature = "dispatch", target_arch = "x86_64", not(target_feature = "avx512f")))]
-    let first = {
-        use pulp::Simd;
-        match pulp::Arch::new() {
-            pulp::Arch::V4(simd) => Simd::vectorize(simd, Search { motion, check: wide, lanes: PhantomData }),
-            pulp::Arch::V3(simd) => Simd::vectorize(simd, Search { motion, check: narrow, lanes: PhantomData }),
-            _ => motion.first_collision(narrow),
-        }
-    };
-    #[cfg(all(feature = "dispatch", not(target_arch = "x86_64"), not(target_feature = "avx512f")))]
-    let first = {
-        let _ = wide;
-        pulp::Arch::new().dispatch(Search { motion, check: narrow, lanes: PhantomData })
-    };
-    // Without dispatch, or with a target that already has AVX-512, the lanes the build's own
-    // target fills.
-    #[cfg(any(not(feature = "dispatch"), target_feature = "avx512f"))]
-    let first = if cfg!(target_feature = "avx512f") {
-        let _ = narrow;
-        motion.first_collision(wide)
-    } else {
-        let _ = wide;
-        motion.first_collision(narrow)
-    };
+    let first = on_widest(Job { motion, narrow, wide, lanes: PhantomData::<fn(L, W)> });
     first.map(|k| motion.fraction(k))
+}
+
+/// Whether some checked configuration of the motion collides, in the lanes the CPU fills (as
+/// [`motion_wide`] chooses them), `narrow` and `wide` answering whether any lane collides
+/// (ending at the first hit on any). See [`Motion::any_collision`] for the order the
+/// configurations are checked in.
+///
+/// ```
+/// use kinematics_core::collision::{motion_any_wide, Motion};
+/// use kinematics_core::{F64x4, F64x8, Lanes};
+/// fn beyond<L: Lanes<Scalar = f64>>(q: &[L; 1]) -> bool {
+///     (0..L::LANES).any(|i| q[0].lane(i) > 0.62)
+/// }
+/// assert!(motion_any_wide::<F64x4, F64x8, 1>(&Motion::new("demo", [0.0], [1.0], 0.05)?, beyond, beyond));
+/// assert!(!motion_any_wide::<F64x4, F64x8, 1>(&Motion::new("demo", [0.0], [0.6], 0.05)?, beyond, beyond));
+/// # Ok::<(), kinematics_core::KinematicsError>(())
+/// ```
+#[cfg_attr(not(debug_assertions), inline(always))]
+pub fn motion_any_wide<L, W, const N: usize>(
+    motion: &Motion<L::Scalar, N>,
+    narrow: impl Fn(&[L; N]) -> bool,
+    wide: impl Fn(&[W; N]) -> bool,
+) -> bool
+where
+    L: Lanes,
+    W: Lanes<Scalar = L::Scalar>,
+    L::Scalar: Real + Into<f64>,
+{
+    on_widest(AnyJob { motion, narrow, wide, lanes: PhantomData::<fn(L, W)> })
+}
+
+/// [`motion_any_wide`] for every motion `(q0, q1)` of `motions` at `resolution`, into `out`
+/// (whether it collides), one motion after another in one dispatched loop (each motion's lanes
+/// spread along it, as [`Motion::any_collision`] takes them). A resolution that is not positive
+/// and finite, or an `out` of another length than `motions`, is an error naming `robot`, and
+/// nothing is written.
+#[cfg_attr(not(debug_assertions), inline(always))]
+pub fn motions_any_wide<L, W, const N: usize>(
+    robot: &'static str,
+    motions: &[Ends<L::Scalar, N>],
+    resolution: impl Into<Resolution>,
+    out: &mut [bool],
+    narrow: impl Fn(&[L; N]) -> bool,
+    wide: impl Fn(&[W; N]) -> bool,
+) -> Result<(), KinematicsError>
+where
+    L: Lanes,
+    W: Lanes<Scalar = L::Scalar>,
+    L::Scalar: Real + Into<f64>,
+{
+    let resolution = resolution.into();
+    check_resolution(robot, resolution)?;
+    if out.len() != motions.len() {
+        return Err(KinematicsError::WrongOutputLength { robot, expected: motions.len(), got: out.len() });
+    }
+    on_widest(AnyJobs { motions, resolution, out, narrow, wide, lanes: PhantomData::<fn(L, W)> });
+    Ok(())
 }
 
 /// [`first_collisions`] in the lanes that fill the CPU's registers (as [`motion_wide`] chooses
@@ -299,7 +421,7 @@ where
 pub fn motions_wide<L, W, const N: usize>(
     robot: &'static str,
     motions: &[Ends<L::Scalar, N>],
-    resolution: f64,
+    resolution: impl Into<Resolution>,
     out: &mut [Option<f64>],
     narrow: impl Fn(&[L; N]) -> LaneMask,
     wide: impl Fn(&[W; N]) -> LaneMask,
@@ -309,79 +431,131 @@ where
     W: Lanes<Scalar = L::Scalar>,
     L::Scalar: Real + Into<f64>,
 {
+    let resolution = resolution.into();
     check_resolution(robot, resolution)?;
     if out.len() != motions.len() {
         return Err(KinematicsError::WrongOutputLength { robot, expected: motions.len(), got: out.len() });
     }
-    #[cfg(all(feature = "dispatch", target_arch = "x86_64", not(target_feature = "avx512f")))]
-    {
-        use pulp::Simd;
-        match pulp::Arch::new() {
-            pulp::Arch::V4(simd) => {
-                Simd::vectorize(simd, Searches { motions, resolution, out, check: wide, lanes: PhantomData })
-            }
-            pulp::Arch::V3(simd) => {
-                Simd::vectorize(simd, Searches { motions, resolution, out, check: narrow, lanes: PhantomData })
-            }
-            _ => first_collisions(motions, resolution, narrow, out),
-        }
-    }
-    #[cfg(all(feature = "dispatch", not(target_arch = "x86_64"), not(target_feature = "avx512f")))]
-    {
-        let _ = wide;
-        pulp::Arch::new().dispatch(Searches { motions, resolution, out, check: narrow, lanes: PhantomData });
-    }
-    #[cfg(any(not(feature = "dispatch"), target_feature = "avx512f"))]
-    if cfg!(target_feature = "avx512f") {
-        let _ = narrow;
-        first_collisions(motions, resolution, wide, out);
-    } else {
-        let _ = wide;
-        first_collisions(motions, resolution, narrow, out);
-    }
+    on_widest(Jobs { motions, resolution, out, narrow, wide, lanes: PhantomData::<fn(L, W)> });
     Ok(())
 }
 
-/// [`first_collisions`] as pulp's operation.
-#[cfg(feature = "dispatch")]
-struct Searches<'a, S, const N: usize, L, F> {
-    motions: &'a [Ends<S, N>],
-    resolution: f64,
-    out: &'a mut [Option<f64>],
-    check: F,
-    lanes: PhantomData<fn() -> L>,
-}
-
-#[cfg(feature = "dispatch")]
-impl<S: Real + Into<f64>, const N: usize, L: Lanes<Scalar = S>, F: Fn(&[L; N]) -> LaneMask> pulp::WithSimd
-    for Searches<'_, S, N, L, F>
-{
-    type Output = ();
-    #[cfg_attr(not(debug_assertions), inline(always))]
-    fn with_simd<Q: pulp::Simd>(self, _: Q) {
-        first_collisions(self.motions, self.resolution, self.check, self.out);
-    }
-}
-
-/// [`Motion::first_collision`] as pulp's operation. The check is held by value: called through a
-/// reference it went through `<&F as Fn>::call`, a shim LLVM did not inline into pulp's
-/// `#[target_feature]` function, so the whole check ran compiled for the baseline (measured: the
-/// Panda's motions 2.7 times slower per configuration than its batch).
-#[cfg(feature = "dispatch")]
-struct Search<'a, S, const N: usize, L, F> {
+/// [`motion_wide`]'s work. The checks are held by value: called through a reference they went
+/// through `<&F as Fn>::call`, a shim LLVM did not inline into pulp's `#[target_feature]`
+/// function, so the whole check ran compiled for the baseline (measured: the Panda's motions 2.7
+/// times slower per configuration than its batch).
+struct Job<'a, S, const N: usize, F, G, P> {
     motion: &'a Motion<S, N>,
-    check: F,
-    lanes: PhantomData<fn() -> L>,
+    narrow: F,
+    wide: G,
+    lanes: PhantomData<P>,
 }
 
-#[cfg(feature = "dispatch")]
-impl<S: Real + Into<f64>, const N: usize, L: Lanes<Scalar = S>, F: Fn(&[L; N]) -> LaneMask> pulp::WithSimd
-    for Search<'_, S, N, L, F>
+impl<S, const N: usize, L, W, F, G> OnLanes for Job<'_, S, N, F, G, fn(L, W)>
+where
+    S: Real + Into<f64>,
+    L: Lanes<Scalar = S>,
+    W: Lanes<Scalar = S>,
+    F: Fn(&[L; N]) -> LaneMask,
+    G: Fn(&[W; N]) -> LaneMask,
 {
     type Output = Option<usize>;
     #[cfg_attr(not(debug_assertions), inline(always))]
-    fn with_simd<Q: pulp::Simd>(self, _: Q) -> Option<usize> {
-        self.motion.first_collision(self.check)
+    fn narrow(self) -> Option<usize> {
+        self.motion.first_collision(self.narrow)
+    }
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    fn wide(self) -> Option<usize> {
+        self.motion.first_collision(self.wide)
+    }
+}
+
+/// [`motions_wide`]'s work.
+struct Jobs<'a, S, const N: usize, F, G, P> {
+    motions: &'a [Ends<S, N>],
+    resolution: Resolution,
+    out: &'a mut [Option<f64>],
+    narrow: F,
+    wide: G,
+    lanes: PhantomData<P>,
+}
+
+impl<S, const N: usize, L, W, F, G> OnLanes for Jobs<'_, S, N, F, G, fn(L, W)>
+where
+    S: Real + Into<f64>,
+    L: Lanes<Scalar = S>,
+    W: Lanes<Scalar = S>,
+    F: Fn(&[L; N]) -> LaneMask,
+    G: Fn(&[W; N]) -> LaneMask,
+{
+    type Output = ();
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    fn narrow(self) {
+        first_collisions(self.motions, self.resolution, self.narrow, self.out);
+    }
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    fn wide(self) {
+        first_collisions(self.motions, self.resolution, self.wide, self.out);
+    }
+}
+
+/// [`motion_any_wide`]'s work: one motion, already made.
+struct AnyJob<'a, S, const N: usize, F, G, P> {
+    motion: &'a Motion<S, N>,
+    narrow: F,
+    wide: G,
+    lanes: PhantomData<P>,
+}
+
+impl<S, const N: usize, L, W, F, G> OnLanes for AnyJob<'_, S, N, F, G, fn(L, W)>
+where
+    S: Real + Into<f64>,
+    L: Lanes<Scalar = S>,
+    W: Lanes<Scalar = S>,
+    F: Fn(&[L; N]) -> bool,
+    G: Fn(&[W; N]) -> bool,
+{
+    type Output = bool;
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    fn narrow(self) -> bool {
+        self.motion.any_collision(self.narrow)
+    }
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    fn wide(self) -> bool {
+        self.motion.any_collision(self.wide)
+    }
+}
+
+/// [`motions_any_wide`]'s work.
+struct AnyJobs<'a, S, const N: usize, F, G, P> {
+    motions: &'a [Ends<S, N>],
+    resolution: Resolution,
+    out: &'a mut [bool],
+    narrow: F,
+    wide: G,
+    lanes: PhantomData<P>,
+}
+
+impl<S, const N: usize, L, W, F, G> OnLanes for AnyJobs<'_, S, N, F, G, fn(L, W)>
+where
+    S: Real + Into<f64>,
+    L: Lanes<Scalar = S>,
+    W: Lanes<Scalar = S>,
+    F: Fn(&[L; N]) -> bool,
+    G: Fn(&[W; N]) -> bool,
+{
+    type Output = ();
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    fn narrow(self) {
+        for ((q0, q1), out) in self.motions.iter().zip(self.out) {
+            *out = Motion::at(*q0, *q1, self.resolution).any_collision(&self.narrow);
+        }
+    }
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    fn wide(self) {
+        for ((q0, q1), out) in self.motions.iter().zip(self.out) {
+            *out = Motion::at(*q0, *q1, self.resolution).any_collision(&self.wide);
+        }
     }
 }
 
@@ -404,6 +578,51 @@ mod tests {
                 Motion::new("t", [0.0], [1.0], bad),
                 Err(KinematicsError::BadResolution { robot: "t", .. })
             ));
+        }
+    }
+
+    /// The shared search against a scan: on motions of 1 to 70 steps and two lane widths, it
+    /// answers whether some configuration of a drawn set collides; on a free motion it checks
+    /// every configuration, each in exactly one round; and the first round samples the motion
+    /// evenly (one configuration per lane's stretch).
+    #[test]
+    fn the_shared_search_answers_whether_any_configuration_collides() {
+        use std::cell::RefCell;
+        let mut rng = crate::splitmix::SplitMix(0x616e_79);
+        let mut draw = || (rng.next() * 2f64.powi(53)) as u64;
+        fn check<L: Lanes<Scalar = f64>>(set: u128, seen: &RefCell<std::vec::Vec<usize>>) -> impl Fn(&[L; 1]) -> bool {
+            move |q: &[L; 1]| {
+                let mut any = false;
+                for i in 0..L::LANES {
+                    let (x, k) = (q[0].lane(i), q[0].lane(i).round());
+                    assert!(k >= 0.0 && (x - k).abs() < 1e-9, "{x}");
+                    seen.borrow_mut().push(k as usize);
+                    any |= set >> (k as u32) & 1 == 1;
+                }
+                any
+            }
+        }
+        for steps in 1..=70_usize {
+            let motion = Motion::new("t", [0.0_f64], [steps as f64], 1.0).unwrap();
+            for round in 0..30 {
+                let mask = (1u128 << (steps + 1)) - 1;
+                let set = if round == 0 { 0 } else { (u128::from(draw()) << 64 | u128::from(draw())) & mask };
+                let set = if round % 2 == 1 { set & (u128::from(draw()) << 64 | u128::from(draw())) } else { set };
+                let seen = RefCell::new(std::vec::Vec::new());
+                let four = motion.any_collision::<F64x4>(check(set, &seen));
+                let first = seen.borrow().iter().take(4).copied().collect::<std::vec::Vec<_>>();
+                let eight = motion.any_collision::<F64x8>(check(set, &RefCell::new(std::vec::Vec::new())));
+                assert_eq!((four, eight), (set != 0, set != 0), "{steps} steps, set {set:b}");
+                let run = (steps + 1).div_ceil(4);
+                let spread: std::vec::Vec<usize> = (0..4).map(|i| (i * run).min(steps)).collect();
+                assert_eq!(first, spread, "the first round, {steps} steps");
+                if set == 0 {
+                    let mut every = seen.into_inner();
+                    every.sort_unstable();
+                    every.dedup();
+                    assert_eq!(every, (0..=steps).collect::<std::vec::Vec<_>>(), "{steps} steps");
+                }
+            }
         }
     }
 

@@ -15,8 +15,9 @@
 use super::grid::{GridVerdicts, PairGrid};
 use super::held::HeldObject;
 use super::obstacles::{Environment, Obstacle, Prepared, SphereQuery, Vec3, Visit, query_lanes};
-use super::verdicts::{CheckLanes, Flags, LaneMask, non_finite_entries};
+use super::verdicts::{AnyLane, CheckLanes, EveryLane, Flags, LaneMask, Until, non_finite_entries};
 use crate::pose::Pose;
+use core::marker::PhantomData;
 
 /// A compiled robot's collision tables, as its generated code holds them: each link with spheres
 /// (its range of groups, its bounding sphere's centre in the link's frame and radius), each group
@@ -91,18 +92,20 @@ impl CollisionTables<'_> {
         env: &Environment<'_>,
         held: Option<HeldObject<'_>>,
     ) -> LaneMask {
-        let poses = fence(poses);
-        let at = Placing { tables: self, poses };
-        // The grids first: a lookup per configuration, which may settle some before any test.
-        let grids = GridVerdicts::of(self.grids, q);
-        let mut hit = self.obstacle_hits(&at, env, non_finite_entries(q) | L::Flags::from_mask(grids.colliding));
-        if let Some(held) = held {
-            hit = held.hits(self, poses, env, hit);
-        }
-        if hit.all() {
-            return hit.bits();
-        }
-        self.self_hits(&at, hit, &grids).bits()
+        self.world::<L, EveryLane>(q, poses, env, held).bits()
+    }
+
+    /// Whether some lane of [`CollisionTables::collides`] collides: one verdict for the pack,
+    /// the check ending at the first hit on any lane (the lanes then left undecided).
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    pub fn collides_any<L: CheckLanes>(
+        &self,
+        q: &[L],
+        poses: &[Pose<L>],
+        env: &Environment<'_>,
+        held: Option<HeldObject<'_>>,
+    ) -> bool {
+        self.world::<L, AnyLane>(q, poses, env, held).any()
     }
 
     /// [`CollisionTables::collides`] on the robot's points as the generated
@@ -117,34 +120,105 @@ impl CollisionTables<'_> {
         env: &Environment<'_>,
         held: Option<(HeldObject<'_>, &[Pose<L>])>,
     ) -> LaneMask {
-        let at = Placed::new(self, fence(points));
-        let grids = GridVerdicts::of(self.grids, q);
-        let mut hit = self.obstacle_hits(&at, env, non_finite_entries(q) | L::Flags::from_mask(grids.colliding));
-        if let Some((held, poses)) = held {
-            hit = held.hits(self, poses, env, hit);
-        }
-        if hit.all() {
-            return hit.bits();
-        }
-        self.self_hits(&at, hit, &grids).bits()
+        self.world_points::<L, EveryLane>(q, points, env, held).bits()
+    }
+
+    /// [`CollisionTables::collides_any`] on the robot's points (see
+    /// [`CollisionTables::collides_points`]).
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    pub fn collides_points_any<L: CheckLanes>(
+        &self,
+        q: &[L],
+        points: &[[L; 3]],
+        env: &Environment<'_>,
+        held: Option<(HeldObject<'_>, &[Pose<L>])>,
+    ) -> bool {
+        self.world_points::<L, AnyLane>(q, points, env, held).any()
     }
 
     /// [`CollisionTables::self_collides`] on the robot's points (see
     /// [`CollisionTables::collides_points`]).
     #[cfg_attr(not(debug_assertions), inline(always))]
     pub fn self_collides_points<L: CheckLanes>(&self, q: &[L], points: &[[L; 3]]) -> LaneMask {
-        let grids = GridVerdicts::of(self.grids, q);
         let at = Placed::new(self, fence(points));
-        self.self_hits(&at, non_finite_entries(q) | L::Flags::from_mask(grids.colliding), &grids).bits()
+        self.itself::<L, _, EveryLane>(q, &at).bits()
+    }
+
+    /// [`CollisionTables::self_collides_any`] on the robot's points (see
+    /// [`CollisionTables::collides_points`]).
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    pub fn self_collides_points_any<L: CheckLanes>(&self, q: &[L], points: &[[L; 3]]) -> bool {
+        let at = Placed::new(self, fence(points));
+        self.itself::<L, _, AnyLane>(q, &at).any()
     }
 
     /// The lanes where two links of a checked pair of the robot at `q` touch. A lane whose `q` is
     /// not finite is colliding.
     #[cfg_attr(not(debug_assertions), inline(always))]
     pub fn self_collides<L: CheckLanes>(&self, q: &[L], poses: &[Pose<L>]) -> LaneMask {
-        let grids = GridVerdicts::of(self.grids, q);
         let at = Placing { tables: self, poses: fence(poses) };
-        self.self_hits(&at, non_finite_entries(q) | L::Flags::from_mask(grids.colliding), &grids).bits()
+        self.itself::<L, _, EveryLane>(q, &at).bits()
+    }
+
+    /// Whether some lane of [`CollisionTables::self_collides`] collides, the check ending at the
+    /// first hit on any lane.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    pub fn self_collides_any<L: CheckLanes>(&self, q: &[L], poses: &[Pose<L>]) -> bool {
+        let at = Placing { tables: self, poses: fence(poses) };
+        self.itself::<L, _, AnyLane>(q, &at).any()
+    }
+
+    /// The check against obstacles and itself on centres placed from `poses`, until `G` says.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    fn world<L: CheckLanes, G: Until>(
+        &self,
+        q: &[L],
+        poses: &[Pose<L>],
+        env: &Environment<'_>,
+        held: Option<HeldObject<'_>>,
+    ) -> L::Flags {
+        let poses = fence(poses);
+        let at = Placing { tables: self, poses };
+        // The grids first: a lookup per configuration, which may settle some before any test.
+        let grids = GridVerdicts::of(self.grids, q);
+        let mut hit =
+            self.obstacle_hits::<L, _, G>(&at, env, non_finite_entries(q) | L::Flags::from_mask(grids.colliding));
+        if let Some(held) = held {
+            hit = held.hits::<L, G>(self, poses, env, hit);
+        }
+        if G::done(hit) {
+            return hit;
+        }
+        self.self_hits::<L, _, G>(&at, hit, &grids)
+    }
+
+    /// The check against obstacles and itself on the points computed ahead, until `G` says.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    fn world_points<L: CheckLanes, G: Until>(
+        &self,
+        q: &[L],
+        points: &[[L; 3]],
+        env: &Environment<'_>,
+        held: Option<(HeldObject<'_>, &[Pose<L>])>,
+    ) -> L::Flags {
+        let at = Placed::new(self, fence(points));
+        let grids = GridVerdicts::of(self.grids, q);
+        let mut hit =
+            self.obstacle_hits::<L, _, G>(&at, env, non_finite_entries(q) | L::Flags::from_mask(grids.colliding));
+        if let Some((held, poses)) = held {
+            hit = held.hits::<L, G>(self, poses, env, hit);
+        }
+        if G::done(hit) {
+            return hit;
+        }
+        self.self_hits::<L, _, G>(&at, hit, &grids)
+    }
+
+    /// The self check at `q` on centres from `at`, until `G` says.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    fn itself<L: CheckLanes, C: Centers<L>, G: Until>(&self, q: &[L], at: &C) -> L::Flags {
+        let grids = GridVerdicts::of(self.grids, q);
+        self.self_hits::<L, C, G>(at, non_finite_entries(q) | L::Flags::from_mask(grids.colliding), &grids)
     }
 
     /// `hit` and the lanes where a sphere touches an obstacle: a few links at a time (their
@@ -153,13 +227,13 @@ impl CollisionTables<'_> {
     /// each obstacle prepared once in lanes and tested against each link's bounding sphere, then
     /// against its spheres only where that hits.
     #[cfg_attr(not(debug_assertions), inline(always))]
-    fn obstacle_hits<L: CheckLanes, C: Centers<L>>(
+    fn obstacle_hits<L: CheckLanes, C: Centers<L>, G: Until>(
         &self,
         at: &C,
         env: &Environment<'_>,
         mut hit: L::Flags,
     ) -> L::Flags {
-        if hit.all() || env.is_empty() {
+        if G::done(hit) || env.is_empty() {
             return hit;
         }
         let extent = env.extent.map(|extent| extent.prepare::<L>());
@@ -183,7 +257,8 @@ impl CollisionTables<'_> {
                         listed += 1;
                     }
                 }
-                let chunk = Chunk { tables: self, at, first, bounds: &bounds, list: &near[..listed] };
+                let chunk =
+                    Chunk { tables: self, at, first, bounds: &bounds, list: &near[..listed], until: PhantomData::<G> };
                 hit = chunk.against(env.spheres, hit);
                 hit = chunk.against(env.capsules, hit);
                 hit = chunk.against(env.cylinders, hit);
@@ -194,10 +269,11 @@ impl CollisionTables<'_> {
                 for (i, slot) in (0..).zip(&mut every) {
                     *slot = i;
                 }
-                hit =
-                    Chunk { tables: self, at, first, bounds: &bounds, list: &every[..count] }.against_query(query, hit);
+                let chunk =
+                    Chunk { tables: self, at, first, bounds: &bounds, list: &every[..count], until: PhantomData::<G> };
+                hit = chunk.against_query(query, hit);
             }
-            if hit.all() {
+            if G::done(hit) {
                 return hit;
             }
         }
@@ -210,7 +286,12 @@ impl CollisionTables<'_> {
     /// groups: each of the first's against the second group's bounding sphere, and where that
     /// touches, against each of the second's.
     #[cfg_attr(not(debug_assertions), inline(always))]
-    fn self_hits<L: CheckLanes, C: Centers<L>>(&self, at: &C, mut hit: L::Flags, grids: &GridVerdicts) -> L::Flags {
+    fn self_hits<L: CheckLanes, C: Centers<L>, G: Until>(
+        &self,
+        at: &C,
+        mut hit: L::Flags,
+        grids: &GridVerdicts,
+    ) -> L::Flags {
         // Filled anew for each pair of groups; made once (zeroing it per pair was measured).
         let mut placed = [([L::from_f64(0.0); 3], L::from_f64(0.0)); PLACED];
         // The compiler's pairs come sorted by their first link: its bound is placed once for
@@ -219,7 +300,7 @@ impl CollisionTables<'_> {
         // array, was measured slower (1.6x in `F32x8` lanes, 1.05x in `F32x16`).
         let (mut last, mut bound_i) = (usize::MAX, [L::from_f64(0.0); 3]);
         for (pair, &(i, j)) in self.pairs.iter().enumerate() {
-            if hit.all() {
+            if G::done(hit) {
                 return hit;
             }
             let to_test = L::Flags::from_mask(grids.tested(self.grids, pair)).and_not(hit);
@@ -272,7 +353,7 @@ impl CollisionTables<'_> {
                             }
                             for (other, r_other) in &placed[..count] {
                                 hit = hit | (touch(&center, r, other, *r_other) & close_s);
-                                if !near.and_not(hit).any() {
+                                if G::settled(near, hit) {
                                     break 'pair;
                                 }
                             }
@@ -306,15 +387,16 @@ pub(super) fn fence<T: ?Sized>(poses: &T) -> &T {
 /// Consecutive links of a check from `first`, their bounding spheres placed, and which of them
 /// (positions in `bounds`) the tests take.
 #[derive(Clone, Copy)]
-struct Chunk<'c, 't, L, C> {
+struct Chunk<'c, 't, L, C, G> {
     tables: &'c CollisionTables<'t>,
     at: &'c C,
     first: usize,
     bounds: &'c [([L; 3], L)],
     list: &'c [u8],
+    until: PhantomData<G>,
 }
 
-impl<L: CheckLanes, C: Centers<L>> Chunk<'_, '_, L, C> {
+impl<L: CheckLanes, C: Centers<L>, G: Until> Chunk<'_, '_, L, C, G> {
     /// `hit` and the lanes where one of the links' spheres touches one of `obstacles`: per
     /// obstacle (prepared once), each link's bounding sphere first, then its spheres (placed as
     /// they are tested) on the lanes it hits until each of them is decided.
@@ -323,7 +405,7 @@ impl<L: CheckLanes, C: Centers<L>> Chunk<'_, '_, L, C> {
         let mut visit = Against { chunk: self, hit };
         for obstacle in obstacles {
             obstacle.prepare(&mut visit);
-            if visit.hit.all() {
+            if G::done(visit.hit) {
                 break;
             }
         }
@@ -331,13 +413,13 @@ impl<L: CheckLanes, C: Centers<L>> Chunk<'_, '_, L, C> {
     }
 }
 
-impl<L: CheckLanes, C: Centers<L>> Chunk<'_, '_, L, C> {
+impl<L: CheckLanes, C: Centers<L>, G: Until> Chunk<'_, '_, L, C, G> {
     /// `hit` and the lanes where one of the links' spheres touches an obstacle of `query`: each
     /// link's bounding sphere asked first, then its spheres on the lanes it touches, one lane at
     /// a time.
     #[cfg_attr(not(debug_assertions), inline(always))]
     fn against_query(&self, query: &dyn SphereQuery, mut hit: L::Flags) -> L::Flags {
-        let Chunk { tables, at, first, bounds, list } = *self;
+        let Chunk { tables, at, first, bounds, list, .. } = *self;
         for &i in list {
             let (k, (bound, radius)) = (first + usize::from(i), bounds[usize::from(i)]);
             let near = query_lanes(query, &bound, radius, !hit.bits());
@@ -350,11 +432,11 @@ impl<L: CheckLanes, C: Centers<L>> Chunk<'_, '_, L, C> {
                 let center = at.sphere(k, s);
                 let asked = near.and_not(hit).bits();
                 hit = hit | query_lanes(query, &center, L::from_f64(tables.radii[s]), asked);
-                if !near.and_not(hit).any() {
+                if G::settled(near, hit) {
                     break;
                 }
             }
-            if hit.all() {
+            if G::done(hit) {
                 break;
             }
         }
@@ -363,15 +445,15 @@ impl<L: CheckLanes, C: Centers<L>> Chunk<'_, '_, L, C> {
 }
 
 /// A chunk of links tested against one prepared obstacle after another.
-struct Against<'a, 'c, 't, L: CheckLanes, C> {
-    chunk: &'a Chunk<'c, 't, L, C>,
+struct Against<'a, 'c, 't, L: CheckLanes, C, G> {
+    chunk: &'a Chunk<'c, 't, L, C, G>,
     hit: L::Flags,
 }
 
-impl<L: CheckLanes, C: Centers<L>> Visit<L> for Against<'_, '_, '_, L, C> {
+impl<L: CheckLanes, C: Centers<L>, G: Until> Visit<L> for Against<'_, '_, '_, L, C, G> {
     #[cfg_attr(not(debug_assertions), inline(always))]
     fn visit<P: Prepared<L>>(&mut self, prepared: &P) {
-        let Chunk { tables, at, first, bounds, list } = *self.chunk;
+        let Chunk { tables, at, first, bounds, list, .. } = *self.chunk;
         let mut hit = self.hit;
         for &i in list {
             let (k, (bound, radius)) = (first + usize::from(i), &bounds[usize::from(i)]);
@@ -386,11 +468,11 @@ impl<L: CheckLanes, C: Centers<L>> Visit<L> for Against<'_, '_, '_, L, C> {
             for s in start..end {
                 let center = at.sphere(k, s);
                 hit = hit | (prepared.hits(&center, L::from_f64(tables.radii[s])) & near);
-                if !near.and_not(hit).any() {
+                if G::settled(near, hit) {
                     break;
                 }
             }
-            if hit.all() {
+            if G::done(hit) {
                 break;
             }
         }
@@ -506,16 +588,23 @@ mod tests {
         env: &Environment<'_>,
     ) -> LaneMask {
         let by_poses = tables.collides(q, poses, env, None);
-        let by_points = tables.collides_points(q, &points_of(tables, poses), env, None);
+        let points = points_of(tables, poses);
+        let by_points = tables.collides_points(q, &points, env, None);
         assert_eq!(by_points.bits(), by_poses.bits(), "collides_points against collides");
+        // The shared verdicts: some lane colliding, whichever lane it is.
+        assert_eq!(tables.collides_any(q, poses, env, None), by_poses.any(), "collides_any");
+        assert_eq!(tables.collides_points_any(q, &points, env, None), by_poses.any(), "collides_points_any");
         by_poses
     }
 
     /// `tables.self_collides` on `poses`, asserted equal to `self_collides_points`.
     fn self_collides<L: CheckLanes>(tables: &CollisionTables<'_>, q: &[L], poses: &[Pose<L>]) -> LaneMask {
         let by_poses = tables.self_collides(q, poses);
-        let by_points = tables.self_collides_points(q, &points_of(tables, poses));
+        let points = points_of(tables, poses);
+        let by_points = tables.self_collides_points(q, &points);
         assert_eq!(by_points.bits(), by_poses.bits(), "self_collides_points against self_collides");
+        assert_eq!(tables.self_collides_any(q, poses), by_poses.any(), "self_collides_any");
+        assert_eq!(tables.self_collides_points_any(q, &points), by_poses.any(), "self_collides_points_any");
         by_poses
     }
 

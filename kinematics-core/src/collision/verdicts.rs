@@ -155,6 +155,46 @@ impl Flags for bool {
     }
 }
 
+/// When a check on lanes may stop: [`EveryLane`] when every lane is colliding (each lane's own
+/// verdict), [`AnyLane`] at the first hit on any lane (one verdict shared by the pack, as a
+/// planner validating a motion or a batch of states wants it).
+pub(crate) trait Until: Copy {
+    /// Whether the check is done with these flags (set: colliding).
+    fn done<F: Flags>(hit: F) -> bool;
+    /// Whether a test of the lanes `near` is done: each of them hit, or the check itself done.
+    fn settled<F: Flags>(near: F, hit: F) -> bool;
+}
+
+/// Every lane its own verdict: done when all of them collide.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct EveryLane;
+
+impl Until for EveryLane {
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    fn done<F: Flags>(hit: F) -> bool {
+        hit.all()
+    }
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    fn settled<F: Flags>(near: F, hit: F) -> bool {
+        !near.and_not(hit).any()
+    }
+}
+
+/// One verdict for the pack: done at the first hit on any lane.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct AnyLane;
+
+impl Until for AnyLane {
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    fn done<F: Flags>(hit: F) -> bool {
+        hit.any()
+    }
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    fn settled<F: Flags>(_: F, hit: F) -> bool {
+        hit.any()
+    }
+}
+
 /// What a collision check needs of a scalar or lane type beyond [`Real`]: lane-wise clamps and a
 /// comparison answering with [`Flags`]. Implemented for `f64` and `f32` (one lane, a `bool`) and
 /// for [`F64x4`], [`F64x8`], [`F32x8`] and [`F32x16`].
