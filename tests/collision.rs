@@ -323,6 +323,45 @@ macro_rules! checks {
                 ];
                 assert_eq!(four, verdicts, "four lanes");
                 assert_eq!(eight, verdicts, "eight lanes");
+                // The shared verdicts: on windows of every length up to 40 (so packs end at
+                // every lane and hits sit anywhere in a pack), each the `any` of the window's own.
+                for start in (0..qs.len()).step_by(13) {
+                    for end in start..=qs.len().min(start + 40) {
+                        let window = &qs[start..end];
+                        let any = |v: &[bool]| v[start..end].iter().any(|&x| x);
+                        assert_eq!(
+                            <$robot>::collides_any(window, env),
+                            any(&verdicts[0]),
+                            "collides_any {start}..{end}"
+                        );
+                        assert_eq!(<$robot>::self_collides_any(window), any(&verdicts[1]), "self_collides_any");
+                    }
+                }
+                fn any_packs<L: kinematics::Lanes<Scalar = f64>, const N: usize>(
+                    qs: &[[f64; N]],
+                    check: impl Fn(&[L; N]) -> bool,
+                ) -> Vec<bool> {
+                    (0..qs.len())
+                        .step_by(L::LANES)
+                        .map(|start| {
+                            check(&std::array::from_fn(|j| L::from_fn(|i| qs[(start + i).min(qs.len() - 1)][j])))
+                        })
+                        .collect()
+                }
+                let packed =
+                    |v: &[bool], width: usize| v.chunks(width).map(|c| c.iter().any(|&x| x)).collect::<Vec<_>>();
+                assert_eq!(
+                    any_packs::<F64x4, $n>(qs, |q| <$robot>::collides_any_generic(q, env)),
+                    packed(&verdicts[0], 4)
+                );
+                assert_eq!(
+                    any_packs::<F64x4, $n>(qs, |q| <$robot>::self_collides_any_generic(q)),
+                    packed(&verdicts[1], 4)
+                );
+                assert_eq!(
+                    any_packs::<kinematics::F64x8, $n>(qs, |q| <$robot>::collides_any_generic(q, env)),
+                    packed(&verdicts[0], 8)
+                );
                 let [collides, itself] = verdicts;
                 (collides, itself)
             }
@@ -358,6 +397,16 @@ fn checks<R: Checks<N>, const N: usize>(cover: f64, seed: u64, srdf: Option<&str
         let qs: Vec<[f64; N]> =
             Configurations::new(tree).skip(100 * round).take(301).map(|q| q.try_into().unwrap()).collect();
         let (collides, itself) = R::batches(&qs, &env);
+        // The obstacles in the opposite order, every list reversed: the same verdicts.
+        let (s, c, y, b) = (&o.spheres, &o.capsules, &o.cylinders, &o.boxes);
+        let (s, c, y, b): (Vec<_>, Vec<_>, Vec<_>, Vec<_>) = (
+            s.iter().rev().copied().collect(),
+            c.iter().rev().copied().collect(),
+            y.iter().rev().copied().collect(),
+            b.iter().rev().copied().collect(),
+        );
+        let reversed = Environment::new(&s, &c, &y, &b).unwrap();
+        assert_eq!(R::batches(&qs, &reversed).0, collides, "the obstacles in the opposite order");
         for (k, q) in qs.iter().enumerate() {
             assert_eq!((collides[k], itself[k]), (R::collides(q, &env), R::self_collides(q)), "batch at {q:?}");
             let d = reference.obstacle_distance(q, &spheres, &reference_obstacles).unwrap();

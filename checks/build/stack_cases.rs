@@ -282,7 +282,11 @@ fn collision_call(d: &Derived<'_>, function: CollisionFunction, form: &Form, nam
          let boxes = [::kinematics::collision::BoxObstacle::from_pose(identity, [0.5, 0.0, 0.2], [0.2, 0.3, 0.4])]; \
          let env = ::kinematics::collision::Environment::new(&balls, &[], &[], &boxes).expect(\"a valid scene\"); \
          let _ = &env;";
-    let world = if function == CollisionFunction::SelfCollides { "" } else { ", &env" };
+    let world = if matches!(function, CollisionFunction::SelfCollides | CollisionFunction::SelfCollidesAny) {
+        ""
+    } else {
+        ", &env"
+    };
     let call = match (function, form) {
         (CollisionFunction::Collides | CollisionFunction::SelfCollides, Form::Typed(_)) => {
             format!("let value = {ty}::{name}(&{q}{world}); ::std::hint::black_box(&value);")
@@ -297,14 +301,21 @@ fn collision_call(d: &Derived<'_>, function: CollisionFunction, form: &Form, nam
         (CollisionFunction::Collides | CollisionFunction::SelfCollides, Form::Generic) => {
             format!("let value = {ty}::{name}(&lanes{world}); ::std::hint::black_box(&value);")
         }
-        (CollisionFunction::MotionCollides, Form::Batch(_)) => {
+        (CollisionFunction::CollidesAny | CollisionFunction::SelfCollidesAny, Form::Generic) => {
+            format!("let value = {ty}::{name}(&lanes{world}); ::std::hint::black_box(&value);")
+        }
+        (CollisionFunction::CollidesAny | CollisionFunction::SelfCollidesAny, _) => {
+            format!("let value = {ty}::{name}(&{qs}{world}); ::std::hint::black_box(&value);")
+        }
+        (CollisionFunction::MotionCollides | CollisionFunction::MotionCollidesAny, Form::Batch(_)) => {
             let zero = if q == "q32" { "0.0f32" } else { "0.0f64" };
+            let none = if function == CollisionFunction::MotionCollides { "None" } else { "false" };
             format!(
-                "let motions = vec![({q}, {q}.map(|x| -x + {zero})); 9]; let mut out = vec![None; 9]; \
+                "let motions = vec![({q}, {q}.map(|x| -x + {zero})); 9]; let mut out = vec![{none}; 9]; \
                  {ty}::{name}(&motions, &env, 0.05, &mut out).expect(\"9 motions\"); ::std::hint::black_box(&out);"
             )
         }
-        (CollisionFunction::MotionCollides, _) => {
+        (CollisionFunction::MotionCollides | CollisionFunction::MotionCollidesAny, _) => {
             format!(
                 "let value = {ty}::{name}(&{q}, &{q}.map(|x| -x), &env, 0.05).expect(\"a resolution\"); ::std::hint::black_box(&value);"
             )

@@ -3,7 +3,7 @@
 //! own (the number of steps, `(1 - t) q0 + t q1`). A module of the collision tests, on their
 //! robots (one test binary: each derive and link costs CI time).
 
-use kinematics::collision::{Environment, SphereObstacle};
+use kinematics::collision::{Environment, Resolution, SphereObstacle};
 use kinematics::runtime::ReferenceObstacles;
 use kinematics::{Configurations, KinematicsError};
 
@@ -67,6 +67,7 @@ fn motions_agree_with_the_reference_one_configuration_at_a_time() {
         for pair in qs.chunks(2) {
             let (q0, q1) = (&pair[0], &pair[1]);
             let found = Panda::motion_collides(q0, q1, &env, resolution).unwrap();
+            assert_eq!(Panda::motion_collides_any(q0, q1, &env, resolution).unwrap(), found.is_some(), "yes/no");
             let n = steps(q0, q1, resolution);
             // The same configurations through the compiled one-configuration check, in order.
             let one_by_one = (0..=n).find(|&k| Panda::collides(&at(q0, q1, k as f64 / n as f64), &env));
@@ -92,6 +93,7 @@ fn motions_agree_with_the_reference_one_configuration_at_a_time() {
             let one_by_one = (0..=n).find(|&k| Ur5::collides(&at(q0, q1, k as f64 / n as f64), &env));
             let found = Ur5::motion_collides(q0, q1, &env, resolution).unwrap();
             assert_eq!(found, one_by_one.map(|k| k as f64 / n as f64), "UR5 {q0:?} -> {q1:?} at {resolution}");
+            assert_eq!(Ur5::motion_collides_any(q0, q1, &env, resolution).unwrap(), found.is_some(), "UR5 yes/no");
         }
     }
 }
@@ -118,6 +120,7 @@ fn f32_motions_equal_their_configurations_checked_one_by_one() {
         let one_by_one = (0..=n).find(|&k| Panda::collides_f32(&q(k), &env));
         let found = Panda::motion_collides_f32(q0, q1, &env, 0.1).unwrap();
         assert_eq!(found, one_by_one.map(|k| k as f64 / n as f64), "{q0:?} -> {q1:?}");
+        assert_eq!(Panda::motion_collides_any_f32(q0, q1, &env, 0.1).unwrap(), found.is_some(), "f32 yes/no");
         colliding += usize::from(found.is_some());
     }
     assert!(colliding > 3 && colliding < 27, "{colliding} of 30 motions collide");
@@ -161,7 +164,14 @@ fn a_resolution_that_is_not_positive_and_finite_is_refused() {
     for resolution in [0.0, -0.1, f64::NAN, f64::INFINITY] {
         let error = Panda::motion_collides(&q, &q, &env, resolution).unwrap_err();
         assert!(matches!(error, KinematicsError::BadResolution { robot: "panda", .. }), "{error:?}");
-        assert!(error.to_string().contains("resolution must be positive and finite"), "{error}");
+        assert!(error.to_string().contains("must be positive and finite"), "{error}");
+        for error in [
+            Panda::motion_collides_any(&q, &q, &env, resolution).unwrap_err(),
+            Panda::motion_collides(&q, &q, &env, Resolution::StatesPerUnit(resolution)).unwrap_err(),
+            Panda::motion_collides_any_batch(&[(q, q)], &env, resolution, &mut [false]).unwrap_err(),
+        ] {
+            assert!(matches!(error, KinematicsError::BadResolution { robot: "panda", .. }), "{error:?}");
+        }
     }
 }
 
@@ -174,8 +184,12 @@ fn a_motion_through_a_configuration_that_is_not_finite_is_never_free() {
     assert_eq!(Panda::motion_collides(&q, &q, &env, 0.1).unwrap(), None, "a motion that stays put, free");
     assert_eq!(Panda::motion_collides(&bad, &q, &env, 0.1).unwrap(), Some(0.0));
     assert_eq!(Panda::motion_collides(&q, &bad, &env, 0.1).unwrap(), Some(1.0));
+    assert!(!Panda::motion_collides_any(&q, &q, &env, 0.1).unwrap());
+    assert!(Panda::motion_collides_any(&bad, &q, &env, 0.1).unwrap());
+    assert!(Panda::motion_collides_any(&q, &bad, &env, 0.1).unwrap());
     bad[3] = f64::INFINITY;
     assert_eq!(Panda::motion_collides(&q, &bad, &env, 0.1).unwrap(), Some(1.0));
+    assert!(Panda::motion_collides_any(&q, &bad, &env, 0.1).unwrap());
 }
 
 /// The batch of several motions equals `motion_collides` on each, for motions of very different
@@ -227,4 +241,42 @@ fn a_batch_of_motions_equals_each_motion_alone() {
     let error = Panda::motion_collides_batch(&motions[..3], &env, 0.1, &mut out).unwrap_err();
     assert!(matches!(error, KinematicsError::WrongOutputLength { expected: 3, got: 2, .. }), "{error:?}");
     assert_eq!(out, vec![Some(-1.0); 2]);
+}
+
+/// States per unit of joint-space distance, as VAMP and OMPL count them: the configurations
+/// checked are `ceil(|q1 - q0| * states)` steps apart (worked out here), the first collision
+/// found where checking them one by one finds it, and the yes/no form and its batch agree, in
+/// the tabletop scene and in the shelf scene, `f64` and `f32`.
+#[test]
+fn states_per_unit_distance_check_the_configurations_they_count() {
+    for name in ["tabletop", "shelf"] {
+        let scene = kinematics::load_scene(format!("{}/scenes/{name}.toml", env!("CARGO_MANIFEST_DIR"))).unwrap();
+        let env = scene.environment().unwrap();
+        let qs: Vec<[f64; 7]> =
+            Configurations::within(&Panda::JOINT_LIMITS).skip(11).take(80).map(|q| q.try_into().unwrap()).collect();
+        let motions: Vec<([f64; 7], [f64; 7])> = qs.chunks(2).map(|p| (p[0], p[1])).collect();
+        let mut colliding = 0;
+        for states in [32.0, 4.0] {
+            let mut any = vec![false; motions.len()];
+            Panda::motion_collides_any_batch(&motions, &env, Resolution::StatesPerUnit(states), &mut any).unwrap();
+            let q32 = |q: &[f64; 7]| q.map(|x| x as f32);
+            let mut any32 = vec![false; motions.len()];
+            let motions32: Vec<_> = motions.iter().map(|(a, b)| (q32(a), q32(b))).collect();
+            Panda::motion_collides_any_batch_f32(&motions32, &env, Resolution::StatesPerUnit(states), &mut any32)
+                .unwrap();
+            for (m, (q0, q1)) in motions.iter().enumerate() {
+                let distance = q0.iter().zip(q1).map(|(a, b)| (b - a) * (b - a)).sum::<f64>().sqrt();
+                let n = ((distance * states).ceil() as usize).max(1);
+                let one_by_one = (0..=n).find(|&k| Panda::collides(&at(q0, q1, k as f64 / n as f64), &env));
+                let found = Panda::motion_collides(q0, q1, &env, Resolution::StatesPerUnit(states)).unwrap();
+                assert_eq!(found, one_by_one.map(|k| k as f64 / n as f64), "{name}: {q0:?} -> {q1:?} at {states}");
+                let yes = Panda::motion_collides_any(q0, q1, &env, Resolution::StatesPerUnit(states)).unwrap();
+                assert_eq!((yes, any[m]), (found.is_some(), found.is_some()), "{name}: motion {m}");
+                let yes32 = Panda::motion_collides_any_f32(&q32(q0), &q32(q1), &env, Resolution::StatesPerUnit(states));
+                assert_eq!(yes32.unwrap(), any32[m], "{name}: motion {m}, f32 batch");
+                colliding += usize::from(yes);
+            }
+        }
+        assert!(colliding > 5 && colliding < 75, "{name}: {colliding} of 80 motions collide");
+    }
 }

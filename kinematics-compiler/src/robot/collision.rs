@@ -298,7 +298,7 @@ pub(super) fn checks(cx: &Context<'_>, out: &mut Functions) {
                      obstacles; the pairs as in `self_collides`)",
                     cx.spheres().len()
                 ),
-                world_check(p, &pose_values, ahead),
+                world_check(p, &pose_values, ahead, false),
             ),
             CollisionFunction::SelfCollides => (
                 format!(
@@ -306,10 +306,23 @@ pub(super) fn checks(cx: &Context<'_>, out: &mut Functions) {
                      bodies, {pairs_rule})",
                     plan.pairs.pairs.len()
                 ),
-                self_check(&poses, ahead),
+                self_check(&poses, ahead, false),
             ),
+            CollisionFunction::CollidesAny | CollisionFunction::SelfCollidesAny => {
+                let check = if function == CollisionFunction::CollidesAny {
+                    world_check(p, &pose_values, ahead, true)
+                } else {
+                    self_check(&poses, ahead, true)
+                };
+                out.typed.push(shared(cx, function, form, &sig, &check));
+                continue;
+            }
             CollisionFunction::MotionCollides => {
                 out.typed.push(motion(cx, form, &sig, &pose_values, ahead));
+                continue;
+            }
+            CollisionFunction::MotionCollidesAny => {
+                out.typed.push(motion_any(cx, form, &sig, &pose_values, ahead));
                 continue;
             }
             CollisionFunction::Clearance
@@ -400,22 +413,35 @@ fn generic_item(doc: &str, sig: &TokenStream, body: &TokenStream) -> TokenStream
     }
 }
 
-/// `self_collides`: on the points computed ahead if `ahead`, else on the links' `poses`.
-fn self_check(poses: &TokenStream, ahead: bool) -> TokenStream {
-    if ahead {
-        let points = proc_macro2::Ident::new(POINTS_BODY, proc_macro2::Span::call_site());
-        quote!(COLLISION_TABLES.self_collides_points(q, &#points(q)))
-    } else {
-        quote!(COLLISION_TABLES.self_collides(q, #poses))
+/// `self_collides`: on the points computed ahead if `ahead`, else on the links' `poses`; the
+/// lanes' verdicts, or (`any`) whether some lane collides.
+fn self_check(poses: &TokenStream, ahead: bool, any: bool) -> TokenStream {
+    match (ahead, any) {
+        (true, false) => {
+            let points = proc_macro2::Ident::new(POINTS_BODY, proc_macro2::Span::call_site());
+            quote!(COLLISION_TABLES.self_collides_points(q, &#points(q)))
+        }
+        (true, true) => {
+            let points = proc_macro2::Ident::new(POINTS_BODY, proc_macro2::Span::call_site());
+            quote!(COLLISION_TABLES.self_collides_points_any(q, &#points(q)))
+        }
+        (false, false) => quote!(COLLISION_TABLES.self_collides(q, #poses)),
+        (false, true) => quote!(COLLISION_TABLES.self_collides_any(q, #poses)),
     }
 }
 
 /// `collides` against `environment`, a `collision::World` of the robot: its obstacles, and the
 /// object it holds if any; on the points computed ahead if `ahead` (the poses then computed only
-/// for a held object), else on the links' poses.
-fn world_check(p: &TokenStream, poses: &TokenStream, ahead: bool) -> TokenStream {
+/// for a held object), else on the links' poses; the lanes' verdicts, or (`any`) whether some
+/// lane collides.
+fn world_check(p: &TokenStream, poses: &TokenStream, ahead: bool, any: bool) -> TokenStream {
+    let (by_poses, by_points) = if any {
+        (quote!(collides_any), quote!(collides_points_any))
+    } else {
+        (quote!(collides), quote!(collides_points))
+    };
     if !ahead {
-        return quote!(COLLISION_TABLES.collides(
+        return quote!(COLLISION_TABLES.#by_poses(
             q,
             &#poses,
             #p::collision::World::<Self>::environment(environment),
@@ -433,7 +459,7 @@ fn world_check(p: &TokenStream, poses: &TokenStream, ahead: bool) -> TokenStream
             }
             ::core::option::Option::None => ::core::option::Option::None,
         };
-        COLLISION_TABLES.collides_points(
+        COLLISION_TABLES.#by_points(
             q,
             &#points(q),
             #p::collision::World::<Self>::environment(environment),
@@ -463,7 +489,7 @@ fn hold(sig: &TokenStream) -> TokenStream {
 fn motion(cx: &Context<'_>, form: Form, sig: &TokenStream, poses: &TokenStream, ahead: bool) -> TokenStream {
     let p = &cx.p;
     let n = cx.render.dof();
-    let check = world_check(p, poses, ahead);
+    let check = world_check(p, poses, ahead, false);
     let (t, lanes, wide, batch) = match form {
         Form::Typed(ScalarType { t, lanes, wide, .. }) => (t, lanes, wide, false),
         Form::Batch(ScalarType { t, lanes, wide, .. }) => (t, lanes, wide, true),
@@ -491,8 +517,9 @@ fn motion(cx: &Context<'_>, form: Form, sig: &TokenStream, poses: &TokenStream, 
     let doc = format!(
         "Where the straight motion from `q0` to `q1` first collides (as `collides`: obstacles and self), \
          checked at `resolution`: the configurations `(1 - t) q0 + t q1` at `t = k / steps`, `k = 0..=steps`, \
-         `steps` the fewest keeping every joint's move between two checked configurations within `resolution` \
-         (radians or metres), both ends included (`{t}`). `Ok(Some(t))`: the first colliding configuration's \
+         `steps` as `resolution` asks (an `f64` is the largest move of any joint between two checked \
+         configurations, radians or metres; `collision::Resolution::StatesPerUnit` counts configurations per \
+         unit of joint-space distance, as VAMP and OMPL do), both ends included (`{t}`). `Ok(Some(t))`: the first colliding configuration's \
          fraction `t`, as checking them one by one in order would find; `Ok(None)`: every one is free. \
          Several points of the motion are checked at once in SIMD lanes, spread along it, so a collision \
          anywhere ends the search early. A resolution that is not positive and finite is an error; a \
@@ -509,6 +536,106 @@ fn motion(cx: &Context<'_>, form: Form, sig: &TokenStream, poses: &TokenStream, 
                 &motion, #[inline(always)] |q| #check, #[inline(always)] |q| #check,
             ))
         }
+    }
+}
+
+/// `collides_any` and `self_collides_any`: per scalar on a slice (`any_wide`: packs in the lanes
+/// the CPU fills, the first pack with a hit ending the work), and on any lane type (`check`, the
+/// shared verdict of the lanes).
+fn shared(
+    cx: &Context<'_>,
+    function: CollisionFunction,
+    form: Form,
+    sig: &TokenStream,
+    check: &TokenStream,
+) -> TokenStream {
+    let p = &cx.p;
+    let n = cx.render.dof();
+    let (what, single) = match function {
+        CollisionFunction::CollidesAny => ("touches an obstacle of `environment` or itself", "collides"),
+        _ => ("has two links of a checked pair touching", "self_collides"),
+    };
+    let never_free = "A configuration with a NaN or infinite entry is colliding.";
+    match form {
+        Form::Typed(ScalarType { t, lanes, wide, .. }) => {
+            let doc = format!(
+                "Whether the robot at some configuration of `qs` {what} (`{t}`; `false` for none): one verdict \
+                 shared by them all, as `qs.iter().any(|q| Self::{single}(q, ..))` gives it, found in SIMD lanes \
+                 (packs of the configurations in order, the check of a pack ending at its first hit on any lane, \
+                 and the first pack with a hit ending the work). For a planner validating a path's states or a \
+                 batch of samples it needs no more than this; `{single}_batch` gives each configuration its own \
+                 verdict. {never_free}"
+            );
+            quote! {
+                #[doc = #doc]
+                #[inline]
+                #[allow(clippy::redundant_closure)]
+                #sig {
+                    #p::any_wide::<#lanes, #wide, #n>(qs, #[inline(always)] |q| #check, #[inline(always)] |q| #check)
+                }
+            }
+        }
+        Form::Generic => {
+            let doc = format!(
+                "Whether the robot at some lane's configuration of `q` {what}, on any lane type (`F64x4`, `F64x8`, \
+                 `F32x8`, `F32x16`; `f64` and `f32` are one lane): one verdict for the lanes, the check ending at \
+                 the first hit on any of them (`{single}_generic(q, ..).any()`, sooner). {never_free} Not \
+                 dispatched: wrap a loop of calls in `kinematics::dispatch(#[inline(always)] || ...)`."
+            );
+            generic_item(&doc, sig, check)
+        }
+        _ => unreachable!("invariant: the surface gives the shared verdicts typed and generic forms only"),
+    }
+}
+
+/// `motion_collides_any` (per scalar): whether the motion collides, its configurations checked by
+/// the shared verdict in the lanes the CPU fills (`collision::motion_any_wide`); and its batch,
+/// the motions one after another (`collision::motions_any_wide`).
+fn motion_any(cx: &Context<'_>, form: Form, sig: &TokenStream, poses: &TokenStream, ahead: bool) -> TokenStream {
+    let p = &cx.p;
+    let n = cx.render.dof();
+    let check = world_check(p, poses, ahead, true);
+    match form {
+        Form::Typed(ScalarType { t, lanes, wide, .. }) => {
+            let doc = format!(
+                "Whether the straight motion from `q0` to `q1` collides (as `collides`: obstacles and self), \
+                 checked at `resolution` as `motion_collides` checks it, the same configurations, both ends \
+                 included (`{t}`): `Ok(true)` exactly when `motion_collides` finds a first collision, sooner. \
+                 The SIMD lanes are spread along the motion and their offsets taken coarse to fine, so the first \
+                 packs sample the whole motion, and the first pack with a hit on any lane ends the search (a \
+                 planner's edge check). A resolution that is not positive and finite is an error; a \
+                 configuration with a NaN or infinite entry is colliding."
+            );
+            quote! {
+                #[doc = #doc]
+                #[inline]
+                #[allow(clippy::redundant_closure)]
+                #sig {
+                    let motion = #p::collision::Motion::new(Self::ROBOT, *q0, *q1, resolution)?;
+                    ::core::result::Result::Ok(#p::collision::motion_any_wide::<#lanes, #wide, #n>(
+                        &motion, #[inline(always)] |q| #check, #[inline(always)] |q| #check,
+                    ))
+                }
+            }
+        }
+        Form::Batch(ScalarType { t, lanes, wide, .. }) => {
+            let doc = format!(
+                "`motion_collides_any` for every motion `(q0, q1)` of `motions`, into `out` (`{t}`), one motion \
+                 after another in one dispatched loop. A resolution that is not positive and finite, or an `out` \
+                 of another length than `motions`, is an error, and nothing is written."
+            );
+            quote! {
+                #[doc = #doc]
+                #[inline]
+                #[allow(clippy::redundant_closure)]
+                #sig {
+                    #p::collision::motions_any_wide::<#lanes, #wide, #n>(
+                        Self::ROBOT, motions, resolution, out, #[inline(always)] |q| #check, #[inline(always)] |q| #check,
+                    )
+                }
+            }
+        }
+        _ => unreachable!("invariant: the surface gives motion_collides_any a typed and a batch form per scalar"),
     }
 }
 

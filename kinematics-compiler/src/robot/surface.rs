@@ -623,6 +623,14 @@ pub enum CollisionFunction {
     /// `motion_collides(&q0, &q1, &environment, resolution)`, and its batch of several motions,
     /// per scalar.
     MotionCollides,
+    /// `collides_any(&qs, &environment)` per scalar (whether some configuration of a slice
+    /// collides) and `collides_any_generic(&q, &environment)` (whether some lane does).
+    CollidesAny,
+    /// `self_collides_any(&qs)` and `self_collides_any_generic(&q)`.
+    SelfCollidesAny,
+    /// `motion_collides_any(&q0, &q1, &environment, resolution)` (whether the motion collides),
+    /// and its batch of several motions, per scalar.
+    MotionCollidesAny,
     /// `hold(link, spheres, touching)`: a held object.
     Hold,
     /// `clearance(&q, &environment)`: the smallest signed distance.
@@ -639,8 +647,11 @@ impl Render {
     /// The collision checks' functions (with `collision`), in the order emitted: for `collides`
     /// then `self_collides`, per scalar the function on one configuration and its two batches
     /// (verdicts into `out: &mut [bool]`), then the generic one on any lane type (a verdict mask);
-    /// then `motion_collides` per scalar (the first colliding fraction of a straight motion) and
-    /// its batch (several motions, one per lane), then
+    /// then the shared verdicts `collides_any` and `self_collides_any` (per scalar on a slice,
+    /// then on any lane type: whether some configuration collides), then per scalar
+    /// `motion_collides` (the first colliding fraction of a straight motion) and its batch
+    /// (several motions, one per lane), and `motion_collides_any` (whether it collides) and its
+    /// batch, then
     /// `hold`, then the distances (`clearance`, `proximity_cost` and their gradients). What `collides` and `motion_collides` are checked against is a `collision::World`
     /// of the robot: an `Environment`, or one with an object the robot holds.
     pub fn collision_items(&self) -> Vec<(CollisionFunction, Form, Signature)> {
@@ -699,6 +710,38 @@ impl Render {
                 },
             ));
         }
+        for function in [CollisionFunction::CollidesAny, CollisionFunction::SelfCollidesAny] {
+            let name = function.name();
+            let environment = match function {
+                CollisionFunction::SelfCollidesAny => quote!(),
+                _ => quote!(, #world),
+            };
+            for scalar in self.scalar_types() {
+                let (suffix, t) = (scalar.suffix, &scalar.t);
+                out.push((
+                    function,
+                    Form::Typed(scalar.clone()),
+                    Signature {
+                        name: format_ident!("{name}{suffix}"),
+                        generics: Vec::new(),
+                        inputs: quote!(qs: &[[#t; #n]] #environment),
+                        output: quote!(bool),
+                    },
+                ));
+            }
+            let scalar = &self.scalar;
+            out.push((
+                function,
+                Form::Generic,
+                Signature {
+                    name: format_ident!("{name}_generic"),
+                    generics: vec![self.collision_scalar()],
+                    inputs: quote!(q: &[#scalar; #n] #environment),
+                    output: quote!(bool),
+                },
+            ));
+        }
+        let resolution = quote!(resolution: impl ::core::convert::Into<#p::collision::Resolution>);
         for scalar in self.scalar_types() {
             let (suffix, t) = (scalar.suffix, &scalar.t);
             out.push((
@@ -707,7 +750,7 @@ impl Render {
                 Signature {
                     name: format_ident!("motion_collides{suffix}"),
                     generics: Vec::new(),
-                    inputs: quote!(q0: &[#t; #n], q1: &[#t; #n], #world, resolution: f64),
+                    inputs: quote!(q0: &[#t; #n], q1: &[#t; #n], #world, #resolution),
                     output: quote!(::core::result::Result<::core::option::Option<f64>, #p::KinematicsError>),
                 },
             ));
@@ -718,9 +761,29 @@ impl Render {
                     name: format_ident!("motion_collides_batch{suffix}"),
                     generics: Vec::new(),
                     inputs: quote!(
-                        motions: &[([#t; #n], [#t; #n])], #world, resolution: f64,
+                        motions: &[([#t; #n], [#t; #n])], #world, #resolution,
                         out: &mut [::core::option::Option<f64>]
                     ),
+                    output: error.clone(),
+                },
+            ));
+            out.push((
+                CollisionFunction::MotionCollidesAny,
+                Form::Typed(scalar.clone()),
+                Signature {
+                    name: format_ident!("motion_collides_any{suffix}"),
+                    generics: Vec::new(),
+                    inputs: quote!(q0: &[#t; #n], q1: &[#t; #n], #world, #resolution),
+                    output: quote!(::core::result::Result<bool, #p::KinematicsError>),
+                },
+            ));
+            out.push((
+                CollisionFunction::MotionCollidesAny,
+                Form::Batch(scalar.clone()),
+                Signature {
+                    name: format_ident!("motion_collides_any_batch{suffix}"),
+                    generics: Vec::new(),
+                    inputs: quote!(motions: &[([#t; #n], [#t; #n])], #world, #resolution, out: &mut [bool]),
                     output: error.clone(),
                 },
             ));
@@ -811,6 +874,9 @@ impl CollisionFunction {
             CollisionFunction::Collides => "collides",
             CollisionFunction::SelfCollides => "self_collides",
             CollisionFunction::MotionCollides => "motion_collides",
+            CollisionFunction::CollidesAny => "collides_any",
+            CollisionFunction::SelfCollidesAny => "self_collides_any",
+            CollisionFunction::MotionCollidesAny => "motion_collides_any",
             CollisionFunction::Hold => "hold",
             CollisionFunction::Clearance => "clearance",
             CollisionFunction::ClearanceGradient => "clearance_gradient",
