@@ -434,8 +434,121 @@ macro_rules! robot {
         group.bench_function("self_collides_batch_f32", |b| {
             b.iter(|| <$robot>::self_collides_batch_f32(black_box(&qs32), &mut verdicts).unwrap())
         });
+        // The self check where no early exit helps: configurations free of self-collision.
+        let self_free32: Vec<[f32; $n]> = qs32.iter().copied().filter(|q| !<$robot>::self_collides_f32(q)).collect();
+        println!("{}: {} of {} configurations free of self-collision", $name, self_free32.len(), qs32.len());
+        let mut self_free_verdicts = vec![false; self_free32.len()];
+        group.throughput(Throughput::Elements(self_free32.len() as u64));
+        group.bench_function("self_collides_batch_f32_self_free", |b| {
+            b.iter(|| <$robot>::self_collides_batch_f32(black_box(&self_free32), &mut self_free_verdicts).unwrap())
+        });
         group.finish();
     }};
+}
+
+/// The MotionBenchMaker-like scenes of `scenes/` (`mbm_*.toml`: a table to pick from and the
+/// same from under, a box, bookshelves of three sizes, a cage), cluttered around the arm.
+const CLUTTERED: [&str; 7] = [
+    "mbm_table_pick",
+    "mbm_table_under_pick",
+    "mbm_box",
+    "mbm_bookshelf_small",
+    "mbm_bookshelf_tall",
+    "mbm_bookshelf_thin",
+    "mbm_cage",
+];
+
+/// The states per radian of joint-space distance motions are checked at: VAMP's planners' default.
+const STATES_PER_RADIAN: f64 = 32.0;
+
+/// Per cluttered scene, the three forms of the check in `f32` on 1,024 configurations drawn
+/// within the limits, each figure per configuration: `shared_f32` (`collides_any_f32` on packs
+/// of sixteen, one verdict per pack, the first hit on any lane ending it: what a planner's
+/// validation of several states needs), `collides_batch_f32` (a verdict per configuration) and
+/// `free_f32` (the batch on the configurations that are free, where nothing ends early); and per
+/// motion between consecutive free configurations at 32 states per radian, the yes/no check
+/// (`motion_any_f32`) and the first collision (`motion_first_f32`).
+macro_rules! cluttered {
+    ($c:expr, $name:literal, $robot:ty, $n:literal) => {{
+        let mut criterion: Option<&mut criterion::Criterion> = $c;
+        let qs: Vec<[f64; $n]> = inputs(&<$robot>::JOINT_LIMITS);
+        let qs32: Vec<[f32; $n]> = qs.iter().map(|q| q.map(|x| x as f32)).collect();
+        let resolution = kinematics::collision::Resolution::StatesPerUnit(STATES_PER_RADIAN);
+        for scene_name in CLUTTERED {
+            let obstacles = scene(scene_name);
+            let env: Environment<'_> = obstacles.environment().unwrap();
+            let free32: Vec<[f32; $n]> = qs32.iter().copied().filter(|q| !<$robot>::collides_f32(q, &env)).collect();
+            let motions32: Vec<([f32; $n], [f32; $n])> = free32.windows(2).take(256).map(|m| (m[0], m[1])).collect();
+            let Some(c) = criterion.as_deref_mut() else {
+                // Check mode: the shared verdict is the `any` of the configurations' own, and a
+                // motion's yes/no is whether it has a first collision.
+                let mut verdicts = vec![false; qs32.len()];
+                <$robot>::collides_batch_f32(&qs32, &env, &mut verdicts).unwrap();
+                for (chunk, own) in qs32.chunks(16).zip(verdicts.chunks(16)).take(8) {
+                    assert_eq!(<$robot>::collides_any_f32(chunk, &env), own.iter().any(|&v| v), "{scene_name}");
+                }
+                for m in motions32.iter().take(4) {
+                    let first = <$robot>::motion_collides_f32(&m.0, &m.1, &env, resolution).unwrap();
+                    let any = <$robot>::motion_collides_any_f32(&m.0, &m.1, &env, resolution).unwrap();
+                    assert_eq!(any, first.is_some(), "{scene_name}");
+                }
+                continue;
+            };
+            let colliding = motions32
+                .iter()
+                .filter(|m| <$robot>::motion_collides_any_f32(&m.0, &m.1, &env, resolution).unwrap())
+                .count();
+            println!(
+                "{}: {} of {} configurations free in the {scene_name} scene; {colliding} of {} motions between \
+                 free configurations collide",
+                $name,
+                free32.len(),
+                qs32.len(),
+                motions32.len()
+            );
+            let mut group = c.benchmark_group(format!("{}/{scene_name}", $name));
+            group.throughput(Throughput::Elements(qs32.len() as u64));
+            group.bench_function("shared_f32", |b| {
+                b.iter(|| {
+                    for pack in black_box(&qs32).chunks(16) {
+                        black_box(<$robot>::collides_any_f32(pack, &env));
+                    }
+                })
+            });
+            let mut verdicts = vec![false; qs32.len()];
+            group.bench_function("collides_batch_f32", |b| {
+                b.iter(|| <$robot>::collides_batch_f32(black_box(&qs32), &env, &mut verdicts).unwrap())
+            });
+            let mut free_verdicts = vec![false; free32.len()];
+            group.throughput(Throughput::Elements(free32.len() as u64));
+            group.bench_function("free_f32", |b| {
+                b.iter(|| <$robot>::collides_batch_f32(black_box(&free32), &env, &mut free_verdicts).unwrap())
+            });
+            group.throughput(Throughput::Elements(1));
+            let mut k = 0;
+            group.bench_function("motion_any_f32", |b| {
+                b.iter(|| {
+                    k = (k + 1) % motions32.len();
+                    let m = black_box(&motions32[k]);
+                    black_box(<$robot>::motion_collides_any_f32(&m.0, &m.1, &env, resolution).unwrap())
+                })
+            });
+            group.bench_function("motion_first_f32", |b| {
+                b.iter(|| {
+                    k = (k + 1) % motions32.len();
+                    let m = black_box(&motions32[k]);
+                    black_box(<$robot>::motion_collides_f32(&m.0, &m.1, &env, resolution).unwrap())
+                })
+            });
+            group.finish();
+        }
+    }};
+}
+
+fn cluttered(c: Option<&mut criterion::Criterion>) {
+    let mut c = c;
+    cluttered!(c.as_deref_mut(), "panda", Panda, 7);
+    cluttered!(c.as_deref_mut(), "ur5", Ur5, 6);
 }
 
 fn panda(c: Option<&mut criterion::Criterion>) {
@@ -568,11 +681,13 @@ fn main() {
         let mut c = common::criterion(Duration::from_millis(500), Duration::from_secs(2));
         panda(Some(&mut c));
         ur5(Some(&mut c));
+        cluttered(Some(&mut c));
         clouds(Some(&mut c));
         c.final_summary();
     } else {
         panda(None);
         ur5(None);
+        cluttered(None);
         clouds(None);
         println!("collision benchmarks: every body ran once and its answers were checked");
     }

@@ -9,10 +9,8 @@ use kinematics_core::collision::{
 };
 use kinematics_model::collision::Shape;
 use kinematics_model::scene::Scene;
-use nalgebra::Vector3;
 
 use crate::collision::ReferenceObstacles;
-use crate::fk::fixed_isometry;
 
 /// A scene's obstacles, by kind, each with its name (in the order of its kind's list).
 #[derive(Debug, Clone, Default, PartialEq)]
@@ -36,41 +34,86 @@ impl SceneObstacles {
         let mut out = SceneObstacles::default();
         let mut names: [Vec<String>; 4] = Default::default();
         for obstacle in &scene.obstacles {
-            let pose = fixed_isometry(&obstacle.origin());
-            let center = pose.translation.vector;
-            let point = |v: Vector3<f64>| [v[0], v[1], v[2]];
-            let ends = |length: f64| {
-                let half = pose.rotation * Vector3::z() * (length / 2.0);
-                (point(center - half), point(center + half))
-            };
-            let name = obstacle.name.clone();
-            match obstacle.shape {
-                Shape::Sphere { radius } => {
-                    out.spheres.push(SphereObstacle { center: point(center), radius });
-                    names[0].push(name);
-                }
-                Shape::Capsule { radius, length } => {
-                    let (a, b) = ends(length);
-                    out.capsules.push(CapsuleObstacle { a, b, radius });
-                    names[1].push(name);
-                }
-                Shape::Cylinder { radius, length } => {
-                    let (a, b) = ends(length);
-                    out.cylinders.push(CylinderObstacle { a, b, radius });
-                    names[2].push(name);
-                }
-                Shape::Box { size } => {
-                    let m = pose.rotation.to_rotation_matrix();
-                    let rows = [0, 1, 2].map(|i| [m[(i, 0)], m[(i, 1)], m[(i, 2)]]);
-                    out.boxes.push(BoxObstacle::from_pose(rows, point(center), size));
-                    names[3].push(name);
-                }
+            let kind = match obstacle.shape {
+                Shape::Sphere { .. } => 0,
+                Shape::Capsule { .. } => 1,
+                Shape::Cylinder { .. } => 2,
+                Shape::Box { .. } => 3,
                 // The scene reader has no mesh: a scene's shapes are the four above.
-                Shape::Mesh { .. } => {}
-            }
+                Shape::Mesh { .. } => continue,
+            };
+            out.push(String::new(), obstacle.xyz, obstacle.rpy, obstacle.shape.clone());
+            names[kind].push(obstacle.name.clone());
         }
         out.names = names.concat();
         out
+    }
+
+    /// Adds an obstacle named `name`: `shape` (a sphere, box, cylinder or capsule, as a scene
+    /// file's entry gives it: full edge lengths, a cylinder's or capsule's axis along its frame's
+    /// z axis) centred at `xyz` and turned by `rpy` (m and rad, URDF's fixed-axis order), at the
+    /// end of its kind's list. Its numbers are checked as [`Environment::new`] checks them (an
+    /// error names its kind and its index in that list, and nothing is added); a mesh is refused
+    /// as a size that is not one. This is how a planner keeps an owned, growing set of
+    /// obstacles and borrows an [`Environment`] of it per query.
+    ///
+    /// ```
+    /// use kinematics_model::collision::Shape;
+    /// use kinematics_runtime::SceneObstacles;
+    /// let mut scene = SceneObstacles::default();
+    /// scene.add("table", [0.6, 0.0, -0.05], [0.0; 3], Shape::Box { size: [0.8, 1.4, 0.1] })?;
+    /// scene.add("bottle", [0.5, 0.2, 0.1], [0.0; 3], Shape::Cylinder { radius: 0.04, length: 0.2 })?;
+    /// assert!(scene.add("bad", [0.0; 3], [0.0; 3], Shape::Sphere { radius: -1.0 }).is_err());
+    /// assert_eq!((scene.len(), scene.environment()?.len()), (2, 2));
+    /// # Ok::<(), kinematics_core::collision::ObstacleError>(())
+    /// ```
+    pub fn add(
+        &mut self,
+        name: impl Into<String>,
+        xyz: [f64; 3],
+        rpy: [f64; 3],
+        shape: Shape,
+    ) -> Result<&mut Self, ObstacleError> {
+        let (kind, index, before) = match shape {
+            Shape::Sphere { .. } => ("sphere", self.spheres.len(), 0),
+            Shape::Capsule { .. } => ("capsule", self.capsules.len(), self.spheres.len()),
+            Shape::Cylinder { .. } => ("cylinder", self.cylinders.len(), self.spheres.len() + self.capsules.len()),
+            Shape::Box { .. } => {
+                ("box", self.boxes.len(), self.spheres.len() + self.capsules.len() + self.cylinders.len())
+            }
+            Shape::Mesh { .. } => return Err(ObstacleError::BadSize { kind: "mesh", index: 0 }),
+        };
+        let mut one = SceneObstacles::default();
+        one.push(String::new(), xyz, rpy, shape);
+        one.environment().map_err(|error| match error {
+            ObstacleError::NonFinite { .. } => ObstacleError::NonFinite { kind, index },
+            ObstacleError::BadSize { .. } | ObstacleError::TooMany { .. } => ObstacleError::BadSize { kind, index },
+        })?;
+        let (spheres, capsules, cylinders, boxes) = (one.spheres, one.capsules, one.cylinders, one.boxes);
+        self.spheres.extend(spheres);
+        self.capsules.extend(capsules);
+        self.cylinders.extend(cylinders);
+        self.boxes.extend(boxes);
+        self.names.insert(before + index, name.into());
+        Ok(self)
+    }
+
+    /// Adds `shape` at `xyz` and `rpy` to its kind's list, unchecked, its name at the end of
+    /// `names` (in file order; [`SceneObstacles::from_scene`] orders them by kind after).
+    fn push(&mut self, name: String, xyz: [f64; 3], rpy: [f64; 3], shape: Shape) {
+        match shape {
+            Shape::Sphere { radius } => self.spheres.push(SphereObstacle { center: xyz, radius }),
+            Shape::Capsule { radius, length } => {
+                self.capsules.push(CapsuleObstacle::from_xyz_rpy(xyz, rpy, radius, length));
+            }
+            Shape::Cylinder { radius, length } => {
+                self.cylinders.push(CylinderObstacle::from_xyz_rpy(xyz, rpy, radius, length));
+            }
+            Shape::Box { size } => self.boxes.push(BoxObstacle::from_xyz_rpy(xyz, rpy, size)),
+            // The scene reader has no mesh, and `add` refuses one.
+            Shape::Mesh { .. } => return,
+        }
+        self.names.push(name);
     }
 
     /// The environment a compiled robot's `collides` takes, borrowing these obstacles. Fails only

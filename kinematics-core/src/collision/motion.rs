@@ -588,7 +588,7 @@ mod tests {
     #[test]
     fn the_shared_search_answers_whether_any_configuration_collides() {
         use std::cell::RefCell;
-        let mut rng = crate::splitmix::SplitMix(0x616e_79);
+        let mut rng = crate::splitmix::SplitMix(0x0061_6e79);
         let mut draw = || (rng.next() * 2f64.powi(53)) as u64;
         fn check<L: Lanes<Scalar = f64>>(set: u128, seen: &RefCell<std::vec::Vec<usize>>) -> impl Fn(&[L; 1]) -> bool {
             move |q: &[L; 1]| {

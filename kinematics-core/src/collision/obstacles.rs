@@ -47,7 +47,10 @@ pub struct BoxObstacle {
     /// Centre (m).
     pub center: Vec3,
     /// The box's axes as the rows of a rotation (row `i` is its axis `i` in the world), so a world
-    /// vector `v` has box coordinates `rotation * v`.
+    /// vector `v` has box coordinates `rotation * v`: the transpose of the rotation a pose or
+    /// [`BoxObstacle::from_pose`] takes (whose columns are the axes), kept so because the test
+    /// turns each sphere's centre into the box's frame. Build boxes with
+    /// [`BoxObstacle::from_xyz_rpy`] or [`BoxObstacle::from_pose`] rather than by this field.
     pub rotation: [Vec3; 3],
     /// Half the edge lengths along its axes (m).
     pub half_extents: Vec3,
@@ -61,6 +64,61 @@ impl BoxObstacle {
         // The box's axis `j` is column `j` of the pose's rotation: row `j` of its transpose.
         let rotation = [0, 1, 2].map(|j| [0, 1, 2].map(|i| rotation_rows[i][j]));
         BoxObstacle { center: translation, rotation, half_extents: size.map(|s| s / 2.0) }
+    }
+
+    /// A box of `size` (full edge lengths, as URDF, MoveIt and scene files give them) centred at
+    /// `xyz` and turned by roll, pitch and yaw `rpy` (radians, URDF's fixed-axis order: about x,
+    /// then y, then z of the world).
+    ///
+    /// ```
+    /// use kinematics_core::collision::{BoxObstacle, Environment};
+    /// // A 1 m x 0.2 m x 0.1 m board, its long side turned from x to y.
+    /// let board = [BoxObstacle::from_xyz_rpy([0.5, 0.0, 0.3], [0.0, 0.0, core::f64::consts::FRAC_PI_2], [1.0, 0.2, 0.1])];
+    /// let env = Environment::new(&[], &[], &[], &board)?;
+    /// assert!(env.hits([0.5, 0.45, 0.3], 0.01) && !env.hits([0.95, 0.0, 0.3], 0.01));
+    /// # Ok::<(), kinematics_core::collision::ObstacleError>(())
+    /// ```
+    pub fn from_xyz_rpy(xyz: Vec3, rpy: Vec3, size: Vec3) -> Self {
+        BoxObstacle::from_pose(crate::Pose::from_rpy(rpy, xyz).rotation, xyz, size)
+    }
+
+    /// A box of `size` (full edge lengths) centred at `center`, its edges along the world's axes.
+    pub fn axis_aligned(center: Vec3, size: Vec3) -> Self {
+        BoxObstacle::from_xyz_rpy(center, [0.0; 3], size)
+    }
+}
+
+/// The ends of a segment of `length` along the z axis of the frame at `xyz` turned by `rpy`
+/// (URDF's cylinders and capsules), half the length either side of `xyz`.
+fn ends_along_z(xyz: Vec3, rpy: Vec3, length: f64) -> (Vec3, Vec3) {
+    let r = crate::Pose::from_rpy(rpy, xyz).rotation;
+    let half = [r[0][2] * length / 2.0, r[1][2] * length / 2.0, r[2][2] * length / 2.0];
+    (sub(xyz, half), [xyz[0] + half[0], xyz[1] + half[1], xyz[2] + half[2]])
+}
+
+impl CapsuleObstacle {
+    /// A capsule of `radius` whose axis segment, `length` long (the flat part, its round ends
+    /// beyond it, as URDF and scene files give it), lies along the z axis of the frame at `xyz`
+    /// turned by `rpy` (radians, URDF's fixed-axis order), centred on `xyz`.
+    ///
+    /// ```
+    /// use kinematics_core::collision::CapsuleObstacle;
+    /// let upright = CapsuleObstacle::from_xyz_rpy([1.0, 0.0, 0.5], [0.0; 3], 0.1, 0.4);
+    /// assert_eq!((upright.a, upright.b), ([1.0, 0.0, 0.3], [1.0, 0.0, 0.7]));
+    /// ```
+    pub fn from_xyz_rpy(xyz: Vec3, rpy: Vec3, radius: f64, length: f64) -> Self {
+        let (a, b) = ends_along_z(xyz, rpy, length);
+        CapsuleObstacle { a, b, radius }
+    }
+}
+
+impl CylinderObstacle {
+    /// A solid cylinder of `radius` and `length` along the z axis of the frame at `xyz` turned by
+    /// `rpy` (radians, URDF's fixed-axis order), centred on `xyz`, as URDF and scene files give
+    /// it.
+    pub fn from_xyz_rpy(xyz: Vec3, rpy: Vec3, radius: f64, length: f64) -> Self {
+        let (a, b) = ends_along_z(xyz, rpy, length);
+        CylinderObstacle { a, b, radius }
     }
 }
 
