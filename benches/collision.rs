@@ -545,10 +545,9 @@ macro_rules! cluttered {
     }};
 }
 
-fn cluttered(c: Option<&mut criterion::Criterion>) {
-    let mut c = c;
+fn cluttered(mut c: Option<&mut criterion::Criterion>) {
     cluttered!(c.as_deref_mut(), "panda", Panda, 7);
-    cluttered!(c.as_deref_mut(), "ur5", Ur5, 6);
+    cluttered!(c, "ur5", Ur5, 6);
 }
 
 fn panda(c: Option<&mut criterion::Criterion>) {
