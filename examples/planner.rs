@@ -1,7 +1,8 @@
 //! A motion planner on the compiled collision checks (issue 31, point 6): RRT-Connect for VAMP's
 //! spherized Panda among the obstacles of a scene file, every edge of its trees and of its
-//! shortcuts checked by `Panda::motion_collides` (the straight motion in joint space at a
-//! resolution, in lanes), not only the configurations it reaches.
+//! shortcuts checked by `Panda::motion_collides_any` (whether the straight motion in joint space
+//! collides at a resolution, in lanes, the first pack with a hit ending it), not only the
+//! configurations it reaches.
 //!
 //! ```text
 //! cargo run --release --example planner -- [--scene FILE]... [--start q1,..,q7 --goal q1,..,q7]
@@ -93,10 +94,11 @@ struct Checker<'a> {
 }
 
 impl Checker<'_> {
-    /// Whether the straight motion `from -> to` is free, checked by `motion_collides`.
+    /// Whether the straight motion `from -> to` is free, checked by `motion_collides_any` (the
+    /// yes/no answer: the first pack with a hit ends it).
     fn free(&mut self, from: &Q, to: &Q) -> Result<bool, KinematicsError> {
         self.checks.motions += 1;
-        if Panda::motion_collides(from, to, self.environment, self.resolution)?.is_some() {
+        if Panda::motion_collides_any(from, to, self.environment, self.resolution)? {
             self.checks.colliding += 1;
             return Ok(false);
         }
