@@ -43,7 +43,7 @@ use kinematics::{Configurations, F32x16, F64x4, F64x8, Kinematics, Lanes, SceneO
 struct Panda;
 
 #[derive(Kinematics)]
-#[kinematics(urdf = "robots/ur5_spherized.urdf", collision, scalars(f64, f32))]
+#[kinematics(urdf = "robots/ur5_spherized.urdf", collision(srdf = "robots/ur5_spherized.srdf"), scalars(f64, f32))]
 struct Ur5;
 
 /// 1,024 configurations of `N` joints drawn uniformly within the limits, as a planner samples
@@ -555,7 +555,7 @@ fn panda(c: Option<&mut criterion::Criterion>) {
 }
 
 fn ur5(c: Option<&mut criterion::Criterion>) {
-    robot!(c, "ur5", Ur5, 6, None)
+    robot!(c, "ur5", Ur5, 6, Some("robots/ur5_spherized.srdf"))
 }
 
 /// `count` points on the surfaces of `boxes`, each face drawn by its area, from a seeded stream.

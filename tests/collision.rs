@@ -183,6 +183,8 @@ mod grid;
 mod held;
 #[path = "collision/motion.rs"]
 mod motion;
+#[path = "collision/robot_trait.rs"]
+mod robot_trait;
 
 use kinematics::collision::{BoxObstacle, CapsuleObstacle, CylinderObstacle, Environment, SphereObstacle};
 use kinematics::runtime::ReferenceObstacles;

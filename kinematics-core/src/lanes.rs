@@ -349,8 +349,9 @@ lane_type!(
     64,
     trig::sin_cos_packed,
     marks = 2,
-    "Sixteen `f32` lanes (one AVX-512 register), for your own loops: the generated batches keep `f32` in `F32x8`, \
-     which LLVM vectorizes where it leaves many bodies on sixteen lanes in scalar pieces (the guide's Lanes page).",
+    "Sixteen `f32` lanes (one AVX-512 register): the generated collision checks' batches and motions take `f32` \
+     in them under AVX-512; the other batches keep `F32x8`, which LLVM vectorizes where it leaves many bodies on \
+     sixteen lanes in scalar pieces (the guide's Lanes page).",
     many = trig::sin_cos_packed_many
 );
 

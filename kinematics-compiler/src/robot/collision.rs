@@ -345,13 +345,13 @@ pub(super) fn checks(cx: &Context<'_>, out: &mut Functions) {
                 }
             }
             Form::Batch(scalar) => {
-                let ScalarType { suffix, lanes, wide, .. } = &scalar;
+                let ScalarType { suffix, lanes, check_wide: wide, .. } = &scalar;
                 let doc = format!(
                     "[`Self::{}{suffix}`] for every configuration of `qs`, into `out` (one verdict each), in SIMD \
                      lanes ({}), each lane with its own verdict and a pack ending when all of its lanes collide. \
                      An `out` of another length than `qs` is an error, and nothing is written.",
                     function.name(),
-                    scalar.lanes_doc(),
+                    scalar.check_lanes_doc(),
                 );
                 quote! {
                     #[doc = #doc]
@@ -364,7 +364,7 @@ pub(super) fn checks(cx: &Context<'_>, out: &mut Functions) {
                     }
                 }
             }
-            Form::Columns(ScalarType { suffix, lanes, wide, .. }) => {
+            Form::Columns(ScalarType { suffix, lanes, check_wide: wide, .. }) => {
                 let doc = format!(
                     "[`Self::{}_batch{suffix}`] on configurations given column-wise: `columns[j][i]` is joint \
                      `j`'s value (in the order of `JOINT_NAMES`) in configuration `i`. A column of another \
@@ -491,8 +491,8 @@ fn motion(cx: &Context<'_>, form: Form, sig: &TokenStream, poses: &TokenStream, 
     let n = cx.render.dof();
     let check = world_check(p, poses, ahead, false);
     let (t, lanes, wide, batch) = match form {
-        Form::Typed(ScalarType { t, lanes, wide, .. }) => (t, lanes, wide, false),
-        Form::Batch(ScalarType { t, lanes, wide, .. }) => (t, lanes, wide, true),
+        Form::Typed(ScalarType { t, lanes, check_wide: wide, .. }) => (t, lanes, wide, false),
+        Form::Batch(ScalarType { t, lanes, check_wide: wide, .. }) => (t, lanes, wide, true),
         _ => unreachable!("invariant: the surface gives motion_collides a typed and a batch form per scalar"),
     };
     if batch {
@@ -596,7 +596,7 @@ fn motion_any(cx: &Context<'_>, form: Form, sig: &TokenStream, poses: &TokenStre
     let n = cx.render.dof();
     let check = world_check(p, poses, ahead, true);
     match form {
-        Form::Typed(ScalarType { t, lanes, wide, .. }) => {
+        Form::Typed(ScalarType { t, lanes, check_wide: wide, .. }) => {
             let doc = format!(
                 "Whether the straight motion from `q0` to `q1` collides (as `collides`: obstacles and self), \
                  checked at `resolution` as `motion_collides` checks it, the same configurations, both ends \
@@ -618,7 +618,7 @@ fn motion_any(cx: &Context<'_>, form: Form, sig: &TokenStream, poses: &TokenStre
                 }
             }
         }
-        Form::Batch(ScalarType { t, lanes, wide, .. }) => {
+        Form::Batch(ScalarType { t, lanes, check_wide: wide, .. }) => {
             let doc = format!(
                 "`motion_collides_any` for every motion `(q0, q1)` of `motions`, into `out` (`{t}`), one motion \
                  after another in one dispatched loop. A resolution that is not positive and finite, or an `out` \

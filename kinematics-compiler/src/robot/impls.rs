@@ -20,6 +20,7 @@ pub(super) fn robot_block(self_ty: &TokenStream, cx: &Context<'_>, out: &Functio
     let of_trait = constants::of_trait(cx);
     let reference = reference(cx);
     let into = trait_functions(cx);
+    let collision = collision_impl(self_ty, cx);
     quote! {
         const _: () = {
         mod bodies {
@@ -49,6 +50,8 @@ pub(super) fn robot_block(self_ty: &TokenStream, cx: &Context<'_>, out: &Functio
             #into
         }
 
+        #collision
+
         #p::with_std! {
             impl #impl_generics #p::ReferenceModel for #self_ty #where_clause {
                 fn reference() -> ::core::result::Result<#p::ReferenceFk, #p::LoadError> {
@@ -57,6 +60,73 @@ pub(super) fn robot_block(self_ty: &TokenStream, cx: &Context<'_>, out: &Functio
             }
         }
         };
+    }
+}
+
+/// `impl Collision<DOF>` for a robot with collision checking and `f64` functions: each method
+/// the inherent function of its name (inherent items come first in `Self::` paths), the centres
+/// copied into a checked slice. Nothing without collision checking or without `f64`.
+fn collision_impl(self_ty: &TokenStream, cx: &Context<'_>) -> TokenStream {
+    if cx.spec.robot.collision().is_none() || !cx.render.scalars.f64 {
+        return quote!();
+    }
+    let (p, robot, n) = (&cx.p, cx.tree().name(), cx.render.dof());
+    let (impl_generics, where_clause) = (&cx.spec.impl_generics, &cx.spec.where_clause);
+    let spheres = Literal::usize_unsuffixed(cx.spheres().len());
+    quote! {
+        impl #impl_generics #p::collision::Collision<#n> for #self_ty #where_clause {
+            const SPHERE_RADII: &'static [f64] = &Self::SPHERE_RADII;
+            const SPHERE_LINKS: &'static [&'static str] = &Self::SPHERE_LINKS;
+            fn sphere_centers_into(q: &[f64; #n], out: &mut [[f64; 3]]) -> ::core::result::Result<(), #p::KinematicsError> {
+                #p::check_output(#robot, #spheres, out.len())?;
+                out.copy_from_slice(&Self::sphere_centers(q));
+                ::core::result::Result::Ok(())
+            }
+            fn collides(q: &[f64; #n], environment: &impl #p::collision::World<Self>) -> bool {
+                Self::collides(q, environment)
+            }
+            fn self_collides(q: &[f64; #n]) -> bool {
+                Self::self_collides(q)
+            }
+            fn collides_batch(
+                qs: &[[f64; #n]],
+                environment: &impl #p::collision::World<Self>,
+                out: &mut [bool],
+            ) -> ::core::result::Result<(), #p::KinematicsError> {
+                Self::collides_batch(qs, environment, out)
+            }
+            fn self_collides_batch(qs: &[[f64; #n]], out: &mut [bool]) -> ::core::result::Result<(), #p::KinematicsError> {
+                Self::self_collides_batch(qs, out)
+            }
+            fn collides_any(qs: &[[f64; #n]], environment: &impl #p::collision::World<Self>) -> bool {
+                Self::collides_any(qs, environment)
+            }
+            fn self_collides_any(qs: &[[f64; #n]]) -> bool {
+                Self::self_collides_any(qs)
+            }
+            fn motion_collides(
+                q0: &[f64; #n],
+                q1: &[f64; #n],
+                environment: &impl #p::collision::World<Self>,
+                resolution: impl ::core::convert::Into<#p::collision::Resolution>,
+            ) -> ::core::result::Result<::core::option::Option<f64>, #p::KinematicsError> {
+                Self::motion_collides(q0, q1, environment, resolution)
+            }
+            fn motion_collides_any(
+                q0: &[f64; #n],
+                q1: &[f64; #n],
+                environment: &impl #p::collision::World<Self>,
+                resolution: impl ::core::convert::Into<#p::collision::Resolution>,
+            ) -> ::core::result::Result<bool, #p::KinematicsError> {
+                Self::motion_collides_any(q0, q1, environment, resolution)
+            }
+            fn clearance(q: &[f64; #n], environment: &#p::collision::Environment<'_>) -> f64 {
+                Self::clearance(q, environment)
+            }
+            fn clearance_gradient(q: &[f64; #n], environment: &#p::collision::Environment<'_>) -> (f64, [f64; #n]) {
+                Self::clearance_gradient(q, environment)
+            }
+        }
     }
 }
 

@@ -185,6 +185,17 @@ fn plural(one_tip: bool, word: &str) -> String {
 /// slower. `f64` keeps eight lanes under AVX-512: over the same bodies eight took 0.80 times as
 /// long as four (0.51 to 1.40; `F64x8` takes the core's packed sine and cosine), and the checks
 /// 0.74 to 0.82 times.
+///
+/// The collision checks' batches (`collides_batch*`, `self_collides_batch*`, their columns forms
+/// and the motions) take `f32` in sixteen lanes (`F32x16`) where the CPU has AVX-512
+/// (`check_wide`). Measured on the MotionBenchMaker scenes of `benches/collision.rs` (three
+/// scenes, this machine, 2026-12-06), sixteen lanes against eight: the UR5's verdict per
+/// configuration 0.75 to 0.78 times the time, its free configurations 0.75 to 0.77, its motions
+/// 0.77 to 0.85, its self check on self-free configurations 0.78; the Panda's motions 0.86 to
+/// 0.91, its self check 0.95, its verdicts per configuration 0.94 to 1.04 and its free
+/// configurations 0.97 to 1.06. The shared verdict over a slice (`collides_any*`,
+/// `self_collides_any*`) stays in eight: its first pack with a hit ends the work, and a pack of
+/// sixteen took 1.3 to 1.7 times as long on those scenes, where most packs of eight hold a hit.
 #[derive(Debug, Clone)]
 pub struct ScalarType {
     /// `""` or `"_f32"`.
@@ -195,6 +206,8 @@ pub struct ScalarType {
     pub lanes: TokenStream,
     /// `F64x8` or `F32x8` (the same as `lanes`).
     pub wide: TokenStream,
+    /// The collision checks' lanes where the CPU has AVX-512: `F64x8` or `F32x16`.
+    pub check_wide: TokenStream,
 }
 
 impl ScalarType {
@@ -203,9 +216,24 @@ impl ScalarType {
         if self.suffix.is_empty() { (("F64x4", 4), ("F64x8", 8)) } else { (("F32x8", 8), ("F32x8", 8)) }
     }
 
+    /// The names of the lane types the collision checks' batches run on (narrow, wide) and how
+    /// many lanes each has.
+    pub fn check_lane_names(&self) -> ((&'static str, usize), (&'static str, usize)) {
+        if self.suffix.is_empty() { (("F64x4", 4), ("F64x8", 8)) } else { (("F32x8", 8), ("F32x16", 16)) }
+    }
+
+    /// The lanes a collision check's batch runs on, for its doc.
+    pub fn check_lanes_doc(&self) -> String {
+        Self::doc_of(self.check_lane_names())
+    }
+
     /// The lanes a batch runs on, for its doc: "`F64x4`, or `F64x8` where the CPU has AVX-512".
     pub fn lanes_doc(&self) -> String {
-        match self.lane_names() {
+        Self::doc_of(self.lane_names())
+    }
+
+    fn doc_of(names: ((&'static str, usize), (&'static str, usize))) -> String {
+        match names {
             ((narrow, _), (wide, _)) if narrow == wide => format!("`{narrow}`, on every CPU"),
             ((narrow, _), (wide, _)) => format!("`{narrow}`, or `{wide}` where the CPU has AVX-512"),
         }
@@ -272,12 +300,12 @@ impl Render {
     pub fn scalar_types(&self) -> Vec<ScalarType> {
         let p = &self.p;
         [
-            (self.scalars.f64, "", quote!(f64), quote!(#p::F64x4), quote!(#p::F64x8)),
-            (self.scalars.f32, "_f32", quote!(f32), quote!(#p::F32x8), quote!(#p::F32x8)),
+            (self.scalars.f64, "", quote!(f64), quote!(#p::F64x4), quote!(#p::F64x8), quote!(#p::F64x8)),
+            (self.scalars.f32, "_f32", quote!(f32), quote!(#p::F32x8), quote!(#p::F32x8), quote!(#p::F32x16)),
         ]
         .into_iter()
         .filter(|(on, ..)| *on)
-        .map(|(_, suffix, t, lanes, wide)| ScalarType { suffix, t, lanes, wide })
+        .map(|(_, suffix, t, lanes, wide, check_wide)| ScalarType { suffix, t, lanes, wide, check_wide })
         .collect()
     }
 

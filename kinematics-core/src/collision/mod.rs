@@ -17,6 +17,7 @@ mod grid;
 mod held;
 mod motion;
 mod obstacles;
+mod robot;
 mod tables;
 mod verdicts;
 
@@ -31,6 +32,7 @@ pub use motion::{
 pub use obstacles::{
     BoxObstacle, CapsuleObstacle, CylinderObstacle, Environment, ObstacleError, SphereObstacle, SphereQuery, Vec3,
 };
+pub use robot::Collision;
 pub use tables::CollisionTables;
 pub use verdicts::{CheckLanes, Flags, Flags32x8, Flags32x16, Flags64x4, Flags64x8, LaneMask, non_finite};
 #[doc(hidden)]
