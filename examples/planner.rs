@@ -6,8 +6,8 @@
 //!
 //! ```text
 //! cargo run --release --example planner -- [--scene FILE]... [--start q1,..,q7 --goal q1,..,q7]
-//!     [--seed N] [--trials N [--detours]] [--resolution RAD] [--range RAD] [--samples N] [--shortcuts N]
-//!     [--path-out FILE]
+//!     [--seed N] [--trials N [--detours]] [--resolution RAD | --states-per-unit N] [--range RAD]
+//!     [--samples N] [--shortcuts N] [--path-out FILE]
 //! ```
 //!
 //! With a start and a goal (or without them, a default pair in the default scene,
@@ -34,7 +34,7 @@
 use std::fmt;
 use std::time::{Duration, Instant};
 
-use kinematics::collision::{Environment, Motion};
+use kinematics::collision::{Environment, Motion, Resolution};
 use kinematics::{Configurations, JointLimits, Kinematics, KinematicsError};
 
 #[derive(Kinematics)]
@@ -58,8 +58,10 @@ const DEFAULT_GOAL: Q = [0.37, 0.81, 0.64, -2.09, -0.35, 3.4, 0.94];
 /// How a search runs.
 #[derive(Clone, Copy, Debug)]
 struct Settings {
-    /// The largest joint step between checked configurations of a motion (radians).
-    resolution: f64,
+    /// How finely a motion is checked: the largest joint step between checked configurations
+    /// (`--resolution`, radians) or the configurations per radian of joint-space distance
+    /// (`--states-per-unit`, as VAMP and OMPL count).
+    resolution: Resolution,
     /// The longest edge an extension adds (Euclidean in joint space, radians).
     range: f64,
     /// How many random samples the search draws before it gives up.
@@ -70,7 +72,7 @@ struct Settings {
 
 impl Default for Settings {
     fn default() -> Self {
-        Settings { resolution: 0.05, range: 1.0, samples: 20_000, shortcuts: 50 }
+        Settings { resolution: Resolution::JointStep(0.05), range: 1.0, samples: 20_000, shortcuts: 50 }
     }
 }
 
@@ -89,7 +91,7 @@ struct Checks {
 /// The robot's straight motions checked in one environment, counted.
 struct Checker<'a> {
     environment: &'a Environment<'a>,
-    resolution: f64,
+    resolution: Resolution,
     checks: Checks,
 }
 
@@ -258,7 +260,11 @@ fn plan(
     settings: Settings,
     seed: u64,
 ) -> Result<Option<Plan>, PlanError> {
-    for (name, value) in [("resolution", settings.resolution), ("range", settings.range)] {
+    let resolution = match settings.resolution {
+        Resolution::JointStep(step) => ("resolution", step),
+        Resolution::StatesPerUnit(states) => ("states-per-unit", states),
+    };
+    for (name, value) in [resolution, ("range", settings.range)] {
         if !(value.is_finite() && value > 0.0) {
             return Err(PlanError::Setting(name, value));
         }
@@ -353,7 +359,8 @@ struct Args {
 }
 
 const USAGE: &str = "usage: planner [--scene FILE]... [--start q1,..,q7 --goal q1,..,q7] [--seed N] [--trials N [--detours]] \
-                     [--resolution RAD] [--range RAD] [--samples N] [--shortcuts N] [--path-out FILE]";
+                     [--resolution RAD | --states-per-unit N] [--range RAD] [--samples N] [--shortcuts N] \
+                     [--path-out FILE]";
 
 /// A configuration from `--start` or `--goal`: seven finite values within the Panda's limits.
 fn configuration(flag: &str, text: &str) -> Result<Q, String> {
@@ -418,7 +425,8 @@ fn parse(arguments: impl IntoIterator<Item = String>) -> Result<Args, String> {
             "--goal" => args.goal = Some(configuration("--goal", &value)?),
             "--seed" => args.seed = number(&flag, &value)?,
             "--trials" => args.trials = Some(number(&flag, &value)?),
-            "--resolution" => args.settings.resolution = number(&flag, &value)?,
+            "--resolution" => args.settings.resolution = Resolution::JointStep(number(&flag, &value)?),
+            "--states-per-unit" => args.settings.resolution = Resolution::StatesPerUnit(number(&flag, &value)?),
             "--range" => args.settings.range = number(&flag, &value)?,
             "--samples" => args.settings.samples = number(&flag, &value)?,
             "--shortcuts" => args.settings.shortcuts = number(&flag, &value)?,
@@ -454,6 +462,14 @@ fn ms(d: Duration) -> String {
     if us < 1e3 { format!("{us:.1} us") } else { format!("{:.2} ms", us / 1e3) }
 }
 
+/// The resolution as the command line gives it.
+fn resolution_text(resolution: Resolution) -> String {
+    match resolution {
+        Resolution::JointStep(step) => format!("{step} rad a joint step"),
+        Resolution::StatesPerUnit(states) => format!("{states} configurations per radian"),
+    }
+}
+
 fn checks_text(c: &Checks) -> String {
     format!(
         "{} motions ({} free, {} colliding; {} configurations on the free ones)",
@@ -482,9 +498,9 @@ fn query(args: &Args) -> Result<(), String> {
     let (start, goal) = (args.start.unwrap_or(DEFAULT_START), args.goal.unwrap_or(DEFAULT_GOAL));
     let s = args.settings;
     println!(
-        "scene {scene_name}: {} obstacles; resolution {} rad, range {} rad, seed {}",
+        "scene {scene_name}: {} obstacles; resolution {}, range {} rad, seed {}",
         scene.len(),
-        s.resolution,
+        resolution_text(s.resolution),
         s.range,
         args.seed
     );
@@ -516,7 +532,7 @@ fn query(args: &Args) -> Result<(), String> {
              # robot {}, scene {scene_name}, resolution {}, seed {}\n",
             plan.path.len(),
             Panda::ROBOT,
-            s.resolution,
+            resolution_text(s.resolution),
             args.seed
         );
         for q in &plan.path {
@@ -587,9 +603,13 @@ fn trials(args: &Args, n: usize) -> Result<(), String> {
     let kind =
         if args.detours { "free start-goal pairs whose straight motion collides" } else { "free start-goal pairs" };
     println!(
-        "{n} random {kind} per scene (uniform within the limits), seed {}; resolution {} rad, range {} rad, at most \
-         {} samples, {} shortcut tries",
-        args.seed, s.resolution, s.range, s.samples, s.shortcuts
+        "{n} random {kind} per scene (uniform within the limits), seed {}; resolution {}, range {} rad, at most {} \
+         samples, {} shortcut tries",
+        args.seed,
+        resolution_text(s.resolution),
+        s.range,
+        s.samples,
+        s.shortcuts
     );
     for name in scenes {
         let scene = load(name)?;
@@ -665,7 +685,7 @@ mod tests {
 
     /// Every edge of `path` from `start` to `goal`: free by `motion_collides`, and every one of its
     /// checked configurations farther than 1e-9 m from contact by the reference.
-    fn check_path(path: &[Q], start: &Q, goal: &Q, scene: &kinematics::SceneObstacles, resolution: f64) {
+    fn check_path(path: &[Q], start: &Q, goal: &Q, scene: &kinematics::SceneObstacles, resolution: Resolution) {
         assert_eq!((path.first(), path.last()), (Some(start), Some(goal)));
         let environment = scene.environment().unwrap();
         let reference = Panda::reference().unwrap();
@@ -709,7 +729,8 @@ mod tests {
     fn random_detours_in_the_shelf_are_free_edge_by_edge() {
         let scene = load(&format!("{}/scenes/shelf.toml", env!("CARGO_MANIFEST_DIR"))).unwrap();
         let environment = scene.environment().unwrap();
-        let settings = Settings { resolution: 0.1, ..Settings::default() };
+        // A joint step, and (the third plan) states per radian as VAMP counts them.
+        let resolutions = [Resolution::JointStep(0.1), Resolution::JointStep(0.1), Resolution::StatesPerUnit(16.0)];
         let mut draws = Configurations::within(&Panda::JOINT_LIMITS).seeded(3).uniform();
         let mut free = || loop {
             let q: Q = draws.next_array().unwrap();
@@ -719,6 +740,7 @@ mod tests {
         };
         let mut planned = 0;
         while planned < 3 {
+            let settings = Settings { resolution: resolutions[planned as usize], ..Settings::default() };
             let (start, goal) = (free(), free());
             if Panda::motion_collides(&start, &goal, &environment, settings.resolution).unwrap().is_none() {
                 continue;
@@ -756,8 +778,12 @@ mod tests {
         let environment = scene.environment().unwrap();
         for (settings, message) in [
             (
-                Settings { resolution: f64::NAN, ..Settings::default() },
+                Settings { resolution: Resolution::JointStep(f64::NAN), ..Settings::default() },
                 "`--resolution` is NaN (must be positive and finite)",
+            ),
+            (
+                Settings { resolution: Resolution::StatesPerUnit(0.0), ..Settings::default() },
+                "`--states-per-unit` is 0 (must be positive and finite)",
             ),
             (Settings { range: 0.0, ..Settings::default() }, "`--range` is 0 (must be positive and finite)"),
         ] {
