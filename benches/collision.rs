@@ -465,7 +465,8 @@ const STATES_PER_RADIAN: f64 = 32.0;
 /// within the limits, each figure per configuration: `shared_f32` (`collides_any_f32` on packs
 /// of sixteen, one verdict per pack, the first hit on any lane ending it: what a planner's
 /// validation of several states needs), `collides_batch_f32` (a verdict per configuration) and
-/// `free_f32` (the batch on the configurations that are free, where nothing ends early); and per
+/// `free_f32` (the batch on the configurations that are free, where nothing ends early), with
+/// `free_self_f32` (their self check alone); and per
 /// motion between consecutive free configurations at 32 states per radian, the yes/no check
 /// (`motion_any_f32`) and the first collision (`motion_first_f32`).
 macro_rules! cluttered {
@@ -523,6 +524,11 @@ macro_rules! cluttered {
             group.throughput(Throughput::Elements(free32.len() as u64));
             group.bench_function("free_f32", |b| {
                 b.iter(|| <$robot>::collides_batch_f32(black_box(&free32), &env, &mut free_verdicts).unwrap())
+            });
+            // The same configurations' self check alone: what of `free_f32` the robot's own
+            // pairs take (the rest is the obstacles' tests).
+            group.bench_function("free_self_f32", |b| {
+                b.iter(|| <$robot>::self_collides_batch_f32(black_box(&free32), &mut free_verdicts).unwrap())
             });
             group.throughput(Throughput::Elements(1));
             let mut k = 0;
