@@ -1,5 +1,6 @@
 //! The block around everything: the generic bodies, the type's `impl` (constants, functions,
-//! `reference()`), `impl Kinematics` and `impl ReferenceModel`.
+//! `reference()`), `impl Kinematics`, `impl Collision<DOF>` (with collision checking and `f64`)
+//! and `impl ReferenceModel`.
 //!
 //! `reference()` and `impl ReferenceModel` sit inside the facade's `with_std!`, parsing with the
 //! tree's exactness policy.
