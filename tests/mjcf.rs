@@ -42,6 +42,9 @@ fn assert_pose(tree: &KinematicTree, q: &[f64], link: &str, r: [[f64; 3]; 3], t:
     }
 }
 
+#[path = "mjcf/mujoco.rs"]
+mod mujoco;
+
 const I: [[f64; 3]; 3] = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
 const RZ90: [[f64; 3]; 3] = [[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]];
 
@@ -149,13 +152,14 @@ fn every_orientation_form_by_hand() {
     // zaxis="1 0 0": Ry(90) takes z to x: [[0, 0, 1], [0, 1, 0], [-1, 0, 0]], site z to x.
     let tree = oriented("", r#"zaxis="1 0 0""#, "0 0 2");
     assert_pose(&tree, &[], "s", [[0.0, 0.0, 1.0], [0.0, 1.0, 0.0], [-1.0, 0.0, 0.0]], [2.0, 0.0, 0.0]);
-    // A site's fromto: the midpoint, z along the segment: (0.5, 0, 0) and Ry(90).
+    // A site's fromto: the midpoint, z from `to` towards `from` as MuJoCo's compiler takes it:
+    // (0.5, 0, 0) and Ry(-90), z = (-1, 0, 0).
     let tree = mjcf(
         r#"<mujoco><worldbody><body name="b">
              <site name="s" type="capsule" size="0.1" fromto="0 0 0 1 0 0"/>
            </body></worldbody></mujoco>"#,
     );
-    assert_pose(&tree, &[], "s", [[0.0, 0.0, 1.0], [0.0, 1.0, 0.0], [-1.0, 0.0, 0.0]], [0.5, 0.0, 0.0]);
+    assert_pose(&tree, &[], "s", [[0.0, 0.0, -1.0], [0.0, 1.0, 0.0], [1.0, 0.0, 0.0]], [0.5, 0.0, 0.0]);
 }
 
 #[test]

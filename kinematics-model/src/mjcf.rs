@@ -34,7 +34,8 @@
 //!   both named as the site or frame, so they can be tips; a frame's transform applies to
 //!   everything inside it. Unnamed sites are skipped (nothing could name them as a tip).
 //! - Orientation: `quat`, `axisangle`, `euler` (with `<compiler eulerseq>`), `xyaxes`, `zaxis`,
-//!   and a site's `fromto`, mapped onto elementary rotations as the `rotation` module says. Angles are
+//!   and a site's `fromto` (z from `to` towards `from`, as MuJoCo's compiler gives it), mapped onto
+//!   elementary rotations as the `rotation` module says. Angles are
 //!   degrees unless `<compiler angle="radian">`; whole degrees are exact multiples of pi.
 //! - `<default>` classes (nested, `class` and `childclass`) give joints, sites and equality
 //!   constraints their attributes, as MuJoCo's Modeling chapter, "Default settings", describes.
@@ -1051,7 +1052,11 @@ fn pose(
 }
 
 /// A site's frame: as [`pose`], or from `fromto` (XML reference, `body/site`): the midpoint, with
-/// z along `to - from`, for the shapes that have an axis.
+/// z along `from - to` (the smallest rotation taking +z there, as `zaxis`), for the shapes that
+/// have an axis. The XML reference says the site's axis runs along the segment without a sign;
+/// MuJoCo's compiler points z from `to` towards `from` (MuJoCo 4.0.1's `site_xmat` for
+/// `fromto="0 0 0 1 0 0"` has z = (-1, 0, 0)), and that is what is followed here:
+/// `tests/fixtures/mujoco/fromto_sites.xml` holds the reader to it.
 fn site_pose(
     model: &Model,
     attributes: &BTreeMap<String, Written>,
@@ -1072,7 +1077,7 @@ fn site_pose(
         }
     }
     let [x0, y0, z0, x1, y1, z1] = fromto.numbers::<6>("fromto", element)?;
-    let Some(steps) = rotation::z_axis([x1 - x0, y1 - y0, z1 - z0]) else {
+    let Some(steps) = rotation::z_axis([x0 - x1, y0 - y1, z0 - z1]) else {
         return Err(fromto.error(element, "`fromto` has the same point twice".to_owned()));
     };
     let mid = [(x0 + x1) / 2.0, (y0 + y1) / 2.0, (z0 + z1) / 2.0];
