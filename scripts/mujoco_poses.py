@@ -12,7 +12,8 @@ runs this script. Run it after changing a fixture:
 
 Elements without a name are written under the names the reader gives them (the guide's
 descriptions page): `body<i>` for body id i and `joint<i>` for joint id i, MuJoCo's ids (its
-order of the file's bodies and joints, the world body being 0).
+order of the file's bodies and joints, the world body being 0), but for a model's one unnamed
+free joint, `root_joint`.
 """
 
 import json
@@ -53,9 +54,23 @@ def configurations(model, count, rng):
         yield q
 
 
+def joint_names(model):
+    """Each joint's name as the reader gives it."""
+    names = [name(model, mujoco.mjtObj.mjOBJ_JOINT, j, "joint") for j in range(model.njnt)]
+    unnamed_free = [
+        j
+        for j in range(model.njnt)
+        if not mujoco.mj_id2name(model, mujoco.mjtObj.mjOBJ_JOINT, j) and model.jnt_type[j] == mujoco.mjtJoint.mjJNT_FREE
+    ]
+    if len(unnamed_free) == 1 and "root_joint" not in names:
+        names[unnamed_free[0]] = "root_joint"
+    return names
+
+
 def poses(path):
     model = mujoco.MjModel.from_xml_path(str(path))
     data = mujoco.MjData(model)
+    names = joint_names(model)
     rng = np.random.default_rng(2026)
     out = []
     for q in configurations(model, 4, rng):
@@ -64,8 +79,8 @@ def poses(path):
         joints = {}
         for j in range(model.njnt):
             a = model.jnt_qposadr[j]
-            width = {mujoco.mjtJoint.mjJNT_FREE: 7, mujoco.mjtJoint.mjJNT_BALL: 4}.get(model.jnt_type[j], 1)
-            joints[name(model, mujoco.mjtObj.mjOBJ_JOINT, j, "joint")] = [float(v) for v in q[a : a + width]]
+            width = {int(mujoco.mjtJoint.mjJNT_FREE): 7, int(mujoco.mjtJoint.mjJNT_BALL): 4}.get(int(model.jnt_type[j]), 1)
+            joints[names[j]] = [float(v) for v in q[a : a + width]]
         frames = {}
         for b in range(1, model.nbody):
             frames[name(model, mujoco.mjtObj.mjOBJ_BODY, b, "body")] = frame(data.xpos[b], data.xmat[b])

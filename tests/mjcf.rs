@@ -401,10 +401,10 @@ fn errors_name_the_element_and_the_line() {
         r#"<body name="b"><joint name="j" type="ball" axis="0 0 1"/></body>"#,
         "t.xml: joint `j` (line 3): a ball joint takes no `axis` (it turns about every axis through its `pos`)",
     );
-    check(r#"<body><joint name="j"/></body>"#, "t.xml: line 3: a <body> needs a `name` (it is a link of the robot)");
+    // An unnamed element is named by its MuJoCo id, and an error in it says so by that name.
     check(
-        r#"<body name="b"><joint/></body>"#,
-        "t.xml: joint `root_joint` (line 3): a <joint> needs a `name` (it names a degree of freedom)",
+        r#"<body><joint type="screw"/></body>"#,
+        "t.xml: joint `joint0` (line 3): `type=\"screw\"` is not one of hinge, slide, ball, free",
     );
     check(
         r#"<body name="b" quat="0 0 0 0"/>"#,
@@ -423,7 +423,7 @@ fn errors_name_the_element_and_the_line() {
     );
     check(
         r#"<body name="a"><body name="b"><freejoint/></body></body>"#,
-        "t.xml: joint `root_joint` (line 3): a free joint must be the only joint of a body whose parent is the world body",
+        "t.xml: joint `joint0` (line 3): a free joint must be the only joint of a body whose parent is the world body",
     );
     check(
         r#"<body name="b"><joint name="j" class="arm"/></body>"#,
@@ -614,10 +614,6 @@ fn ball_joints_refuse_what_they_cannot_mean() {
     check(
         &body(r#"<joint name="j" type="ball" limited="true"/>"#),
         "t.xml: joint `j` (line 3): `limited=\"true\"` needs a `range`",
-    );
-    check(
-        &body(r#"<joint type="ball"/>"#),
-        "t.xml: joint `root_joint` (line 3): a <joint> needs a `name` (it names a degree of freedom)",
     );
     // An equality couples hinges and slides: a ball or free joint named by one is refused, at the
     // attribute's line, whichever side it is on and whether or not the coupling is active.
@@ -850,4 +846,44 @@ fn the_ball_trees_neck_turned_a_quarter_about_z() {
     for (row, e) in expected.iter().enumerate() {
         assert!((j[row][column] - e).abs() < 1e-15, "row {row}: {}", j[row][column]);
     }
+}
+
+#[test]
+fn a_name_given_twice_is_refused_naming_both_elements_their_kinds_and_lines() {
+    let check = |body: &str, expected: &str| {
+        let text = format!("<mujoco>\n<worldbody>\n{body}\n</worldbody>\n</mujoco>");
+        assert_eq!(load(&text).unwrap_err(), expected, "{body}");
+    };
+    check(
+        "<body name=\"b\"/>\n<body name=\"b\"/>",
+        "t.xml: body `b` (line 4): this body makes a link named `b`, and so does the body at line 3: the model's \
+         links need names of their own (rename one)",
+    );
+    // A site and a body: MuJoCo keeps them apart, the model makes both links.
+    check(
+        "<body name=\"arm\"><joint name=\"j\"/>\n<site name=\"arm\"/></body>",
+        "t.xml: site `arm` (line 4): this site makes a link named `arm`, and so does the body at line 3: the \
+         model's links need names of their own (rename one)",
+    );
+    // A frame named like a joint: its fixed joint takes the name.
+    check(
+        "<body name=\"arm\"><joint name=\"elbow\"/>\n<frame name=\"elbow\"/></body>",
+        "t.xml: frame `elbow` (line 4): this frame (fixed to its body by a joint of its name) makes a joint named \
+         `elbow`, and so does the joint at line 3: the model's joints need names of their own (rename one)",
+    );
+    // A written name equal to an unnamed body's: the unnamed body is body 1.
+    check(
+        "<body><joint name=\"j\"/></body>\n<body name=\"body1\"/>",
+        "t.xml: body `body1` (line 4): this body makes a link named `body1`, and so does the body at line 3: the \
+         model's links need names of their own (rename one)",
+    );
+    check(
+        "<body name=\"world\"/>",
+        "t.xml: body `world` (line 3): this body makes a link named `world`, and so does the world body at the \
+         model's root: the model's links need names of their own (rename one)",
+    );
+    // The same name on elements of different kinds that the model keeps apart loads: a joint and
+    // a body (a link) named alike.
+    let tree = mjcf("<mujoco><worldbody><body name=\"x\"><joint name=\"x\"/></body></worldbody></mujoco>");
+    assert_eq!(tree.dof_names(), ["x"]);
 }

@@ -20,8 +20,11 @@
 //! - `free` joints (and `<freejoint>`) are the floating base ([`crate::JointKind::Floating`]),
 //!   allowed only as the one joint of a child of the world body: `q` is the body's position and
 //!   then its quaternion as `qx, qy, qz, qw` (MuJoCo's `qpos` writes `qw` first), and the body's
-//!   `pos` and orientation are only MuJoCo's initial `qpos`, not part of the kinematics. An
-//!   unnamed free joint is named `root_joint`.
+//!   `pos` and orientation are only MuJoCo's initial `qpos`, not part of the kinematics.
+//! - Unnamed elements load under names from MuJoCo's ids, which number a file's bodies (the world
+//!   body 0) and joints in the order written, a body before its children: `body<id>` and
+//!   `joint<id>`, without the attached model's prefix (MuJoCo gives them none). The one unnamed
+//!   free joint of a model, if it has only one, is `root_joint`, as a URDF's floating base is named.
 //! - `ball` joints are spherical joints ([`crate::JointKind::Spherical`]) turning about their
 //!   `pos` (`Trans(pos) Rot(quaternion) Trans(-pos)`, exactly): four entries of `q`, the body's
 //!   orientation relative to where it is written as `qx, qy, qz, qw` (MuJoCo's `qpos` writes `qw`
@@ -109,8 +112,17 @@ pub fn parse_mjcf_with(text: &str, read: ReadFile<'_>) -> Result<Description, Lo
     if root.tag_name().name() != "mujoco" {
         return Err(place.error(root, None, format!("the root element is <{}>, not <mujoco>", root.tag_name().name())));
     }
-    let mut reader =
-        Reader { docs: &docs, description: Description::default(), refs: BTreeMap::new(), several: BTreeMap::new() };
+    let mut reader = Reader {
+        docs: &docs,
+        description: Description::default(),
+        refs: BTreeMap::new(),
+        several: BTreeMap::new(),
+        next_body: 1,
+        next_joint: 0,
+        unnamed_free: Vec::new(),
+        link_names: BTreeMap::from([(WORLD.to_owned(), Claim { kind: "world body", file: MAIN.to_owned(), line: 0 })]),
+        joint_names: BTreeMap::new(),
+    };
     reader.description.name = root.attribute("model").unwrap_or("MuJoCo Model").to_owned();
     reader.description.links.push(WORLD.to_owned());
     let model = reader.settings(MAIN, String::new())?;
@@ -122,6 +134,7 @@ pub fn parse_mjcf_with(text: &str, read: ReadFile<'_>) -> Result<Description, Lo
             reader.children(place, node, &at)?;
         }
     }
+    reader.name_the_floating_base();
     for (place, node) in reader.top_level(MAIN, &mut Vec::new())? {
         if node.tag_name().name() == "equality" {
             reader.equality(&model, place, node)?;
@@ -342,6 +355,27 @@ struct Reader<'d, 't> {
     refs: BTreeMap<String, f64>,
     /// Each ball and free joint's type, which an equality constraint cannot couple.
     several: BTreeMap<String, &'static str>,
+    /// MuJoCo's id of the next body read (the world body is 0): bodies are numbered in the order
+    /// the file gives them, a body before its children, as MuJoCo's compiler numbers them.
+    next_body: usize,
+    /// MuJoCo's id of the next joint read, numbered the same way (a body's joints in order).
+    next_joint: usize,
+    /// The unnamed free joints read (named `joint<id>` until the end; one alone becomes
+    /// `root_joint`).
+    unnamed_free: Vec<String>,
+    /// Each link name given so far: the kind of element that gave it, its file and line.
+    link_names: BTreeMap<String, Claim>,
+    /// Each joint name given so far, the same way.
+    joint_names: BTreeMap<String, Claim>,
+}
+
+/// Where a link or joint name was given: the kind of element (`body`, `site`, ...), its file and
+/// line.
+#[derive(Debug, Clone)]
+struct Claim {
+    kind: &'static str,
+    file: String,
+    line: usize,
 }
 
 type Elements<'d, 't> = Vec<(Place<'d, 't>, Node<'d, 't>)>;
@@ -555,6 +589,9 @@ impl<'d, 't> Reader<'d, 't> {
                     let attributes = self.attributes(model, place, child, "frame", childclass, &element)?;
                     let inner = frame.clone().then(&pose(model, &attributes, &element)?);
                     if let Some(name) = name {
+                        self.claim(false, &name, "frame", place, child, &element)?;
+                        let fixed = "frame (fixed to its body by a joint of its name)";
+                        self.claim(true, &name, fixed, place, child, &element)?;
                         self.fixed(&name, parent, inner.clone());
                     }
                     let childclass = child.attribute("childclass").or(childclass);
@@ -566,6 +603,8 @@ impl<'d, 't> Reader<'d, 't> {
                     let element = Some(Element::Site(name.clone()));
                     let attributes = self.attributes(model, place, child, "site", childclass, &element)?;
                     let origin = frame.clone().then(&site_pose(model, &attributes, &element)?);
+                    self.claim(false, &name, "site", place, child, &element)?;
+                    self.claim(true, &name, "site (fixed to its body by a joint of its name)", place, child, &element)?;
                     self.fixed(&name, parent, origin);
                 }
                 "attach" => self.attach(model, place, child, parent, frame)?,
@@ -593,6 +632,56 @@ impl<'d, 't> Reader<'d, 't> {
         Ok(())
     }
 
+    /// The model's one unnamed free joint, if it has exactly one, is `root_joint` (Pinocchio's name
+    /// for a free-flyer, as a URDF's floating base is named), unless a joint has that name; with
+    /// several, each keeps `joint<id>`.
+    fn name_the_floating_base(&mut self) {
+        let root = crate::description::FLOATING_BASE_JOINT;
+        let [unnamed] = &self.unnamed_free[..] else { return };
+        if self.description.joints.iter().any(|j| j.name == root) {
+            return;
+        }
+        for joint in self.description.joints.iter_mut().filter(|j| j.name == *unnamed) {
+            joint.name = root.to_owned();
+            joint.element = Element::Joint(root.to_owned());
+        }
+        if let Some(kind) = self.several.remove(unnamed) {
+            self.several.insert(root.to_owned(), kind);
+        }
+    }
+
+    /// Takes the link name (`joint` false) or joint name `name` for an element of kind `kind` at
+    /// `node`, or refuses it if an element gave it already, naming both elements, their kinds
+    /// and lines (MuJoCo keeps names per kind, a body's apart from a site's; in the model both
+    /// are links, and a site's or frame's fixed joint is named as it is).
+    fn claim(
+        &mut self,
+        joint: bool,
+        name: &str,
+        kind: &'static str,
+        place: Place<'d, 't>,
+        node: Node<'d, 't>,
+        element: &Option<Element>,
+    ) -> Result<(), LoadErrorKind> {
+        let line = place.line(node.range().start);
+        let (names, what) = if joint { (&mut self.joint_names, "joint") } else { (&mut self.link_names, "link") };
+        if let Some(first) = names.get(name) {
+            let at = match (first.line, first.file == place.file) {
+                (0, _) => "the model's root".to_owned(),
+                (line, true) => format!("line {line}"),
+                (line, false) => format!("line {line} of `{}`", first.file),
+            };
+            let message = format!(
+                "this {kind} makes a {what} named `{name}`, and so does the {} at {at}: the model's {what}s \
+                 need names of their own (rename one)",
+                first.kind
+            );
+            return Err(place.error(node, element.clone(), message));
+        }
+        names.insert(name.to_owned(), Claim { kind, file: place.file.to_owned(), line });
+        Ok(())
+    }
+
     /// A link `name` fixed to `parent` by a joint of the same name.
     fn fixed(&mut self, name: &str, parent: &str, origin: FixedTransform) {
         self.description.links.push(name.to_owned());
@@ -611,15 +700,18 @@ impl<'d, 't> Reader<'d, 't> {
         });
     }
 
-    /// One `<body>` (XML reference, `body`), its joints and its children.
+    /// One `<body>` (XML reference, `body`), its joints and its children. An unnamed body is
+    /// `body<id>`, MuJoCo's id for it.
     fn body(&mut self, place: Place<'d, 't>, node: Node<'d, 't>, at: &Within<'_>) -> Result<(), LoadErrorKind> {
         let Within { model, parent, frame, childclass, top } = *at;
-        let Some(name) = node.attribute("name") else {
-            let message = "a <body> needs a `name` (it is a link of the robot)".to_owned();
-            return Err(place.error(node, None, message));
+        let id = self.next_body;
+        self.next_body += 1;
+        let name = match node.attribute("name") {
+            Some(name) => format!("{}{name}", model.prefix),
+            None => format!("body{id}"),
         };
-        let name = format!("{}{name}", model.prefix);
         let element = Some(Element::Body(name.clone()));
+        self.claim(false, &name, "body", place, node, &element)?;
         let attributes = self.attributes(model, place, node, "body", childclass, &element)?;
         if let Some(mocap) = attributes.get("mocap")
             && mocap.word("mocap", &element, &["true", "false"])? == "true"
@@ -632,14 +724,23 @@ impl<'d, 't> Reader<'d, 't> {
         let joints: Vec<_> =
             elements.iter().filter(|(_, n)| matches!(n.tag_name().name(), "joint" | "freejoint")).collect();
         if joints.is_empty() {
+            self.claim(true, &name, "body (fixed to its parent by a joint of its name)", place, node, &element)?;
             self.fixed(&name, parent, body_pose.clone());
         }
         let mut link = parent.to_owned();
         let count = joints.len();
+        let first_joint = self.next_joint;
+        self.next_joint += count;
         for (k, (place, joint)) in joints.into_iter().enumerate() {
-            let child = if k + 1 == count { name.clone() } else { format!("{name}.{}", joint_name(model, *joint)) };
+            let id = first_joint + k;
+            let child = if k + 1 == count { name.clone() } else { format!("{name}.{}", joint_name(model, *joint, id)) };
             let origin = if k == 0 { body_pose.clone() } else { FixedTransform::identity() };
-            let description = self.joint(model, *place, *joint, &link, &child, origin, childclass, (top, count))?;
+            let description = self.joint(model, *place, *joint, id, &link, &child, origin, childclass, (top, count))?;
+            let joint_element = Some(Element::Joint(description.name.clone()));
+            self.claim(true, &description.name, "joint", *place, *joint, &joint_element)?;
+            if k + 1 < count {
+                self.claim(false, &child, "joint (the link between a body's joints)", *place, *joint, &joint_element)?;
+            }
             self.description.links.push(child.clone());
             self.description.joints.push(description);
             link = child;
@@ -648,14 +749,15 @@ impl<'d, 't> Reader<'d, 't> {
         self.children(place, node, &Within { model, parent: &name, frame: &identity, childclass, top: false })
     }
 
-    /// One `<joint>` or `<freejoint>` (XML reference, `body/joint`, `body/freejoint`) moving
-    /// `child` relative to `parent`, after the fixed `origin`.
+    /// One `<joint>` or `<freejoint>` (XML reference, `body/joint`, `body/freejoint`), MuJoCo's
+    /// joint `id`, moving `child` relative to `parent`, after the fixed `origin`.
     #[allow(clippy::too_many_arguments)]
     fn joint(
         &mut self,
         model: &Model,
         place: Place<'d, 't>,
         node: Node<'d, 't>,
+        id: usize,
         parent: &str,
         child: &str,
         origin: FixedTransform,
@@ -663,7 +765,7 @@ impl<'d, 't> Reader<'d, 't> {
         (top, count): (bool, usize),
     ) -> Result<JointDescription, LoadErrorKind> {
         let free_element = node.tag_name().name() == "freejoint";
-        let name = joint_name(model, node);
+        let name = joint_name(model, node, id);
         let element = Some(Element::Joint(name.clone()));
         let tag = if free_element { "freejoint" } else { "joint" };
         let attributes = self.attributes(model, place, node, tag, childclass, &element)?;
@@ -673,9 +775,6 @@ impl<'d, 't> Reader<'d, 't> {
             Some(t) => t.word("type", &element, &["hinge", "slide", "ball", "free"])?,
         };
         let here = |message: String| place.error(node, element.clone(), message);
-        if kind != "free" && node.attribute("name").is_none() {
-            return Err(here("a <joint> needs a `name` (it names a degree of freedom)".to_owned()));
-        }
         let mut description = JointDescription {
             name: name.clone(),
             element: Element::Joint(name.clone()),
@@ -708,6 +807,9 @@ impl<'d, 't> Reader<'d, 't> {
                     }
                 }
                 self.several.insert(name.clone(), "free");
+                if node.attribute("name").is_none() {
+                    self.unnamed_free.push(name.clone());
+                }
                 return Ok(description);
             }
             _ => {}
@@ -977,12 +1079,12 @@ impl<'d, 't> Reader<'d, 't> {
     }
 }
 
-/// A joint's name with its model's prefix; an unnamed `<freejoint>` (or free joint) is
-/// `root_joint`, the floating base's name.
-fn joint_name(model: &Model, node: Node<'_, '_>) -> String {
+/// A joint's name with its model's prefix; an unnamed one is `joint<id>`, MuJoCo's id for it
+/// (see [`Reader::name_the_floating_base`] for the one exception).
+fn joint_name(model: &Model, node: Node<'_, '_>, id: usize) -> String {
     match node.attribute("name") {
         Some(name) => format!("{}{name}", model.prefix),
-        None => format!("{}{}", model.prefix, crate::description::FLOATING_BASE_JOINT),
+        None => format!("joint{id}"),
     }
 }
 

@@ -118,3 +118,27 @@ fn fromto_sites_point_their_z_axis_from_to_towards_from_as_mujoco_does() {
 fn every_orientation_form_classes_and_frames_agree_with_mujoco() {
     agrees_with_mujoco("orientations");
 }
+
+#[test]
+fn unnamed_bodies_and_joints_load_under_mujocos_ids_and_agree_with_mujoco() {
+    agrees_with_mujoco("unnamed");
+    let text = std::fs::read_to_string(format!("{}/tests/fixtures/mujoco/unnamed.xml", env!("CARGO_MANIFEST_DIR")));
+    let tree = super::load(&text.unwrap()).unwrap();
+    // Two unnamed free joints are two joints, each under its id; no name is given twice.
+    let joints: Vec<&str> = tree.joints().iter().map(|j| j.name.as_str()).collect();
+    for name in ["joint0", "joint1", "joint2", "named_hinge", "joint4", "joint5", "joint6"] {
+        assert_eq!(joints.iter().filter(|j| **j == name).count(), 1, "{name} in {joints:?}");
+    }
+    assert!(!joints.contains(&"root_joint"), "{joints:?}");
+    // A body of several joints: its intermediate link named after the body and the joint.
+    assert!(tree.links().iter().any(|l| l.name == "body2.joint1"), "{:?}", tree.links());
+}
+
+#[test]
+fn the_one_unnamed_free_joint_is_root_joint() {
+    agrees_with_mujoco("one_free_body");
+    let text =
+        std::fs::read_to_string(format!("{}/tests/fixtures/mujoco/one_free_body.xml", env!("CARGO_MANIFEST_DIR")));
+    let tree = super::load(&text.unwrap()).unwrap();
+    assert_eq!(&tree.dof_names()[..2], ["root_joint.x", "root_joint.y"]);
+}
