@@ -34,7 +34,7 @@ def configurations(model, count, rng):
     """The model's reference configuration, then random ones: hinges and slides within their range
     (or a turn either way when unlimited), free joints at random positions and orientations, ball
     joints at random orientations."""
-    yield model.qpos0.copy()
+    yield follow_equalities(model, model.qpos0.copy())
     for _ in range(count - 1):
         q = model.qpos0.copy()
         for j in range(model.njnt):
@@ -51,7 +51,20 @@ def configurations(model, count, rng):
                 q[a] = rng.uniform(low, high)
             else:
                 q[a] = rng.uniform(-np.pi, np.pi)
-        yield q
+        yield follow_equalities(model, q)
+
+
+def follow_equalities(model, q):
+    """`q` with each joint an active joint equality couples set where the coupling puts it:
+    MuJoCo's constraint `y - y0 = a0 + a1 (x - x0)` (y0, x0 the joints' qpos0), which kinematics
+    alone does not enforce and the reader models as a mimic joint. Linear couplings only."""
+    for e in range(model.neq):
+        if model.eq_type[e] != mujoco.mjtEq.mjEQ_JOINT or not model.eq_active0[e] or model.eq_obj2id[e] < 0:
+            continue
+        y, x = model.jnt_qposadr[model.eq_obj1id[e]], model.jnt_qposadr[model.eq_obj2id[e]]
+        a0, a1 = model.eq_data[e][0], model.eq_data[e][1]
+        q[y] = model.qpos0[y] + a0 + a1 * (q[x] - model.qpos0[x])
+    return q
 
 
 def joint_names(model):

@@ -44,10 +44,12 @@
 //!   constraints their attributes, as MuJoCo's Modeling chapter, "Default settings", describes.
 //! - `<include file>` inserts another file's children of `<mujoco>` (read through the caller's
 //!   [`ReadFile`]; paths as written, for the caller to resolve relative to the main file's
-//!   directory, as MuJoCo does); `<attach model body prefix>` attaches body `body` of the
-//!   `<asset><model file>` named `model`, with every name prefixed and that file's own compiler
-//!   settings and classes (its `<equality>` constraints are listed in [`Description::ignored`],
-//!   not read).
+//!   directory, as MuJoCo does); `<attach model body|frame prefix>` attaches, of the
+//!   `<asset><model file>` named `model`, body `body`, or frame `frame`, or without either its
+//!   whole world body (its bodies, sites and frames), with every name prefixed and that file's
+//!   own compiler settings and classes; its joint `<equality>` constraints are read with the
+//!   prefix, and one naming a joint the attachment leaves out is listed in
+//!   [`Description::ignored`] (MuJoCo drops it).
 //! - `<equality><joint joint1 joint2 polycoef>` with a linear polynomial makes `joint1` a mimic of
 //!   `joint2`: MuJoCo's constraint `y - y0 = a0 + a1 (x - x0)` (y0, x0 the joints' `ref`) is
 //!   `multiplier = a1`, `offset = a0 + y0 - a1 x0`. Every other equality (connect, weld, tendon,
@@ -122,6 +124,7 @@ pub fn parse_mjcf_with(text: &str, read: ReadFile<'_>) -> Result<Description, Lo
         unnamed_free: Vec::new(),
         link_names: BTreeMap::from([(WORLD.to_owned(), Claim { kind: "world body", file: MAIN.to_owned(), line: 0 })]),
         joint_names: BTreeMap::new(),
+        attached: Vec::new(),
     };
     reader.description.name = root.attribute("model").unwrap_or("MuJoCo Model").to_owned();
     reader.description.links.push(WORLD.to_owned());
@@ -137,7 +140,14 @@ pub fn parse_mjcf_with(text: &str, read: ReadFile<'_>) -> Result<Description, Lo
     reader.name_the_floating_base();
     for (place, node) in reader.top_level(MAIN, &mut Vec::new())? {
         if node.tag_name().name() == "equality" {
-            reader.equality(&model, place, node)?;
+            reader.equality(&model, place, node, None)?;
+        }
+    }
+    for (model, file, asset) in std::mem::take(&mut reader.attached) {
+        for (place, node) in reader.top_level(&file, &mut Vec::new())? {
+            if node.tag_name().name() == "equality" {
+                reader.equality(&model, place, node, Some(&asset))?;
+            }
         }
     }
     Ok(reader.description)
@@ -284,6 +294,7 @@ struct Class {
 
 /// What one model file's elements are read with: its compiler settings, its classes, and the
 /// prefix its names get (empty for the main file; an `<attach>`'s `prefix`).
+#[derive(Clone)]
 struct Model {
     compiler: Compiler,
     classes: BTreeMap<String, Class>,
@@ -367,6 +378,9 @@ struct Reader<'d, 't> {
     link_names: BTreeMap<String, Claim>,
     /// Each joint name given so far, the same way.
     joint_names: BTreeMap<String, Claim>,
+    /// Each `<attach>` read: the attached model's settings, its file and its asset's name, whose
+    /// `<equality>` constraints are read after every body.
+    attached: Vec<(Model, String, String)>,
 }
 
 /// Where a link or joint name was given: the kind of element (`body`, `site`, ...), its file and
@@ -583,20 +597,7 @@ impl<'d, 't> Reader<'d, 't> {
         for (place, child) in self.expand(place, node, &mut Vec::new())? {
             match child.tag_name().name() {
                 "body" => self.body(place, child, at)?,
-                "frame" => {
-                    let name = child.attribute("name").map(|n| format!("{}{n}", model.prefix));
-                    let element = name.clone().map(Element::Frame);
-                    let attributes = self.attributes(model, place, child, "frame", childclass, &element)?;
-                    let inner = frame.clone().then(&pose(model, &attributes, &element)?);
-                    if let Some(name) = name {
-                        self.claim(false, &name, "frame", place, child, &element)?;
-                        let fixed = "frame (fixed to its body by a joint of its name)";
-                        self.claim(true, &name, fixed, place, child, &element)?;
-                        self.fixed(&name, parent, inner.clone());
-                    }
-                    let childclass = child.attribute("childclass").or(childclass);
-                    self.children(place, child, &Within { frame: &inner, childclass, ..*at })?;
-                }
+                "frame" => self.frame(place, child, at)?,
                 "site" => {
                     let Some(name) = child.attribute("name") else { continue };
                     let name = format!("{}{name}", model.prefix);
@@ -680,6 +681,24 @@ impl<'d, 't> Reader<'d, 't> {
         }
         names.insert(name.to_owned(), Claim { kind, file: place.file.to_owned(), line });
         Ok(())
+    }
+
+    /// One `<frame>` (XML reference, `frame`): its transform applies to what it holds, and a named
+    /// one is also a link fixed to the enclosing body.
+    fn frame(&mut self, place: Place<'d, 't>, node: Node<'d, 't>, at: &Within<'_>) -> Result<(), LoadErrorKind> {
+        let Within { model, parent, frame, childclass, .. } = *at;
+        let name = node.attribute("name").map(|n| format!("{}{n}", model.prefix));
+        let element = name.clone().map(Element::Frame);
+        let attributes = self.attributes(model, place, node, "frame", childclass, &element)?;
+        let inner = frame.clone().then(&pose(model, &attributes, &element)?);
+        if let Some(name) = name {
+            self.claim(false, &name, "frame", place, node, &element)?;
+            let fixed = "frame (fixed to its body by a joint of its name)";
+            self.claim(true, &name, fixed, place, node, &element)?;
+            self.fixed(&name, parent, inner.clone());
+        }
+        let childclass = node.attribute("childclass").or(childclass);
+        self.children(place, node, &Within { frame: &inner, childclass, ..*at })
     }
 
     /// A link `name` fixed to `parent` by a joint of the same name.
@@ -947,9 +966,10 @@ impl<'d, 't> Reader<'d, 't> {
         Ok(Some(LimitsDescription { lower: convert(lower), upper: convert(upper), velocity: None, effort: None }))
     }
 
-    /// `<attach model body prefix>` (XML reference, `attach`; Modeling chapter, "Model
-    /// composition"): body `body` of the model asset `model`, read with that file's compiler
-    /// settings and classes, every name prefixed.
+    /// `<attach model body|frame prefix>` (XML reference, `attach`; Modeling chapter, "Model
+    /// composition"): body `body`, frame `frame` or (neither written, as MuJoCo 4 allows) the
+    /// whole world body of the model asset `model`, read with that file's compiler settings and
+    /// classes, every name prefixed; its equality constraints are read after every body.
     fn attach(
         &mut self,
         model: &Model,
@@ -959,14 +979,21 @@ impl<'d, 't> Reader<'d, 't> {
         frame: &FixedTransform,
     ) -> Result<(), LoadErrorKind> {
         for a in node.attributes() {
-            if !["model", "body", "prefix"].contains(&a.name()) {
+            if !["model", "body", "frame", "prefix"].contains(&a.name()) {
                 return Err(place.error(node, None, format!("<attach>: unknown attribute `{}`", a.name())));
             }
         }
-        let required = |name: &str| {
-            node.attribute(name).ok_or_else(|| place.error(node, None, format!("<attach> needs a `{name}` attribute")))
+        let Some(asset) = node.attribute("model") else {
+            return Err(place.error(node, None, "<attach> needs a `model` attribute".to_owned()));
         };
-        let (asset, body) = (required("model")?, required("body")?);
+        let what = match (node.attribute("body"), node.attribute("frame")) {
+            (Some(_), Some(_)) => {
+                return Err(place.error(node, None, "<attach> takes a `body` or a `frame`, not both".to_owned()));
+            }
+            (Some(body), None) => Some(("body", body)),
+            (None, Some(frame)) => Some(("frame", frame)),
+            (None, None) => None,
+        };
         let prefix = format!("{}{}", model.prefix, node.attribute("prefix").unwrap_or(""));
         let Some(file) = self.model_file(asset)? else {
             return Err(place.error(node, None, format!("no <asset><model name=\"{asset}\" file=...> to attach")));
@@ -974,25 +1001,26 @@ impl<'d, 't> Reader<'d, 't> {
         let attached = self.settings(&file, prefix)?;
         self.check_sections(&file)?;
         let top_level = self.top_level(&file, &mut Vec::new())?;
-        for (p, equality) in top_level.iter().filter(|(_, n)| n.tag_name().name() == "equality") {
-            let line = p.line(equality.range().start);
-            self.description.ignored.push(format!(
-                "<equality> (line {line} of `{file}`, attached as `{asset}`): an attached model's constraints are not read"
-            ));
-        }
-        for (p, top) in top_level {
-            if top.tag_name().name() != "worldbody" {
-                continue;
+        self.attached.push((attached.clone(), file.clone(), asset.to_owned()));
+        let top = parent == WORLD;
+        let worldbodies = top_level.into_iter().filter(|(_, n)| n.tag_name().name() == "worldbody");
+        let Some((tag, name)) = what else {
+            // The whole world body: its bodies, sites and frames, in place of the <attach>.
+            for (p, world) in worldbodies {
+                self.children(p, world, &Within { model: &attached, parent, frame, childclass: None, top })?;
             }
+            return Ok(());
+        };
+        for (p, world) in worldbodies {
             if let Some(found) =
-                top.descendants().find(|n| n.tag_name().name() == "body" && n.attribute("name") == Some(body))
+                world.descendants().find(|n| n.tag_name().name() == tag && n.attribute("name") == Some(name))
             {
                 let childclass = found.ancestors().skip(1).find_map(|a| a.attribute("childclass"));
-                let at = Within { model: &attached, parent, frame, childclass, top: parent == WORLD };
-                return self.body(p, found, &at);
+                let at = Within { model: &attached, parent, frame, childclass, top };
+                return if tag == "body" { self.body(p, found, &at) } else { self.frame(p, found, &at) };
             }
         }
-        Err(place.error(node, None, format!("the model `{asset}` (`{file}`) has no body `{body}` to attach")))
+        Err(place.error(node, None, format!("the model `{asset}` (`{file}`) has no {tag} `{name}` to attach")))
     }
 
     /// The file of the model asset named `asset` in the main file's `<asset>`s.
@@ -1013,13 +1041,27 @@ impl<'d, 't> Reader<'d, 't> {
 
     /// `<equality>` (XML reference, `equality/joint`): linear joint couplings become mimics,
     /// everything else is listed as ignored.
-    fn equality(&mut self, model: &Model, place: Place<'d, 't>, node: Node<'d, 't>) -> Result<(), LoadErrorKind> {
+    /// One `<equality>` section of the main file (`attached` none) or of the model attached as
+    /// asset `attached`: its joint names prefixed as the model's are. An attached model's
+    /// constraint naming a joint the attachment left out is not applied (MuJoCo drops it too)
+    /// and is listed as such.
+    fn equality(
+        &mut self,
+        model: &Model,
+        place: Place<'d, 't>,
+        node: Node<'d, 't>,
+        attached: Option<&str>,
+    ) -> Result<(), LoadErrorKind> {
         for (place, child) in self.expand(place, node, &mut Vec::new())? {
             let tag = child.tag_name().name();
             let line = place.line(child.range().start);
+            let of = match attached {
+                Some(asset) => format!(" of `{}`, attached as `{asset}`", place.file),
+                None => String::new(),
+            };
             let label = match child.attribute("name") {
-                Some(name) => format!("<equality><{tag} name=\"{name}\"> (line {line})"),
-                None => format!("<equality><{tag}> (line {line})"),
+                Some(name) => format!("<equality><{tag} name=\"{name}\"> (line {line}{of})"),
+                None => format!("<equality><{tag}> (line {line}{of})"),
             };
             if tag != "joint" {
                 self.description.ignored.push(format!("{label}: not kinematics of a tree, not applied"));
@@ -1028,12 +1070,14 @@ impl<'d, 't> Reader<'d, 't> {
             let element = None;
             let attributes = self.attributes(model, place, child, "equality", None, &element)?;
             // MuJoCo couples hinges and slides only (XML reference, `equality/joint`).
+            let prefixed = |w: &Written| format!("{}{}", model.prefix, w.value);
             let named = ["joint1", "joint2"].into_iter().filter_map(|a| attributes.get(a));
-            if let Some((joint, kind)) = named.into_iter().find_map(|w| self.several.get(&w.value).map(|k| (w, k))) {
+            if let Some((joint, kind)) = named.into_iter().find_map(|w| self.several.get(&prefixed(w)).map(|k| (w, k)))
+            {
                 let message = format!(
                     "<equality><joint>: `{}` is a {kind} joint (a quaternion in `q`, not one value): only hinges \
                      and slides are coupled",
-                    joint.value
+                    prefixed(joint)
                 );
                 return Err(joint.error(&element, message));
             }
@@ -1047,7 +1091,9 @@ impl<'d, 't> Reader<'d, 't> {
                 return Err(place.error(child, None, "<equality><joint> needs `joint1`".to_owned()));
             };
             let Some(joint2) = attributes.get("joint2") else {
-                self.description.ignored.push(format!("{label}: holds `{}` at a constant, not applied", joint1.value));
+                self.description
+                    .ignored
+                    .push(format!("{label}: holds `{}` at a constant, not applied", prefixed(joint1)));
                 continue;
             };
             let coefficients: Vec<f64> = match attributes.get("polycoef") {
@@ -1058,9 +1104,15 @@ impl<'d, 't> Reader<'d, 't> {
                 self.description.ignored.push(format!("{label}: a polynomial of degree above 1, not applied"));
                 continue;
             }
-            let (y, x) = (joint1.value.clone(), joint2.value.clone());
+            let (y, x) = (prefixed(joint1), prefixed(joint2));
             let (Some(&y0), Some(&x0)) = (self.refs.get(&y), self.refs.get(&x)) else {
                 let missing = if self.refs.contains_key(&y) { &x } else { &y };
+                if attached.is_some() && !self.joint_names.contains_key(missing) {
+                    self.description.ignored.push(format!(
+                        "{label}: names `{missing}`, which the attachment leaves out, not applied (as MuJoCo drops it)"
+                    ));
+                    continue;
+                }
                 return Err(place.error(
                     child,
                     None,

@@ -77,12 +77,16 @@ fn q_of(tree: &kinematics::model::KinematicTree, qpos: &BTreeMap<String, Vec<f64
         .collect()
 }
 
+/// The fixture read as a user reads a file (the files it names read beside it).
+fn fixture_tree(fixture: &str) -> kinematics::model::KinematicTree {
+    let path = format!("{}/tests/fixtures/mujoco/{fixture}.xml", env!("CARGO_MANIFEST_DIR"));
+    kinematics::load(&path).unwrap_or_else(|e| panic!("{fixture}: {e}"))
+}
+
 /// Every body and site MuJoCo places, placed by the reader's tree within 1e-12 at each of the
 /// fixture's configurations.
 fn agrees_with_mujoco(fixture: &str) {
-    let path = format!("{}/tests/fixtures/mujoco/{fixture}.xml", env!("CARGO_MANIFEST_DIR"));
-    let text = std::fs::read_to_string(&path).unwrap();
-    let tree = super::load(&text).unwrap_or_else(|e| panic!("{fixture}: {e}"));
+    let tree = fixture_tree(fixture);
     let reference = ReferenceFk::new(tree.clone());
     let configurations = configurations(fixture);
     assert!(configurations.len() >= 2, "{fixture}: the reference configuration and a random one at least");
@@ -122,8 +126,7 @@ fn every_orientation_form_classes_and_frames_agree_with_mujoco() {
 #[test]
 fn unnamed_bodies_and_joints_load_under_mujocos_ids_and_agree_with_mujoco() {
     agrees_with_mujoco("unnamed");
-    let text = std::fs::read_to_string(format!("{}/tests/fixtures/mujoco/unnamed.xml", env!("CARGO_MANIFEST_DIR")));
-    let tree = super::load(&text.unwrap()).unwrap();
+    let tree = fixture_tree("unnamed");
     // Two unnamed free joints are two joints, each under its id; no name is given twice.
     let joints: Vec<&str> = tree.joints().iter().map(|j| j.name.as_str()).collect();
     for name in ["joint0", "joint1", "joint2", "named_hinge", "joint4", "joint5", "joint6"] {
@@ -141,4 +144,33 @@ fn the_one_unnamed_free_joint_is_root_joint() {
         std::fs::read_to_string(format!("{}/tests/fixtures/mujoco/one_free_body.xml", env!("CARGO_MANIFEST_DIR")));
     let tree = super::load(&text.unwrap()).unwrap();
     assert_eq!(&tree.dof_names()[..2], ["root_joint.x", "root_joint.y"]);
+}
+
+#[test]
+fn attach_with_a_body_without_one_and_with_a_frame_agrees_with_mujoco() {
+    agrees_with_mujoco("attach_arm");
+    agrees_with_mujoco("attach");
+    let tree = fixture_tree("attach");
+    // The attached model's equality, kept with its prefix wherever both joints are attached: the
+    // whole model's and the body's; the tip's attachment leaves `j1` out.
+    let mimics: Vec<(&str, &str)> = tree
+        .joints()
+        .iter()
+        .filter_map(|j| match j.motion {
+            kinematics::model::JointMotion::Mimic { source, .. } => {
+                Some((j.name.as_str(), tree.joint(source).name.as_str()))
+            }
+            _ => None,
+        })
+        .collect();
+    assert_eq!(mimics, [("whole_j2", "whole_j1"), ("body_j2", "body_j1")]);
+    assert!(
+        tree.ignored().iter().any(|i| i.contains("`tip_j1`, which the attachment leaves out")),
+        "{:?}",
+        tree.ignored()
+    );
+    // The whole world body brings its sites and frames, prefixed.
+    for link in ["whole_world_site", "whole_side", "whole_side_site", "frame_side", "frame_side_site"] {
+        assert!(tree.links().iter().any(|l| l.name == link), "{link}");
+    }
 }
