@@ -13,7 +13,7 @@ runs this script. Run it after changing a fixture:
 Elements without a name are written under the names the reader gives them (the guide's
 descriptions page): `body<i>` for body id i and `joint<i>` for joint id i, MuJoCo's ids (its
 order of the file's bodies and joints, the world body being 0), but for a model's one unnamed
-free joint, `root_joint`.
+free joint, `root_joint`; a site named like a body or joint is written as `NAME.site`.
 """
 
 import json
@@ -98,10 +98,13 @@ def poses(path):
         for b in range(1, model.nbody):
             frames[name(model, mujoco.mjtObj.mjOBJ_BODY, b, "body")] = frame(data.xpos[b], data.xmat[b])
         sites = {}
+        bodies_and_joints = set(frames) | set(names)
         for s in range(model.nsite):
             written = mujoco.mj_id2name(model, mujoco.mjtObj.mjOBJ_SITE, s)
             if written:
-                sites[written] = frame(data.site_xpos[s], data.site_xmat[s])
+                # A site named like a body or joint gives way, as the reader names it.
+                link = f"{written}.site" if written in bodies_and_joints else written
+                sites[link] = frame(data.site_xpos[s], data.site_xmat[s])
         out.append({"qpos": joints, "bodies": frames, "sites": sites})
     return {"mujoco": mujoco.__version__, "configurations": out}
 

@@ -859,18 +859,6 @@ fn a_name_given_twice_is_refused_naming_both_elements_their_kinds_and_lines() {
         "t.xml: body `b` (line 4): this body makes a link named `b`, and so does the body at line 3: the model's \
          links need names of their own (rename one)",
     );
-    // A site and a body: MuJoCo keeps them apart, the model makes both links.
-    check(
-        "<body name=\"arm\"><joint name=\"j\"/>\n<site name=\"arm\"/></body>",
-        "t.xml: site `arm` (line 4): this site makes a link named `arm`, and so does the body at line 3: the \
-         model's links need names of their own (rename one)",
-    );
-    // A frame named like a joint: its fixed joint takes the name.
-    check(
-        "<body name=\"arm\"><joint name=\"elbow\"/>\n<frame name=\"elbow\"/></body>",
-        "t.xml: frame `elbow` (line 4): this frame (fixed to its body by a joint of its name) makes a joint named \
-         `elbow`, and so does the joint at line 3: the model's joints need names of their own (rename one)",
-    );
     // A written name equal to an unnamed body's: the unnamed body is body 1.
     check(
         "<body><joint name=\"j\"/></body>\n<body name=\"body1\"/>",
@@ -882,8 +870,27 @@ fn a_name_given_twice_is_refused_naming_both_elements_their_kinds_and_lines() {
         "t.xml: body `world` (line 3): this body makes a link named `world`, and so does the world body at the \
          model's root: the model's links need names of their own (rename one)",
     );
-    // The same name on elements of different kinds that the model keeps apart loads: a joint and
-    // a body (a link) named alike.
-    let tree = mjcf("<mujoco><worldbody><body name=\"x\"><joint name=\"x\"/></body></worldbody></mujoco>");
-    assert_eq!(tree.dof_names(), ["x"]);
+    // Names per kind, as MuJoCo keeps them: a body and a joint named alike load as they are (the
+    // model keeps links and joints apart); a site or frame named like a body or joint gives way,
+    // as `name.site` or `name.frame`, whether it comes first in the file or after.
+    let tree = mjcf(
+        "<mujoco><worldbody>
+           <site name=\"hand\" pos=\"0 0 2\"/>
+           <body name=\"x\"><joint name=\"x\"/><site name=\"x\" pos=\"1 0 0\"/><frame name=\"x\"/>
+             <body name=\"hand\"><joint name=\"wrist\"/><frame name=\"wrist\" pos=\"0 1 0\"/></body>
+           </body>
+         </worldbody></mujoco>",
+    );
+    assert_eq!(tree.dof_names(), ["x", "wrist"]);
+    let links: Vec<&str> = tree.links().iter().map(|l| l.name.as_str()).collect();
+    assert_eq!(links, ["world", "hand.site", "x", "x.site", "x.frame", "hand", "wrist.frame"]);
+    assert_pose(&tree, &[0.0, 0.0], "hand.site", I, [0.0, 0.0, 2.0]);
+    assert_pose(&tree, &[0.0, 0.0], "x.site", I, [1.0, 0.0, 0.0]);
+    assert_pose(&tree, &[0.0, 0.0], "wrist.frame", I, [0.0, 1.0, 0.0]);
+    // Two sites of one name: MuJoCo refuses them too.
+    check(
+        "<site name=\"s\"/>\n<site name=\"s\"/>",
+        "t.xml: site `s` (line 4): this site makes a link named `s`, and so does the site at line 3: the model's \
+         links need names of their own (rename one)",
+    );
 }

@@ -34,7 +34,8 @@
 //!   `range` that limits it (a cone) is refused, as is an `<equality><joint>` naming a ball or
 //!   free joint (MuJoCo couples hinges and slides only).
 //! - Named `<site>`s and named `<frame>`s become links joined to their body by a fixed joint,
-//!   both named as the site or frame, so they can be tips; a frame's transform applies to
+//!   both named as the site or frame (`NAME.site`, `NAME.frame` where a body or joint has the
+//!   name: MuJoCo keeps names per kind), so they can be tips; a frame's transform applies to
 //!   everything inside it. Unnamed sites are skipped (nothing could name them as a tip).
 //! - Orientation: `quat`, `axisangle`, `euler` (with `<compiler eulerseq>`), `xyaxes`, `zaxis`,
 //!   and a site's `fromto` (z from `to` towards `from`, as MuJoCo's compiler gives it), mapped onto
@@ -124,6 +125,7 @@ pub fn parse_mjcf_with(text: &str, read: ReadFile<'_>) -> Result<Description, Lo
         unnamed_free: Vec::new(),
         link_names: BTreeMap::from([(WORLD.to_owned(), Claim { kind: "world body", file: MAIN.to_owned(), line: 0 })]),
         joint_names: BTreeMap::new(),
+        attached_names: BTreeMap::new(),
         attached: Vec::new(),
     };
     reader.description.name = root.attribute("model").unwrap_or("MuJoCo Model").to_owned();
@@ -378,6 +380,9 @@ struct Reader<'d, 't> {
     link_names: BTreeMap<String, Claim>,
     /// Each joint name given so far, the same way.
     joint_names: BTreeMap<String, Claim>,
+    /// The names sites and named frames hold as written (link and fixed joint alike), each with
+    /// its kind: a body or joint read later under one of them moves it aside.
+    attached_names: BTreeMap<String, &'static str>,
     /// Each `<attach>` read: the attached model's settings, its file and its asset's name, whose
     /// `<equality>` constraints are read after every body.
     attached: Vec<(Model, String, String)>,
@@ -604,8 +609,7 @@ impl<'d, 't> Reader<'d, 't> {
                     let element = Some(Element::Site(name.clone()));
                     let attributes = self.attributes(model, place, child, "site", childclass, &element)?;
                     let origin = frame.clone().then(&site_pose(model, &attributes, &element)?);
-                    self.claim(false, &name, "site", place, child, &element)?;
-                    self.claim(true, &name, "site (fixed to its body by a joint of its name)", place, child, &element)?;
+                    let name = self.claim_attached(&name, "site", place, child, &element)?;
                     self.fixed(&name, parent, origin);
                 }
                 "attach" => self.attach(model, place, child, parent, frame)?,
@@ -664,6 +668,23 @@ impl<'d, 't> Reader<'d, 't> {
         node: Node<'d, 't>,
         element: &Option<Element>,
     ) -> Result<(), LoadErrorKind> {
+        if self.attached_names.contains_key(name) {
+            self.move_aside(name, place, node, element)?;
+        }
+        self.take(joint, name, kind, place, node, element)
+    }
+
+    /// Takes the name as [`Reader::claim`] does, but moving no site or frame aside: for the sites
+    /// and frames themselves.
+    fn take(
+        &mut self,
+        joint: bool,
+        name: &str,
+        kind: &'static str,
+        place: Place<'d, 't>,
+        node: Node<'d, 't>,
+        element: &Option<Element>,
+    ) -> Result<(), LoadErrorKind> {
         let line = place.line(node.range().start);
         let (names, what) = if joint { (&mut self.joint_names, "joint") } else { (&mut self.link_names, "link") };
         if let Some(first) = names.get(name) {
@@ -692,13 +713,82 @@ impl<'d, 't> Reader<'d, 't> {
         let attributes = self.attributes(model, place, node, "frame", childclass, &element)?;
         let inner = frame.clone().then(&pose(model, &attributes, &element)?);
         if let Some(name) = name {
-            self.claim(false, &name, "frame", place, node, &element)?;
-            let fixed = "frame (fixed to its body by a joint of its name)";
-            self.claim(true, &name, fixed, place, node, &element)?;
+            let name = self.claim_attached(&name, "frame", place, node, &element)?;
             self.fixed(&name, parent, inner.clone());
         }
         let childclass = node.attribute("childclass").or(childclass);
         self.children(place, node, &Within { frame: &inner, childclass, ..*at })
+    }
+
+    /// The name of the link, and of the fixed joint holding it, that a site or named frame
+    /// (`kind`) called `name` makes: `name` if no link or joint has it yet, else `name.site` (or
+    /// `name.frame`). MuJoCo keeps a site's names apart from a body's and a joint's; the model
+    /// makes links and joints of all of them, so the site or frame gives way: bodies and joints
+    /// keep the names written. A body or joint read later under its name moves it aside the same
+    /// way ([`Reader::move_aside`]).
+    fn claim_attached(
+        &mut self,
+        name: &str,
+        kind: &'static str,
+        place: Place<'d, 't>,
+        node: Node<'d, 't>,
+        element: &Option<Element>,
+    ) -> Result<String, LoadErrorKind> {
+        if self.attached_names.get(name) == Some(&kind) {
+            // Two sites (or frames) of one name: MuJoCo refuses them too.
+            self.take(false, name, kind, place, node, element)?;
+        }
+        let taken = self.link_names.contains_key(name) || self.joint_names.contains_key(name);
+        let name = if taken { format!("{name}.{kind}") } else { name.to_owned() };
+        let fixed = if kind == "site" {
+            "site (fixed to its body by a joint of its name)"
+        } else {
+            "frame (fixed to its body by a joint of its name)"
+        };
+        self.take(false, &name, kind, place, node, element)?;
+        self.take(true, &name, fixed, place, node, element)?;
+        if !taken {
+            self.attached_names.insert(name.clone(), kind);
+        }
+        Ok(name)
+    }
+
+    /// Renames the site or frame that holds `name` (link and fixed joint) to `name.site` (or
+    /// `name.frame`), for a body or joint read after it under that name.
+    fn move_aside(
+        &mut self,
+        name: &str,
+        place: Place<'d, 't>,
+        node: Node<'d, 't>,
+        element: &Option<Element>,
+    ) -> Result<(), LoadErrorKind> {
+        #[allow(clippy::expect_used, reason = "invariant: the caller found `name` among them")]
+        let kind = self.attached_names.remove(name).expect("invariant: a site's or frame's name");
+        let aside = format!("{name}.{kind}");
+        for taken in [&self.link_names, &self.joint_names] {
+            if let Some(first) = taken.get(&aside) {
+                let message = format!(
+                    "the {kind} `{name}` gives way to this element's name, as `{aside}`, which the {} at line {} \
+                     already has (rename one)",
+                    first.kind, first.line
+                );
+                return Err(place.error(node, element.clone(), message));
+            }
+        }
+        for names in [&mut self.link_names, &mut self.joint_names] {
+            if let Some(claim) = names.remove(name) {
+                names.insert(aside.clone(), claim);
+            }
+        }
+        for link in self.description.links.iter_mut().filter(|l| **l == name) {
+            link.clone_from(&aside);
+        }
+        for joint in self.description.joints.iter_mut().filter(|j| j.name == name) {
+            joint.name.clone_from(&aside);
+            joint.element = Element::Joint(aside.clone());
+            joint.child.clone_from(&aside);
+        }
+        Ok(())
     }
 
     /// A link `name` fixed to `parent` by a joint of the same name.

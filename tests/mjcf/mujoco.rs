@@ -174,3 +174,10 @@ fn attach_with_a_body_without_one_and_with_a_frame_agrees_with_mujoco() {
         assert!(tree.links().iter().any(|l| l.name == link), "{link}");
     }
 }
+
+#[test]
+fn a_body_a_joint_and_a_site_of_one_name_load_and_agree_with_mujoco() {
+    agrees_with_mujoco("names_per_kind");
+    let tree = fixture_tree("names_per_kind");
+    assert_eq!(tree.dof_names(), ["x", "elbow"]);
+}
