@@ -894,3 +894,32 @@ fn a_name_given_twice_is_refused_naming_both_elements_their_kinds_and_lines() {
          links need names of their own (rename one)",
     );
 }
+
+#[test]
+fn an_attach_mujoco_refuses_is_refused_naming_its_line() {
+    let refused = |attach: &str| {
+        let main = format!(
+            "<mujoco>\n<asset><model name=\"g\" file=\"g.xml\"/></asset>\n<worldbody>\n{attach}\n</worldbody></mujoco>"
+        );
+        let dir = scratch(
+            "attach_refused",
+            &[
+                ("main.xml", main.as_str()),
+                ("g.xml", r#"<mujoco><worldbody><body name="palm"><frame name="f"/></body></worldbody></mujoco>"#),
+            ],
+        );
+        kinematics::load(dir.join("main.xml")).unwrap_err().kind.to_string()
+    };
+    assert_eq!(
+        refused(r#"<attach model="g" body="palm"/>"#),
+        "line 4: <attach> needs a `prefix` attribute (MuJoCo requires one)"
+    );
+    assert_eq!(
+        refused(r#"<attach model="g" body="palm" frame="f" prefix="a_"/>"#),
+        "line 4: <attach> takes a `body` or a `frame`, not both"
+    );
+    assert_eq!(
+        refused(r#"<attach model="g" frame="nowhere" prefix="a_"/>"#),
+        "line 4: the model `g` (`g.xml`) has no frame `nowhere` to attach"
+    );
+}

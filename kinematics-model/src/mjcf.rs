@@ -45,7 +45,8 @@
 //!   constraints their attributes, as MuJoCo's Modeling chapter, "Default settings", describes.
 //! - `<include file>` inserts another file's children of `<mujoco>` (read through the caller's
 //!   [`ReadFile`]; paths as written, for the caller to resolve relative to the main file's
-//!   directory, as MuJoCo does); `<attach model body|frame prefix>` attaches, of the
+//!   directory, as MuJoCo does); `<attach model body|frame prefix>` (the prefix required, as
+//!   MuJoCo requires it) attaches, of the
 //!   `<asset><model file>` named `model`, body `body`, or frame `frame`, or without either its
 //!   whole world body (its bodies, sites and frames), with every name prefixed and that file's
 //!   own compiler settings and classes; its joint `<equality>` constraints are read with the
@@ -1084,7 +1085,15 @@ impl<'d, 't> Reader<'d, 't> {
             (None, Some(frame)) => Some(("frame", frame)),
             (None, None) => None,
         };
-        let prefix = format!("{}{}", model.prefix, node.attribute("prefix").unwrap_or(""));
+        // MuJoCo 4's compiler requires the prefix ("required attribute missing: 'prefix'").
+        let Some(prefix) = node.attribute("prefix") else {
+            return Err(place.error(
+                node,
+                None,
+                "<attach> needs a `prefix` attribute (MuJoCo requires one)".to_owned(),
+            ));
+        };
+        let prefix = format!("{}{prefix}", model.prefix);
         let Some(file) = self.model_file(asset)? else {
             return Err(place.error(node, None, format!("no <asset><model name=\"{asset}\" file=...> to attach")));
         };
