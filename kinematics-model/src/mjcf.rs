@@ -126,7 +126,7 @@ pub fn parse_mjcf_with(text: &str, read: ReadFile<'_>) -> Result<Description, Lo
         unnamed_free: Vec::new(),
         link_names: BTreeMap::from([(WORLD.to_owned(), Claim { kind: "world body", file: MAIN.to_owned(), line: 0 })]),
         joint_names: BTreeMap::new(),
-        attached_names: BTreeMap::new(),
+        site_and_frame_names: BTreeMap::new(),
         attached: Vec::new(),
     };
     reader.description.name = root.attribute("model").unwrap_or("MuJoCo Model").to_owned();
@@ -383,7 +383,7 @@ struct Reader<'d, 't> {
     joint_names: BTreeMap<String, Claim>,
     /// The names sites and named frames hold as written (link and fixed joint alike), each with
     /// its kind: a body or joint read later under one of them moves it aside.
-    attached_names: BTreeMap<String, &'static str>,
+    site_and_frame_names: BTreeMap<String, &'static str>,
     /// Each `<attach>` read: the attached model's settings, its file and its asset's name, whose
     /// `<equality>` constraints are read after every body.
     attached: Vec<(Model, String, String)>,
@@ -610,7 +610,7 @@ impl<'d, 't> Reader<'d, 't> {
                     let element = Some(Element::Site(name.clone()));
                     let attributes = self.attributes(model, place, child, "site", childclass, &element)?;
                     let origin = frame.clone().then(&site_pose(model, &attributes, &element)?);
-                    let name = self.claim_attached(&name, "site", place, child, &element)?;
+                    let name = self.claim_site_or_frame(&name, "site", place, child, &element)?;
                     self.fixed(&name, parent, origin);
                 }
                 "attach" => self.attach(model, place, child, parent, frame)?,
@@ -669,7 +669,7 @@ impl<'d, 't> Reader<'d, 't> {
         node: Node<'d, 't>,
         element: &Option<Element>,
     ) -> Result<(), LoadErrorKind> {
-        if self.attached_names.contains_key(name) {
+        if self.site_and_frame_names.contains_key(name) {
             self.move_aside(name, place, node, element)?;
         }
         self.take(joint, name, kind, place, node, element)
@@ -714,7 +714,7 @@ impl<'d, 't> Reader<'d, 't> {
         let attributes = self.attributes(model, place, node, "frame", childclass, &element)?;
         let inner = frame.clone().then(&pose(model, &attributes, &element)?);
         if let Some(name) = name {
-            let name = self.claim_attached(&name, "frame", place, node, &element)?;
+            let name = self.claim_site_or_frame(&name, "frame", place, node, &element)?;
             self.fixed(&name, parent, inner.clone());
         }
         let childclass = node.attribute("childclass").or(childclass);
@@ -727,7 +727,7 @@ impl<'d, 't> Reader<'d, 't> {
     /// makes links and joints of all of them, so the site or frame gives way: bodies and joints
     /// keep the names written. A body or joint read later under its name moves it aside the same
     /// way ([`Reader::move_aside`]).
-    fn claim_attached(
+    fn claim_site_or_frame(
         &mut self,
         name: &str,
         kind: &'static str,
@@ -735,7 +735,7 @@ impl<'d, 't> Reader<'d, 't> {
         node: Node<'d, 't>,
         element: &Option<Element>,
     ) -> Result<String, LoadErrorKind> {
-        if self.attached_names.get(name) == Some(&kind) {
+        if self.site_and_frame_names.get(name) == Some(&kind) {
             // Two sites (or frames) of one name: MuJoCo refuses them too.
             self.take(false, name, kind, place, node, element)?;
         }
@@ -749,7 +749,7 @@ impl<'d, 't> Reader<'d, 't> {
         self.take(false, &name, kind, place, node, element)?;
         self.take(true, &name, fixed, place, node, element)?;
         if !taken {
-            self.attached_names.insert(name.clone(), kind);
+            self.site_and_frame_names.insert(name.clone(), kind);
         }
         Ok(name)
     }
@@ -764,7 +764,7 @@ impl<'d, 't> Reader<'d, 't> {
         element: &Option<Element>,
     ) -> Result<(), LoadErrorKind> {
         #[allow(clippy::expect_used, reason = "invariant: the caller found `name` among them")]
-        let kind = self.attached_names.remove(name).expect("invariant: a site's or frame's name");
+        let kind = self.site_and_frame_names.remove(name).expect("invariant: a site's or frame's name");
         let aside = format!("{name}.{kind}");
         for taken in [&self.link_names, &self.joint_names] {
             if let Some(first) = taken.get(&aside) {
@@ -1138,12 +1138,11 @@ impl<'d, 't> Reader<'d, 't> {
         Ok(None)
     }
 
-    /// `<equality>` (XML reference, `equality/joint`): linear joint couplings become mimics,
-    /// everything else is listed as ignored.
-    /// One `<equality>` section of the main file (`attached` none) or of the model attached as
-    /// asset `attached`: its joint names prefixed as the model's are. An attached model's
-    /// constraint naming a joint the attachment left out is not applied (MuJoCo drops it too)
-    /// and is listed as such.
+    /// One `<equality>` section (XML reference, `equality/joint`) of the main file (`attached`
+    /// none) or of the model attached as asset `attached`, its joint names prefixed as the
+    /// model's are: linear joint couplings become mimics, everything else is listed as ignored.
+    /// An attached model's constraint naming a joint the attachment left out is not applied
+    /// (MuJoCo drops it too) and is listed as such.
     fn equality(
         &mut self,
         model: &Model,
