@@ -64,6 +64,28 @@ where
     _borrowed: PhantomData<&'a [T; N]>,
 }
 
+/// Collision checking on a struct with a lifetime, a bounded type, a const generic and a where
+/// clause: the `Collision<N>` impl carries them as `Kinematics`' does.
+#[derive(Kinematics)]
+#[kinematics(urdf = "robots/ur5_spherized.urdf", collision)]
+struct CollidingGeneric<'a, T: Clone, const N: usize>
+where
+    T: Default,
+{
+    _borrowed: PhantomData<&'a [T; N]>,
+}
+
+#[test]
+fn a_generic_struct_with_collision_implements_the_collision_trait() {
+    fn verdicts<R: kinematics::collision::Collision<6>>(q: &[f64; 6]) -> (bool, usize) {
+        (R::self_collides(q), R::SPHERE_RADII.len())
+    }
+    type Robot = CollidingGeneric<'static, u8, 3>;
+    for q in [[0.0, -1.57, 0.0, -1.57, 0.0, 0.0], [0.3, -0.2, 2.9, 0.4, -1.0, 0.5]] {
+        assert_eq!(verdicts::<Robot>(&q), (Robot::self_collides(&q), Robot::SPHERE_RADII.len()));
+    }
+}
+
 /// Parameters named after the types the generated code uses.
 #[derive(Kinematics)]
 #[kinematics(urdf = "tests/emitted/arm_with_flange.urdf", tips("fore", "flange"))]

@@ -822,10 +822,17 @@ impl Render {
             Form::Generic,
             Signature {
                 name: format_ident!("hold"),
-                generics: vec![quote!('a)],
-                inputs: quote!(link: &str, spheres: &'a [#p::collision::SphereObstacle], touching: &[&str]),
+                // A lifetime no user's struct names: the impl's own generics are in scope here, and a
+                // `'a` of theirs would be shadowed (an error).
+                generics: vec![quote!('kinematics_spheres)],
+                inputs: quote!(
+                    link: &str, spheres: &'kinematics_spheres [#p::collision::SphereObstacle], touching: &[&str]
+                ),
                 output: quote!(
-                    ::core::result::Result<#p::collision::Held<'a, Self, #words>, #p::collision::HeldError>
+                    ::core::result::Result<
+                        #p::collision::Held<'kinematics_spheres, Self, #words>,
+                        #p::collision::HeldError,
+                    >
                 ),
             },
         ));
