@@ -683,9 +683,25 @@ impl Render {
     /// `hold`, then the distances (`clearance`, `proximity_cost` and their gradients). What `collides` and `motion_collides` are checked against is a `collision::World`
     /// of the robot: an `Environment`, or one with an object the robot holds.
     pub fn collision_items(&self) -> Vec<(CollisionFunction, Form, Signature)> {
-        let (p, n) = (&self.p, self.dof());
+        let mut out = self.check_items();
+        out.extend(self.shared_items());
+        out.extend(self.motion_items());
+        out.push(self.hold_item());
+        out.extend(self.distance_items());
+        out
+    }
+
+    /// A `collision::World` of the robot, as the checks against obstacles take it.
+    fn world(&self) -> TokenStream {
+        let p = &self.p;
+        quote!(environment: &impl #p::collision::World<Self>)
+    }
+
+    /// `collides` and `self_collides`: per scalar on one configuration, in batches and in column
+    /// batches, then on any lane type.
+    fn check_items(&self) -> Vec<(CollisionFunction, Form, Signature)> {
+        let (p, n, world) = (&self.p, self.dof(), self.world());
         let error = quote!(::core::result::Result<(), #p::KinematicsError>);
-        let world = quote!(environment: &impl #p::collision::World<Self>);
         let mut out = Vec::new();
         for function in [CollisionFunction::Collides, CollisionFunction::SelfCollides] {
             let name = function.name();
@@ -738,6 +754,13 @@ impl Render {
                 },
             ));
         }
+        out
+    }
+
+    /// `collides_any` and `self_collides_any`: per scalar on a slice, then on any lane type.
+    fn shared_items(&self) -> Vec<(CollisionFunction, Form, Signature)> {
+        let (n, world) = (self.dof(), self.world());
+        let mut out = Vec::new();
         for function in [CollisionFunction::CollidesAny, CollisionFunction::SelfCollidesAny] {
             let name = function.name();
             let environment = match function {
@@ -769,55 +792,63 @@ impl Render {
                 },
             ));
         }
+        out
+    }
+
+    /// `motion_collides` (the first colliding fraction of a straight motion) and
+    /// `motion_collides_any` (whether it collides), per scalar on one motion and on a batch.
+    fn motion_items(&self) -> Vec<(CollisionFunction, Form, Signature)> {
+        let (p, n, world) = (&self.p, self.dof(), self.world());
         let resolution = quote!(resolution: impl ::core::convert::Into<#p::collision::Resolution>);
+        let error = quote!(::core::result::Result<(), #p::KinematicsError>);
+        let mut out = Vec::new();
         for scalar in self.scalar_types() {
             let (suffix, t) = (scalar.suffix, &scalar.t);
-            out.push((
-                CollisionFunction::MotionCollides,
-                Form::Typed(scalar.clone()),
-                Signature {
-                    name: format_ident!("motion_collides{suffix}"),
-                    generics: Vec::new(),
-                    inputs: quote!(q0: &[#t; #n], q1: &[#t; #n], #world, #resolution),
-                    output: quote!(::core::result::Result<::core::option::Option<f64>, #p::KinematicsError>),
-                },
-            ));
-            out.push((
-                CollisionFunction::MotionCollides,
-                Form::Batch(scalar.clone()),
-                Signature {
-                    name: format_ident!("motion_collides_batch{suffix}"),
-                    generics: Vec::new(),
-                    inputs: quote!(
-                        motions: &[([#t; #n], [#t; #n])], #world, #resolution,
-                        out: &mut [::core::option::Option<f64>]
-                    ),
-                    output: error.clone(),
-                },
-            ));
-            out.push((
-                CollisionFunction::MotionCollidesAny,
-                Form::Typed(scalar.clone()),
-                Signature {
-                    name: format_ident!("motion_collides_any{suffix}"),
-                    generics: Vec::new(),
-                    inputs: quote!(q0: &[#t; #n], q1: &[#t; #n], #world, #resolution),
-                    output: quote!(::core::result::Result<bool, #p::KinematicsError>),
-                },
-            ));
-            out.push((
-                CollisionFunction::MotionCollidesAny,
-                Form::Batch(scalar.clone()),
-                Signature {
-                    name: format_ident!("motion_collides_any_batch{suffix}"),
-                    generics: Vec::new(),
-                    inputs: quote!(motions: &[([#t; #n], [#t; #n])], #world, #resolution, out: &mut [bool]),
-                    output: error.clone(),
-                },
-            ));
+            let one = quote!(q0: &[#t; #n], q1: &[#t; #n], #world, #resolution);
+            let motions = quote!(motions: &[([#t; #n], [#t; #n])], #world, #resolution);
+            let first = quote!(::core::option::Option<f64>);
+            for (function, form, name, inputs, output) in [
+                (
+                    CollisionFunction::MotionCollides,
+                    Form::Typed(scalar.clone()),
+                    "motion_collides",
+                    one.clone(),
+                    quote!(::core::result::Result<#first, #p::KinematicsError>),
+                ),
+                (
+                    CollisionFunction::MotionCollides,
+                    Form::Batch(scalar.clone()),
+                    "motion_collides_batch",
+                    quote!(#motions, out: &mut [#first]),
+                    error.clone(),
+                ),
+                (
+                    CollisionFunction::MotionCollidesAny,
+                    Form::Typed(scalar.clone()),
+                    "motion_collides_any",
+                    one.clone(),
+                    quote!(::core::result::Result<bool, #p::KinematicsError>),
+                ),
+                (
+                    CollisionFunction::MotionCollidesAny,
+                    Form::Batch(scalar.clone()),
+                    "motion_collides_any_batch",
+                    quote!(#motions, out: &mut [bool]),
+                    error.clone(),
+                ),
+            ] {
+                let name = format_ident!("{name}{suffix}");
+                out.push((function, form, Signature { name, generics: Vec::new(), inputs, output }));
+            }
         }
+        out
+    }
+
+    /// `hold`: a held object's check tables.
+    fn hold_item(&self) -> (CollisionFunction, Form, Signature) {
+        let p = &self.p;
         let words = length(self.dims.held_words);
-        out.push((
+        (
             CollisionFunction::Hold,
             Form::Generic,
             Signature {
@@ -835,9 +866,7 @@ impl Render {
                     >
                 ),
             },
-        ));
-        out.extend(self.distance_items());
-        out
+        )
     }
 
     /// The distances' functions: `clearance`, `clearance_gradient`, `proximity_cost` and

@@ -191,6 +191,21 @@ fn check_resolution(robot: &'static str, resolution: Resolution) -> Result<(), K
     }
 }
 
+/// A batch of motions' `resolution`, checked (positive and finite), and its output's length,
+/// `outputs`, checked against the `motions` (one each): else the error naming `robot`.
+fn batch_checked(
+    robot: &'static str,
+    resolution: Resolution,
+    motions: usize,
+    outputs: usize,
+) -> Result<Resolution, KinematicsError> {
+    check_resolution(robot, resolution)?;
+    if outputs != motions {
+        return Err(KinematicsError::WrongOutputLength { robot, expected: motions, got: outputs });
+    }
+    Ok(resolution)
+}
+
 /// How finely a straight motion is checked: how many configurations along it, both ends
 /// included, are checked (the motion's `steps + 1`).
 ///
@@ -404,11 +419,7 @@ where
     W: Lanes<Scalar = L::Scalar>,
     L::Scalar: Real + Into<f64>,
 {
-    let resolution = resolution.into();
-    check_resolution(robot, resolution)?;
-    if out.len() != motions.len() {
-        return Err(KinematicsError::WrongOutputLength { robot, expected: motions.len(), got: out.len() });
-    }
+    let resolution = batch_checked(robot, resolution.into(), motions.len(), out.len())?;
     on_widest(AnyJobs { motions, resolution, out, narrow, wide, lanes: PhantomData::<fn(L, W)> });
     Ok(())
 }
@@ -431,11 +442,7 @@ where
     W: Lanes<Scalar = L::Scalar>,
     L::Scalar: Real + Into<f64>,
 {
-    let resolution = resolution.into();
-    check_resolution(robot, resolution)?;
-    if out.len() != motions.len() {
-        return Err(KinematicsError::WrongOutputLength { robot, expected: motions.len(), got: out.len() });
-    }
+    let resolution = batch_checked(robot, resolution.into(), motions.len(), out.len())?;
     on_widest(Jobs { motions, resolution, out, narrow, wide, lanes: PhantomData::<fn(L, W)> });
     Ok(())
 }
