@@ -8,35 +8,30 @@
 //! transforms, and both read it as they read the pairs: the sphere pairs held apart for good
 //! ([`fixed`]), which the distances leave out.
 //!
-//! **The cover.** A sphere is itself. A capsule (URDF/SDF: a cylinder of `length` between the
-//! centres of two hemispherical caps of its `radius`, along z) is covered by spheres centred on
-//! its axis segment, both ends included, spaced evenly and at most `2 h` apart with
-//! `h = sqrt(2 r d + d^2)`, each of radius `sqrt(r^2 + h^2)`: each contains the capsule's slab
-//! within `h` of its centre and the end ones the caps, and since a ball of radius `r` about any
-//! point of the segment lies in the capsule, no point of a sphere is farther than `d` from it. A
-//! box (`size`, centred) and a cylinder (`radius`, `length` along z, centred) are covered by
-//! subdividing their bounding box: a cell whose part of the shape a sphere about the cell's centre
-//! contains with an overshoot of at most `d` is taken, a cell that misses the shape is dropped,
-//! any other is halved across its longest side (the overshoot of a sphere of radius `R` whose
-//! centre lies `e` inside the shape is at most `R - e`: every point of it is within `R - e` of the
-//! ball of radius `e` about the centre, which the shape contains). The cover is deterministic and
-//! contains every point of the shape; `d` is the largest overshoot, the key `sphere_cover`.
+//! **The cover** ([`cover`]): every element of a link (meshes and primitives alike) cut into small
+//! convex pieces, grouped under a few spheres that hold every piece whole, by construction; a
+//! budget of spheres per link, an overshoot, or both decide how many.
 //!
-//! **What is here.** `Shape` (sphere, box, cylinder, capsule, mesh, placed by its origin) is read
-//! by the URDF reader and the urdf-rs conversion alike, its sizes checked by validation naming the
-//! link and the line; the cover is taken in each shape's own frame (capsules and cylinders on their
-//! axis, the rest by subdivision; every point contained, the overshoot at most the `sphere_cover`
-//! given); `link_spheres` gives every sphere of a robot in one fixed order, a mesh refused or
-//! skipped; `rigid_bodies` and `collision_pairs` are the pair rule. Each link's bounding sphere is
-//! the compiler's (`collision_layout`).
+//! **What is here.** `Shape` (sphere, box, cylinder, capsule, ellipsoid, mesh, placed by its
+//! origin) is read by the URDF and MJCF readers and the urdf-rs conversion alike, its sizes
+//! checked by validation naming the link and the line; a mesh's triangles come from the caller
+//! ([`KinematicTree::load_meshes`]: the model reads no files); `link_spheres` gives every sphere
+//! of a robot in one fixed order; `rigid_bodies` and `collision_pairs` are the pair rule. Each
+//! link's bounding sphere is the compiler's (`collision_layout`).
 
+pub mod cover;
 pub mod fixed;
 pub mod grid;
+pub mod mesh;
+mod vec3;
 
 use std::collections::BTreeSet;
+use std::sync::Arc;
 
+pub use cover::{Cover, CoverFault, CoverReport, DEFAULT_OVERSHOOT, DEFAULT_SPHERES, LinkCover, MAX_SPHERES_PER_LINK};
 pub use fixed::{FixedPair, ON_AXIS, fixed_apart_pairs};
 pub use grid::{CellState, PairGrid, pair_grids};
+pub use mesh::{MeshFault, TriangleMesh};
 
 use crate::transform::FixedTransform;
 use crate::tree::{KinematicTree, LinkId};
@@ -69,13 +64,20 @@ pub enum Shape {
         /// Length of the segment between the caps' centres (m).
         length: f64,
     },
-    /// `<mesh filename scale>`: not read (no file IO here); refused where spheres are asked for,
-    /// unless meshes are left out.
+    /// An ellipsoid of semi-axes `radii` along x, y, z, centred (MJCF's `ellipsoid`).
+    Ellipsoid {
+        /// Semi-axes (m).
+        radii: [f64; 3],
+    },
+    /// `<mesh filename scale>`: its triangles once the caller has read the file
+    /// ([`KinematicTree::load_meshes`]).
     Mesh {
         /// The file as written.
         filename: String,
         /// Scale along x, y, z.
         scale: [f64; 3],
+        /// The triangles in the file's units (the scale not applied), once read.
+        loaded: Option<Arc<TriangleMesh>>,
     },
 }
 
@@ -87,12 +89,14 @@ impl Shape {
             Shape::Box { .. } => "box",
             Shape::Cylinder { .. } => "cylinder",
             Shape::Capsule { .. } => "capsule",
+            Shape::Ellipsoid { .. } => "ellipsoid",
             Shape::Mesh { .. } => "mesh",
         }
     }
 
     /// What is wrong with its sizes, if anything: every length must be finite and positive (a
-    /// capsule's length may be zero: a sphere), a mesh's scale finite and not zero.
+    /// capsule's length may be zero: a sphere), a mesh's scale finite and positive (a mirrored
+    /// mesh is refused: its triangles' winding, and so its inside, would turn over).
     pub fn fault(&self) -> Option<String> {
         let length = |what: &str, x: f64, zero_ok: bool| {
             let ok = x.is_finite() && (x > 0.0 || (zero_ok && x == 0.0));
@@ -112,33 +116,21 @@ impl Shape {
             Shape::Capsule { radius, length: l } => {
                 length("radius", *radius, false).or_else(|| length("length", *l, true))
             }
+            Shape::Ellipsoid { radii } => {
+                ["x", "y", "z"].iter().zip(radii).find_map(|(axis, &x)| length(&format!("size {axis}"), x, false))
+            }
             Shape::Mesh { scale, .. } => scale
                 .iter()
-                .any(|s| !s.is_finite() || *s == 0.0)
-                .then(|| format!("<mesh scale> is {scale:?} (must be finite and not zero)")),
+                .any(|s| !(s.is_finite() && *s > 0.0))
+                .then(|| format!("<mesh scale> is {scale:?} (must be finite and positive)")),
         }
-    }
-
-    /// Spheres containing every point of the shape, none reaching farther than `overshoot` from
-    /// it (see the module doc); `None` for a mesh. `overshoot` must be finite and positive.
-    pub fn cover(&self, overshoot: f64) -> Option<Vec<Sphere>> {
-        let d = overshoot;
-        Some(match *self {
-            Shape::Sphere { radius } => vec![Sphere { center: [0.0; 3], radius }],
-            Shape::Capsule { radius, length } => capsule(radius, length, d),
-            Shape::Box { size } => {
-                let half = size.map(|s| s / 2.0);
-                subdivide(&|p| box_depth(half, p), &|lo, hi| box_reach(half, lo, hi), (half.map(|h| -h), half), d)
-            }
-            Shape::Cylinder { radius, length } => cylinder(radius, length, d),
-            Shape::Mesh { .. } => return None,
-        })
     }
 
     /// How far `p` (in the shape's frame) lies inside the shape: positive inside, negative
     /// outside, the distance to the surface either way for a sphere, capsule and (outside) box;
-    /// for a box inside and a cylinder anywhere a lower bound where exactness costs more
-    /// (what the cover's overshoot bound and the tests need). `None` for a mesh.
+    /// for a box inside and a cylinder anywhere a lower bound where exactness costs more, and for
+    /// an ellipsoid a lower bound everywhere (what the cover's overshoot bound and the tests
+    /// need). `None` for a mesh (its depth is [`mesh::PlacedTriangles::depth`]).
     pub fn depth(&self, p: [f64; 3]) -> Option<f64> {
         Some(match *self {
             Shape::Sphere { radius } => radius - norm(p),
@@ -148,9 +140,19 @@ impl Shape {
             }
             Shape::Box { size } => box_depth(size.map(|s| s / 2.0), p),
             Shape::Cylinder { radius, length } => cylinder_depth(radius, length / 2.0, p),
+            Shape::Ellipsoid { radii } => ellipsoid_depth(radii, p),
             Shape::Mesh { .. } => return None,
         })
     }
+}
+
+/// A lower bound of how deep `p` lies in the centred ellipsoid of semi-axes `radii`: with `u` the
+/// point in the unit ball's coordinates (`p / radii`), inside, the ball of radius `1 - |u|` about
+/// `u` lies in the unit ball, and the map back shrinks it by at most the least semi-axis; outside,
+/// the point `p / |u|` lies on the ellipsoid, `|p| (1 - 1 / |u|)` away.
+fn ellipsoid_depth(radii: [f64; 3], p: [f64; 3]) -> f64 {
+    let u = norm([0, 1, 2].map(|i| p[i] / radii[i]));
+    if u <= 1.0 { (1.0 - u) * radii[0].min(radii[1]).min(radii[2]) } else { -norm(p) * (1.0 - 1.0 / u) }
 }
 
 /// A sphere: its centre (in its shape's frame) and radius.
@@ -176,63 +178,6 @@ fn norm(p: [f64; 3]) -> f64 {
     (p[0] * p[0] + p[1] * p[1] + p[2] * p[2]).sqrt()
 }
 
-/// The capsule's cover: spheres on its axis segment.
-fn capsule(radius: f64, length: f64, d: f64) -> Vec<Sphere> {
-    let h_max = (2.0 * radius * d + d * d).sqrt();
-    // Intervals of at most 2 h_max between consecutive centres (at least one when there is a
-    // segment); `as` saturates, and the sizes are finite.
-    #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss, clippy::cast_precision_loss)]
-    let intervals = if length > 0.0 { (length / (2.0 * h_max)).ceil().max(1.0) as usize } else { 0 };
-    if intervals == 0 {
-        return vec![Sphere { center: [0.0; 3], radius }];
-    }
-    #[allow(clippy::cast_precision_loss)]
-    let step = length / intervals as f64;
-    let h = step / 2.0;
-    let r = (radius * radius + h * h).sqrt();
-    (0..=intervals)
-        .map(|i| {
-            #[allow(clippy::cast_precision_loss)]
-            let z = -length / 2.0 + step * i as f64;
-            Sphere { center: [0.0, 0.0, z], radius: r }
-        })
-        .collect()
-}
-
-/// The cylinder's cover: where it is longer than its diameter, spheres on its axis at least a
-/// radius from the caps (each centre as deep as the radius, as a capsule's), and the two ends
-/// beyond them by subdivision; a shorter one by subdivision alone.
-fn cylinder(radius: f64, length: f64, d: f64) -> Vec<Sphere> {
-    let half_z = length / 2.0;
-    let depth = |p| cylinder_depth(radius, half_z, p);
-    let reach = |lo, hi| cylinder_reach(radius, half_z, lo, hi);
-    let whole = ([-radius, -radius, -half_z], [radius, radius, half_z]);
-    let inner = half_z - radius;
-    if inner < 0.0 {
-        return subdivide(&depth, &reach, whole, d);
-    }
-    let h_max = (2.0 * radius * d + d * d).sqrt();
-    #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss, clippy::cast_precision_loss)]
-    let intervals = (2.0 * inner / (2.0 * h_max)).ceil() as usize;
-    #[allow(clippy::cast_precision_loss)]
-    let h = if intervals == 0 { h_max } else { inner / intervals as f64 };
-    let r = (radius * radius + h * h).sqrt();
-    let mut out: Vec<Sphere> = (0..=intervals)
-        .map(|i| {
-            #[allow(clippy::cast_precision_loss)]
-            let z = -inner + 2.0 * h * i as f64;
-            Sphere { center: [0.0, 0.0, z], radius: r }
-        })
-        .collect();
-    // The axis spheres hold the slab |z| <= inner + h; the ends beyond it, if any, by subdivision.
-    let covered = inner + h;
-    if covered < half_z {
-        out.extend(subdivide(&depth, &reach, ([-radius, -radius, -half_z], [radius, radius, -covered]), d));
-        out.extend(subdivide(&depth, &reach, ([-radius, -radius, covered], [radius, radius, half_z]), d));
-    }
-    out
-}
-
 /// Depth of `p` in the centred box of half-extents `half`: the distance to the nearest face
 /// inside (exact), minus the distance to the box outside (exact).
 fn box_depth(half: [f64; 3], p: [f64; 3]) -> f64 {
@@ -250,117 +195,66 @@ fn cylinder_depth(radius: f64, half_z: f64, p: [f64; 3]) -> f64 {
     if outside > 0.0 { -outside } else { -radial.max(axial) }
 }
 
-/// The farthest a point of the box's part of the cell `[lo, hi]` lies from the cell's centre, or
-/// `None` when the cell misses the box.
-fn box_reach(half: [f64; 3], lo: [f64; 3], hi: [f64; 3]) -> Option<f64> {
-    let (a, b) = ([0, 1, 2].map(|i| lo[i].max(-half[i])), [0, 1, 2].map(|i| hi[i].min(half[i])));
-    if (0..3).any(|i| a[i] > b[i]) {
-        return None;
-    }
-    let c = [0, 1, 2].map(|i| (lo[i] + hi[i]) / 2.0);
-    Some(norm([0, 1, 2].map(|i| (a[i] - c[i]).abs().max((b[i] - c[i]).abs()))))
-}
-
-/// [`box_reach`] for the cylinder: its part of the cell lies in the cell clipped to the cylinder's
-/// bounding box (an upper bound of the reach), and the cell misses the cylinder when its nearest
-/// point to the axis is farther than the radius.
-fn cylinder_reach(radius: f64, half_z: f64, lo: [f64; 3], hi: [f64; 3]) -> Option<f64> {
-    let nearest = [0, 1].map(|i| 0.0_f64.clamp(lo[i], hi[i]));
-    if nearest[0].hypot(nearest[1]) > radius {
-        return None;
-    }
-    box_reach([radius, radius, half_z], lo, hi)
-}
-
-/// Cells halved at most this many times along any side: past it the cell's sphere is taken as it
-/// is (never reached for a cover of at least a millionth of the shape's size).
-const MAX_DEPTH: usize = 60;
-
-/// The cover of the part of a convex shape inside the box `[lo, hi]`, by subdivision (see the
-/// module doc): `depth` says how far a point lies inside the shape, `reach` how far the shape's
-/// part of a cell extends from the cell's centre (`None`: the cell misses it).
-fn subdivide(
-    depth: &dyn Fn([f64; 3]) -> f64,
-    reach: &dyn Fn([f64; 3], [f64; 3]) -> Option<f64>,
-    (lo, hi): ([f64; 3], [f64; 3]),
-    d: f64,
-) -> Vec<Sphere> {
-    let mut out = Vec::new();
-    let mut cells = vec![(lo, hi, 0usize)];
-    while let Some((lo, hi, level)) = cells.pop() {
-        let Some(radius) = reach(lo, hi) else { continue };
-        let center = [0, 1, 2].map(|i| (lo[i] + hi[i]) / 2.0);
-        if radius - depth(center) <= d || level >= MAX_DEPTH {
-            out.push(Sphere { center, radius });
-            continue;
-        }
-        let axis = (0..3).fold(0, |best, i| if hi[i] - lo[i] > hi[best] - lo[best] { i } else { best });
-        let mid = center[axis];
-        let (mut upper_lo, mut lower_hi) = (lo, hi);
-        upper_lo[axis] = mid;
-        lower_hi[axis] = mid;
-        // The upper half pushed first, so the lower one is taken first: the order is fixed.
-        cells.push((upper_lo, hi, level + 1));
-        cells.push((lo, lower_hi, level + 1));
-    }
-    out
-}
-
-/// What to do with mesh geometry, which the cover cannot read.
+/// What to do with mesh geometry.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Meshes {
-    /// A mesh is an error naming its link and file (the default: a mesh left out is a part of the
-    /// robot no check sees).
+    /// Meshes are covered like any geometry (the default); one whose file was not read is an
+    /// error naming its link and file.
     #[default]
-    Refuse,
+    Read,
     /// Meshes are left out (the robot's other geometry is checked; a spherized URDF has none).
     Skip,
 }
 
-/// One sphere of a robot's cover: its link, which of the link's `<collision>` elements it covers
-/// (its origin places the centre in the link's frame), and the sphere in that element's frame.
+/// One sphere of a robot's cover: its link, and the sphere in the link's frame.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LinkSphere {
     /// The link.
     pub link: LinkId,
-    /// The index of the `<collision>` element in the link's list.
-    pub collision: usize,
-    /// The sphere, in the element's own frame.
+    /// The sphere, in the link's frame.
     pub sphere: Sphere,
 }
 
-/// A mesh where spheres are asked for and meshes are not skipped.
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-#[error(
-    "link `{link}`: <collision> is a mesh (`{filename}`), which is not read: give the link primitives or spheres (a spherized URDF), or leave meshes out"
-)]
-pub struct MeshRefused {
+/// A link whose geometry could not be covered.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("link `{link}`: {fault}")]
+pub struct CoverError {
     /// The link.
     pub link: String,
-    /// The mesh file as written.
-    pub filename: String,
+    /// What went wrong.
+    pub fault: CoverFault,
 }
 
-/// Every sphere of `tree`'s collision geometry covered with the largest overshoot `overshoot`
-/// (finite and positive): links in tree order, each link's elements in order, each element's
-/// cover in order. This order is the robot's sphere order everywhere (generated code, the
-/// reference).
-pub fn link_spheres(tree: &KinematicTree, overshoot: f64, meshes: Meshes) -> Result<Vec<LinkSphere>, MeshRefused> {
+/// Every sphere of `tree`'s collision geometry under `cover` (which must have no
+/// [`Cover::fault`]): links in tree order, each link's spheres in the cover's order. This order is
+/// the robot's sphere order everywhere (generated code, the reference).
+pub fn link_spheres(tree: &KinematicTree, cover: &Cover, meshes: Meshes) -> Result<Vec<LinkSphere>, CoverError> {
+    let mut out = Vec::new();
+    for (i, link) in link_covers(tree, cover, meshes)? {
+        out.extend(link.spheres.into_iter().map(|sphere| LinkSphere { link: i, sphere }));
+    }
+    Ok(out)
+}
+
+/// Each link's cover, for the links with geometry (in tree order).
+pub fn link_covers(tree: &KinematicTree, cover: &Cover, meshes: Meshes) -> Result<Vec<(LinkId, LinkCover)>, CoverError> {
     let mut out = Vec::new();
     for (i, link) in tree.links().iter().enumerate() {
-        for (k, collision) in link.collisions.iter().enumerate() {
-            match (collision.shape.cover(overshoot), &collision.shape) {
-                (Some(spheres), _) => {
-                    out.extend(spheres.into_iter().map(|sphere| LinkSphere { link: LinkId(i), collision: k, sphere }));
-                }
-                (None, Shape::Mesh { filename, .. }) if meshes == Meshes::Refuse => {
-                    return Err(MeshRefused { link: link.name.clone(), filename: filename.clone() });
-                }
-                (None, _) => {}
-            }
+        let fault = |fault| CoverError { link: link.name.clone(), fault };
+        let mut geometry = cover::Geometry::new(&link.collisions, meshes == Meshes::Skip).map_err(fault)?;
+        if let Some(c) = cover::cover_link(&mut geometry, cover).map_err(fault)? {
+            out.push((LinkId(i), c));
         }
     }
     Ok(out)
+}
+
+/// What `cover` (one link's, from [`link_covers`]) costs against the link's geometry: its
+/// overshoot (the bound and a sampled measure) and its volume against the geometry's.
+pub fn cover_report(tree: &KinematicTree, link: LinkId, cover: &LinkCover, meshes: Meshes) -> CoverReport {
+    let geometry = cover::Geometry::new(&tree.link(link).collisions, meshes == Meshes::Skip)
+        .expect("a link whose cover was made has its geometry read");
+    cover::report(&geometry, cover)
 }
 
 /// The rigid bodies of `tree`: links joined by fixed joints only share a body. `body[link]` is
@@ -449,119 +343,7 @@ pub fn sphere_pairs(
 
 #[cfg(test)]
 mod tests {
-
     use super::*;
-
-    /// Points on the shape's surface, densely: a grid over each face or a fine lattice of
-    /// directions.
-    fn surface(shape: &Shape) -> Vec<[f64; 3]> {
-        let n = 40;
-        let t = |i: usize| -1.0 + 2.0 * i as f64 / n as f64;
-        let mut out = Vec::new();
-        match *shape {
-            Shape::Box { size } => {
-                let h = size.map(|s| s / 2.0);
-                for axis in 0..3 {
-                    for sign in [-1.0, 1.0] {
-                        for i in 0..=n {
-                            for j in 0..=n {
-                                let mut p = [0.0; 3];
-                                p[axis] = sign * h[axis];
-                                p[(axis + 1) % 3] = t(i) * h[(axis + 1) % 3];
-                                p[(axis + 2) % 3] = t(j) * h[(axis + 2) % 3];
-                                out.push(p);
-                            }
-                        }
-                    }
-                }
-            }
-            Shape::Cylinder { radius, length } => {
-                for i in 0..=n {
-                    let a = std::f64::consts::PI * t(i);
-                    for j in 0..=n {
-                        out.push([radius * a.cos(), radius * a.sin(), t(j) * length / 2.0]);
-                        let rho = radius * (j as f64 / n as f64);
-                        out.push([rho * a.cos(), rho * a.sin(), length / 2.0]);
-                        out.push([rho * a.cos(), rho * a.sin(), -length / 2.0]);
-                    }
-                }
-            }
-            Shape::Capsule { .. } | Shape::Sphere { .. } => {
-                let (radius, length) = match *shape {
-                    Shape::Capsule { radius, length } => (radius, length),
-                    Shape::Sphere { radius } => (radius, 0.0),
-                    _ => unreachable!(),
-                };
-                for i in 0..=n {
-                    let polar = std::f64::consts::PI * (i as f64 / n as f64);
-                    for j in 0..=n {
-                        let a = std::f64::consts::PI * t(j);
-                        let v = [polar.sin() * a.cos(), polar.sin() * a.sin(), polar.cos()];
-                        let z = if v[2] >= 0.0 { length / 2.0 } else { -length / 2.0 };
-                        out.push([radius * v[0], radius * v[1], z + radius * v[2]]);
-                        out.push([radius * a.cos(), radius * a.sin(), t(i) * length / 2.0]);
-                    }
-                }
-            }
-            _ => {}
-        }
-        out
-    }
-
-    /// The cover holds every surface point (and the centre) and overshoots by at most `d`
-    /// (checked on points of each sphere's surface).
-    fn check(shape: Shape, d: f64) -> usize {
-        let spheres = shape.cover(d).unwrap();
-        for p in surface(&shape).into_iter().chain([[0.0; 3]]) {
-            let inside =
-                spheres.iter().any(|s| norm([0, 1, 2].map(|i| p[i] - s.center[i])) <= s.radius * (1.0 + 1e-12));
-            assert!(inside, "{shape:?}: {p:?} is in no sphere");
-        }
-        for s in &spheres {
-            for i in 0..=12 {
-                let polar = std::f64::consts::PI * i as f64 / 12.0;
-                for j in 0..24 {
-                    let a = std::f64::consts::TAU * j as f64 / 24.0;
-                    let v = [polar.sin() * a.cos(), polar.sin() * a.sin(), polar.cos()];
-                    let p = [0, 1, 2].map(|k| s.center[k] + s.radius * v[k]);
-                    let out = -shape.depth(p).unwrap();
-                    assert!(out <= d * (1.0 + 1e-9), "{shape:?}: a sphere reaches {out} beyond the shape (cover {d})");
-                }
-            }
-        }
-        spheres.len()
-    }
-
-    #[test]
-    fn covers_hold_every_point_within_their_overshoot() {
-        for d in [0.005, 0.01, 0.03] {
-            check(Shape::Sphere { radius: 0.1 }, d);
-            check(Shape::Capsule { radius: 0.05, length: 0.3 }, d);
-            check(Shape::Capsule { radius: 0.05, length: 0.0 }, d);
-            check(Shape::Capsule { radius: 0.002, length: 0.5 }, d);
-            check(Shape::Box { size: [0.2, 0.1, 0.05] }, d);
-            check(Shape::Box { size: [0.5, 0.5, 0.01] }, d);
-            check(Shape::Cylinder { radius: 0.06, length: 0.2 }, d);
-            check(Shape::Cylinder { radius: 0.3, length: 0.02 }, d);
-        }
-    }
-
-    #[test]
-    fn a_coarser_cover_takes_fewer_spheres() {
-        let box_ = Shape::Box { size: [0.2, 0.1, 0.1] };
-        assert!(check(box_.clone(), 0.03) < check(box_, 0.01));
-        let capsule = Shape::Capsule { radius: 0.05, length: 0.3 };
-        // h = sqrt(2 * 0.05 * 0.01 + 0.01^2) = 0.0332: 0.3 / 0.0663 = 4.5, so 5 intervals, 6 centres.
-        assert_eq!(capsule.cover(0.01).unwrap().len(), 6);
-        assert_eq!(Shape::Sphere { radius: 1.0 }.cover(0.01).unwrap().len(), 1);
-    }
-
-    #[test]
-    fn covers_are_deterministic() {
-        let shape = Shape::Cylinder { radius: 0.06, length: 0.2 };
-        assert_eq!(shape.cover(0.01), shape.cover(0.01));
-        assert!(Shape::Mesh { filename: "a.stl".into(), scale: [1.0; 3] }.cover(0.01).is_none());
-    }
 
     #[test]
     fn bad_sizes_are_named() {
@@ -576,6 +358,20 @@ mod tests {
         assert!(Shape::Cylinder { radius: 0.1, length: f64::NAN }.fault().is_some());
         assert!(Shape::Capsule { radius: 0.1, length: 0.0 }.fault().is_none());
         assert!(Shape::Capsule { radius: 0.1, length: -1.0 }.fault().is_some());
-        assert!(Shape::Mesh { filename: "a".into(), scale: [1.0, 0.0, 1.0] }.fault().is_some());
+        assert!(Shape::Ellipsoid { radii: [0.1, 0.0, 0.1] }.fault().is_some());
+        for scale in [[1.0, 0.0, 1.0], [1.0, -1.0, 1.0], [f64::NAN, 1.0, 1.0]] {
+            let mesh = Shape::Mesh { filename: "a".into(), scale, loaded: None };
+            assert!(mesh.fault().is_some(), "{scale:?}");
+        }
+    }
+
+    #[test]
+    fn the_ellipsoid_depth_bounds_hold() {
+        let radii = [0.3, 0.2, 0.1];
+        let shape = Shape::Ellipsoid { radii };
+        assert!((shape.depth([0.0; 3]).unwrap() - 0.1).abs() < 1e-15);
+        // On the surface: zero; outside along an axis: the exact distance.
+        assert!(shape.depth([0.3, 0.0, 0.0]).unwrap().abs() < 1e-15);
+        assert!((shape.depth([0.0, 0.5, 0.0]).unwrap() + 0.3).abs() < 1e-15);
     }
 }

@@ -62,7 +62,7 @@ pub use source::{
 };
 pub use suggest::closest;
 pub use transform::{Axis, Elementary, FixedTransform};
-pub use tree::{Chain, JointId, KinematicTree, LinkId};
+pub use tree::{Chain, JointId, KinematicTree, LinkId, MeshLoadError};
 /// The urdf-rs this crate converts from (feature `urdf-rs`: [`Description::from_urdf_rs`],
 /// [`KinematicTree::from_urdf_rs`]), for callers without a dependency of their own.
 #[cfg(feature = "urdf-rs")]

@@ -2,10 +2,23 @@
 
 use std::collections::BTreeMap;
 
+use crate::collision::{Shape, TriangleMesh};
 use crate::description::Description;
 use crate::error::{ModelError, ModelErrors};
 use crate::exactness::{ExactAngles, RecognisedAngle};
 use crate::joint::{Joint, JointKind, JointMotion, Limits, Link, length, stroke};
+
+/// A mesh file [`KinematicTree::load_meshes`] could not read.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("link `{link}`: mesh `{filename}`: {reason}")]
+pub struct MeshLoadError {
+    /// The first link that uses it.
+    pub link: String,
+    /// The file as written.
+    pub filename: String,
+    /// Why it could not be read.
+    pub reason: String,
+}
 
 /// Index of a link in [`KinematicTree::links`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -176,6 +189,37 @@ impl KinematicTree {
     /// The joint named `name`.
     pub fn joint_by_name(&self, name: &str) -> Option<&Joint> {
         self.joint_id(name).map(|id| self.joint(id))
+    }
+
+    /// Reads the triangles of every `<mesh>` in the collision geometry through `read`, called once
+    /// per distinct file name as written (`package://...`, a path): the model reads no files, so
+    /// the caller resolves and parses them (`kinematics-meshes` does both). A file `read` refuses
+    /// is an error naming the first link that uses it, the file and the reason.
+    pub fn load_meshes(
+        &mut self,
+        read: &mut dyn FnMut(&str) -> Result<std::sync::Arc<TriangleMesh>, String>,
+    ) -> Result<(), MeshLoadError> {
+        let mut read_already: BTreeMap<String, std::sync::Arc<TriangleMesh>> = BTreeMap::new();
+        for link in &mut self.links {
+            for collision in &mut link.collisions {
+                if let Shape::Mesh { filename, loaded, .. } = &mut collision.shape {
+                    let mesh = match read_already.get(filename.as_str()) {
+                        Some(mesh) => mesh.clone(),
+                        None => {
+                            let mesh = read(filename).map_err(|reason| MeshLoadError {
+                                link: link.name.clone(),
+                                filename: filename.clone(),
+                                reason,
+                            })?;
+                            read_already.insert(filename.clone(), mesh.clone());
+                            mesh
+                        }
+                    };
+                    *loaded = Some(mesh);
+                }
+            }
+        }
+        Ok(())
     }
 
     /// The length of `q`: one entry per independent joint, three for a planar joint, four for a

@@ -119,6 +119,7 @@ fn link_collisions(
             "mesh" => Shape::Mesh {
                 filename: at.required(shape, "filename")?.to_owned(),
                 scale: at.vector(shape, "scale")?.unwrap_or([1.0; 3]),
+                loaded: None,
             },
             other => {
                 return Err(at.error(

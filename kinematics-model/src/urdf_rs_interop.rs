@@ -91,7 +91,7 @@ fn collisions(link: &urdf_rs::Link) -> Vec<CollisionDescription> {
                 urdf_rs::Geometry::Cylinder { radius, length } => Shape::Cylinder { radius: *radius, length: *length },
                 urdf_rs::Geometry::Capsule { radius, length } => Shape::Capsule { radius: *radius, length: *length },
                 urdf_rs::Geometry::Mesh { filename, scale } => {
-                    Shape::Mesh { filename: filename.clone(), scale: scale.map_or([1.0; 3], |s| s.0) }
+                    Shape::Mesh { filename: filename.clone(), scale: scale.map_or([1.0; 3], |s| s.0), loaded: None }
                 }
             };
             CollisionDescription {

@@ -42,7 +42,7 @@ pub struct FixedPair {
 /// spheres. A pair at a fixed distance of zero or less collides everywhere and is not listed:
 /// the distances keep it, as the checks do.
 pub fn fixed_apart_pairs(tree: &KinematicTree, spheres: &[LinkSphere], pairs: &[(LinkId, LinkId)]) -> Vec<FixedPair> {
-    let center = |s: &LinkSphere| tree.link(s.link).collisions[s.collision].origin.apply(s.sphere.center);
+    let center = |s: &LinkSphere| s.sphere.center;
     let mut out = Vec::new();
     for &(link_a, link_b) in pairs {
         for (a, sa) in spheres.iter().enumerate().filter(|(_, s)| s.link == link_a) {

@@ -226,7 +226,7 @@ fn grid(
     let width = [0, 1].map(|d| (limits(d).upper - limits(d).lower) / cells[d] as f64);
     #[allow(clippy::expect_used, reason = "invariant: a grid's joints take their own entries (`dof`)")]
     let dofs = [0, 1].map(|d| dof(tree, joints[d.min(joints.len() - 1)]).expect("a gridded joint has an entry"));
-    let center = |s: &LinkSphere| tree.link(s.link).collisions[s.collision].origin.apply(s.sphere.center);
+    let center = |s: &LinkSphere| s.sphere.center;
     // Each pair's two sides: the path up to the pair's common ancestor, a sphere holding the
     // side's spheres, and the spheres, each with its reach.
     let sides: Vec<[Side; 2]> = pairs
@@ -417,7 +417,7 @@ fn rotate(axis: [f64; 3], (s, c): (f64, f64), p: [f64; 3]) -> [f64; 3] {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::collision::{Meshes, link_spheres};
+    use crate::collision::{Cover, Meshes, link_spheres};
     use crate::exactness::ExactAngles;
     use crate::source::{Source, SourceFormat};
 
@@ -437,7 +437,7 @@ mod tests {
     #[test]
     fn a_one_joint_grid_holds_at_every_sampled_angle() {
         let tree = Source::new(SourceFormat::Urdf, "arm.urdf", ARM).load(ExactAngles::default()).unwrap();
-        let spheres = link_spheres(&tree, 0.01, Meshes::Refuse).unwrap();
+        let spheres = link_spheres(&tree, &Cover::default(), Meshes::Read).unwrap();
         let pair = (tree.link_id("base").unwrap(), tree.link_id("arm").unwrap());
         let grids = pair_grids(&tree, &spheres, &[pair]);
         assert_eq!(grids.len(), 1);
@@ -477,7 +477,7 @@ mod tests {
     fn only_pairs_one_or_two_limited_joints_move_get_grids() {
         let continuous = ARM.replace(r#"type="revolute""#, r#"type="continuous""#);
         let tree = Source::new(SourceFormat::Urdf, "arm.urdf", continuous).load(ExactAngles::default()).unwrap();
-        let spheres = link_spheres(&tree, 0.01, Meshes::Refuse).unwrap();
+        let spheres = link_spheres(&tree, &Cover::default(), Meshes::Read).unwrap();
         let pair = (tree.link_id("base").unwrap(), tree.link_id("arm").unwrap());
         assert!(pair_grids(&tree, &spheres, &[pair]).is_empty());
     }
