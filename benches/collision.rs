@@ -35,7 +35,7 @@ use std::time::Duration;
 
 use criterion::Throughput;
 use kinematics::collision::{BoxObstacle, Environment, PointCloud, SphereObstacle};
-use kinematics::model::collision::{Meshes, fixed_apart_pairs, link_spheres, sphere_pairs};
+use kinematics::model::collision::{Cover, Meshes, fixed_apart_pairs, link_spheres, sphere_pairs};
 use kinematics::{Configurations, F32x16, F64x4, F64x8, Kinematics, Lanes, SceneObstacles};
 
 #[derive(Kinematics)]
@@ -81,7 +81,7 @@ macro_rules! robot {
         let qs: Vec<[f64; $n]> = inputs(&<$robot>::JOINT_LIMITS);
         let qs32: Vec<[f32; $n]> = qs.iter().map(|q| q.map(|x| x as f32)).collect();
         let reference = <$robot>::reference().unwrap();
-        let spheres = link_spheres(reference.tree(), 0.01, Meshes::Refuse).unwrap();
+        let spheres = link_spheres(reference.tree(), &Cover::default(), Meshes::Read).unwrap();
         let srdf: Option<&str> = $srdf;
         let disabled = srdf.map(|file| {
             let text = std::fs::read_to_string(format!("{}/{file}", env!("CARGO_MANIFEST_DIR"))).unwrap();
@@ -96,8 +96,7 @@ macro_rules! robot {
             .map(|s| {
                 let link = reference.tree().link(s.link);
                 let index = <$robot>::LINK_NAMES.iter().position(|n| *n == link.name);
-                let origin = kinematics::runtime::fixed_isometry(&link.collisions[s.collision].origin);
-                (index, (origin * nalgebra::Point3::from(s.sphere.center)).coords.into())
+                (index, s.sphere.center)
             })
             .collect();
         let hand_centers = |q: &[f64; $n]| -> [[f64; 3]; S] {

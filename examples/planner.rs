@@ -679,7 +679,7 @@ fn main() {
 mod tests {
     #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-    use kinematics::model::collision::{Meshes, link_spheres, sphere_pairs};
+    use kinematics::model::collision::{Cover, Meshes, link_spheres, sphere_pairs};
 
     use super::*;
 
@@ -690,7 +690,7 @@ mod tests {
         let environment = scene.environment().unwrap();
         let reference = Panda::reference().unwrap();
         let tree = reference.tree();
-        let spheres = link_spheres(tree, 0.01, Meshes::Refuse).unwrap();
+        let spheres = link_spheres(tree, &Cover::default(), Meshes::Read).unwrap();
         let srdf = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/robots/panda.srdf")).unwrap();
         let disabled = kinematics::model::srdf::parse_srdf(&srdf).unwrap().disabled_pairs(tree).unwrap();
         let pairs = sphere_pairs(tree, &spheres, Some(&disabled)).pairs;

@@ -4,7 +4,7 @@
 //! links as the model covers them, and the batch and lane forms equal to the scalar one.
 #![allow(clippy::panic, clippy::unwrap_used, clippy::expect_used)] // test helpers fail loudly
 
-use kinematics::model::collision::{Meshes, link_spheres};
+use kinematics::model::collision::{Cover, Meshes, link_spheres};
 use kinematics::{
     AGREEMENT_TOLERANCE, AGREEMENT_TOLERANCE_F32, Configurations, F32x8, F32x16, F64x4, F64x8, Kinematics, Lanes,
 };
@@ -33,10 +33,10 @@ fn agrees<const N: usize, const S: usize>(
     links: &[&str; S],
     reference: &kinematics::ReferenceFk,
     base: &str,
-    cover: f64,
+    cover: Option<f64>,
 ) {
     let tree = reference.tree();
-    let spheres = link_spheres(tree, cover, Meshes::Refuse).unwrap();
+    let spheres = link_spheres(tree, &cover_of(cover), Meshes::Read).unwrap();
     assert_eq!(spheres.len(), S);
     for (k, s) in spheres.iter().enumerate() {
         assert_eq!(radii[k], s.sphere.radius, "sphere {k}");
@@ -66,16 +66,16 @@ fn sphere_centers_agree_with_the_reference() {
         &Panda::SPHERE_LINKS,
         &Panda::reference().unwrap(),
         Panda::BASE,
-        0.01,
+        None,
     );
-    agrees(Ur5::sphere_centers, &Ur5::SPHERE_RADII, &Ur5::SPHERE_LINKS, &Ur5::reference().unwrap(), Ur5::BASE, 0.01);
+    agrees(Ur5::sphere_centers, &Ur5::SPHERE_RADII, &Ur5::SPHERE_LINKS, &Ur5::reference().unwrap(), Ur5::BASE, None);
     agrees(
         Ur5Primitives::sphere_centers,
         &Ur5Primitives::SPHERE_RADII,
         &Ur5Primitives::SPHERE_LINKS,
         &Ur5Primitives::reference().unwrap(),
         Ur5Primitives::BASE,
-        0.02,
+        Some(0.02),
     );
     assert_eq!(Panda::SPHERE_RADII.len(), 59);
     assert_eq!(Ur5::SPHERE_RADII.len(), 40);
@@ -190,15 +190,20 @@ use kinematics::collision::{BoxObstacle, CapsuleObstacle, CylinderObstacle, Envi
 use kinematics::runtime::ReferenceObstacles;
 use kinematics::runtime::kinematics_model::collision::sphere_pairs;
 
+/// The derive's cover for `sphere_cover = d` (`Some(d)`), or its default (`None`).
+fn cover_of(overshoot: Option<f64>) -> Cover {
+    overshoot.map_or_else(Cover::default, Cover::overshoot)
+}
+
 /// The robot's spheres at a cover of `cover` (m), and the link pairs its self-collision check
 /// tests: less the disabled pairs of `srdf` (a path from the repository's root), or without it,
 /// less the adjacent bodies.
 fn spheres_and_pairs(
     tree: &kinematics::model::KinematicTree,
-    cover: f64,
+    cover: Option<f64>,
     srdf: Option<&str>,
 ) -> (Vec<kinematics::model::collision::LinkSphere>, Vec<(kinematics::model::LinkId, kinematics::model::LinkId)>) {
-    let spheres = link_spheres(tree, cover, Meshes::Refuse).unwrap();
+    let spheres = link_spheres(tree, &cover_of(cover), Meshes::Read).unwrap();
     let disabled = srdf.map(|file| {
         let text = std::fs::read_to_string(format!("{}/{file}", env!("CARGO_MANIFEST_DIR"))).unwrap();
         kinematics::model::srdf::parse_srdf(&text).unwrap().disabled_pairs(tree).unwrap()
@@ -386,7 +391,7 @@ struct Seen {
 /// (parry3d-f64 on the reference's own sphere centres) on every configuration whose verdict the
 /// distances decide by more than 1e-9 m; those within are counted, not judged. The batches and
 /// the lanes equal the functions on one configuration.
-fn checks<R: Checks<N>, const N: usize>(cover: f64, seed: u64, srdf: Option<&str>) -> Seen {
+fn checks<R: Checks<N>, const N: usize>(cover: Option<f64>, seed: u64, srdf: Option<&str>) -> Seen {
     let reference = R::reference();
     let tree = reference.tree();
     let (spheres, pairs) = spheres_and_pairs(tree, cover, srdf);
@@ -473,18 +478,18 @@ fn both_verdicts(seen: &Seen) {
 
 #[test]
 fn collides_and_self_collides_agree_with_the_reference_ur5() {
-    both_verdicts(&checks::<Ur5Checked, 6>(0.01, 1, None));
+    both_verdicts(&checks::<Ur5Checked, 6>(None, 1, None));
 }
 
 #[test]
 fn collides_and_self_collides_agree_with_the_reference_panda() {
-    both_verdicts(&checks::<Panda, 7>(0.01, 2, None));
+    both_verdicts(&checks::<Panda, 7>(None, 2, None));
 }
 
 /// With the SRDF's disabled pairs.
 #[test]
 fn collides_and_self_collides_agree_with_the_reference_panda_srdf() {
-    both_verdicts(&checks::<PandaSrdf, 7>(0.01, 4, Some("robots/panda.srdf")));
+    both_verdicts(&checks::<PandaSrdf, 7>(None, 4, Some("robots/panda.srdf")));
 }
 
 /// VAMP's UR5 SRDF disables wrist_2_link against wrist_3_link but not against fts_robotside,
@@ -492,7 +497,7 @@ fn collides_and_self_collides_agree_with_the_reference_panda_srdf() {
 /// with that SRDF the arm always self-collides (the reference agrees).
 #[test]
 fn collides_and_self_collides_agree_with_the_reference_ur5_srdf() {
-    let seen = checks::<Ur5Srdf, 6>(0.01, 5, Some("robots/ur5.srdf"));
+    let seen = checks::<Ur5Srdf, 6>(None, 5, Some("robots/ur5.srdf"));
     assert!(seen.self_free == 0 && seen.free == 0 && seen.hits > 0, "{seen:?}");
 }
 
@@ -500,7 +505,7 @@ fn collides_and_self_collides_agree_with_the_reference_ur5_srdf() {
 /// every configuration: its checks are compared, but only the others show both verdicts.
 #[test]
 fn collides_and_self_collides_agree_with_the_reference_primitives() {
-    let seen = checks::<Ur5PrimitivesChecked, 6>(0.02, 3, None);
+    let seen = checks::<Ur5PrimitivesChecked, 6>(Some(0.02), 3, None);
     assert!(seen.self_free == 0 && seen.free == 0 && seen.hits > 0, "{seen:?}");
 }
 
@@ -510,7 +515,7 @@ fn collides_and_self_collides_agree_with_the_reference_primitives() {
 fn f32_checks_agree_with_the_reference() {
     let reference = Ur5::reference().unwrap();
     let tree = reference.tree();
-    let spheres = link_spheres(tree, 0.01, Meshes::Refuse).unwrap();
+    let spheres = link_spheres(tree, &Cover::default(), Meshes::Read).unwrap();
     let pairs = sphere_pairs(tree, &spheres, None).pairs;
     let mut stream = Stream(11);
     let (mut judged, mut banded) = (0, 0);

@@ -27,6 +27,15 @@ pub enum BuildError {
         /// Every fault, in the order the rules run (never empty).
         faults: Vec<CallFault>,
     },
+    /// A mesh of the collision geometry that could not be found or read (the link, the URI, every
+    /// place looked or what is wrong with the file).
+    #[error("{file}: {source}")]
+    Mesh {
+        /// The description file.
+        file: String,
+        /// The mesh's link, file and reason.
+        source: kinematics_model::MeshLoadError,
+    },
     /// A struct name that is not a Rust identifier.
     #[error("{file}: struct name `{name}` is not a Rust identifier")]
     StructName {

@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 
 use kinematics_compiler::emit::Trig;
 use kinematics_compiler::options::{
-    CollisionOptions, IkMode, Meshes, OptionFault, OptionKey, Options, floating_base_clash,
+    CollisionOptions, Cover, IkMode, Meshes, OptionFault, OptionKey, Options, floating_base_clash,
 };
 use kinematics_model::srdf::parse_srdf;
 use kinematics_model::{ExactAngles, LoadError, LoadErrorKind, SourceKind};
@@ -35,7 +35,7 @@ use crate::write::write_atomic;
 /// | `crate = "path"` | [`Robot::crate_path`] |
 /// | `exact_angles = false` | [`Robot::exact_angles`] |
 /// | `trig = "std"` | [`Robot::trig`] |
-/// | `collision` / `collision(sphere_cover = 0.02, meshes = "skip", srdf = "path")` | [`Robot::collision`] / [`Robot::sphere_cover`], [`Robot::skip_meshes`], [`Robot::srdf`] |
+/// | `collision` / `collision(spheres = 16, sphere_cover = 0.02, meshes = "skip", srdf = "path", packages(NAME = "path"))` | [`Robot::collision`] / [`Robot::spheres`], [`Robot::sphere_cover`], [`Robot::skip_meshes`], [`Robot::srdf`], [`Robot::package`] |
 ///
 /// plus [`Robot::struct_name`] (default: the robot's name in UpperCamelCase, see
 /// [`default_struct_name`]). Paths are relative to `CARGO_MANIFEST_DIR` (the directory of the
@@ -51,6 +51,10 @@ pub struct Robot {
     options: Options,
     /// The SRDF file [`Robot::srdf`] names, read when generating.
     srdf: Option<PathBuf>,
+    /// The sphere budget and overshoot as given ([`Robot::spheres`], [`Robot::sphere_cover`]).
+    cover_given: (Option<usize>, Option<f64>),
+    /// Where `package://` meshes are, as given ([`Robot::package`]).
+    packages: Vec<(String, PathBuf)>,
     struct_name: Option<String>,
     crate_path: String,
 }
@@ -63,6 +67,8 @@ impl Robot {
             dir: None,
             options: Options::default(),
             srdf: None,
+            cover_given: (None, None),
+            packages: Vec::new(),
             struct_name: None,
             crate_path: "::kinematics".to_owned(),
         }
@@ -213,20 +219,44 @@ impl Robot {
     }
 
     /// Also generate collision checking from the links' `<collision>` geometry, covered by
-    /// spheres (`sphere_centers`, `SPHERE_RADII`, `SPHERE_LINKS`). A mesh is refused unless
-    /// [`Robot::skip_meshes`].
+    /// spheres (`sphere_centers`, `SPHERE_RADII`, `SPHERE_LINKS`). Meshes are read (resolved from
+    /// the description's folder, [`Robot::package`] first) unless [`Robot::skip_meshes`].
     pub fn collision(mut self) -> Self {
         self.options.collision.get_or_insert_with(CollisionOptions::default);
         self
     }
 
-    /// [`Robot::collision`] with the sphere cover's largest overshoot `metres` (default 1 cm).
+    /// [`Robot::collision`] with at most `n` spheres per link (with [`Robot::sphere_cover`]
+    /// too, whichever is reached first ends a link's cover; neither: at most 10, stopping early
+    /// at 1 cm).
+    pub fn spheres(mut self, n: usize) -> Self {
+        self.cover_given.0 = Some(n);
+        self.set_cover()
+    }
+
+    /// [`Robot::collision`] with the sphere cover's largest overshoot `metres`: the fewest spheres
+    /// the cover finds with no point farther than that beyond the geometry.
     pub fn sphere_cover(mut self, metres: f64) -> Self {
-        self.options.collision.get_or_insert_with(CollisionOptions::default).sphere_cover = metres;
+        self.cover_given.1 = Some(metres);
+        self.set_cover()
+    }
+
+    /// The cover from the budget and overshoot given.
+    fn set_cover(mut self) -> Self {
+        let (spheres, overshoot) = self.cover_given;
+        self.options.collision.get_or_insert_with(CollisionOptions::default).cover = Cover { spheres, overshoot };
         self
     }
 
-    /// [`Robot::collision`] leaving meshes out (they are refused otherwise).
+    /// Where the meshes of `package://name/...` are: the folder `path` (relative as the
+    /// description's is), looked at before `ROS_PACKAGE_PATH`, `AMENT_PREFIX_PATH` and a folder
+    /// `name` above the description.
+    pub fn package(mut self, name: impl Into<String>, path: impl Into<PathBuf>) -> Self {
+        self.packages.push((name.into(), path.into()));
+        self
+    }
+
+    /// [`Robot::collision`] leaving meshes out (they are read otherwise).
     pub fn skip_meshes(mut self) -> Self {
         self.options.collision.get_or_insert_with(CollisionOptions::default).meshes = Meshes::Skip;
         self
@@ -262,8 +292,23 @@ impl Robot {
     /// mean", the inverse kinematics' family), compiles and formats. Prints nothing:
     /// [`Robot::write_to_out_dir`] adds cargo's directives.
     pub fn generate(&self) -> Result<String, BuildError> {
-        let loaded = self.load()?;
+        self.generate_reading().map(|(source, _)| source)
+    }
+
+    /// [`Robot::generate`], and the mesh files it read.
+    fn generate_reading(&self) -> Result<(String, Vec<PathBuf>), BuildError> {
+        let mut loaded = self.load()?;
         let mut options = self.options.clone();
+        let mut meshes = Vec::new();
+        if options.collision.as_ref().is_some_and(|c| c.meshes == Meshes::Read) {
+            let mut packages = kinematics_meshes::Packages::new();
+            for (name, path) in &self.packages {
+                packages.insert(name.clone(), resolve(path, self.dir.as_deref()));
+            }
+            let resolver = kinematics_meshes::Resolver::new(&self.source_path(), &packages);
+            meshes = kinematics_meshes::load_tree_meshes(&mut loaded.tree, &resolver)
+                .map_err(|source| BuildError::Mesh { file: self.label(), source })?;
+        }
         if let (Some(path), Some(collision)) = (&self.srdf, options.collision.as_mut()) {
             let label = path.display().to_string();
             let text = std::fs::read_to_string(resolve(path, self.dir.as_deref()))
@@ -274,7 +319,8 @@ impl Robot {
         }
         let checked = options.check(&loaded.tree).map_err(|rejected| self.faults(rejected.faults))?;
         let name = self.struct_name.clone().unwrap_or_else(|| default_struct_name(loaded.tree.name()));
-        emit_source(&Emit { loaded: &loaded, robot: checked, name: &name, crate_path: &self.crate_path })
+        let source = emit_source(&Emit { loaded: &loaded, robot: checked, name: &name, crate_path: &self.crate_path })?;
+        Ok((source, meshes))
     }
 
     /// `faults` as the error naming this file and the calls that set the options.
@@ -302,6 +348,7 @@ impl Robot {
             OptionKey::ExactAngles => ".exact_angles(..)",
             OptionKey::Collision => ".collision()",
             OptionKey::SphereCover => ".sphere_cover(..)",
+            OptionKey::Spheres => ".spheres(..)",
             OptionKey::Srdf => ".srdf(..)",
         }
     }
@@ -322,13 +369,18 @@ impl Robot {
     /// Generates and writes the code to `path` atomically (nothing half-written is left behind on
     /// an error). Prints nothing.
     pub fn write_to(&self, path: impl AsRef<Path>) -> Result<(), BuildError> {
-        let source = self.generate()?;
-        let path = path.as_ref();
+        self.write_reading(path.as_ref()).map(drop)
+    }
+
+    /// [`Robot::write_to`], and the mesh files read.
+    fn write_reading(&self, path: &Path) -> Result<Vec<PathBuf>, BuildError> {
+        let (source, meshes) = self.generate_reading()?;
         write_atomic(path, &source).map_err(|source| BuildError::Write {
             file: self.label(),
             path: path.display().to_string(),
             source,
-        })
+        })?;
+        Ok(meshes)
     }
 
     /// From a build script: prints `cargo:rerun-if-changed=<description>`, generates, and writes
@@ -341,7 +393,9 @@ impl Robot {
         }
         let out = std::env::var_os("OUT_DIR").ok_or(BuildError::NoOutDir)?;
         let path = Path::new(&out).join(file_name);
-        self.write_to(&path)?;
+        for mesh in self.write_reading(&path)? {
+            println!("cargo:rerun-if-changed={}", mesh.display());
+        }
         Ok(path)
     }
 }

@@ -20,15 +20,15 @@ pub struct Args {
     #[arg(long, default_value_t = 10_000, value_parser = crate::agreement::sample_count)]
     samples: usize,
     /// Check the collision checks too (`self_collides`, and with `--scene` `collides`), on the
-    /// robot's `<collision>` geometry (meshes left out) against the reference's distances.
+    /// robot's `<collision>` geometry against the reference's distances.
     #[arg(long)]
     collision: bool,
     /// How many configurations the collision checks are run on.
     #[arg(long, default_value_t = 1_000, value_parser = crate::agreement::sample_count)]
     collision_samples: usize,
-    /// The sphere cover's largest overshoot (metres).
-    #[arg(long, value_name = "METRES", default_value_t = kinematics_compiler::options::DEFAULT_SPHERE_COVER)]
-    sphere_cover: f64,
+    /// How the geometry becomes spheres, and where meshes are.
+    #[command(flatten)]
+    cover: crate::cover::CoverArgs,
     /// An SRDF whose disabled pairs the self-collision check leaves out (implies `--collision`).
     #[arg(long, value_name = "FILE")]
     srdf: Option<String>,
@@ -39,10 +39,11 @@ pub struct Args {
 
 /// Prints the largest error of every link; fails past the tolerance.
 pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
-    let tree = crate::robot::load(&args.file)?;
+    let mut tree = crate::robot::load(&args.file)?;
     // The collision inputs are read first: a bad SRDF or scene fails before anything is printed.
     let collision = if args.collision || args.srdf.is_some() || args.scene.is_some() {
-        Some(crate::collision::setup(&tree, args.sphere_cover, args.srdf.as_deref(), args.scene.as_deref())?)
+        args.cover.read_meshes(&mut tree, &args.file)?;
+        Some(crate::collision::setup(&tree, &args.cover, args.srdf.as_deref(), args.scene.as_deref())?)
     } else {
         None
     };
@@ -77,7 +78,7 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
     if let Some(setup) = &collision {
         match crate::collision::check(&tree, &args.file, args.collision_samples, setup)? {
             Some(report) => write!(out, "{}", crate::collision::text(&report, args.collision_samples))?,
-            None => writeln!(out, "collision: no <collision> geometry the cover reads (meshes are not read)")?,
+            None => writeln!(out, "collision: no <collision> geometry the cover reads")?,
         }
     }
     Ok(())

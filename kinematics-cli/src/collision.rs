@@ -8,7 +8,7 @@
 use std::collections::BTreeSet;
 
 use kinematics::collision::{CollisionTables, PairGrid};
-use kinematics::model::collision::{LinkSphere, Meshes, fixed_apart_pairs, link_spheres, pair_grids, sphere_pairs};
+use kinematics::model::collision::{Cover, LinkSphere, Meshes, fixed_apart_pairs, link_spheres, pair_grids, sphere_pairs};
 use kinematics::model::{KinematicTree, LinkId};
 use kinematics::runtime::ReferenceObstacles;
 use kinematics::{Pose, ReferenceFk, SceneObstacles};
@@ -24,8 +24,10 @@ pub const BAND: f64 = 1e-9;
 
 /// What the collision check is run on: the cover, the SRDF's disabled pairs, the scene.
 pub struct Setup<'a> {
-    /// The cover's largest overshoot (m).
-    pub cover: f64,
+    /// How the geometry becomes spheres.
+    pub cover: Cover,
+    /// Whether meshes (read into the tree beforehand) are covered or left out.
+    pub meshes: Meshes,
     /// The SRDF file and its disabled pairs, if one was given.
     pub srdf: Option<(&'a str, BTreeSet<(LinkId, LinkId)>)>,
     /// The scene file and its obstacles, if one was given.
@@ -70,21 +72,21 @@ pub struct Reference {
 
 impl Reference {
     /// The reference for `tree` as `setup` asks, or `None` if the robot has no geometry the cover
-    /// reads (meshes are left out).
-    pub fn new(tree: &KinematicTree, file: &str, setup: &Setup<'_>) -> Option<Self> {
-        #[allow(clippy::expect_used, reason = "invariant: with meshes skipped the cover refuses nothing")]
-        let spheres = link_spheres(tree, setup.cover, Meshes::Skip).expect("skipped meshes are no fault");
+    /// reads. A link the cover cannot make is the error (an overshoot out of reach).
+    pub fn new(tree: &KinematicTree, file: &str, setup: &Setup<'_>) -> Result<Option<Self>, CliError> {
+        let spheres = link_spheres(tree, &setup.cover, setup.meshes)
+            .map_err(|e| CliError::Usage(format!("{file}: {e}")))?;
         if spheres.is_empty() {
-            return None;
+            return Ok(None);
         }
         let pairs = sphere_pairs(tree, &spheres, setup.srdf.as_ref().map(|(_, d)| d)).pairs;
-        Some(Reference {
+        Ok(Some(Reference {
             fk: ReferenceFk::new(tree.clone()),
             file: file.to_owned(),
             spheres,
             pairs,
             obstacles: setup.scene.as_ref().map(|(_, obstacles)| obstacles.reference()),
-        })
+        }))
     }
 
     /// The smallest signed distance (m) between spheres of the self-collision pairs at `q`, and
@@ -117,10 +119,10 @@ impl Reference {
             None => "; no scene given (`--scene FILE` checks `collides` too)".to_owned(),
         };
         format!(
-            "{} on {} at a cover of {} m, {} ({pairs_from}){scene}",
+            "{} on {} ({}), {} ({pairs_from}){scene}",
             counted(self.spheres.len(), "sphere"),
             counted(links.len(), "link"),
-            crate::inspect::short(setup.cover),
+            crate::cover::CoverArgs::describe(&setup.cover),
             counted(self.pairs.len(), "self-collision pair")
         )
     }
@@ -130,14 +132,14 @@ impl Reference {
 /// the cover reads (meshes are left out). A verdict that differs from the reference's outside
 /// the band is the error returned.
 pub fn check(tree: &KinematicTree, file: &str, samples: usize, setup: &Setup<'_>) -> Result<Option<Report>, CliError> {
-    let Some(reference) = Reference::new(tree, file, setup) else {
+    let Some(reference) = Reference::new(tree, file, setup)? else {
         return Ok(None);
     };
     let spheres = &reference.spheres;
     // The tables, as the compiler writes them: links with spheres in tree order, each with its
     // groups and bounding sphere; each group's spheres and bounding sphere; each sphere's centre
     // in its link's frame, in the checks' order.
-    let layout = CollisionLayout::new(tree, spheres);
+    let layout = CollisionLayout::new(spheres);
     let links: Vec<(usize, usize, [f64; 3], f64)> =
         layout.link_groups.iter().zip(&layout.bounds).map(|(&(s, e), &(c, r))| (s, e, c, r)).collect();
     let centers: Vec<[f64; 3]> = layout.order.iter().map(|&k| layout.points[k].1).collect();
@@ -297,15 +299,11 @@ pub fn text(report: &Report, samples: usize) -> String {
 /// Reads `--srdf` and `--scene` into a [`Setup`].
 pub fn setup<'a>(
     tree: &KinematicTree,
-    cover: f64,
+    cover: &crate::cover::CoverArgs,
     srdf: Option<&'a str>,
     scene: Option<&'a str>,
 ) -> Result<Setup<'a>, CliError> {
-    if !(cover.is_finite() && cover > 0.0) {
-        return Err(CliError::Usage(format!(
-            "`--sphere-cover` is {cover} (must be a finite positive length in metres)"
-        )));
-    }
+    let (meshes, cover) = (cover.meshes(), cover.cover()?);
     let srdf = match srdf {
         Some(path) => Some((path, crate::robot::load_srdf(path, tree)?)),
         None => None,
@@ -314,5 +312,5 @@ pub fn setup<'a>(
         Some(path) => Some((path, kinematics::load_scene(path)?)),
         None => None,
     };
-    Ok(Setup { cover, srdf, scene })
+    Ok(Setup { cover, meshes, srdf, scene })
 }

@@ -18,7 +18,7 @@ use std::collections::BTreeMap;
 use std::io::Write;
 
 use kinematics::Configurations;
-use kinematics::model::collision::{LinkSphere, Meshes, collision_pairs, link_spheres, sphere_pairs};
+use kinematics::model::collision::{LinkSphere, collision_pairs, link_spheres, sphere_pairs};
 use kinematics::model::{KinematicTree, LinkId};
 
 use crate::error::CliError;
@@ -37,9 +37,9 @@ pub struct Args {
     /// The fraction of samples a pair must touch in to be disabled as always touching.
     #[arg(long, value_name = "FRACTION", default_value_t = 0.95)]
     always: f64,
-    /// The sphere cover's largest overshoot (metres), as the derive's `sphere_cover`.
-    #[arg(long, value_name = "METRES", default_value_t = kinematics_compiler::options::DEFAULT_SPHERE_COVER)]
-    sphere_cover: f64,
+    /// How the geometry becomes spheres, as the derive's `collision(...)`, and where meshes are.
+    #[command(flatten)]
+    cover: crate::cover::CoverArgs,
     /// Write to this file (atomically) instead of standard output.
     #[arg(short, long)]
     output: Option<std::path::PathBuf>,
@@ -73,20 +73,16 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
     if !(args.always > 0.0 && args.always <= 1.0) {
         return Err(CliError::Usage(format!("`--always`: {} is no fraction in (0, 1]", args.always)));
     }
-    if !(args.sphere_cover.is_finite() && args.sphere_cover > 0.0) {
-        return Err(CliError::Usage(format!(
-            "`--sphere-cover`: {} is no finite positive length in metres",
-            args.sphere_cover
-        )));
-    }
-    let tree = crate::robot::load(&args.file)?;
-    #[allow(clippy::expect_used, reason = "invariant: with meshes skipped the cover refuses nothing")]
-    let spheres = link_spheres(&tree, args.sphere_cover, Meshes::Skip).expect("skipped meshes are no fault");
+    let cover = args.cover.cover()?;
+    let mut tree = crate::robot::load(&args.file)?;
+    args.cover.read_meshes(&mut tree, &args.file)?;
+    let spheres = link_spheres(&tree, &cover, args.cover.meshes())
+        .map_err(|e| CliError::Usage(format!("{}: {e}", args.file)))?;
     if spheres.is_empty() {
-        return Err(CliError::Usage(format!("{}: no collision geometry (meshes left out) to pair", args.file)));
+        return Err(CliError::Usage(format!("{}: no collision geometry to pair", args.file)));
     }
     let disabled = disabled_pairs(&tree, &spheres, args)?;
-    crate::error::deliver(&srdf(&tree, &disabled, args), args.output.as_deref(), &args.file, out)
+    crate::error::deliver(&srdf(&tree, &disabled, args, &cover), args.output.as_deref(), &args.file, out)
 }
 
 /// Every pair of links with spheres on different bodies that the check can leave out, with why.
@@ -154,7 +150,12 @@ fn default_configuration(tree: &KinematicTree) -> Vec<f64> {
 }
 
 /// The SRDF text: a comment saying how it was made, then the pairs by link name.
-fn srdf(tree: &KinematicTree, disabled: &BTreeMap<(LinkId, LinkId), Reason>, args: &Args) -> String {
+fn srdf(
+    tree: &KinematicTree,
+    disabled: &BTreeMap<(LinkId, LinkId), Reason>,
+    args: &Args,
+    cover: &kinematics::model::collision::Cover,
+) -> String {
     let mut pairs: Vec<(&str, &str, Reason)> = disabled
         .iter()
         .map(|(&(a, b), &reason)| {
@@ -167,13 +168,14 @@ fn srdf(tree: &KinematicTree, disabled: &BTreeMap<(LinkId, LinkId), Reason>, arg
     let mut out = String::from("<?xml version=\"1.0\"?>\n");
     out += &format!(
         "<!-- The link pairs a self-collision check can leave out, written by `kinematics collision-pairs` from\n     \
-         {} ({} samples within the limits, seed {}, always from {} of them, sphere cover {} m, meshes left out):\n     \
+         {} ({} samples within the limits, seed {}, always from {} of them, {}{}):\n     \
          {} adjacent, {} touching at the default configuration, {} always touching, {} never touching. -->\n",
         crate::convert::comment(&args.file),
         args.samples,
         args.seed,
         args.always,
-        args.sphere_cover,
+        crate::cover::CoverArgs::describe(cover),
+        if args.cover.skip_meshes { ", meshes left out" } else { "" },
         count(Reason::Adjacent),
         count(Reason::Default),
         count(Reason::Always),

@@ -16,6 +16,15 @@ pub enum CliError {
     /// Generating or writing code failed, or a link name given on the command line is unknown.
     #[error(transparent)]
     Build(#[from] BuildError),
+    /// A mesh of the collision geometry that could not be found or read.
+    #[error("{file}: {source}")]
+    Mesh {
+        /// The description file.
+        file: String,
+        /// The mesh's link, URI and why.
+        #[source]
+        source: kinematics::model::MeshLoadError,
+    },
     /// A link named by an option that the robot does not have (with "did you mean").
     #[error("{file}: {source}")]
     UnknownLink {

@@ -54,12 +54,9 @@ pub struct Args {
     /// Also generate collision checking from the links' `<collision>` geometry, as spheres.
     #[arg(long)]
     collision: bool,
-    /// With `--collision`, the sphere cover's largest overshoot in metres (default 0.01).
-    #[arg(long, requires = "collision")]
-    sphere_cover: Option<f64>,
-    /// With `--collision`, leave meshes out (they are refused otherwise).
-    #[arg(long, requires = "collision")]
-    skip_meshes: bool,
+    /// With `--collision`: how the geometry becomes spheres, and where meshes are.
+    #[command(flatten)]
+    cover: crate::cover::CoverArgs,
     /// With `--collision`, MoveIt's SRDF whose disabled pairs `self_collides` leaves out.
     #[arg(long, requires = "collision")]
     srdf: Option<String>,
@@ -129,11 +126,22 @@ pub fn builder(args: &Args) -> Result<Robot, CliError> {
     if args.collision {
         robot = robot.collision();
     }
-    if let Some(metres) = args.sphere_cover {
+    let cover = &args.cover;
+    let cover_given = cover.spheres.is_some() || cover.cover.is_some() || cover.skip_meshes || !cover.packages.is_empty();
+    if cover_given && !args.collision {
+        return Err(CliError::Usage("`--spheres`, `--cover`, `--package` and `--skip-meshes` need `--collision`".into()));
+    }
+    if let Some(n) = cover.spheres {
+        robot = robot.spheres(n);
+    }
+    if let Some(metres) = cover.cover {
         robot = robot.sphere_cover(metres);
     }
-    if args.skip_meshes {
+    if cover.skip_meshes {
         robot = robot.skip_meshes();
+    }
+    for (name, path) in &cover.packages {
+        robot = robot.package(name.clone(), path.clone());
     }
     if let Some(srdf) = &args.srdf {
         robot = robot.srdf(srdf);
@@ -177,7 +185,8 @@ fn flags(error: BuildError) -> CliError {
                 OptionKey::Trig => "--trig",
                 OptionKey::ExactAngles => "--exact-angles",
                 OptionKey::Collision => "--collision",
-                OptionKey::SphereCover => "--sphere-cover",
+                OptionKey::SphereCover => "--cover",
+                OptionKey::Spheres => "--spheres",
                 OptionKey::Srdf => "--srdf",
             },
             fault,

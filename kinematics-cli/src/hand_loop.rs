@@ -8,8 +8,6 @@
 use kinematics::SceneObstacles;
 use kinematics::model::collision::LinkSphere;
 use kinematics::model::{KinematicTree, LinkId};
-use kinematics::runtime::fixed_isometry;
-use nalgebra::Point3;
 
 use crate::panda::Panda;
 
@@ -49,8 +47,7 @@ impl HandLoop {
                 } else {
                     Some(Panda::LINK_NAMES.iter().position(|name| *name == link.name)?)
                 };
-                let center = fixed_isometry(&link.collisions[s.collision].origin) * Point3::from(s.sphere.center);
-                Some((index, [center.x, center.y, center.z], s.sphere.radius))
+                Some((index, s.sphere.center, s.sphere.radius))
             })
             .collect::<Option<Vec<_>>>()?;
         let mut sphere_pairs = Vec::new();

@@ -14,50 +14,54 @@ use crate::error::CliError;
 pub struct Args {
     /// A URDF file (.urdf, .xml), MJCF file (.xml, .mjcf) or DH table (.toml, .json).
     file: String,
-    /// The sphere cover's largest overshoot (metres) the collision geometry is listed at.
-    #[arg(long, value_name = "METRES", default_value_t = kinematics_compiler::options::DEFAULT_SPHERE_COVER)]
-    sphere_cover: f64,
+    /// How the geometry becomes spheres, and where meshes are.
+    #[command(flatten)]
+    cover: crate::cover::CoverArgs,
     /// An SRDF whose disabled pairs the self-collision pairs leave out.
     #[arg(long, value_name = "FILE")]
     srdf: Option<String>,
     /// List every collision sphere (its centre in its link's frame and its radius).
     #[arg(long)]
-    spheres: bool,
+    list_spheres: bool,
 }
 
 /// Prints the tree of `args.file`, then its collision geometry.
 pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
-    let tree = crate::robot::load(&args.file)?;
+    let cover = args.cover.cover()?;
+    let mut tree = crate::robot::load(&args.file)?;
+    args.cover.read_meshes(&mut tree, &args.file)?;
     write!(out, "{}", describe(&tree))?;
     let srdf = match &args.srdf {
         Some(path) => Some((path.clone(), crate::robot::load_srdf(path, &tree)?)),
         None => None,
     };
-    let view = CollisionView { cover: args.sphere_cover, srdf: srdf.as_ref(), spheres: args.spheres };
-    write!(out, "{}", collision(&tree, &view).map_err(|fault| CliError::Usage(format!("`--sphere-cover`: {fault}")))?)?;
+    let view = CollisionView { cover, meshes: args.cover.meshes(), srdf: srdf.as_ref(), spheres: args.list_spheres };
+    write!(out, "{}", collision(&tree, &view).map_err(|fault| CliError::Usage(format!("{}: {fault}", args.file)))?)?;
     Ok(())
 }
 
 /// How `inspect` shows collision geometry: at which cover, with which SRDF's disabled pairs,
 /// and whether every sphere is listed.
 pub struct CollisionView<'a> {
-    /// The cover's largest overshoot (m).
-    pub cover: f64,
+    /// How the geometry becomes spheres.
+    pub cover: kinematics::model::collision::Cover,
+    /// Whether meshes (read into the tree beforehand) are covered or left out.
+    pub meshes: kinematics::model::collision::Meshes,
     /// The SRDF read, with its file name, and its disabled pairs.
     pub srdf: Option<&'a (String, std::collections::BTreeSet<(kinematics::model::LinkId, kinematics::model::LinkId)>)>,
     /// Whether to list every sphere.
     pub spheres: bool,
 }
 
-/// The links' collision geometry: each link's shapes, how many spheres cover them and its
-/// bounding sphere (and with `spheres` each sphere), meshes listed as not read, and the link
-/// pairs a self-collision check tests; fixed joints whose mimic had nothing to do. A cover that
-/// is not a positive length is the error returned.
+/// The links' collision geometry: each link's shapes, how many spheres cover them, what the
+/// cover costs (its overshoot bound, the sampled overshoot of its spheres' surface, its volume
+/// against the geometry's) and its bounding sphere (and with `spheres` each sphere), and the link
+/// pairs a self-collision check tests; fixed joints whose mimic had nothing to do. A link the
+/// cover cannot make is the error returned.
 pub fn collision(tree: &KinematicTree, view: &CollisionView<'_>) -> Result<String, String> {
-    use kinematics::model::collision::{LinkSphere, Meshes, fixed_apart_pairs, link_spheres, pair_grids, sphere_pairs};
-    if !(view.cover.is_finite() && view.cover > 0.0) {
-        return Err(format!("{} is no finite positive length in metres", view.cover));
-    }
+    use kinematics::model::collision::{
+        LinkSphere, Meshes, cover_report, fixed_apart_pairs, link_covers, pair_grids, sphere_pairs,
+    };
     let mut out = String::new();
     if !tree.vacuous_mimics().is_empty() {
         out +=
@@ -68,16 +72,19 @@ pub fn collision(tree: &KinematicTree, view: &CollisionView<'_>) -> Result<Strin
         out += "collision geometry: none\n";
         return Ok(out);
     }
-    // Meshes are left out here (and listed): the derive refuses them unless told to leave them out.
-    #[allow(clippy::expect_used, reason = "invariant: with meshes skipped the cover refuses nothing")]
-    let spheres: Vec<LinkSphere> = link_spheres(tree, view.cover, Meshes::Skip).expect("skipped meshes are no fault");
-    let layout = kinematics_compiler::collision_layout::CollisionLayout::new(tree, &spheres);
+    let covers = link_covers(tree, &view.cover, view.meshes).map_err(|e| e.to_string())?;
+    let spheres: Vec<LinkSphere> = covers
+        .iter()
+        .flat_map(|(link, c)| c.spheres.iter().map(|&sphere| LinkSphere { link: *link, sphere }))
+        .collect();
+    let layout = kinematics_compiler::collision_layout::CollisionLayout::new(&spheres);
     out += &format!(
-        "collision geometry: {} elements on {} links, {} spheres at a cover of {} m (meshes are not read)\n",
+        "collision geometry: {} elements on {} links, {} spheres ({}{})\n",
         with.iter().map(|l| l.collisions.len()).sum::<usize>(),
         with.len(),
         spheres.len(),
-        short(view.cover)
+        crate::cover::CoverArgs::describe(&view.cover),
+        if view.meshes == Meshes::Skip { "; meshes left out" } else { "" }
     );
     let width = column_width(with.iter().map(|l| l.name.as_str()));
     let point = |p: [f64; 3]| format!("({}, {}, {})", short(p[0]), short(p[1]), short(p[2]));
@@ -104,6 +111,18 @@ pub fn collision(tree: &KinematicTree, view: &CollisionView<'_>) -> Result<Strin
         };
         let count = if own.len() == 1 { "1 sphere".to_owned() } else { format!("{} spheres", own.len()) };
         out += &format!("  {}  {count}: {}{bound}\n", pad(&link.name, width), shapes.join(", "));
+        if let Some((id, c)) = covers.iter().find(|(l, _)| tree.link(*l).name == link.name) {
+            let r = cover_report(tree, *id, c, view.meshes);
+            out += &format!(
+                "  {}  overshoot at most {} m (sampled on the spheres: largest {} m, mean {} m); volume {} of the geometry's {} m^3\n",
+                pad("", width),
+                short(r.bound),
+                short(r.beyond_max),
+                short(r.beyond_mean),
+                ratio(r.cover_volume, r.geometry_volume),
+                short(r.geometry_volume),
+            );
+        }
         if view.spheres {
             for k in own {
                 out += &format!("    {} m at {}\n", short(spheres[k].sphere.radius), point(layout.points[k].1));
@@ -165,6 +184,11 @@ pub fn collision(tree: &KinematicTree, view: &CollisionView<'_>) -> Result<Strin
         );
     }
     Ok(out)
+}
+
+/// `a / b` as `3.1x`, or `-` where `b` is zero (a link whose meshes enclose no volume).
+fn ratio(a: f64, b: f64) -> String {
+    if b > 0.0 { format!("{:.1}x", a / b) } else { "-".to_owned() }
 }
 
 /// A number in at most 6 decimals, without trailing zeros (`1`, `-0.5`, `0.707107`).

@@ -22,6 +22,7 @@ mod check;
 mod collision;
 mod collision_pairs;
 mod convert;
+mod cover;
 mod demo;
 mod draw;
 mod error;

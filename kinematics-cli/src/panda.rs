@@ -32,7 +32,8 @@ pub fn setup() -> Result<(KinematicTree, Setup<'static>), CliError> {
         .map_err(load(SRDF))?;
     let scene = parse_scene(include_str!("../scenes/tabletop.toml"), SceneFormat::Toml).map_err(load(SCENE))?;
     let setup = Setup {
-        cover: kinematics_compiler::options::DEFAULT_SPHERE_COVER,
+        cover: kinematics::model::collision::Cover::default(),
+        meshes: kinematics::model::collision::Meshes::Read,
         srdf: Some((SRDF, disabled)),
         scene: Some((SCENE, SceneObstacles::from_scene(&scene))),
     };

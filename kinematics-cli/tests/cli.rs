@@ -1138,7 +1138,7 @@ fn convert_refuses_a_spherical_joint_and_inspect_shows_one() {
 /// refused, nothing written.
 #[test]
 fn collision_pairs_writes_an_srdf_the_derive_reads() {
-    use kinematics::model::collision::{Meshes, link_spheres, sphere_pairs};
+    use kinematics::model::collision::{Cover, Meshes, link_spheres, sphere_pairs};
     let dir = scratch("collision-pairs");
     let out = dir.join("panda.srdf");
     let file = "robots/panda_spherized.urdf";
@@ -1150,7 +1150,7 @@ fn collision_pairs_writes_an_srdf_the_derive_reads() {
     let tree = load(file);
     let srdf = kinematics::model::srdf::parse_srdf(&text).unwrap();
     let disabled = srdf.disabled_pairs(&tree).unwrap();
-    let spheres = link_spheres(&tree, 0.01, Meshes::Skip).unwrap();
+    let spheres = link_spheres(&tree, &Cover::default(), Meshes::Skip).unwrap();
     let checked = sphere_pairs(&tree, &spheres, Some(&disabled)).pairs;
     let without_srdf = sphere_pairs(&tree, &spheres, None).pairs;
     let id = |name: &str| tree.links().iter().position(|l| l.name == name).map(kinematics::model::LinkId).unwrap();

@@ -361,8 +361,8 @@ fn draw_shows_the_collision_spheres_and_a_scenes_obstacles() {
     let scale = elements[0].number("data-scale");
     let spheres = kinematics::model::collision::link_spheres(
         fk.tree(),
-        kinematics_compiler::options::DEFAULT_SPHERE_COVER,
-        kinematics::model::collision::Meshes::Refuse,
+        &kinematics::model::collision::Cover::default(),
+        kinematics::model::collision::Meshes::Read,
     )
     .unwrap();
     let centers = fk.sphere_centers(&q, &spheres).unwrap();

@@ -15,7 +15,6 @@ use kinematics_model::LinkId;
 use kinematics_model::collision::{FixedPair, LinkSphere};
 
 use crate::error::CompileError;
-use crate::ik::geometry::transform_point;
 use crate::request::{Request, compile};
 use crate::stats::OpCount;
 
@@ -65,8 +64,8 @@ fn split(members: Vec<usize>, balls: &[([f64; 3], f64)], out: &mut Vec<Vec<usize
 }
 
 impl CollisionLayout {
-    /// The layout of `spheres` (the model's `link_spheres` of `tree`).
-    pub fn new(tree: &KinematicTree, spheres: &[LinkSphere]) -> Self {
+    /// The layout of `spheres` (the model's `link_spheres`, centres in their links' frames).
+    pub fn new(spheres: &[LinkSphere]) -> Self {
         let mut links: Vec<LinkId> = spheres.iter().map(|s| s.link).collect();
         links.sort_unstable();
         links.dedup();
@@ -75,8 +74,7 @@ impl CollisionLayout {
             .map(|s| {
                 #[allow(clippy::expect_used, reason = "invariant: every sphere's link is in `links`")]
                 let frame = links.binary_search(&s.link).expect("the links are those of the spheres");
-                let origin = &tree.link(s.link).collisions[s.collision].origin;
-                (frame, transform_point(origin, s.sphere.center))
+                (frame, s.sphere.center)
             })
             .collect();
         let balls: Vec<([f64; 3], f64)> = points.iter().zip(spheres).map(|((_, p), s)| (*p, s.sphere.radius)).collect();
@@ -194,7 +192,7 @@ mod tests {
 #[cfg(test)]
 mod layout_tests {
     use super::*;
-    use kinematics_model::collision::{Meshes, link_spheres};
+    use kinematics_model::collision::{Cover, Meshes, link_spheres};
 
     /// On every robot of `robots/` with collision geometry: the checks' order is a permutation
     /// keeping each link's spheres together, the groups partition each link's spheres into parts
@@ -211,11 +209,11 @@ mod layout_tests {
             }
             let text = std::fs::read_to_string(&path).unwrap();
             let tree = kinematics_model::parse_source(&name, &text).unwrap();
-            let Ok(spheres) = link_spheres(&tree, 0.02, Meshes::Skip) else { continue };
+            let Ok(spheres) = link_spheres(&tree, &Cover::default(), Meshes::Skip) else { continue };
             if spheres.is_empty() {
                 continue;
             }
-            let layout = CollisionLayout::new(&tree, &spheres);
+            let layout = CollisionLayout::new(&spheres);
             let mut sorted = layout.order.clone();
             sorted.sort_unstable();
             assert_eq!(sorted, (0..spheres.len()).collect::<Vec<_>>(), "{name}");

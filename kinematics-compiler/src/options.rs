@@ -16,9 +16,9 @@
 //! or flag. The `Checked` robot holds the IK plan, so `classify` runs once. `Choice` lists are read
 //! with `choose`'s "did you mean".
 
-pub use kinematics_model::collision::Meshes;
+pub use kinematics_model::collision::{Cover, Meshes};
 use kinematics_model::collision::{
-    CollisionPairs, FixedPair, LinkSphere, MeshRefused, PairGrid, fixed_apart_pairs, link_spheres, pair_grids,
+    CollisionPairs, CoverError, FixedPair, LinkSphere, PairGrid, fixed_apart_pairs, link_spheres, pair_grids,
     sphere_pairs,
 };
 use kinematics_model::srdf::Srdf;
@@ -102,21 +102,19 @@ pub struct Options {
 /// How a robot's collision geometry becomes spheres, and which links are checked against which.
 #[derive(Debug, Clone, PartialEq)]
 pub struct CollisionOptions {
-    /// The sphere cover's largest overshoot in metres (`sphere_cover`; [`DEFAULT_SPHERE_COVER`]
-    /// unless given): how far a sphere may reach beyond the primitive it covers.
-    pub sphere_cover: f64,
-    /// What to do with meshes: refused (the default) or left out.
+    /// How each link's geometry becomes spheres: a budget per link (`spheres`), an overshoot
+    /// (`sphere_cover`, metres), or both; [`Cover::default`] unless given.
+    pub cover: Cover,
+    /// What to do with meshes: covered (the default; their triangles read by the front end) or
+    /// left out.
     pub meshes: Meshes,
     /// An SRDF's disabled pairs (MoveIt's `<disable_collisions>`), read by the front end.
     pub srdf: Option<Srdf>,
 }
 
-/// The sphere cover's largest overshoot when none is given: 1 cm.
-pub const DEFAULT_SPHERE_COVER: f64 = 0.01;
-
 impl Default for CollisionOptions {
     fn default() -> Self {
-        CollisionOptions { sphere_cover: DEFAULT_SPHERE_COVER, meshes: Meshes::default(), srdf: None }
+        CollisionOptions { cover: Cover::default(), meshes: Meshes::default(), srdf: None }
     }
 }
 
@@ -150,6 +148,8 @@ pub enum OptionKey {
     Collision,
     /// `collision`'s `sphere_cover`.
     SphereCover,
+    /// `collision`'s `spheres`.
+    Spheres,
     /// `collision`'s `srdf`.
     Srdf,
 }
@@ -170,6 +170,7 @@ impl OptionKey {
             OptionKey::ExactAngles => "exact_angles",
             OptionKey::Collision => "collision",
             OptionKey::SphereCover => "sphere_cover",
+            OptionKey::Spheres => "spheres",
             OptionKey::Srdf => "srdf",
         }
     }
@@ -237,12 +238,15 @@ pub enum FaultKind {
     /// is not in it.
     #[error("{0}")]
     NoIkFamily(Box<CompileError>),
-    /// `collision` of a robot with a mesh, meshes not left out.
+    /// A link whose geometry could not be covered (a mesh not read, an overshoot out of reach).
     #[error(transparent)]
-    Mesh(MeshRefused),
+    Cover(CoverError),
     /// `sphere_cover` that is no positive finite length.
     #[error("`sphere_cover` is {0} (must be a finite positive length in metres)")]
     SphereCover(f64),
+    /// `spheres` of zero.
+    #[error("`spheres` is 0 (must be at least one sphere per link)")]
+    Spheres,
     /// `collision` of a robot with no collision geometry (or only meshes, left out).
     #[error("`collision` of a robot with no collision geometry: no link has a <collision> element the check can read")]
     NoGeometry,
@@ -459,11 +463,14 @@ fn ik_applies(options: &Options, tree: &KinematicTree) -> Result<CheckedIk, Opti
         .map_err(|e| fault(FaultKind::NoIkFamily(Box::new(e))))
 }
 
-/// Rule: the sphere cover's overshoot is a finite positive length.
+/// Rule: the sphere budget is at least one and the overshoot a finite positive length.
 fn sphere_cover_positive(options: &Options) -> Option<OptionFault> {
-    let cover = options.collision.as_ref()?.sphere_cover;
-    (!(cover.is_finite() && cover > 0.0))
-        .then_some(OptionFault { key: OptionKey::SphereCover, kind: FaultKind::SphereCover(cover) })
+    let cover = options.collision.as_ref()?.cover;
+    if cover.spheres == Some(0) {
+        return Some(OptionFault { key: OptionKey::Spheres, kind: FaultKind::Spheres });
+    }
+    let d = cover.overshoot?;
+    (!(d.is_finite() && d > 0.0)).then_some(OptionFault { key: OptionKey::SphereCover, kind: FaultKind::SphereCover(d) })
 }
 
 /// Rule: `collision` needs geometry the cover can read (a mesh is refused unless meshes are left
@@ -475,8 +482,7 @@ fn collision_applies(options: &Options, tree: &KinematicTree) -> Result<Option<C
         // Reported by `check_alone`.
         return Ok(None);
     }
-    let spheres =
-        link_spheres(tree, collision.sphere_cover, collision.meshes).map_err(|e| fault(FaultKind::Mesh(e)))?;
+    let spheres = link_spheres(tree, &collision.cover, collision.meshes).map_err(|e| fault(FaultKind::Cover(e)))?;
     if spheres.is_empty() {
         return Err(fault(FaultKind::NoGeometry));
     }
@@ -546,7 +552,7 @@ impl Choice for Meshes {
     const KEY: OptionKey = OptionKey::Collision;
     const NAME: &'static str = "meshes";
     const CHOICES: &'static [(&'static str, Self, &'static str)] = &[
-        ("refuse", Meshes::Refuse, "a mesh is an error naming its link; the default"),
+        ("read", Meshes::Read, "meshes are read and covered like any geometry; the default"),
         ("skip", Meshes::Skip, "meshes are left out of the check"),
     ];
 }

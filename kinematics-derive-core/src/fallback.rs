@@ -134,8 +134,7 @@ impl Implied {
     pub fn with_robot(mut self, tree: &KinematicTree) -> Self {
         // The cover, when it can be made (a mesh refused leaves its counts unknown).
         let spheres = self.options.collision.as_ref().and_then(|c| {
-            let cover = c.sphere_cover.is_finite() && c.sphere_cover > 0.0;
-            cover.then(|| link_spheres(tree, c.sphere_cover, c.meshes).ok()).flatten()
+            c.cover.fault().is_none().then(|| link_spheres(tree, &c.cover, c.meshes).ok()).flatten()
         });
         let links = match &self.options.links {
             Some(listed) => listed.len(),
@@ -377,7 +376,7 @@ fn constant_value(render: &Render, constant: Constant, p: &TokenStream) -> Token
 mod tests {
     //! The stub lists what the emitter writes, signature for signature, for every option set.
 
-    use kinematics_compiler::options::{CheckedIk, CollisionOptions, IkMode, Options, Scalars, Trig};
+    use kinematics_compiler::options::{CheckedIk, CollisionOptions, Cover, IkMode, Options, Scalars, Trig};
     use kinematics_compiler::robot::{RobotSpec, emit_robot};
     use kinematics_model::{ExactAngles, KinematicTree, Source, SourceKind};
     use quote::quote;
@@ -468,7 +467,7 @@ mod tests {
                             trig: if case % 2 == 0 { Trig::Std } else { Trig::Fast },
                             // The arm with primitive geometry gets its sphere centres.
                             collision: (file == "ur5_primitives.urdf")
-                                .then(|| CollisionOptions { sphere_cover: 0.03, ..CollisionOptions::default() }),
+                                .then(|| CollisionOptions { cover: Cover::overshoot(0.03), ..CollisionOptions::default() }),
                             ..Options::default()
                         };
                         let Ok(checked) = options.check(&tree) else { continue };

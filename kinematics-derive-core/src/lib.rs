@@ -15,6 +15,7 @@ pub mod options;
 mod source;
 
 use darling::FromDeriveInput;
+use darling::util::SpannedValue;
 use proc_macro2::{Span, TokenStream};
 use quote::quote;
 
@@ -119,6 +120,17 @@ fn expand_options(
         }
         return (implied, None);
     };
+    let mut loaded = loaded;
+    if let Some(collision) = robot_options.collision.as_ref()
+        && collision.meshes == kinematics_compiler::options::Meshes::Read
+    {
+        let packages = options.output().packages();
+        let span = packages.map_or_else(|| options.span_of(OptionKey::Collision), SpannedValue::span);
+        match errors.handle(source::read_meshes(&mut loaded, packages.map(AsRef::as_ref), span)) {
+            Some(include) => rebuild.extend(include),
+            None => return (implied, None),
+        }
+    }
     let implied = implied.with_robot(&loaded.tree);
     let checked = match robot_options.check(&loaded.tree) {
         Ok(checked) => checked,

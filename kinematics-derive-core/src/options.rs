@@ -19,13 +19,15 @@
 //! each `OptionKey` maps back to its key's span; words (`trig`, `ik`) are read through the
 //! compiler's `Choice` lists.
 
+use std::collections::BTreeMap;
+
 use darling::ast::NestedMeta;
 use darling::util::{Override, PathList, SpannedValue};
 use darling::{Error, FromDeriveInput, FromMeta};
 
 use crate::inline_dh::InlineDh;
 use kinematics_compiler::options::{
-    Choice, CollisionOptions, IkKind, IkMode, Meshes, OptionKey, Options, Scalars, Trig, choose,
+    Choice, CollisionOptions, Cover, IkKind, IkMode, Meshes, OptionKey, Options, Scalars, Trig, choose,
 };
 use kinematics_model::ExactAngles;
 
@@ -106,8 +108,9 @@ pub struct OutputKeys {
     /// default, `trig = "fast"`: every angle of a function in one call, side by side in SIMD lanes).
     #[darling(default)]
     pub trig: Option<SpannedValue<Word<Trig>>>,
-    /// `collision` (or `collision(sphere_cover = 0.02, meshes = "skip")`): also emit collision
-    /// checking's functions from the links' `<collision>` geometry, covered by spheres.
+    /// `collision` (or `collision(spheres = 16, sphere_cover = 0.02, meshes = "skip",
+    /// packages(NAME = "path"))`): also emit collision checking's functions from the links'
+    /// `<collision>` geometry, covered by spheres.
     #[darling(default)]
     pub collision: Option<SpannedValue<Override<CollisionKey>>>,
     /// `crate = "path"` for a renamed dependency.
@@ -118,12 +121,19 @@ pub struct OutputKeys {
 /// The list form of `collision(...)`.
 #[derive(Debug, Clone, FromMeta)]
 pub struct CollisionKey {
+    /// The sphere budget per link.
+    #[darling(default)]
+    pub spheres: Option<usize>,
     /// The cover's largest overshoot in metres.
     #[darling(default)]
     pub sphere_cover: Option<f64>,
-    /// `meshes = "skip"` (leave meshes out) or `"refuse"` (the default).
+    /// `meshes = "skip"` (leave meshes out) or `"read"` (the default).
     #[darling(default)]
     pub meshes: Option<Word<Meshes>>,
+    /// `packages(NAME = "path", ...)`: where `package://NAME/` meshes are (relative to
+    /// `CARGO_MANIFEST_DIR`), looked at before `ROS_PACKAGE_PATH` and the rest.
+    #[darling(default)]
+    pub packages: Option<SpannedValue<BTreeMap<String, String>>>,
     /// `srdf = "path"`: MoveIt's semantic description, whose `<disable_collisions>` pairs the
     /// self-collision check leaves out (relative to `CARGO_MANIFEST_DIR`).
     #[darling(default)]
@@ -131,6 +141,14 @@ pub struct CollisionKey {
 }
 
 impl OutputKeys {
+    /// The `packages(...)` given in `collision(...)`, if any.
+    pub fn packages(&self) -> Option<&SpannedValue<BTreeMap<String, String>>> {
+        match self.collision.as_ref()?.as_ref() {
+            Override::Explicit(key) => key.packages.as_ref(),
+            Override::Inherit => None,
+        }
+    }
+
     /// The `srdf` path given in `collision(...)`, if any.
     pub fn srdf(&self) -> Option<&SpannedValue<String>> {
         match self.collision.as_ref()?.as_ref() {
@@ -384,7 +402,10 @@ impl KinematicsInput {
             collision: output.collision.as_ref().map(|key| match key.as_ref() {
                 Override::Inherit => CollisionOptions::default(),
                 Override::Explicit(key) => CollisionOptions {
-                    sphere_cover: key.sphere_cover.unwrap_or(CollisionOptions::default().sphere_cover),
+                    cover: match (key.spheres, key.sphere_cover) {
+                        (None, None) => Cover::default(),
+                        (spheres, overshoot) => Cover { spheres, overshoot },
+                    },
                     meshes: key.meshes.map_or_else(Meshes::default, |Word(m)| m),
                     srdf: None,
                 },
@@ -404,7 +425,9 @@ impl KinematicsInput {
             OptionKey::Trig => output.trig.as_ref().map(SpannedValue::span),
             // The span darling keeps of `collision(...)` is its first entry's (`sphere_cover`
             // when it is given: the cover's fault is spanned there).
-            OptionKey::Collision | OptionKey::SphereCover => output.collision.as_ref().map(SpannedValue::span),
+            OptionKey::Collision | OptionKey::SphereCover | OptionKey::Spheres => {
+                output.collision.as_ref().map(SpannedValue::span)
+            }
             // The path's own span, else (the fault found without it) the `collision` key's.
             OptionKey::Srdf => {
                 output.srdf().map(SpannedValue::span).or_else(|| output.collision.as_ref().map(SpannedValue::span))

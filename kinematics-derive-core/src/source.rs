@@ -27,6 +27,9 @@ pub struct Loaded {
     /// An expression of type `&'static str` with the text, which also makes the crate rebuild when
     /// the file changes (`include_str!` of its absolute path).
     pub text_expr: TokenStream,
+    /// The description file's absolute path (`None` for an inline table): where its meshes'
+    /// relative paths start.
+    pub path: Option<PathBuf>,
     /// For an MJCF file that names others (`<include>`, `<model file>`), the expression of type
     /// `&'static [(&'static str, &'static str)]` holding each (path as written,
     /// `include_str!` of it), for `reference()`; `None` when it names none.
@@ -105,9 +108,10 @@ fn from_file(path: &SpannedValue<String>, kind: SourceKind, policy: Policy<'_>) 
         let (written, paths): (Vec<_>, Vec<_>) = files.into_iter().unzip();
         quote!(&[#((#written, include_str!(#paths))),*])
     });
+    let path = Some(absolute.clone());
     let absolute = absolute.to_string_lossy().into_owned();
     let text_expr = quote!(include_str!(#absolute));
-    Ok(Loaded { tree, label: source.file_name(), written: source.label, text_expr, files_expr })
+    Ok(Loaded { tree, label: source.file_name(), written: source.label, text_expr, path, files_expr })
 }
 
 fn from_inline(table: &InlineDh, span: Span, policy: Policy<'_>) -> darling::Result<Loaded> {
@@ -118,7 +122,7 @@ fn from_inline(table: &InlineDh, span: Span, policy: Policy<'_>) -> darling::Res
     let no_files = |_: &str| Err(String::new());
     let tree = load(&Source::new(SourceFormat::DhToml, LABEL, text.clone()), policy, span, &no_files)?;
     let (label, written) = ("inline_dh.toml".to_owned(), LABEL.to_owned());
-    Ok(Loaded { tree, label, written, text_expr: quote!(#text), files_expr: None })
+    Ok(Loaded { tree, label, written, text_expr: quote!(#text), path: None, files_expr: None })
 }
 
 /// The SRDF at `path` (relative to `CARGO_MANIFEST_DIR`), parsed, and an item that makes the
@@ -140,6 +144,28 @@ pub fn read_srdf(path: &SpannedValue<String>) -> darling::Result<(kinematics_mod
             const _: &[u8] = include_bytes!(#absolute);
         ),
     ))
+}
+
+/// Reads the triangles of every mesh of `loaded`'s collision geometry (`package://` and relative
+/// paths resolved from the description's folder, `packages` relative to `CARGO_MANIFEST_DIR`
+/// first), and an item per file that makes the crate rebuild when it changes. A mesh that cannot
+/// be found or read is an error on `span` naming the description, the link, the URI and why.
+pub fn read_meshes(
+    loaded: &mut Loaded,
+    packages: Option<&std::collections::BTreeMap<String, String>>,
+    span: Span,
+) -> darling::Result<TokenStream> {
+    let root = std::env::var("CARGO_MANIFEST_DIR").map(PathBuf::from).unwrap_or_default();
+    let mut given = kinematics_meshes::Packages::new();
+    for (name, path) in packages.into_iter().flatten() {
+        given.insert(name.clone(), root.join(path));
+    }
+    let description = loaded.path.clone().unwrap_or_else(|| root.join(&loaded.label));
+    let resolver = kinematics_meshes::Resolver::new(&description, &given);
+    let files = kinematics_meshes::load_tree_meshes(&mut loaded.tree, &resolver)
+        .map_err(|e| Error::custom(format!("{}: {e}", loaded.written)).with_span(&span))?;
+    let files = files.iter().map(|f| f.to_string_lossy().into_owned());
+    Ok(quote!(#(const _: &[u8] = include_bytes!(#files);)*))
 }
 
 /// A load error as compile errors on `span`: one per broken model rule, so all are shown.

@@ -16,7 +16,7 @@ use kinematics_model::collision::{FixedPair, LinkSphere};
 use nalgebra::Point3;
 
 use crate::error::RuntimeError;
-use crate::fk::{ReferenceFk, fixed_isometry};
+use crate::fk::ReferenceFk;
 
 impl ReferenceFk {
     /// The centres of `spheres` (the model's
@@ -24,13 +24,7 @@ impl ReferenceFk {
     /// root frame.
     pub fn sphere_centers(&self, q: &[f64], spheres: &[LinkSphere]) -> Result<Vec<Point3<f64>>, RuntimeError> {
         let poses = self.link_poses(q)?;
-        Ok(spheres
-            .iter()
-            .map(|s| {
-                let origin = fixed_isometry(&self.tree().link(s.link).collisions[s.collision].origin);
-                poses[s.link.0] * origin * Point3::from(s.sphere.center)
-            })
-            .collect())
+        Ok(spheres.iter().map(|s| poses[s.link.0] * Point3::from(s.sphere.center)).collect())
     }
 }
 

@@ -39,8 +39,8 @@ impl SceneObstacles {
                 Shape::Capsule { .. } => 1,
                 Shape::Cylinder { .. } => 2,
                 Shape::Box { .. } => 3,
-                // The scene reader has no mesh: a scene's shapes are the four above.
-                Shape::Mesh { .. } => continue,
+                // The scene reader has no mesh or ellipsoid: a scene's shapes are the four above.
+                Shape::Mesh { .. } | Shape::Ellipsoid { .. } => continue,
             };
             out.push(String::new(), obstacle.xyz, obstacle.rpy, obstacle.shape.clone());
             names[kind].push(obstacle.name.clone());
@@ -53,8 +53,8 @@ impl SceneObstacles {
     /// file's entry gives it: full edge lengths, a cylinder's or capsule's axis along its frame's
     /// z axis) centred at `xyz` and turned by `rpy` (m and rad, URDF's fixed-axis order), at the
     /// end of its kind's list. Its numbers are checked as [`Environment::new`] checks them (an
-    /// error names its kind and its index in that list, and nothing is added); a mesh is refused
-    /// as a size that is not one. This is how a planner keeps an owned, growing set of
+    /// error names its kind and its index in that list, and nothing is added); a mesh or an
+    /// ellipsoid is refused as a size that is not one. This is how a planner keeps an owned, growing set of
     /// obstacles and borrows an [`Environment`] of it per query.
     ///
     /// ```
@@ -82,6 +82,7 @@ impl SceneObstacles {
                 ("box", self.boxes.len(), self.spheres.len() + self.capsules.len() + self.cylinders.len())
             }
             Shape::Mesh { .. } => return Err(ObstacleError::BadSize { kind: "mesh", index: 0 }),
+            Shape::Ellipsoid { .. } => return Err(ObstacleError::BadSize { kind: "ellipsoid", index: 0 }),
         };
         let mut one = SceneObstacles::default();
         one.push(String::new(), xyz, rpy, shape);
@@ -110,8 +111,8 @@ impl SceneObstacles {
                 self.cylinders.push(CylinderObstacle::from_xyz_rpy(xyz, rpy, radius, length));
             }
             Shape::Box { size } => self.boxes.push(BoxObstacle::from_xyz_rpy(xyz, rpy, size)),
-            // The scene reader has no mesh, and `add` refuses one.
-            Shape::Mesh { .. } => return,
+            // The scene reader has neither, and `add` refuses both.
+            Shape::Mesh { .. } | Shape::Ellipsoid { .. } => return,
         }
         self.names.push(name);
     }

@@ -100,7 +100,7 @@ const MARGIN: f64 = 0.05;
 /// the gradients' values equal the functions' to 1e-14 (their poses come from the Jacobians'
 /// body); every lane equal to the function on its
 /// configuration, bit for bit.
-fn agrees<R: Distances<N>, const N: usize>(cover: f64, seed: u64, srdf: Option<&str>) -> (usize, usize) {
+fn agrees<R: Distances<N>, const N: usize>(cover: Option<f64>, seed: u64, srdf: Option<&str>) -> (usize, usize) {
     let reference = R::reference();
     let tree = reference.tree();
     let (spheres, pairs) = spheres_and_pairs(tree, cover, srdf);
@@ -148,24 +148,24 @@ fn both_signs((overlapping, apart): (usize, usize)) {
 
 #[test]
 fn clearance_and_cost_agree_with_the_reference_panda() {
-    both_signs(agrees::<Panda, 7>(0.01, 21, None));
+    both_signs(agrees::<Panda, 7>(None, 21, None));
 }
 
 #[test]
 fn clearance_and_cost_agree_with_the_reference_panda_srdf() {
-    both_signs(agrees::<PandaSrdf, 7>(0.01, 22, Some("robots/panda.srdf")));
+    both_signs(agrees::<PandaSrdf, 7>(None, 22, Some("robots/panda.srdf")));
 }
 
 #[test]
 fn clearance_and_cost_agree_with_the_reference_ur5() {
-    both_signs(agrees::<Ur5Checked, 6>(0.01, 23, None));
+    both_signs(agrees::<Ur5Checked, 6>(None, 23, None));
 }
 
 /// The primitives arm's wrist links touch everywhere (see the verdicts' test): both signs are not
 /// expected.
 #[test]
 fn clearance_and_cost_agree_with_the_reference_primitives() {
-    agrees::<Ur5PrimitivesChecked, 6>(0.02, 24, None);
+    agrees::<Ur5PrimitivesChecked, 6>(Some(0.02), 24, None);
 }
 
 /// The sphere pairs the model says are held apart for good are those, and only those, of the
@@ -173,7 +173,7 @@ fn clearance_and_cost_agree_with_the_reference_primitives() {
 /// 100 random configurations; and without them the clearance moves: its gradient with no
 /// obstacle is not zero on any of them (the Panda's and the UR5's clearance was otherwise a
 /// constant pair's on most configurations, with a zero gradient).
-fn fixed_pairs<R: Distances<N>, const N: usize>(cover: f64, srdf: Option<&str>) -> usize {
+fn fixed_pairs<R: Distances<N>, const N: usize>(cover: Option<f64>, srdf: Option<&str>) -> usize {
     let reference = R::reference();
     let tree = reference.tree();
     let (spheres, pairs) = spheres_and_pairs(tree, cover, srdf);
@@ -212,10 +212,10 @@ fn fixed_pairs<R: Distances<N>, const N: usize>(cover: f64, srdf: Option<&str>) 
 
 #[test]
 fn fixed_pairs_are_those_no_joint_moves_and_the_clearance_leaves_them_out() {
-    assert_eq!(fixed_pairs::<PandaSrdf, 7>(0.01, Some("robots/panda.srdf")), 2, "link5 against link7");
-    assert_eq!(fixed_pairs::<Panda, 7>(0.01, None), 16, "without the SRDF, more pairs are checked");
-    assert_eq!(fixed_pairs::<Ur5Checked, 6>(0.01, None), 2, "base against upper arm, shoulder against forearm");
-    fixed_pairs::<Ur5PrimitivesChecked, 6>(0.02, None);
+    assert_eq!(fixed_pairs::<PandaSrdf, 7>(None, Some("robots/panda.srdf")), 2, "link5 against link7");
+    assert_eq!(fixed_pairs::<Panda, 7>(None, None), 16, "without the SRDF, more pairs are checked");
+    assert_eq!(fixed_pairs::<Ur5Checked, 6>(None, None), 2, "base against upper arm, shoulder against forearm");
+    fixed_pairs::<Ur5PrimitivesChecked, 6>(Some(0.02), None);
 }
 
 /// Central differences of `f` along each joint at `q`, step `h`.
@@ -307,7 +307,7 @@ fn nothing_that_is_not_finite_passes() {
 fn clearance_to_a_point_cloud_is_the_nearest_point() {
     let reference = PandaSrdf::reference().unwrap();
     let tree = reference.tree();
-    let (spheres, pairs) = spheres_and_pairs(tree, 0.01, Some("robots/panda.srdf"));
+    let (spheres, pairs) = spheres_and_pairs(tree, None, Some("robots/panda.srdf"));
     let fixed = fixed_apart_pairs(tree, &spheres, &pairs);
     let mut stream = Stream(41);
     for (count, point_radius) in [(300, 0.0), (3000, 0.01)] {

@@ -4,7 +4,7 @@
 //! the collision tests, on their robots.
 
 use kinematics::collision::{Environment, PointCloud, SphereObstacle};
-use kinematics::model::collision::{Meshes, link_spheres, sphere_pairs};
+use kinematics::model::collision::{Cover, Meshes, link_spheres, sphere_pairs};
 use kinematics::runtime::ReferenceObstacles;
 use kinematics::{Configurations, F64x4, F64x8, Lanes};
 
@@ -42,7 +42,7 @@ fn brute_gap(centers: &[nalgebra::Point3<f64>], radii: &[f64], points: &[[f64; 3
 fn point_clouds_are_checked_as_every_point_asked_in_turn() {
     let reference = Panda::reference().unwrap();
     let tree = reference.tree();
-    let spheres = link_spheres(tree, 0.01, Meshes::Refuse).unwrap();
+    let spheres = link_spheres(tree, &Cover::default(), Meshes::Read).unwrap();
     let radii: Vec<f64> = spheres.iter().map(|s| s.sphere.radius).collect();
     let text = std::fs::read_to_string(format!("{}/robots/panda.srdf", env!("CARGO_MANIFEST_DIR"))).unwrap();
     let disabled = kinematics::model::srdf::parse_srdf(&text).unwrap().disabled_pairs(tree).unwrap();
@@ -96,7 +96,7 @@ fn point_clouds_are_checked_as_every_point_asked_in_turn() {
 fn a_held_object_meets_the_cloud_too() {
     let reference = Panda::reference().unwrap();
     let tree = reference.tree();
-    let spheres = link_spheres(tree, 0.01, Meshes::Refuse).unwrap();
+    let spheres = link_spheres(tree, &Cover::default(), Meshes::Read).unwrap();
     let text = std::fs::read_to_string(format!("{}/robots/panda.srdf", env!("CARGO_MANIFEST_DIR"))).unwrap();
     let disabled = kinematics::model::srdf::parse_srdf(&text).unwrap().disabled_pairs(tree).unwrap();
     let pairs = sphere_pairs(tree, &spheres, Some(&disabled)).pairs;

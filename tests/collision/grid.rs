@@ -14,7 +14,7 @@ use super::spheres_and_pairs;
 /// against the reference on `samples` configurations drawn uniformly within the limits, then on
 /// as many of the agreement stream (special angles, values beyond the limits). Returns per grid
 /// the configurations within the limits found free, colliding and left to the tests.
-fn grids_hold(reference: &ReferenceFk, cover: f64, srdf: Option<&str>, samples: usize) -> Vec<[usize; 3]> {
+fn grids_hold(reference: &ReferenceFk, cover: Option<f64>, srdf: Option<&str>, samples: usize) -> Vec<[usize; 3]> {
     let tree = reference.tree();
     let (spheres, pairs) = spheres_and_pairs(tree, cover, srdf);
     let grids = pair_grids(tree, &spheres, &pairs);
@@ -50,7 +50,7 @@ fn grids_hold(reference: &ReferenceFk, cover: f64, srdf: Option<&str>, samples: 
 
 #[test]
 fn panda_grid_cells_hold_against_the_reference() {
-    let seen = grids_hold(&super::PandaSrdf::reference().unwrap(), 0.01, Some("robots/panda.srdf"), 3000);
+    let seen = grids_hold(&super::PandaSrdf::reference().unwrap(), None, Some("robots/panda.srdf"), 3000);
     // One grid (panda_link5 against the links beyond joints 6 and 7), both verdicts decided, and
     // all but a few configurations within the limits decided by it.
     assert_eq!(seen.len(), 1);
@@ -61,14 +61,14 @@ fn panda_grid_cells_hold_against_the_reference() {
 
 #[test]
 fn ur5_grid_cells_hold_against_the_reference() {
-    let seen = grids_hold(&super::Ur5Checked::reference().unwrap(), 0.01, None, 2000);
+    let seen = grids_hold(&super::Ur5Checked::reference().unwrap(), None, None, 2000);
     assert!(seen.iter().any(|[_, colliding, _]| *colliding > 0), "{seen:?}");
     assert!(seen.iter().all(|[free, _, _]| *free > 0), "{seen:?}");
 }
 
 #[test]
 fn primitives_grid_cells_hold_against_the_reference() {
-    grids_hold(&super::Ur5PrimitivesChecked::reference().unwrap(), 0.02, None, 2000);
+    grids_hold(&super::Ur5PrimitivesChecked::reference().unwrap(), Some(0.02), None, 2000);
 }
 
 /// Configurations whose only self-collision is decided by the Panda's grid (the hand folded onto
@@ -78,7 +78,7 @@ fn primitives_grid_cells_hold_against_the_reference() {
 fn the_generated_checks_take_the_grids_verdicts() {
     let reference = super::PandaSrdf::reference().unwrap();
     let tree = reference.tree();
-    let (spheres, pairs) = spheres_and_pairs(tree, 0.01, Some("robots/panda.srdf"));
+    let (spheres, pairs) = spheres_and_pairs(tree, None, Some("robots/panda.srdf"));
     let grid = &pair_grids(tree, &spheres, &pairs)[0];
     let mut decided = [0usize; 2];
     for q in Configurations::new(tree).uniform().take(4000) {

@@ -6,7 +6,7 @@
 
 use kinematics::collision::{Environment, HeldError, HeldLink, SphereObstacle};
 use kinematics::model::LinkId;
-use kinematics::model::collision::{Meshes, link_spheres, rigid_bodies, sphere_pairs};
+use kinematics::model::collision::{Cover, Meshes, link_spheres, rigid_bodies, sphere_pairs};
 use kinematics::runtime::ReferenceObstacles;
 use kinematics::{Configurations, F64x4, F64x8, Lanes};
 
@@ -48,7 +48,7 @@ struct Seen {
 fn held_checks(link: &str, touching: &[&str], seed: u64) -> Seen {
     let reference = Panda::reference().unwrap();
     let tree = reference.tree();
-    let spheres = link_spheres(tree, 0.01, Meshes::Refuse).unwrap();
+    let spheres = link_spheres(tree, &Cover::default(), Meshes::Read).unwrap();
     let text = std::fs::read_to_string(format!("{}/robots/panda.srdf", env!("CARGO_MANIFEST_DIR"))).unwrap();
     let disabled = kinematics::model::srdf::parse_srdf(&text).unwrap().disabled_pairs(tree).unwrap();
     let pairs = sphere_pairs(tree, &spheres, Some(&disabled)).pairs;
@@ -136,7 +136,7 @@ fn a_held_object_is_checked_as_the_reference_measures_it() {
 fn the_holding_body_and_the_touching_links_are_left_out() {
     let reference = Panda::reference().unwrap();
     let tree = reference.tree();
-    let spheres = link_spheres(tree, 0.01, Meshes::Refuse).unwrap();
+    let spheres = link_spheres(tree, &Cover::default(), Meshes::Read).unwrap();
     let none = ReferenceObstacles::new(&[], &[], &[], &[]);
     let empty = Environment::empty();
     let qs: Vec<[f64; 7]> = Configurations::new(tree).take(400).map(|q| q.try_into().unwrap()).collect();

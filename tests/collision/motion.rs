@@ -36,7 +36,7 @@ fn reference_first<const N: usize>(
     resolution: f64,
 ) -> Result<Option<usize>, ()> {
     let tree = reference.tree();
-    let (spheres, pairs) = super::spheres_and_pairs(tree, 0.01, srdf);
+    let (spheres, pairs) = super::spheres_and_pairs(tree, None, srdf);
     let n = steps(q0, q1, resolution);
     for k in 0..=n {
         let q = at(q0, q1, k as f64 / n as f64);

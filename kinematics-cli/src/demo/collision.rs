@@ -31,7 +31,7 @@ pub(super) fn run(args: &Args, out: &mut dyn Write, tree: &KinematicTree, file: 
     let (panda_tree, setup) = panda::setup()?;
     #[allow(clippy::expect_used, reason = "invariant: the built-in Panda has spheres and its setup a scene")]
     let (reference, obstacles) = (
-        Reference::new(&panda_tree, panda::FILE, &setup).expect("the built-in Panda has spheres"),
+        Reference::new(&panda_tree, panda::FILE, &setup)?.expect("the built-in Panda has spheres"),
         &setup.scene.as_ref().expect("the built-in setup has a scene").1,
     );
     let environment = obstacles.environment().map_err(|e| CliError::Usage(format!("{}: {e}", panda::SCENE)))?;
@@ -67,7 +67,9 @@ pub(super) fn run(args: &Args, out: &mut dyn Write, tree: &KinematicTree, file: 
 
     if args.file.is_some() && tree != &panda_tree {
         let scene = Some((panda::SCENE, obstacles.clone()));
-        own_geometry(args, out, tree, file, &Setup { cover: setup.cover, srdf: None, scene })?;
+        // The user's meshes are not read here (`check --collision` reads them).
+        let meshes = kinematics::model::collision::Meshes::Skip;
+        own_geometry(args, out, tree, file, &Setup { cover: setup.cover, meshes, srdf: None, scene })?;
     }
     Ok(())
 }

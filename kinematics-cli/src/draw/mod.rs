@@ -15,7 +15,7 @@ mod svg;
 use std::io::Write;
 
 use kinematics::ReferenceFk;
-use kinematics::model::collision::{Meshes, link_spheres};
+use kinematics::model::collision::{LinkSphere, link_spheres};
 use kinematics::model::{JointKind, KinematicTree};
 use nalgebra::Vector3;
 
@@ -39,15 +39,20 @@ pub struct Args {
     /// A scene file (.toml or .json) whose obstacles are drawn with the robot.
     #[arg(long, value_name = "FILE")]
     scene: Option<String>,
-    /// The sphere cover's largest overshoot (metres) the collision spheres are drawn at.
-    #[arg(long, value_name = "METRES", default_value_t = kinematics_compiler::options::DEFAULT_SPHERE_COVER)]
-    sphere_cover: f64,
+    /// How the collision geometry becomes the spheres drawn, and where meshes are.
+    #[command(flatten)]
+    cover: crate::cover::CoverArgs,
 }
 
 /// Draws the robot and prints or writes the SVG.
 pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
     let file = &args.file;
-    let fk = ReferenceFk::new(crate::robot::load(file)?);
+    let cover = args.cover.cover()?;
+    let mut tree = crate::robot::load(file)?;
+    args.cover.read_meshes(&mut tree, file)?;
+    let covered =
+        link_spheres(&tree, &cover, args.cover.meshes()).map_err(|e| CliError::Usage(format!("{file}: {e}")))?;
+    let fk = ReferenceFk::new(tree);
     let path = match &args.path {
         Some(path) => Some(path::read(path, fk.tree())?),
         None => None,
@@ -56,14 +61,8 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
         Some(last) => last.clone(),
         None => args.configuration.resolve(fk.tree()),
     };
-    if !(args.sphere_cover.is_finite() && args.sphere_cover > 0.0) {
-        return Err(CliError::Usage(format!(
-            "`--sphere-cover` is {} (must be a finite positive length in metres)",
-            args.sphere_cover
-        )));
-    }
     let mut scene =
-        Scene::new(&fk, &q, args.sphere_cover).map_err(|source| CliError::Runtime { file: file.clone(), source })?;
+        Scene::new(&fk, &q, &covered).map_err(|source| CliError::Runtime { file: file.clone(), source })?;
     if let Some(path) = &path {
         scene.add_path(&fk, path).map_err(|source| CliError::Runtime { file: file.clone(), source })?;
     }
@@ -209,8 +208,10 @@ impl Obstacle {
                     place(Vector3::new(sign(0) * size[0], sign(1) * size[1], sign(2) * size[2]))
                 }),
             },
-            // A scene file has no meshes: its reader refuses every other key.
-            Shape::Mesh { .. } => ObstacleShape::Sphere { center: place(Vector3::zeros()), radius: 0.0 },
+            // A scene file has no meshes or ellipsoids: its reader refuses every other key.
+            Shape::Mesh { .. } | Shape::Ellipsoid { .. } => {
+                ObstacleShape::Sphere { center: place(Vector3::zeros()), radius: 0.0 }
+            }
         };
         Obstacle { name: obstacle.name.clone(), shape }
     }
@@ -284,8 +285,8 @@ fn array(v: &Vector3<f64>) -> [f64; 3] {
 
 impl Scene {
     /// The robot at `q` by the runtime reference (which refuses a wrong count or a value that is
-    /// not a finite number), its collision spheres at the cover `cover` (finite and positive).
-    pub fn new(fk: &ReferenceFk, q: &[f64], cover: f64) -> Result<Self, kinematics::RuntimeError> {
+    /// not a finite number), with the collision spheres `covered` (the model's cover of its tree).
+    pub fn new(fk: &ReferenceFk, q: &[f64], covered: &[LinkSphere]) -> Result<Self, kinematics::RuntimeError> {
         let tree: &KinematicTree = fk.tree();
         let poses = fk.link_poses(q)?;
         let links = tree
@@ -295,13 +296,10 @@ impl Scene {
             .map(|(link, pose)| LinkMark { name: link.name.clone(), origin: array(&pose.translation.vector) })
             .collect();
         let joints = joint_marks(tree, &poses);
-        // Meshes are left out (the footnote says so): the cover reads the other shapes.
-        #[allow(clippy::expect_used, reason = "invariant: with meshes skipped the cover refuses nothing")]
-        let covered = link_spheres(tree, cover, Meshes::Skip).expect("skipped meshes are no fault");
         let spheres = fk
-            .sphere_centers(q, &covered)?
+            .sphere_centers(q, covered)?
             .iter()
-            .zip(&covered)
+            .zip(covered)
             .map(|(center, s)| Ball {
                 link: tree.link(s.link).name.clone(),
                 center: array(&center.coords),

@@ -99,13 +99,6 @@ fn apply(a: Rigid, transform: &FixedTransform) -> Rigid {
     transform.steps().iter().fold(a, then)
 }
 
-/// `transform` applied to the point `p`: where a point of a frame lies in its parent's frame.
-pub(crate) fn transform_point(transform: &FixedTransform, p: V3) -> V3 {
-    let rigid = apply(IDENTITY, transform);
-    let d = mul_v(&rigid.r, p);
-    [rigid.t[0] + d[0], rigid.t[1] + d[1], rigid.t[2] + d[2]]
-}
-
 fn distance(a: V3, b: V3) -> f64 {
     ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt()
 }

@@ -34,7 +34,7 @@ const POINTS_BODY: &str = "generic_collision_points";
 const JACOBIAN_BODY: &str = "generic_collision_jacobians";
 
 fn link_frame(cx: &Context<'_>) -> CollisionLayout {
-    CollisionLayout::new(cx.tree(), cx.spheres())
+    CollisionLayout::new(cx.spheres())
 }
 
 /// The most points a check computes ahead (every sphere's centre, each group's bounding sphere's
