@@ -181,6 +181,8 @@ mod cloud;
 mod grid;
 #[path = "collision/held.rs"]
 mod held;
+#[path = "collision/meshes.rs"]
+mod meshes;
 #[path = "collision/motion.rs"]
 mod motion;
 #[path = "collision/robot_trait.rs"]

@@ -707,7 +707,7 @@ mod tests {
         let many = geometry("<cylinder radius=\"0.1\" length=\"1.0\"/>");
         let dir = fixture("ahead", &[("few.urdf", &few), ("many.urdf", &many)]);
         let few = Robot::urdf("few.urdf").manifest_dir(&dir).collision().generate().unwrap();
-        let many = Robot::urdf("many.urdf").manifest_dir(&dir).collision().sphere_cover(0.002).generate().unwrap();
+        let many = Robot::urdf("many.urdf").manifest_dir(&dir).collision().spheres(200).generate().unwrap();
         let spheres = |source: &str| {
             let line = source.lines().find(|l| l.contains("const SPHERE_RADII: [f64; ")).expect("the radii's constant");
             line.split("[f64; ")

@@ -8,7 +8,9 @@
 use std::collections::BTreeSet;
 
 use kinematics::collision::{CollisionTables, PairGrid};
-use kinematics::model::collision::{Cover, LinkSphere, Meshes, fixed_apart_pairs, link_spheres, pair_grids, sphere_pairs};
+use kinematics::model::collision::{
+    Cover, LinkSphere, Meshes, fixed_apart_pairs, link_spheres, pair_grids, sphere_pairs,
+};
 use kinematics::model::{KinematicTree, LinkId};
 use kinematics::runtime::ReferenceObstacles;
 use kinematics::{Pose, ReferenceFk, SceneObstacles};
@@ -74,8 +76,8 @@ impl Reference {
     /// The reference for `tree` as `setup` asks, or `None` if the robot has no geometry the cover
     /// reads. A link the cover cannot make is the error (an overshoot out of reach).
     pub fn new(tree: &KinematicTree, file: &str, setup: &Setup<'_>) -> Result<Option<Self>, CliError> {
-        let spheres = link_spheres(tree, &setup.cover, setup.meshes)
-            .map_err(|e| CliError::Usage(format!("{file}: {e}")))?;
+        let spheres =
+            link_spheres(tree, &setup.cover, setup.meshes).map_err(|e| CliError::Usage(format!("{file}: {e}")))?;
         if spheres.is_empty() {
             return Ok(None);
         }

@@ -76,8 +76,8 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
     let cover = args.cover.cover()?;
     let mut tree = crate::robot::load(&args.file)?;
     args.cover.read_meshes(&mut tree, &args.file)?;
-    let spheres = link_spheres(&tree, &cover, args.cover.meshes())
-        .map_err(|e| CliError::Usage(format!("{}: {e}", args.file)))?;
+    let spheres =
+        link_spheres(&tree, &cover, args.cover.meshes()).map_err(|e| CliError::Usage(format!("{}: {e}", args.file)))?;
     if spheres.is_empty() {
         return Err(CliError::Usage(format!("{}: no collision geometry to pair", args.file)));
     }

@@ -37,7 +37,9 @@ impl CoverArgs {
             (spheres, overshoot) => Cover { spheres, overshoot },
         };
         match cover.fault() {
-            Some(fault) => Err(CliError::Usage(fault.replace("`spheres`", "`--spheres`").replace("`sphere_cover`", "`--cover`"))),
+            Some(fault) => {
+                Err(CliError::Usage(fault.replace("`spheres`", "`--spheres`").replace("`sphere_cover`", "`--cover`")))
+            }
             None => Ok(cover),
         }
     }

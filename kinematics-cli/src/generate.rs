@@ -127,9 +127,12 @@ pub fn builder(args: &Args) -> Result<Robot, CliError> {
         robot = robot.collision();
     }
     let cover = &args.cover;
-    let cover_given = cover.spheres.is_some() || cover.cover.is_some() || cover.skip_meshes || !cover.packages.is_empty();
+    let cover_given =
+        cover.spheres.is_some() || cover.cover.is_some() || cover.skip_meshes || !cover.packages.is_empty();
     if cover_given && !args.collision {
-        return Err(CliError::Usage("`--spheres`, `--cover`, `--package` and `--skip-meshes` need `--collision`".into()));
+        return Err(CliError::Usage(
+            "`--spheres`, `--cover`, `--package` and `--skip-meshes` need `--collision`".into(),
+        ));
     }
     if let Some(n) = cover.spheres {
         robot = robot.spheres(n);

@@ -29,8 +29,14 @@ pub struct Args {
 pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
     let cover = args.cover.cover()?;
     let mut tree = crate::robot::load(&args.file)?;
-    args.cover.read_meshes(&mut tree, &args.file)?;
+    // A mesh not found spoils only the collision part: the tree is listed, and the mesh's error
+    // stands where the spheres would.
+    let unread = args.cover.read_meshes(&mut tree, &args.file).err();
     write!(out, "{}", describe(&tree))?;
+    if let Some(error) = unread {
+        writeln!(out, "collision geometry: not covered: {error}\n  (or leave meshes out: --skip-meshes)")?;
+        return Ok(());
+    }
     let srdf = match &args.srdf {
         Some(path) => Some((path.clone(), crate::robot::load_srdf(path, &tree)?)),
         None => None,
@@ -112,7 +118,7 @@ pub fn collision(tree: &KinematicTree, view: &CollisionView<'_>) -> Result<Strin
         let count = if own.len() == 1 { "1 sphere".to_owned() } else { format!("{} spheres", own.len()) };
         out += &format!("  {}  {count}: {}{bound}\n", pad(&link.name, width), shapes.join(", "));
         if let Some((id, c)) = covers.iter().find(|(l, _)| tree.link(*l).name == link.name) {
-            let r = cover_report(tree, *id, c, view.meshes);
+            let r = cover_report(tree, *id, c, view.meshes).map_err(|e| e.to_string())?;
             out += &format!(
                 "  {}  overshoot at most {} m (sampled on the spheres: largest {} m, mean {} m); volume {} of the geometry's {} m^3\n",
                 pad("", width),

@@ -36,6 +36,7 @@ mod inspect;
 mod panda;
 mod progress;
 mod robot;
+mod spherize;
 mod ur5;
 
 use std::io::Write;
@@ -99,6 +100,9 @@ enum Command {
     /// Write the robot's kinematics as URDF (links, joints, origins, axes, limits, mimic
     /// relations; geometry left out), e.g. from an MJCF file.
     Convert(convert::Args),
+    /// Write the URDF again with each link's collision geometry replaced by its sphere cover (a
+    /// `<collision>` with a `<sphere>` per sphere, as VAMP and cuRobo read), all else as written.
+    Spherize(spherize::Args),
     /// The whole pipeline on one robot: tree, symbolic pose, operation counts, agreement with the
     /// runtime reference, and timing; then collision checks on the built-in spherized Panda.
     Demo(demo::Args),
@@ -121,6 +125,7 @@ fn main() -> ExitCode {
         Command::Draw(args) => draw::run(&args, &mut out),
         Command::Convert(args) => convert::run(&args, &mut out),
         Command::CollisionPairs(args) => collision_pairs::run(&args, &mut out),
+        Command::Spherize(args) => spherize::run(&args, &mut out),
         Command::Demo(args) => demo::run(&args, &mut out),
     };
     let result = result.and_then(|()| out.flush().map_err(CliError::Output));

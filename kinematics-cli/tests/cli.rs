@@ -316,11 +316,19 @@ fn generate_emits_collision_checking_as_the_build_api_does() {
     assert!(out.contains("pub fn self_collides(q: &[f64; 7]) -> bool"), "{out}");
     let covered = ok(&["generate", "robots/ur5_primitives.urdf", "--collision", "--sphere-cover", "0.05"]);
     assert!(covered.contains("pub const SPHERE_RADII"), "{covered}");
+    // ur5.urdf names its meshes by `package://ur_description`, which is not shipped: an error
+    // naming the link, the URI and every place looked.
     let message = fails(&["generate", "robots/ur5.urdf", "--collision"]);
     assert!(
-        message.starts_with("error: robots/ur5.urdf: `--collision`: link `base_link`: <collision> is a mesh"),
+        message.starts_with(
+            "error: robots/ur5.urdf: link `base_link`: mesh `package://ur_description/meshes/ur5/collision/base.stl`: \
+             cannot find"
+        ) && message.contains("looked, in order, at:")
+            && message.contains("--package ur_description=PATH"),
         "{message}"
     );
+    let skipped = ok(&["generate", "robots/ur5.urdf", "--collision", "--skip-meshes"]);
+    assert!(!skipped.contains("pub const SPHERE_RADII"), "{skipped}");
     // Each fault names the flag that caused it.
     let message = fails(&["generate", "robots/ur5_spherized.urdf", "--collision", "--sphere-cover", "0"]);
     assert_eq!(
@@ -479,7 +487,8 @@ fn demo_walks_through_the_pipeline() {
     assert!(
         collision.starts_with(
             "\n8. Collision, on the spherized Panda (robots/panda_spherized.urdf, robots/panda.srdf) in \
-             scenes/tabletop.toml\n\n  59 spheres on 11 links at a cover of 0.01 m, 21 self-collision pairs (less \
+             scenes/tabletop.toml\n\n  59 spheres on 11 links (at most 10 spheres per link, stopping at an overshoot \
+             of 0.01 m), 21 self-collision pairs (less \
              the pairs robots/panda.srdf disables); scene scenes/tabletop.toml (12 obstacles)\n"
         ),
         "{collision}"
@@ -1008,7 +1017,8 @@ fn check_runs_the_collision_checks_against_the_reference() {
     ]);
     assert!(
         out.contains(
-            "collision: 59 spheres on 11 links at a cover of 0.01 m, 21 self-collision pairs (less the pairs \
+            "collision: 59 spheres on 11 links (at most 10 spheres per link, stopping at an overshoot of 0.01 m), 21 \
+             self-collision pairs (less the pairs \
              robots/panda.srdf disables); scene scenes/shelf.toml (18 obstacles)"
         ),
         "{out}"
@@ -1187,7 +1197,8 @@ fn collision_pairs_writes_an_srdf_the_derive_reads() {
     for (args, fault) in [
         (vec!["--samples", "0"], "`--samples`"),
         (vec!["--always", "1.5"], "`--always`"),
-        (vec!["--sphere-cover=-1"], "`--sphere-cover`"),
+        (vec!["--sphere-cover=-1"], "`--cover`"),
+        (vec!["--spheres=0"], "`--spheres`"),
     ] {
         let bad = dir.join("bad.srdf");
         let mut all = vec!["collision-pairs", file, "-o", bad.to_str().unwrap()];

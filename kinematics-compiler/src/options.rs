@@ -16,11 +16,11 @@
 //! or flag. The `Checked` robot holds the IK plan, so `classify` runs once. `Choice` lists are read
 //! with `choose`'s "did you mean".
 
-pub use kinematics_model::collision::{Cover, Meshes};
 use kinematics_model::collision::{
     CollisionPairs, CoverError, FixedPair, LinkSphere, PairGrid, fixed_apart_pairs, link_spheres, pair_grids,
     sphere_pairs,
 };
+pub use kinematics_model::collision::{Cover, Meshes};
 use kinematics_model::srdf::Srdf;
 use kinematics_model::{ExactAngles, FLOATING_BASE_JOINT, KinematicTree, UnknownLink};
 
@@ -100,7 +100,7 @@ pub struct Options {
 }
 
 /// How a robot's collision geometry becomes spheres, and which links are checked against which.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Default)]
 pub struct CollisionOptions {
     /// How each link's geometry becomes spheres: a budget per link (`spheres`), an overshoot
     /// (`sphere_cover`, metres), or both; [`Cover::default`] unless given.
@@ -112,11 +112,6 @@ pub struct CollisionOptions {
     pub srdf: Option<Srdf>,
 }
 
-impl Default for CollisionOptions {
-    fn default() -> Self {
-        CollisionOptions { cover: Cover::default(), meshes: Meshes::default(), srdf: None }
-    }
-}
 
 /// An option, as the fault it caused names it. Each front end maps it to where the user wrote it
 /// (exhaustively: a new option is a compile error in every front end until it is mapped).
@@ -470,7 +465,8 @@ fn sphere_cover_positive(options: &Options) -> Option<OptionFault> {
         return Some(OptionFault { key: OptionKey::Spheres, kind: FaultKind::Spheres });
     }
     let d = cover.overshoot?;
-    (!(d.is_finite() && d > 0.0)).then_some(OptionFault { key: OptionKey::SphereCover, kind: FaultKind::SphereCover(d) })
+    (!(d.is_finite() && d > 0.0))
+        .then_some(OptionFault { key: OptionKey::SphereCover, kind: FaultKind::SphereCover(d) })
 }
 
 /// Rule: `collision` needs geometry the cover can read (a mesh is refused unless meshes are left

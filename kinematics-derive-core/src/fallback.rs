@@ -133,9 +133,11 @@ impl Implied {
     /// then take and return arrays of the robot's own lengths.
     pub fn with_robot(mut self, tree: &KinematicTree) -> Self {
         // The cover, when it can be made (a mesh refused leaves its counts unknown).
-        let spheres = self.options.collision.as_ref().and_then(|c| {
-            c.cover.fault().is_none().then(|| link_spheres(tree, &c.cover, c.meshes).ok()).flatten()
-        });
+        let spheres = self
+            .options
+            .collision
+            .as_ref()
+            .and_then(|c| c.cover.fault().is_none().then(|| link_spheres(tree, &c.cover, c.meshes).ok()).flatten());
         let links = match &self.options.links {
             Some(listed) => listed.len(),
             // Every link but the base, whatever the base.
@@ -466,8 +468,10 @@ mod tests {
                             links: (case % 3 == 0).then(|| links.clone()),
                             trig: if case % 2 == 0 { Trig::Std } else { Trig::Fast },
                             // The arm with primitive geometry gets its sphere centres.
-                            collision: (file == "ur5_primitives.urdf")
-                                .then(|| CollisionOptions { cover: Cover::overshoot(0.03), ..CollisionOptions::default() }),
+                            collision: (file == "ur5_primitives.urdf").then(|| CollisionOptions {
+                                cover: Cover::overshoot(0.03),
+                                ..CollisionOptions::default()
+                            }),
                             ..Options::default()
                         };
                         let Ok(checked) = options.check(&tree) else { continue };

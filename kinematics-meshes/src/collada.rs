@@ -34,7 +34,8 @@
 //! authored in the link's frame whatever the file claims); `<skew>` (refused: no robot exporter
 //! writes it); `<instance_controller>` (skinned geometry: not placed, so not read); references to
 //! other files. Within a geometry, mesh-loader triangulates polygons as fans and skips lines and
-//! points (`src/collada/iter.rs`).
+//! points (`src/collada/iter.rs`); it cuts `<tristrips>` as fans too, which is wrong for a strip
+//! of more than one triangle (exporters for robots write `<triangles>` or `<polylist>`).
 
 use std::collections::HashMap;
 

@@ -7,8 +7,9 @@ use std::path::{Path, PathBuf};
 /// package name to its folder, in the order given.
 ///
 /// A name may be given more than once; its folders are then tried in that order. A relative folder
-/// is taken as given (from the current directory): each front end makes its own paths absolute
-/// first (the derive against the crate's manifest folder).
+/// is from the current directory when the [`Resolver`](crate::Resolver) is made: a front end whose
+/// paths mean something else makes them absolute first (the derive, against the crate's manifest
+/// folder).
 ///
 /// ```
 /// use kinematics_meshes::Packages;

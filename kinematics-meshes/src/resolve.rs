@@ -82,14 +82,20 @@ impl Resolver {
         ros_package_path: Option<OsString>,
         ament_prefix_path: Option<OsString>,
     ) -> Self {
+        // Every folder absolute (from the current folder, now), so that every file found is: a
+        // derive's `include_bytes!` and a build script's `rerun-if-changed` need that.
+        let absolute = |p: &Path| normalise(&std::path::absolute(p).unwrap_or_else(|_| p.to_path_buf()));
         let split = |list: Option<OsString>| -> Vec<PathBuf> {
             // An empty entry (`a::b`, a trailing `:`) names no folder.
-            list.map(|l| std::env::split_paths(&l).filter(|p| !p.as_os_str().is_empty()).collect()).unwrap_or_default()
+            list.map(|l| {
+                std::env::split_paths(&l).filter(|p| !p.as_os_str().is_empty()).map(|p| absolute(&p)).collect()
+            })
+            .unwrap_or_default()
         };
         let folder = description.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
         Resolver {
-            folder: normalise(&std::path::absolute(folder).unwrap_or_else(|_| folder.to_path_buf())),
-            packages: packages.clone(),
+            folder: absolute(folder),
+            packages: packages.iter().map(|(name, path)| (name, absolute(path))).collect(),
             ros_package_path: split(ros_package_path),
             ament_prefix_path: split(ament_prefix_path),
         }
@@ -100,8 +106,8 @@ impl Resolver {
         &self.folder
     }
 
-    /// The file `uri` names, or an error listing every place looked (see [`Resolver`] for the
-    /// order).
+    /// The file `uri` names (an absolute path, without `.` or `..`), or an error listing every
+    /// place looked (see [`Resolver`] for the order).
     pub fn resolve(&self, uri: &str) -> Result<PathBuf, Unresolved> {
         let fail = |kind, looked| Unresolved { uri: uri.to_owned(), kind, looked };
         if let Some(after) = uri.strip_prefix("package://") {
@@ -153,8 +159,8 @@ impl Resolver {
             if let Some(file) = try_folder(&direct) {
                 return Some(file);
             }
-            let below = ros::packages_named(entry, name).into_iter().filter(|p| *p != direct);
-            if let Some(file) = below.into_iter().find_map(|p| try_folder(&p)) {
+            let mut below = ros::packages_named(entry, name).into_iter().filter(|p| *p != direct);
+            if let Some(file) = below.find_map(|p| try_folder(&p)) {
                 return Some(file);
             }
         }
@@ -165,13 +171,13 @@ impl Resolver {
     }
 }
 
-/// Whether `s` is a URI scheme (RFC 3986: a letter, then letters, digits, `+`, `-`, `.`), so that
-/// `C://x` style oddities and paths holding `://` later on are told apart from `http://`.
+/// Whether `s` is a URI scheme (RFC 3986: a letter, then letters, digits, `+`, `-`, `.`; more than
+/// one character, since `C:` is a Windows drive), so that a path holding `://` further on is still
+/// a path.
 fn is_scheme(s: &str) -> bool {
     let mut chars = s.chars();
     chars.next().is_some_and(|c| c.is_ascii_alphabetic())
         && chars.all(|c| c.is_ascii_alphanumeric() || matches!(c, '+' | '-' | '.'))
-        // A one-letter "scheme" is a Windows drive (`C:`).
         && s.len() > 1
 }
 

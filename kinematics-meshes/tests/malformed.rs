@@ -1,5 +1,7 @@
 //! Bad files: every one an error naming the file, never a panic (mesh-loader's panics caught).
 
+#![allow(clippy::panic, clippy::unwrap_used, clippy::expect_used)] // test helpers fail loudly
+
 mod common;
 
 use std::path::Path;

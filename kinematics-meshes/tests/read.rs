@@ -1,5 +1,7 @@
 //! Reading well-formed files: each format, and Collada's units and placements.
 
+#![allow(clippy::panic, clippy::unwrap_used, clippy::expect_used)] // test helpers fail loudly
+
 mod common;
 
 use common::*;

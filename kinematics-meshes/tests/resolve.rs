@@ -1,6 +1,8 @@
 //! URI resolution: the order of the package folders, the ROS crawl, paths, and what an
 //! unresolved URI says.
 
+#![allow(clippy::panic, clippy::unwrap_used, clippy::expect_used)] // test helpers fail loudly
+
 mod common;
 
 use std::path::{Path, PathBuf};
@@ -194,6 +196,12 @@ fn a_description_named_without_a_folder_starts_from_the_current_one() {
     assert_eq!(resolver.folder(), std::env::current_dir().unwrap());
     // The crate's own manifest, by a path relative to the test's working folder.
     assert_eq!(resolver.resolve("Cargo.toml").unwrap(), std::env::current_dir().unwrap().join("Cargo.toml"));
+    // A relative package folder too: every file found is absolute.
+    let resolver = Resolver::with_env(Path::new("robot.urdf"), &Packages::new().with("here", "./src/.."), None, None);
+    assert_eq!(
+        resolver.resolve("package://here/Cargo.toml").unwrap(),
+        std::env::current_dir().unwrap().join("Cargo.toml")
+    );
 }
 
 #[test]

@@ -1,5 +1,7 @@
 //! Every mesh of a parsed URDF loaded through `load_tree_meshes`.
 
+#![allow(clippy::panic, clippy::unwrap_used, clippy::expect_used)] // test helpers fail loudly
+
 mod common;
 
 use std::path::PathBuf;

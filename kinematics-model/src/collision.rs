@@ -237,7 +237,11 @@ pub fn link_spheres(tree: &KinematicTree, cover: &Cover, meshes: Meshes) -> Resu
 }
 
 /// Each link's cover, for the links with geometry (in tree order).
-pub fn link_covers(tree: &KinematicTree, cover: &Cover, meshes: Meshes) -> Result<Vec<(LinkId, LinkCover)>, CoverError> {
+pub fn link_covers(
+    tree: &KinematicTree,
+    cover: &Cover,
+    meshes: Meshes,
+) -> Result<Vec<(LinkId, LinkCover)>, CoverError> {
     let mut out = Vec::new();
     for (i, link) in tree.links().iter().enumerate() {
         let fault = |fault| CoverError { link: link.name.clone(), fault };
@@ -251,10 +255,17 @@ pub fn link_covers(tree: &KinematicTree, cover: &Cover, meshes: Meshes) -> Resul
 
 /// What `cover` (one link's, from [`link_covers`]) costs against the link's geometry: its
 /// overshoot (the bound and a sampled measure) and its volume against the geometry's.
-pub fn cover_report(tree: &KinematicTree, link: LinkId, cover: &LinkCover, meshes: Meshes) -> CoverReport {
-    let geometry = cover::Geometry::new(&tree.link(link).collisions, meshes == Meshes::Skip)
-        .expect("a link whose cover was made has its geometry read");
-    cover::report(&geometry, cover)
+/// A mesh not read is the error, as [`link_covers`] gives it.
+pub fn cover_report(
+    tree: &KinematicTree,
+    link: LinkId,
+    cover: &LinkCover,
+    meshes: Meshes,
+) -> Result<CoverReport, CoverError> {
+    let link = tree.link(link);
+    let geometry = cover::Geometry::new(&link.collisions, meshes == Meshes::Skip)
+        .map_err(|fault| CoverError { link: link.name.clone(), fault })?;
+    Ok(cover::report(&geometry, cover))
 }
 
 /// The rigid bodies of `tree`: links joined by fixed joints only share a body. `body[link]` is

@@ -49,9 +49,17 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
     let file = &args.file;
     let cover = args.cover.cover()?;
     let mut tree = crate::robot::load(file)?;
-    args.cover.read_meshes(&mut tree, file)?;
-    let covered =
-        link_spheres(&tree, &cover, args.cover.meshes()).map_err(|e| CliError::Usage(format!("{file}: {e}")))?;
+    // A mesh not found spoils only the spheres: the robot is drawn without them, and the reason
+    // is printed on standard error.
+    let covered = match args.cover.read_meshes(&mut tree, file) {
+        Ok(()) => {
+            link_spheres(&tree, &cover, args.cover.meshes()).map_err(|e| CliError::Usage(format!("{file}: {e}")))?
+        }
+        Err(error) => {
+            eprintln!("no collision spheres drawn: {error}");
+            Vec::new()
+        }
+    };
     let fk = ReferenceFk::new(tree);
     let path = match &args.path {
         Some(path) => Some(path::read(path, fk.tree())?),
@@ -61,8 +69,7 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
         Some(last) => last.clone(),
         None => args.configuration.resolve(fk.tree()),
     };
-    let mut scene =
-        Scene::new(&fk, &q, &covered).map_err(|source| CliError::Runtime { file: file.clone(), source })?;
+    let mut scene = Scene::new(&fk, &q, &covered).map_err(|source| CliError::Runtime { file: file.clone(), source })?;
     if let Some(path) = &path {
         scene.add_path(&fk, path).map_err(|source| CliError::Runtime { file: file.clone(), source })?;
     }

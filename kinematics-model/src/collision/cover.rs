@@ -128,9 +128,13 @@ impl<'a> Geometry<'a> {
         for e in elements {
             meshes.push(match &e.shape {
                 Shape::Mesh { loaded: Some(mesh), scale: s, .. } if !skip_meshes => Some(PlacedTriangles::new(
-                    mesh.corners().map(|t| t.map(|v| e.origin.apply([v[0] * s[0], v[1] * s[1], v[2] * s[2]]))).collect(),
+                    mesh.corners()
+                        .map(|t| t.map(|v| e.origin.apply([v[0] * s[0], v[1] * s[1], v[2] * s[2]])))
+                        .collect(),
                 )),
-                Shape::Mesh { filename, .. } if !skip_meshes => return Err(CoverFault::MeshNotLoaded(filename.clone())),
+                Shape::Mesh { filename, .. } if !skip_meshes => {
+                    return Err(CoverFault::MeshNotLoaded(filename.clone()));
+                }
                 _ => None,
             });
         }
@@ -151,7 +155,9 @@ impl<'a> Geometry<'a> {
             let d = match &self.meshes[k] {
                 Some(mesh) => mesh.depth(p),
                 None if self.takes_part(k) => {
-                    e.shape.depth(e.origin.apply_inverse(p)).expect("a primitive's depth is defined")
+                    #[allow(clippy::expect_used, reason = "invariant: only a mesh has no depth, and meshes are `Some`")]
+                    let d = e.shape.depth(e.origin.apply_inverse(p)).expect("a primitive's depth is defined");
+                    d
                 }
                 None => continue,
             };
@@ -301,9 +307,9 @@ impl Piece {
             Piece::Triangle(t) => points.extend(t),
             Piece::Cell { lo, hi, element, .. } => {
                 let origin = &elements[element].origin;
-                points.extend((0..8).map(|i| {
-                    origin.apply([0, 1, 2].map(|a| if (i >> a) & 1 == 1 { hi[a] } else { lo[a] }))
-                }));
+                points.extend(
+                    (0..8).map(|i| origin.apply([0, 1, 2].map(|a| if (i >> a) & 1 == 1 { hi[a] } else { lo[a] }))),
+                );
             }
             Piece::Wedge { radii: (inner, outer), angles: (a0, a1), z: (z0, z1), element } => {
                 // The inner arc bulges away from its chord, towards the outer one: its ends
@@ -431,13 +437,13 @@ pub(crate) fn cover_link(geometry: &mut Geometry<'_>, cover: &Cover) -> Result<O
     let mut groups = vec![group(geometry, &pieces, all)];
     loop {
         let by_bound = |settled: bool| {
-            (0..groups.len()).filter(|&g| settled || !groups[g].settled).fold(None, |best: Option<usize>, g| {
-                match best {
-                    Some(b) if groups[b].bound >= groups[g].bound => Some(b),
-                    _ => Some(g),
-                }
+            (0..groups.len()).filter(|&g| settled || !groups[g].settled).fold(None, |best: Option<usize>, g| match best
+            {
+                Some(b) if groups[b].bound >= groups[g].bound => Some(b),
+                _ => Some(g),
             })
         };
+        #[allow(clippy::expect_used, reason = "invariant: groups start with one and only grow")]
         let worst = by_bound(true).expect("a cover has a group");
         let bound = groups[worst].bound;
         if cover.spheres.is_some_and(|n| groups.len() >= n) || cover.overshoot.is_some_and(|d| bound <= d) {
@@ -455,7 +461,7 @@ pub(crate) fn cover_link(geometry: &mut Geometry<'_>, cover: &Cover) -> Result<O
                 groups.push(group(geometry, &pieces, b));
             }
             Err(members) => {
-                        groups[next].pieces = members;
+                groups[next].pieces = members;
                 groups[next].settled = true;
             }
         }
@@ -522,11 +528,7 @@ fn deeper(geometry: &Geometry<'_>, pieces: &[Piece], members: &[usize], first: S
         }
     }
     let reach = |c: [f64; 3]| {
-        points
-            .iter()
-            .map(|&p| distance(p, c))
-            .chain(balls.iter().map(|&(b, r)| distance(b, c) + r))
-            .fold(0.0, f64::max)
+        points.iter().map(|&p| distance(p, c)).chain(balls.iter().map(|&(b, r)| distance(b, c) + r)).fold(0.0, f64::max)
     };
     let mut best = (first, first.radius - geometry.depth(first.center));
     let mut directions = Vec::new();
@@ -620,16 +622,15 @@ fn split(
     Err(members)
 }
 
+/// A group's pieces split in two.
+type Halves = (Vec<usize>, Vec<usize>);
+
 /// How many times a group's pieces may be cut smaller in one split (each halves the longest).
 const MAX_REFINES: usize = 8;
 
 /// The halving of [`split`] and its larger bound, or `None` when every direction leaves one half
 /// empty.
-fn best_halves(
-    geometry: &Geometry<'_>,
-    pieces: &[Piece],
-    members: &[usize],
-) -> Option<((Vec<usize>, Vec<usize>), f64)> {
+fn best_halves(geometry: &Geometry<'_>, pieces: &[Piece], members: &[usize]) -> Option<(Halves, f64)> {
     if members.len() < 2 {
         return None;
     }
@@ -652,16 +653,17 @@ fn best_halves(
     if norm(diameter) > 0.0 {
         axes.push(scale(diameter, 1.0 / norm(diameter)));
     }
-    let worse = |(x, y): &(Vec<usize>, Vec<usize>)| quick_bound(geometry, pieces, x).max(quick_bound(geometry, pieces, y));
-    let mut best: Option<((Vec<usize>, Vec<usize>), f64)> = None;
+    let worse =
+        |(x, y): &(Vec<usize>, Vec<usize>)| quick_bound(geometry, pieces, x).max(quick_bound(geometry, pieces, y));
+    let mut best: Option<(Halves, f64)> = None;
     for axis in axes {
         let along: Vec<f64> = centroids.iter().map(|&c| dot(c, axis)).collect();
         let (lo, hi) = along.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), &x| (l.min(x), h.max(x)));
         let mid = (lo + hi) / 2.0;
-        let (below, above): (Vec<(usize, f64)>, Vec<(usize, f64)>) =
-            members.iter().copied().zip(along.iter().copied()).partition(|&(_, x)| x < mid);
-        let halves: (Vec<usize>, Vec<usize>) =
-            (below.into_iter().map(|(m, _)| m).collect(), above.into_iter().map(|(m, _)| m).collect());
+        let mut halves: Halves = (Vec::new(), Vec::new());
+        for (&m, &x) in members.iter().zip(&along) {
+            if x < mid { halves.0.push(m) } else { halves.1.push(m) }
+        }
         if halves.0.is_empty() || halves.1.is_empty() {
             continue;
         }
@@ -677,14 +679,10 @@ fn best_halves(
             enclose(geometry.elements, pieces, &halves.0).center,
             enclose(geometry.elements, pieces, &halves.1).center,
         );
-        let moved: (Vec<usize>, Vec<usize>) = {
-            let (x, y): (Vec<(usize, [f64; 3])>, Vec<(usize, [f64; 3])>) = members
-                .iter()
-                .copied()
-                .zip(centroids.iter().copied())
-                .partition(|&(_, c)| distance(c, ca) <= distance(c, cb));
-            (x.into_iter().map(|(m, _)| m).collect(), y.into_iter().map(|(m, _)| m).collect())
-        };
+        let mut moved: Halves = (Vec::new(), Vec::new());
+        for (&m, &c) in members.iter().zip(&centroids) {
+            if distance(c, ca) <= distance(c, cb) { moved.0.push(m) } else { moved.1.push(m) }
+        }
         if moved.0.is_empty() || moved.1.is_empty() || moved == halves {
             break;
         }

@@ -294,9 +294,8 @@ pub(crate) mod tests {
 
     /// The closed box `[-h, h]` as twelve outward triangles.
     pub(crate) fn box_mesh(h: [f64; 3]) -> TriangleMesh {
-        let v: Vec<[f64; 3]> = (0..8)
-            .map(|i| [0, 1, 2].map(|k| if (i >> k) & 1 == 1 { h[k] } else { -h[k] }))
-            .collect();
+        let v: Vec<[f64; 3]> =
+            (0..8).map(|i| [0, 1, 2].map(|k| if (i >> k) & 1 == 1 { h[k] } else { -h[k] })).collect();
         // Faces as corner quads (outward), split into two triangles each.
         let quads = [[0, 2, 3, 1], [4, 5, 7, 6], [0, 1, 5, 4], [2, 6, 7, 3], [0, 4, 6, 2], [1, 3, 7, 5]];
         let t = quads.iter().flat_map(|q| [[q[0], q[1], q[2]], [q[0], q[2], q[3]]]).collect();
@@ -322,10 +321,7 @@ pub(crate) mod tests {
             Err(MeshFault::Empty { triangles: 1, vertices: 3 })
         );
         assert_eq!(TriangleMesh::new(vec![], vec![]), Err(MeshFault::Empty { triangles: 0, vertices: 0 }));
-        assert_eq!(
-            TriangleMesh::new(vec![[0.0, f64::NAN, 0.0]], vec![]),
-            Err(MeshFault::NotFinite { index: 0 })
-        );
+        assert_eq!(TriangleMesh::new(vec![[0.0, f64::NAN, 0.0]], vec![]), Err(MeshFault::NotFinite { index: 0 }));
         assert_eq!(
             TriangleMesh::new(vec![[0.0; 3]], vec![[0, 0, 3]]),
             Err(MeshFault::BadIndex { index: 0, vertex: 3, vertices: 1 })
