@@ -155,7 +155,7 @@ fn draw_puts_every_origin_and_axis_where_the_runtime_reference_does() {
         let fk = ReferenceFk::new(kinematics::load(root().join(&file)).unwrap());
         let tree = fk.tree();
         let q = configuration(tree.dof());
-        let svg = ok(&["draw", &file, "--q", &joined(&q)]);
+        let svg = ok(&["draw", &file, "--skip-meshes", "--q", &joined(&q)]);
         assert!(svg.starts_with("<svg xmlns=\"http://www.w3.org/2000/svg\"") && svg.ends_with("</svg>\n"), "{file}");
         let poses = fk.link_poses(&q).unwrap();
         let reach = tree.reach().max(f64::MIN_POSITIVE);
@@ -273,20 +273,35 @@ fn draw_puts_every_origin_and_axis_where_the_runtime_reference_does() {
 
 #[test]
 fn draw_writes_the_file_it_prints_and_reads_degrees_and_zeros_as_fk_does() {
-    let printed = ok(&["draw", "robots/ur5.urdf", "--q", "0.3,-1.2,1.0,0.4,-0.7,2.0"]);
+    let printed = ok(&["draw", "robots/ur5.urdf", "--skip-meshes", "--q", "0.3,-1.2,1.0,0.4,-0.7,2.0"]);
     // Deterministic: the same run prints the same bytes.
-    assert_eq!(printed, ok(&["draw", "robots/ur5.urdf", "--q", "0.3,-1.2,1.0,0.4,-0.7,2.0"]));
+    assert_eq!(printed, ok(&["draw", "robots/ur5.urdf", "--skip-meshes", "--q", "0.3,-1.2,1.0,0.4,-0.7,2.0"]));
     let dir = scratch("output");
     let path = dir.join("ur5.svg");
-    assert_eq!(ok(&["draw", "robots/ur5.urdf", "--q", "0.3,-1.2,1.0,0.4,-0.7,2.0", "-o", path.to_str().unwrap()]), "");
+    assert_eq!(
+        ok(&[
+            "draw",
+            "robots/ur5.urdf",
+            "--skip-meshes",
+            "--q",
+            "0.3,-1.2,1.0,0.4,-0.7,2.0",
+            "-o",
+            path.to_str().unwrap()
+        ]),
+        ""
+    );
     assert_eq!(std::fs::read_to_string(&path).unwrap(), printed);
     assert_eq!(entries(&dir), ["ur5.svg"]);
     std::fs::remove_dir_all(&dir).unwrap();
-    let radians = ok(&["draw", "robots/ur5.urdf", "--q", "0,-1.5707963267948966,1.5707963267948966,0,0,0"]);
-    let degrees = ok(&["draw", "robots/ur5.urdf", "--q", "0,-90,90,0,0,0", "--degrees"]);
+    let radians =
+        ok(&["draw", "robots/ur5.urdf", "--skip-meshes", "--q", "0,-1.5707963267948966,1.5707963267948966,0,0,0"]);
+    let degrees = ok(&["draw", "robots/ur5.urdf", "--skip-meshes", "--q", "0,-90,90,0,0,0", "--degrees"]);
     assert_eq!(radians, degrees);
     // Omitted, `--q` is the zero configuration, as for `fk`.
-    assert_eq!(ok(&["draw", "robots/ur5.urdf"]), ok(&["draw", "robots/ur5.urdf", "--q", "0,0,0,0,0,0"]));
+    assert_eq!(
+        ok(&["draw", "robots/ur5.urdf", "--skip-meshes"]),
+        ok(&["draw", "robots/ur5.urdf", "--skip-meshes", "--q", "0,0,0,0,0,0"])
+    );
 }
 
 #[test]
@@ -295,16 +310,16 @@ fn draw_refuses_bad_configurations_and_leaves_no_file_behind() {
     let path = dir.join("robot.svg");
     let target = path.to_str().unwrap();
     assert_eq!(
-        fails(&["draw", "robots/ur5.urdf", "--q", "1,2,3", "-o", target]),
+        fails(&["draw", "robots/ur5.urdf", "--skip-meshes", "--q", "1,2,3", "-o", target]),
         "error: robots/ur5.urdf: robot `ur5` has 6 degrees of freedom (shoulder_pan_joint, shoulder_lift_joint, \
          elbow_joint, wrist_1_joint, wrist_2_joint, wrist_3_joint), but q has 3 values"
     );
     assert_eq!(
-        fails(&["draw", "robots/ur5.urdf", "--q", "0,NaN,0,0,0,0", "-o", target]),
+        fails(&["draw", "robots/ur5.urdf", "--skip-meshes", "--q", "0,NaN,0,0,0,0", "-o", target]),
         "error: robots/ur5.urdf: robot `ur5`: the value of joint `shoulder_lift_joint` (q[1]) is NaN, not a finite number"
     );
     assert_eq!(
-        fails(&["draw", "robots/ur5.urdf", "--q", "0,0,inf,0,0,0", "-o", target]),
+        fails(&["draw", "robots/ur5.urdf", "--skip-meshes", "--q", "0,0,inf,0,0,0", "-o", target]),
         "error: robots/ur5.urdf: robot `ur5`: the value of joint `elbow_joint` (q[2]) is inf, not a finite number"
     );
     assert_eq!(
@@ -314,19 +329,19 @@ fn draw_refuses_bad_configurations_and_leaves_no_file_behind() {
     assert!(entries(&dir).is_empty(), "{:?}", entries(&dir));
     // A path that cannot be written: a missing directory, and a directory in the file's place.
     let missing = dir.join("missing").join("robot.svg");
-    let message = fails(&["draw", "robots/ur5.urdf", "-o", missing.to_str().unwrap()]);
+    let message = fails(&["draw", "robots/ur5.urdf", "--skip-meshes", "-o", missing.to_str().unwrap()]);
     assert!(
         message.starts_with(&format!("error: robots/ur5.urdf: cannot write `{}`: ", missing.display())),
         "{message}"
     );
     std::fs::create_dir(&path).unwrap();
-    let message = fails(&["draw", "robots/ur5.urdf", "-o", target]);
+    let message = fails(&["draw", "robots/ur5.urdf", "--skip-meshes", "-o", target]);
     assert!(message.starts_with(&format!("error: robots/ur5.urdf: cannot write `{target}`: ")), "{message}");
     assert_eq!(entries(&dir), ["robot.svg"]);
     assert!(entries(&path).is_empty());
     std::fs::remove_dir_all(&dir).unwrap();
     // Not a number: clap's usage error (status 2), as for `fk`.
-    let output = run(&["draw", "robots/ur5.urdf", "--q", "1,x"]);
+    let output = run(&["draw", "robots/ur5.urdf", "--skip-meshes", "--q", "1,x"]);
     assert_eq!(output.status.code(), Some(2));
 }
 

@@ -112,7 +112,6 @@ pub struct CollisionOptions {
     pub srdf: Option<Srdf>,
 }
 
-
 /// An option, as the fault it caused names it. Each front end maps it to where the user wrote it
 /// (exhaustively: a new option is a compile error in every front end until it is mapped).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
