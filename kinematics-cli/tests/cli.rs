@@ -334,7 +334,7 @@ fn generate_emits_collision_checking_as_the_build_api_does() {
     let message = fails(&["generate", "robots/ur5_spherized.urdf", "--collision", "--sphere-cover", "0"]);
     assert_eq!(
         message,
-        "error: robots/ur5_spherized.urdf: `--sphere-cover`: `sphere_cover` is 0 (must be a finite positive length in \
+        "error: robots/ur5_spherized.urdf: `--cover`: `sphere_cover` is 0 (must be a finite positive length in \
          metres)"
     );
     let message = fails(&["generate", "robots/ur5_spherized.urdf", "--collision", "--srdf", "robots/panda.srdf"]);
