@@ -500,8 +500,8 @@ fn cut_larger_than(pieces: &mut Vec<Piece>, members: Vec<usize>, limit: f64) -> 
 /// The group of `members` under its sphere, with its bound.
 /// Its centre is the smallest ball's moved inwards where that lowers the bound (see [`deeper`]).
 fn group(geometry: &Geometry<'_>, pieces: &[Piece], members: Vec<usize>) -> Group {
-    let sphere = enclose(geometry.elements, pieces, &members);
-    let (sphere, bound) = deeper(geometry, pieces, &members, sphere);
+    let support = Support::gather(geometry.elements, pieces, &members);
+    let (sphere, bound) = deeper(geometry, pieces, &members, &support, support.smallest_sphere());
     Group { pieces: members, sphere, bound, settled: false }
 }
 
@@ -518,18 +518,20 @@ fn quick_bound(geometry: &Geometry<'_>, pieces: &[Piece], members: &[usize]) -> 
 /// triangles' area-weighted normals) and towards the centre of the whole link; the steps are
 /// fractions and multiples of the radius. The radius is measured again at each centre, so every
 /// candidate holds the pieces.
-fn deeper(geometry: &Geometry<'_>, pieces: &[Piece], members: &[usize], first: Sphere) -> (Sphere, f64) {
-    let (mut points, mut balls) = (Vec::new(), Vec::new());
+fn deeper(
+    geometry: &Geometry<'_>,
+    pieces: &[Piece],
+    members: &[usize],
+    support: &Support,
+    first: Sphere,
+) -> (Sphere, f64) {
     let mut normal = [0.0; 3];
     for &m in members {
-        pieces[m].support(geometry.elements, &mut points, &mut balls);
         if let Piece::Triangle([a, b, c]) = pieces[m] {
             normal = add(normal, cross(sub(b, a), sub(c, a)));
         }
     }
-    let reach = |c: [f64; 3]| {
-        points.iter().map(|&p| distance(p, c)).chain(balls.iter().map(|&(b, r)| distance(b, c) + r)).fold(0.0, f64::max)
-    };
+    let reach = |c: [f64; 3]| support.reach(c);
     let mut best = (first, first.radius - geometry.depth(first.center));
     let mut directions = Vec::new();
     if norm(normal) > 0.0 {
@@ -581,18 +583,41 @@ const PATTERN_STEPS: usize = 8;
 /// its radius the farthest reach of any point or ball from that centre (so it holds them all,
 /// whatever the centre).
 fn enclose(elements: &[Collision], pieces: &[Piece], members: &[usize]) -> Sphere {
-    let (mut points, mut balls) = (Vec::new(), Vec::new());
-    for &m in members {
-        pieces[m].support(elements, &mut points, &mut balls);
+    Support::gather(elements, pieces, members).smallest_sphere()
+}
+
+/// The points and balls whose hulls contain a group's pieces (in the link's frame).
+struct Support {
+    points: Vec<[f64; 3]>,
+    balls: Vec<([f64; 3], f64)>,
+}
+
+impl Support {
+    /// Every member's support.
+    fn gather(elements: &[Collision], pieces: &[Piece], members: &[usize]) -> Self {
+        let (mut points, mut balls) = (Vec::new(), Vec::new());
+        for &m in members {
+            pieces[m].support(elements, &mut points, &mut balls);
+        }
+        Support { points, balls }
     }
-    let mut centres: Vec<[f64; 3]> = points.iter().copied().chain(balls.iter().map(|b| b.0)).collect();
-    let center = miniball_center(&mut centres);
-    let radius = points
-        .iter()
-        .map(|&p| distance(p, center))
-        .chain(balls.iter().map(|&(c, r)| distance(c, center) + r))
-        .fold(0.0, f64::max);
-    Sphere { center, radius }
+
+    /// The farthest any point or ball reaches from `c`: the radius of the sphere about `c` that
+    /// holds them all.
+    fn reach(&self, c: [f64; 3]) -> f64 {
+        self.points
+            .iter()
+            .map(|&p| distance(p, c))
+            .chain(self.balls.iter().map(|&(b, r)| distance(b, c) + r))
+            .fold(0.0, f64::max)
+    }
+
+    /// The sphere centred on the smallest ball of the points and ball centres, reaching them all.
+    fn smallest_sphere(&self) -> Sphere {
+        let mut centres: Vec<[f64; 3]> = self.points.iter().copied().chain(self.balls.iter().map(|b| b.0)).collect();
+        let center = miniball_center(&mut centres);
+        Sphere { center, radius: self.reach(center) }
+    }
 }
 
 /// Splits a group's pieces in two: the best (least larger bound) of halving the pieces'
