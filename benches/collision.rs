@@ -20,7 +20,11 @@
 //! - holding an object (the Panda, a two-sphere bottle in the grasp frame) in the tabletop scene;
 //! - the baselines a user has without `collision`: our generated link poses plus a hand loop over
 //!   the spheres, and the same centres with parry3d-f64's intersection tests (the reference's
-//!   shapes).
+//!   shapes);
+//! - the Panda from franka_description's collision meshes (issue 59): the time to cover every link
+//!   with spheres (`link_spheres`, the default cover), the meshes read beforehand, and reading and
+//!   covering together; and its `collides` against the spherized Panda's (VAMP's 59 spheres) in
+//!   the same scenes on the same configurations.
 //!
 //! Batches report their throughput (configurations per second): the time per configuration is its
 //! inverse. `cargo bench --bench collision` measures; under `cargo test` every body runs once and
@@ -31,9 +35,10 @@
 mod common;
 
 use std::hint::black_box;
+use std::path::Path;
 use std::time::Duration;
 
-use criterion::Throughput;
+use criterion::{BatchSize, Throughput};
 use kinematics::collision::{BoxObstacle, Environment, PointCloud, SphereObstacle};
 use kinematics::model::collision::{Cover, Meshes, fixed_apart_pairs, link_spheres, sphere_pairs};
 use kinematics::{Configurations, F32x16, F64x4, F64x8, Kinematics, Lanes, SceneObstacles};
@@ -45,6 +50,12 @@ struct Panda;
 #[derive(Kinematics)]
 #[kinematics(urdf = "robots/ur5_spherized.urdf", collision(srdf = "robots/ur5_spherized.srdf"), scalars(f64, f32))]
 struct Ur5;
+
+/// The Panda with franka_description's collision meshes, covered by the derive's default (at most
+/// 10 spheres per link, stopping at 1 cm), with the spherized Panda's SRDF.
+#[derive(Kinematics)]
+#[kinematics(urdf = "robots/panda_meshes.urdf", collision(srdf = "robots/panda.srdf"), scalars(f64, f32))]
+struct PandaMeshes;
 
 /// 1,024 configurations of `N` joints drawn uniformly within the limits, as a planner samples
 /// them (the agreement stream's special angles and values beyond the limits are for tests).
@@ -680,6 +691,161 @@ fn clouds(mut criterion: Option<&mut criterion::Criterion>) {
     group.finish();
 }
 
+/// The Panda's tree with franka_description's collision meshes read, as the derive reads them
+/// (from beside `robots/panda_meshes.urdf`).
+fn read_meshes(mut tree: kinematics::model::KinematicTree) -> kinematics::model::KinematicTree {
+    let urdf = Path::new(env!("CARGO_MANIFEST_DIR")).join("robots/panda_meshes.urdf");
+    let packages = kinematics_meshes::Packages::default();
+    kinematics_meshes::load_tree_meshes(&mut tree, &kinematics_meshes::Resolver::new(&urdf, &packages)).unwrap();
+    tree
+}
+
+/// Spheres and self-check pairs of a cover: the spheres, the pairs of links checked against each
+/// other (the SRDF's disabled pairs left out) and the pairs of spheres those hold.
+fn self_pairs(tree: &kinematics::model::KinematicTree, spheres: &[kinematics::model::collision::LinkSphere]) -> String {
+    let text = std::fs::read_to_string(format!("{}/robots/panda.srdf", env!("CARGO_MANIFEST_DIR"))).unwrap();
+    let disabled = kinematics::model::srdf::parse_srdf(&text).unwrap().disabled_pairs(tree).unwrap();
+    let pairs = sphere_pairs(tree, spheres, Some(&disabled)).pairs;
+    let on = |link| spheres.iter().filter(|s| s.link == link).count();
+    let sphere_pairs: usize = pairs.iter().map(|&(a, b)| on(a) * on(b)).sum();
+    format!("{} spheres, {} pairs of links, {sphere_pairs} pairs of spheres", spheres.len(), pairs.len())
+}
+
+/// Issue 59's cover time: every link of the Panda from its meshes covered by the default cover
+/// (`link_spheres`), the meshes read beforehand; and reading the meshes and covering together.
+fn cover(criterion: Option<&mut criterion::Criterion>) {
+    let unread = PandaMeshes::reference().unwrap().tree().clone();
+    let tree = read_meshes(unread.clone());
+    let Some(c) = criterion else {
+        // Check mode: spheres, each finite, and the derive's own (the same links and radii).
+        let spheres = link_spheres(&tree, &Cover::default(), Meshes::Read).unwrap();
+        assert!(!spheres.is_empty());
+        assert_eq!(spheres.len(), PandaMeshes::SPHERE_RADII.len());
+        for (s, (radius, link)) in spheres.iter().zip(PandaMeshes::SPHERE_RADII.iter().zip(PandaMeshes::SPHERE_LINKS)) {
+            assert!(
+                s.sphere.center.iter().all(|x| x.is_finite()) && s.sphere.radius.is_finite() && s.sphere.radius > 0.0
+            );
+            assert_eq!((tree.link(s.link).name.as_str(), s.sphere.radius), (link, *radius));
+        }
+        return;
+    };
+    let mut group = c.benchmark_group("cover/panda_meshes");
+    group.sample_size(10);
+    group.bench_function("link_spheres", |b| {
+        b.iter(|| link_spheres(black_box(&tree), &Cover::default(), Meshes::Read).unwrap())
+    });
+    group.bench_function("read_meshes_and_link_spheres", |b| {
+        b.iter_batched(
+            || unread.clone(),
+            |unread| link_spheres(&read_meshes(unread), &Cover::default(), Meshes::Read).unwrap(),
+            BatchSize::LargeInput,
+        )
+    });
+    group.finish();
+}
+
+/// Issue 59's comparison: `collides` on the Panda from its meshes (the default cover) against the
+/// spherized Panda's (VAMP's 59 spheres), in the tabletop and shelf scenes, on the same 1,024 arm
+/// configurations (drawn within franka_description's limits, which lie within VAMP's), the
+/// meshes Panda's fingers open (0.04 m): one configuration at a time on all of them, and on those
+/// both robots find free (no early exit), one at a time and in an `f32` batch; with the paired
+/// ratio (meshes / spherized) of each one-at-a-time pair.
+fn meshes_against_spheres(mut criterion: Option<&mut criterion::Criterion>) {
+    assert_eq!(PandaMeshes::JOINT_NAMES[7], "panda_finger_joint1");
+    let arm: Vec<[f64; 7]> = inputs(&PandaMeshes::JOINT_LIMITS[..7]);
+    let open = PandaMeshes::JOINT_LIMITS[7].upper;
+    let with_fingers = |q: &[f64; 7]| -> [f64; 8] { std::array::from_fn(|j| if j < 7 { q[j] } else { open }) };
+    let meshes: Vec<[f64; 8]> = arm.iter().map(with_fingers).collect();
+    if criterion.is_some() && common::selected("panda_meshes_vs_spherized") {
+        let tree = read_meshes(PandaMeshes::reference().unwrap().tree().clone());
+        let spheres = link_spheres(&tree, &Cover::default(), Meshes::Read).unwrap();
+        println!("panda_meshes: {}", self_pairs(&tree, &spheres));
+        let reference = Panda::reference().unwrap();
+        let spheres = link_spheres(reference.tree(), &Cover::default(), Meshes::Read).unwrap();
+        println!("panda (spherized): {}", self_pairs(reference.tree(), &spheres));
+    }
+    for scene_name in ["tabletop", "shelf"] {
+        let obstacles = scene(scene_name);
+        let env: Environment<'_> = obstacles.environment().unwrap();
+        let hit_spheres: Vec<bool> = arm.iter().map(|q| Panda::collides(q, &env)).collect();
+        let hit_meshes: Vec<bool> = meshes.iter().map(|q| PandaMeshes::collides(q, &env)).collect();
+        let both_free: Vec<usize> = (0..arm.len()).filter(|&i| !hit_spheres[i] && !hit_meshes[i]).collect();
+        let (arm_free, meshes_free): (Vec<[f64; 7]>, Vec<[f64; 8]>) =
+            both_free.iter().map(|&i| (arm[i], meshes[i])).unzip();
+        let arm_free32: Vec<[f32; 7]> = arm_free.iter().map(|q| q.map(|x| x as f32)).collect();
+        let meshes_free32: Vec<[f32; 8]> = meshes_free.iter().map(|q| q.map(|x| x as f32)).collect();
+        let Some(c) = criterion.as_deref_mut() else {
+            // Check mode: the meshes Panda's batch agrees with its one-configuration check, each
+            // robot finds some configurations free and some not, and both find some free.
+            let mut verdicts = vec![false; meshes.len()];
+            PandaMeshes::collides_batch(&meshes, &env, &mut verdicts).unwrap();
+            assert_eq!(verdicts, hit_meshes, "panda_meshes in the {scene_name} scene");
+            for hits in [&hit_spheres, &hit_meshes] {
+                assert!(hits.iter().any(|&h| h) && hits.iter().any(|&h| !h), "{scene_name}");
+            }
+            assert!(!both_free.is_empty(), "{scene_name}");
+            continue;
+        };
+        let count = |hits: &[bool]| hits.iter().filter(|&&h| !h).count();
+        println!(
+            "panda_meshes_vs_spherized/{scene_name}: free of {}: spherized {}, meshes {}, both {}",
+            arm.len(),
+            count(&hit_spheres),
+            count(&hit_meshes),
+            both_free.len()
+        );
+        let id = format!("panda_meshes_vs_spherized/{scene_name}");
+        if common::selected(&id) {
+            for (pair, inputs) in [("collides", arm.len()), ("collides_all_free", both_free.len())] {
+                let pick = |i: usize| if pair == "collides" { i } else { both_free[i] };
+                let ratio = common::paired_ratio(
+                    201,
+                    2000,
+                    inputs,
+                    |i| PandaMeshes::collides(&meshes[pick(i)], &env),
+                    |i| Panda::collides(&arm[pick(i)], &env),
+                );
+                println!("{id}/{pair}: paired ratio meshes / spherized {ratio:.3} (median of 201 alternating rounds)");
+            }
+        }
+        let mut group = c.benchmark_group(id);
+        let mut k = 0;
+        group.bench_function("collides_spherized", |b| {
+            b.iter(|| {
+                k = (k + 1) % arm.len();
+                black_box(Panda::collides(black_box(&arm[k]), &env))
+            })
+        });
+        group.bench_function("collides_meshes", |b| {
+            b.iter(|| {
+                k = (k + 1) % meshes.len();
+                black_box(PandaMeshes::collides(black_box(&meshes[k]), &env))
+            })
+        });
+        group.bench_function("collides_all_free_spherized", |b| {
+            b.iter(|| {
+                k = (k + 1) % arm_free.len();
+                black_box(Panda::collides(black_box(&arm_free[k]), &env))
+            })
+        });
+        group.bench_function("collides_all_free_meshes", |b| {
+            b.iter(|| {
+                k = (k + 1) % meshes_free.len();
+                black_box(PandaMeshes::collides(black_box(&meshes_free[k]), &env))
+            })
+        });
+        let mut verdicts = vec![false; both_free.len()];
+        group.throughput(Throughput::Elements(both_free.len() as u64));
+        group.bench_function("collides_all_free_batch_f32_spherized", |b| {
+            b.iter(|| Panda::collides_batch_f32(black_box(&arm_free32), &env, &mut verdicts).unwrap())
+        });
+        group.bench_function("collides_all_free_batch_f32_meshes", |b| {
+            b.iter(|| PandaMeshes::collides_batch_f32(black_box(&meshes_free32), &env, &mut verdicts).unwrap())
+        });
+        group.finish();
+    }
+}
+
 fn main() {
     if common::measuring() {
         let mut c = common::criterion(Duration::from_millis(500), Duration::from_secs(2));
@@ -687,12 +853,16 @@ fn main() {
         ur5(Some(&mut c));
         cluttered(Some(&mut c));
         clouds(Some(&mut c));
+        cover(Some(&mut c));
+        meshes_against_spheres(Some(&mut c));
         c.final_summary();
     } else {
         panda(None);
         ur5(None);
         cluttered(None);
         clouds(None);
+        cover(None);
+        meshes_against_spheres(None);
         println!("collision benchmarks: every body ran once and its answers were checked");
     }
 }

@@ -45,6 +45,9 @@ fn assert_pose(tree: &KinematicTree, q: &[f64], link: &str, r: [[f64; 3]; 3], t:
 #[path = "mjcf/mujoco.rs"]
 mod mujoco;
 
+#[path = "mjcf/geometry.rs"]
+mod geometry;
+
 const I: [[f64; 3]; 3] = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
 const RZ90: [[f64; 3]; 3] = [[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]];
 
@@ -214,7 +217,18 @@ fn the_walker_is_its_urdf_twin_with_a_floating_base() {
         .load_with_floating_base(ExactAngles::default(), Some("world"))
         .unwrap();
     assert_eq!(from_mjcf.name(), from_urdf.name());
-    assert_eq!(from_mjcf.links(), from_urdf.links());
+    // The same links; the MJCF pelvis has a box geom (for the mass MuJoCo requires), which
+    // the URDF leaves out.
+    let bare = |tree: &KinematicTree| {
+        tree.links()
+            .iter()
+            .map(|l| kinematics::model::Link { collisions: Vec::new(), ..l.clone() })
+            .collect::<Vec<_>>()
+    };
+    assert_eq!(bare(&from_mjcf), bare(&from_urdf));
+    let pelvis = from_mjcf.link(from_mjcf.link_id("pelvis").unwrap());
+    assert_eq!(pelvis.collisions.len(), 1);
+    assert_eq!(pelvis.collisions[0].shape, kinematics::model::collision::Shape::Box { size: [0.2, 0.3, 0.1] });
     assert_eq!(from_mjcf.dof_names(), from_urdf.dof_names());
     assert_eq!(from_mjcf.joints().len(), from_urdf.joints().len());
     for (m, u) in from_mjcf.joints().iter().zip(from_urdf.joints()) {

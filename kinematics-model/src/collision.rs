@@ -305,7 +305,9 @@ pub enum PairRule {
 
 /// The pairs of links `tree`'s self-collision check tests: links with geometry (`has_geometry`)
 /// on different rigid bodies, less the `disabled` pairs (an SRDF's `<disable_collisions>`) or,
-/// without them, less the links of adjacent bodies.
+/// without them, less the links of adjacent bodies; and either way less the pairs the
+/// description itself rules out ([`KinematicTree::excluded_pairs`]: an MJCF
+/// `<contact><exclude>`, or geoms whose `contype` and `conaffinity` never meet).
 pub fn collision_pairs(
     tree: &KinematicTree,
     has_geometry: &dyn Fn(LinkId) -> bool,
@@ -322,6 +324,7 @@ pub fn collision_pairs(
         })
         .collect();
     let links: Vec<usize> = (0..tree.links().len()).filter(|&i| has_geometry(LinkId(i))).collect();
+    let excluded = tree.excluded_link_pairs();
     let mut pairs = Vec::new();
     for (k, &a) in links.iter().enumerate() {
         for &b in &links[k + 1..] {
@@ -333,7 +336,7 @@ pub fn collision_pairs(
                 Some(disabled) => disabled.contains(&(LinkId(a), LinkId(b))),
                 None => adjacent.contains(&(ba.min(bb), ba.max(bb))),
             };
-            if !skip {
+            if !skip && !excluded.contains(&(LinkId(a), LinkId(b))) {
                 pairs.push((LinkId(a), LinkId(b)));
             }
         }

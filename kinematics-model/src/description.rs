@@ -21,6 +21,10 @@ pub struct Description {
     pub joints: Vec<JointDescription>,
     /// Links' collision geometry, in file order.
     pub collisions: Vec<CollisionDescription>,
+    /// Pairs of links the description rules out of collision checking for good (an MJCF
+    /// `<contact><exclude>`, or geoms whose `contype` and `conaffinity` never meet); the tree
+    /// keeps them ([`crate::KinematicTree::excluded_pairs`]) and the pair rule leaves them out.
+    pub excluded_pairs: Vec<ExcludedPair>,
     /// What the file says that is not applied, each with its element and line (an MJCF
     /// `<equality>` other than a linear joint coupling); the tree keeps the list
     /// ([`crate::KinematicTree::ignored`]).
@@ -36,6 +40,17 @@ pub struct CollisionDescription {
     pub line: Option<usize>,
     /// The geometry.
     pub collision: Collision,
+}
+
+/// A pair of links the description rules out of collision checking, and why.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ExcludedPair {
+    /// One link.
+    pub link1: String,
+    /// The other.
+    pub link2: String,
+    /// Why, naming the element and line that say so (for `inspect` and messages).
+    pub why: String,
 }
 
 /// The name of the floating joint [`Description::with_floating_base`] adds (Pinocchio's name for

@@ -263,7 +263,14 @@ impl DhTable {
             });
             links.push(tool.name.clone());
         }
-        Ok(Description { name: self.name.clone(), links, joints, collisions: Vec::new(), ignored: Vec::new() })
+        Ok(Description {
+            name: self.name.clone(),
+            links,
+            joints,
+            collisions: Vec::new(),
+            ignored: Vec::new(),
+            excluded_pairs: Vec::new(),
+        })
     }
 
     /// The row's fixed parts before and after the joint motion (`Rz(q)` or `Tz(q)`).

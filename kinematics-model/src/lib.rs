@@ -50,8 +50,8 @@ mod validate;
 
 pub use angle::{Angle, PiRational};
 pub use description::{
-    CollisionDescription, Description, FLOATING_BASE_JOINT, JointDescription, JointTypeDescription, LimitsDescription,
-    MimicDescription,
+    CollisionDescription, Description, ExcludedPair, FLOATING_BASE_JOINT, JointDescription, JointTypeDescription,
+    LimitsDescription, MimicDescription,
 };
 pub use error::{Element, LoadError, LoadErrorKind, ModelError, ModelErrors, SeveralValues, UnknownLink};
 pub use exactness::{ExactAngles, RecognisedAngle};

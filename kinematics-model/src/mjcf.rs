@@ -2,7 +2,7 @@
 //!
 //! MuJoCo's documentation is the authority; the sections are cited where each rule is applied
 //! (XML reference: `compiler`, `default`, `body`, `body/joint`, `body/freejoint`, `body/site`,
-//! `frame`, `attach`, `include`, `equality/joint`; Modeling chapter: "Frame orientations",
+//! `body/geom`, `asset/mesh`, `contact`, `frame`, `attach`, `include`, `equality/joint`; Modeling chapter: "Frame orientations",
 //! "Default settings", "Model composition").
 //!
 //! - The world body is the link `world`; each `<body>` is a link named as the body, its frame
@@ -41,8 +41,8 @@
 //!   and a site's `fromto` (z from `to` towards `from`, as MuJoCo's compiler gives it), mapped onto
 //!   elementary rotations as the `rotation` module says. Angles are
 //!   degrees unless `<compiler angle="radian">`; whole degrees are exact multiples of pi.
-//! - `<default>` classes (nested, `class` and `childclass`) give joints, sites and equality
-//!   constraints their attributes, as MuJoCo's Modeling chapter, "Default settings", describes.
+//! - `<default>` classes (nested, `class` and `childclass`) give joints, sites, geoms, meshes and
+//!   equality constraints their attributes, as MuJoCo's Modeling chapter, "Default settings", describes.
 //! - `<include file>` inserts another file's children of `<mujoco>` (read through the caller's
 //!   [`ReadFile`]; paths as written, for the caller to resolve relative to the main file's
 //!   directory, as MuJoCo does); `<attach model body|frame prefix>` (the prefix required, as
@@ -57,11 +57,14 @@
 //!   `multiplier = a1`, `offset = a0 + y0 - a1 x0`. Every other equality (connect, weld, tendon,
 //!   a joint polynomial of higher degree, an inactive one, one without `joint2`) is listed in
 //!   [`Description::ignored`] and not applied.
-//! - Geometry, inertia, actuators, sensors, tendons, contacts, keyframes, cameras and lights are
-//!   not kinematics and are ignored; an element MuJoCo does not define, in `<mujoco>` or among a
-//!   body's, frame's or the world body's children, is refused. On the elements read (`body`, `joint`, `freejoint`, `site`,
-//!   `frame`, `compiler`, `equality/joint`), every attribute is either used, or one of MuJoCo's
-//!   that has no kinematic effect (damping, `rgba`, ...), or refused naming the element and line.
+//! - A body's `<geom>`s are its link's collision geometry, `<contact>` and the geoms' contact
+//!   bits the pairs ruled out of collision checking (the `geom` module says how each is read).
+//! - Inertia, actuators, sensors, tendons, keyframes, cameras and lights are not kinematics and
+//!   are ignored; an element MuJoCo does not define, in `<mujoco>` or among a body's, frame's or
+//!   the world body's children, is refused. On the elements read (`body`, `joint`, `freejoint`,
+//!   `site`, `frame`, `geom`, `asset/mesh`, `compiler`, `equality/joint`, `contact`), every
+//!   attribute is either used, or one of MuJoCo's that has no kinematic or geometric effect
+//!   (damping, `rgba`, `friction`, ...), or refused naming the element and line.
 //!
 //! Why not `mjcf-rs`: it was read (0.36.1) and would resolve includes, classes and orientation
 //! forms, but it reads included files from disk itself (this crate does no IO), keeps no line
@@ -73,9 +76,10 @@
 //!
 //! Each error names the element, the line and, in an included file, that file.
 
+mod geom;
 mod rotation;
 
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, BTreeSet};
 
 use roxmltree::{Document, Node};
 
@@ -128,6 +132,10 @@ pub fn parse_mjcf_with(text: &str, read: ReadFile<'_>) -> Result<Description, Lo
         joint_names: BTreeMap::new(),
         site_and_frame_names: BTreeMap::new(),
         attached: Vec::new(),
+        geom_links: BTreeMap::new(),
+        geom_bits: Vec::new(),
+        excluded: BTreeMap::new(),
+        paired: BTreeSet::new(),
     };
     reader.description.name = root.attribute("model").unwrap_or("MuJoCo Model").to_owned();
     reader.description.links.push(WORLD.to_owned());
@@ -142,17 +150,22 @@ pub fn parse_mjcf_with(text: &str, read: ReadFile<'_>) -> Result<Description, Lo
     }
     reader.name_the_floating_base();
     for (place, node) in reader.top_level(MAIN, &mut Vec::new())? {
-        if node.tag_name().name() == "equality" {
-            reader.equality(&model, place, node, None)?;
+        match node.tag_name().name() {
+            "equality" => reader.equality(&model, place, node, None)?,
+            "contact" => reader.contact(&model, place, node)?,
+            _ => {}
         }
     }
     for (model, file, asset) in std::mem::take(&mut reader.attached) {
         for (place, node) in reader.top_level(&file, &mut Vec::new())? {
-            if node.tag_name().name() == "equality" {
-                reader.equality(&model, place, node, Some(&asset))?;
+            match node.tag_name().name() {
+                "equality" => reader.equality(&model, place, node, Some(&asset))?,
+                "contact" => reader.contact(&model, place, node)?,
+                _ => {}
             }
         }
     }
+    reader.exclude_pairs();
     Ok(reader.description)
 }
 
@@ -247,6 +260,24 @@ impl Written {
         in_file(&self.file, LoadErrorKind::Located { element: element.clone(), line: self.line, message })
     }
 
+    /// One to `max` numbers.
+    fn list(&self, name: &str, element: &Option<Element>, max: usize) -> Result<Vec<f64>, LoadErrorKind> {
+        let words: Vec<&str> = self.value.split_whitespace().collect();
+        if words.is_empty() || words.len() > max {
+            let found = words.len();
+            return Err(
+                self.error(element, format!("`{name}=\"{}\"` needs 1 to {max} numbers, found {found}", self.value))
+            );
+        }
+        words
+            .into_iter()
+            .map(|word| {
+                word.parse()
+                    .map_err(|_| self.error(element, format!("`{name}=\"{}\"`: `{word}` is not a number", self.value)))
+            })
+            .collect()
+    }
+
     /// Exactly `N` numbers.
     fn numbers<const N: usize>(&self, name: &str, element: &Option<Element>) -> Result<[f64; N], LoadErrorKind> {
         let words: Vec<&str> = self.value.split_whitespace().collect();
@@ -288,6 +319,18 @@ impl Default for Compiler {
     }
 }
 
+/// `<compiler>` settings that say where mesh files are (XML reference, `compiler`): `meshdir`
+/// (else `assetdir`) and `strippath`.
+#[derive(Debug, Clone, Default)]
+struct MeshFiles {
+    /// `meshdir`, or `assetdir` when no `meshdir` is written.
+    dir: Option<String>,
+    /// Whether `assetdir` gave `dir` (a later `meshdir` replaces it).
+    from_assetdir: bool,
+    /// `strippath`: file names lose their directories.
+    strip: bool,
+}
+
 /// One `<default>` class: its parent and its prototypes' attributes by element tag.
 #[derive(Debug, Clone, Default)]
 struct Class {
@@ -300,8 +343,11 @@ struct Class {
 #[derive(Clone)]
 struct Model {
     compiler: Compiler,
+    meshes: MeshFiles,
     classes: BTreeMap<String, Class>,
     prefix: String,
+    /// The model's file among the documents ([`MAIN`] for the main one).
+    file: String,
 }
 
 /// Where a body's children hang: the model they are read in, the link they are fixed to or move
@@ -316,8 +362,8 @@ struct Within<'a> {
     top: bool,
 }
 
-/// The element tags default classes give attributes to (others, such as `geom`, are ignored).
-const DEFAULTED: [&str; 3] = ["joint", "site", "equality"];
+/// The element tags default classes give attributes to (others, such as `inertial`, are ignored).
+const DEFAULTED: [&str; 5] = ["joint", "site", "equality", "geom", "mesh"];
 
 /// The orientation attributes, one of which a frame may have (XML reference, `body`).
 const ORIENTATION: [&str; 5] = ["quat", "axisangle", "xyaxes", "zaxis", "euler"];
@@ -358,6 +404,49 @@ fn known(tag: &str) -> (&'static [&'static str], &'static [&'static str]) {
         ),
         "frame" => (&["name", "childclass", "pos", "quat", "axisangle", "xyaxes", "zaxis", "euler"], &[]),
         "equality" => (&["name", "class", "joint1", "joint2", "polycoef", "active"], &["solref", "solimp"]),
+        "geom" => (
+            &[
+                "name",
+                "class",
+                "type",
+                "size",
+                "fromto",
+                "pos",
+                "quat",
+                "axisangle",
+                "xyaxes",
+                "zaxis",
+                "euler",
+                "mesh",
+                "contype",
+                "conaffinity",
+            ],
+            &[
+                "group",
+                "priority",
+                "condim",
+                "friction",
+                "solmix",
+                "solref",
+                "solimp",
+                "margin",
+                "gap",
+                "material",
+                "rgba",
+                "mass",
+                "density",
+                "shellinertia",
+                "fluidshape",
+                "fluidcoef",
+                "hfield",
+                "fitscale",
+                "user",
+            ],
+        ),
+        "mesh" => (
+            &["name", "class", "file", "scale", "vertex", "face", "builtin", "params", "refpos", "refquat"],
+            &["content_type", "smoothnormal", "maxhullvert", "inertia", "material", "normal", "texcoord"],
+        ),
         _ => (&[], &[]),
     }
 }
@@ -387,6 +476,14 @@ struct Reader<'d, 't> {
     /// Each `<attach>` read: the attached model's settings, its file and its asset's name, whose
     /// `<equality>` constraints are read after every body.
     attached: Vec<(Model, String, String)>,
+    /// Each named geom's link (names prefixed as their model's), for `<contact><pair>`.
+    geom_links: BTreeMap<String, String>,
+    /// Every collision geom's link and contact bits, for the pairs they rule out.
+    geom_bits: Vec<geom::GeomBits>,
+    /// Link pairs `<contact><exclude>` rules out, each with the element that says so.
+    excluded: BTreeMap<(String, String), String>,
+    /// Link pairs a `<contact><pair>` names, which no filter rules out.
+    paired: BTreeSet<(String, String)>,
 }
 
 /// Where a link or joint name was given: the kind of element (`body`, `site`, ...), its file and
@@ -485,11 +582,17 @@ impl<'d, 't> Reader<'d, 't> {
 
     /// The compiler settings and default classes of model file `file`.
     fn settings(&self, file: &str, prefix: String) -> Result<Model, LoadErrorKind> {
-        let mut model = Model { compiler: Compiler::default(), classes: BTreeMap::new(), prefix };
+        let mut model = Model {
+            compiler: Compiler::default(),
+            meshes: MeshFiles::default(),
+            classes: BTreeMap::new(),
+            prefix,
+            file: file.to_owned(),
+        };
         let top = self.top_level(file, &mut Vec::new())?;
         for (place, node) in &top {
             if node.tag_name().name() == "compiler" {
-                compiler(*place, *node, &mut model.compiler)?;
+                compiler(*place, *node, &mut model.compiler, &mut model.meshes)?;
             }
         }
         for (place, node) in top {
@@ -627,8 +730,9 @@ impl<'d, 't> Reader<'d, 't> {
                         format!("<{}> (bodies generated by the compiler) is not read", child.tag_name().name());
                     return Err(place.error(child, None, message));
                 }
-                // Joints are the body's; geometry, inertia, cameras, lights and plugins are not kinematics.
-                "joint" | "freejoint" | "geom" | "inertial" | "camera" | "light" | "plugin" => {}
+                "geom" => self.geom(place, child, at)?,
+                // Joints are the body's; inertia, cameras, lights and plugins are not kinematics.
+                "joint" | "freejoint" | "inertial" | "camera" | "light" | "plugin" => {}
                 other => {
                     let message = format!("unknown element <{other}> in <{}>", node.tag_name().name());
                     return Err(place.error(child, None, message));
@@ -1246,7 +1350,12 @@ fn angle(model: &Model, value: f64) -> Angle {
 /// `<compiler>` (XML reference, `compiler`): `angle`, `eulerseq` and `autolimits` are read;
 /// `coordinate="global"` and `alignfree="true"` are refused; the rest (files, inertia, meshes)
 /// has no kinematic effect.
-fn compiler(place: Place<'_, '_>, node: Node<'_, '_>, out: &mut Compiler) -> Result<(), LoadErrorKind> {
+fn compiler(
+    place: Place<'_, '_>,
+    node: Node<'_, '_>,
+    out: &mut Compiler,
+    meshes: &mut MeshFiles,
+) -> Result<(), LoadErrorKind> {
     for a in node.attributes() {
         let w = place.written(node, a.name(), a.value());
         let element = None;
@@ -1278,10 +1387,20 @@ fn compiler(place: Place<'_, '_>, node: Node<'_, '_>, out: &mut Compiler) -> Res
                     ));
                 }
             }
-            "meshdir" | "texturedir" | "assetdir" | "boundmass" | "boundinertia" | "settotalmass"
-            | "balanceinertia" | "strippath" | "discardvisual" | "convexhull" | "usethread" | "fitaabb"
-            | "inertiafromgeom" | "inertiagrouprange" | "exactmeshinertia" | "saveinertial" | "fusestatic"
-            | "maxhullvert" => {}
+            "meshdir" => {
+                meshes.dir = Some(a.value().to_owned());
+                meshes.from_assetdir = false;
+            }
+            "assetdir" => {
+                if meshes.dir.is_none() || meshes.from_assetdir {
+                    meshes.dir = Some(a.value().to_owned());
+                    meshes.from_assetdir = true;
+                }
+            }
+            "strippath" => meshes.strip = w.word("strippath", &element, &["true", "false"])? == "true",
+            "texturedir" | "boundmass" | "boundinertia" | "settotalmass" | "balanceinertia" | "discardvisual"
+            | "convexhull" | "usethread" | "fitaabb" | "inertiafromgeom" | "inertiagrouprange" | "exactmeshinertia"
+            | "saveinertial" | "fusestatic" | "maxhullvert" => {}
             other => return Err(w.error(&element, format!("<compiler>: unknown attribute `{other}`"))),
         }
     }
@@ -1328,12 +1447,22 @@ fn site_pose(
             return Err(w.error(element, format!("`{other}` and `fromto` cannot both place a site")));
         }
     }
+    Ok(fromto_frame(fromto, element)?.0)
+}
+
+/// The frame a `fromto` gives a site or geom (XML reference, `body/site`, `body/geom`): at the
+/// midpoint, z along the segment, pointing from `to` towards `from` as MuJoCo's compiler gives it
+/// (see [`site_pose`]; every geom shape read is symmetric about its xy plane, so the sign moves
+/// no geometry); and the segment's length.
+fn fromto_frame(fromto: &Written, element: &Option<Element>) -> Result<(FixedTransform, f64), LoadErrorKind> {
     let [x0, y0, z0, x1, y1, z1] = fromto.numbers::<6>("fromto", element)?;
-    let Some(steps) = rotation::z_axis([x0 - x1, y0 - y1, z0 - z1]) else {
+    let d = [x0 - x1, y0 - y1, z0 - z1];
+    let Some(steps) = rotation::z_axis(d) else {
         return Err(fromto.error(element, "`fromto` has the same point twice".to_owned()));
     };
     let mid = [(x0 + x1) / 2.0, (y0 + y1) / 2.0, (z0 + z1) / 2.0];
-    Ok(steps.into_iter().fold(FixedTransform::identity().translate(mid), |t, (axis, a)| t.rotate(axis, a)))
+    let frame = steps.into_iter().fold(FixedTransform::identity().translate(mid), |t, (axis, a)| t.rotate(axis, a));
+    Ok((frame, (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt()))
 }
 
 /// The one orientation form written, as elementary rotations (the `rotation` module).

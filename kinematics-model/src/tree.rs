@@ -1,9 +1,9 @@
 //! The validated kinematic tree: link and joint arenas in a fixed, documented order.
 
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, BTreeSet};
 
 use crate::collision::{Shape, TriangleMesh};
-use crate::description::Description;
+use crate::description::{Description, ExcludedPair};
 use crate::error::{ModelError, ModelErrors};
 use crate::exactness::{ExactAngles, RecognisedAngle};
 use crate::joint::{Joint, JointKind, JointMotion, Limits, Link, length, stroke};
@@ -52,6 +52,8 @@ pub struct KinematicTree {
     pub(crate) vacuous_mimics: Vec<String>,
     /// What the description says that is not applied ([`Description::ignored`]).
     pub(crate) ignored: Vec<String>,
+    /// Link pairs the description rules out of collision checking ([`Description::excluded_pairs`]).
+    pub(crate) excluded_pairs: Vec<ExcludedPair>,
     /// Links by name, for lookups in O(log n).
     link_index: BTreeMap<String, LinkId>,
     /// Joints by name.
@@ -91,6 +93,7 @@ impl KinematicTree {
             recognised: Vec::new(),
             vacuous_mimics: Vec::new(),
             ignored: Vec::new(),
+            excluded_pairs: Vec::new(),
             link_index,
             joint_index,
             depth,
@@ -137,6 +140,24 @@ impl KinematicTree {
     /// higher degree, an inactive constraint). Empty for URDF and DH tables.
     pub fn ignored(&self) -> &[String] {
         &self.ignored
+    }
+
+    /// The link pairs the description rules out of collision checking, each with its reason (an
+    /// MJCF `<contact><exclude>`, or geoms whose `contype` and `conaffinity` never meet). Empty
+    /// for URDF (an SRDF says this for a URDF) and DH tables.
+    pub fn excluded_pairs(&self) -> &[ExcludedPair] {
+        &self.excluded_pairs
+    }
+
+    /// [`KinematicTree::excluded_pairs`] as links, each `(a, b)` with `a` before `b` in tree order.
+    pub fn excluded_link_pairs(&self) -> BTreeSet<(LinkId, LinkId)> {
+        self.excluded_pairs
+            .iter()
+            .filter_map(|p| {
+                let (a, b) = (self.link_id(&p.link1)?, self.link_id(&p.link2)?);
+                Some((a.min(b), a.max(b)))
+            })
+            .collect()
     }
 
     /// Robot name.

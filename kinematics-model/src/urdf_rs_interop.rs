@@ -75,6 +75,7 @@ impl Description {
             joints: robot.joints.iter().map(joint).collect::<Result<_, _>>()?,
             collisions: robot.links.iter().flat_map(collisions).collect(),
             ignored: Vec::new(),
+            excluded_pairs: Vec::new(),
         })
     }
 }

@@ -13,7 +13,7 @@
 
 use std::collections::{BTreeMap, BTreeSet};
 
-use crate::description::{CollisionDescription, Description, JointDescription, JointTypeDescription};
+use crate::description::{CollisionDescription, Description, ExcludedPair, JointDescription, JointTypeDescription};
 use crate::error::{ModelError, ModelErrors, SeveralValues};
 use crate::joint::{Joint, JointKind, JointMotion, Limits, Link, unit_axis};
 use crate::transform::Elementary;
@@ -26,6 +26,7 @@ pub(crate) fn build(d: &Description) -> Result<KinematicTree, ModelErrors> {
     let mut tree = build_checked(d)?;
     tree.vacuous_mimics = vacuous;
     tree.ignored = d.ignored.clone();
+    tree.excluded_pairs = d.excluded_pairs.clone();
     Ok(tree)
 }
 
@@ -64,6 +65,9 @@ fn build_checked(d: &Description) -> Result<KinematicTree, ModelErrors> {
     let links: BTreeSet<&str> = d.links.iter().map(String::as_str).collect();
     for collision in &d.collisions {
         check_geometry(collision, &links, &mut errors);
+    }
+    for pair in &d.excluded_pairs {
+        check_excluded_pair(pair, &links, &mut errors);
     }
     let names_ok = errors.is_empty();
     check_links_exist(d, &mut errors);
@@ -104,6 +108,16 @@ fn check_geometry(c: &CollisionDescription, links: &BTreeSet<&str>, errors: &mut
     let fault = c.collision.shape.fault().or_else(|| (!origin_finite).then(|| "<origin> is not finite".to_owned()));
     if let Some(fault) = fault {
         errors.push(ModelError::Geometry { link: c.link.clone(), line: c.line, fault });
+    }
+}
+
+/// Rule: an excluded collision pair names two links of the robot.
+fn check_excluded_pair(pair: &ExcludedPair, links: &BTreeSet<&str>, errors: &mut Vec<ModelError>) {
+    for link in [&pair.link1, &pair.link2] {
+        if !links.contains(link.as_str()) {
+            let fault = format!("{} names no such link", pair.why);
+            errors.push(ModelError::Geometry { link: link.clone(), line: None, fault });
+        }
     }
 }
 

@@ -48,6 +48,7 @@ fn description(n: usize, parent: impl Fn(usize) -> usize, mimic: impl Fn(usize) 
         joints: (1..=n).rev().map(|i| joint(i, parent(i), mimic(i))).collect(),
         collisions: Vec::new(),
         ignored: Vec::new(),
+        excluded_pairs: Vec::new(),
     }
 }
 

@@ -1,15 +1,25 @@
 //! `kinematics draw FILE --q ... [--scene SCENE] [-o robot.svg]`: a picture of the robot at a
 //! configuration, so a user can see that the robot they loaded is the one they meant: its links,
-//! its joints' axes, its collision spheres (when it has `<collision>` geometry) and the obstacles
-//! of a scene file. With `--path PATH` instead of `--q`, a path of configurations (`path.rs`, as
-//! the planner example writes it): the robot in full at its last configuration, faded at the
-//! others, and the trace of its deepest link along the straight motions between them.
+//! its joints' axes, its collision spheres (when it has `<collision>` geometry) over the geometry
+//! they cover, and the obstacles of a scene file. With `--path PATH` instead of `--q`, a path of
+//! configurations (`path.rs`, as the planner example writes it): the robot in full at its last
+//! configuration, faded at the others, and the trace of its deepest link along the straight
+//! motions between them.
 //!
-//! The geometry comes from the runtime reference (`ReferenceFk::link_poses` and
-//! `sphere_centers`, the numbers `fk` prints); `svg.rs` projects it into three orthographic views
-//! and writes the SVG by hand.
+//! The collision geometry (`geometry.rs`) is every link's `<collision>` elements placed at the
+//! configuration, drawn faint under the spheres so that any part of it the spheres miss shows:
+//! a primitive as its exact outline (the hull of projected points of its surface), a mesh as the
+//! region its projected triangles cover, on a grid of half pixels (`silhouette.rs`), which keeps
+//! the Panda's eleven meshes of 38 000 triangles to a few hundred kilobytes. Meshes are drawn when
+//! they are read (not with `--skip-meshes`, nor when one is not found).
+//!
+//! The numbers come from the runtime reference (`ReferenceFk::link_poses` and `sphere_centers`,
+//! the numbers `fk` prints); `svg.rs` projects them into three orthographic views and writes the
+//! SVG by hand.
 
+mod geometry;
 mod path;
+mod silhouette;
 mod svg;
 
 use std::io::Write;
@@ -50,14 +60,15 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
     let cover = args.cover.cover()?;
     let mut tree = crate::robot::load(file)?;
     // A mesh not found spoils only the spheres: the robot is drawn without them, and the reason
-    // is printed on standard error.
-    let covered = match args.cover.read_meshes(&mut tree, file) {
-        Ok(()) => {
-            link_spheres(&tree, &cover, args.cover.meshes()).map_err(|e| CliError::Usage(format!("{file}: {e}")))?
-        }
+    // is printed on standard error. The meshes' triangles are drawn only when all were read.
+    let (covered, meshes) = match args.cover.read_meshes(&mut tree, file) {
+        Ok(()) => (
+            link_spheres(&tree, &cover, args.cover.meshes()).map_err(|e| CliError::Usage(format!("{file}: {e}")))?,
+            true,
+        ),
         Err(error) => {
             eprintln!("no collision spheres drawn: {error}");
-            Vec::new()
+            (Vec::new(), false)
         }
     };
     let fk = ReferenceFk::new(tree);
@@ -69,7 +80,7 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
         Some(last) => last.clone(),
         None => args.configuration.resolve(fk.tree()),
     };
-    let mut scene = Scene::new(&fk, &q, &covered).map_err(|source| CliError::Runtime { file: file.clone(), source })?;
+    let mut scene = Scene::new(&fk, &q, &covered, meshes).map_err(|source| CliError::Runtime { file: file.clone(), source })?;
     if let Some(path) = &path {
         scene.add_path(&fk, path).map_err(|source| CliError::Runtime { file: file.clone(), source })?;
     }
@@ -253,7 +264,8 @@ pub struct Trace {
 pub const TRACE_STEPS: usize = 16;
 
 /// What is drawn: every link's origin and every joint, in the tree's order, the collision
-/// spheres and the obstacles; for a path, its other configurations and the trace.
+/// spheres over the collision geometry, and the obstacles; for a path, its other configurations
+/// and the trace.
 pub struct Scene {
     /// The robot's name.
     pub robot: String,
@@ -263,8 +275,12 @@ pub struct Scene {
     pub links: Vec<LinkMark>,
     /// The joints, in the tree's joint order.
     pub joints: Vec<JointMark>,
-    /// The collision spheres (meshes left out), in the robot's sphere order.
+    /// The collision spheres, in the robot's sphere order.
     pub spheres: Vec<Ball>,
+    /// The `<collision>` elements, placed: links in the tree's order, each link's in its order.
+    pub solids: Vec<geometry::Solid>,
+    /// How many mesh elements are not drawn (`--skip-meshes`, or a mesh not read).
+    pub meshes_left_out: usize,
     /// The obstacles of the scene file, in its order.
     pub obstacles: Vec<Obstacle>,
     /// A path's configurations before the last (which `q` is), in its order; empty without a path.
@@ -279,6 +295,7 @@ impl Scene {
         let mut out: Vec<([f64; 3], f64)> = self.links.iter().map(|l| (l.origin, 0.0)).collect();
         out.extend(self.joints.iter().flat_map(|j| j.points.iter().map(|&p| (p, 0.0))));
         out.extend(self.spheres.iter().map(|s| (s.center, s.radius)));
+        out.extend(self.solids.iter().flat_map(|s| s.bounds().map(|p| (p, 0.0))));
         out.extend(self.obstacles.iter().flat_map(Obstacle::extent));
         out.extend(self.ghosts.iter().flat_map(|g| g.segments.iter().flat_map(|(_, p)| p.iter().map(|&p| (p, 0.0)))));
         out.extend(self.trace.iter().flat_map(|t| t.points.iter().map(|&p| (p, 0.0))));
@@ -292,8 +309,14 @@ fn array(v: &Vector3<f64>) -> [f64; 3] {
 
 impl Scene {
     /// The robot at `q` by the runtime reference (which refuses a wrong count or a value that is
-    /// not a finite number), with the collision spheres `covered` (the model's cover of its tree).
-    pub fn new(fk: &ReferenceFk, q: &[f64], covered: &[LinkSphere]) -> Result<Self, kinematics::RuntimeError> {
+    /// not a finite number), with the collision spheres `covered` (the model's cover of its tree)
+    /// and its collision geometry, meshes too where `meshes` (those whose triangles were read).
+    pub fn new(
+        fk: &ReferenceFk,
+        q: &[f64],
+        covered: &[LinkSphere],
+        meshes: bool,
+    ) -> Result<Self, kinematics::RuntimeError> {
         let tree: &KinematicTree = fk.tree();
         let poses = fk.link_poses(q)?;
         let links = tree
@@ -303,6 +326,7 @@ impl Scene {
             .map(|(link, pose)| LinkMark { name: link.name.clone(), origin: array(&pose.translation.vector) })
             .collect();
         let joints = joint_marks(tree, &poses);
+        let (solids, meshes_left_out) = geometry::solids(tree, &poses, meshes);
         let spheres = fk
             .sphere_centers(q, covered)?
             .iter()
@@ -319,6 +343,8 @@ impl Scene {
             links,
             joints,
             spheres,
+            solids,
+            meshes_left_out,
             obstacles: Vec::new(),
             ghosts: Vec::new(),
             trace: None,
