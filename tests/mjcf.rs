@@ -220,10 +220,7 @@ fn the_walker_is_its_urdf_twin_with_a_floating_base() {
     // The same links; the MJCF pelvis has a box geom (for the mass MuJoCo requires), which
     // the URDF leaves out.
     let bare = |tree: &KinematicTree| {
-        tree.links()
-            .iter()
-            .map(|l| kinematics::model::Link { collisions: Vec::new(), ..l.clone() })
-            .collect::<Vec<_>>()
+        tree.links().iter().map(|l| kinematics::model::Link { collisions: Vec::new(), ..l.clone() }).collect::<Vec<_>>()
     };
     assert_eq!(bare(&from_mjcf), bare(&from_urdf));
     let pelvis = from_mjcf.link(from_mjcf.link_id("pelvis").unwrap());

@@ -144,10 +144,13 @@ pub fn collision(tree: &KinematicTree, view: &CollisionView<'_>) -> Result<Strin
         Err(e) => out += &format!("operations: not compiled ({e})\n"),
     }
     let pairs = sphere_pairs(tree, &spheres, view.srdf.map(|(_, disabled)| disabled));
-    let rule = match view.srdf {
+    let mut rule = match view.srdf {
         Some((file, _)) => format!("less the pairs {file} disables"),
         None => "less those of bodies joined by one joint, no SRDF given".to_owned(),
     };
+    for excluded in tree.excluded_pairs() {
+        rule += &format!(", less {}-{} ({})", excluded.link1, excluded.link2, excluded.why);
+    }
     let names: Vec<String> =
         pairs.pairs.iter().map(|&(a, b)| format!("{}-{}", tree.link(a).name, tree.link(b).name)).collect();
     out += &format!(

@@ -262,6 +262,17 @@ fn draw_puts_every_origin_and_axis_where_the_runtime_reference_does() {
             assert!(cross.abs() < 2e-3 && dot >= -2e-3, "{file}: {}: {ex} {ey} against {drawn:?}", joint.name);
         }
 
+        // The collision geometry (its primitives: meshes are left out here), one path per element
+        // and view, inside its panel.
+        let primitives = tree.links().iter().flat_map(|l| &l.collisions).filter(|c| c.shape.name() != "mesh").count();
+        let drawn = geometry(&elements);
+        assert_eq!(drawn.len(), 3 * primitives, "{file}");
+        for Drawn { path, loops, .. } in &drawn {
+            for &(x, y) in loops.iter().flatten() {
+                assert!(inside(path.view.unwrap(), x, y), "{file}: {path:?} outside its panel");
+            }
+        }
+
         // The scale bar is as long as it says, on the common scale.
         let bar = elements.iter().find(|e| e.class() == "scale").unwrap();
         let line = elements.iter().find(|e| e.class() == "scale-bar").unwrap();
@@ -520,4 +531,244 @@ fn links_whose_origins_coincide_share_one_label() {
     }
     // A link elsewhere keeps its own label.
     assert_eq!(svg.matches(">wrist_1_link</text>").count(), views);
+}
+
+/// The loops of a path's `d` as `draw` writes the collision geometry: `M x,y`, then `L x,y`,
+/// `H x` or `V y` (absolute), each loop closed by `Z`.
+fn loops(d: &str) -> Vec<Vec<(f64, f64)>> {
+    let mut tokens: Vec<String> = Vec::new();
+    for c in d.chars() {
+        match c {
+            'M' | 'L' | 'H' | 'V' | 'Z' => tokens.push(c.to_string()),
+            ' ' | ',' => tokens.push(String::new()),
+            _ => match tokens.last_mut() {
+                Some(t) if !matches!(t.as_str(), "M" | "L" | "H" | "V" | "Z") => t.push(c),
+                _ => tokens.push(c.to_string()),
+            },
+        }
+    }
+    let mut out: Vec<Vec<(f64, f64)>> = Vec::new();
+    let (mut command, mut numbers, mut at) = ("", Vec::new(), (0.0, 0.0));
+    for token in tokens.iter().filter(|t| !t.is_empty()) {
+        if let Ok(x) = token.parse::<f64>() {
+            numbers.push(x);
+        } else {
+            command = token.as_str();
+            numbers.clear();
+            if command == "M" {
+                out.push(Vec::new());
+            }
+            continue;
+        }
+        let point = match (command, numbers.as_slice()) {
+            ("M" | "L", [x, y]) => Some((*x, *y)),
+            ("H", [x]) => Some((*x, at.1)),
+            ("V", [y]) => Some((at.0, *y)),
+            ("M" | "L", [_]) => None,
+            other => panic!("{other:?} in `{d}`"),
+        };
+        if let Some(p) = point {
+            at = p;
+            out.last_mut().unwrap().push(p);
+            numbers.clear();
+        }
+    }
+    out
+}
+
+/// Whether the region the loops fill (nonzero rule) holds the point `p`, or its edge passes
+/// within `tolerance` of it.
+fn holds(loops: &[Vec<(f64, f64)>], p: (f64, f64), tolerance: f64) -> bool {
+    let mut winding = 0;
+    for l in loops {
+        for (k, &a) in l.iter().enumerate() {
+            let b = l[(k + 1) % l.len()];
+            // Near the edge from a to b.
+            let (ab, ap) = ((b.0 - a.0, b.1 - a.1), (p.0 - a.0, p.1 - a.1));
+            let t = ((ap.0 * ab.0 + ap.1 * ab.1) / (ab.0 * ab.0 + ab.1 * ab.1).max(f64::MIN_POSITIVE)).clamp(0.0, 1.0);
+            if (ap.0 - t * ab.0).hypot(ap.1 - t * ab.1) <= tolerance {
+                return true;
+            }
+            if (a.1 <= p.1) != (b.1 <= p.1) {
+                let x = a.0 + (p.1 - a.1) / (b.1 - a.1) * (b.0 - a.0);
+                if x > p.0 {
+                    winding += if b.1 > a.1 { 1 } else { -1 };
+                }
+            }
+        }
+    }
+    winding != 0
+}
+
+/// A collision element as a view draws it (`class="geometry"`).
+struct Drawn<'a> {
+    path: &'a Element,
+    /// Its path's loops.
+    loops: Vec<Vec<(f64, f64)>>,
+    /// How far its points may lie outside the true projection: a mesh's grid cell's diagonal, and
+    /// the printing's rounding.
+    slack: f64,
+}
+
+fn geometry(elements: &[Element]) -> Vec<Drawn<'_>> {
+    elements
+        .iter()
+        .filter(|e| e.class() == "geometry")
+        .map(|path| {
+            let cell = path.attributes.get("data-cell").map_or(0.0, |c| c.parse::<f64>().unwrap() * 2f64.sqrt());
+            Drawn { path, loops: loops(path.get("d")), slack: cell + 1e-3 }
+        })
+        .collect()
+}
+
+/// Checks that every point of every geometry path lies within a sphere of its link as the view
+/// draws it (the cover holds the geometry, so its projection is within the spheres' discs), that
+/// every path comes before the first sphere of its view (drawn under them), and that each view
+/// has one path per element. Returns the geometry's paths.
+fn geometry_within_spheres<'a>(file: &str, elements: &'a [Element], elements_per_view: usize) -> Vec<Drawn<'a>> {
+    let scale = elements[0].number("data-scale");
+    let views: Vec<&Element> = elements.iter().filter(|e| e.name == "g" && e.class() == "view").collect();
+    let drawn = geometry(elements);
+    assert_eq!(drawn.len(), 3 * elements_per_view, "{file}");
+    let spheres: Vec<&Element> = elements.iter().filter(|e| e.class() == "sphere").collect();
+    assert!(!spheres.is_empty(), "{file}");
+    for (view, v) in views.iter().enumerate() {
+        let first_sphere = elements.iter().position(|e| e.class() == "sphere" && e.view == Some(view)).unwrap();
+        let last_geometry = elements.iter().rposition(|e| e.class() == "geometry" && e.view == Some(view)).unwrap();
+        assert!(last_geometry < first_sphere, "{file}: view {view}: geometry over the spheres");
+        let coordinate = |name: &str| ["x", "y", "z"].iter().position(|c| *c == name).unwrap();
+        let (u, w) = (coordinate(v.get("data-u")), coordinate(v.get("data-v")));
+        let (ox, oy) = (v.number("data-ox"), v.number("data-oy"));
+        let discs: Vec<(&str, (f64, f64), f64)> = spheres
+            .iter()
+            .filter(|s| s.view == Some(view))
+            .map(|s| {
+                let c = point(s);
+                (s.get("data-link"), (ox + scale * c[u], oy - scale * c[w]), scale * s.number("data-r"))
+            })
+            .collect();
+        for Drawn { path, loops, slack } in drawn.iter().filter(|d| d.path.view == Some(view)) {
+            let link = path.get("data-link");
+            assert!(!loops.is_empty() && loops.iter().all(|l| l.len() >= 3), "{file}: {path:?}");
+            for &(x, y) in loops.iter().flatten() {
+                let inside = discs.iter().any(|&(l, (cx, cy), r)| l == link && (x - cx).hypot(y - cy) <= r + slack);
+                assert!(
+                    inside,
+                    "{file}: view {view}: ({x}, {y}) of {link}'s {} outside its spheres",
+                    path.get("data-shape")
+                );
+            }
+        }
+    }
+    drawn
+}
+
+#[test]
+fn draw_shows_the_collision_meshes_under_the_spheres_that_cover_them() {
+    let file = "robots/panda_meshes.urdf";
+    let q = configuration(8);
+    let svg = ok(&["draw", file, "--q", &joined(&q)]);
+    // The Panda's eleven meshes (38 000 triangles) in three views keep the file small.
+    assert!(svg.len() < 1_000_000, "{file}: {} bytes", svg.len());
+    assert_eq!(svg, ok(&["draw", file, "--q", &joined(&q)]), "{file}: not deterministic");
+    let elements = elements(&svg);
+    let drawn = geometry_within_spheres(file, &elements, 11);
+    assert!(drawn.iter().all(|d| d.path.get("data-shape") == "mesh" && d.path.attributes.contains_key("data-cell")));
+
+    // Every vertex of every mesh, placed by the reference, falls in the region drawn for it: the
+    // geometry is where the robot is, not merely inside some sphere.
+    let mut tree = kinematics::load(root().join(file)).unwrap();
+    let resolver = kinematics_meshes::Resolver::new(&root().join(file), &kinematics_meshes::Packages::new());
+    kinematics_meshes::load_tree_meshes(&mut tree, &resolver).unwrap();
+    let fk = ReferenceFk::new(tree);
+    let poses = fk.link_poses(&q).unwrap();
+    let scale = elements[0].number("data-scale");
+    let views: Vec<&Element> = elements.iter().filter(|e| e.name == "g" && e.class() == "view").collect();
+    let mut checked = 0;
+    for Drawn { path, loops, slack } in &drawn {
+        let view = path.view.unwrap();
+        let (u, v) = [(0, 2), (1, 2), (0, 1)][view];
+        let (ox, oy) = (views[view].number("data-ox"), views[view].number("data-oy"));
+        let link = fk.tree().link_id(path.get("data-link")).unwrap();
+        let element: usize = path.get("data-element").parse().unwrap();
+        let collision = &fk.tree().link(link).collisions[element];
+        let kinematics::model::collision::Shape::Mesh { loaded: Some(mesh), scale: s, .. } = &collision.shape else {
+            panic!("{path:?} is not a mesh");
+        };
+        let placed = poses[link.0] * kinematics::runtime::fixed_isometry(&collision.origin);
+        for &i in mesh.triangles().iter().flatten() {
+            let m = mesh.vertices()[i as usize];
+            let p = placed * nalgebra::Point3::new(m[0] * s[0], m[1] * s[1], m[2] * s[2]);
+            let screen = (ox + scale * p[u], oy - scale * p[v]);
+            assert!(holds(loops, screen, 1e-9), "{file}: {path:?} misses {screen:?}");
+            checked += 1;
+        }
+        assert!(*slack > 0.7 && *slack < 0.72, "{slack}");
+    }
+    assert!(checked > 3 * 3 * 38_000, "{checked}");
+
+    // Left out with `--skip-meshes`: no geometry, and the legend says so.
+    let skipped = ok(&["draw", file, "--skip-meshes", "--q", &joined(&q)]);
+    assert!(!skipped.contains("class=\"geometry\""));
+    assert!(skipped.contains("11 collision meshes not drawn"), "{skipped}");
+}
+
+/// Draws the robot of `file` (primitives only) at a configuration, checks its geometry as
+/// [`geometry_within_spheres`] does and each outline holds its element's origin placed by the
+/// reference, and returns how many outlines each shape has.
+fn primitives_where_the_reference_puts_them(file: &str) -> BTreeMap<String, usize> {
+    let fk = ReferenceFk::new(kinematics::load(root().join(file)).unwrap());
+    let q = configuration(fk.tree().dof());
+    let svg = ok(&["draw", file, "--q", &joined(&q)]);
+    let elements = elements(&svg);
+    let count: usize = fk.tree().links().iter().map(|l| l.collisions.len()).sum();
+    let drawn = geometry_within_spheres(file, &elements, count);
+    let poses = fk.link_poses(&q).unwrap();
+    let scale = elements[0].number("data-scale");
+    let views: Vec<&Element> = elements.iter().filter(|e| e.name == "g" && e.class() == "view").collect();
+    let mut shapes = BTreeMap::new();
+    for Drawn { path, loops, .. } in &drawn {
+        // One convex loop, around the element's origin.
+        assert_eq!(loops.len(), 1, "{file}: {path:?}");
+        assert!(!path.attributes.contains_key("data-cell"), "{file}: {path:?}");
+        let view = path.view.unwrap();
+        let (u, v) = [(0, 2), (1, 2), (0, 1)][view];
+        let link = fk.tree().link_id(path.get("data-link")).unwrap();
+        let collision = &fk.tree().link(link).collisions[path.get("data-element").parse::<usize>().unwrap()];
+        assert_eq!(path.get("data-shape"), collision.shape.name(), "{file}");
+        let centre = (poses[link.0] * kinematics::runtime::fixed_isometry(&collision.origin)).translation.vector;
+        let screen =
+            (views[view].number("data-ox") + scale * centre[u], views[view].number("data-oy") - scale * centre[v]);
+        assert!(holds(loops, screen, 0.0), "{file}: {path:?} does not hold {screen:?}");
+        *shapes.entry(collision.shape.name().to_owned()).or_default() += 1;
+    }
+    // Primitives are no meshes: `--skip-meshes` draws the same picture.
+    assert_eq!(ok(&["draw", file, "--skip-meshes", "--q", &joined(&q)]), svg, "{file}");
+    shapes
+}
+
+#[test]
+fn draw_shows_primitive_collision_geometry_as_outlines_where_the_reference_puts_it() {
+    let shapes = primitives_where_the_reference_puts_them("robots/ur5_primitives.urdf");
+    let count = |name: &str| shapes.get(name).copied().unwrap_or(0);
+    assert_eq!((count("box"), count("capsule"), count("cylinder")), (3, 3, 3 * 8), "{shapes:?}");
+    // Every primitive, MJCF's ellipsoid too, placed by `pos`, `euler` and `fromto`.
+    let dir = scratch("primitives");
+    let file = dir.join("shapes.xml");
+    std::fs::write(
+        &file,
+        r#"<mujoco model="shapes"><worldbody><body name="base">
+          <geom type="box" size="0.1 0.05 0.03" pos="0 0 0.03"/>
+          <body name="arm" pos="0 0 0.06"><joint name="j1" type="hinge" axis="0 0 1"/>
+            <geom type="cylinder" size="0.03" fromto="0 0 0 0.3 0 0.1"/>
+            <geom type="ellipsoid" size="0.05 0.08 0.03" pos="0.3 0 0.1" euler="0.3 0.4 0.5"/>
+            <body name="tip" pos="0.3 0 0.1"><joint name="j2" type="hinge" axis="0 1 0"/>
+              <geom type="capsule" size="0.02 0.1" pos="0.1 0 0" euler="0 1.2 0"/>
+              <geom type="sphere" size="0.04" pos="0.25 0 0"/>
+            </body></body></body></worldbody></mujoco>"#,
+    )
+    .unwrap();
+    let shapes = primitives_where_the_reference_puts_them(file.to_str().unwrap());
+    assert_eq!(shapes.values().collect::<Vec<_>>(), [&3; 5], "{shapes:?}");
+    std::fs::remove_dir_all(&dir).unwrap();
 }

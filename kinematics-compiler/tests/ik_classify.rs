@@ -27,6 +27,7 @@ const EXPECTED: &[(&str, Result<IkFamily, &str>)] = &[
     ("panda.toml", Err("the chain has 7 moving joints")),
     ("panda.urdf", Err("joint `panda_finger_joint2` mimics `panda_finger_joint1`")),
     ("panda_meshes.urdf", Err("joint `panda_finger_joint2` mimics `panda_finger_joint1`")),
+    ("panda_primitives.urdf", Err("joint `panda_finger_joint2` mimics `panda_finger_joint1`")),
     ("panda_spherized.urdf", Err("the chain has 7 moving joints")),
     ("planar_2r.toml", Ok(IkFamily::Planar)),
     ("planar_3r.toml", Ok(IkFamily::Planar)),

@@ -254,7 +254,7 @@ mod tests {
         assert_eq!(directions(0.0), 8);
         assert_eq!(directions(1.0), 8);
         let n = directions(100.0);
-        assert!(n % 4 == 0 && 100.0 * (1.0 - (PI / n as f64).cos()) <= 0.25, "{n}");
+        assert!(n.is_multiple_of(4) && 100.0 * (1.0 - (PI / n as f64).cos()) <= 0.25, "{n}");
         assert_eq!(directions(1e9), 96);
     }
 }

@@ -7,11 +7,12 @@
 //! motions between them.
 //!
 //! The collision geometry (`geometry.rs`) is every link's `<collision>` elements placed at the
-//! configuration, drawn faint under the spheres so that any part of it the spheres miss shows:
-//! a primitive as its exact outline (the hull of projected points of its surface), a mesh as the
-//! region its projected triangles cover, on a grid of half pixels (`silhouette.rs`), which keeps
-//! the Panda's eleven meshes of 38 000 triangles to a few hundred kilobytes. Meshes are drawn when
-//! they are read (not with `--skip-meshes`, nor when one is not found).
+//! configuration (the link's pose composed with the element's origin), shaded faintly under the
+//! spheres, so a part the spheres miss shows grey outside the orange: a primitive (box, cylinder,
+//! capsule, sphere, ellipsoid) as its outline (the convex hull of projected points of its
+//! surface), a mesh as the outline of the region its projected triangles cover on a grid of half
+//! pixels (`silhouette.rs`; the Panda's eleven meshes, 38 000 triangles, take some 30 kB in three
+//! views). Meshes are drawn when they are read: not with `--skip-meshes`, nor when one is missing.
 //!
 //! The numbers come from the runtime reference (`ReferenceFk::link_poses` and `sphere_centers`,
 //! the numbers `fk` prints); `svg.rs` projects them into three orthographic views and writes the
@@ -80,7 +81,8 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
         Some(last) => last.clone(),
         None => args.configuration.resolve(fk.tree()),
     };
-    let mut scene = Scene::new(&fk, &q, &covered, meshes).map_err(|source| CliError::Runtime { file: file.clone(), source })?;
+    let mut scene =
+        Scene::new(&fk, &q, &covered, meshes).map_err(|source| CliError::Runtime { file: file.clone(), source })?;
     if let Some(path) = &path {
         scene.add_path(&fk, path).map_err(|source| CliError::Runtime { file: file.clone(), source })?;
     }

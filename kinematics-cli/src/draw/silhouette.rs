@@ -1,12 +1,14 @@
 //! The region a solid covers on the screen, in the two forms `svg.rs` draws: a convex polygon
-//! (a primitive's outline, the hull of projected surface points) and, for a mesh, the cells of a
-//! grid that its projected triangles touch, merged into rectangles.
+//! (a primitive's outline, the hull of projected surface points) and, for a mesh, the outline of
+//! the cells of a grid that its projected triangles touch.
 //!
 //! A mesh of thousands of triangles drawn triangle by triangle would weigh megabytes, and most of
 //! its triangles lie over others. The grid's cells are [`CELL`] pixels wide, aligned on the
 //! screen's origin; a cell is kept when it meets a triangle (edges and corners included, so a
 //! sheet seen edge-on or a sliver is kept too). The region kept holds the projection and lies
-//! within one cell's diagonal of it.
+//! within one cell's diagonal of it; its boundary is traced into closed loops of horizontal and
+//! vertical edges, clockwise on the screen around the region and anticlockwise around its holes,
+//! so the nonzero fill rule fills the region and no hole.
 
 /// Side of a grid cell, in pixels.
 pub const CELL: f64 = 0.5;
@@ -35,20 +37,6 @@ pub fn hull(mut points: Vec<(f64, f64)>) -> Vec<(f64, f64)> {
     out
 }
 
-/// A rectangle of whole cells: columns `x0..x1`, rows `y0..y1` (cell `(i, j)` is the square from
-/// `(i, j) * CELL` to `(i + 1, j + 1) * CELL`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Cells {
-    /// First column.
-    pub x0: i64,
-    /// Last column + 1.
-    pub x1: i64,
-    /// First row.
-    pub y0: i64,
-    /// Last row + 1.
-    pub y1: i64,
-}
-
 /// Whether the triangle `t` (screen points) meets the closed cell `(i, j)`: no separating axis
 /// among the triangle's edge normals (the cell's own axes are the bounding box the caller
 /// scanned).
@@ -67,17 +55,21 @@ fn meets(t: &[(f64, f64); 3], i: i64, j: i64) -> bool {
     })
 }
 
-/// The first and last cell a closed interval holding the coordinates `x` meets inside.
+/// The first and last cell whose inside meets a closed interval holding the coordinates `x` (an
+/// end on a cell's edge takes the cell inside, not the one it touches; a point takes one cell).
 fn span(x: [f64; 3]) -> (i64, i64) {
     let (lo, hi) = (x.into_iter().fold(f64::INFINITY, f64::min), x.into_iter().fold(f64::NEG_INFINITY, f64::max));
     let first = (lo / CELL).floor() as i64;
     (first, ((hi / CELL).ceil() as i64 - 1).max(first))
 }
 
-/// The cells that the triangles `triangles` (indices into the screen points `points`) meet, as
-/// rectangles: each row's runs, a run carried down while the rows below repeat it; ordered by
-/// first row, then first column.
-pub fn cells(points: &[(f64, f64)], triangles: &[[u32; 3]]) -> Vec<Cells> {
+/// The directions of a boundary edge on the screen (y down), clockwise from east.
+const STEPS: [(i64, i64); 4] = [(1, 0), (0, 1), (-1, 0), (0, -1)];
+
+/// The outline of the cells that the triangles `triangles` (indices into the screen points
+/// `points`) meet: closed loops of grid points (`(i, j)` is the screen point `(i, j) * CELL`),
+/// each starting at its first point in row order and listing only its corners.
+pub fn outline(points: &[(f64, f64)], triangles: &[[u32; 3]]) -> Vec<Vec<(i64, i64)>> {
     let corners = |t: &[u32; 3]| t.map(|i| points[i as usize]);
     let (mut lo, mut hi) = ((i64::MAX, i64::MAX), (i64::MIN, i64::MIN));
     for t in triangles {
@@ -93,10 +85,7 @@ pub fn cells(points: &[(f64, f64)], triangles: &[[u32; 3]]) -> Vec<Cells> {
     let mut grid = vec![false; width * height];
     for t in triangles {
         let t = corners(t);
-        // The cells whose inside meets the triangle's bounding box (a box edge on a cell's edge
-        // takes the cell inside it, not the one it only touches; a point or segment takes one).
-        let (i0, i1) = span(t.map(|p| p.0));
-        let (j0, j1) = span(t.map(|p| p.1));
+        let ((i0, i1), (j0, j1)) = (span(t.map(|p| p.0)), span(t.map(|p| p.1)));
         for j in j0..=j1 {
             for i in i0..=i1 {
                 let at = (j - lo.1) as usize * width + (i - lo.0) as usize;
@@ -106,44 +95,59 @@ pub fn cells(points: &[(f64, f64)], triangles: &[[u32; 3]]) -> Vec<Cells> {
             }
         }
     }
-    let mut done = Vec::new();
-    // Rectangles still growing downwards: columns and first row.
-    let mut open: Vec<(i64, i64, i64)> = Vec::new();
-    for row in 0..=height {
-        let j = lo.1 + row as i64;
-        let mut runs = Vec::new();
-        if row < height {
-            let line = &grid[row * width..(row + 1) * width];
-            let mut i = 0;
-            while i < width {
-                if line[i] {
-                    let start = i;
-                    while i < width && line[i] {
-                        i += 1;
-                    }
-                    runs.push((lo.0 + start as i64, lo.0 + i as i64));
-                } else {
-                    i += 1;
+    // Every side of a kept cell whose neighbour is not kept, as a bit (its direction in STEPS) at
+    // its first point, the cell's sides taken clockwise; points are grid corners relative to
+    // `lo`, in rows of `width + 1`.
+    let filled = |i: i64, j: i64| {
+        (0..width as i64).contains(&i) && (0..height as i64).contains(&j) && grid[j as usize * width + i as usize]
+    };
+    let row = width as i64 + 1;
+    let mut edges = vec![0u8; (width + 1) * (height + 1)];
+    for j in 0..height as i64 {
+        for i in 0..width as i64 {
+            if !filled(i, j) {
+                continue;
+            }
+            // Top (east from the top-left corner), right, bottom, left.
+            for (direction, (start, neighbour)) in
+                [((i, j), (i, j - 1)), ((i + 1, j), (i + 1, j)), ((i + 1, j + 1), (i, j + 1)), ((i, j + 1), (i - 1, j))]
+                    .into_iter()
+                    .enumerate()
+            {
+                if !filled(neighbour.0, neighbour.1) {
+                    edges[(start.1 * row + start.0) as usize] |= 1 << direction;
                 }
             }
         }
-        let mut still = Vec::new();
-        for (x0, x1, y0) in open {
-            if runs.contains(&(x0, x1)) {
-                still.push((x0, x1, y0));
-            } else {
-                done.push(Cells { x0, x1, y0, y1: j });
-            }
-        }
-        for run in runs {
-            if !still.iter().any(|&(x0, x1, _)| (x0, x1) == run) {
-                still.push((run.0, run.1, j));
-            }
-        }
-        open = still;
     }
-    done.sort_by_key(|c| (c.y0, c.x0));
-    done
+    let mut loops = Vec::new();
+    for first in 0..edges.len() {
+        while edges[first] != 0 {
+            let mut at = (first as i64 % row, first as i64 / row);
+            let mut heading = edges[first].trailing_zeros() as usize;
+            let mut corners = vec![(at.0 + lo.0, at.1 + lo.1)];
+            loop {
+                edges[(at.1 * row + at.0) as usize] &= !(1 << heading);
+                at = (at.0 + STEPS[heading].0, at.1 + STEPS[heading].1);
+                let index = (at.1 * row + at.0) as usize;
+                if edges[index] == 0 {
+                    break;
+                }
+                // Where two loops touch at a corner, turn right, then go on, then turn left.
+                let Some(next) =
+                    [1, 0, 3].map(|turn| (heading + turn) % 4).into_iter().find(|d| edges[index] >> d & 1 == 1)
+                else {
+                    break;
+                };
+                if next != heading {
+                    corners.push((at.0 + lo.0, at.1 + lo.1));
+                }
+                heading = next;
+            }
+            loops.push(corners);
+        }
+    }
+    loops
 }
 
 #[cfg(test)]
@@ -158,19 +162,34 @@ mod tests {
     }
 
     #[test]
-    fn cells_hold_every_triangle_and_merge_into_rectangles() {
-        // A 2 px square of two triangles from (1, 1): four columns, four rows of cells, one
-        // rectangle; the cells its edges only touch are left out.
+    fn outlines_hold_every_triangle_clockwise_with_holes_anticlockwise() {
+        // A 2 px square of two triangles from (1, 1): cells 2 to 5 both ways; the cells its
+        // edges only touch are left out.
         let points = [(1.0, 1.0), (3.0, 1.0), (3.0, 3.0), (1.0, 3.0)];
-        let square = cells(&points, &[[0, 1, 2], [0, 2, 3]]);
-        assert_eq!(square, [Cells { x0: 2, x1: 6, y0: 2, y1: 6 }]);
+        assert_eq!(outline(&points, &[[0, 1, 2], [0, 2, 3]]), [vec![(2, 2), (6, 2), (6, 6), (2, 6)]]);
         // A thin sliver seen edge-on still marks the cells it crosses.
-        let sliver = cells(&[(0.1, 0.1), (2.1, 0.1), (1.1, 0.1)], &[[0, 1, 2]]);
-        assert_eq!(sliver, [Cells { x0: 0, x1: 5, y0: 0, y1: 1 }]);
-        // A right triangle: rows narrowing, each its own run.
-        let triangle = cells(&[(0.1, 0.1), (1.8, 0.1), (0.1, 1.8)], &[[0, 1, 2]]);
-        assert_eq!(triangle.len(), 4);
-        assert_eq!(triangle[0], Cells { x0: 0, x1: 4, y0: 0, y1: 1 });
-        assert_eq!(triangle[3], Cells { x0: 0, x1: 1, y0: 3, y1: 4 });
+        assert_eq!(
+            outline(&[(0.1, 0.1), (2.1, 0.1), (1.1, 0.1)], &[[0, 1, 2]]),
+            [vec![(0, 0), (5, 0), (5, 1), (0, 1)]]
+        );
+        // A right triangle: a staircase.
+        assert_eq!(
+            outline(&[(0.1, 0.1), (1.8, 0.1), (0.1, 1.8)], &[[0, 1, 2]]),
+            [vec![(0, 0), (4, 0), (4, 1), (3, 1), (3, 2), (2, 2), (2, 3), (1, 3), (1, 4), (0, 4)]]
+        );
+        // A frame of four bars 0.3 px wide around a hole: the outside clockwise, the hole
+        // anticlockwise.
+        let (near, far) = ((0.1, 0.4), (2.6, 2.9));
+        let mut frame = Vec::new();
+        let mut bars = Vec::new();
+        for ((x0, x1), (y0, y1)) in
+            [((near.0, far.1), near), ((near.0, far.1), far), (near, (near.0, far.1)), (far, (near.0, far.1))]
+        {
+            let k = frame.len() as u32;
+            frame.extend([(x0, y0), (x1, y0), (x1, y1), (x0, y1)]);
+            bars.extend([[k, k + 1, k + 2], [k, k + 2, k + 3]]);
+        }
+        let loops = outline(&frame, &bars);
+        assert_eq!(loops, [vec![(0, 0), (6, 0), (6, 6), (0, 6)], vec![(1, 1), (1, 5), (5, 5), (5, 1)]]);
     }
 }

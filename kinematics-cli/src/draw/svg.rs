@@ -5,13 +5,18 @@
 //! carries `data-u`, `data-v`, `data-ox`, `data-oy`; the root element carries `data-scale`. Every
 //! link origin, segment and axis carries its 3D data (`data-x`, `data-y`, `data-z`, and an axis's
 //! unit direction `data-dx`, `data-dy`, `data-dz`) in Rust's shortest round-trip form, so a reader
-//! gets the runtime's numbers back exactly; screen coordinates have three decimals. The output
-//! depends on the scene alone (no hash map, no clock).
+//! gets the runtime's numbers back exactly; screen coordinates have three decimals. The collision
+//! geometry (class `geometry`, with `data-link`, `data-element`, `data-shape`) carries screen
+//! coordinates only: a primitive's outline as a polygon (three decimals), a mesh's region as the
+//! outline of whole grid cells (corners at multiples of `data-cell` pixels, written exactly, edges
+//! as `H` and `V`). The output depends on the scene alone (no hash map, no clock).
 //!
 //! The tests read the picture back through these attributes.
 
 use std::fmt::Write as _;
 
+use super::geometry::Form;
+use super::silhouette::{self, CELL};
 use super::{AxisStyle, ObstacleShape, Scene};
 
 /// Side of a view's square panel, in pixels.
@@ -32,6 +37,10 @@ const AXIS_PX: f64 = 26.0;
 const LABEL_LIMIT: usize = 40;
 /// Labels longer than this many characters are shortened (the tooltip keeps the whole name).
 const LABEL_CHARS: usize = 32;
+/// Characters in a line of the legend's text (the rest of the footer's width at 11 px).
+const LEGEND_CHARS: usize = 96;
+/// Space between the legend's lines, in pixels.
+const LEGEND_LEADING: f64 = 12.0;
 /// Joint values shown in the title (all of them are in the root's `data-q`).
 const TITLE_VALUES: usize = 12;
 
@@ -169,6 +178,7 @@ pub fn render(scene: &Scene) -> String {
         ".planar { stroke: #2e8b57; stroke-dasharray: 1 2; }\n",
         ".label { font-size: 9px; fill: #444; }\n",
         ".scale-bar { stroke: #222; stroke-width: 1.5; }\n",
+        ".geometry { fill: #6b7280; fill-opacity: 0.35; stroke: #374151; stroke-width: 0.5; stroke-opacity: 0.6; stroke-linejoin: round; }\n",
         ".sphere { fill: #e8a33d; fill-opacity: 0.25; stroke: #c07a12; stroke-width: 0.6; }\n",
         ".obstacle { fill: #8a8fa3; fill-opacity: 0.3; stroke: #4d5266; stroke-width: 1; }\n",
         ".obstacle-edge { stroke: #4d5266; stroke-width: 1; }\n",
@@ -232,7 +242,8 @@ pub fn render(scene: &Scene) -> String {
     out
 }
 
-/// The legend from `x` along the line at `y`: each axis style, then what else is drawn.
+/// The legend from `x` along the line at `y`: each axis style, then what else is drawn, on lines
+/// centred on it (two or three for most drawings).
 fn legend(scene: &Scene, mut x: f64, y: f64) -> String {
     let mut out = String::new();
     for style in [AxisStyle::Revolute, AxisStyle::Prismatic, AxisStyle::Planar] {
@@ -255,28 +266,44 @@ fn legend(scene: &Scene, mut x: f64, y: f64) -> String {
         );
         x += 130.0;
     }
-    let spheres = match scene.spheres.len() {
-        0 => String::new(),
-        n => format!("; {n} collision spheres orange (meshes not drawn)"),
-    };
-    let obstacles = match scene.obstacles.len() {
-        0 => String::new(),
-        n => format!("; {n} obstacles blue-grey"),
-    };
-    let path = match &scene.trace {
-        Some(trace) => format!(
-            "; a path of {} configurations, the earlier faded, the trace of {} red",
+    let mut parts = vec!["links grey, origins as dots".to_owned(), "fixed and floating joints have no axis".to_owned()];
+    if !scene.spheres.is_empty() {
+        parts.push(format!("{} collision spheres orange", scene.spheres.len()));
+    }
+    match (scene.solids.len(), scene.meshes_left_out) {
+        (0, 0) => {}
+        (0, m) => parts.push(format!("{m} collision meshes not drawn")),
+        (_, m) => {
+            let under = if scene.spheres.is_empty() { "" } else { " under them" };
+            let left_out = if m == 0 { String::new() } else { format!(" ({m} meshes not drawn)") };
+            parts.push(format!("the collision geometry{under} shaded{left_out}"));
+        }
+    }
+    if !scene.obstacles.is_empty() {
+        parts.push(format!("{} obstacles blue-grey", scene.obstacles.len()));
+    }
+    if let Some(trace) = &scene.trace {
+        parts.push(format!(
+            "a path of {} configurations, the earlier faded, the trace of {} red",
             scene.ghosts.len() + 1,
             label(&trace.link)
-        ),
-        None => String::new(),
-    };
-    let _ = writeln!(
-        out,
-        "<text x=\"{}\" y=\"{}\" font-size=\"11\">links grey, origins as dots; fixed and floating joints have no axis{spheres}{obstacles}{path}</text>",
-        px(x),
-        px(y + 4.0)
-    );
+        ));
+    }
+    // As many lines of at most LEGEND_CHARS characters as it takes, centred on the line at `y`.
+    let mut lines: Vec<String> = Vec::new();
+    for part in parts {
+        match lines.last_mut() {
+            Some(line) if line.chars().count() + 2 + part.chars().count() <= LEGEND_CHARS => {
+                line.push_str("; ");
+                line.push_str(&part);
+            }
+            _ => lines.push(part),
+        }
+    }
+    for (k, line) in lines.iter().enumerate() {
+        let baseline = y + 4.0 + LEGEND_LEADING * (k as f64 - (lines.len() - 1) as f64 / 2.0);
+        let _ = writeln!(out, "<text x=\"{}\" y=\"{}\" font-size=\"11\">{line}</text>", px(x), px(baseline));
+    }
     out
 }
 
@@ -301,6 +328,7 @@ fn view_group(scene: &Scene, placed: &Placed, left: f64) -> String {
     );
     out.push_str(&obstacles(scene, placed));
     out.push_str(&path(scene, placed));
+    out.push_str(&geometry(scene, placed));
     for ball in &scene.spheres {
         let (x, y) = placed.screen(ball.center);
         let _ = writeln!(
@@ -435,6 +463,50 @@ fn path(scene: &Scene, placed: &Placed) -> String {
             px(x),
             px(y)
         );
+    }
+    out
+}
+
+/// The collision geometry in one view, each element one path: a primitive's outline, a mesh's
+/// region on the grid of cells (its loops' corners, edges written `H` and `V`).
+fn geometry(scene: &Scene, placed: &Placed) -> String {
+    let mut out = String::new();
+    let (u, v) = (placed.view.u, placed.view.v);
+    for solid in &scene.solids {
+        let link = escape(&solid.link);
+        let _ = write!(
+            out,
+            "<path class=\"geometry\" data-link=\"{link}\" data-element=\"{}\" data-shape=\"{}\"",
+            solid.element, solid.shape
+        );
+        let mut d = String::new();
+        match &solid.form {
+            Form::Convex { .. } => {
+                let points = solid.outline_points(u, v, placed.scale).unwrap_or_default();
+                let outline = silhouette::hull(points.into_iter().map(|p| placed.screen(p)).collect());
+                for (k, (x, y)) in outline.into_iter().enumerate() {
+                    let _ = write!(d, "{}{},{}", if k == 0 { "M" } else { " L" }, px(x), px(y));
+                }
+                d.push('Z');
+            }
+            Form::Mesh { vertices, triangles } => {
+                let points: Vec<(f64, f64)> = vertices.iter().map(|&p| placed.screen(p)).collect();
+                let at = |i: i64| i as f64 * CELL;
+                for corners in silhouette::outline(&points, triangles) {
+                    for (k, &(i, j)) in corners.iter().enumerate() {
+                        // Edges are horizontal or vertical: each corner differs from the last in one.
+                        let _ = match k {
+                            0 => write!(d, "M{},{}", at(i), at(j)),
+                            _ if j == corners[k - 1].1 => write!(d, "H{}", at(i)),
+                            _ => write!(d, "V{}", at(j)),
+                        };
+                    }
+                    d.push('Z');
+                }
+                let _ = write!(out, " data-cell=\"{CELL}\"");
+            }
+        }
+        let _ = writeln!(out, " d=\"{d}\"><title>collision {} {} of {link}</title></path>", solid.shape, solid.element);
     }
     out
 }

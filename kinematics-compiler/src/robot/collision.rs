@@ -278,12 +278,16 @@ pub(super) fn checks(cx: &Context<'_>, out: &mut Functions) {
     let pose_values = if frame.links.len() == 1 { quote!([#g(q)]) } else { quote!(#g(q)) };
     let poses = quote!(&#pose_values);
     let ahead = check_points(&frame).is_some();
-    let pairs_rule = match plan.pairs.rule {
-        kinematics_model::collision::PairRule::Srdf => "less the SRDF's disabled pairs",
+    let mut pairs_rule = match plan.pairs.rule {
+        kinematics_model::collision::PairRule::Srdf => "less the SRDF's disabled pairs".to_owned(),
         kinematics_model::collision::PairRule::Adjacent => {
-            "less the links of bodies joined by one joint (no SRDF given)"
+            "less the links of bodies joined by one joint (no SRDF given)".to_owned()
         }
     };
+    let excluded = cx.tree().excluded_pairs().len();
+    if excluded > 0 {
+        pairs_rule += &format!(", less the {excluded} link pairs the description rules out (MJCF `<contact>`)");
+    }
     for (function, form, signature) in cx.render.collision_items() {
         let sig = signature.tokens();
         let (what, check) = match function {

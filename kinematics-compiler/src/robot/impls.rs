@@ -1,5 +1,5 @@
 //! The block around everything: the generic bodies, the type's `impl` (constants, functions,
-//! `reference()`), `impl Kinematics`, `impl Collision<DOF>` (with collision checking and `f64`)
+//! `reference()`), `impl Kinematics`, `impl Collision<DOF, VELOCITIES>` (with collision checking and `f64`)
 //! and `impl ReferenceModel`.
 //!
 //! `reference()` and `impl ReferenceModel` sit inside the facade's `with_std!`, parsing with the
@@ -64,18 +64,18 @@ pub(super) fn robot_block(self_ty: &TokenStream, cx: &Context<'_>, out: &Functio
     }
 }
 
-/// `impl Collision<DOF>` for a robot with collision checking and `f64` functions: each method
+/// `impl Collision<DOF, VELOCITIES>` for a robot with collision checking and `f64` functions: each method
 /// the inherent function of its name (inherent items come first in `Self::` paths), the centres
 /// copied into a checked slice. Nothing without collision checking or without `f64`.
 fn collision_impl(self_ty: &TokenStream, cx: &Context<'_>) -> TokenStream {
     if cx.spec.robot.collision().is_none() || !cx.render.scalars.f64 {
         return quote!();
     }
-    let (p, robot, n) = (&cx.p, cx.tree().name(), cx.render.dof());
+    let (p, robot, n, v) = (&cx.p, cx.tree().name(), cx.render.dof(), cx.render.velocities());
     let (impl_generics, where_clause) = (&cx.spec.impl_generics, &cx.spec.where_clause);
     let spheres = Literal::usize_unsuffixed(cx.spheres().len());
     quote! {
-        impl #impl_generics #p::collision::Collision<#n> for #self_ty #where_clause {
+        impl #impl_generics #p::collision::Collision<#n, #v> for #self_ty #where_clause {
             const SPHERE_RADII: &'static [f64] = &Self::SPHERE_RADII;
             const SPHERE_LINKS: &'static [&'static str] = &Self::SPHERE_LINKS;
             fn sphere_centers_into(q: &[f64; #n], out: &mut [[f64; 3]]) -> ::core::result::Result<(), #p::KinematicsError> {
@@ -124,7 +124,7 @@ fn collision_impl(self_ty: &TokenStream, cx: &Context<'_>) -> TokenStream {
             fn clearance(q: &[f64; #n], environment: &#p::collision::Environment<'_>) -> f64 {
                 Self::clearance(q, environment)
             }
-            fn clearance_gradient(q: &[f64; #n], environment: &#p::collision::Environment<'_>) -> (f64, [f64; #n]) {
+            fn clearance_gradient(q: &[f64; #n], environment: &#p::collision::Environment<'_>) -> (f64, [f64; #v]) {
                 Self::clearance_gradient(q, environment)
             }
         }

@@ -30,7 +30,11 @@ use crate::kinematics::Kinematics;
 ///     (free, path_free)
 /// }
 /// ```
-pub trait Collision<const N: usize>: Kinematics + Sized {
+///
+/// `N` is the length of `q`; `V`, the number of velocities, the length of a gradient: as `N`
+/// unless the robot has a ball or free joint (a quaternion's four entries of `q`, three
+/// velocities), so `Collision<N>` names every robot without one.
+pub trait Collision<const N: usize, const V: usize = N>: Kinematics + Sized {
     /// Each collision sphere's radius (m), in the order of
     /// [`Collision::sphere_centers_into`].
     const SPHERE_RADII: &'static [f64];
@@ -88,6 +92,7 @@ pub trait Collision<const N: usize>: Kinematics + Sized {
     /// NaN or infinite entry gives NaN.
     fn clearance(q: &[f64; N], environment: &Environment<'_>) -> f64;
 
-    /// [`Collision::clearance`] and its gradient in the joints.
-    fn clearance_gradient(q: &[f64; N], environment: &Environment<'_>) -> (f64, [f64; N]);
+    /// [`Collision::clearance`] and its gradient in the joints' velocities (one entry per
+    /// velocity, as the Jacobians' columns).
+    fn clearance_gradient(q: &[f64; N], environment: &Environment<'_>) -> (f64, [f64; V]);
 }

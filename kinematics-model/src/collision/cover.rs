@@ -28,6 +28,8 @@
 //! wholly inside the link). Spheres written as `<sphere>` are kept as they are where a link has
 //! nothing else.
 
+use std::collections::{BTreeMap, BTreeSet};
+
 use super::mesh::PlacedTriangles;
 use super::vec3::{add, cross, distance, dot, norm, scale, sub};
 use super::{Collision, Shape, Sphere};
@@ -118,6 +120,11 @@ pub(crate) struct Geometry<'a> {
     meshes: Vec<Option<PlacedTriangles>>,
     /// The centre of the smallest ball about the whole link (set once its pieces are cut).
     core: [f64; 3],
+    /// Cylinders that are capsules as written ([`Geometry::written_capsules`]), with the radius of
+    /// a capsule inside the three elements and of one holding them.
+    capsules: BTreeMap<usize, (f64, f64)>,
+    /// The end spheres those capsules absorb.
+    absorbed: BTreeSet<usize>,
 }
 
 impl<'a> Geometry<'a> {
@@ -138,7 +145,10 @@ impl<'a> Geometry<'a> {
                 _ => None,
             });
         }
-        Ok(Geometry { elements, meshes, core: [0.0; 3] })
+        let mut geometry =
+            Geometry { elements, meshes, core: [0.0; 3], capsules: BTreeMap::new(), absorbed: BTreeSet::new() };
+        (geometry.capsules, geometry.absorbed) = geometry.written_capsules();
+        Ok(geometry)
     }
 
     /// Whether an element takes part (a mesh left out does not).
@@ -154,6 +164,16 @@ impl<'a> Geometry<'a> {
         for (k, e) in self.elements.iter().enumerate() {
             let d = match &self.meshes[k] {
                 Some(mesh) => mesh.depth(p),
+                // A written capsule's depth, of the capsule inside its three elements.
+                None if self.capsules.contains_key(&k) => match (self.capsules[&k], &e.shape) {
+                    ((inner, _), &Shape::Cylinder { length, .. }) => {
+                        let capsule = Shape::Capsule { radius: inner, length };
+                        #[allow(clippy::expect_used, reason = "invariant: a capsule's depth is defined")]
+                        let d = capsule.depth(e.origin.apply_inverse(p)).expect("a capsule's depth");
+                        d.max(e.shape.depth(e.origin.apply_inverse(p)).unwrap_or(d))
+                    }
+                    _ => continue,
+                },
                 None if self.takes_part(k) => {
                     #[allow(clippy::expect_used, reason = "invariant: only a mesh has no depth, and meshes are `Some`")]
                     let d = e.shape.depth(e.origin.apply_inverse(p)).expect("a primitive's depth is defined");
@@ -185,13 +205,21 @@ impl<'a> Geometry<'a> {
 
     /// The pieces every element is cut into at first.
     fn pieces(&self) -> Vec<Piece> {
+        let (capsules, absorbed) = (&self.capsules, &self.absorbed);
         let mut out = Vec::new();
         for (k, e) in self.elements.iter().enumerate() {
             if let Some(mesh) = &self.meshes[k] {
                 out.extend(mesh.triangles().iter().map(|t| Piece::Triangle(*t)));
                 continue;
             }
-            match e.shape {
+            if absorbed.contains(&k) {
+                continue;
+            }
+            let shape = match (capsules.get(&k), e.shape.clone()) {
+                (Some(&(_, radius)), Shape::Cylinder { length, .. }) => Shape::Capsule { radius, length },
+                (_, shape) => shape,
+            };
+            match shape {
                 Shape::Sphere { radius } => out.push(Piece::Ball { center: e.origin.apply([0.0; 3]), radius }),
                 Shape::Capsule { radius, length } => {
                     let n = slices(length, radius / 2.0);
@@ -227,6 +255,51 @@ impl<'a> Geometry<'a> {
         out
     }
 }
+
+impl Geometry<'_> {
+    /// Capsules written the way URDF must write them, a `<cylinder>` and a `<sphere>` of its
+    /// radius centred on each end (franka_description's self-collision model): each such cylinder
+    /// with two capsule radii, and the spheres it absorbs. Where the spheres' radii and centres
+    /// differ from the cylinder's (by at most [`WRITTEN_CAPSULE`]), the outer capsule grows by the
+    /// difference, so it holds the three elements whole, and the inner one shrinks by it, so the
+    /// elements hold it: its pieces are cut along the segment, as a capsule's are, rather than
+    /// into wedges and two uncut balls, and depths are the inner capsule's (lower bounds).
+    fn written_capsules(&self) -> (BTreeMap<usize, (f64, f64)>, BTreeSet<usize>) {
+        let (mut capsules, mut absorbed) = (BTreeMap::new(), BTreeSet::new());
+        for (k, e) in self.elements.iter().enumerate() {
+            let Shape::Cylinder { radius, length } = e.shape else { continue };
+            let (mut shrunk, mut grown) = (radius, radius);
+            let mut ends = Vec::new();
+            for z in [-length / 2.0, length / 2.0] {
+                let end = e.origin.apply([0.0, 0.0, z]);
+                let found = self.elements.iter().enumerate().find_map(|(i, s)| match s.shape {
+                    Shape::Sphere { radius: r } if !absorbed.contains(&i) && !ends.contains(&i) => {
+                        let off = distance(s.origin.apply([0.0; 3]), end);
+                        (off <= WRITTEN_CAPSULE && (r - radius).abs() <= WRITTEN_CAPSULE).then_some((i, r, off))
+                    }
+                    _ => None,
+                });
+                let Some((i, r, off)) = found else { break };
+                ends.push(i);
+                grown = grown.max(r + off);
+                shrunk = shrunk.min(r - off);
+            }
+            if let [a, b] = ends[..] {
+                capsules.insert(k, (shrunk, grown));
+                absorbed.extend([a, b]);
+            }
+        }
+        (capsules, absorbed)
+    }
+}
+
+/// Corners of the polygon about a capsule slice's cut face: they lie `1 / cos(pi / 32) - 1`,
+/// half a percent of the radius, beyond the circle.
+const RING: usize = 32;
+
+/// How far (m) a written capsule's end sphere may lie from the cylinder's end, or its radius
+/// differ from the cylinder's, and still be read as one capsule (the capsule grows by it).
+const WRITTEN_CAPSULE: f64 = 1e-9;
 
 /// Wedges a cylinder's slice is cut into at first: the arc's tangent corners then lie
 /// `1 / cos(pi / 32) - 1`, half a percent, beyond the radius.
@@ -323,8 +396,25 @@ impl Piece {
                 }
             }
             Piece::CapsulePart { radius, z: (z0, z1), element } => {
-                let origin = &elements[element].origin;
-                balls.extend([z0, z1].map(|z| (origin.apply([0.0, 0.0, z]), radius)));
+                // Between its ends a capsule is a cylinder: a slice's cut faces are discs, held
+                // by the polygon about each; only at the capsule's own ends is there a cap, the
+                // ball about the end.
+                let e = &elements[element];
+                let half = match e.shape {
+                    Shape::Capsule { length, .. } | Shape::Cylinder { length, .. } => length / 2.0,
+                    _ => f64::INFINITY,
+                };
+                let corner = radius / (std::f64::consts::PI / RING as f64).cos();
+                for z in [z0, z1] {
+                    if z <= -half || z >= half {
+                        balls.push((e.origin.apply([0.0, 0.0, z]), radius));
+                    } else {
+                        points.extend((0..RING).map(|i| {
+                            let a = std::f64::consts::TAU * i as f64 / RING as f64;
+                            e.origin.apply([corner * a.cos(), corner * a.sin(), z])
+                        }));
+                    }
+                }
             }
             Piece::Ball { center, radius } => balls.push((center, radius)),
         }
@@ -889,6 +979,7 @@ mod tests {
     use super::*;
     use crate::collision::mesh::tests::box_mesh;
     use std::sync::Arc;
+    use crate::transform::FixedTransform;
 
     fn element(shape: Shape) -> Collision {
         Collision { origin: crate::transform::FixedTransform::identity(), shape }
@@ -1027,6 +1118,41 @@ mod tests {
                     assert!(report.bound <= d, "{shape:?}: {report:?}");
                 }
                 assert_eq!(cover_link(&mut geometry, &cover).unwrap().unwrap(), made, "not deterministic");
+            }
+        }
+    }
+
+    /// A capsule written as a cylinder and a sphere on each end (as URDF must write one) is
+    /// covered as the capsule is, the three elements held whole; a sphere off the end by more
+    /// than [`WRITTEN_CAPSULE`] stays a sphere of its own, and is held too.
+    #[test]
+    fn a_capsule_written_as_a_cylinder_and_two_spheres_is_covered_as_one() {
+        let (radius, length) = (0.09, 0.283);
+        let placed = |shape: Shape, z: f64| Collision { origin: FixedTransform::identity().translate([0.1, 0.0, z]), shape };
+        let capsule = [placed(Shape::Capsule { radius, length }, -0.19)];
+        let written = |off: f64| {
+            [
+                placed(Shape::Cylinder { radius, length }, -0.19),
+                placed(Shape::Sphere { radius }, -0.19 + length / 2.0 + off),
+                placed(Shape::Sphere { radius }, -0.19 - length / 2.0),
+            ]
+        };
+        for cover in [Cover::spheres(4), Cover::default(), Cover::overshoot(0.005)] {
+            let of = |elements: &[Collision]| {
+                let mut geometry = Geometry::new(elements, false).unwrap();
+                cover_link(&mut geometry, &cover).unwrap().unwrap()
+            };
+            assert_eq!(of(&written(0.0)).spheres, of(&capsule).spheres, "{cover:?}");
+            for off in [0.0, 1e-3] {
+                let elements = written(off);
+                let made = of(&elements);
+                for e in &elements {
+                    for p in surface(&e.shape) {
+                        let p = e.origin.apply(p);
+                        let inside = made.spheres.iter().any(|s| distance(p, s.center) <= s.radius * (1.0 + 1e-12));
+                        assert!(inside, "{cover:?}, off {off}: {p:?} is in no sphere");
+                    }
+                }
             }
         }
     }
