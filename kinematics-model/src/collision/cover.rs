@@ -978,8 +978,8 @@ pub(crate) fn report(geometry: &Geometry<'_>, cover: &LinkCover) -> CoverReport 
 mod tests {
     use super::*;
     use crate::collision::mesh::tests::box_mesh;
-    use std::sync::Arc;
     use crate::transform::FixedTransform;
+    use std::sync::Arc;
 
     fn element(shape: Shape) -> Collision {
         Collision { origin: crate::transform::FixedTransform::identity(), shape }
@@ -1128,7 +1128,8 @@ mod tests {
     #[test]
     fn a_capsule_written_as_a_cylinder_and_two_spheres_is_covered_as_one() {
         let (radius, length) = (0.09, 0.283);
-        let placed = |shape: Shape, z: f64| Collision { origin: FixedTransform::identity().translate([0.1, 0.0, z]), shape };
+        let placed =
+            |shape: Shape, z: f64| Collision { origin: FixedTransform::identity().translate([0.1, 0.0, z]), shape };
         let capsule = [placed(Shape::Capsule { radius, length }, -0.19)];
         let written = |off: f64| {
             [
