@@ -749,7 +749,7 @@ fn cover(criterion: Option<&mut criterion::Criterion>) {
 /// configurations (drawn within franka_description's limits, which lie within VAMP's), the
 /// meshes Panda's fingers open (0.04 m): one configuration at a time on all of them, and on those
 /// both robots find free (no early exit), one at a time and in an `f32` batch; with the paired
-/// ratio (meshes / spherized) of each one-at-a-time pair.
+/// ratio (meshes / spherized) of each pair, printed.
 fn meshes_against_spheres(mut criterion: Option<&mut criterion::Criterion>) {
     assert_eq!(PandaMeshes::JOINT_NAMES[7], "panda_finger_joint1");
     let arm: Vec<[f64; 7]> = inputs(&PandaMeshes::JOINT_LIMITS[..7]);
@@ -807,6 +807,17 @@ fn meshes_against_spheres(mut criterion: Option<&mut criterion::Criterion>) {
                 );
                 println!("{id}/{pair}: paired ratio meshes / spherized {ratio:.3} (median of 201 alternating rounds)");
             }
+            let (mut ours, mut theirs) = (vec![false; both_free.len()], vec![false; both_free.len()]);
+            let ratio = common::paired_ratio(
+                51,
+                4,
+                1,
+                |_| PandaMeshes::collides_batch_f32(&meshes_free32, &env, &mut ours).unwrap(),
+                |_| Panda::collides_batch_f32(&arm_free32, &env, &mut theirs).unwrap(),
+            );
+            println!(
+                "{id}/collides_all_free_batch_f32: paired ratio meshes / spherized {ratio:.3} (median of 51 alternating rounds)"
+            );
         }
         let mut group = c.benchmark_group(id);
         let mut k = 0;

@@ -144,7 +144,28 @@ pub fn escape(text: &str) -> String {
     text.replace('&', "&amp;").replace('"', "&quot;").replace('<', "&lt;").replace('>', "&gt;")
 }
 
-/// Text inside an XML comment (which may not hold `--`).
+/// Text inside an XML comment, which may not hold `--`: a space between every two dashes in a
+/// row (`---` is `- - -`).
 pub fn comment(text: &str) -> String {
-    text.replace("--", "- -")
+    let mut out = String::with_capacity(text.len());
+    for c in text.chars() {
+        if c == '-' && out.ends_with('-') {
+            out.push(' ');
+        }
+        out.push(c);
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn a_comment_holds_no_double_dash() {
+        assert_eq!(super::comment("a--b"), "a- -b");
+        assert_eq!(super::comment("---"), "- - -");
+        assert_eq!(super::comment("--spheres 8 -x"), "- -spheres 8 -x");
+        for text in ["-", "----", "a-b--c---d", "--"] {
+            assert!(!super::comment(text).contains("--"), "{text}");
+        }
+    }
 }

@@ -262,7 +262,7 @@ fn header(text: &str, summary: &Summary<'_>) -> Edit {
             summary.spheres_alone
         );
     }
-    let comment = format!("<!-- {} -->", comment_text(&body));
+    let comment = format!("<!-- {} -->", crate::convert::comment(&body));
     let bom = if text.starts_with('\u{feff}') { '\u{feff}'.len_utf8() } else { 0 };
     let rest = &text[bom..];
     let declaration = rest
@@ -281,16 +281,6 @@ fn header(text: &str, summary: &Summary<'_>) -> Edit {
 /// `n` things: `1 link`, `7 links`.
 fn count(n: usize, thing: &str) -> String {
     if n == 1 { format!("1 {thing}") } else { format!("{n} {thing}s") }
-}
-
-/// `text` made fit for an XML comment, which may hold no `--`: `convert::comment` until none is
-/// left (one pass turns `---` into `- --`).
-fn comment_text(text: &str) -> String {
-    let mut text = crate::convert::comment(text);
-    while text.contains("--") {
-        text = crate::convert::comment(&text);
-    }
-    text
 }
 
 /// `text` with `edits` made (disjoint ranges, in any order); ranges that overlap or split a

@@ -5,39 +5,13 @@
 #![allow(clippy::panic, clippy::unwrap_used, clippy::expect_used)] // test helpers fail loudly
 
 use std::collections::BTreeMap;
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::path::Path;
 
 use kinematics::ReferenceFk;
 use kinematics::model::JointKind;
 
-/// The workspace root: the binary runs there, so `robots/...` paths work as in the README.
-fn root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("..")
-}
-
-fn run(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_kinematics")).args(args).current_dir(root()).output().unwrap()
-}
-
-/// Standard output of a run that must succeed quietly.
-fn ok(args: &[&str]) -> String {
-    let output = run(args);
-    let stderr = String::from_utf8_lossy(&output.stderr);
-    assert!(output.status.success(), "kinematics {args:?} failed: {stderr}");
-    assert!(stderr.is_empty(), "kinematics {args:?} wrote to stderr: {stderr}");
-    String::from_utf8(output.stdout).unwrap()
-}
-
-/// The error message of a run that must fail: one `error: ...` line, nothing on stdout.
-fn fails(args: &[&str]) -> String {
-    let output = run(args);
-    assert_eq!(output.status.code(), Some(1), "kinematics {args:?}");
-    assert!(output.stdout.is_empty(), "kinematics {args:?} printed {}", String::from_utf8_lossy(&output.stdout));
-    let stderr = String::from_utf8(output.stderr).unwrap();
-    assert!(stderr.starts_with("error: ") && stderr.ends_with('\n'), "{stderr}");
-    stderr.trim_end().to_owned()
-}
+mod common;
+use common::{fails, ok, root, run, scratch};
 
 /// Every description in `robots/`, as `robots/<file>`.
 fn robots() -> Vec<String> {
@@ -50,13 +24,6 @@ fn robots() -> Vec<String> {
     files.sort();
     assert!(files.len() >= 10, "robots/ should hold the robot library: {files:?}");
     files
-}
-
-fn scratch(test: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("kinematics-draw-{test}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
 }
 
 fn entries(dir: &Path) -> Vec<String> {
