@@ -65,9 +65,7 @@ pub struct CollisionView<'a> {
 /// pairs a self-collision check tests; fixed joints whose mimic had nothing to do. A link the
 /// cover cannot make is the error returned.
 pub fn collision(tree: &KinematicTree, view: &CollisionView<'_>) -> Result<String, String> {
-    use kinematics::model::collision::{
-        LinkSphere, Meshes, cover_report, fixed_apart_pairs, link_covers, pair_grids, sphere_pairs,
-    };
+    use kinematics::model::collision::{LinkSphere, Meshes, link_covers};
     let mut out = String::new();
     if !tree.vacuous_mimics().is_empty() {
         out +=
@@ -92,9 +90,33 @@ pub fn collision(tree: &KinematicTree, view: &CollisionView<'_>) -> Result<Strin
         crate::cover::CoverArgs::describe(&view.cover),
         if view.meshes == Meshes::Skip { "; meshes left out" } else { "" }
     );
+    out += &link_lines(tree, view, &with, &covers, &spheres, &layout)?;
+    let root = &tree.link(tree.root()).name;
+    match layout.op_counts(tree, root) {
+        Ok((centers, poses)) => {
+            out += &format!("operations of `sphere_centers` in `{root}`: {centers}\n");
+            out += &format!("operations of the links' poses the checks take: {poses}\n");
+        }
+        Err(e) => out += &format!("operations: not compiled ({e})\n"),
+    }
+    out += &pair_lines(tree, view, &spheres);
+    Ok(out)
+}
+
+/// One line per link with geometry (its shapes, spheres and bounding sphere), one with its
+/// cover's report, and with `view.spheres` each sphere.
+fn link_lines(
+    tree: &KinematicTree,
+    view: &CollisionView<'_>,
+    with: &[&kinematics::model::Link],
+    covers: &[(kinematics::model::LinkId, kinematics::model::collision::LinkCover)],
+    spheres: &[kinematics::model::collision::LinkSphere],
+    layout: &kinematics_compiler::collision_layout::CollisionLayout,
+) -> Result<String, String> {
+    let mut out = String::new();
     let width = column_width(with.iter().map(|l| l.name.as_str()));
     let point = |p: [f64; 3]| format!("({}, {}, {})", short(p[0]), short(p[1]), short(p[2]));
-    for link in with {
+    for link in with.iter().copied() {
         // Each kind once, with how many of it (meshes by file).
         let mut shapes: Vec<(String, usize)> = Vec::new();
         for c in &link.collisions {
@@ -118,7 +140,7 @@ pub fn collision(tree: &KinematicTree, view: &CollisionView<'_>) -> Result<Strin
         let count = if own.len() == 1 { "1 sphere".to_owned() } else { format!("{} spheres", own.len()) };
         out += &format!("  {}  {count}: {}{bound}\n", pad(&link.name, width), shapes.join(", "));
         if let Some((id, c)) = covers.iter().find(|(l, _)| tree.link(*l).name == link.name) {
-            let r = cover_report(tree, *id, c, view.meshes).map_err(|e| e.to_string())?;
+            let r = kinematics::model::collision::cover_report(tree, *id, c, view.meshes).map_err(|e| e.to_string())?;
             out += &format!(
                 "  {}  overshoot at most {} m (sampled on the spheres: largest {} m, mean {} m); volume {} of the geometry's {} m^3\n",
                 pad("", width),
@@ -135,15 +157,19 @@ pub fn collision(tree: &KinematicTree, view: &CollisionView<'_>) -> Result<Strin
             }
         }
     }
-    let root = &tree.link(tree.root()).name;
-    match layout.op_counts(tree, root) {
-        Ok((centers, poses)) => {
-            out += &format!("operations of `sphere_centers` in `{root}`: {centers}\n");
-            out += &format!("operations of the links' poses the checks take: {poses}\n");
-        }
-        Err(e) => out += &format!("operations: not compiled ({e})\n"),
-    }
-    let pairs = sphere_pairs(tree, &spheres, view.srdf.map(|(_, disabled)| disabled));
+    Ok(out)
+}
+
+/// The self-collision pairs and their rule, the sphere pairs held apart for good, and the pairs
+/// decided ahead of time by grids.
+fn pair_lines(
+    tree: &KinematicTree,
+    view: &CollisionView<'_>,
+    spheres: &[kinematics::model::collision::LinkSphere],
+) -> String {
+    use kinematics::model::collision::{fixed_apart_pairs, pair_grids, sphere_pairs};
+    let mut out = String::new();
+    let pairs = sphere_pairs(tree, spheres, view.srdf.map(|(_, disabled)| disabled));
     let mut rule = match view.srdf {
         Some((file, _)) => format!("less the pairs {file} disables"),
         None => "less those of bodies joined by one joint, no SRDF given".to_owned(),
@@ -158,7 +184,7 @@ pub fn collision(tree: &KinematicTree, view: &CollisionView<'_>) -> Result<Strin
         pairs.pairs.len(),
         names.join(", ")
     );
-    let fixed = fixed_apart_pairs(tree, &spheres, &pairs.pairs);
+    let fixed = fixed_apart_pairs(tree, spheres, &pairs.pairs);
     let sphere = |k: usize| {
         let link = &tree.link(spheres[k].link).name;
         let index = spheres[..k].iter().filter(|s| s.link == spheres[k].link).count();
@@ -171,7 +197,7 @@ pub fn collision(tree: &KinematicTree, view: &CollisionView<'_>) -> Result<Strin
         fixed.len(),
         if held.is_empty() { String::new() } else { format!(": {}", held.join(", ")) }
     );
-    let grids = pair_grids(tree, &spheres, &pairs.pairs);
+    let grids = pair_grids(tree, spheres, &pairs.pairs);
     out += &format!(
         "self-collision grids (pairs decided ahead of time by the values of the one or two joints that move them): {}\n",
         grids.len()
@@ -192,7 +218,7 @@ pub fn collision(tree: &KinematicTree, view: &CollisionView<'_>) -> Result<Strin
             share(test)
         );
     }
-    Ok(out)
+    out
 }
 
 /// `a / b` as `3.1x`, or `-` where `b` is zero (a link whose meshes enclose no volume).
