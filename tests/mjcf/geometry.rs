@@ -236,7 +236,7 @@ fn geometry_errors_name_the_body_and_the_line() {
     );
     check(
         r#"<body name="b"><geom size="-0.1"/></body>"#,
-        "t.xml: link `b` (line 4): <collision>: <sphere radius> is -0.1 (must be a finite positive length)",
+        "t.xml: body `b` (line 4): <geom>: `size=\"-0.1\"`: <sphere radius> is -0.1 (must be a finite positive length)",
     );
     check(
         r#"<body name="b"><geom size="0.1" colour="red"/></body>"#,

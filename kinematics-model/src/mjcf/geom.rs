@@ -152,6 +152,12 @@ impl<'d, 't> Reader<'d, 't> {
                 self.mesh_asset(model, name, &element)?
             }
         };
+        // Sizes checked here, in MuJoCo's words, rather than by validation in URDF's.
+        if let Some(fault) = shape.fault() {
+            let written = ["size", "fromto", "mesh"].iter().find_map(|a| attributes.get(*a).map(|w| (a, w)));
+            let at = written.map_or(String::new(), |(a, w)| format!("`{a}=\"{}\"`: ", w.value));
+            return Err(here(format!("{at}{fault}")));
+        }
         self.description.collisions.push(CollisionDescription {
             link: parent.to_owned(),
             line: Some(place.line(node.range().start)),
