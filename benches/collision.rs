@@ -708,7 +708,15 @@ fn self_pairs(tree: &kinematics::model::KinematicTree, spheres: &[kinematics::mo
     let pairs = sphere_pairs(tree, spheres, Some(&disabled)).pairs;
     let on = |link| spheres.iter().filter(|s| s.link == link).count();
     let sphere_pairs: usize = pairs.iter().map(|&(a, b)| on(a) * on(b)).sum();
-    format!("{} spheres, {} pairs of links, {sphere_pairs} pairs of spheres", spheres.len(), pairs.len())
+    let mut links: Vec<_> = spheres.iter().map(|s| s.link).collect();
+    links.dedup();
+    let per_link: Vec<String> = links.iter().map(|&l| format!("{} {}", tree.link(l).name, on(l))).collect();
+    format!(
+        "{} spheres ({}), {} pairs of links, {sphere_pairs} pairs of spheres",
+        spheres.len(),
+        per_link.join(", "),
+        pairs.len()
+    )
 }
 
 /// Issue 59's cover time: every link of the Panda from its meshes covered by the default cover
@@ -748,8 +756,8 @@ fn cover(criterion: Option<&mut criterion::Criterion>) {
 /// spherized Panda's (VAMP's 59 spheres), in the tabletop and shelf scenes, on the same 1,024 arm
 /// configurations (drawn within franka_description's limits, which lie within VAMP's), the
 /// meshes Panda's fingers open (0.04 m): one configuration at a time on all of them, and on those
-/// both robots find free (no early exit), one at a time and in an `f32` batch; with the paired
-/// ratio (meshes / spherized) of each pair, printed.
+/// both robots find free (no early exit), one at a time and in an `f32` batch (and the batch's
+/// self check alone); with the paired ratio (meshes / spherized) of each check, printed.
 fn meshes_against_spheres(mut criterion: Option<&mut criterion::Criterion>) {
     assert_eq!(PandaMeshes::JOINT_NAMES[7], "panda_finger_joint1");
     let arm: Vec<[f64; 7]> = inputs(&PandaMeshes::JOINT_LIMITS[..7]);
@@ -809,14 +817,14 @@ fn meshes_against_spheres(mut criterion: Option<&mut criterion::Criterion>) {
             }
             let (mut ours, mut theirs) = (vec![false; both_free.len()], vec![false; both_free.len()]);
             let ratio = common::paired_ratio(
-                51,
-                4,
+                201,
+                2,
                 1,
                 |_| PandaMeshes::collides_batch_f32(&meshes_free32, &env, &mut ours).unwrap(),
                 |_| Panda::collides_batch_f32(&arm_free32, &env, &mut theirs).unwrap(),
             );
             println!(
-                "{id}/collides_all_free_batch_f32: paired ratio meshes / spherized {ratio:.3} (median of 51 alternating rounds)"
+                "{id}/collides_all_free_batch_f32: paired ratio meshes / spherized {ratio:.3} (median of 201 alternating rounds)"
             );
         }
         let mut group = c.benchmark_group(id);
@@ -852,6 +860,14 @@ fn meshes_against_spheres(mut criterion: Option<&mut criterion::Criterion>) {
         });
         group.bench_function("collides_all_free_batch_f32_meshes", |b| {
             b.iter(|| PandaMeshes::collides_batch_f32(black_box(&meshes_free32), &env, &mut verdicts).unwrap())
+        });
+        // Their self checks alone: what of the batches the robots' own pairs take (the rest is
+        // the obstacles' tests).
+        group.bench_function("self_collides_all_free_batch_f32_spherized", |b| {
+            b.iter(|| Panda::self_collides_batch_f32(black_box(&arm_free32), &mut verdicts).unwrap())
+        });
+        group.bench_function("self_collides_all_free_batch_f32_meshes", |b| {
+            b.iter(|| PandaMeshes::self_collides_batch_f32(black_box(&meshes_free32), &mut verdicts).unwrap())
         });
         group.finish();
     }
