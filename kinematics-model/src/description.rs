@@ -25,6 +25,12 @@ pub struct Description {
     /// `<contact><exclude>`, or geoms whose `contype` and `conaffinity` never meet); the tree
     /// keeps them ([`crate::KinematicTree::excluded_pairs`]) and the pair rule leaves them out.
     pub excluded_pairs: Vec<ExcludedPair>,
+    /// Links' mass and inertia (`<inertial>`), in file order, at most one a link.
+    pub inertials: Vec<InertialDescription>,
+    /// Links whose mass the description leaves to be inferred from their geometry (an MJCF body
+    /// with geoms and no `<inertial>`, whose inertia MuJoCo computes from them): dynamics refuse
+    /// them, naming them, rather than take them as massless.
+    pub inertia_from_geometry: Vec<String>,
     /// What the file says that is not applied, each with its element and line (an MJCF
     /// `<equality>` other than a linear joint coupling); the tree keeps the list
     /// ([`crate::KinematicTree::ignored`]).
@@ -40,6 +46,17 @@ pub struct CollisionDescription {
     pub line: Option<usize>,
     /// The geometry.
     pub collision: Collision,
+}
+
+/// One `<inertial>` element as the description states it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct InertialDescription {
+    /// The link it belongs to.
+    pub link: String,
+    /// The element's line in its file, when read from one (for messages).
+    pub line: Option<usize>,
+    /// The mass and inertia.
+    pub inertial: crate::inertia::Inertial,
 }
 
 /// A pair of links the description rules out of collision checking, and why.

@@ -270,6 +270,8 @@ impl DhTable {
             collisions: Vec::new(),
             ignored: Vec::new(),
             excluded_pairs: Vec::new(),
+            inertials: Vec::new(),
+            inertia_from_geometry: Vec::new(),
         })
     }
 

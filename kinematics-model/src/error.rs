@@ -118,6 +118,16 @@ pub enum ModelError {
         /// What is wrong.
         fault: String,
     },
+    /// An `<inertial>` that belongs nowhere, or a second one of a link.
+    #[error("link `{link}`{}: <inertial>: {fault}", line.map(|l| format!(" (line {l})")).unwrap_or_default())]
+    Inertial {
+        /// The link.
+        link: String,
+        /// The element's line, when read from a file.
+        line: Option<usize>,
+        /// What is wrong.
+        fault: String,
+    },
     /// A NaN or infinity where a finite number is needed.
     #[error("{element}: {field} is not a finite number")]
     NonFinite {

@@ -21,6 +21,9 @@ pub struct Link {
     pub child_joints: Vec<JointId>,
     /// Its collision geometry (`<collision>` elements), in description order.
     pub collisions: Vec<Collision>,
+    /// Its mass and inertia as written (`<inertial>`); `None` where the description gives none
+    /// (a massless link).
+    pub inertial: Option<crate::inertia::Inertial>,
 }
 
 /// How a joint moves.

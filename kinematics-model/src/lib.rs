@@ -34,6 +34,7 @@ pub mod dh;
 mod error;
 pub mod exactness;
 mod frame;
+pub mod inertia;
 mod joint;
 pub mod mjcf;
 pub mod scene;
@@ -50,8 +51,8 @@ mod validate;
 
 pub use angle::{Angle, PiRational};
 pub use description::{
-    CollisionDescription, Description, ExcludedPair, FLOATING_BASE_JOINT, JointDescription, JointTypeDescription,
-    LimitsDescription, MimicDescription,
+    CollisionDescription, Description, ExcludedPair, FLOATING_BASE_JOINT, InertialDescription, JointDescription,
+    JointTypeDescription, LimitsDescription, MimicDescription,
 };
 pub use error::{Element, LoadError, LoadErrorKind, ModelError, ModelErrors, SeveralValues, UnknownLink};
 pub use exactness::{ExactAngles, RecognisedAngle};

@@ -54,6 +54,10 @@ pub struct KinematicTree {
     pub(crate) ignored: Vec<String>,
     /// Link pairs the description rules out of collision checking ([`Description::excluded_pairs`]).
     pub(crate) excluded_pairs: Vec<ExcludedPair>,
+    /// Each `<inertial>`'s line, by link name ([`Description::inertials`]).
+    pub(crate) inertial_lines: BTreeMap<String, usize>,
+    /// Links whose mass is left to their geometry ([`Description::inertia_from_geometry`]).
+    pub(crate) inertia_from_geometry: Vec<String>,
     /// Links by name, for lookups in O(log n).
     link_index: BTreeMap<String, LinkId>,
     /// Joints by name.
@@ -94,6 +98,8 @@ impl KinematicTree {
             vacuous_mimics: Vec::new(),
             ignored: Vec::new(),
             excluded_pairs: Vec::new(),
+            inertial_lines: BTreeMap::new(),
+            inertia_from_geometry: Vec::new(),
             link_index,
             joint_index,
             depth,
@@ -147,6 +153,17 @@ impl KinematicTree {
     /// for URDF (an SRDF says this for a URDF) and DH tables.
     pub fn excluded_pairs(&self) -> &[ExcludedPair] {
         &self.excluded_pairs
+    }
+
+    /// The line of link `link`'s `<inertial>`, when read from a file.
+    pub fn inertial_line(&self, link: &str) -> Option<usize> {
+        self.inertial_lines.get(link).copied()
+    }
+
+    /// Links whose mass the description leaves to be inferred from their geometry (MJCF bodies
+    /// with geoms and no `<inertial>`): dynamics refuse them. Empty for URDF and DH tables.
+    pub fn inertia_from_geometry(&self) -> &[String] {
+        &self.inertia_from_geometry
     }
 
     /// [`KinematicTree::excluded_pairs`] as links, each `(a, b)` with `a` before `b` in tree order.

@@ -62,7 +62,16 @@ pub fn parse_urdf(text: &str) -> Result<Description, LoadErrorKind> {
             _ => {}
         }
     }
-    Ok(Description { name, links, joints, collisions, ignored: Vec::new(), excluded_pairs: Vec::new() })
+    Ok(Description {
+        name,
+        links,
+        joints,
+        collisions,
+        ignored: Vec::new(),
+        excluded_pairs: Vec::new(),
+        inertials: Vec::new(),
+        inertia_from_geometry: Vec::new(),
+    })
 }
 
 /// A `<link>`'s `<collision>` elements: each an `<origin>` (zeros by default) and a `<geometry>`

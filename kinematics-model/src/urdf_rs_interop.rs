@@ -76,6 +76,8 @@ impl Description {
             collisions: robot.links.iter().flat_map(collisions).collect(),
             ignored: Vec::new(),
             excluded_pairs: Vec::new(),
+            inertials: Vec::new(),
+            inertia_from_geometry: Vec::new(),
         })
     }
 }

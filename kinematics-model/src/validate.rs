@@ -27,6 +27,8 @@ pub(crate) fn build(d: &Description) -> Result<KinematicTree, ModelErrors> {
     tree.vacuous_mimics = vacuous;
     tree.ignored = d.ignored.clone();
     tree.excluded_pairs = d.excluded_pairs.clone();
+    tree.inertial_lines = d.inertials.iter().filter_map(|i| Some((i.link.clone(), i.line?))).collect();
+    tree.inertia_from_geometry = d.inertia_from_geometry.clone();
     Ok(tree)
 }
 
@@ -69,6 +71,7 @@ fn build_checked(d: &Description) -> Result<KinematicTree, ModelErrors> {
     for pair in &d.excluded_pairs {
         check_excluded_pair(pair, &links, &mut errors);
     }
+    check_inertials(d, &links, &mut errors);
     let names_ok = errors.is_empty();
     check_links_exist(d, &mut errors);
     let mut root = None;
@@ -118,6 +121,22 @@ fn check_excluded_pair(pair: &ExcludedPair, links: &BTreeSet<&str>, errors: &mut
             let fault = format!("{} names no such link", pair.why);
             errors.push(ModelError::Geometry { link: link.clone(), line: None, fault });
         }
+    }
+}
+
+/// Rule: an `<inertial>` belongs to a link of the robot, at most one to each. (Its values keep
+/// the rules of [`crate::inertia::Inertial::fault`] only where dynamics are asked for.)
+fn check_inertials(d: &Description, links: &BTreeSet<&str>, errors: &mut Vec<ModelError>) {
+    let mut seen = BTreeSet::new();
+    for i in &d.inertials {
+        let fault = if !links.contains(i.link.as_str()) {
+            "no such link"
+        } else if !seen.insert(i.link.as_str()) {
+            "more than one <inertial>"
+        } else {
+            continue;
+        };
+        errors.push(ModelError::Inertial { link: i.link.clone(), line: i.line, fault: fault.to_owned() });
     }
 }
 
@@ -426,6 +445,9 @@ fn assemble(d: &Description, root: usize) -> KinematicTree {
     for j in &d.joints {
         below.entry(j.parent.as_str()).or_default().push(j);
     }
+    // Each link's inertial (at most one: a rule), one pass.
+    let mut inertials: BTreeMap<&str, crate::inertia::Inertial> =
+        d.inertials.iter().map(|i| (i.link.as_str(), i.inertial.clone())).collect();
     // Each link's collision geometry, in description order: one pass.
     let mut geometry: BTreeMap<&str, Vec<crate::collision::Collision>> = BTreeMap::new();
     for c in &d.collisions {
@@ -438,7 +460,8 @@ fn assemble(d: &Description, root: usize) -> KinematicTree {
     let mut stack: Vec<(&str, Option<&JointDescription>)> = vec![(d.links[root].as_str(), None)];
     while let Some((name, via)) = stack.pop() {
         let collisions = geometry.remove(name).unwrap_or_default();
-        links.push(Link { name: name.to_owned(), parent_joint: None, child_joints: Vec::new(), collisions });
+        let inertial = inertials.remove(name);
+        links.push(Link { name: name.to_owned(), parent_joint: None, child_joints: Vec::new(), collisions, inertial });
         order.extend(via);
         for j in below.get(name).into_iter().flatten().rev() {
             stack.push((j.child.as_str(), Some(j)));

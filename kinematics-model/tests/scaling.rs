@@ -49,6 +49,8 @@ fn description(n: usize, parent: impl Fn(usize) -> usize, mimic: impl Fn(usize) 
         collisions: Vec::new(),
         ignored: Vec::new(),
         excluded_pairs: Vec::new(),
+        inertials: Vec::new(),
+        inertia_from_geometry: Vec::new(),
     }
 }
 
