@@ -48,6 +48,9 @@ mod mujoco;
 #[path = "mjcf/geometry.rs"]
 mod geometry;
 
+#[path = "mjcf/inertial.rs"]
+mod inertial;
+
 const I: [[f64; 3]; 3] = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
 const RZ90: [[f64; 3]; 3] = [[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]];
 

@@ -22,7 +22,7 @@ pub struct Link {
     /// Its collision geometry (`<collision>` elements), in description order.
     pub collisions: Vec<Collision>,
     /// Its mass and inertia as written (`<inertial>`); `None` where the description gives none
-    /// (a massless link).
+    /// or gives a zero mass with a zero tensor (a massless link either way).
     pub inertial: Option<crate::inertia::Inertial>,
 }
 

@@ -1,9 +1,9 @@
 //! MJCF front end: the kinematics of a MuJoCo model (`<mujoco>`) into a [`Description`].
 //!
 //! MuJoCo's documentation is the authority; the sections are cited where each rule is applied
-//! (XML reference: `compiler`, `default`, `body`, `body/joint`, `body/freejoint`, `body/site`,
-//! `body/geom`, `asset/mesh`, `contact`, `frame`, `attach`, `include`, `equality/joint`; Modeling chapter: "Frame orientations",
-//! "Default settings", "Model composition").
+//! (XML reference: `compiler`, `default`, `body`, `body/inertial`, `body/joint`, `body/freejoint`,
+//! `body/site`, `body/geom`, `asset/mesh`, `contact`, `frame`, `attach`, `include`, `equality/joint`;
+//! Modeling chapter: "Frame orientations", "Default settings", "Model composition").
 //!
 //! - The world body is the link `world`; each `<body>` is a link named as the body, its frame
 //!   its `pos` and orientation in its parent's frame (both default to the identity).
@@ -59,12 +59,16 @@
 //!   [`Description::ignored`] and not applied.
 //! - A body's `<geom>`s are its link's collision geometry, `<contact>` and the geoms' contact
 //!   bits the pairs ruled out of collision checking (the `geom` module says how each is read).
-//! - Inertia, actuators, sensors, tendons, keyframes, cameras and lights are not kinematics and
-//!   are ignored; an element MuJoCo does not define, in `<mujoco>` or among a body's, frame's or
-//!   the world body's children, is refused. On the elements read (`body`, `joint`, `freejoint`,
-//!   `site`, `frame`, `geom`, `asset/mesh`, `compiler`, `equality/joint`, `contact`), every
-//!   attribute is either used, or one of MuJoCo's that has no kinematic or geometric effect
-//!   (damping, `rgba`, `friction`, ...), or refused naming the element and line.
+//! - A body's `<inertial>` is its link's mass and inertia, as written; `<compiler
+//!   inertiafromgeom>` says which bodies MuJoCo gives an inertia computed from their geoms
+//!   instead, which are listed ([`Description::inertia_from_geometry`]) for dynamics to refuse
+//!   rather than take as massless (the `inertial` module says how each is read).
+//! - Actuators, sensors, tendons, keyframes, cameras and lights are not kinematics and are
+//!   ignored; an element MuJoCo does not define, in `<mujoco>` or among a body's, frame's or the
+//!   world body's children, is refused. On the elements read (`body`, `joint`, `freejoint`,
+//!   `inertial`, `site`, `frame`, `geom`, `asset/mesh`, `compiler`, `equality/joint`, `contact`),
+//!   every attribute is either used, or one of MuJoCo's that has no kinematic, geometric or
+//!   inertial effect (damping, `rgba`, `friction`, ...), or refused naming the element and line.
 //!
 //! Why not `mjcf-rs`: it was read (0.36.1) and would resolve includes, classes and orientation
 //! forms, but it reads included files from disk itself (this crate does no IO), keeps no line
@@ -77,6 +81,7 @@
 //! Each error names the element, the line and, in an included file, that file.
 
 mod geom;
+mod inertial;
 mod rotation;
 
 use std::collections::{BTreeMap, BTreeSet};
@@ -134,6 +139,7 @@ pub fn parse_mjcf_with(text: &str, read: ReadFile<'_>) -> Result<Description, Lo
         attached: Vec::new(),
         geom_links: BTreeMap::new(),
         geom_bits: Vec::new(),
+        geom_bodies: BTreeSet::new(),
         excluded: BTreeMap::new(),
         paired: BTreeSet::new(),
     };
@@ -311,11 +317,13 @@ struct Compiler {
     eulerseq: [u8; 3],
     /// `autolimits`, default true.
     autolimits: bool,
+    /// `inertiafromgeom`, default `auto` (the `inertial` module).
+    inertia_from_geom: inertial::FromGeom,
 }
 
 impl Default for Compiler {
     fn default() -> Self {
-        Compiler { degrees: true, eulerseq: *b"xyz", autolimits: true }
+        Compiler { degrees: true, eulerseq: *b"xyz", autolimits: true, inertia_from_geom: inertial::FromGeom::Auto }
     }
 }
 
@@ -443,6 +451,9 @@ fn known(tag: &str) -> (&'static [&'static str], &'static [&'static str]) {
                 "user",
             ],
         ),
+        "inertial" => {
+            (&["pos", "quat", "axisangle", "xyaxes", "zaxis", "euler", "mass", "diaginertia", "fullinertia"], &[])
+        }
         "mesh" => (
             &["name", "class", "file", "scale", "vertex", "face", "builtin", "params", "refpos", "refquat"],
             &["content_type", "smoothnormal", "maxhullvert", "inertia", "material", "normal", "texcoord"],
@@ -480,6 +491,9 @@ struct Reader<'d, 't> {
     geom_links: BTreeMap<String, String>,
     /// Every collision geom's link and contact bits, for the pairs they rule out.
     geom_bits: Vec<geom::GeomBits>,
+    /// The bodies with a geom of their own (in them or in a frame of theirs, visual geoms too),
+    /// whose inertia MuJoCo may compute from their geoms (`<compiler inertiafromgeom>`).
+    geom_bodies: BTreeSet<String>,
     /// Link pairs `<contact><exclude>` rules out, each with the element that says so.
     excluded: BTreeMap<(String, String), String>,
     /// Link pairs a `<contact><pair>` names, which no filter rules out.
@@ -699,8 +713,9 @@ impl<'d, 't> Reader<'d, 't> {
         Ok(out)
     }
 
-    /// The children of a body, frame or the world body: bodies, frames, sites, attachments; with
-    /// `frame` the transform from `parent`'s frame to theirs. Joints are read by [`Self::body`].
+    /// The children of a body, frame or the world body: bodies, frames, sites, attachments, geoms
+    /// and a body's `<inertial>`; with `frame` the transform from `parent`'s frame to theirs.
+    /// Joints are read by [`Self::body`].
     fn children(&mut self, place: Place<'d, 't>, node: Node<'d, 't>, at: &Within<'_>) -> Result<(), LoadErrorKind> {
         let Within { model, parent, frame, childclass, .. } = *at;
         for (place, child) in self.expand(place, node, &mut Vec::new())? {
@@ -730,9 +745,17 @@ impl<'d, 't> Reader<'d, 't> {
                         format!("<{}> (bodies generated by the compiler) is not read", child.tag_name().name());
                     return Err(place.error(child, None, message));
                 }
-                "geom" => self.geom(place, child, at)?,
-                // Joints are the body's; inertia, cameras, lights and plugins are not kinematics.
-                "joint" | "freejoint" | "inertial" | "camera" | "light" | "plugin" => {}
+                "geom" => {
+                    // Every geom of a body counts for its inertia, a visual one too (the
+                    // `inertial` module), though only collision geoms are its geometry.
+                    if parent != WORLD {
+                        self.geom_bodies.insert(parent.to_owned());
+                    }
+                    self.geom(place, child, at)?;
+                }
+                "inertial" => self.inertial(place, node, child, at)?,
+                // Joints are the body's; cameras, lights and plugins are not kinematics.
+                "joint" | "freejoint" | "camera" | "light" | "plugin" => {}
                 other => {
                     let message = format!("unknown element <{other}> in <{}>", node.tag_name().name());
                     return Err(place.error(child, None, message));
@@ -960,7 +983,9 @@ impl<'d, 't> Reader<'d, 't> {
             link = child;
         }
         let identity = FixedTransform::identity();
-        self.children(place, node, &Within { model, parent: &name, frame: &identity, childclass, top: false })
+        self.children(place, node, &Within { model, parent: &name, frame: &identity, childclass, top: false })?;
+        self.inertia_from_geoms(model, &name);
+        Ok(())
     }
 
     /// One `<joint>` or `<freejoint>` (XML reference, `body/joint`, `body/freejoint`), MuJoCo's
@@ -1347,9 +1372,10 @@ fn angle(model: &Model, value: f64) -> Angle {
     if model.compiler.degrees { Angle::from_degrees(value) } else { Angle::Radians(value) }
 }
 
-/// `<compiler>` (XML reference, `compiler`): `angle`, `eulerseq` and `autolimits` are read;
-/// `coordinate="global"` and `alignfree="true"` are refused; the rest (files, inertia, meshes)
-/// has no kinematic effect.
+/// `<compiler>` (XML reference, `compiler`): `angle`, `eulerseq`, `autolimits` and
+/// `inertiafromgeom` are read; `coordinate="global"` and `alignfree="true"` are refused; the rest
+/// (files, meshes, inertia bounds, `inertiagrouprange`: the `inertial` module) has no kinematic
+/// effect and is not read.
 fn compiler(
     place: Place<'_, '_>,
     node: Node<'_, '_>,
@@ -1362,6 +1388,13 @@ fn compiler(
         match a.name() {
             "angle" => out.degrees = w.word("angle", &element, &["degree", "radian"])? == "degree",
             "autolimits" => out.autolimits = w.word("autolimits", &element, &["true", "false"])? == "true",
+            "inertiafromgeom" => {
+                out.inertia_from_geom = match w.word("inertiafromgeom", &element, &["false", "true", "auto"])? {
+                    "false" => inertial::FromGeom::False,
+                    "true" => inertial::FromGeom::True,
+                    _ => inertial::FromGeom::Auto,
+                }
+            }
             "eulerseq" => {
                 let seq = a.value().as_bytes();
                 let [x, y, z] = seq else {
@@ -1399,8 +1432,8 @@ fn compiler(
             }
             "strippath" => meshes.strip = w.word("strippath", &element, &["true", "false"])? == "true",
             "texturedir" | "boundmass" | "boundinertia" | "settotalmass" | "balanceinertia" | "discardvisual"
-            | "convexhull" | "usethread" | "fitaabb" | "inertiafromgeom" | "inertiagrouprange" | "exactmeshinertia"
-            | "saveinertial" | "fusestatic" | "maxhullvert" => {}
+            | "convexhull" | "usethread" | "fitaabb" | "inertiagrouprange" | "exactmeshinertia" | "saveinertial"
+            | "fusestatic" | "maxhullvert" => {}
             other => return Err(w.error(&element, format!("<compiler>: unknown attribute `{other}`"))),
         }
     }

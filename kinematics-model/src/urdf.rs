@@ -3,11 +3,16 @@
 //! Read with `roxmltree`, following urdfdom (the ROS reference parser) where URDF leaves a choice:
 //!
 //! - the root element is `<robot name>`; its `<link name>` and `<joint>` children are read, every
-//!   other element (materials, `<transmission>`, `<gazebo>`, xacro leftovers) is ignored, as are a
-//!   link's `<visual>` and `<inertial>`;
+//!   other element (materials, `<transmission>`, `<gazebo>`, xacro leftovers) is ignored, as is a
+//!   link's `<visual>`;
 //! - a link's `<collision>` elements are read: an `<origin xyz rpy>` and a `<geometry>` with one
 //!   `<box size>`, `<cylinder radius length>`, `<sphere radius>`, `<capsule radius length>` or
 //!   `<mesh filename scale>` (the mesh named, never opened);
+//! - a link's `<inertial>` (at most one) is read as urdfdom reads it: an `<origin xyz rpy>`
+//!   (zeros by default), `<mass value>` and `<inertia ixx ixy ixz iyy iyz izz>`, each of these
+//!   elements and attributes required. The values are kept as written
+//!   ([`crate::inertia::Inertial`]): the rules of a rigid body are checked where dynamics are
+//!   asked for, not here, so a NaN or a negative mass loads;
 //! - a joint needs `name`, `type` (`revolute`, `continuous`, `prismatic`, `fixed`, `floating`,
 //!   `planar`), `<parent link>` and `<child link>`;
 //! - `<origin xyz rpy>` defaults to zeros, `<axis xyz>` to `1 0 0`; a joint origin's
@@ -30,9 +35,11 @@ use roxmltree::{Document, Node};
 use crate::angle::Angle;
 use crate::collision::{Collision, Shape};
 use crate::description::{
-    CollisionDescription, Description, JointDescription, JointTypeDescription, LimitsDescription, MimicDescription,
+    CollisionDescription, Description, InertialDescription, JointDescription, JointTypeDescription, LimitsDescription,
+    MimicDescription,
 };
 use crate::error::{Element, LoadErrorKind};
+use crate::inertia::Inertial;
 use crate::transform::FixedTransform;
 
 /// Parses URDF text into a description (no model rule is checked yet).
@@ -51,11 +58,13 @@ pub fn parse_urdf(text: &str) -> Result<Description, LoadErrorKind> {
     let mut links = Vec::new();
     let mut joints = Vec::new();
     let mut collisions = Vec::new();
+    let mut inertials = Vec::new();
     for child in robot.children().filter(|c| c.is_element() && c.tag_name().namespace() == namespace) {
         match child.tag_name().name() {
             "link" => {
                 let link = at.required(child, "name")?.to_owned();
                 collisions.extend(link_collisions(&doc, child, &link)?);
+                inertials.extend(link_inertial(&doc, child, &link)?);
                 links.push(link);
             }
             "joint" => joints.push(joint(&doc, child)?),
@@ -69,7 +78,7 @@ pub fn parse_urdf(text: &str) -> Result<Description, LoadErrorKind> {
         collisions,
         ignored: Vec::new(),
         excluded_pairs: Vec::new(),
-        inertials: Vec::new(),
+        inertials,
         inertia_from_geometry: Vec::new(),
     })
 }
@@ -90,20 +99,7 @@ fn link_collisions(
         .filter(|c| c.is_element() && c.tag_name().namespace() == namespace && c.tag_name().name() == "collision")
     {
         let start = element.range().start;
-        let origin = match at.single(element, "origin")? {
-            Some(origin) => {
-                if let Some(byte) = attribute_start(origin, "quat_xyzw") {
-                    return Err(at.error(
-                        byte,
-                        "<origin quat_xyzw> (URDF 1.1) is not read: write the rotation as `rpy`".to_owned(),
-                    ));
-                }
-                let (xyz, rpy) =
-                    (at.vector(origin, "xyz")?.unwrap_or([0.0; 3]), at.vector(origin, "rpy")?.unwrap_or([0.0; 3]));
-                FixedTransform::from_xyz_rpy(xyz, rpy.map(Angle::Radians))
-            }
-            None => FixedTransform::identity(),
-        };
+        let origin = at.origin(element)?;
         let Some(geometry) = at.single(element, "geometry")? else {
             return Err(at.error(start, "<collision> needs a <geometry> element".to_owned()));
         };
@@ -145,6 +141,37 @@ fn link_collisions(
         });
     }
     Ok(out)
+}
+
+/// A `<link>`'s `<inertial>`, if it has one (a second is an error): its `<origin>` (zeros by
+/// default), `<mass value>` and `<inertia>` with all six entries, each required as urdfdom
+/// requires it. The values are taken as written: a rigid body's rules are checked where dynamics
+/// are asked for ([`Inertial::fault`]).
+fn link_inertial(
+    doc: &Document<'_>,
+    node: Node<'_, '_>,
+    link: &str,
+) -> Result<Option<InertialDescription>, LoadErrorKind> {
+    let at = At { doc, element: Some(Element::Link(link.to_owned())) };
+    let Some(element) = at.single(node, "inertial")? else { return Ok(None) };
+    let start = element.range().start;
+    let origin = at.origin(element)?;
+    let Some(mass) = at.single(element, "mass")? else {
+        return Err(at.error(start, "<inertial> needs a <mass value=\"...\"> element".to_owned()));
+    };
+    let mass = at.required_number(mass, "value")?;
+    let Some(tensor) = at.single(element, "inertia")? else {
+        return Err(at.error(start, "<inertial> needs an <inertia ixx ixy ixz iyy iyz izz> element".to_owned()));
+    };
+    let mut inertia = [0.0; 6];
+    for (slot, name) in inertia.iter_mut().zip(["ixx", "ixy", "ixz", "iyy", "iyz", "izz"]) {
+        *slot = at.required_number(tensor, name)?;
+    }
+    Ok(Some(InertialDescription {
+        link: link.to_owned(),
+        line: Some(row(doc.text_pos_at(start))),
+        inertial: Inertial { mass, origin, inertia },
+    }))
 }
 
 /// One `<joint>`.
@@ -282,6 +309,20 @@ impl<'input> At<'_, 'input> {
             Some(second) => Err(self.error(second.range().start, format!("more than one <{tag}>"))),
             None => Ok(first),
         }
+    }
+
+    /// The transform of `node`'s `<origin xyz rpy>` (zeros by default; one at most), for a
+    /// link's `<collision>` or `<inertial>`; URDF 1.1's `quat_xyzw` is refused, as a joint's is.
+    fn origin(&self, node: Node<'_, 'input>) -> Result<FixedTransform, LoadErrorKind> {
+        let Some(origin) = self.single(node, "origin")? else { return Ok(FixedTransform::identity()) };
+        if let Some(byte) = attribute_start(origin, "quat_xyzw") {
+            return Err(
+                self.error(byte, "<origin quat_xyzw> (URDF 1.1) is not read: write the rotation as `rpy`".to_owned())
+            );
+        }
+        let (xyz, rpy) =
+            (self.vector(origin, "xyz")?.unwrap_or([0.0; 3]), self.vector(origin, "rpy")?.unwrap_or([0.0; 3]));
+        Ok(FixedTransform::from_xyz_rpy(xyz, rpy.map(Angle::Radians)))
     }
 
     /// The attribute `name` of `node`, which URDF requires.

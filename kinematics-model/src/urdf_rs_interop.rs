@@ -15,17 +15,21 @@
 //! `urdf_rs::Robot` of urdf-rs 0.9, the version `k` 0.32 uses, through `Description::from_urdf_rs`
 //! and `KinematicTree::from_urdf_rs(robot, ExactAngles)`. Errors name the joint without a line, and
 //! a moving joint whose limits are urdf-rs's all-zero stand-in for a missing `<limit>` is refused.
-//! `tests/urdf_rs_parity.rs` requires equal trees from both readers, or the same refusal.
+//! A link without `<inertial>` comes from urdf-rs with a massless one, which the model reads as
+//! none, as it reads a written zero mass with a zero tensor. `tests/urdf_rs_parity.rs` requires
+//! equal trees from both readers (trees do not compare lines), or the same refusal.
 
 use urdf_rs::{JointLimit, JointType};
 
 use crate::angle::Angle;
 use crate::collision::{Collision, Shape};
 use crate::description::{
-    CollisionDescription, Description, JointDescription, JointTypeDescription, LimitsDescription, MimicDescription,
+    CollisionDescription, Description, InertialDescription, JointDescription, JointTypeDescription, LimitsDescription,
+    MimicDescription,
 };
 use crate::error::{Element, LoadErrorKind};
 use crate::exactness::ExactAngles;
+use crate::inertia::Inertial;
 use crate::transform::FixedTransform;
 use crate::tree::KinematicTree;
 use crate::urdf::{UrdfJoint, needs_limit};
@@ -47,7 +51,10 @@ impl Description {
     /// - a word that is no number inside `xyz` or `rpy` is skipped by urdf-rs (`"1 x 0 0"` reads as
     ///   `1 0 0`), where the built-in reader refuses the attribute; after reading nothing shows it;
     /// - an `<origin quat_xyzw>` becomes `rpy` in a URDF 1.1 file (so the rotation is kept, where
-    ///   the built-in reader refuses the attribute) and is ignored in a 1.0 file, as urdfdom does.
+    ///   the built-in reader refuses the attribute) and is ignored in a 1.0 file, as urdfdom does;
+    /// - a link without `<inertial>` reads as urdf-rs's default, mass 0 and a zero tensor at the
+    ///   link's origin, which cannot be told from such a written `<inertial>`; the model reads
+    ///   both as a massless link (no inertial), so nothing is lost.
     ///
     /// Where URDF itself gives a default (no `<origin>`, no `<axis>`, no mimic `multiplier` or
     /// `offset`), urdf-rs and the built-in reader give the same one.
@@ -76,7 +83,7 @@ impl Description {
             collisions: robot.links.iter().flat_map(collisions).collect(),
             ignored: Vec::new(),
             excluded_pairs: Vec::new(),
-            inertials: Vec::new(),
+            inertials: robot.links.iter().map(inertial).collect(),
             inertia_from_geometry: Vec::new(),
         })
     }
@@ -104,6 +111,30 @@ fn collisions(link: &urdf_rs::Link) -> Vec<CollisionDescription> {
             }
         })
         .collect()
+}
+
+/// A link's mass and inertia as urdf-rs gives them (no line: urdf-rs keeps none).
+///
+/// urdf-rs cannot tell a link without `<inertial>`: `urdf_rs::Link::inertial` is no `Option`
+/// but a field read with `#[serde(default)]`, so a missing element is `Inertial::default()`
+/// (mass 0, a zero tensor, at the link's origin), the same value as a written all-zero
+/// `<inertial>`. The conversion takes what it gives, and the model reads a zero mass with a zero
+/// tensor as no inertial, as it reads the built-in reader's missing one (a massless link). Inside an `<inertial>`, urdf-rs requires `<mass value>` and all six `<inertia>`
+/// entries and refuses a second `<inertial>` ("duplicate field"), as urdfdom and the built-in
+/// reader do.
+fn inertial(link: &urdf_rs::Link) -> InertialDescription {
+    let i = &link.inertial;
+    let (xyz, rpy) = (i.origin.xyz.0, i.origin.rpy.0);
+    let t = &i.inertia;
+    InertialDescription {
+        link: link.name.clone(),
+        line: None,
+        inertial: Inertial {
+            mass: i.mass.value,
+            origin: FixedTransform::from_xyz_rpy(xyz, rpy.map(Angle::Radians)),
+            inertia: [t.ixx, t.ixy, t.ixz, t.iyy, t.iyz, t.izz],
+        },
+    }
 }
 
 impl KinematicTree {

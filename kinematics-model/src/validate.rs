@@ -27,7 +27,8 @@ pub(crate) fn build(d: &Description) -> Result<KinematicTree, ModelErrors> {
     tree.vacuous_mimics = vacuous;
     tree.ignored = d.ignored.clone();
     tree.excluded_pairs = d.excluded_pairs.clone();
-    tree.inertial_lines = d.inertials.iter().filter_map(|i| Some((i.link.clone(), i.line?))).collect();
+    tree.inertial_lines =
+        crate::tree::Lines(d.inertials.iter().filter_map(|i| Some((i.link.clone(), i.line?))).collect());
     tree.inertia_from_geometry = d.inertia_from_geometry.clone();
     Ok(tree)
 }
@@ -460,7 +461,8 @@ fn assemble(d: &Description, root: usize) -> KinematicTree {
     let mut stack: Vec<(&str, Option<&JointDescription>)> = vec![(d.links[root].as_str(), None)];
     while let Some((name, via)) = stack.pop() {
         let collisions = geometry.remove(name).unwrap_or_default();
-        let inertial = inertials.remove(name);
+        // A zero mass with a zero tensor is a massless link wherever its frame is: no inertial.
+        let inertial = inertials.remove(name).filter(|i| !(i.mass == 0.0 && i.inertia == [0.0; 6]));
         links.push(Link { name: name.to_owned(), parent_joint: None, child_joints: Vec::new(), collisions, inertial });
         order.extend(via);
         for j in below.get(name).into_iter().flatten().rev() {

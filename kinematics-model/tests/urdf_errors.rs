@@ -265,11 +265,11 @@ fn what_urdf_allows_to_leave_out_takes_its_default() {
       <joint name=\"j2\" type=\"continuous\"><parent link=\"b\"/><child link=\"c\"/><mimic joint=\"j1\"/></joint></robot>";
     let tree = parse_source("arm.urdf", text).unwrap();
     assert_eq!(tree.joint_by_name("j2").unwrap().motion.value(&[0.5]), Some(0.5));
-    // Ignored: meshes, inertials, transmissions, gazebo, xacro leftovers, unknown elements.
+    // Ignored: visual meshes, transmissions, gazebo, xacro leftovers, unknown elements.
     let text = "<robot name=\"r\" xmlns:xacro=\"http://www.ros.org/wiki/xacro\">
       <xacro:property name=\"l\" value=\"1\"/>
       <material name=\"blue\"><color rgba=\"0 0 1 1\"/></material>
-      <link name=\"a\"><visual><geometry><mesh filename=\"a.dae\"/></geometry></visual><inertial><mass value=\"1\"/></inertial></link>
+      <link name=\"a\"><visual><geometry><mesh filename=\"a.dae\"/></geometry></visual><inertial><mass value=\"1\"/><inertia ixx=\"1\" ixy=\"0\" ixz=\"0\" iyy=\"1\" iyz=\"0\" izz=\"1\"/></inertial></link>
       <link name=\"b\"/>
       <joint name=\"j\" type=\"fixed\"><parent link=\"a\"/><child link=\"b\"/><dynamics damping=\"x\"/><calibration rising=\"0\"/></joint>
       <transmission name=\"t\"><type>SimpleTransmission</type></transmission>

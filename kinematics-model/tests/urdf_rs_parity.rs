@@ -1,8 +1,10 @@
 //! Every URDF file in the repository, read by the built-in reader and by urdf-rs then
 //! [`KinematicTree::from_urdf_rs`], gives the same tree (links, joints, parents, types, axes,
-//! origins with their exact angles, limits, mimics, the recognised angles), with the exactness
-//! policy on and off; a file one way refuses, the other refuses too. The reader moved from
-//! urdf-rs to roxmltree with such a test; it comes back for the `urdf-rs` feature.
+//! origins with their exact angles, limits, mimics, the recognised angles, the inertials), with
+//! the exactness policy on and off (urdf-rs gives a massless inertial where the file has none,
+//! which the model reads as none, and keeps no lines, which trees do not compare); a file one way
+//! refuses, the other refuses too. The reader moved from urdf-rs to roxmltree with such a test;
+//! it comes back for the `urdf-rs` feature.
 #![cfg(feature = "urdf-rs")]
 #![allow(clippy::panic, clippy::unwrap_used, clippy::expect_used)] // test helpers fail loudly
 
@@ -85,6 +87,7 @@ fn every_urdf_in_the_repository_derives_the_same_robot_both_ways() {
             match (built_in, via_urdf_rs(text, policy)) {
                 (Ok(ours), UrdfRs::Tree(theirs)) => {
                     assert_eq!(ours, *theirs, "{name} ({policy:?})");
+                    same_inertials(&ours, &theirs, name);
                     // Spelled out, what the equality covers for exactness.
                     assert_eq!(ours.recognised_angles(), theirs.recognised_angles(), "{name}");
                     accepted.push(name.clone());
@@ -126,6 +129,18 @@ fn every_urdf_in_the_repository_derives_the_same_robot_both_ways() {
         accepted.len() / 2,
         refused.len() / 2
     );
+}
+
+/// Spelled out, what the comparison of trees covers for inertials: each link's as written (none
+/// where the file has none); lines from the built-in reader only.
+fn same_inertials(ours: &KinematicTree, theirs: &KinematicTree, file: &str) {
+    assert_eq!(ours.links().len(), theirs.links().len(), "{file}");
+    for (our, their) in ours.links().iter().zip(theirs.links()) {
+        assert_eq!(our.name, their.name, "{file}");
+        assert_eq!(their.inertial, our.inertial, "{file}: `{}`", our.name);
+        assert_eq!(ours.inertial_line(&our.name).is_some(), our.inertial.is_some(), "{file}: `{}`", our.name);
+        assert_eq!(theirs.inertial_line(&our.name), None, "{file}");
+    }
 }
 
 /// The refused fixtures, each refused where it should be: a model fault by the same rules after
@@ -182,6 +197,33 @@ fn what_urdf_rs_cannot_tell() {
     assert!(ours.unwrap_err().to_string().contains("needs 3 numbers, found 4"));
     let UrdfRs::Tree(tree) = theirs else { panic!("{theirs:?}") };
     assert_eq!(tree.joint_by_name("elbow").unwrap().axis, [0.0, 0.0, 1.0]);
+
+    // No <inertial>: urdf-rs gives its default, a massless one, which the model reads as none.
+    let (ours, theirs) = both(&arm(r#"type="continuous">"#));
+    assert_eq!(ours.unwrap().link_by_name("upper").unwrap().inertial, None);
+    let UrdfRs::Tree(tree) = theirs else { panic!("{theirs:?}") };
+    assert_eq!(tree.link_by_name("upper").unwrap().inertial, None);
+
+    // An <inertial> without <mass> or with five entries of <inertia>: refused both ways.
+    let inertia = r#"<inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/>"#;
+    let link =
+        |inertial: &str| format!(r#"<robot name="r"><link name="a"><inertial>{inertial}</inertial></link></robot>"#);
+    for inertial in
+        [inertia.to_owned(), r#"<mass value="1"/><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0"/>"#.to_owned()]
+    {
+        let (ours, theirs) = both(&link(&inertial));
+        assert!(ours.is_err(), "{inertial}");
+        assert!(matches!(theirs, UrdfRs::ReadRefused(_)), "{inertial}: {theirs:?}");
+    }
+
+    // Two <inertial>s: refused both ways (urdf-rs: "duplicate field `inertial`").
+    let one = format!(r#"<mass value="1"/>{inertia}"#);
+    let text = format!(
+        r#"<robot name="r"><link name="a"><inertial>{one}</inertial><inertial>{one}</inertial></link></robot>"#
+    );
+    let (ours, theirs) = both(&text);
+    assert!(ours.unwrap_err().to_string().ends_with("more than one <inertial>"));
+    assert!(matches!(theirs, UrdfRs::ReadRefused(_)), "{theirs:?}");
 }
 
 /// A quaternion origin (URDF 1.1): the built-in reader refuses it, naming joint and line;
@@ -237,7 +279,7 @@ fn the_exactness_policy_judges_the_same_numbers() {
     }
 }
 
-/// The model errors with the lines of geometry faults left out (urdf-rs keeps none).
+/// The model errors with the lines of geometry and inertial faults left out (urdf-rs keeps none).
 fn without_lines(errors: &kinematics_model::ModelErrors) -> Vec<kinematics_model::ModelError> {
     errors
         .errors()
@@ -245,6 +287,9 @@ fn without_lines(errors: &kinematics_model::ModelErrors) -> Vec<kinematics_model
         .map(|e| match e {
             kinematics_model::ModelError::Geometry { link, fault, .. } => {
                 kinematics_model::ModelError::Geometry { link: link.clone(), line: None, fault: fault.clone() }
+            }
+            kinematics_model::ModelError::Inertial { link, fault, .. } => {
+                kinematics_model::ModelError::Inertial { link: link.clone(), line: None, fault: fault.clone() }
             }
             other => other.clone(),
         })

@@ -31,6 +31,7 @@
 
 mod collision;
 mod compiled;
+mod dynamics;
 mod error;
 mod fk;
 mod jacobian;
@@ -39,6 +40,7 @@ mod scene;
 
 pub use collision::ReferenceObstacles;
 pub use compiled::ReferenceModel;
+pub use dynamics::{DynamicsError, ReferenceDynamics};
 pub use error::RuntimeError;
 pub use fk::{ReferenceFk, fixed_isometry};
 pub use kinematics_core::{

@@ -1,0 +1,103 @@
+//! Errors of the reference dynamics.
+
+use kinematics_model::inertia::InertiaFault;
+
+use crate::error::RuntimeError;
+
+/// Why [`super::ReferenceDynamics`] refuses a robot or a query.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum DynamicsError {
+    /// A link whose `<inertial>` is no rigid body's ([`kinematics_model::inertia::Inertial::fault`]).
+    #[error("robot `{robot}`: the <inertial> of link `{link}`{}: {fault}", at_line(*.line))]
+    Inertial {
+        /// Robot name.
+        robot: String,
+        /// The link.
+        link: String,
+        /// The line of its `<inertial>`, when read from a file.
+        line: Option<usize>,
+        /// What is wrong with it.
+        #[source]
+        fault: InertiaFault,
+    },
+    /// A link whose mass the description leaves to its geometry (an MJCF body with geoms and no
+    /// `<inertial>`): the reference does not infer inertias.
+    #[error(
+        "robot `{robot}`: link `{link}` has no <inertial> and leaves its mass to be inferred from its geometry, which the dynamics do not do: give it an <inertial>"
+    )]
+    MassFromGeometry {
+        /// Robot name.
+        robot: String,
+        /// The link.
+        link: String,
+    },
+    /// A gravity vector with a NaN or infinite component.
+    #[error("robot `{robot}`: gravity {gravity:?} is not a finite vector")]
+    NonFiniteGravity {
+        /// Robot name.
+        robot: String,
+        /// The gravity given.
+        gravity: [f64; 3],
+    },
+    /// `q` of the wrong length, with a NaN or infinite entry, or with a quaternion that cannot be
+    /// normalised (the forward kinematics' own check).
+    #[error(transparent)]
+    Configuration(#[from] RuntimeError),
+    /// Velocities, accelerations or torques not of one entry per velocity.
+    #[error("robot `{robot}` has {expected} velocities ({names}), but {argument} has {got} values")]
+    WrongLength {
+        /// Robot name.
+        robot: String,
+        /// Which argument (`v`, `a`, `tau`).
+        argument: &'static str,
+        /// The number of velocities.
+        expected: usize,
+        /// Its length.
+        got: usize,
+        /// The velocities' names, for the message.
+        names: String,
+    },
+    /// A NaN or infinite velocity, acceleration or torque.
+    #[error("robot `{robot}`: {argument}[{index}] (`{name}`) is {value}, not a finite number")]
+    NonFiniteValue {
+        /// Robot name.
+        robot: String,
+        /// Which argument (`v`, `a`, `tau`).
+        argument: &'static str,
+        /// Its index.
+        index: usize,
+        /// The name of the velocity it belongs to.
+        name: String,
+        /// The value.
+        value: f64,
+    },
+    /// A result that overflowed (finite inputs too large for it).
+    #[error("robot `{robot}`: the {quantity} overflowed to values that are not finite")]
+    NotFinite {
+        /// Robot name.
+        robot: String,
+        /// What overflowed.
+        quantity: &'static str,
+    },
+    /// A mass matrix that cannot be inverted: these velocities move no mass (or only mass that
+    /// other velocities move the same way), so no torque determines their accelerations.
+    #[error(
+        "robot `{robot}`: the mass matrix is singular: forward dynamics cannot determine the accelerations of {}, which move no mass of their own",
+        names(velocities)
+    )]
+    SingularMassMatrix {
+        /// Robot name.
+        robot: String,
+        /// The velocities it cannot determine ([`kinematics_model::KinematicTree::velocity_names`]).
+        velocities: Vec<String>,
+    },
+}
+
+fn at_line(line: Option<usize>) -> String {
+    line.map(|l| format!(" (line {l})")).unwrap_or_default()
+}
+
+fn names(list: &[String]) -> String {
+    list.iter().map(|n| format!("`{n}`")).collect::<Vec<_>>().join(", ")
+}
