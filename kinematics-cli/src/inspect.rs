@@ -1,7 +1,8 @@
 //! `kinematics inspect FILE`: the tree as text.
 //!
-//! Then its collision geometry (shapes, spheres, bounding spheres, pairs, at a cover and SRDF of
-//! the user's choice), and each leaf's closed-form inverse kinematics family.
+//! Then its links' masses (each link's mass, centre of mass and principal moments, and what breaks
+//! a rigid body's rules), its collision geometry (shapes, spheres, bounding spheres, pairs, at a
+//! cover and SRDF of the user's choice), and each leaf's closed-form inverse kinematics family.
 
 use std::io::Write;
 
@@ -33,6 +34,7 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
     // stands where the spheres would.
     let unread = args.cover.read_meshes(&mut tree, &args.file).err();
     write!(out, "{}", describe(&tree))?;
+    write!(out, "{}", inertias(&tree))?;
     if let Some(error) = unread {
         writeln!(out, "collision geometry: not covered: {error}\n  (or leave meshes out: --skip-meshes)")?;
         return Ok(());
@@ -82,11 +84,12 @@ pub fn collision(tree: &KinematicTree, view: &CollisionView<'_>) -> Result<Strin
         .flat_map(|(link, c)| c.spheres.iter().map(|&sphere| LinkSphere { link: *link, sphere }))
         .collect();
     let layout = kinematics_compiler::collision_layout::CollisionLayout::new(&spheres);
+    let count = |n: usize, thing: &str| if n == 1 { format!("1 {thing}") } else { format!("{n} {thing}s") };
     out += &format!(
-        "collision geometry: {} elements on {} links, {} spheres ({}{})\n",
-        with.iter().map(|l| l.collisions.len()).sum::<usize>(),
-        with.len(),
-        spheres.len(),
+        "collision geometry: {} on {}, {} ({}{})\n",
+        count(with.iter().map(|l| l.collisions.len()).sum::<usize>(), "element"),
+        count(with.len(), "link"),
+        count(spheres.len(), "sphere"),
         crate::cover::CoverArgs::describe(&view.cover),
         if view.meshes == Meshes::Skip { "; meshes left out" } else { "" }
     );
@@ -347,6 +350,55 @@ pub fn describe(tree: &KinematicTree) -> String {
         );
     }
     out += &ik_families(tree);
+    out
+}
+
+/// The links' masses as the description gives them: the total, each link with a mass (its
+/// centre of mass in its frame and principal moments), the massless ones, and each inertia that
+/// breaks a rigid body's rules (which dynamics refuse) or is left to MuJoCo to infer.
+pub fn inertias(tree: &KinematicTree) -> String {
+    let with: Vec<_> = tree.links().iter().filter_map(|l| l.inertial.as_ref().map(|i| (l, i))).collect();
+    let inferred = tree.inertia_from_geometry();
+    if with.is_empty() && inferred.is_empty() {
+        return "mass: none given (no <inertial>)\n".to_owned();
+    }
+    let total: f64 = with.iter().map(|(_, i)| i.mass).sum();
+    let mut out = format!("mass: {} kg on {} of {} links\n", short(total), with.len(), tree.links().len());
+    let width = column_width(with.iter().map(|(l, _)| l.name.as_str()));
+    let point = |p: [f64; 3]| format!("({}, {}, {})", short(p[0]), short(p[1]), short(p[2]));
+    for (link, inertial) in &with {
+        let [a, b, c] = inertial.principal_moments();
+        out += &format!(
+            "  {}  {} kg at {}; principal moments {}, {}, {} kg m^2\n",
+            pad(&link.name, width),
+            short(inertial.mass),
+            point(inertial.origin.apply([0.0; 3])),
+            short(a),
+            short(b),
+            short(c)
+        );
+    }
+    let massless: Vec<&str> = tree
+        .links()
+        .iter()
+        .filter(|l| l.inertial.is_none() && !inferred.contains(&l.name))
+        .map(|l| l.name.as_str())
+        .collect();
+    if !massless.is_empty() {
+        out += &format!("  massless: {}\n", massless.join(", "));
+    }
+    if !inferred.is_empty() {
+        out += &format!(
+            "  left to MuJoCo to infer from their geoms (dynamics refuse them; write an <inertial>): {}\n",
+            inferred.join(", ")
+        );
+    }
+    for (link, inertial) in &with {
+        if let Some(fault) = inertial.fault(false) {
+            let line = tree.inertial_line(&link.name).map(|l| format!(" (line {l})")).unwrap_or_default();
+            out += &format!("  link `{}`{line}: {fault}\n", link.name);
+        }
+    }
     out
 }
 

@@ -1174,3 +1174,41 @@ fn collision_pairs_writes_an_srdf_the_derive_reads() {
     }
     assert!(fails(&["collision-pairs", "robots/planar_2r.toml"]).contains("no collision geometry"));
 }
+
+#[test]
+fn inspect_lists_the_links_masses_and_the_inertias_dynamics_refuse() {
+    // The total is the sum of the file's masses, each link with one listed, the others massless.
+    let tree = load("robots/ur5.urdf");
+    let masses: Vec<(&str, f64)> =
+        tree.links().iter().filter_map(|l| l.inertial.as_ref().map(|i| (l.name.as_str(), i.mass))).collect();
+    let total: f64 = masses.iter().map(|(_, m)| m).sum();
+    let printed = ok(&["inspect", "robots/ur5.urdf", "--skip-meshes"]);
+    let header =
+        format!("mass: {} kg on {} of {} links\n", (total * 1e6).round() / 1e6, masses.len(), tree.links().len());
+    assert!(printed.contains(&header), "{header}{printed}");
+    for (link, mass) in &masses {
+        assert!(printed.contains(&format!(" {link} ")) && printed.contains(&format!(" {mass} kg at ")), "{link}");
+    }
+    assert!(printed.contains("  massless: ee_link, tool0, base\n"), "{printed}");
+    // A negative mass and a tensor breaking the triangle inequality are named with their lines.
+    let dir = scratch("inspect_masses");
+    let file = dir.join("bad.urdf");
+    std::fs::write(
+        &file,
+        "<robot name=\"r\">\n<link name=\"a\">\n<inertial><mass value=\"-1\"/><inertia ixx=\"1\" ixy=\"0\" ixz=\"0\" \
+         iyy=\"1\" iyz=\"0\" izz=\"1\"/></inertial>\n</link>\n<link name=\"b\">\n<inertial><mass value=\"1\"/><inertia \
+         ixx=\"1\" ixy=\"0\" ixz=\"0\" iyy=\"1\" iyz=\"0\" izz=\"3\"/></inertial>\n</link>\n<joint name=\"j\" \
+         type=\"continuous\"><parent link=\"a\"/><child link=\"b\"/></joint>\n</robot>\n",
+    )
+    .unwrap();
+    let printed = ok(&["inspect", file.to_str().unwrap()]);
+    assert!(printed.contains("  link `a` (line 3): its mass is -1 kg (must be zero or more)\n"), "{printed}");
+    assert!(printed.contains("  link `b` (line 6): its inertia's principal moments [1.0, 1.0, 3.0]"), "{printed}");
+    std::fs::remove_dir_all(&dir).unwrap();
+    // An MJCF body left to MuJoCo's inference is named.
+    let printed = ok(&["inspect", "robots/walker.xml"]);
+    assert!(
+        printed
+            .contains("left to MuJoCo to infer from their geoms (dynamics refuse them; write an <inertial>): pelvis\n")
+    );
+}
