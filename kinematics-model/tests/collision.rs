@@ -118,3 +118,74 @@ fn an_srdf_naming_an_unknown_link_is_refused_with_the_line_and_a_suggestion() {
     ));
     assert!(matches!(parse_srdf("<robot>"), Err(LoadErrorKind::Syntax { .. })));
 }
+
+/// The Panda described by its primitives (`panda_primitives.urdf`: franka_description's capsules,
+/// each a cylinder and two end spheres, and the fingers' boxes) takes at most 100 spheres at the
+/// default cover (issue 59's target; the subdivision took 5,236), and every point sampled on
+/// every element's surface lies inside a sphere of its link.
+#[test]
+fn the_primitive_panda_is_covered_by_at_most_100_spheres() {
+    use kinematics_model::collision::{Cover, Meshes, Shape, link_spheres};
+    let tree = robot("panda_primitives.urdf");
+    let spheres = link_spheres(&tree, &Cover::default(), Meshes::Read).unwrap();
+    assert!(spheres.len() <= 100, "{} spheres", spheres.len());
+    let n = 24;
+    let t = |i: usize| -1.0 + 2.0 * i as f64 / n as f64;
+    let mut checked = 0;
+    for (id, link) in tree.links().iter().enumerate() {
+        let own: Vec<_> = spheres.iter().filter(|s| s.link == LinkId(id)).map(|s| s.sphere).collect();
+        for element in &link.collisions {
+            // Points on the shape's surface in its own frame.
+            let mut points = Vec::new();
+            match element.shape {
+                Shape::Sphere { radius } | Shape::Cylinder { radius, .. } => {
+                    let half = match element.shape {
+                        Shape::Cylinder { length, .. } => length / 2.0,
+                        _ => 0.0,
+                    };
+                    for i in 0..=n {
+                        let a = std::f64::consts::PI * t(i);
+                        for j in 0..=n {
+                            let polar = std::f64::consts::PI * (j as f64 / n as f64);
+                            let r = radius * polar.sin();
+                            // A sphere's surface; a cylinder's wall and caps.
+                            points.push([r * a.cos(), r * a.sin(), radius * polar.cos()]);
+                            points.push([radius * a.cos(), radius * a.sin(), t(j) * half]);
+                            points.push([r * a.cos(), r * a.sin(), half]);
+                            points.push([r * a.cos(), r * a.sin(), -half]);
+                        }
+                    }
+                    if half == 0.0 {
+                        points.retain(|p| (p[0] * p[0] + p[1] * p[1] + p[2] * p[2]).sqrt() >= radius * (1.0 - 1e-9));
+                    }
+                }
+                Shape::Box { size } => {
+                    for i in 0..=n {
+                        for j in 0..=n {
+                            for axis in 0..3 {
+                                for sign in [-1.0, 1.0] {
+                                    let mut p = [0.0; 3];
+                                    p[axis] = sign * size[axis] / 2.0;
+                                    p[(axis + 1) % 3] = t(i) * size[(axis + 1) % 3] / 2.0;
+                                    p[(axis + 2) % 3] = t(j) * size[(axis + 2) % 3] / 2.0;
+                                    points.push(p);
+                                }
+                            }
+                        }
+                    }
+                }
+                ref other => panic!("{} has a {}", link.name, other.name()),
+            }
+            for p in points {
+                let p = element.origin.apply(p);
+                let inside = own.iter().any(|s| {
+                    let d = (0..3).map(|k| (p[k] - s.center[k]).powi(2)).sum::<f64>().sqrt();
+                    d <= s.radius * (1.0 + 1e-12)
+                });
+                assert!(inside, "{}: {p:?} is in no sphere of its link", link.name);
+                checked += 1;
+            }
+        }
+    }
+    assert!(checked > 10_000, "{checked}");
+}
