@@ -169,33 +169,28 @@ impl Solid {
         }
     }
 
-    /// For a primitive, points of its surface whose projections' convex hull is its outline in the
-    /// view whose screen axes are the root frame's coordinates `u` and `v`, drawn at `scale` pixels
-    /// a metre; `None` for a mesh.
-    pub fn outline_points(&self, u: usize, v: usize, scale: f64) -> Option<Vec<[f64; 3]>> {
-        let Form::Convex { pose, shape } = &self.form else { return None };
+    /// A primitive placed at `pose`: points of its surface whose projections' convex hull is its
+    /// outline in the view whose screen axes are the root frame's coordinates `u` and `v`, drawn
+    /// at `scale` pixels a metre.
+    pub fn outline_points(pose: &Isometry3<f64>, shape: Convex, u: usize, v: usize, scale: f64) -> Vec<[f64; 3]> {
         if let Convex::Box { half } = shape {
-            return Some(
-                (0..8)
-                    .map(|k| {
-                        let corner = Vector3::from_fn(|i, _| if k >> i & 1 == 1 { half[i] } else { -half[i] });
-                        array(&(pose * Point3::from(corner)).coords)
-                    })
-                    .collect(),
-            );
+            return (0..8)
+                .map(|k| {
+                    let corner = Vector3::from_fn(|i, _| if k >> i & 1 == 1 { half[i] } else { -half[i] });
+                    array(&(pose * Point3::from(corner)).coords)
+                })
+                .collect();
         }
         let n = directions(shape.roundness() * scale);
-        Some(
-            (0..n)
-                .map(|k| {
-                    let angle = 2.0 * PI * k as f64 / n as f64;
-                    let mut e = Vector3::zeros();
-                    e[u] = angle.cos();
-                    e[v] = angle.sin();
-                    Self::support(pose, *shape, e)
-                })
-                .collect(),
-        )
+        (0..n)
+            .map(|k| {
+                let angle = 2.0 * PI * k as f64 / n as f64;
+                let mut e = Vector3::zeros();
+                e[u] = angle.cos();
+                e[v] = angle.sin();
+                Self::support(pose, shape, e)
+            })
+            .collect()
     }
 }
 

@@ -15,7 +15,7 @@
 
 use std::fmt::Write as _;
 
-use super::geometry::Form;
+use super::geometry::{Form, Solid};
 use super::silhouette::{self, CELL};
 use super::{AxisStyle, ObstacleShape, Scene};
 
@@ -481,8 +481,8 @@ fn geometry(scene: &Scene, placed: &Placed) -> String {
         );
         let mut d = String::new();
         match &solid.form {
-            Form::Convex { .. } => {
-                let points = solid.outline_points(u, v, placed.scale).unwrap_or_default();
+            Form::Convex { pose, shape } => {
+                let points = Solid::outline_points(pose, *shape, u, v, placed.scale);
                 let outline = silhouette::hull(points.into_iter().map(|p| placed.screen(p)).collect());
                 for (k, (x, y)) in outline.into_iter().enumerate() {
                     let _ = write!(d, "{}{},{}", if k == 0 { "M" } else { " L" }, px(x), px(y));

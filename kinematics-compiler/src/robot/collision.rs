@@ -265,6 +265,22 @@ fn tables(cx: &Context<'_>, frame: &CollisionLayout) -> Vec<TokenStream> {
     ]
 }
 
+/// How `self_collides`' doc states the pairs were chosen: the SRDF's or the adjacency rule, less
+/// the pairs the description rules out.
+fn pairs_rule(cx: &Context<'_>, rule: kinematics_model::collision::PairRule) -> String {
+    let mut out = match rule {
+        kinematics_model::collision::PairRule::Srdf => "less the SRDF's disabled pairs".to_owned(),
+        kinematics_model::collision::PairRule::Adjacent => {
+            "less the links of bodies joined by one joint (no SRDF given)".to_owned()
+        }
+    };
+    let excluded = cx.tree().excluded_pairs().len();
+    if excluded > 0 {
+        out += &format!(", less the {excluded} link pairs the description rules out (MJCF `<contact>`)");
+    }
+    out
+}
+
 /// `collides` and `self_collides` on the type, as the surface lists them, on the checks' body and
 /// tables ([`bodies`]): per scalar on one configuration (dispatched) and in batches (lanes of the
 /// width the CPU fills), and on any lane type.
@@ -278,16 +294,7 @@ pub(super) fn checks(cx: &Context<'_>, out: &mut Functions) {
     let pose_values = if frame.links.len() == 1 { quote!([#g(q)]) } else { quote!(#g(q)) };
     let poses = quote!(&#pose_values);
     let ahead = check_points(&frame).is_some();
-    let mut pairs_rule = match plan.pairs.rule {
-        kinematics_model::collision::PairRule::Srdf => "less the SRDF's disabled pairs".to_owned(),
-        kinematics_model::collision::PairRule::Adjacent => {
-            "less the links of bodies joined by one joint (no SRDF given)".to_owned()
-        }
-    };
-    let excluded = cx.tree().excluded_pairs().len();
-    if excluded > 0 {
-        pairs_rule += &format!(", less the {excluded} link pairs the description rules out (MJCF `<contact>`)");
-    }
+    let pairs_rule = pairs_rule(cx, plan.pairs.rule);
     for (function, form, signature) in cx.render.collision_items() {
         let sig = signature.tokens();
         let (what, check) = match function {

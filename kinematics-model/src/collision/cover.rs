@@ -122,7 +122,7 @@ pub(crate) struct Geometry<'a> {
     core: [f64; 3],
     /// Cylinders that are capsules as written ([`Geometry::written_capsules`]), with the radius of
     /// a capsule inside the three elements and of one holding them.
-    capsules: BTreeMap<usize, (f64, f64)>,
+    capsules: BTreeMap<usize, WrittenCapsule>,
     /// The end spheres those capsules absorb.
     absorbed: BTreeSet<usize>,
 }
@@ -165,15 +165,11 @@ impl<'a> Geometry<'a> {
             let d = match &self.meshes[k] {
                 Some(mesh) => mesh.depth(p),
                 // A written capsule's depth, of the capsule inside its three elements.
-                None if self.capsules.contains_key(&k) => match (self.capsules[&k], &e.shape) {
-                    ((inner, _), &Shape::Cylinder { length, .. }) => {
-                        let capsule = Shape::Capsule { radius: inner, length };
-                        #[allow(clippy::expect_used, reason = "invariant: a capsule's depth is defined")]
-                        let d = capsule.depth(e.origin.apply_inverse(p)).expect("a capsule's depth");
-                        d.max(e.shape.depth(e.origin.apply_inverse(p)).unwrap_or(d))
-                    }
-                    _ => continue,
-                },
+                None if self.capsules.contains_key(&k) => {
+                    #[allow(clippy::expect_used, reason = "invariant: a capsule's depth is defined")]
+                    let d = self.capsules[&k].inner.depth(e.origin.apply_inverse(p)).expect("a capsule's depth");
+                    d
+                }
                 None if self.takes_part(k) => {
                     #[allow(clippy::expect_used, reason = "invariant: only a mesh has no depth, and meshes are `Some`")]
                     let d = e.shape.depth(e.origin.apply_inverse(p)).expect("a primitive's depth is defined");
@@ -215,10 +211,7 @@ impl<'a> Geometry<'a> {
             if absorbed.contains(&k) {
                 continue;
             }
-            let shape = match (capsules.get(&k), e.shape.clone()) {
-                (Some(&(_, radius)), Shape::Cylinder { length, .. }) => Shape::Capsule { radius, length },
-                (_, shape) => shape,
-            };
+            let shape = capsules.get(&k).map_or_else(|| e.shape.clone(), |c| c.outer.clone());
             match shape {
                 Shape::Sphere { radius } => out.push(Piece::Ball { center: e.origin.apply([0.0; 3]), radius }),
                 Shape::Capsule { radius, length } => {
@@ -264,7 +257,7 @@ impl Geometry<'_> {
     /// difference, so it holds the three elements whole, and the inner one shrinks by it, so the
     /// elements hold it: its pieces are cut along the segment, as a capsule's are, rather than
     /// into wedges and two uncut balls, and depths are the inner capsule's (lower bounds).
-    fn written_capsules(&self) -> (BTreeMap<usize, (f64, f64)>, BTreeSet<usize>) {
+    fn written_capsules(&self) -> (BTreeMap<usize, WrittenCapsule>, BTreeSet<usize>) {
         let (mut capsules, mut absorbed) = (BTreeMap::new(), BTreeSet::new());
         for (k, e) in self.elements.iter().enumerate() {
             let Shape::Cylinder { radius, length } = e.shape else { continue };
@@ -285,7 +278,9 @@ impl Geometry<'_> {
                 shrunk = shrunk.min(r - off);
             }
             if let [a, b] = ends[..] {
-                capsules.insert(k, (shrunk, grown));
+                let (inner, outer) =
+                    (Shape::Capsule { radius: shrunk, length }, Shape::Capsule { radius: grown, length });
+                capsules.insert(k, WrittenCapsule { inner, outer });
                 absorbed.extend([a, b]);
             }
         }
@@ -296,6 +291,13 @@ impl Geometry<'_> {
 /// Corners of the polygon about a capsule slice's cut face: they lie `1 / cos(pi / 32) - 1`,
 /// half a percent of the radius, beyond the circle.
 const RING: usize = 32;
+
+/// A capsule written as a cylinder and two end spheres: one capsule its elements hold (for depths)
+/// and one that holds them (for pieces).
+struct WrittenCapsule {
+    inner: Shape,
+    outer: Shape,
+}
 
 /// How far (m) a written capsule's end sphere may lie from the cylinder's end, or its radius
 /// differ from the cylinder's, and still be read as one capsule (the capsule grows by it).
