@@ -19,6 +19,7 @@
 //! ```
 
 pub mod collision_layout;
+pub mod dynamics;
 pub mod emit;
 mod error;
 pub mod ik;

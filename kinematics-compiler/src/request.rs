@@ -584,25 +584,7 @@ impl Compiled {
     ///
     /// If `values` has fewer than [`Compiled::dof`] values.
     pub fn variables(&self, values: &[f64]) -> Vec<f64> {
-        let (n, nv) = (self.dof(), self.velocity_dof());
-        let mut vars: Vec<f64> = values[..n].to_vec();
-        vars.extend((0..nv).map(|i| values.get(n + i).copied().unwrap_or(0.0)));
-        for &start in &self.quaternions {
-            let [x, y, z, w] = [values[start], values[start + 1], values[start + 2], values[start + 3]];
-            let s = 2.0 / (x * x + y * y + z * z + w * w);
-            vars.extend([
-                1.0 - s * (y * y + z * z),
-                s * (x * y - z * w),
-                s * (x * z + y * w),
-                s * (x * y + z * w),
-                1.0 - s * (x * x + z * z),
-                s * (y * z - x * w),
-                s * (x * z - y * w),
-                s * (y * z + x * w),
-                1.0 - s * (x * x + y * y),
-            ]);
-        }
-        vars
+        variables(self.dof(), self.velocity_dof(), &self.quaternions, values)
     }
 
     /// Whether the poses (or positions) are outputs.
@@ -709,4 +691,33 @@ impl Compiled {
         let names = crate::emit::Names::new(&self.graph, &self.outputs()).with_sizes(self.dof(), self.velocity_dof());
         self.frames[index].transform.entries().iter().map(|&id| crate::emit::latex(&self.graph, &names, id)).collect()
     }
+}
+
+/// Every variable of a graph from the joint positions (`n` of them) and, when given, the `nv`
+/// rates after them: `q`, `qd` (zeros when not given), and each floating or spherical joint's
+/// rotation (its quaternion, starting at each of `quaternions`, normalised, row-major), as the
+/// generated code computes them.
+///
+/// # Panics
+///
+/// If `values` has fewer than `n` values.
+pub(crate) fn variables(n: usize, nv: usize, quaternions: &[usize], values: &[f64]) -> Vec<f64> {
+    let mut vars: Vec<f64> = values[..n].to_vec();
+    vars.extend((0..nv).map(|i| values.get(n + i).copied().unwrap_or(0.0)));
+    for &start in quaternions {
+        let [x, y, z, w] = [values[start], values[start + 1], values[start + 2], values[start + 3]];
+        let s = 2.0 / (x * x + y * y + z * z + w * w);
+        vars.extend([
+            1.0 - s * (y * y + z * z),
+            s * (x * y - z * w),
+            s * (x * z + y * w),
+            s * (x * y + z * w),
+            1.0 - s * (x * x + z * z),
+            s * (y * z - x * w),
+            s * (x * z - y * w),
+            s * (y * z + x * w),
+            1.0 - s * (x * x + y * y),
+        ]);
+    }
+    vars
 }

@@ -95,7 +95,9 @@ fn displacement(g: &mut ExprGraph, value: &LinearAngle) -> super::graph::ExprId 
     sum
 }
 
-fn lower_fixed(g: &mut ExprGraph, t: &FixedTransform, steps: &mut Vec<Step>) {
+/// The steps of a fixed transform (its translations and rotations by constant angles, exact ones
+/// kept exact), appended to `steps`.
+pub(crate) fn lower_fixed(g: &mut ExprGraph, t: &FixedTransform, steps: &mut Vec<Step>) {
     for step in t.steps() {
         match *step {
             Elementary::Translation(v) => steps.push(Step::Translate(const_vec(g, v))),

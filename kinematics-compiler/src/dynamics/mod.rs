@@ -1,0 +1,265 @@
+//! The dynamics stage: a robot's rigid-body dynamics from its links' inertias, as expressions in
+//! the same graph, passes and emitter as its poses.
+//!
+//! What it owns: [`compile_dynamics`], which checks the inertias (the model's rules, mass left to
+//! geometry, a finite gravity), builds the bodies (`bodies`: one per elementary motion, fixed joints
+//! lumped at compile time) and writes one of the [`DynamicsFunction`]s over them symbolically
+//! (`recursive`: Newton-Euler, composite first moments for gravity, composite rigid bodies for the
+//! mass matrix; `solve`: forward dynamics by the mass matrix's `L^T D L` factorisation, which keeps
+//! the tree's sparsity); and [`CompiledDynamics`], the result, with its operation counts and a
+//! numeric evaluator. Zeros fold as the nodes are built (an axis along `z` leaves one entry of a
+//! rotation's projection; a massless link carries nothing), constants fold, and common
+//! subexpressions are shared, so the code is what a careful hand would write for this robot.
+//!
+//! Conventions are the runtime reference's (`kinematics_runtime::ReferenceDynamics`): velocities,
+//! accelerations and forces have one entry per velocity (a floating base's six in its own axes,
+//! linear first), a mimic joint's torque is folded into its source's, gravity is a vector in the
+//! root's frame, and `gravity_torques` are the torques that hold the robot still.
+
+mod algebra;
+mod bodies;
+mod recursive;
+mod solve;
+
+use kinematics_model::KinematicTree;
+
+use crate::error::CompileError;
+use crate::simplify::{EXPR_PASSES, run_expr_passes};
+use crate::stats::OpCount;
+use crate::symbolic::graph::{ExprGraph, ExprId};
+use recursive::NewtonEuler;
+
+/// Gravity along `-z` at the Earth's standard value (m/s^2), the default.
+pub const STANDARD_GRAVITY: [f64; 3] = [0.0, 0.0, -9.81];
+
+/// One function of the dynamics.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum DynamicsFunction {
+    /// `gravity_torques(q)`: the generalized forces that hold the robot still.
+    Gravity,
+    /// `inverse_dynamics(q, qd, qdd)`: the generalized forces that give accelerations `qdd`.
+    InverseDynamics,
+    /// `nonlinear_effects(q, qd)`: Coriolis, centrifugal and gravity forces (inverse dynamics at
+    /// zero acceleration).
+    NonlinearEffects,
+    /// `mass_matrix(q)`: the joint-space inertia matrix, symmetric.
+    MassMatrix,
+    /// `forward_dynamics(q, qd, tau)`: the accelerations the generalized forces `tau` give.
+    ForwardDynamics,
+}
+
+impl DynamicsFunction {
+    /// Every function, in the order emitted.
+    pub const ALL: [DynamicsFunction; 5] = [
+        DynamicsFunction::Gravity,
+        DynamicsFunction::InverseDynamics,
+        DynamicsFunction::NonlinearEffects,
+        DynamicsFunction::MassMatrix,
+        DynamicsFunction::ForwardDynamics,
+    ];
+
+    /// Its name on the type.
+    pub fn name(self) -> &'static str {
+        match self {
+            DynamicsFunction::Gravity => "gravity_torques",
+            DynamicsFunction::InverseDynamics => "inverse_dynamics",
+            DynamicsFunction::NonlinearEffects => "nonlinear_effects",
+            DynamicsFunction::MassMatrix => "mass_matrix",
+            DynamicsFunction::ForwardDynamics => "forward_dynamics",
+        }
+    }
+
+    /// Whether it takes the joint rates `qd`.
+    pub fn takes_rates(self) -> bool {
+        matches!(
+            self,
+            DynamicsFunction::InverseDynamics | DynamicsFunction::NonlinearEffects | DynamicsFunction::ForwardDynamics
+        )
+    }
+
+    /// The name of its third argument, one value per velocity (`qdd` or `tau`), if it takes one.
+    pub fn input(self) -> Option<&'static str> {
+        match self {
+            DynamicsFunction::InverseDynamics => Some("qdd"),
+            DynamicsFunction::ForwardDynamics => Some("tau"),
+            _ => None,
+        }
+    }
+}
+
+/// How to compile the dynamics: gravity, and whether inertia tensors that break the triangle
+/// inequality are taken as written.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DynamicsRequest {
+    /// Gravity in the root link's frame (m/s^2).
+    pub gravity: [f64; 3],
+    /// Take tensors that break the triangle inequality as written (they must still be positive
+    /// semi-definite).
+    pub inertia_as_written: bool,
+}
+
+impl Default for DynamicsRequest {
+    fn default() -> Self {
+        DynamicsRequest { gravity: STANDARD_GRAVITY, inertia_as_written: false }
+    }
+}
+
+/// One compiled function of the dynamics: the graph and its outputs.
+///
+/// The graph's variables are `q` then `qd` (the joint rates) then each floating or spherical
+/// joint's rotation, as a twist's; the third argument (`qdd` or `tau`) is its inputs. The
+/// outputs are one per velocity (forces, or for [`DynamicsFunction::ForwardDynamics`] the
+/// accelerations and then the pivots of the factorisation), or the mass matrix row by row.
+#[derive(Debug, Clone)]
+pub struct CompiledDynamics {
+    /// Robot name.
+    pub robot: String,
+    /// What it computes.
+    pub function: DynamicsFunction,
+    /// Joint names in degree-of-freedom order (the entries of `q`).
+    pub dof_names: Vec<String>,
+    /// Velocity names (the entries of `qd`, `qdd`, `tau` and the results).
+    pub velocity_names: Vec<String>,
+    /// Where each floating or spherical joint's quaternion starts in `q`.
+    pub quaternions: Vec<usize>,
+    /// The gravity it was compiled for.
+    pub gravity: [f64; 3],
+    pub(crate) graph: ExprGraph,
+    pub(crate) outputs: Vec<ExprId>,
+}
+
+/// Compiles `function` of `tree`'s dynamics.
+///
+/// Fails on a gravity that is not finite, and on the first link in tree order whose mass is left
+/// to its geometry (an MJCF body MuJoCo would infer) or whose inertia breaks a rigid body's rules
+/// ([`kinematics_model::inertia::Inertial::fault`]), naming it and the line of its `<inertial>`.
+///
+/// ```
+/// use kinematics_compiler::dynamics::{DynamicsFunction, DynamicsRequest, compile_dynamics};
+/// let urdf = r#"<robot name="pendulum"><link name="base"/>
+///   <link name="bob"><inertial><origin xyz="0 0 -0.5"/><mass value="2"/>
+///     <inertia ixx="0" ixy="0" ixz="0" iyy="0" iyz="0" izz="0"/></inertial></link>
+///   <joint name="hinge" type="continuous"><parent link="base"/><child link="bob"/><axis xyz="0 1 0"/></joint>
+/// </robot>"#;
+/// let tree = kinematics_model::parse_source("pendulum.urdf", urdf)?;
+/// let gravity = compile_dynamics(&tree, &DynamicsRequest::default(), DynamicsFunction::Gravity)?;
+/// // m g l sin q holds it, and the mass matrix is m l^2.
+/// let q = [0.3];
+/// let hold = gravity.eval(&q, &[0.0], &[])[0];
+/// assert!((hold - 2.0 * 9.81 * 0.5 * 0.3f64.sin()).abs() < 1e-14);
+/// let m = compile_dynamics(&tree, &DynamicsRequest::default(), DynamicsFunction::MassMatrix)?;
+/// assert_eq!(m.eval(&q, &[0.0], &[]), vec![0.5]);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn compile_dynamics(
+    tree: &KinematicTree,
+    request: &DynamicsRequest,
+    function: DynamicsFunction,
+) -> Result<CompiledDynamics, CompileError> {
+    check(tree, request)?;
+    let mut g = ExprGraph::new();
+    let bodies = bodies::bodies(&mut g, tree);
+    let (n, nv) = (tree.dof(), tree.velocity_dof());
+    let rates = |g: &mut ExprGraph, i: usize| Some(g.var(n + i));
+    let none = |_: &mut ExprGraph, _: usize| None;
+    let inputs = |g: &mut ExprGraph, i: usize| Some(g.input(i));
+    let gravity = request.gravity;
+    let mut outputs = match function {
+        DynamicsFunction::Gravity => recursive::gravity(&mut g, &bodies, nv, gravity),
+        DynamicsFunction::InverseDynamics => {
+            let input = NewtonEuler { rates: &rates, accelerations: &inputs, gravity };
+            recursive::newton_euler(&mut g, &bodies, nv, &input)
+        }
+        DynamicsFunction::NonlinearEffects => {
+            let input = NewtonEuler { rates: &rates, accelerations: &none, gravity };
+            recursive::newton_euler(&mut g, &bodies, nv, &input)
+        }
+        DynamicsFunction::MassMatrix => {
+            let upper = recursive::mass_matrix(&mut g, &bodies, nv);
+            (0..nv).flat_map(|i| (0..nv).map(move |j| (i, j))).map(|(i, j)| upper[i.min(j)][i.max(j)]).collect()
+        }
+        DynamicsFunction::ForwardDynamics => {
+            let input = NewtonEuler { rates: &rates, accelerations: &none, gravity };
+            let h = recursive::newton_euler(&mut g, &bodies, nv, &input);
+            let upper = recursive::mass_matrix(&mut g, &bodies, nv);
+            let rhs: Vec<ExprId> = (0..nv)
+                .map(|i| {
+                    let tau = g.input(i);
+                    g.sub(tau, h[i])
+                })
+                .collect();
+            let (accelerations, pivots) = solve::solve(&mut g, upper, rhs);
+            accelerations.into_iter().chain(pivots).collect()
+        }
+    };
+    run_expr_passes(&mut g, &mut [], &mut outputs, EXPR_PASSES, false);
+    Ok(CompiledDynamics {
+        robot: tree.name().to_owned(),
+        function,
+        dof_names: tree.dof_names(),
+        velocity_names: tree.velocity_names(),
+        quaternions: tree.quaternion_entries(),
+        gravity,
+        graph: g,
+        outputs,
+    })
+}
+
+/// The dynamics' refusals: a gravity that is not finite, mass left to geometry, a broken inertia.
+fn check(tree: &KinematicTree, request: &DynamicsRequest) -> Result<(), CompileError> {
+    let robot = || tree.name().to_owned();
+    if request.gravity.iter().any(|x| !x.is_finite()) {
+        return Err(CompileError::NonFiniteGravity { robot: robot(), gravity: request.gravity });
+    }
+    for link in tree.links() {
+        if tree.inertia_from_geometry().contains(&link.name) {
+            return Err(CompileError::MassFromGeometry { robot: robot(), link: link.name.clone() });
+        }
+        if let Some(fault) = link.inertial.as_ref().and_then(|i| i.fault(request.inertia_as_written)) {
+            let line = tree.inertial_line(&link.name);
+            return Err(CompileError::Inertia { robot: robot(), link: link.name.clone(), line, fault });
+        }
+    }
+    Ok(())
+}
+
+impl CompiledDynamics {
+    /// The expression graph.
+    pub fn graph(&self) -> &ExprGraph {
+        &self.graph
+    }
+
+    /// The output expressions (see the type's doc for their order).
+    pub fn outputs(&self) -> &[ExprId] {
+        &self.outputs
+    }
+
+    /// Number of entries of `q`.
+    pub fn dof(&self) -> usize {
+        self.dof_names.len()
+    }
+
+    /// Number of velocities.
+    pub fn velocity_dof(&self) -> usize {
+        self.velocity_names.len()
+    }
+
+    /// Operation counts of everything computed.
+    pub fn op_count(&self) -> OpCount {
+        OpCount::of(&self.graph, self.outputs.iter().copied())
+    }
+
+    /// Evaluates the outputs with the graph (no Rust compiled) at `q`, the rates `qd` and the
+    /// third argument `input` (`qdd` or `tau`; ignored by functions that take none).
+    ///
+    /// # Panics
+    ///
+    /// If `q` or `qd` is shorter than the robot needs, or `input` shorter than the function reads.
+    pub fn eval(&self, q: &[f64], qd: &[f64], input: &[f64]) -> Vec<f64> {
+        let mut values: Vec<f64> = q[..self.dof()].to_vec();
+        values.extend_from_slice(&qd[..self.velocity_dof()]);
+        let variables = crate::request::variables(self.dof(), self.velocity_dof(), &self.quaternions, &values);
+        let mut cache = Vec::new();
+        self.outputs.iter().map(|&id| self.graph.eval_with_inputs(id, &variables, input, &mut cache)).collect()
+    }
+}
