@@ -350,6 +350,8 @@ impl Robot {
             OptionKey::SphereCover => ".sphere_cover(..)",
             OptionKey::Spheres => ".spheres(..)",
             OptionKey::Srdf => ".srdf(..)",
+            OptionKey::Dynamics => ".dynamics(..)",
+            OptionKey::Gravity => ".gravity(..)",
         }
     }
 

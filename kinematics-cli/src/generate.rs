@@ -191,6 +191,8 @@ fn flags(error: BuildError) -> CliError {
                 OptionKey::SphereCover => "--cover",
                 OptionKey::Spheres => "--spheres",
                 OptionKey::Srdf => "--srdf",
+                OptionKey::Dynamics => "--dynamics",
+                OptionKey::Gravity => "--gravity",
             },
             fault,
         })

@@ -16,6 +16,7 @@
 //! or flag. The `Checked` robot holds the IK plan, so `classify` runs once. `Choice` lists are read
 //! with `choose`'s "did you mean".
 
+use crate::dynamics::DynamicsRequest;
 use kinematics_model::collision::{
     CollisionPairs, CoverError, FixedPair, LinkSphere, PairGrid, fixed_apart_pairs, link_spheres, pair_grids,
     sphere_pairs,
@@ -97,6 +98,8 @@ pub struct Options {
     pub exact_angles: ExactAngles,
     /// Also emit collision checking: the robot's geometry as spheres.
     pub collision: Option<CollisionOptions>,
+    /// Also emit the dynamics from the links' inertias, under this gravity.
+    pub dynamics: Option<DynamicsRequest>,
 }
 
 /// How a robot's collision geometry becomes spheres, and which links are checked against which.
@@ -146,6 +149,10 @@ pub enum OptionKey {
     Spheres,
     /// `collision`'s `srdf`.
     Srdf,
+    /// `dynamics` (the robot's inertias).
+    Dynamics,
+    /// `dynamics`' `gravity`.
+    Gravity,
 }
 
 impl OptionKey {
@@ -166,6 +173,8 @@ impl OptionKey {
             OptionKey::SphereCover => "sphere_cover",
             OptionKey::Spheres => "spheres",
             OptionKey::Srdf => "srdf",
+            OptionKey::Dynamics => "dynamics",
+            OptionKey::Gravity => "gravity",
         }
     }
 }
@@ -247,6 +256,16 @@ pub enum FaultKind {
     /// An SRDF whose disabled pairs name a link the robot does not have.
     #[error("{0}")]
     Srdf(String),
+    /// `dynamics` of a robot whose inertias break a rigid body's rules, or whose mass is left to
+    /// its geometry (the link and the line named).
+    #[error("{0}")]
+    Dynamics(Box<CompileError>),
+    /// `dynamics` of a robot none of whose links has an inertia.
+    #[error("`dynamics` of a robot with no mass: no link has an <inertial> (a link without one is massless)")]
+    NoMass,
+    /// `gravity` that is not a finite vector.
+    #[error("`gravity` is {0:?} (must be three finite numbers, m/s^2 in the base's frame)")]
+    Gravity([f64; 3]),
 }
 
 /// Options that passed every rule against their robot: the only thing
@@ -373,6 +392,7 @@ impl Options {
                 None
             }
         };
+        faults.extend(dynamics_applies(self, tree));
         let base = self.base.clone().unwrap_or_else(|| tree.link(tree.root()).name.clone());
         match ik {
             Some(ik) if faults.is_empty() => Ok(Checked { tree, options: self, base, ik, collision }),
@@ -493,6 +513,23 @@ fn collision_applies(options: &Options, tree: &KinematicTree) -> Result<Option<C
     let fixed = fixed_apart_pairs(tree, &spheres, &pairs.pairs);
     let grids = pair_grids(tree, &spheres, &pairs.pairs);
     Ok(Some(CollisionPlan { spheres, pairs, fixed, grids }))
+}
+
+/// Rule: `dynamics` needs a finite gravity, a link with mass, and inertias that keep a rigid
+/// body's rules (the triangle inequality unless taken as written) with none left to geometry.
+fn dynamics_applies(options: &Options, tree: &KinematicTree) -> Option<OptionFault> {
+    let request = options.dynamics.as_ref()?;
+    if request.gravity.iter().any(|x| !x.is_finite()) {
+        return Some(OptionFault { key: OptionKey::Gravity, kind: FaultKind::Gravity(request.gravity) });
+    }
+    let fault = |kind| Some(OptionFault { key: OptionKey::Dynamics, kind });
+    if let Err(e) = crate::dynamics::check(tree, request) {
+        return fault(FaultKind::Dynamics(Box::new(e)));
+    }
+    if tree.links().iter().all(|l| l.inertial.is_none()) {
+        return fault(FaultKind::NoMass);
+    }
+    None
 }
 
 /// Rule: `floating_base`'s new root link and joint are names `plain` (the description loaded

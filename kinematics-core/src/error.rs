@@ -54,6 +54,22 @@ pub enum KinematicsError {
         /// The margin given.
         margin: f64,
     },
+    /// Forward dynamics through a mass matrix that cannot be inverted: the velocity named moves
+    /// no mass of its own (a joint that carries no mass, or carries only what other joints move
+    /// the same way), so no torque determines its acceleration.
+    SingularMassMatrix {
+        /// Robot name.
+        robot: &'static str,
+        /// The velocity whose pivot vanished (one of `VELOCITY_NAMES`).
+        velocity: &'static str,
+    },
+    /// Forward dynamics whose accelerations overflowed (finite inputs too large for them).
+    NotFinite {
+        /// Robot name.
+        robot: &'static str,
+        /// What overflowed.
+        quantity: &'static str,
+    },
 }
 
 impl fmt::Display for KinematicsError {
@@ -86,6 +102,14 @@ impl fmt::Display for KinematicsError {
                 "robot `{robot}`: a proximity cost's margin must be finite and not negative (the distance \
                  within which pairs cost), not {margin}"
             ),
+            KinematicsError::SingularMassMatrix { robot, velocity } => write!(
+                f,
+                "robot `{robot}`: the mass matrix is singular: forward dynamics cannot determine the acceleration \
+                 of `{velocity}`, which moves no mass of its own"
+            ),
+            KinematicsError::NotFinite { robot, quantity } => {
+                write!(f, "robot `{robot}`: the {quantity} overflowed to values that are not finite")
+            }
         }
     }
 }

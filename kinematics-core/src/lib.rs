@@ -28,6 +28,7 @@ extern crate std;
 mod batch;
 pub mod collision;
 mod dispatch;
+pub mod dynamics;
 mod error;
 mod floating;
 pub mod ik;

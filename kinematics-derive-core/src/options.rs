@@ -26,6 +26,7 @@ use darling::util::{Override, PathList, SpannedValue};
 use darling::{Error, FromDeriveInput, FromMeta};
 
 use crate::inline_dh::InlineDh;
+use kinematics_compiler::dynamics::{DynamicsRequest, STANDARD_GRAVITY};
 use kinematics_compiler::options::{
     Choice, CollisionOptions, Cover, IkKind, IkMode, Meshes, OptionKey, Options, Scalars, Trig, choose,
 };
@@ -113,6 +114,11 @@ pub struct OutputKeys {
     /// `<collision>` geometry, covered by spheres.
     #[darling(default)]
     pub collision: Option<SpannedValue<Override<CollisionKey>>>,
+    /// `dynamics` (or `dynamics(gravity = [0.0, 0.0, -9.81], inertia_as_written)`): also emit the
+    /// dynamics from the links' inertias: gravity torques, inverse dynamics, nonlinear effects,
+    /// the mass matrix and forward dynamics.
+    #[darling(default)]
+    pub dynamics: Option<SpannedValue<Override<DynamicsKey>>>,
     /// `crate = "path"` for a renamed dependency.
     #[darling(default, rename = "crate")]
     pub krate: Option<syn::Path>,
@@ -140,7 +146,61 @@ pub struct CollisionKey {
     pub srdf: Option<SpannedValue<String>>,
 }
 
+/// The list form of `dynamics(...)`.
+#[derive(Debug, Clone, FromMeta)]
+pub struct DynamicsKey {
+    /// `gravity = [x, y, z]` in m/s^2, in the root link's frame (default `[0.0, 0.0, -9.81]`).
+    #[darling(default)]
+    pub gravity: Option<SpannedValue<Gravity>>,
+    /// `inertia_as_written`: take inertia tensors that break the triangle inequality as written
+    /// (real descriptions have them); they must still be positive semi-definite.
+    #[darling(default)]
+    pub inertia_as_written: darling::util::Flag,
+}
+
+/// `gravity = [x, y, z]`: three numbers in square brackets (integers allowed, signs too).
+#[derive(Debug, Clone, Copy)]
+pub struct Gravity(pub [f64; 3]);
+
+/// What a malformed `gravity` value is told.
+const GRAVITY_SYNTAX: &str = "expected three numbers in square brackets, like `gravity = [0.0, 0.0, -9.81]` (m/s^2)";
+
+impl FromMeta for Gravity {
+    fn from_expr(expr: &syn::Expr) -> darling::Result<Self> {
+        fn number(expr: &syn::Expr) -> Option<f64> {
+            match expr {
+                syn::Expr::Lit(syn::ExprLit { lit: syn::Lit::Float(f), .. }) => f.base10_parse().ok(),
+                syn::Expr::Lit(syn::ExprLit { lit: syn::Lit::Int(i), .. }) => {
+                    i.base10_parse::<i64>().ok().map(|i| i as f64)
+                }
+                syn::Expr::Unary(syn::ExprUnary { op: syn::UnOp::Neg(_), expr, .. }) => number(expr).map(|x| -x),
+                syn::Expr::Group(group) => number(&group.expr),
+                _ => None,
+            }
+        }
+        let syn::Expr::Array(array) = expr else {
+            if let syn::Expr::Group(group) = expr {
+                return Self::from_expr(&group.expr);
+            }
+            return Err(Error::custom(GRAVITY_SYNTAX).with_span(expr));
+        };
+        let values: Vec<f64> = array.elems.iter().filter_map(number).collect();
+        match <[f64; 3]>::try_from(values) {
+            Ok(gravity) if array.elems.len() == 3 => Ok(Gravity(gravity)),
+            _ => Err(Error::custom(GRAVITY_SYNTAX).with_span(expr)),
+        }
+    }
+}
+
 impl OutputKeys {
+    /// The `gravity` given in `dynamics(...)`, if any.
+    pub fn gravity(&self) -> Option<&SpannedValue<Gravity>> {
+        match self.dynamics.as_ref()?.as_ref() {
+            Override::Explicit(key) => key.gravity.as_ref(),
+            Override::Inherit => None,
+        }
+    }
+
     /// The `packages(...)` given in `collision(...)`, if any.
     pub fn packages(&self) -> Option<&SpannedValue<BTreeMap<String, String>>> {
         match self.collision.as_ref()?.as_ref() {
@@ -410,6 +470,13 @@ impl KinematicsInput {
                     srdf: None,
                 },
             }),
+            dynamics: output.dynamics.as_ref().map(|key| match key.as_ref() {
+                Override::Inherit => DynamicsRequest::default(),
+                Override::Explicit(key) => DynamicsRequest {
+                    gravity: key.gravity.as_ref().map_or(STANDARD_GRAVITY, |g| g.as_ref().0),
+                    inertia_as_written: key.inertia_as_written.is_present(),
+                },
+            }),
             ..self.keys.options()
         }
     }
@@ -431,6 +498,11 @@ impl KinematicsInput {
             // The path's own span, else (the fault found without it) the `collision` key's.
             OptionKey::Srdf => {
                 output.srdf().map(SpannedValue::span).or_else(|| output.collision.as_ref().map(SpannedValue::span))
+            }
+            OptionKey::Dynamics => output.dynamics.as_ref().map(SpannedValue::span),
+            // The vector's own span, else the `dynamics` key's.
+            OptionKey::Gravity => {
+                output.gravity().map(SpannedValue::span).or_else(|| output.dynamics.as_ref().map(SpannedValue::span))
             }
             // A bare word has no span of its own.
             OptionKey::Positions => None,

@@ -206,7 +206,7 @@ pub fn compile_dynamics(
 }
 
 /// The dynamics' refusals: a gravity that is not finite, mass left to geometry, a broken inertia.
-fn check(tree: &KinematicTree, request: &DynamicsRequest) -> Result<(), CompileError> {
+pub(crate) fn check(tree: &KinematicTree, request: &DynamicsRequest) -> Result<(), CompileError> {
     let robot = || tree.name().to_owned();
     if request.gravity.iter().any(|x| !x.is_finite()) {
         return Err(CompileError::NonFiniteGravity { robot: robot(), gravity: request.gravity });

@@ -128,7 +128,8 @@ pub(super) fn newton_euler(
     velocities: usize,
     input: &NewtonEuler<'_>,
 ) -> Vec<ExprId> {
-    let root_acceleration = Spatial { angular: algebra::zero(g), linear: algebra::constant(g, input.gravity.map(|x| -x)) };
+    let root_acceleration =
+        Spatial { angular: algebra::zero(g), linear: algebra::constant(g, input.gravity.map(|x| -x)) };
     let mut velocity: Vec<Spatial> = Vec::with_capacity(bodies.len());
     let mut acceleration: Vec<Spatial> = Vec::with_capacity(bodies.len());
     let mut force: Vec<Spatial> = Vec::with_capacity(bodies.len());

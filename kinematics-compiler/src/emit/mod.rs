@@ -11,6 +11,8 @@ mod schedule;
 mod text;
 
 pub use names::Names;
-pub use rust::{EmitOptions, StraightLine, Trig, emit_function, emit_module_source, emit_points, straight_line};
+pub use rust::{
+    EmitOptions, StraightLine, Trig, emit_dynamics, emit_function, emit_module_source, emit_points, straight_line,
+};
 pub use schedule::{INLINE_DEPTH_LIMIT, MAX_EXPRESSION_DEPTH, Schedule};
 pub use text::{INLINE_BUDGET, Listing, latex, latex_listing, text, text_listing};

@@ -11,6 +11,7 @@ use quote::{ToTokens as _, TokenStreamExt as _, format_ident, quote};
 
 use super::chunks::function;
 use super::schedule::{Item, Schedule};
+use crate::dynamics::{CompiledDynamics, DynamicsFunction};
 use crate::request::{Compiled, VelocityForm};
 use crate::stats::OpCount;
 use crate::symbolic::graph::{ExprGraph, ExprId, Node};
@@ -448,7 +449,7 @@ pub fn emit_function(compiled: &Compiled, options: &EmitOptions) -> TokenStream 
     let nv_lit = Literal::usize_unsuffixed(nv);
     let twist = compiled.velocity.is_some_and(|v| v.form == VelocityForm::Twist);
     let mut marks = Marks::default();
-    let mut body = prologue(compiled, &w, twist, options.trig, Some(&mut marks));
+    let mut body = prologue(&compiled.quaternions, &w, twist, options.trig, Some(&mut marks));
     let layout = Layout::of(compiled);
     let array = compiled.returns_array();
     let per_frame = layout.per_frame();
@@ -514,9 +515,9 @@ pub fn emit_function(compiled: &Compiled, options: &EmitOptions) -> TokenStream 
 /// The statements every body opens with: `q` (and with `rates` `qd`) unpacked into the variables
 /// the schedule uses, each floating or spherical joint's rotation from its quaternion, then the sines and
 /// cosines and every `let` of the schedule.
-fn prologue(compiled: &Compiled, w: &Writer<'_>, rates: bool, trig: Trig, marks: Option<&mut Marks>) -> TokenStream {
+fn prologue(quaternions: &[usize], w: &Writer<'_>, rates: bool, trig: Trig, marks: Option<&mut Marks>) -> TokenStream {
     let (schedule, private) = (w.schedule, w.private);
-    let (n, nv) = (compiled.dof(), compiled.velocity_dof());
+    let (n, nv) = w.sizes;
     let mut body = TokenStream::new();
     let mut inputs = vec![(quote!(q), 0, n)];
     if rates {
@@ -534,7 +535,7 @@ fn prologue(compiled: &Compiled, w: &Writer<'_>, rates: bool, trig: Trig, marks:
     }
     // Each floating or spherical joint's rotation, from its quaternion in `q`, before anything
     // uses it.
-    for (k, &start) in compiled.quaternions.iter().enumerate() {
+    for (k, &start) in quaternions.iter().enumerate() {
         let first = n + nv + 9 * k;
         if !(first..first + 9).any(|i| schedule.used_vars.contains(&i)) {
             continue;
@@ -564,7 +565,7 @@ pub fn emit_points(compiled: &Compiled, points: &[[ExprId; 3]], options: &EmitOp
     let n = compiled.dof();
     let w = Writer { g, schedule: &schedule, private, sizes: (n, compiled.velocity_dof()), inputs: &[] };
     let mut marks = Marks::default();
-    let mut body = prologue(compiled, &w, false, options.trig, Some(&mut marks));
+    let mut body = prologue(&compiled.quaternions, &w, false, options.trig, Some(&mut marks));
     // Each point bound in turn (`center_0`, ...), so that the marks run on through them.
     let mut names = Vec::with_capacity(points.len());
     for (k, point) in points.iter().enumerate() {
@@ -593,6 +594,93 @@ pub fn emit_points(compiled: &Compiled, points: &[[ExprId; 3]], options: &EmitOp
         #[allow(clippy::approx_constant)] // a robot's own decimals may resemble pi; they are kept as given
     };
     function(attrs, quote!(#vis fn #name<T: #bound>(q: &[T; #n_lit]) -> [[T; 3]; #m]), body, private)
+}
+
+/// One function computing a compiled function of the dynamics, generic over `T: Real`: `q` (and,
+/// for a function of the rates, `qd`; for inverse or forward dynamics the accelerations `qdd` or
+/// the forces `tau`) in, one value per velocity out (`[T; NV]`), the mass matrix `[[T; NV]; NV]`,
+/// or for forward dynamics the accelerations and the factorisation's pivots `([T; NV], [T; NV])`
+/// (the caller refuses a pivot that is not positive).
+pub fn emit_dynamics(compiled: &CompiledDynamics, options: &EmitOptions, doc: &str) -> TokenStream {
+    let g = compiled.graph();
+    let outputs = compiled.outputs();
+    let schedule = Schedule::new(g, outputs);
+    let private = &options.private;
+    let (n, nv) = (compiled.dof(), compiled.velocity_dof());
+    let kind = compiled.function;
+    let input = kind.input();
+    let input_names: Vec<Ident> = match input {
+        Some(name) => (1..=nv).map(|i| format_ident!("{name}{i}")).collect(),
+        None => Vec::new(),
+    };
+    let w = Writer { g, schedule: &schedule, private, sizes: (n, nv), inputs: &input_names };
+    let mut marks = Marks::default();
+    let rates = kind.takes_rates();
+    let mut body = TokenStream::new();
+    if let Some(name) = input {
+        let argument = format_ident!("{name}");
+        if nv == 0 {
+            body.extend(quote!(let _ = #argument;));
+        } else {
+            let names = input_names
+                .iter()
+                .enumerate()
+                .map(|(i, name)| if schedule.used_inputs.contains(&i) { name.into_token_stream() } else { quote!(_) });
+            body.extend(quote!(let [#(#names),*] = *#argument;));
+        }
+    }
+    body.extend(prologue(&compiled.quaternions, &w, rates, options.trig, Some(&mut marks)));
+    // Each value written out is bound in turn (`value_0`, ...), so that the marks run on through
+    // them (a debug build's chunks then hold the whole body).
+    let values: Vec<TokenStream> = outputs
+        .iter()
+        .enumerate()
+        .map(|(k, &id)| {
+            let mut value = TokenStream::new();
+            w.expr(id, &mut value);
+            let ops = if w.inline(id) { w.ops_written(id) } else { 0 };
+            if ops == 0 {
+                return value;
+            }
+            let name = format_ident!("value_{k}");
+            body.extend(quote!(let #name = #value;));
+            marks.after(ops, &mut body);
+            name.into_token_stream()
+        })
+        .collect();
+    let nv_lit = Literal::usize_unsuffixed(nv);
+    let (value, ret) = match kind {
+        DynamicsFunction::MassMatrix => {
+            let rows = values.chunks(nv.max(1)).take(nv).map(|row| quote!([#(#row),*]));
+            (quote!([#(#rows),*]), quote!([[T; #nv_lit]; #nv_lit]))
+        }
+        DynamicsFunction::ForwardDynamics => {
+            let (accelerations, pivots) = values.split_at(nv);
+            (quote!(([#(#accelerations),*], [#(#pivots),*])), quote!(([T; #nv_lit], [T; #nv_lit])))
+        }
+        _ => (quote!([#(#values),*]), quote!([T; #nv_lit])),
+    };
+    body.extend(value);
+    let n_lit = Literal::usize_unsuffixed(n);
+    let mut params = quote!(q: &[T; #n_lit]);
+    if rates {
+        params.extend(quote!(, qd: &[T; #nv_lit]));
+    }
+    if let Some(name) = input {
+        let argument = format_ident!("{name}");
+        params.extend(quote!(, #argument: &[T; #nv_lit]));
+    }
+    let name = Ident::new(&options.name, Span::call_site());
+    let vis = if options.public { quote!(pub) } else { quote!() };
+    let bound = options.trig.bound(private);
+    let cost = format!(" Cost: {}.", compiled.op_count());
+    let attrs = quote! {
+        #[doc = #doc]
+        #[doc = ""]
+        #[doc = #cost]
+        #[allow(clippy::approx_constant)] // a robot's own decimals may resemble pi; they are kept as given
+    };
+    function(attrs, quote!(#vis fn #name<T: #bound>(#params) -> #ret), body, private)
 }
 
 /// Straight-line code for a graph of inputs (no joint variables): [`straight_line`]'s result.

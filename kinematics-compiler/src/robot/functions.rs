@@ -38,16 +38,32 @@ impl Functions {
         let n_lit = cx.render.dof();
         let g = format_ident!("{}", output.body(cx.one));
         let rates = output.takes_rates();
+        let arguments = output.arguments();
+        let forward = output == Output::Dynamics(crate::dynamics::DynamicsFunction::ForwardDynamics);
         for (form, signature) in cx.render.functions(output, cx.one) {
             let sig = signature.tokens();
             let item = match form {
+                // Forward dynamics refuses a singular mass matrix (a pivot of its factorisation
+                // that vanishes) rather than return what dividing by it gives.
+                Form::Typed(ScalarType { t, .. }) if forward => {
+                    let one_doc = format!("{doc} (`{t}`).");
+                    quote! {
+                        #[doc = #one_doc]
+                        #[inline]
+                        #[allow(clippy::redundant_closure)]
+                        #sig {
+                            let (qdd, pivots) = #p::dispatch(#[inline(always)] || #g(#arguments));
+                            #p::dynamics::accelerations_checked(Self::ROBOT, &Self::VELOCITY_NAMES, qdd, pivots)
+                        }
+                    }
+                }
                 Form::Typed(ScalarType { t, .. }) if rates => {
                     let one_doc = format!("{doc} (`{t}`).");
                     quote! {
                         #[doc = #one_doc]
                         #[inline]
                         #[allow(clippy::redundant_closure)]
-                        #sig { #p::dispatch(#[inline(always)] || #g(q, qd)) }
+                        #sig { #p::dispatch(#[inline(always)] || #g(#arguments)) }
                     }
                 }
                 // Dispatched: compiled for AVX-512, AVX2 and the baseline, the best the CPU has
@@ -109,7 +125,7 @@ impl Functions {
                     quote! {
                         #[doc = #doc]
                         #[inline]
-                        #sig { #g(q, qd) }
+                        #sig { #g(#arguments) }
                     }
                 }
                 Form::Generic => {

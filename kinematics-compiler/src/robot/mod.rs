@@ -21,13 +21,14 @@
 //! [`RobotSpec::krate`], so that path must name it from any module (an absolute path, a
 //! `crate::` path or a dependency's name), as the `crate` option's renamed dependency does.
 //!
-//! One module per kind of output: `poses`, `velocities`, `ik`, `constants`, `collision`, `impls`
+//! One module per kind of output: `poses`, `velocities`, `ik`, `constants`, `collision`, `dynamics`, `impls`
 //! (the block, the trait impls and `reference()`), `functions` (a generic body into its typed,
 //! batch and `_generic` functions), and `surface`, the API surface as data; `emit_robot` walks the
 //! surface's outputs and compiles each.
 
 mod collision;
 mod constants;
+mod dynamics;
 mod functions;
 mod ik;
 mod impls;
@@ -97,6 +98,12 @@ pub fn emit_robot(self_ty: &TokenStream, spec: &RobotSpec<'_>) -> Result<TokenSt
             Output::SphereCenters => {
                 let (bodies, doc) = collision::bodies(&cx, &output.body(cx.one))?;
                 out.generic.extend(bodies);
+                out.on_type(&cx, output, &doc);
+                continue;
+            }
+            Output::Dynamics(function) => {
+                let (body, doc) = dynamics::body(&cx, function, &output.body(cx.one))?;
+                out.generic.push(body);
                 out.on_type(&cx, output, &doc);
                 continue;
             }

@@ -16,6 +16,7 @@ use kinematics_model::JacobianFrame;
 use proc_macro2::{Ident, Literal, Span, TokenStream};
 use quote::{format_ident, quote};
 
+use crate::dynamics::DynamicsFunction;
 use crate::ik::{IkGeometry, IkPlan};
 use crate::options::{CheckedIk, IkMode, Options, Scalars, Trig};
 
@@ -58,6 +59,9 @@ pub enum Output {
     Twist(JacobianFrame),
     /// `sphere_centers`: every collision sphere's centre.
     SphereCenters,
+    /// A function of the dynamics: `gravity_torques`, `inverse_dynamics`, `nonlinear_effects`,
+    /// `mass_matrix`, `forward_dynamics`.
+    Dynamics(DynamicsFunction),
 }
 
 /// The two frames velocities come in, in the order emitted, with their names' suffixes.
@@ -94,10 +98,14 @@ fn tip_outputs(options: &Options) -> Vec<Output> {
     out
 }
 
-/// [`tip_outputs`]'s outputs then, with `collision`, the sphere centres.
+/// [`tip_outputs`]'s outputs then, with `collision`, the sphere centres, and with `dynamics` its
+/// functions.
 fn collision_outputs(options: &Options, mut out: Vec<Output>) -> Vec<Output> {
     if options.collision.is_some() {
         out.push(Output::SphereCenters);
+    }
+    if options.dynamics.is_some() {
+        out.extend(DynamicsFunction::ALL.map(Output::Dynamics));
     }
     out
 }
@@ -120,6 +128,7 @@ impl Output {
             Output::PositionJacobian => ("tip_position_jacobian", "tip_position_jacobians"),
             Output::Twist(frame) => return format!("tip_{}{}", plural(one_tip, "twist"), frame_suffix(frame)),
             Output::SphereCenters => ("sphere_centers", "sphere_centers"),
+            Output::Dynamics(function) => return function.name().to_owned(),
         };
         (if one_tip { one } else { several }).to_owned()
     }
@@ -134,13 +143,39 @@ impl Output {
             Output::PoseAndJacobian => "generic_pose_and_jacobian".to_owned(),
             Output::PositionJacobian => "generic_position_jacobian".to_owned(),
             Output::SphereCenters => "generic_sphere_centers".to_owned(),
-            Output::Jacobian(_) | Output::Twist(_) => format!("generic_{}", self.name(one_tip)),
+            Output::Jacobian(_) | Output::Twist(_) | Output::Dynamics(_) => format!("generic_{}", self.name(one_tip)),
         }
     }
 
     /// Whether the functions take the joint rates `qd` too (and have no batches).
     pub fn takes_rates(self) -> bool {
-        matches!(self, Output::Twist(_))
+        match self {
+            Output::Twist(_) => true,
+            Output::Dynamics(function) => function.takes_rates(),
+            _ => false,
+        }
+    }
+
+    /// The third argument, one value per velocity (`qdd` of inverse dynamics, `tau` of forward
+    /// dynamics), if any.
+    pub fn third_argument(self) -> Option<&'static str> {
+        match self {
+            Output::Dynamics(function) => function.input(),
+            _ => None,
+        }
+    }
+
+    /// The arguments the functions pass to the generic body: `q`, `q, qd` or `q, qd, tau`.
+    pub fn arguments(self) -> TokenStream {
+        let rates = if self.takes_rates() { quote!(, qd) } else { quote!() };
+        let third = match self.third_argument() {
+            Some(name) => {
+                let name = format_ident!("{name}");
+                quote!(, #name)
+            }
+            None => quote!(),
+        };
+        quote!(q #rates #third)
     }
 
     /// How many values it returns: one per link, per tip or per sphere.
@@ -161,6 +196,8 @@ impl Output {
             Output::PoseAndJacobian => quote!((#p::Pose<#t>, [[#t; #nv]; 6])),
             Output::PositionJacobian => quote!([[#t; #nv]; 3]),
             Output::Twist(_) => quote!([#t; 6]),
+            Output::Dynamics(DynamicsFunction::MassMatrix) => quote!([[#t; #nv]; #nv]),
+            Output::Dynamics(_) => quote!([#t; #nv]),
         }
     }
 }
@@ -332,7 +369,7 @@ impl Render {
     fn value(&self, output: Output, one_tip: bool, t: &TokenStream) -> TokenStream {
         let element = output.element(t, &self.p, &self.velocities());
         let (count, always_array) = output.count(&self.dims);
-        if !always_array && one_tip {
+        if !always_array && one_tip || matches!(output, Output::Dynamics(_)) {
             return element;
         }
         let n = length(count);
@@ -347,15 +384,28 @@ impl Render {
         let rates = output.takes_rates();
         let error = quote!(::core::result::Result<(), #p::KinematicsError>);
         let mut out = Vec::new();
+        let forward = output == Output::Dynamics(DynamicsFunction::ForwardDynamics);
+        let extra = |t: &TokenStream| {
+            let qd = if rates { quote!(, qd: &[#t; #nv]) } else { quote!() };
+            let third = output.third_argument().map(|name| {
+                let name = format_ident!("{name}");
+                quote!(, #name: &[#t; #nv])
+            });
+            quote!(#qd #third)
+        };
         for scalar in self.scalar_types() {
             let (suffix, t) = (scalar.suffix, &scalar.t);
-            let qd = if rates { quote!(, qd: &[#t; #nv]) } else { quote!() };
+            let qd = extra(t);
             let value = self.value(output, one_tip, t);
             let typed = Signature {
                 name: format_ident!("{name}{suffix}"),
                 generics: Vec::new(),
                 inputs: quote!(q: &[#t; #n] #qd),
-                output: value.clone(),
+                output: if forward {
+                    quote!(::core::result::Result<#value, #p::KinematicsError>)
+                } else {
+                    value.clone()
+                },
             };
             let batches = [
                 (format_ident!("{name}_batch{suffix}"), quote!(qs: &[[#t; #n]])),
@@ -375,8 +425,12 @@ impl Render {
             }
         }
         let scalar = &self.scalar;
-        let qd = if rates { quote!(, qd: &[#scalar; #nv]) } else { quote!() };
-        let value = self.value(output, one_tip, scalar);
+        let qd = extra(scalar);
+        let mut value = self.value(output, one_tip, scalar);
+        if forward {
+            // The accelerations and the pivots of the mass matrix's factorisation.
+            value = quote!((#value, #value));
+        }
         out.push((
             Form::Generic,
             Signature {
