@@ -148,3 +148,59 @@ fn panda_flange() {
     assert_eq!(count.sin_cos, 7, "{count}");
     assert!(count.mul <= 80 && count.add <= 43, "{count}");
 }
+
+/// The dynamics of every robot in `robots/` whose inertias the rules take: each function's
+/// operations (`sin_cos/mul/add`, and divisions for forward dynamics).
+fn dynamics_table() -> String {
+    use kinematics_compiler::dynamics::{DynamicsFunction, DynamicsRequest, compile_dynamics};
+    let mut rows = String::from(
+        "| robot | velocities | gravity | inverse dynamics | nonlinear effects | mass matrix | forward dynamics |\n|---|---|---|---|---|---|---|\n",
+    );
+    for file in robots() {
+        let tree = common::robot(&file);
+        if tree.links().iter().all(|l| l.inertial.is_none()) {
+            continue;
+        }
+        let request = DynamicsRequest::default();
+        let Ok(gravity) = compile_dynamics(&tree, &request, DynamicsFunction::Gravity) else { continue };
+        let count = |f| compile_dynamics(&tree, &request, f).unwrap().op_count();
+        let [id, h, m, fd] = [
+            DynamicsFunction::InverseDynamics,
+            DynamicsFunction::NonlinearEffects,
+            DynamicsFunction::MassMatrix,
+            DynamicsFunction::ForwardDynamics,
+        ]
+        .map(count);
+        rows.push_str(&format!(
+            "| {file} | {} | {} | {} | {} | {} | {} + {} div |\n",
+            tree.velocity_dof(),
+            short(gravity.op_count()),
+            short(id),
+            short(h),
+            short(m),
+            short(fd),
+            fd.div
+        ));
+        // Gravity alone is the cheapest; forward dynamics holds the nonlinear effects and the mass matrix.
+        let total = |c: OpCount| c.mul + c.add;
+        assert!(total(gravity.op_count()) < total(h) && total(h) <= total(id), "{file}");
+        assert!(fd.div <= tree.velocity_dof(), "{file}: at most one division per pivot (a constant pivot folds), {fd}");
+    }
+    rows
+}
+
+/// The dynamics' op counts are pinned as the poses' are, and the guide quotes them
+/// (`src/guide/dynamics.md`).
+#[test]
+fn dynamics_table_of_every_robot_with_inertias() {
+    let table = dynamics_table();
+    println!("sin_cos/mul/add of the dynamics\n{table}");
+    insta::assert_snapshot!("dynamics_op_counts", table);
+    let page = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../src/guide/dynamics.md")).unwrap();
+    let section = page.split("| robot | velocities | gravity |").nth(1).expect("the guide has the dynamics op-count table");
+    let rows: Vec<&str> = section.lines().skip(2).take_while(|l| l.starts_with('|')).collect();
+    assert!(!rows.is_empty());
+    for row in rows {
+        assert!(table.lines().any(|l| l == row), "guide row `{row}` is not what the compiler produces:\n{table}");
+    }
+}

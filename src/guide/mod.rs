@@ -15,6 +15,7 @@
 //! | [`derive`](mod@derive) | the derive's keys, the functions a struct gets, inline DH tables, compile errors |
 //! | [`velocities`] | Jacobians (`LOCAL_WORLD_ALIGNED`, `LOCAL`), pose with Jacobian, twists; how they are checked |
 //! | [`inverse_kinematics`] | closed-form families, what comes back, seven joints, the numeric solver, speed |
+//! | [`dynamics`] | gravity torques, inverse dynamics, the mass matrix, forward dynamics from the links' inertias |
 //! | [`collision`] | collision geometry from URDF and SRDF, its sphere cover, the pairs, `sphere_centers`, `collides`, `self_collides`, obstacles |
 //! | [`floating_bases`] | free-flying roots, URDF `floating` and `planar` joints, MJCF ball joints, quaternions in `q` |
 //! | [`orientation`] | a [`Pose`](crate::Pose)'s rotation as quaternions, roll-pitch-yaw, ZYZ, axis-angle |
@@ -54,6 +55,10 @@ pub mod inverse_kinematics {
 
 pub mod collision {
     #![doc = include_str!("collision.md")]
+}
+
+pub mod dynamics {
+    #![doc = include_str!("dynamics.md")]
 }
 
 pub mod floating_bases {
