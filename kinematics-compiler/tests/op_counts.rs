@@ -150,41 +150,39 @@ fn panda_flange() {
 }
 
 /// The dynamics of every robot in `robots/` whose inertias the rules take: each function's
-/// operations (`sin_cos/mul/add`, and divisions for forward dynamics).
+/// operations (`sin_cos/mul/add`; forward dynamics' divisions after it), then in parentheses the
+/// plain recursive algorithm's (`plain_op_count`: the same recursion with the robot's numbers
+/// unknown until run time).
 fn dynamics_table() -> String {
-    use kinematics_compiler::dynamics::{DynamicsFunction, DynamicsRequest, compile_dynamics};
+    use kinematics_compiler::dynamics::{DynamicsFunction, DynamicsRequest, compile_dynamics, plain_op_count};
     let mut rows = String::from(
         "| robot | velocities | gravity | inverse dynamics | nonlinear effects | mass matrix | forward dynamics |\n|---|---|---|---|---|---|---|\n",
     );
     for file in robots() {
         let tree = common::robot(&file);
-        if tree.links().iter().all(|l| l.inertial.is_none()) {
+        let request = DynamicsRequest::default();
+        let massless = tree.links().iter().all(|l| l.inertial.is_none());
+        if massless || compile_dynamics(&tree, &request, DynamicsFunction::Gravity).is_err() {
             continue;
         }
-        let request = DynamicsRequest::default();
-        let Ok(gravity) = compile_dynamics(&tree, &request, DynamicsFunction::Gravity) else { continue };
-        let count = |f| compile_dynamics(&tree, &request, f).unwrap().op_count();
-        let [id, h, m, fd] = [
-            DynamicsFunction::InverseDynamics,
-            DynamicsFunction::NonlinearEffects,
-            DynamicsFunction::MassMatrix,
-            DynamicsFunction::ForwardDynamics,
-        ]
-        .map(count);
-        rows.push_str(&format!(
-            "| {file} | {} | {} | {} | {} | {} | {} + {} div |\n",
-            tree.velocity_dof(),
-            short(gravity.op_count()),
-            short(id),
-            short(h),
-            short(m),
-            short(fd),
-            fd.div
-        ));
-        // Gravity alone is the cheapest; forward dynamics holds the nonlinear effects and the mass matrix.
-        let total = |c: OpCount| c.mul + c.add;
-        assert!(total(gravity.op_count()) < total(h) && total(h) <= total(id), "{file}");
-        assert!(fd.div <= tree.velocity_dof(), "{file}: at most one division per pivot (a constant pivot folds), {fd}");
+        let mut cells = Vec::new();
+        let mut totals = Vec::new();
+        for function in DynamicsFunction::ALL {
+            let generated = compile_dynamics(&tree, &request, function).unwrap().op_count();
+            let plain = plain_op_count(&tree, &request, function).unwrap();
+            let div = |c: OpCount| if c.div > 0 { format!(" + {} div", c.div) } else { String::new() };
+            cells.push(format!("{}{} ({}{})", short(generated), div(generated), short(plain), div(plain)));
+            // The robot's numbers never cost operations.
+            assert!(
+                generated.mul <= plain.mul && generated.add <= plain.add && generated.div <= plain.div,
+                "{file} {function:?}: {generated} against plain {plain}"
+            );
+            assert!(generated.div <= tree.velocity_dof(), "{file}: at most one division per pivot, {generated}");
+            totals.push(generated.mul + generated.add);
+        }
+        // Gravity alone is the cheapest; inverse dynamics holds the nonlinear effects' work.
+        assert!(totals[0] < totals[2] && totals[2] <= totals[1], "{file}: {totals:?}");
+        rows.push_str(&format!("| {file} | {} | {} |\n", tree.velocity_dof(), cells.join(" | ")));
     }
     rows
 }
@@ -197,7 +195,8 @@ fn dynamics_table_of_every_robot_with_inertias() {
     println!("sin_cos/mul/add of the dynamics\n{table}");
     insta::assert_snapshot!("dynamics_op_counts", table);
     let page = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../src/guide/dynamics.md")).unwrap();
-    let section = page.split("| robot | velocities | gravity |").nth(1).expect("the guide has the dynamics op-count table");
+    let section =
+        page.split("| robot | velocities | gravity |").nth(1).expect("the guide has the dynamics op-count table");
     let rows: Vec<&str> = section.lines().skip(2).take_while(|l| l.starts_with('|')).collect();
     assert!(!rows.is_empty());
     for row in rows {

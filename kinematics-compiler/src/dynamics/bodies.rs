@@ -59,6 +59,8 @@ pub(super) struct Body {
     pub(super) motions: Vec<Motion>,
     /// The mass it carries (its own link's and the links lumped onto it), if any.
     pub(super) inertia: Option<Inertia>,
+    /// The steps of its motion alone (for [`opaque`]).
+    motion_steps: Vec<Step>,
 }
 
 /// Numeric mass properties while lumping: mass, first moment and inertia about the origin.
@@ -91,11 +93,11 @@ pub(super) fn bodies(g: &mut ExprGraph, tree: &KinematicTree) -> Vec<Body> {
         let mut body = parent.body;
         let id = kinematics_model::JointId(index);
         for (motion_steps, motions) in motions_of(g, tree, id, &of_entry) {
-            steps.extend(motion_steps);
+            steps.extend(motion_steps.iter().cloned());
             let steps_now = simplify(g, std::mem::take(&mut steps));
             let identity = SymTransform::identity(g);
             let transform = fold_from_base(g, identity, &steps_now);
-            bodies.push(Body { parent: body, transform, motions, inertia: None });
+            bodies.push(Body { parent: body, transform, motions, inertia: None, motion_steps });
             lumped.push(Lumped::default());
             body = Some(bodies.len() - 1);
         }
@@ -103,7 +105,7 @@ pub(super) fn bodies(g: &mut ExprGraph, tree: &KinematicTree) -> Vec<Body> {
         places[joint.child.0] = Some(Place { body, steps });
     }
     for (link, place) in tree.links().iter().zip(&places) {
-        let (Some(inertial), Some(Place { body: Some(body), steps })) = (&link.inertial, place) else { continue };
+        let (Some(inertial), Some(Place { body: Some(body), steps, .. })) = (&link.inertial, place) else { continue };
         let mut steps = steps.clone();
         lower_fixed(g, &inertial.origin, &mut steps);
         let identity = SymTransform::identity(g);
@@ -225,4 +227,34 @@ fn motions_of(
             vec![(steps, motions)]
         }
     }
+}
+
+/// The same bodies with every number of the robot unknown until run time: each body's fixed
+/// placement a full transform of inputs, then its motion (its joint's kind and axis known, as a
+/// run-time library's joint types know them), and every inertia six inputs, a mass and a first
+/// moment. The recursive algorithms over these count what they cost where nothing folds: the
+/// plain recursive algorithm the compiled one is measured against.
+/// The inputs are numbered from `first` on.
+pub(super) fn opaque(g: &mut ExprGraph, bodies: &[Body], first: usize) -> Vec<Body> {
+    let mut next = first;
+    let mut input = |g: &mut ExprGraph| {
+        next += 1;
+        g.input(next - 1)
+    };
+    bodies
+        .iter()
+        .map(|body| {
+            let placement = SymTransform {
+                r: std::array::from_fn(|_| std::array::from_fn(|_| input(g))),
+                p: std::array::from_fn(|_| input(g)),
+            };
+            let transform = fold_from_base(g, placement, &body.motion_steps);
+            let inertia = body.inertia.map(|_| Inertia {
+                mass: input(g),
+                first_moment: std::array::from_fn(|_| input(g)),
+                rotational: std::array::from_fn(|_| input(g)),
+            });
+            Body { transform, inertia, ..body.clone() }
+        })
+        .collect()
 }

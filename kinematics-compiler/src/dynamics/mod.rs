@@ -159,39 +159,7 @@ pub fn compile_dynamics(
     check(tree, request)?;
     let mut g = ExprGraph::new();
     let bodies = bodies::bodies(&mut g, tree);
-    let (n, nv) = (tree.dof(), tree.velocity_dof());
-    let rates = |g: &mut ExprGraph, i: usize| Some(g.var(n + i));
-    let none = |_: &mut ExprGraph, _: usize| None;
-    let inputs = |g: &mut ExprGraph, i: usize| Some(g.input(i));
-    let gravity = request.gravity;
-    let mut outputs = match function {
-        DynamicsFunction::Gravity => recursive::gravity(&mut g, &bodies, nv, gravity),
-        DynamicsFunction::InverseDynamics => {
-            let input = NewtonEuler { rates: &rates, accelerations: &inputs, gravity };
-            recursive::newton_euler(&mut g, &bodies, nv, &input)
-        }
-        DynamicsFunction::NonlinearEffects => {
-            let input = NewtonEuler { rates: &rates, accelerations: &none, gravity };
-            recursive::newton_euler(&mut g, &bodies, nv, &input)
-        }
-        DynamicsFunction::MassMatrix => {
-            let upper = recursive::mass_matrix(&mut g, &bodies, nv);
-            (0..nv).flat_map(|i| (0..nv).map(move |j| (i, j))).map(|(i, j)| upper[i.min(j)][i.max(j)]).collect()
-        }
-        DynamicsFunction::ForwardDynamics => {
-            let input = NewtonEuler { rates: &rates, accelerations: &none, gravity };
-            let h = recursive::newton_euler(&mut g, &bodies, nv, &input);
-            let upper = recursive::mass_matrix(&mut g, &bodies, nv);
-            let rhs: Vec<ExprId> = (0..nv)
-                .map(|i| {
-                    let tau = g.input(i);
-                    g.sub(tau, h[i])
-                })
-                .collect();
-            let (accelerations, pivots) = solve::solve(&mut g, upper, rhs);
-            accelerations.into_iter().chain(pivots).collect()
-        }
-    };
+    let mut outputs = write(&mut g, tree, &bodies, request.gravity, function);
     run_expr_passes(&mut g, &mut [], &mut outputs, EXPR_PASSES, false);
     Ok(CompiledDynamics {
         robot: tree.name().to_owned(),
@@ -199,10 +167,72 @@ pub fn compile_dynamics(
         dof_names: tree.dof_names(),
         velocity_names: tree.velocity_names(),
         quaternions: tree.quaternion_entries(),
-        gravity,
+        gravity: request.gravity,
         graph: g,
         outputs,
     })
+}
+
+/// `function`'s outputs over `bodies`, built in `g`.
+fn write(
+    g: &mut ExprGraph,
+    tree: &KinematicTree,
+    bodies: &[bodies::Body],
+    gravity: [f64; 3],
+    function: DynamicsFunction,
+) -> Vec<ExprId> {
+    let (n, nv) = (tree.dof(), tree.velocity_dof());
+    let rates = |g: &mut ExprGraph, i: usize| Some(g.var(n + i));
+    let none = |_: &mut ExprGraph, _: usize| None;
+    let inputs = |g: &mut ExprGraph, i: usize| Some(g.input(i));
+    match function {
+        DynamicsFunction::Gravity => recursive::gravity(g, bodies, nv, gravity),
+        DynamicsFunction::InverseDynamics => {
+            let input = NewtonEuler { rates: &rates, accelerations: &inputs, gravity };
+            recursive::newton_euler(g, bodies, nv, &input)
+        }
+        DynamicsFunction::NonlinearEffects => {
+            let input = NewtonEuler { rates: &rates, accelerations: &none, gravity };
+            recursive::newton_euler(g, bodies, nv, &input)
+        }
+        DynamicsFunction::MassMatrix => {
+            let upper = recursive::mass_matrix(g, bodies, nv);
+            (0..nv).flat_map(|i| (0..nv).map(move |j| (i, j))).map(|(i, j)| upper[i.min(j)][i.max(j)]).collect()
+        }
+        DynamicsFunction::ForwardDynamics => {
+            let input = NewtonEuler { rates: &rates, accelerations: &none, gravity };
+            let h = recursive::newton_euler(g, bodies, nv, &input);
+            let upper = recursive::mass_matrix(g, bodies, nv);
+            let rhs: Vec<ExprId> = (0..nv)
+                .map(|i| {
+                    let tau = g.input(i);
+                    g.sub(tau, h[i])
+                })
+                .collect();
+            let (accelerations, pivots) = solve::solve(g, upper, rhs);
+            accelerations.into_iter().chain(pivots).collect()
+        }
+    }
+}
+
+/// What `function` costs as the plain recursive algorithm: the same recursion over the same
+/// bodies, with every number of the robot (each fixed placement, each inertia) unknown until run
+/// time, as a library that reads the robot at run time has it; only each joint's kind and axis
+/// are known (a run-time library's joint types), and exact zeros of the algorithm itself fold.
+/// The compiled function's count ([`CompiledDynamics::op_count`]) set beside it is what the
+/// robot's own numbers save.
+pub fn plain_op_count(
+    tree: &KinematicTree,
+    request: &DynamicsRequest,
+    function: DynamicsFunction,
+) -> Result<OpCount, CompileError> {
+    check(tree, request)?;
+    let mut g = ExprGraph::new();
+    let bodies = bodies::bodies(&mut g, tree);
+    // The robot's numbers are inputs after the function's own (`qdd`, `tau`).
+    let opaque = bodies::opaque(&mut g, &bodies, tree.velocity_dof());
+    let outputs = write(&mut g, tree, &opaque, request.gravity, function);
+    Ok(OpCount::of(&g, outputs))
 }
 
 /// The dynamics' refusals: a gravity that is not finite, mass left to geometry, a broken inertia.
@@ -261,5 +291,115 @@ impl CompiledDynamics {
         let variables = crate::request::variables(self.dof(), self.velocity_dof(), &self.quaternions, &values);
         let mut cache = Vec::new();
         self.outputs.iter().map(|&id| self.graph.eval_with_inputs(id, &variables, input, &mut cache)).collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::symbolic::graph::Node;
+    use crate::symbolic::step::expr_text;
+
+    /// A two-link arm in the vertical x-z plane, hinges about `y`, point masses `m1 = 2` and
+    /// `m2 = 3` at the ends of links of lengths `l1 = 0.5` and `l2 = 0.25`, and gravity `-z`.
+    fn planar_arm() -> KinematicTree {
+        let urdf = r#"<robot name="arm"><link name="base"/>
+          <link name="upper"><inertial><origin xyz="0.5 0 0"/><mass value="2"/>
+            <inertia ixx="0" ixy="0" ixz="0" iyy="0" iyz="0" izz="0"/></inertial></link>
+          <link name="fore"><inertial><origin xyz="0.25 0 0"/><mass value="3"/>
+            <inertia ixx="0" ixy="0" ixz="0" iyy="0" iyz="0" izz="0"/></inertial></link>
+          <joint name="shoulder" type="continuous"><parent link="base"/><child link="upper"/><axis xyz="0 -1 0"/></joint>
+          <joint name="elbow" type="continuous"><parent link="upper"/><child link="fore"/>
+            <origin xyz="0.5 0 0"/><axis xyz="0 -1 0"/></joint></robot>"#;
+        kinematics_model::parse_source("arm.urdf", urdf).unwrap()
+    }
+
+    fn texts(compiled: &CompiledDynamics) -> Vec<String> {
+        compiled.outputs.iter().map(|&id| expr_text(&compiled.graph, id)).collect()
+    }
+
+    /// The textbook's gravity torques of the planar arm (Spong, Hutchinson and Vidyasagar, *Robot
+    /// Modeling and Control*, §7.4 with point masses): `tau2 = m2 g l2 cos(q1 + q2)` and
+    /// `tau1 = (m1 l1 + m2 l1) g cos q1 + tau2`, here `g = 9.81` (an axis `-y` turns `x` up
+    /// towards `z`).
+    #[test]
+    fn a_planar_arms_gravity_reads_as_the_textbooks() {
+        let tree = planar_arm();
+        let gravity = compile_dynamics(&tree, &DynamicsRequest::default(), DynamicsFunction::Gravity).unwrap();
+        let at = |q: [f64; 2]| gravity.eval(&q, &[0.0; 2], &[]);
+        for q in [[0.3, -0.7], [1.2, 2.0], [-2.5, 0.1]] {
+            let tau = at(q);
+            let want2 = 3.0 * 9.81 * 0.25 * (q[0] + q[1]).cos();
+            let want1 = (2.0 + 3.0) * 9.81 * 0.5 * q[0].cos() + want2;
+            assert!((tau[1] - want2).abs() < 1e-13 && (tau[0] - want1).abs() < 1e-13, "{tau:?} at {q:?}");
+        }
+        // Two angles, one `sin_cos` each; `cos(q1 + q2)` is written as their products (the
+        // first moment is carried joint by joint), in a handful of operations.
+        assert_eq!(gravity.op_count().sin_cos, 2, "{:?}", texts(&gravity));
+        assert!(gravity.op_count().mul <= 12, "{} {:?}", gravity.op_count(), texts(&gravity));
+    }
+
+    /// The mass matrix of the planar arm: `m22 = m2 l2^2`, `m12 = m2 (l2^2 + l1 l2 cos q2)`,
+    /// `m11 = m1 l1^2 + m2 (l1^2 + l2^2 + 2 l1 l2 cos q2)`, exactly symmetric.
+    #[test]
+    fn a_planar_arms_mass_matrix_is_the_textbooks() {
+        let tree = planar_arm();
+        let m = compile_dynamics(&tree, &DynamicsRequest::default(), DynamicsFunction::MassMatrix).unwrap();
+        assert_eq!(m.outputs[1], m.outputs[2], "one node for both sides of the diagonal");
+        for q2 in [0.0, 0.4, -2.0] {
+            let v = m.eval(&[0.7, q2], &[0.0; 2], &[]);
+            let (l1, l2) = (0.5, 0.25);
+            let want = [
+                2.0 * l1 * l1 + 3.0 * (l1 * l1 + l2 * l2 + 2.0 * l1 * l2 * q2.cos()),
+                3.0 * (l2 * l2 + l1 * l2 * q2.cos()),
+                3.0 * l2 * l2,
+            ];
+            for (got, want) in [v[0], v[1], v[3]].into_iter().zip(want) {
+                assert!((got - want).abs() < 1e-15, "{v:?} against {want:?}");
+            }
+        }
+        // Nothing reads the shoulder's angle.
+        let reads_q1 = crate::stats::reachable(&m.graph, m.outputs.iter().copied())
+            .into_iter()
+            .any(|id| m.graph.node(id) == Node::Var(0));
+        assert!(!reads_q1, "{:?}", texts(&m));
+    }
+
+    /// The Panda's first joint turns about gravity: none of its dynamics reads `q1`.
+    #[test]
+    fn the_pandas_dynamics_do_not_read_its_first_joint() {
+        let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../robots/panda.urdf")).unwrap();
+        let tree = kinematics_model::parse_source("panda.urdf", &text).unwrap();
+        for function in DynamicsFunction::ALL {
+            let compiled = compile_dynamics(&tree, &DynamicsRequest::default(), function).unwrap();
+            let reached = crate::stats::reachable(&compiled.graph, compiled.outputs.iter().copied());
+            assert!(!reached.iter().any(|&id| compiled.graph.node(id) == Node::Var(0)), "{function:?}");
+        }
+    }
+
+    /// A massless link below a fixed joint is nothing; a massive one is lumped onto its parent: the
+    /// same torques as the link's mass written on the parent at the child's place.
+    #[test]
+    fn fixed_joints_are_lumped() {
+        let arm = |extra: &str, joint: &str| {
+            let urdf = format!(
+                r#"<robot name="lumped"><link name="base"/>
+                  <link name="upper">{extra}</link><link name="tool"><inertial><origin xyz="0 0 0.1"/><mass value="1.5"/>
+                    <inertia ixx="0.01" ixy="0" ixz="0" iyy="0.02" iyz="0" izz="0.015"/></inertial></link>
+                  <joint name="shoulder" type="continuous"><parent link="base"/><child link="upper"/><axis xyz="0 1 0"/></joint>
+                  {joint}</robot>"#
+            );
+            kinematics_model::parse_source("lumped.urdf", &urdf).unwrap()
+        };
+        let fixed = arm(
+            "",
+            r#"<joint name="flange" type="fixed"><parent link="upper"/><child link="tool"/><origin xyz="0.4 0 0" rpy="0 1.5707963267948966 0"/></joint>"#,
+        );
+        let compiled = compile_dynamics(&fixed, &DynamicsRequest::default(), DynamicsFunction::MassMatrix).unwrap();
+        // The tool's centre at (0.4 + 0.1, 0, 0) after the quarter turn about y, its tensor turned:
+        // about the hinge (y), m r^2 + iyy.
+        let m = compiled.eval(&[0.3], &[0.0], &[]);
+        assert!((m[0] - (1.5 * 0.5 * 0.5 + 0.02)).abs() < 1e-15, "{m:?}");
+        assert!(compiled.op_count().mul == 0 && compiled.op_count().sin_cos == 0, "{}", compiled.op_count());
     }
 }

@@ -25,12 +25,13 @@ pub(super) fn solve(g: &mut ExprGraph, upper: Vec<Vec<ExprId>>, rhs: Vec<ExprId>
                 continue;
             }
             let a = g.mul(h[k][i], reciprocal[k]);
-            for j in 0..=i {
-                if g.is_const(h[k][j], 0.0) {
-                    continue;
+            // Row i (below k) less a times row k, over the columns up to i.
+            let (above, from_k) = h.split_at_mut(k);
+            for (entry, &by) in above[i].iter_mut().zip(&from_k[0][..=i]) {
+                if !g.is_const(by, 0.0) {
+                    let t = g.mul(a, by);
+                    *entry = g.sub(*entry, t);
                 }
-                let t = g.mul(a, h[k][j]);
-                h[i][j] = g.sub(h[i][j], t);
             }
             h[k][i] = a;
         }
