@@ -47,9 +47,9 @@ pub enum CompileError {
         link: String,
         /// The line of its `<inertial>`, when read from a file.
         line: Option<usize>,
-        /// What is wrong with it.
+        /// What is wrong with it (boxed: the error stays small).
         #[source]
-        fault: kinematics_model::inertia::InertiaFault,
+        fault: Box<kinematics_model::inertia::InertiaFault>,
     },
     /// A link whose mass the description leaves to its geometry (an MJCF body with geoms and no
     /// `<inertial>`, whose inertia MuJoCo would infer), for the dynamics.

@@ -264,7 +264,7 @@ pub enum FaultKind {
     #[error("`dynamics` of a robot with no mass: no link has an <inertial> (a link without one is massless)")]
     NoMass,
     /// `gravity` that is not a finite vector.
-    #[error("`gravity` is {0:?} (must be three finite numbers, m/s^2 in the base's frame)")]
+    #[error("`gravity` is {0:?} (must be three finite numbers, m/s^2 in the root link's frame)")]
     Gravity([f64; 3]),
 }
 

@@ -1,5 +1,10 @@
-//! Helpers shared by the agreement tests: robot paths, reach, configurations, pose distances.
+//! Helpers shared by the agreement tests: robot paths, reach, configurations, pose distances; for
+//! the dynamics tests, random robots (`dynamics_robots`) and the links' motions and energies from
+//! the reference's forward kinematics (`link_motions`).
 #![allow(dead_code, unused_imports)] // each test uses some of the helpers
+
+pub mod dynamics_robots;
+pub mod link_motions;
 
 use kinematics::Pose;
 use kinematics::model::KinematicTree;

@@ -247,7 +247,12 @@ pub(crate) fn check(tree: &KinematicTree, request: &DynamicsRequest) -> Result<(
         }
         if let Some(fault) = link.inertial.as_ref().and_then(|i| i.fault(request.inertia_as_written)) {
             let line = tree.inertial_line(&link.name);
-            return Err(CompileError::Inertia { robot: robot(), link: link.name.clone(), line, fault });
+            return Err(CompileError::Inertia {
+                robot: robot(),
+                link: link.name.clone(),
+                line,
+                fault: Box::new(fault),
+            });
         }
     }
     Ok(())
