@@ -3,7 +3,7 @@
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)] // tests fail loudly
 
 use kinematics::runtime::ReferenceDynamics;
-use kinematics::{F64x4, Kinematics, KinematicsError, ReferenceModel as _};
+use kinematics::{F64x4, Kinematics, KinematicsError};
 
 #[derive(Kinematics)]
 #[kinematics(urdf = "robots/panda.urdf", dynamics, scalars(f64, f32))]
@@ -50,9 +50,8 @@ fn the_panda_agrees_with_the_reference() {
         close(&Panda::gravity_torques(&qa), &reference.gravity_torques(&q).unwrap(), 1e-12, "gravity");
         close(&Panda::nonlinear_effects(&qa, &va), &reference.nonlinear_effects(&q, &v).unwrap(), 1e-12, "h");
         let m = reference.mass_matrix(&q).unwrap();
-        let got = Panda::mass_matrix(&qa);
-        for i in 0..8 {
-            close(&got[i], &m.row(i).iter().copied().collect::<Vec<_>>(), 1e-12, "mass matrix");
+        for (i, row) in Panda::mass_matrix(&qa).iter().enumerate() {
+            close(row, &m.row(i).iter().copied().collect::<Vec<_>>(), 1e-12, "mass matrix");
         }
         let taua: [f64; 8] = tau.clone().try_into().unwrap();
         close(&Panda::forward_dynamics(&qa, &va, &taua).unwrap(), &a, 1e-9, "forward dynamics");
@@ -74,6 +73,37 @@ fn the_ur5_takes_its_gravity() {
         let mut out = [[0.0; 6]; 3];
         Ur5::gravity_torques_batch(&[qa; 3], &mut out).unwrap();
         assert_eq!(out[2], Ur5::gravity_torques(&qa));
+    }
+}
+
+/// The UR5 on a free-flying base: 13 entries of `q` (position, quaternion, joints), 12 velocities
+/// (the base's linear and angular velocity in its own axes, then the joints).
+#[derive(Kinematics)]
+#[kinematics(urdf = "robots/ur5.urdf", floating_base, dynamics)]
+struct FlyingUr5;
+
+#[test]
+fn a_floating_base_agrees_with_the_reference() {
+    let reference =
+        ReferenceDynamics::new(FlyingUr5::reference().unwrap().tree().clone(), [0.0, 0.0, -9.81], false).unwrap();
+    assert_eq!((FlyingUr5::DOF, FlyingUr5::VELOCITY_DOF), (13, 12));
+    for (mut q, v, a) in states(13, 12, 100) {
+        // A unit quaternion (the generated code normalises it as the reference does).
+        let norm = q[3..7].iter().map(|x| x * x).sum::<f64>().sqrt();
+        q[3..7].iter_mut().for_each(|x| *x /= norm);
+        let (qa, va, aa): ([f64; 13], [f64; 12], [f64; 12]) =
+            (q.clone().try_into().unwrap(), v.clone().try_into().unwrap(), a.clone().try_into().unwrap());
+        let tau = reference.inverse_dynamics(&q, &v, &a).unwrap();
+        close(&FlyingUr5::inverse_dynamics(&qa, &va, &aa), &tau, 1e-12, "inverse dynamics");
+        close(&FlyingUr5::gravity_torques(&qa), &reference.gravity_torques(&q).unwrap(), 1e-12, "gravity");
+        let m = reference.mass_matrix(&q).unwrap();
+        for (i, row) in FlyingUr5::mass_matrix(&qa).iter().enumerate() {
+            close(row, &m.row(i).iter().copied().collect::<Vec<_>>(), 1e-12, "mass matrix");
+        }
+        // Forward dynamics undoes inverse dynamics, in torque units (the floating base's mass
+        // matrix is well conditioned enough for 1e-9 in accelerations too).
+        let taua: [f64; 12] = tau.try_into().unwrap();
+        close(&FlyingUr5::forward_dynamics(&qa, &va, &taua).unwrap(), &a, 1e-9, "forward dynamics");
     }
 }
 

@@ -2,11 +2,13 @@
 //! calling each function the derive wrote, for `tests/debug_stack.rs` to run on a small stack.
 //!
 //! Per robot: the derive of `derived.rs` (every leaf a tip, with positions) for the links' and the
-//! tips' functions, and up to three structs more, each with cases for the functions it adds: the
+//! tips' functions, and up to four structs more, each with cases for the functions it adds: the
 //! deepest link's velocities (Jacobians and twists), its inverse kinematics (the closed form where
 //! a family takes the chain, for seven joints with the third joint given, else the numeric
-//! solver), and the collision checks (where the `<collision>` geometry can be covered). Which options a robot takes is what the compiler's
-//! own rules say (`Options::check`), so a robot added to `robots/` is covered as it is.
+//! solver), the collision checks (where the `<collision>` geometry can be covered), and the
+//! dynamics (where the inertias keep a rigid body's rules). Which options a robot takes is what
+//! the compiler's own rules say (`Options::check`), so a robot added to `robots/` is covered as it
+//! is.
 //!
 //! The functions are the API surface the emitter writes (`kinematics_compiler::robot::surface`),
 //! listed by the same code the emitter and the derive's stub use; the arguments of each are
@@ -16,6 +18,7 @@
 
 use std::fmt::Write as _;
 
+use kinematics_compiler::dynamics::{DynamicsFunction, DynamicsRequest};
 use kinematics_compiler::options::{CheckedIk, CollisionOptions, IkMode, Options, Scalars};
 use kinematics_compiler::robot::surface::{
     CollisionFunction, Dims, Form, IkFunction, IkItem, IkShape, Output, Render, outputs,
@@ -176,6 +179,11 @@ fn option_sets(module: &str, tree: &KinematicTree, both: Scalars) -> Vec<OptionS
             vec![Output::SphereCenters],
         ));
     }
+    let dynamics = Options { dynamics: Some(DynamicsRequest::default()), scalars: both, ..Options::default() };
+    if dynamics.check(tree).is_ok() {
+        let functions = DynamicsFunction::ALL.map(Output::Dynamics).to_vec();
+        sets.push((format!("StackDynamics_{module}"), dynamics, Some("dynamics".to_owned()), functions));
+    }
     sets
 }
 
@@ -231,13 +239,18 @@ fn scalar_inputs(form: &Form) -> (&'static str, &'static str, &'static str, &'st
     }
 }
 
-/// A call of an output's function `name` of `form`.
+/// A call of an output's function `name` of `form` (the rates `qd` its third argument too, `qdd`
+/// or `tau`, where it takes one).
 fn output_call(d: &Derived<'_>, output: Output, one_tip: bool, form: &Form, name: &str) -> String {
     let ty = &d.ty;
     let (q, qs, columns, qd) = scalar_inputs(form);
     let rates = output.takes_rates();
+    let third = |rates: &str| if output.third_argument().is_some() { format!(", &{rates}") } else { String::new() };
     match form {
-        Form::Typed(_) if rates => format!("let value = {ty}::{name}(&{q}, &{qd}); ::std::hint::black_box(&value);"),
+        Form::Typed(_) if rates => {
+            let third = third(qd);
+            format!("let value = {ty}::{name}(&{q}, &{qd}{third}); ::std::hint::black_box(&value);")
+        }
         Form::Typed(_) => format!("let value = {ty}::{name}(&{q}); ::std::hint::black_box(&value);"),
         Form::Batch(s) | Form::Columns(s) => {
             let typed = format!("{}{}", output.name(one_tip), s.suffix);
@@ -248,7 +261,8 @@ fn output_call(d: &Derived<'_>, output: Output, one_tip: bool, form: &Form, name
             )
         }
         Form::Generic if rates => {
-            format!("let value = {ty}::{name}(&lanes, &qd_lanes); ::std::hint::black_box(&value);")
+            let third = third("qd_lanes");
+            format!("let value = {ty}::{name}(&lanes, &qd_lanes{third}); ::std::hint::black_box(&value);")
         }
         Form::Generic => format!("let value = {ty}::{name}(&lanes); ::std::hint::black_box(&value);"),
     }

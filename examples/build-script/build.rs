@@ -1,5 +1,5 @@
 //! Generates the UR5's and the Panda's forward kinematics into `OUT_DIR` (and, for the lints,
-//! inverse kinematics and collision), for `src/lib.rs` to `include!`. A fault in a description fails the build with its message (the file, the element
+//! inverse kinematics, collision and dynamics), for `src/lib.rs` to `include!`. A fault in a description fails the build with its message (the file, the element
 //! and what is wrong).
 
 use kinematics_build::{BuildError, Robot};
@@ -21,7 +21,7 @@ fn main() -> Result<(), BuildError> {
     // The other kinds of generated item, so that the workspace's clippy (which does not lint what
     // a derive expands to) lints the code a build script writes into a user's crate: inverse
     // kinematics compiled to branch lanes (the UR5) and measured at `q` (a planar arm), each with
-    // the numeric solver; Jacobians; collision checks and distances.
+    // the numeric solver; Jacobians; collision checks and distances; the dynamics, in both scalars.
     Robot::urdf("../../robots/ur5.urdf")
         .tip("tool0")
         .jacobians()
@@ -37,5 +37,11 @@ fn main() -> Result<(), BuildError> {
         .collision()
         .struct_name("Ur5Spheres")
         .write_to_out_dir("ur5_spheres.rs")?;
+    Robot::urdf("../../robots/ur5.urdf")
+        .dynamics()
+        .gravity([0.5, 0.0, -9.81])
+        .f32()
+        .struct_name("Ur5Dynamics")
+        .write_to_out_dir("ur5_dynamics.rs")?;
     Ok(())
 }

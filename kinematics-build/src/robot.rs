@@ -5,6 +5,7 @@
 
 use std::path::{Path, PathBuf};
 
+use kinematics_compiler::dynamics::DynamicsRequest;
 use kinematics_compiler::emit::Trig;
 use kinematics_compiler::options::{
     CollisionOptions, Cover, IkMode, Meshes, OptionFault, OptionKey, Options, floating_base_clash,
@@ -36,6 +37,7 @@ use crate::write::write_atomic;
 /// | `exact_angles = false` | [`Robot::exact_angles`] |
 /// | `trig = "std"` | [`Robot::trig`] |
 /// | `collision` / `collision(spheres = 16, sphere_cover = 0.02, meshes = "skip", srdf = "path", packages(NAME = "path"))` | [`Robot::collision`] / [`Robot::spheres`], [`Robot::sphere_cover`], [`Robot::skip_meshes`], [`Robot::srdf`], [`Robot::package`] |
+/// | `dynamics` / `dynamics(gravity = [0.0, 0.0, -9.81], inertia_as_written)` | [`Robot::dynamics`] / [`Robot::gravity`], [`Robot::inertia_as_written`] |
 ///
 /// plus [`Robot::struct_name`] (default: the robot's name in UpperCamelCase, see
 /// [`default_struct_name`]). Paths are relative to `CARGO_MANIFEST_DIR` (the directory of the
@@ -271,6 +273,54 @@ impl Robot {
         self
     }
 
+    /// Also generate the dynamics from the links' `<inertial>`s: `gravity_torques(&q)`,
+    /// `inverse_dynamics(&q, &qd, &qdd)`, `nonlinear_effects(&q, &qd)`, `mass_matrix(&q)` and
+    /// `forward_dynamics(&q, &qd, &tau)` (a `Result`: a mass matrix that is singular at `q` is an
+    /// error naming the velocity), each in `f64` (and `f32` with [`Robot::f32`]) and `_generic`
+    /// over lanes, and the functions of `q` alone in batches too. Gravity is
+    /// `[0.0, 0.0, -9.81]` m/s^2 in the root link's frame unless [`Robot::gravity`] says otherwise.
+    ///
+    /// [`Robot::generate`] refuses a robot none of whose links has an `<inertial>`, one whose
+    /// inertia breaks a rigid body's rules (a negative mass, an entry that is not finite, a tensor
+    /// that is not positive semi-definite or, unless [`Robot::inertia_as_written`], breaks the
+    /// triangle inequality), naming the link and the line of its `<inertial>`, and an MJCF body
+    /// whose mass MuJoCo would infer from its geoms.
+    ///
+    /// ```
+    /// let dir = std::env::temp_dir().join(format!("kinematics-build-dynamics-doc-{}", std::process::id()));
+    /// std::fs::create_dir_all(&dir)?;
+    /// let urdf = r#"<robot name="pendulum"><link name="base"/>
+    ///   <link name="bob"><inertial><origin xyz="0 0 -0.5"/><mass value="2"/>
+    ///     <inertia ixx="0" ixy="0" ixz="0" iyy="0" iyz="0" izz="0"/></inertial></link>
+    ///   <joint name="hinge" type="continuous"><parent link="base"/><child link="bob"/><axis xyz="0 1 0"/></joint>
+    /// </robot>"#;
+    /// std::fs::write(dir.join("pendulum.urdf"), urdf)?;
+    /// let source = kinematics_build::Robot::urdf("pendulum.urdf").manifest_dir(&dir).dynamics().generate()?;
+    /// assert!(source.contains("pub fn gravity_torques(q: &[f64; 1]) -> [f64; 1]"));
+    /// assert!(source.contains("pub fn mass_matrix(q: &[f64; 1]) -> [[f64; 1]; 1]"));
+    /// # std::fs::remove_dir_all(&dir)?;
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn dynamics(mut self) -> Self {
+        self.options.dynamics.get_or_insert_with(DynamicsRequest::default);
+        self
+    }
+
+    /// [`Robot::dynamics`] under the gravity `[x, y, z]` (m/s^2, in the root link's frame; the
+    /// default is `[0.0, 0.0, -9.81]`). Each entry must be finite.
+    pub fn gravity(mut self, gravity: [f64; 3]) -> Self {
+        self.options.dynamics.get_or_insert_with(DynamicsRequest::default).gravity = gravity;
+        self
+    }
+
+    /// [`Robot::dynamics`] taking inertia tensors whose principal moments break the triangle
+    /// inequality as written (real descriptions have them; no rigid body of non-negative density
+    /// does). They must still be positive semi-definite.
+    pub fn inertia_as_written(mut self) -> Self {
+        self.options.dynamics.get_or_insert_with(DynamicsRequest::default).inertia_as_written = true;
+        self
+    }
+
     /// The options the calls so far have set.
     pub fn options(&self) -> &Options {
         &self.options
@@ -350,7 +400,7 @@ impl Robot {
             OptionKey::SphereCover => ".sphere_cover(..)",
             OptionKey::Spheres => ".spheres(..)",
             OptionKey::Srdf => ".srdf(..)",
-            OptionKey::Dynamics => ".dynamics(..)",
+            OptionKey::Dynamics => ".dynamics()",
             OptionKey::Gravity => ".gravity(..)",
         }
     }
@@ -688,6 +738,99 @@ mod tests {
         assert!(message.contains("no collision geometry"), "{message}");
         let missing = fails(&robot().srdf("none.srdf"), |e| matches!(e, BuildError::Load(_)));
         assert!(missing.starts_with("none.srdf: cannot read the file"), "{missing}");
+    }
+
+    /// `.dynamics()` on the UR5 writes each function of the dynamics in every form, as Rust that
+    /// parses; `.gravity(..)` and `.inertia_as_written()` imply it; each fault names its call, the
+    /// link and the line of its `<inertial>`.
+    #[test]
+    fn dynamics_writes_its_functions_and_names_the_inertial_at_fault() {
+        let robots = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../robots");
+        let ur5 = || Robot::urdf("ur5.urdf").manifest_dir(&robots);
+        let source = ur5().dynamics().f32().generate().unwrap();
+        syn::parse_file(&source).unwrap_or_else(|e| panic!("the generated file does not parse: {e}\n{source}"));
+        for expected in [
+            "pub fn gravity_torques(q: &[f64; 6]) -> [f64; 6]",
+            "pub fn gravity_torques_f32(q: &[f32; 6]) -> [f32; 6]",
+            "pub fn gravity_torques_batch(qs: &[[f64; 6]], out: &mut [[f64; 6]])",
+            "pub fn gravity_torques_batch_columns(columns: [&[f64]; 6], out: &mut [[f64; 6]])",
+            "pub fn gravity_torques_generic<T: ::kinematics::__private::Real>(q: &[T; 6]) -> [T; 6]",
+            "pub fn mass_matrix(q: &[f64; 6]) -> [[f64; 6]; 6]",
+            "pub fn mass_matrix_batch_f32(qs: &[[f32; 6]], out: &mut [[[f32; 6]; 6]])",
+            "pub fn inverse_dynamics(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [f64; 6]",
+            "pub fn nonlinear_effects(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6]",
+            "pub fn forward_dynamics(q: &[f64; 6], qd: &[f64; 6], tau: &[f64; 6])",
+            "pub fn forward_dynamics_f32(q: &[f32; 6], qd: &[f32; 6], tau: &[f32; 6])",
+        ] {
+            // Signatures as tokens, whatever the lines prettyplease breaks them into.
+            let flat = |s: &str| s.split_whitespace().collect::<String>().replace(",)", ")");
+            assert!(flat(&source).contains(&flat(expected)), "missing `{expected}` in\n{source}");
+        }
+        // Rates and inputs take no batch.
+        assert!(!source.contains("fn inverse_dynamics_batch") && !source.contains("fn forward_dynamics_batch"));
+        // The default gravity, and another one given: the constants differ, nothing else is asked.
+        let default = ur5().dynamics().generate().unwrap();
+        assert_eq!(default, ur5().gravity([0.0, 0.0, -9.81]).generate().unwrap());
+        assert_eq!(default, ur5().dynamics().dynamics().generate().unwrap());
+        assert_ne!(default, ur5().gravity([0.5, 0.0, -9.81]).generate().unwrap());
+        assert!(!ur5().generate().unwrap().contains("fn gravity_torques"));
+
+        let inertial = |link: &str, mass: &str, ixx: &str| {
+            format!(
+                "<link name=\"{link}\">\n<inertial><mass value=\"{mass}\"/>\n<inertia ixx=\"{ixx}\" ixy=\"0\" \
+                 ixz=\"0\" iyy=\"1\" iyz=\"0\" izz=\"1\"/></inertial></link>"
+            )
+        };
+        let with = |mass: &str, ixx: &str| ARM.replace("<link name=\"upper\"/>", &inertial("upper", mass, ixx));
+        let dir = fixture(
+            "dynamics",
+            &[
+                ("negative.urdf", &with("-1", "1")),
+                ("triangle.urdf", &with("1", "3")),
+                ("nan.urdf", &with("1", "nan")),
+                ("plain.urdf", ARM),
+            ],
+        );
+        let robot = |file: &str| Robot::urdf(file).manifest_dir(&dir);
+        let is = |e: &BuildError| matches!(e, BuildError::Options { .. });
+        assert_eq!(
+            fails(&robot("negative.urdf").dynamics(), |e| {
+                one_fault(e, ".dynamics()", |f| matches!(f, FaultKind::Dynamics(_)))
+            }),
+            "negative.urdf: `.dynamics()`: robot `arm`: the <inertial> of link `upper` (line 3): its mass is -1 kg \
+             (must be zero or more)"
+        );
+        let triangle = fails(&robot("triangle.urdf").dynamics(), is);
+        assert!(
+            triangle.starts_with(
+                "triangle.urdf: `.dynamics()`: robot `arm`: the <inertial> of link `upper` (line 3): \
+                 its inertia's principal moments [1.0, 1.0, 3.0] kg m^2 break the triangle inequality"
+            ),
+            "{triangle}"
+        );
+        // Taken as written, the same tensor compiles.
+        let written = robot("triangle.urdf").inertia_as_written().generate().unwrap();
+        assert!(written.contains("pub fn mass_matrix("), "{written}");
+        let nan = fails(&robot("nan.urdf").dynamics(), is);
+        assert!(
+            nan.starts_with(
+                "nan.urdf: `.dynamics()`: robot `arm`: the <inertial> of link `upper` (line 3): its mass \
+                 or inertia is not finite"
+            ),
+            "{nan}"
+        );
+        assert_eq!(
+            fails(&robot("plain.urdf").dynamics(), |e| one_fault(e, ".dynamics()", |f| *f == FaultKind::NoMass)),
+            "plain.urdf: `.dynamics()`: `dynamics` of a robot with no mass: no link has an <inertial> (a link \
+             without one is massless)"
+        );
+        assert_eq!(
+            fails(&robot("triangle.urdf").gravity([0.0, f64::NAN, -9.81]), |e| {
+                one_fault(e, ".gravity(..)", |f| matches!(f, FaultKind::Gravity(_)))
+            }),
+            "triangle.urdf: `.gravity(..)`: `gravity` is [0.0, NaN, -9.81] (must be three finite numbers, m/s^2 in \
+             the root link's frame)"
+        );
     }
 
     /// Up to 128 points (spheres, groups and links), the checks read them computed ahead; beyond,

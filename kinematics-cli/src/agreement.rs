@@ -71,7 +71,7 @@ pub fn check_graph(tree: &KinematicTree, file: &str, samples: usize) -> Result<V
     let spinner = crate::progress::spinner("compiling every link's pose");
     let compiled = compile(tree, &Request::all_links());
     spinner.finish_and_clear();
-    let compiled = compiled.map_err(|source| CliError::Compile { file: file.to_owned(), source })?;
+    let compiled = compiled.map_err(|source| CliError::compile(file, source))?;
     let fk = ReferenceFk::new(tree.clone());
     let reach = tree.reach();
     let ids: Vec<usize> = compiled

@@ -1,5 +1,6 @@
-//! `kinematics check FILE`: the compiled expressions against the runtime reference, and with
-//! `--collision` the collision checks against the reference's distances.
+//! `kinematics check FILE`: the compiled expressions against the runtime reference, with
+//! `--collision` the collision checks against the reference's distances, and with `--dynamics`
+//! the compiled dynamics against the reference's (`dynamics`).
 //!
 //! Every link's compiled pose is evaluated by `Compiled::evaluator` (the nodes the poses need
 //! listed once, then one pass per configuration) against `ReferenceFk`, the configurations split
@@ -7,6 +8,8 @@
 //! `demo` runs too.
 
 use std::io::Write;
+
+use kinematics_compiler::dynamics::DynamicsFunction;
 
 use crate::agreement::{TOLERANCE, check_graph, verdict};
 use crate::error::CliError;
@@ -35,6 +38,18 @@ pub struct Args {
     /// A scene file whose obstacles `collides` is checked against (implies `--collision`).
     #[arg(long, value_name = "FILE")]
     scene: Option<String>,
+    /// Check the compiled dynamics too (gravity torques, inverse dynamics, nonlinear effects,
+    /// mass matrix, forward dynamics) against the runtime reference's, from the links' inertias;
+    /// fails past 1e-12 x the values' scale.
+    #[arg(long)]
+    dynamics: bool,
+    /// With `--dynamics`, how many states (configurations as above; rates and accelerations
+    /// random in [-2, 2]).
+    #[arg(long, default_value_t = 1_000, value_parser = crate::agreement::sample_count, requires = "dynamics")]
+    dynamics_samples: usize,
+    /// With `--dynamics`: the gravity and how inertias are read.
+    #[command(flatten)]
+    dynamics_options: crate::dynamics::DynamicsArgs,
 }
 
 /// Prints the largest error of every link; fails past the tolerance.
@@ -44,6 +59,14 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
     let collision = if args.collision || args.srdf.is_some() || args.scene.is_some() {
         args.cover.read_meshes(&mut tree, &args.file)?;
         Some(crate::collision::setup(&tree, &args.cover, args.srdf.as_deref(), args.scene.as_deref())?)
+    } else {
+        None
+    };
+    // The dynamics' request is checked first too: a refused inertia fails before anything is printed.
+    let dynamics = if args.dynamics {
+        let request = args.dynamics_options.request();
+        let compiled = crate::dynamics::compile(&tree, &args.file, &request, &DynamicsFunction::ALL)?;
+        Some((crate::dynamics::reference(&tree, &args.file, &request)?, compiled))
     } else {
         None
     };
@@ -80,6 +103,12 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
             Some(report) => write!(out, "{}", crate::collision::text(&report, args.collision_samples))?,
             None => writeln!(out, "collision: no <collision> geometry the cover reads")?,
         }
+    }
+    if let Some((reference, compiled)) = &dynamics {
+        let graphs = crate::dynamics::Graphs(compiled);
+        let report = crate::dynamics::compare(&tree, &args.file, reference, &graphs, args.dynamics_samples)?;
+        write!(out, "{}", crate::dynamics::report_text(&tree, &report))?;
+        crate::dynamics::verdict(&args.file, &report)?;
     }
     Ok(())
 }

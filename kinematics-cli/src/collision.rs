@@ -188,7 +188,7 @@ pub fn check(tree: &KinematicTree, file: &str, samples: usize, setup: &Setup<'_>
         position_only: false,
         velocity: None,
     };
-    let compiled = compile(tree, &request).map_err(|source| CliError::Compile { file: file.to_owned(), source })?;
+    let compiled = compile(tree, &request).map_err(|source| CliError::compile(file, source))?;
     let environment = match &setup.scene {
         Some((_, obstacles)) => Some(obstacles.environment().map_err(|e| CliError::Usage(format!("the scene: {e}")))?),
         None => None,

@@ -14,6 +14,7 @@ use crate::error::CliError;
 use crate::ur5::Ur5;
 
 mod collision;
+mod dynamics;
 
 /// The robot shown when no file is given.
 const DEFAULT_FILE: &str = "robots/ur5.urdf";
@@ -52,8 +53,7 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
 
     writeln!(out, "\n3. What the generated code computes, against the plain product of the chain's transforms\n")?;
     let mut rows = crate::expr::op_counts(&tree, &file, &base, &tip)?;
-    let all =
-        compile(&tree, &Request::all_links()).map_err(|source| CliError::Compile { file: file.clone(), source })?;
+    let all = compile(&tree, &Request::all_links()).map_err(|source| CliError::compile(&file, source))?;
     rows.push((format!("every link's pose ({} links), generated", all.frames().len()), all.op_count()));
     write!(out, "{}", crate::expr::op_table(&rows))?;
 
@@ -112,6 +112,7 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
     }
     velocities(args, out, &tree, &file, (&base, &tip), built_in, &inputs)?;
     inverse(args, out, &tree, &file, built_in, &inputs)?;
+    dynamics::run(args, out, &tree, &file, built_in)?;
     collision::run(args, out, &tree, &file)
 }
 

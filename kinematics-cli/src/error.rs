@@ -1,7 +1,7 @@
 //! Everything a subcommand can fail with; each message names the file, the element and the fault.
 //!
-//! `CliError` is printed by `main` as `error: <file>: <element>: <fault>`; `generate`'s option
-//! faults name their flag.
+//! `CliError` is printed by `main` as `error: <file>: <element>: <fault>`; option faults
+//! (`generate`'s, and `--dynamics`' of `check` and `expr`) name their flag.
 
 use kinematics::{LoadError, RuntimeError};
 use kinematics_build::BuildError;
@@ -13,9 +13,10 @@ pub enum CliError {
     /// The description could not be read, parsed or validated.
     #[error(transparent)]
     Load(#[from] LoadError),
-    /// Generating or writing code failed, or a link name given on the command line is unknown.
+    /// Generating or writing code failed, or a link name given on the command line is unknown
+    /// (boxed, as the large errors below: `CliError` stays small to move).
     #[error(transparent)]
-    Build(#[from] BuildError),
+    Build(Box<BuildError>),
     /// A mesh of the collision geometry that could not be found or read.
     #[error("{file}: {source}")]
     Mesh {
@@ -34,8 +35,8 @@ pub enum CliError {
         #[source]
         source: kinematics::model::UnknownLink,
     },
-    /// `generate`: options that break the compiler's rules against this robot, each naming its
-    /// flag.
+    /// `generate` (and `--dynamics` of `check` and `expr`): options that break the compiler's
+    /// rules against this robot, each naming its flag.
     #[error("{file}: {}", faults.iter().map(ToString::to_string).collect::<Vec<_>>().join("; "))]
     Options {
         /// The description file.
@@ -59,7 +60,7 @@ pub enum CliError {
         file: String,
         /// What the compiler said.
         #[source]
-        source: CompileError,
+        source: Box<CompileError>,
     },
     /// `check`: the compiled expressions disagree with the runtime reference.
     #[error("{file}: link `{link}`: the compiled pose is off by {error:.2e} x reach (tolerance {tolerance:e})")]
@@ -72,6 +73,69 @@ pub enum CliError {
         error: f64,
         /// The tolerance.
         tolerance: f64,
+    },
+    /// The runtime reference's dynamics refused the robot or a state.
+    #[error("{file}: {source}")]
+    Dynamics {
+        /// The description file.
+        file: String,
+        /// What the reference said.
+        #[source]
+        source: Box<kinematics::runtime::DynamicsError>,
+    },
+    /// `check --dynamics`: a compiled dynamics function disagrees with the runtime reference.
+    #[error(
+        "{file}: `{function}`: the compiled dynamics are off by {error:.2e} x the values' scale (tolerance {tolerance:e})"
+    )]
+    DynamicsDisagrees {
+        /// The description file.
+        file: String,
+        /// The function with the largest error (`gravity_torques`, ...).
+        function: &'static str,
+        /// Its error, relative to the scale of the values compared.
+        error: f64,
+        /// The tolerance.
+        tolerance: f64,
+    },
+    /// `check --dynamics`: forward dynamics refused a singular mass matrix on one side only.
+    #[error(
+        "{file}: `forward_dynamics` at q = {q:?}: {}",
+        match reference {
+            Some(velocities) => format!(
+                "the reference finds the mass matrix singular (velocities {}), but the compiled factorisation's pivots are all positive",
+                velocities.iter().map(|v| format!("`{v}`")).collect::<Vec<_>>().join(", ")
+            ),
+            None => format!(
+                "the compiled factorisation refuses the mass matrix as singular (the pivot of {}), but the reference's is regular",
+                subject.iter().map(|v| format!("`{v}`")).collect::<Vec<_>>().join(", ")
+            ),
+        }
+    )]
+    SingularDisagrees {
+        /// The description file.
+        file: String,
+        /// The configuration.
+        q: Vec<f64>,
+        /// The velocities the compiled code refused at (empty when it did not refuse).
+        subject: Vec<String>,
+        /// The velocities the reference refused along, when it refused.
+        reference: Option<Vec<String>>,
+    },
+    /// `expr --dynamics --joint`: a name that is none of the robot's velocities.
+    #[error(
+        "{file}: `--joint`: `{name}` is none of the velocities ({}){}",
+        velocities.iter().map(|v| format!("`{v}`")).collect::<Vec<_>>().join(", "),
+        suggestion.as_ref().map(|s| format!("; did you mean `{s}`?")).unwrap_or_default()
+    )]
+    UnknownVelocity {
+        /// The description file.
+        file: String,
+        /// The name given.
+        name: String,
+        /// The robot's velocities.
+        velocities: Vec<String>,
+        /// The closest, when it looks like a typo.
+        suggestion: Option<String>,
     },
     /// `check`: a collision verdict that is not the reference's, outside the band about contact.
     #[error(
@@ -159,6 +223,19 @@ pub enum CliError {
     /// Standard output could not be written.
     #[error("cannot write to standard output: {0}")]
     Output(#[source] std::io::Error),
+}
+
+impl From<BuildError> for CliError {
+    fn from(error: BuildError) -> Self {
+        CliError::Build(Box::new(error))
+    }
+}
+
+impl CliError {
+    /// The compiler's refusal of something asked of `file`.
+    pub fn compile(file: &str, source: CompileError) -> Self {
+        CliError::Compile { file: file.to_owned(), source: Box::new(source) }
+    }
 }
 
 impl From<std::io::Error> for CliError {

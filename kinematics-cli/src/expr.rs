@@ -1,6 +1,7 @@
 //! `kinematics expr FILE`: the simplified symbolic pose of one link and what it costs, with
-//! `--jacobian` its geometric Jacobian and what the velocity functions cost, or with `--all` what
-//! every link's pose adds to the all-links code (where the cost of a tree goes).
+//! `--jacobian` its geometric Jacobian and what the velocity functions cost, with `--all` what
+//! every link's pose adds to the all-links code (where the cost of a tree goes), or with
+//! `--dynamics` the gravity torques and what the dynamics functions cost (`dynamics`).
 //!
 //! The listings are `emit::text_listing` and `latex_listing`; the cost is `op_count` against
 //! `plain_product_count`.
@@ -9,6 +10,7 @@ use std::io::Write;
 
 use kinematics::model::JacobianFrame;
 use kinematics::model::KinematicTree;
+use kinematics_compiler::dynamics::DynamicsFunction;
 use kinematics_compiler::{Compiled, OpCount, Request, compile, plain_product_count};
 
 use crate::error::CliError;
@@ -46,6 +48,18 @@ pub struct Args {
     /// With `--ik`, the joint of a seven-joint arm whose value is given.
     #[arg(long, requires = "ik")]
     free: Option<String>,
+    /// Print the gravity torques instead (the generalized forces that hold the robot still, from
+    /// the links' inertias), one line per velocity, and the operation counts of every dynamics
+    /// function (gravity torques, inverse dynamics, nonlinear effects, mass matrix, forward
+    /// dynamics).
+    #[arg(long, conflicts_with_all = ["all", "jacobian", "latex", "ik", "base", "tip"])]
+    dynamics: bool,
+    /// With `--dynamics`, only the torque of this velocity (a joint's name).
+    #[arg(long, requires = "dynamics")]
+    joint: Option<String>,
+    /// With `--dynamics`: the gravity and how inertias are read.
+    #[command(flatten)]
+    dynamics_options: crate::dynamics::DynamicsArgs,
 }
 
 /// `--frame`.
@@ -67,6 +81,14 @@ impl Frame {
 /// Prints the pose and its operation counts.
 pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
     let tree = crate::robot::load(&args.file)?;
+    if args.dynamics {
+        let request = args.dynamics_options.request();
+        write!(out, "{}", crate::dynamics::gravity_text(&tree, &args.file, &request, args.joint.as_deref())?)?;
+        let compiled = crate::dynamics::compile(&tree, &args.file, &request, &DynamicsFunction::ALL)?;
+        writeln!(out, "\noperations:")?;
+        write!(out, "{}", crate::dynamics::op_table(&compiled))?;
+        return Ok(());
+    }
     if args.all {
         let (base, _) = crate::robot::base_and_tip(&tree, &args.file, args.base.as_deref(), None)?;
         // Every link's pose is compiled: minutes on a chain of thousands of joints.
@@ -79,8 +101,8 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
     let (base, tip) = crate::robot::base_and_tip(&tree, &args.file, args.base.as_deref(), args.tip.as_deref())?;
     if args.ik {
         let plan = kinematics_compiler::ik::classify_with(&tree, &base, &tip, args.free.as_deref())
-            .map_err(|source| CliError::Compile { file: args.file.clone(), source })?;
-        let text = ik_text(&tree, &plan).map_err(|source| CliError::Compile { file: args.file.clone(), source })?;
+            .map_err(|source| CliError::compile(&args.file, source))?;
+        let text = ik_text(&tree, &plan).map_err(|source| CliError::compile(&args.file, source))?;
         write!(out, "{text}")?;
         return Ok(());
     }
@@ -256,7 +278,7 @@ const ENTRIES: [(&str, &str); 12] = [
 /// Compiles the pose of `tip` in `base` and the position alone.
 pub fn compile_pose(tree: &KinematicTree, file: &str, base: &str, tip: &str) -> Result<(Compiled, Compiled), CliError> {
     let request = Request::tip(tip).with_base(base);
-    let error = |source| CliError::Compile { file: file.to_owned(), source };
+    let error = |source| CliError::compile(file, source);
     let pose = compile(tree, &request).map_err(error)?;
     let position = compile(tree, &request.positions_only()).map_err(error)?;
     Ok((pose, position))
@@ -318,7 +340,7 @@ pub fn jacobian_text(
     latex: bool,
 ) -> Result<String, CliError> {
     let jacobian = compile(tree, &Request::tip(tip).with_base(base).jacobian(frame))
-        .map_err(|source| CliError::Compile { file: file.to_owned(), source })?;
+        .map_err(|source| CliError::compile(file, source))?;
     let mut out = format!("robot `{}`: geometric Jacobian of `{tip}` in `{base}` ({})\n", tree.name(), frame.name());
     let axes = match frame {
         JacobianFrame::LocalWorldAligned => format!("`{base}`'s axes"),
@@ -381,9 +403,7 @@ pub fn velocity_op_counts(
     frame: JacobianFrame,
 ) -> Result<Vec<(String, OpCount)>, CliError> {
     let count = |request: Request| {
-        compile(tree, &request.with_base(base))
-            .map(|c| c.op_count())
-            .map_err(|source| CliError::Compile { file: file.to_owned(), source })
+        compile(tree, &request.with_base(base)).map(|c| c.op_count()).map_err(|source| CliError::compile(file, source))
     };
     let n = tree.dof();
     let jacobian = count(Request::tip(tip).jacobian(frame))?;
@@ -403,8 +423,7 @@ pub fn velocity_op_counts(
 /// the chain's transforms (zeros and ones folded, nothing else).
 pub fn op_counts(tree: &KinematicTree, file: &str, base: &str, tip: &str) -> Result<Vec<(String, OpCount)>, CliError> {
     let (pose, position) = compile_pose(tree, file, base, tip)?;
-    let plain =
-        plain_product_count(tree, base, tip).map_err(|source| CliError::Compile { file: file.to_owned(), source })?;
+    let plain = plain_product_count(tree, base, tip).map_err(|source| CliError::compile(file, source))?;
     Ok(vec![
         (format!("pose of {tip}, generated"), pose.op_count()),
         (format!("pose of {tip}, plain product"), plain),
@@ -417,8 +436,8 @@ pub fn op_counts(tree: &KinematicTree, file: &str, base: &str, tip: &str) -> Res
 /// (a subexpression or `sin_cos` pair shared with an earlier link is counted there), then the
 /// total, which the rows add up to.
 pub fn all_links_table(tree: &KinematicTree, file: &str, base: &str) -> Result<String, CliError> {
-    let compiled = compile(tree, &Request::all_links().with_base(base))
-        .map_err(|source| CliError::Compile { file: file.to_owned(), source })?;
+    let compiled =
+        compile(tree, &Request::all_links().with_base(base)).map_err(|source| CliError::compile(file, source))?;
     let counts = compiled.marginal_op_counts();
     let joint_of = |link: &str| {
         let joint = tree.link_by_name(link).and_then(|l| l.parent_joint).map(|j| tree.joint(j));

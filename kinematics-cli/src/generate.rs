@@ -60,6 +60,13 @@ pub struct Args {
     /// With `--collision`, MoveIt's SRDF whose disabled pairs `self_collides` leaves out.
     #[arg(long, requires = "collision")]
     srdf: Option<String>,
+    /// Also generate the dynamics from the links' `<inertial>`s: `gravity_torques`,
+    /// `inverse_dynamics`, `nonlinear_effects`, `mass_matrix` and `forward_dynamics`.
+    #[arg(long)]
+    dynamics: bool,
+    /// With `--dynamics`: the gravity and how inertias are read.
+    #[command(flatten)]
+    dynamics_options: crate::dynamics::DynamicsArgs,
     /// Which sine and cosine the code calls: `fast` (ours, every angle in one call) or `std` (the
     /// platform's, one call per angle).
     #[arg(long, value_enum, default_value_t = TrigArg::Fast)]
@@ -149,6 +156,15 @@ pub fn builder(args: &Args) -> Result<Robot, CliError> {
     if let Some(srdf) = &args.srdf {
         robot = robot.srdf(srdf);
     }
+    if args.dynamics {
+        robot = robot.dynamics();
+        if let Some(gravity) = args.dynamics_options.gravity {
+            robot = robot.gravity(gravity);
+        }
+        if args.dynamics_options.inertia_as_written {
+            robot = robot.inertia_as_written();
+        }
+    }
     Ok(robot)
 }
 
@@ -171,31 +187,31 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
 
 /// A build error naming the builder's calls as the command's error naming its flags.
 fn flags(error: BuildError) -> CliError {
-    let BuildError::Options { file, faults } = error else { return CliError::Build(error) };
-    let faults = faults
-        .into_iter()
-        .map(|CallFault { fault, .. }| FlagFault {
-            flag: match fault.key {
-                OptionKey::Base => "--base",
-                OptionKey::Tip(_) => "--tip",
-                OptionKey::Link(_) | OptionKey::Links => "--links",
-                OptionKey::Positions => "--positions",
-                OptionKey::Jacobians => "--jacobians",
-                OptionKey::Ik => "--ik",
-                // `generate` has no flag for a free-flying root; the key is mapped all the same.
-                OptionKey::FloatingBase => "floating_base",
-                OptionKey::Scalars => "--f32",
-                OptionKey::Trig => "--trig",
-                OptionKey::ExactAngles => "--exact-angles",
-                OptionKey::Collision => "--collision",
-                OptionKey::SphereCover => "--cover",
-                OptionKey::Spheres => "--spheres",
-                OptionKey::Srdf => "--srdf",
-                OptionKey::Dynamics => "--dynamics",
-                OptionKey::Gravity => "--gravity",
-            },
-            fault,
-        })
-        .collect();
+    let BuildError::Options { file, faults } = error else { return CliError::from(error) };
+    let faults = faults.into_iter().map(|CallFault { fault, .. }| FlagFault { flag: flag(fault.key), fault }).collect();
     CliError::Options { file, faults }
+}
+
+/// The flag that sets an option (`generate`'s; `check` and `expr` name `--dynamics` and
+/// `--gravity` the same).
+pub fn flag(key: OptionKey) -> &'static str {
+    match key {
+        OptionKey::Base => "--base",
+        OptionKey::Tip(_) => "--tip",
+        OptionKey::Link(_) | OptionKey::Links => "--links",
+        OptionKey::Positions => "--positions",
+        OptionKey::Jacobians => "--jacobians",
+        OptionKey::Ik => "--ik",
+        // `generate` has no flag for a free-flying root; the key is mapped all the same.
+        OptionKey::FloatingBase => "floating_base",
+        OptionKey::Scalars => "--f32",
+        OptionKey::Trig => "--trig",
+        OptionKey::ExactAngles => "--exact-angles",
+        OptionKey::Collision => "--collision",
+        OptionKey::SphereCover => "--cover",
+        OptionKey::Spheres => "--spheres",
+        OptionKey::Srdf => "--srdf",
+        OptionKey::Dynamics => "--dynamics",
+        OptionKey::Gravity => "--gravity",
+    }
 }

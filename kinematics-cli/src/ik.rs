@@ -45,8 +45,8 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
     let file = &args.file;
     let tree = crate::robot::load(file)?;
     let (base, tip) = crate::robot::base_and_tip(&tree, file, args.base.as_deref(), args.tip.as_deref())?;
-    let plan = kinematics_compiler::ik::classify(&tree, &base, &tip)
-        .map_err(|source| CliError::Compile { file: file.clone(), source })?;
+    let plan =
+        kinematics_compiler::ik::classify(&tree, &base, &tip).map_err(|source| CliError::compile(file, source))?;
     let fk = ReferenceFk::new(tree);
     let runtime = |source| CliError::Runtime { file: file.clone(), source };
     let scale = if args.degrees { 180.0 / std::f64::consts::PI } else { 1.0 };

@@ -7,12 +7,17 @@
 //! the runtime reference, `graph` the tree as Graphviz DOT, `draw` the robot at a configuration as
 //! SVG (three orthographic views of the runtime reference's link origins and joint axes), and
 //! `demo` all of it on one robot with a timing of the generated code built into this binary
-//! (`ur5.rs`, from `build.rs`), then collision checks timed on the built-in spherized Panda
-//! (`panda.rs`; `hand_loop.rs` is the naive check it is timed against). Errors go to stderr as `error: <file>: <element>: <fault>`, with a
-//! non-zero exit status; files are written atomically, so a failed run leaves none behind. Long
-//! work shows progress on stderr when stderr is a terminal, and nothing when it is not: a spinner
-//! while the compiler runs (`check`, `demo`, `generate`, `expr --all`), then a bar over the
-//! configurations `check` and `demo` compare.
+//! (`ur5.rs`, from `build.rs`, dynamics included), then collision checks timed on the built-in
+//! spherized Panda (`panda.rs`; `hand_loop.rs` is the naive check it is timed against). Errors go
+//! to stderr as `error: <file>: <element>: <fault>`, with a non-zero exit status; files are
+//! written atomically, so a failed run leaves none behind. Long work shows progress on stderr when
+//! stderr is a terminal, and nothing when it is not: a spinner while the compiler runs (`check`,
+//! `demo`, `generate`, `expr --all`, `--dynamics`), then a bar over the configurations (and
+//! states) `check` and `demo` compare.
+//!
+//! `--dynamics` (`dynamics.rs`) adds the rigid-body dynamics from the links' inertias to `generate`
+//! (the functions), `check` (each compiled function against the runtime reference's) and `expr`
+//! (the gravity torques as text).
 //!
 //! Also `ik` (closed-form solutions), `convert` (URDF text) and `collision-pairs` (an SRDF of
 //! disabled pairs). Every padded column is padded by hand and capped, so names of any length print.
@@ -25,6 +30,7 @@ mod convert;
 mod cover;
 mod demo;
 mod draw;
+mod dynamics;
 mod error;
 mod expr;
 mod fk;
@@ -78,12 +84,15 @@ enum Command {
     /// Print the pose of every link (or one) at a configuration, by the runtime reference.
     Fk(fk::Args),
     /// Print the simplified symbolic pose of a link, with its operation counts against the plain
-    /// product of the chain's transforms.
+    /// product of the chain's transforms (or its Jacobian, or with `--dynamics` the gravity
+    /// torques).
     Expr(expr::Args),
-    /// Print (or write atomically) the Rust a build script would generate for the robot.
+    /// Print (or write atomically) the Rust a build script would generate for the robot (with
+    /// `--dynamics`, its dynamics too).
     Generate(generate::Args),
     /// Check the compiled expressions of every link against the runtime reference on many
-    /// configurations; fails past 1e-12 x reach.
+    /// configurations; fails past 1e-12 x reach. With `--dynamics`, the compiled dynamics too
+    /// (past 1e-12 x the values' scale).
     Check(check::Args),
     /// Print the kinematic tree as Graphviz DOT (links as boxes, joints as labelled edges).
     Graph(graph::Args),
@@ -104,7 +113,8 @@ enum Command {
     /// `<collision>` with a `<sphere>` per sphere, as VAMP and cuRobo read), all else as written.
     Spherize(spherize::Args),
     /// The whole pipeline on one robot: tree, symbolic pose, operation counts, agreement with the
-    /// runtime reference, and timing; then collision checks on the built-in spherized Panda.
+    /// runtime reference, and timing; velocities, inverse kinematics and dynamics; then collision
+    /// checks on the built-in spherized Panda.
     Demo(demo::Args),
 }
 

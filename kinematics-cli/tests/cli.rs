@@ -414,7 +414,7 @@ fn graph_draws_every_link_and_joint() {
 fn demo_walks_through_the_pipeline() {
     let out = ok(&["demo", "--samples", "300", "--evaluations", "300"]);
     assert!(out.starts_with("kinematics demo: robots/ur5.urdf, the pose of `tool0` (the deepest link) in `base_link`"));
-    for section in ["\n1. ", "\n2. ", "\n3. ", "\n4. ", "\n5. ", "\n6. ", "\n7. ", "\n8. "] {
+    for section in ["\n1. ", "\n2. ", "\n3. ", "\n4. ", "\n5. ", "\n6. ", "\n7. ", "\n8. ", "\n9. "] {
         assert!(out.contains(section), "no section `{section}` in\n{out}");
     }
     // Inverse kinematics: the pose's eight solutions, each reproducing it by the generated pose and
@@ -446,13 +446,36 @@ fn demo_walks_through_the_pipeline() {
     assert!(out.contains("pose of tool0, plain product"), "{out}");
     assert!(out.contains("generated Rust in this binary (Ur5):     largest error"), "{out}");
     assert!(out.contains("generated code, Ur5::tip_pose:") && out.contains("x faster"), "{out}");
+    // Dynamics (issue 61): what each function costs, the compiled expressions and the generated
+    // code against the reference, and each function timed against the reference's.
+    let dynamics = &out[out.find("\n8. ").unwrap()..out.find("\n9. ").unwrap()];
+    assert!(dynamics.starts_with("\n8. Dynamics from the links' inertias"), "{dynamics}");
+    for agreement in ["  compiled expressions:  ", "  generated Rust in this binary (Ur5):  "] {
+        let line = dynamics.lines().find(|l| l.starts_with(agreement)).unwrap_or_else(|| panic!("no `{agreement}`"));
+        let error: f64 = line.split("largest error ").nth(1).unwrap().split(' ').next().unwrap().parse().unwrap();
+        assert!(error <= 1e-12, "{line}");
+    }
+    for function in ["gravity_torques", "inverse_dynamics", "nonlinear_effects", "mass_matrix", "forward_dynamics"] {
+        let cost = dynamics.lines().find(|l| l.starts_with(&format!("  {function} "))).unwrap();
+        assert_eq!(cost.split('/').count(), 4, "{cost}");
+        for timing in
+            [format!("runtime reference, ReferenceDynamics::{function}:"), format!("generated code, Ur5::{function}:")]
+        {
+            let line = dynamics
+                .lines()
+                .find(|l| l.trim_start().starts_with(&timing))
+                .unwrap_or_else(|| panic!("no `{timing}`"));
+            let ns: f64 = line.trim_start()[timing.len()..].split_whitespace().next().unwrap().parse().unwrap();
+            assert!(ns > 0.0 && line.contains(" ns per call"), "{line}");
+        }
+    }
     // Collision (issue 57): the built-in spherized Panda whatever the robot, its generated
     // `collides` judged by the reference on every sample, the hand loop giving its verdicts, and
     // the four timings.
-    let collision = &out[out.find("\n8. ").unwrap()..];
+    let collision = &out[out.find("\n9. ").unwrap()..];
     assert!(
         collision.starts_with(
-            "\n8. Collision, on the spherized Panda (robots/panda_spherized.urdf, robots/panda.srdf) in \
+            "\n9. Collision, on the spherized Panda (robots/panda_spherized.urdf, robots/panda.srdf) in \
              scenes/tabletop.toml\n\n  59 spheres on 11 links (at most 10 spheres per link, stopping at an overshoot \
              of 0.01 m), 21 self-collision pairs (less \
              the pairs robots/panda.srdf disables); scene scenes/tabletop.toml (12 obstacles)\n"
@@ -493,7 +516,15 @@ fn demo_walks_through_the_pipeline() {
     }
     let other = ok(&["demo", "robots/planar_3r.toml", "--samples", "100", "--evaluations", "100"]);
     // A robot given on the command line: the Panda's section, then its own geometry (none here).
-    assert!(other.contains("\n8. Collision, on the spherized Panda"), "{other}");
+    assert!(other.contains("\n9. Collision, on the spherized Panda"), "{other}");
+    // Its dynamics: no mass to compile.
+    assert!(
+        other.contains(
+            "\n8. Dynamics from the links' inertias (`kinematics expr --dynamics`, `kinematics check --dynamics`)\n\n  \
+             not compiled: `--dynamics`: `dynamics` of a robot with no mass"
+        ),
+        "{other}"
+    );
     assert!(
         other.ends_with(
             "robots/planar_3r.toml, its own <collision> geometry against the reference in scenes/tabletop.toml \

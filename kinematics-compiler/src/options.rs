@@ -516,20 +516,22 @@ fn collision_applies(options: &Options, tree: &KinematicTree) -> Result<Option<C
 }
 
 /// Rule: `dynamics` needs a finite gravity, a link with mass, and inertias that keep a rigid
-/// body's rules (the triangle inequality unless taken as written) with none left to geometry.
-fn dynamics_applies(options: &Options, tree: &KinematicTree) -> Option<OptionFault> {
-    let request = options.dynamics.as_ref()?;
+/// body's rules (the triangle inequality unless taken as written) with none left to geometry:
+/// every link at fault is reported, not only the first.
+fn dynamics_applies(options: &Options, tree: &KinematicTree) -> Vec<OptionFault> {
+    let Some(request) = options.dynamics.as_ref() else { return Vec::new() };
+    let mut faults = Vec::new();
     if request.gravity.iter().any(|x| !x.is_finite()) {
-        return Some(OptionFault { key: OptionKey::Gravity, kind: FaultKind::Gravity(request.gravity) });
+        faults.push(OptionFault { key: OptionKey::Gravity, kind: FaultKind::Gravity(request.gravity) });
     }
-    let fault = |kind| Some(OptionFault { key: OptionKey::Dynamics, kind });
-    if let Err(e) = crate::dynamics::check(tree, request) {
-        return fault(FaultKind::Dynamics(Box::new(e)));
-    }
+    let fault = |kind| OptionFault { key: OptionKey::Dynamics, kind };
+    faults.extend(
+        crate::dynamics::link_faults(tree, request).into_iter().map(|e| fault(FaultKind::Dynamics(Box::new(e)))),
+    );
     if tree.links().iter().all(|l| l.inertial.is_none()) {
-        return fault(FaultKind::NoMass);
+        faults.push(fault(FaultKind::NoMass));
     }
-    None
+    faults
 }
 
 /// Rule: `floating_base`'s new root link and joint are names `plain` (the description loaded

@@ -21,6 +21,7 @@ use syn::punctuated::Punctuated;
 
 use crate::options::KinematicsInput;
 use kinematics_compiler::collision_layout::held_words;
+use kinematics_compiler::dynamics::DynamicsRequest;
 use kinematics_compiler::ik::IkPlan;
 use kinematics_compiler::options::{IkKind, IkMode, Options, Scalars, choose};
 use kinematics_compiler::robot::scalar_parameter;
@@ -54,7 +55,8 @@ impl Implied {
 
     /// From the attribute's keys alone, when darling could not read it: only which keys are there
     /// matters (`tip`, `tips(...)` and how many, `links = [...]` and how many, `positions`,
-    /// `jacobians`, `ik` and its kind, `scalars(...)`); whatever cannot be read counts as present.
+    /// `jacobians`, `ik` and its kind, `dynamics`, `scalars(...)`); whatever cannot be read counts
+    /// as present.
     pub fn from_attributes(input: &syn::DeriveInput) -> Self {
         let mut options = Options::default();
         let (mut tips, mut tips_counted, mut links_read) = (0usize, true, true);
@@ -98,6 +100,10 @@ impl Implied {
                         // An unknown kind: the closed form's names, the most a user would call.
                         _ => IkMode::ClosedForm { free: None },
                     };
+                } else if path.is_ident("dynamics") {
+                    // Its functions' names and types do not depend on the gravity or the
+                    // inertias, whatever of the key could not be read.
+                    options.dynamics = Some(DynamicsRequest::default());
                 } else if path.is_ident("scalars") {
                     let words = match &item {
                         syn::Meta::List(list) => list
@@ -124,6 +130,7 @@ impl Implied {
             jacobians: true,
             ik: IkMode::ClosedForm { free: None },
             scalars: Scalars { f64: true, f32: true },
+            dynamics: Some(DynamicsRequest::default()),
             ..Options::default()
         };
         Implied { options, tips_counted: false, links_read: false, dims: Dims::default(), ik_plan: None }
@@ -378,6 +385,7 @@ fn constant_value(render: &Render, constant: Constant, p: &TokenStream) -> Token
 mod tests {
     //! The stub lists what the emitter writes, signature for signature, for every option set.
 
+    use kinematics_compiler::dynamics::DynamicsRequest;
     use kinematics_compiler::options::{CheckedIk, CollisionOptions, Cover, IkMode, Options, Scalars, Trig};
     use kinematics_compiler::robot::{RobotSpec, emit_robot};
     use kinematics_model::{ExactAngles, KinematicTree, Source, SourceKind};
@@ -417,15 +425,21 @@ mod tests {
     }
 
     fn robot(file: &str) -> KinematicTree {
+        robot_with(file, None)
+    }
+
+    /// `robots/file`, with a free-flying root when `floating_base` names the new root link.
+    fn robot_with(file: &str, floating_base: Option<&str>) -> KinematicTree {
         let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../robots").join(file);
         let source = Source::from_bytes(file, SourceKind::ByExtension, std::fs::read(path).unwrap()).unwrap();
-        source.load(ExactAngles::default()).unwrap()
+        source.load_with_floating_base(ExactAngles::default(), floating_base).unwrap()
     }
 
     /// Every combination of tips, positions, Jacobians, inverse kinematics and scalars on robots
     /// of each kind of plan (a compiled six-joint body, the run time's solver, a planar arm, a
-    /// free joint, none), with the link list and trig alternating: the stub given the robot's
-    /// lengths (and the plan) lists exactly the emitted items.
+    /// free joint, none), with the link list and trig alternating, and on the arms with inertias the
+    /// dynamics every other `ik`: the stub given the robot's lengths (and the plan) lists exactly
+    /// the emitted items.
     #[test]
     fn the_stub_lists_what_the_emitter_writes() {
         let robots = [
@@ -452,6 +466,10 @@ mod tests {
     fn stub_matches_emitted(file: &str, tips: [&str; 2], free: Option<&str>) -> usize {
         let mut compared = 0;
         let tree = robot(file);
+        let dynamics =
+            Options { dynamics: Some(DynamicsRequest::default()), ..Options::default() }.check(&tree).is_ok();
+        // The two arms with inertias (so the dynamics are compared), none of the others.
+        assert_eq!(dynamics, file.starts_with("ur5"), "{file}: the rules' verdict on `dynamics`");
         let links: Vec<String> = tree.links().iter().rev().take(2).map(|l| l.name.clone()).collect();
         let mut case = 0;
         for several in [false, true] {
@@ -472,35 +490,87 @@ mod tests {
                                 cover: Cover::overshoot(0.03),
                                 ..CollisionOptions::default()
                             }),
+                            // The arms with inertias, every other `ik`, their dynamics.
+                            dynamics: (dynamics && (case - 1) / 3 % 2 == 0).then(DynamicsRequest::default),
                             ..Options::default()
                         };
-                        let Ok(checked) = options.check(&tree) else { continue };
-                        let plan = match checked.ik() {
-                            CheckedIk::ClosedForm(plan) => Some(plan.clone()),
-                            _ => None,
-                        };
-                        let spec = RobotSpec {
-                            robot: checked,
-                            krate: quote!(::kinematics),
-                            source_label: file.to_owned(),
-                            source_text: quote!(""),
-                            source_files: None,
-                            impl_generics: quote!(),
-                            where_clause: quote!(),
-                        };
-                        let emitted = emit_robot(&quote!(Robot), &spec).unwrap();
-                        let input: syn::DeriveInput = syn::parse2(quote!(
-                            struct Robot;
-                        ))
-                        .unwrap();
-                        let implied = Implied::from_options(options.clone()).with_robot(&tree).with_plan(plan);
-                        let stubbed = stub(&input, None, &implied, quote!(::core::compile_error!("")));
-                        assert_eq!(surface(stubbed), surface(emitted), "{file}: {options:?}");
-                        compared += 1;
+                        compared += usize::from(stub_matches(file, &tree, &options));
                     }
                 }
             }
         }
         compared
+    }
+
+    /// Whether the rules take `options` on `tree`; if so, asserts that the stub given the robot's
+    /// lengths (and the plan) lists exactly the emitted items.
+    fn stub_matches(file: &str, tree: &KinematicTree, options: &Options) -> bool {
+        let Ok(checked) = options.check(tree) else { return false };
+        let plan = match checked.ik() {
+            CheckedIk::ClosedForm(plan) => Some(plan.clone()),
+            _ => None,
+        };
+        let spec = RobotSpec {
+            robot: checked,
+            krate: quote!(::kinematics),
+            source_label: file.to_owned(),
+            source_text: quote!(""),
+            source_files: None,
+            impl_generics: quote!(),
+            where_clause: quote!(),
+        };
+        let emitted = emit_robot(&quote!(Robot), &spec).unwrap();
+        let input: syn::DeriveInput = syn::parse2(quote!(
+            struct Robot;
+        ))
+        .unwrap();
+        let implied = Implied::from_options(options.clone()).with_robot(tree).with_plan(plan);
+        let stubbed = stub(&input, None, &implied, quote!(::core::compile_error!("")));
+        assert_eq!(surface(stubbed), surface(emitted), "{file}: {options:?}");
+        true
+    }
+
+    /// The dynamics of a free-flying UR5 (a quaternion in `q`: thirteen entries, twelve
+    /// velocities) and of the Panda, in each scalar list: the stub lists the emitted items.
+    #[test]
+    fn the_stub_lists_the_dynamics_the_emitter_writes() {
+        let mut compared = 0;
+        for (file, floating_base) in [("ur5.urdf", Some("world")), ("panda.urdf", None)] {
+            let tree = robot_with(file, floating_base);
+            assert!(tree.velocity_dof() == 12 || floating_base.is_none());
+            for scalars in [(true, false), (false, true), (true, true)] {
+                let options = Options {
+                    floating_base: floating_base.map(str::to_owned),
+                    scalars: Scalars { f64: scalars.0, f32: scalars.1 },
+                    dynamics: Some(DynamicsRequest { gravity: [0.0, 0.0, 0.0], inertia_as_written: true }),
+                    ..Options::default()
+                };
+                assert!(stub_matches(file, &tree, &options), "{file}: the rules refused {options:?}");
+                compared += 1;
+            }
+        }
+        assert_eq!(compared, 6);
+    }
+
+    /// A failing attribute darling cannot read keeps the dynamics' names in its stub: every one of
+    /// the five functions, in the scalars listed.
+    #[test]
+    fn an_unreadable_dynamics_key_keeps_its_functions() {
+        let input: syn::DeriveInput = syn::parse2(quote!(
+            #[kinematics(urdf = "ur5.urdf", dynamics(gravity = "down"), scalars(f32))]
+            struct Robot;
+        ))
+        .unwrap();
+        let implied = Implied::from_attributes(&input);
+        assert!(implied.options.dynamics.is_some());
+        let stubbed = surface(stub(&input, None, &implied, quote!(::core::compile_error!(""))));
+        for name in ["gravity_torques_f32", "inverse_dynamics_f32", "nonlinear_effects_f32", "mass_matrix_batch_f32"] {
+            assert!(stubbed.iter().any(|s| s.starts_with(&format!("fn {name} ("))), "{name} in {stubbed:?}");
+        }
+        assert!(stubbed.iter().any(|s| s.starts_with("fn forward_dynamics_generic <")), "{stubbed:?}");
+        assert!(!stubbed.iter().any(|s| s.starts_with("fn gravity_torques (")), "{stubbed:?}");
+        // An attribute that cannot be read at all: every name, the dynamics' too.
+        let everything = surface(stub(&input, None, &Implied::everything(), quote!(::core::compile_error!(""))));
+        assert!(everything.iter().any(|s| s.starts_with("fn mass_matrix (")), "{everything:?}");
     }
 }

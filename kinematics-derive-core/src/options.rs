@@ -118,7 +118,7 @@ pub struct OutputKeys {
     /// dynamics from the links' inertias: gravity torques, inverse dynamics, nonlinear effects,
     /// the mass matrix and forward dynamics.
     #[darling(default)]
-    pub dynamics: Option<SpannedValue<Override<DynamicsKey>>>,
+    pub dynamics: Option<Keyed<Override<DynamicsKey>>>,
     /// `crate = "path"` for a renamed dependency.
     #[darling(default, rename = "crate")]
     pub krate: Option<syn::Path>,
@@ -195,7 +195,7 @@ impl FromMeta for Gravity {
 impl OutputKeys {
     /// The `gravity` given in `dynamics(...)`, if any.
     pub fn gravity(&self) -> Option<&SpannedValue<Gravity>> {
-        match self.dynamics.as_ref()?.as_ref() {
+        match &self.dynamics.as_ref()?.value {
             Override::Explicit(key) => key.gravity.as_ref(),
             Override::Inherit => None,
         }
@@ -470,7 +470,7 @@ impl KinematicsInput {
                     srdf: None,
                 },
             }),
-            dynamics: output.dynamics.as_ref().map(|key| match key.as_ref() {
+            dynamics: output.dynamics.as_ref().map(|key| match &key.value {
                 Override::Inherit => DynamicsRequest::default(),
                 Override::Explicit(key) => DynamicsRequest {
                     gravity: key.gravity.as_ref().map_or(STANDARD_GRAVITY, |g| g.as_ref().0),
@@ -499,16 +499,35 @@ impl KinematicsInput {
             OptionKey::Srdf => {
                 output.srdf().map(SpannedValue::span).or_else(|| output.collision.as_ref().map(SpannedValue::span))
             }
-            OptionKey::Dynamics => output.dynamics.as_ref().map(SpannedValue::span),
+            // The key's own name, whatever its list holds: an inertia's fault is no entry's.
+            OptionKey::Dynamics => output.dynamics.as_ref().map(|key| key.span),
             // The vector's own span, else the `dynamics` key's.
             OptionKey::Gravity => {
-                output.gravity().map(SpannedValue::span).or_else(|| output.dynamics.as_ref().map(SpannedValue::span))
+                output.gravity().map(SpannedValue::span).or_else(|| output.dynamics.as_ref().map(|key| key.span))
             }
             // A bare word has no span of its own.
             OptionKey::Positions => None,
             source => self.keys.span_of(source),
         };
         span.unwrap_or_else(|| self.ident.span())
+    }
+}
+
+/// A key's value and the span of the key's own name: darling's `SpannedValue` of a list
+/// (`dynamics(inertia_as_written)`) spans its first entry, which a fault of the whole key would
+/// point at.
+#[derive(Debug, Clone)]
+pub struct Keyed<T> {
+    /// The value.
+    pub value: T,
+    /// The key's name.
+    pub span: proc_macro2::Span,
+}
+
+impl<T: FromMeta> FromMeta for Keyed<T> {
+    fn from_meta(item: &syn::Meta) -> darling::Result<Self> {
+        let value = T::from_meta(item).map_err(|e| e.with_span(item))?;
+        Ok(Keyed { value, span: syn::spanned::Spanned::span(item.path()) })
     }
 }
 

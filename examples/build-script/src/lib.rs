@@ -19,3 +19,4 @@ include!(concat!(env!("OUT_DIR"), "/panda.rs"));
 include!(concat!(env!("OUT_DIR"), "/ur5_ik.rs"));
 include!(concat!(env!("OUT_DIR"), "/planar_3r.rs"));
 include!(concat!(env!("OUT_DIR"), "/ur5_spheres.rs"));
+include!(concat!(env!("OUT_DIR"), "/ur5_dynamics.rs"));

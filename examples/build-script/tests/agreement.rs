@@ -6,7 +6,7 @@
 #![allow(clippy::panic, clippy::unwrap_used, clippy::expect_used)] // test helpers fail loudly
 
 use kinematics::{AGREEMENT_TOLERANCE, Configurations, Kinematics, Pose, ReferenceFk};
-use kinematics_build_example::{Panda, Ur5};
+use kinematics_build_example::{Panda, Ur5, Ur5Dynamics};
 use nalgebra::Isometry3;
 
 const CASES: usize = 3_000;
@@ -24,6 +24,10 @@ struct DerivedUr5;
     scalars(f64, f32)
 )]
 struct DerivedPanda;
+
+#[derive(Kinematics)]
+#[kinematics(urdf = "../../robots/ur5.urdf", dynamics(gravity = [0.5, 0.0, -9.81]), scalars(f64, f32))]
+struct DerivedUr5Dynamics;
 
 fn load(file: &str) -> ReferenceFk {
     ReferenceFk::new(kinematics::load(format!("{}/../../robots/{file}", env!("CARGO_MANIFEST_DIR"))).unwrap())
@@ -113,4 +117,31 @@ fn the_trait_and_the_reference_match_the_derive() {
     assert!(<Ur5 as Kinematics>::tip_poses_into(&q[..5], &mut built).is_err());
     assert_eq!(Ur5::reference().unwrap().tree(), DerivedUr5::reference().unwrap().tree());
     assert_eq!(Panda::reference().unwrap().tree(), load("panda.urdf").tree());
+}
+
+/// `.dynamics().gravity(..)` writes what `dynamics(gravity = ..)` derives: the same numbers from
+/// every function of the dynamics, in both scalars, and gravity torques that hold the reference's.
+#[test]
+fn the_build_api_and_the_derive_give_the_same_dynamics() {
+    let reference =
+        kinematics::runtime::ReferenceDynamics::new(load("ur5.urdf").tree().clone(), [0.5, 0.0, -9.81], false).unwrap();
+    let mut configurations = Configurations::within(&Ur5Dynamics::JOINT_LIMITS);
+    for k in 0..100 {
+        let q = configurations.next_array::<6>().unwrap();
+        let (qd, qdd) = (q.map(|x| 0.5 * x - 0.1), q.map(|x| 0.3 - x));
+        assert_eq!(Ur5Dynamics::gravity_torques(&q), DerivedUr5Dynamics::gravity_torques(&q), "q = {q:?}");
+        assert_eq!(Ur5Dynamics::mass_matrix(&q), DerivedUr5Dynamics::mass_matrix(&q), "q = {q:?}");
+        let tau = Ur5Dynamics::inverse_dynamics(&q, &qd, &qdd);
+        assert_eq!(tau, DerivedUr5Dynamics::inverse_dynamics(&q, &qd, &qdd), "q = {q:?}");
+        assert_eq!(Ur5Dynamics::nonlinear_effects(&q, &qd), DerivedUr5Dynamics::nonlinear_effects(&q, &qd));
+        assert_eq!(Ur5Dynamics::forward_dynamics(&q, &qd, &tau), DerivedUr5Dynamics::forward_dynamics(&q, &qd, &tau));
+        let q32 = q.map(|x| x as f32);
+        assert_eq!(Ur5Dynamics::mass_matrix_f32(&q32), DerivedUr5Dynamics::mass_matrix_f32(&q32), "q = {q:?}");
+        if k < 10 {
+            let want = reference.gravity_torques(&q).unwrap();
+            for (got, want) in Ur5Dynamics::gravity_torques(&q).iter().zip(&want) {
+                assert!((got - want).abs() <= 1e-12 * want.abs().max(1.0), "{got} against {want} at q = {q:?}");
+            }
+        }
+    }
 }

@@ -1,4 +1,4 @@
-//! Step 8 of `kinematics demo`: collision, on the built-in spherized Panda in the tabletop scene
+//! Step 9 of `kinematics demo`: collision, on the built-in spherized Panda in the tabletop scene
 //! whatever robot the other steps show (this binary holds that robot's generated checks, see
 //! `panda.rs`). Its cover; the verdicts of the generated `Panda::collides` judged by the runtime
 //! reference's distances; the check timed four ways (the reference, the generated link poses
@@ -27,7 +27,7 @@ const BATCH: usize = 1_024;
 
 /// Runs the step.
 pub(super) fn run(args: &Args, out: &mut dyn Write, tree: &KinematicTree, file: &str) -> Result<(), CliError> {
-    writeln!(out, "\n8. Collision, on the spherized Panda ({}, {}) in {}\n", panda::FILE, panda::SRDF, panda::SCENE)?;
+    writeln!(out, "\n9. Collision, on the spherized Panda ({}, {}) in {}\n", panda::FILE, panda::SRDF, panda::SCENE)?;
     let (panda_tree, setup) = panda::setup()?;
     #[allow(clippy::expect_used, reason = "invariant: the built-in Panda has spheres and its setup a scene")]
     let (reference, obstacles) = (

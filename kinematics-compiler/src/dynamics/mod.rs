@@ -235,19 +235,29 @@ pub fn plain_op_count(
     Ok(OpCount::of(&g, outputs))
 }
 
-/// The dynamics' refusals: a gravity that is not finite, mass left to geometry, a broken inertia.
+/// The dynamics' refusals: a gravity that is not finite, then the first link at fault
+/// ([`link_faults`]).
 pub(crate) fn check(tree: &KinematicTree, request: &DynamicsRequest) -> Result<(), CompileError> {
-    let robot = || tree.name().to_owned();
     if request.gravity.iter().any(|x| !x.is_finite()) {
-        return Err(CompileError::NonFiniteGravity { robot: robot(), gravity: request.gravity });
+        return Err(CompileError::NonFiniteGravity { robot: tree.name().to_owned(), gravity: request.gravity });
     }
+    match link_faults(tree, request).into_iter().next() {
+        Some(fault) => Err(fault),
+        None => Ok(()),
+    }
+}
+
+/// Every link, in tree order, whose mass is left to its geometry or whose inertia breaks a rigid
+/// body's rules, each named with the line of its `<inertial>`.
+pub(crate) fn link_faults(tree: &KinematicTree, request: &DynamicsRequest) -> Vec<CompileError> {
+    let robot = || tree.name().to_owned();
+    let mut faults = Vec::new();
     for link in tree.links() {
         if tree.inertia_from_geometry().contains(&link.name) {
-            return Err(CompileError::MassFromGeometry { robot: robot(), link: link.name.clone() });
-        }
-        if let Some(fault) = link.inertial.as_ref().and_then(|i| i.fault(request.inertia_as_written)) {
+            faults.push(CompileError::MassFromGeometry { robot: robot(), link: link.name.clone() });
+        } else if let Some(fault) = link.inertial.as_ref().and_then(|i| i.fault(request.inertia_as_written)) {
             let line = tree.inertial_line(&link.name);
-            return Err(CompileError::Inertia {
+            faults.push(CompileError::Inertia {
                 robot: robot(),
                 link: link.name.clone(),
                 line,
@@ -255,7 +265,7 @@ pub(crate) fn check(tree: &KinematicTree, request: &DynamicsRequest) -> Result<(
             });
         }
     }
-    Ok(())
+    faults
 }
 
 impl CompiledDynamics {
