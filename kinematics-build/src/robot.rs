@@ -824,12 +824,19 @@ mod tests {
             "plain.urdf: `.dynamics()`: `dynamics` of a robot with no mass: no link has an <inertial> (a link \
              without one is massless)"
         );
-        assert_eq!(
-            fails(&robot("triangle.urdf").gravity([0.0, f64::NAN, -9.81]), |e| {
-                one_fault(e, ".gravity(..)", |f| matches!(f, FaultKind::Gravity(_)))
-            }),
-            "triangle.urdf: `.gravity(..)`: `gravity` is [0.0, NaN, -9.81] (must be three finite numbers, m/s^2 in \
-             the root link's frame)"
+        // Every fault at once: the gravity and the link that breaks the triangle inequality.
+        let message = fails(&robot("triangle.urdf").gravity([0.0, f64::NAN, -9.81]), |e| {
+            matches!(e, BuildError::Options { faults, .. } if matches!(faults.as_slice(), [
+                CallFault { method: ".gravity(..)", fault: g },
+                CallFault { method: ".dynamics()", fault: d },
+            ] if matches!(g.kind, FaultKind::Gravity(_)) && matches!(d.kind, FaultKind::Dynamics(_))))
+        });
+        assert!(
+            message.starts_with(
+                "triangle.urdf: `.gravity(..)`: `gravity` is [0.0, NaN, -9.81] (must be three finite numbers, m/s^2 in \
+                 the root link's frame); `.dynamics()`: robot `arm`: the <inertial> of link `upper` (line 3)"
+            ),
+            "{message}"
         );
     }
 
