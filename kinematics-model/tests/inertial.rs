@@ -124,7 +124,8 @@ fn a_second_inertial_is_refused_at_its_line() {
 }
 
 /// Every robot of `robots/` with `<inertial>` elements, and how many.
-const WITH_INERTIALS: [(&str, usize); 5] = [
+const WITH_INERTIALS: [(&str, usize); 6] = [
+    ("panda.urdf", 11),
     ("panda_spherized.urdf", 13),
     ("ur5.urdf", 7),
     ("ur5_primitives.urdf", 7),
