@@ -61,6 +61,18 @@ pub(super) struct Body {
     pub(super) inertia: Option<Inertia>,
     /// The steps of its motion alone (for [`opaque`]).
     motion_steps: Vec<Step>,
+    /// The steps from the root's frame to this body's, unsimplified ([`Body::pose_in_root`]).
+    path: Vec<Step>,
+}
+
+impl Body {
+    /// This body's frame in the root's: its path from the root simplified as a pose's (the angles
+    /// of parallel axes summed, quarter turns exact) and folded.
+    pub(super) fn pose_in_root(&self, g: &mut ExprGraph) -> SymTransform {
+        let steps = simplify(g, self.path.clone());
+        let identity = SymTransform::identity(g);
+        fold_from_base(g, identity, &steps)
+    }
 }
 
 /// Numeric mass properties while lumping: mass, first moment and inertia about the origin.
@@ -76,13 +88,15 @@ struct Lumped {
 struct Place {
     body: Option<usize>,
     steps: Vec<Step>,
+    /// The steps from the root to the body's frame, unsimplified.
+    path: Vec<Step>,
 }
 
 /// The bodies of `tree`, parents before children, with the inertias read from its links.
 pub(super) fn bodies(g: &mut ExprGraph, tree: &KinematicTree) -> Vec<Body> {
     let of_entry = tree.velocity_of_entry();
     let mut places: Vec<Option<Place>> = vec![None; tree.links().len()];
-    places[tree.root().0] = Some(Place { body: None, steps: Vec::new() });
+    places[tree.root().0] = Some(Place { body: None, steps: Vec::new(), path: Vec::new() });
     let mut bodies: Vec<Body> = Vec::new();
     let mut lumped: Vec<Lumped> = Vec::new();
     for (index, joint) in tree.joints().iter().enumerate() {
@@ -91,18 +105,20 @@ pub(super) fn bodies(g: &mut ExprGraph, tree: &KinematicTree) -> Vec<Body> {
         let mut steps = parent.steps.clone();
         lower_fixed(g, &joint.origin, &mut steps);
         let mut body = parent.body;
+        let mut path = parent.path.clone();
         let id = kinematics_model::JointId(index);
         for (motion_steps, motions) in motions_of(g, tree, id, &of_entry) {
             steps.extend(motion_steps.iter().cloned());
+            path.extend(steps.iter().cloned());
             let steps_now = simplify(g, std::mem::take(&mut steps));
             let identity = SymTransform::identity(g);
             let transform = fold_from_base(g, identity, &steps_now);
-            bodies.push(Body { parent: body, transform, motions, inertia: None, motion_steps });
+            bodies.push(Body { parent: body, transform, motions, inertia: None, motion_steps, path: path.clone() });
             lumped.push(Lumped::default());
             body = Some(bodies.len() - 1);
         }
         lower_fixed(g, &joint.after_motion, &mut steps);
-        places[joint.child.0] = Some(Place { body, steps });
+        places[joint.child.0] = Some(Place { body, steps, path });
     }
     for (link, place) in tree.links().iter().zip(&places) {
         let (Some(inertial), Some(Place { body: Some(body), steps, .. })) = (&link.inertial, place) else { continue };

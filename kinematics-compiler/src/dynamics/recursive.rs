@@ -295,3 +295,50 @@ fn composite_up(g: &mut ExprGraph, body: &Body, inertia: &Inertia) -> Inertia {
     }
     Inertia { mass: m, first_moment, rotational }
 }
+
+/// The gravity torques with every body's first moment in the root's axes: a joint moving its
+/// subtree about the axis `z` through its origin (or along `w`) holds it against `z . (D x a)` (or
+/// `w . (M a)`), the derivative of the potential energy, where `M` is the subtree's mass, `D` its
+/// first moment about the joint's origin in the root's axes and `a = -g`. With `R` the body's
+/// orientation in the root's frame, `D = R (h + sum_c M_c p_c) + sum_c D_c` over its children
+/// `c` (at `p_c` in its frame). Each `R` comes from the body's whole path through the chain
+/// passes, so parallel axes give angle sums (`m2 g l2 cos(q1 + q2)`, as a textbook writes a planar
+/// arm), which the recursion in each body's own axes ([`gravity`]) writes as products of the
+/// joints' sines and cosines.
+pub(super) fn gravity_from_root(
+    g: &mut ExprGraph,
+    bodies: &[Body],
+    velocities: usize,
+    gravity: [f64; 3],
+) -> Vec<ExprId> {
+    let a = algebra::constant(g, gravity.map(|x| -x));
+    let zero = g.constant(0.0);
+    let turns: Vec<_> = bodies.iter().map(|b| b.pose_in_root(g).r).collect();
+    let mut mass: Vec<ExprId> = bodies.iter().map(|b| b.inertia.map_or(zero, |i| i.mass)).collect();
+    // Per body: its own first moment plus its children's masses at their origins, in its axes
+    // (then turned into the root's), and its children's moments already in the root's axes.
+    let mut own: Vec<Vec3> = bodies.iter().map(|b| b.inertia.map_or([zero; 3], |i| i.first_moment)).collect();
+    let mut below: Vec<Vec3> = vec![[zero; 3]; bodies.len()];
+    let mut tau = vec![zero; velocities];
+    for (i, body) in bodies.iter().enumerate().rev() {
+        let turned = mat_vec(g, &turns[i], own[i]);
+        let moment = add(g, turned, below[i]);
+        let torque = cross(g, moment, a);
+        let weight = scale(g, mass[i], a);
+        for motion in &body.motions {
+            let z = algebra::constant(g, motion.angular.map(|x| x * motion.rate));
+            let w = algebra::constant(g, motion.linear.map(|x| x * motion.rate));
+            let (z, w) = (mat_vec(g, &turns[i], z), mat_vec(g, &turns[i], w));
+            let (turning, sliding) = (dot(g, z, torque), dot(g, w, weight));
+            let t = g.add(turning, sliding);
+            tau[motion.column] = g.add(tau[motion.column], t);
+        }
+        if let Some(p) = body.parent {
+            let carried = scale(g, mass[i], body.transform.p);
+            own[p] = add(g, own[p], carried);
+            below[p] = add(g, below[p], moment);
+            mass[p] = g.add(mass[p], mass[i]);
+        }
+    }
+    tau
+}
