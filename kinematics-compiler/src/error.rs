@@ -38,29 +38,15 @@ pub enum CompileError {
         /// Robot name.
         robot: String,
     },
-    /// A link whose inertia breaks a rigid body's rules, for the dynamics.
-    #[error("robot `{robot}`: the <inertial> of link `{link}`{}: {fault}", at_line(*.line))]
+    /// A link whose mass the dynamics cannot take (its inertia breaks a rigid body's rules, or
+    /// its mass is left to its geometry), naming it and the line of its `<inertial>`.
+    #[error("robot `{robot}`: {refusal}")]
     Inertia {
         /// Robot name.
         robot: String,
-        /// The link.
-        link: String,
-        /// The line of its `<inertial>`, when read from a file.
-        line: Option<usize>,
-        /// What is wrong with it (boxed: the error stays small).
+        /// Which link, and why (boxed: the error stays small).
         #[source]
-        fault: Box<kinematics_model::inertia::InertiaFault>,
-    },
-    /// A link whose mass the description leaves to its geometry (an MJCF body with geoms and no
-    /// `<inertial>`, whose inertia MuJoCo would infer), for the dynamics.
-    #[error(
-        "robot `{robot}`: link `{link}` has no <inertial> and leaves its mass to be inferred from its geometry, which the dynamics do not do: give it an <inertial>"
-    )]
-    MassFromGeometry {
-        /// Robot name.
-        robot: String,
-        /// The link.
-        link: String,
+        refusal: Box<kinematics_model::inertia::InertiaRefusal>,
     },
     /// A gravity vector with a NaN or infinite component.
     #[error("robot `{robot}`: gravity {gravity:?} is not a finite vector")]
@@ -93,9 +79,4 @@ pub struct NoIkFamily {
     pub tip: String,
     /// Why each family does not apply.
     pub reason: String,
-}
-
-/// ` (line N)`, or nothing.
-fn at_line(line: Option<usize>) -> String {
-    line.map(|l| format!(" (line {l})")).unwrap_or_default()
 }

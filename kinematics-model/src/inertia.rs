@@ -55,6 +55,37 @@ pub enum InertiaFault {
     MasslessWithInertia,
 }
 
+/// Why a link's mass cannot be taken for dynamics, as every front end and the runtime reference
+/// report it ([`crate::KinematicTree::inertia_refusals`]).
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum InertiaRefusal {
+    /// Its `<inertial>` is no rigid body's ([`Inertial::fault`]).
+    #[error("the <inertial> of link `{link}`{}: {fault}", at_line(*.line))]
+    Fault {
+        /// The link.
+        link: String,
+        /// The line of its `<inertial>`, when read from a file.
+        line: Option<usize>,
+        /// What is wrong with it.
+        #[source]
+        fault: InertiaFault,
+    },
+    /// It has no `<inertial>` and its description leaves its mass to its geometry (an MJCF body
+    /// whose inertia MuJoCo would infer from its geoms), which the dynamics do not infer.
+    #[error(
+        "link `{link}` has no <inertial> and leaves its mass to be inferred from its geometry, which the dynamics do not do: give it an <inertial>"
+    )]
+    FromGeometry {
+        /// The link.
+        link: String,
+    },
+}
+
+/// ` (line N)`, or nothing.
+fn at_line(line: Option<usize>) -> String {
+    line.map(|l| format!(" (line {l})")).unwrap_or_default()
+}
+
 /// How far (relative to the largest principal moment) a moment may fall below zero, or beyond
 /// the sum of the other two, by the rounding of the written digits and still be taken: a thin rod's
 /// written tensor sits on the triangle inequality's edge.

@@ -178,6 +178,25 @@ impl KinematicTree {
         &self.inertia_from_geometry
     }
 
+    /// Every link, in tree order, whose mass the dynamics cannot take: one whose mass is left to
+    /// its geometry, or whose `<inertial>` breaks a rigid body's rules ([`Inertial::fault`]; the
+    /// triangle inequality only unless `as_written`), each with the line of its `<inertial>`.
+    ///
+    /// [`Inertial::fault`]: crate::inertia::Inertial::fault
+    pub fn inertia_refusals(&self, as_written: bool) -> Vec<crate::inertia::InertiaRefusal> {
+        use crate::inertia::InertiaRefusal;
+        let mut refusals = Vec::new();
+        for link in &self.links {
+            if self.inertia_from_geometry.contains(&link.name) {
+                refusals.push(InertiaRefusal::FromGeometry { link: link.name.clone() });
+            } else if let Some(fault) = link.inertial.as_ref().and_then(|i| i.fault(as_written)) {
+                let line = self.inertial_line(&link.name);
+                refusals.push(InertiaRefusal::Fault { link: link.name.clone(), line, fault });
+            }
+        }
+        refusals
+    }
+
     /// [`KinematicTree::excluded_pairs`] as links, each `(a, b)` with `a` before `b` in tree order.
     pub fn excluded_link_pairs(&self) -> BTreeSet<(LinkId, LinkId)> {
         self.excluded_pairs

@@ -117,12 +117,13 @@ impl ReferenceDynamics {
     /// Prepares the dynamics of `tree` under `gravity` (in the root link's frame, m/s^2), taking
     /// inertia tensors that break the triangle inequality as written when `as_written`.
     ///
-    /// Fails on the first link, in tree order, whose inertia breaks a rigid body's rules
-    /// ([`DynamicsError::Inertial`], with the line of its `<inertial>`) or whose mass is left to
-    /// its geometry ([`DynamicsError::MassFromGeometry`]), and on a non-finite gravity.
+    /// Fails on a non-finite gravity, and on the first link, in tree order, whose inertia breaks
+    /// a rigid body's rules or whose mass is left to its geometry ([`DynamicsError::Inertia`],
+    /// from [`KinematicTree::inertia_refusals`], with the line of its `<inertial>`).
     ///
     /// ```
     /// use kinematics_model::{FixedTransform, InertialDescription, KinematicTree, inertia::Inertial, urdf::parse_urdf};
+    /// use kinematics_model::inertia::InertiaRefusal;
     /// use kinematics_runtime::{DynamicsError, ReferenceDynamics};
     ///
     /// let mut description = parse_urdf(r#"<robot name="r"><link name="a"/></robot>"#)?;
@@ -131,7 +132,7 @@ impl ReferenceDynamics {
     /// description.inertials.push(InertialDescription { link: "a".into(), line: Some(7), inertial });
     /// let tree = KinematicTree::from_description(&description)?;
     /// let err = ReferenceDynamics::new(tree.clone(), [0.0, 0.0, -9.81], false).unwrap_err();
-    /// assert!(matches!(&err, DynamicsError::Inertial { link, line: Some(7), .. } if link == "a"), "{err}");
+    /// assert!(matches!(&err, DynamicsError::Inertia { refusal: InertiaRefusal::Fault { link, line: Some(7), .. }, .. } if link == "a"), "{err}");
     /// assert!(ReferenceDynamics::new(tree, [0.0, 0.0, -9.81], true).is_ok());
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
@@ -140,19 +141,15 @@ impl ReferenceDynamics {
         if gravity.iter().any(|g| !g.is_finite()) {
             return Err(DynamicsError::NonFiniteGravity { robot: robot(), gravity });
         }
+        if let Some(refusal) = tree.inertia_refusals(as_written).into_iter().next() {
+            return Err(DynamicsError::Inertia { robot: robot(), refusal });
+        }
         let mut inertias = Vec::with_capacity(tree.links().len());
         for link in tree.links() {
-            if tree.inertia_from_geometry().contains(&link.name) {
-                return Err(DynamicsError::MassFromGeometry { robot: robot(), link: link.name.clone() });
-            }
             let Some(inertial) = &link.inertial else {
                 inertias.push(Matrix6::zeros());
                 continue;
             };
-            if let Some(fault) = inertial.fault(as_written) {
-                let line = tree.inertial_line(&link.name);
-                return Err(DynamicsError::Inertial { robot: robot(), link: link.name.clone(), line, fault });
-            }
             // The tensor about the centre of mass in its frame's axes, turned into the link's.
             let com = fixed_isometry(&inertial.origin);
             let turn = com.rotation.to_rotation_matrix().into_inner();

@@ -11,7 +11,7 @@ mod dynamics_robots;
 use std::f64::consts::PI;
 
 use dynamics_robots::{G, Variant, assert_close, assert_close_at, inertial, joint, random_robot, robot};
-use kinematics_model::inertia::{InertiaFault, Inertial};
+use kinematics_model::inertia::{InertiaFault, InertiaRefusal, Inertial};
 use kinematics_model::{
     Description, FixedTransform, InertialDescription, JointTypeDescription, KinematicTree, MimicDescription,
 };
@@ -240,11 +240,13 @@ fn bad_inertias_are_refused_naming_the_link_and_line() {
     let err = ReferenceDynamics::new(one_link(negative, Some(12)), [0.0, 0.0, -G], true).unwrap_err();
     assert_eq!(
         err,
-        DynamicsError::Inertial {
+        DynamicsError::Inertia {
             robot: "r".into(),
-            link: "arm".into(),
-            line: Some(12),
-            fault: InertiaFault::NegativeMass(-1.0)
+            refusal: InertiaRefusal::Fault {
+                link: "arm".into(),
+                line: Some(12),
+                fault: InertiaFault::NegativeMass(-1.0)
+            }
         }
     );
     assert_eq!(
@@ -256,7 +258,7 @@ fn bad_inertias_are_refused_naming_the_link_and_line() {
     let triangle = Inertial { mass: 1.0, origin: at.clone(), inertia: [1.0, 0.0, 0.0, 1.0, 0.0, 3.0] };
     let err = ReferenceDynamics::new(one_link(triangle.clone(), None), [0.0, 0.0, -G], false).unwrap_err();
     assert!(
-        matches!(&err, DynamicsError::Inertial { link, line: None, fault: InertiaFault::Triangle(_), .. } if link == "arm"),
+        matches!(&err, DynamicsError::Inertia { refusal: InertiaRefusal::Fault { link, line: None, fault: InertiaFault::Triangle(_) }, .. } if link == "arm"),
         "{err}"
     );
     assert!(
@@ -269,7 +271,13 @@ fn bad_inertias_are_refused_naming_the_link_and_line() {
 
     let nan = Inertial { mass: f64::NAN, origin: at.clone(), inertia: [0.1, 0.0, 0.0, 0.1, 0.0, 0.1] };
     let err = ReferenceDynamics::new(one_link(nan, Some(3)), [0.0, 0.0, -G], true).unwrap_err();
-    assert!(matches!(err, DynamicsError::Inertial { fault: InertiaFault::NotFinite(_), .. }), "{err}");
+    assert!(
+        matches!(
+            err,
+            DynamicsError::Inertia { refusal: InertiaRefusal::Fault { fault: InertiaFault::NotFinite(_), .. }, .. }
+        ),
+        "{err}"
+    );
 
     let fine = Inertial { mass: 1.0, origin: at, inertia: [0.1, 0.0, 0.0, 0.1, 0.0, 0.1] };
     let err = ReferenceDynamics::new(one_link(fine.clone(), None), [0.0, f64::NAN, -G], false).unwrap_err();
@@ -280,7 +288,10 @@ fn bad_inertias_are_refused_naming_the_link_and_line() {
     description.inertia_from_geometry.push("l2".into());
     let tree = KinematicTree::from_description(&description).unwrap();
     let err = ReferenceDynamics::new(tree, [0.0, 0.0, -G], false).unwrap_err();
-    assert_eq!(err, DynamicsError::MassFromGeometry { robot: "random7".into(), link: "l2".into() });
+    assert_eq!(
+        err,
+        DynamicsError::Inertia { robot: "random7".into(), refusal: InertiaRefusal::FromGeometry { link: "l2".into() } }
+    );
 }
 
 #[test]

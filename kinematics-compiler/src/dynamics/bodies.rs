@@ -61,18 +61,23 @@ pub(super) struct Body {
     pub(super) inertia: Option<Inertia>,
     /// The steps of its motion alone (for [`opaque`]).
     motion_steps: Vec<Step>,
-    /// The steps from the root's frame to this body's, unsimplified ([`Body::pose_in_root`]).
-    path: Vec<Step>,
+    /// The steps from its parent body's frame (the root's) to its own, unsimplified
+    /// ([`pose_in_root`]).
+    from_parent: Vec<Step>,
 }
 
-impl Body {
-    /// This body's frame in the root's: its path from the root simplified as a pose's (the angles
-    /// of parallel axes summed, quarter turns exact) and folded.
-    pub(super) fn pose_in_root(&self, g: &mut ExprGraph) -> SymTransform {
-        let steps = simplify(g, self.path.clone());
-        let identity = SymTransform::identity(g);
-        fold_from_base(g, identity, &steps)
+/// Body `index`'s frame in the root's: the steps of its whole path from the root simplified as a
+/// pose's (the angles of parallel axes summed, quarter turns exact) and folded. Its cost is the
+/// path's length: the caller asks for it on robots of few bodies.
+pub(super) fn pose_in_root(g: &mut ExprGraph, bodies: &[Body], index: usize) -> SymTransform {
+    let mut chain = vec![index];
+    while let Some(parent) = bodies[chain[chain.len() - 1]].parent {
+        chain.push(parent);
     }
+    let steps: Vec<Step> = chain.iter().rev().flat_map(|&b| bodies[b].from_parent.iter().cloned()).collect();
+    let steps = simplify(g, steps);
+    let identity = SymTransform::identity(g);
+    fold_from_base(g, identity, &steps)
 }
 
 /// Numeric mass properties while lumping: mass, first moment and inertia about the origin.
@@ -88,15 +93,13 @@ struct Lumped {
 struct Place {
     body: Option<usize>,
     steps: Vec<Step>,
-    /// The steps from the root to the body's frame, unsimplified.
-    path: Vec<Step>,
 }
 
 /// The bodies of `tree`, parents before children, with the inertias read from its links.
 pub(super) fn bodies(g: &mut ExprGraph, tree: &KinematicTree) -> Vec<Body> {
     let of_entry = tree.velocity_of_entry();
     let mut places: Vec<Option<Place>> = vec![None; tree.links().len()];
-    places[tree.root().0] = Some(Place { body: None, steps: Vec::new(), path: Vec::new() });
+    places[tree.root().0] = Some(Place { body: None, steps: Vec::new() });
     let mut bodies: Vec<Body> = Vec::new();
     let mut lumped: Vec<Lumped> = Vec::new();
     for (index, joint) in tree.joints().iter().enumerate() {
@@ -105,20 +108,19 @@ pub(super) fn bodies(g: &mut ExprGraph, tree: &KinematicTree) -> Vec<Body> {
         let mut steps = parent.steps.clone();
         lower_fixed(g, &joint.origin, &mut steps);
         let mut body = parent.body;
-        let mut path = parent.path.clone();
         let id = kinematics_model::JointId(index);
         for (motion_steps, motions) in motions_of(g, tree, id, &of_entry) {
             steps.extend(motion_steps.iter().cloned());
-            path.extend(steps.iter().cloned());
-            let steps_now = simplify(g, std::mem::take(&mut steps));
+            let from_parent = std::mem::take(&mut steps);
+            let steps_now = simplify(g, from_parent.clone());
             let identity = SymTransform::identity(g);
             let transform = fold_from_base(g, identity, &steps_now);
-            bodies.push(Body { parent: body, transform, motions, inertia: None, motion_steps, path: path.clone() });
+            bodies.push(Body { parent: body, transform, motions, inertia: None, motion_steps, from_parent });
             lumped.push(Lumped::default());
             body = Some(bodies.len() - 1);
         }
         lower_fixed(g, &joint.after_motion, &mut steps);
-        places[joint.child.0] = Some(Place { body, steps, path });
+        places[joint.child.0] = Some(Place { body, steps });
     }
     for (link, place) in tree.links().iter().zip(&places) {
         let (Some(inertial), Some(Place { body: Some(body), steps, .. })) = (&link.inertial, place) else { continue };

@@ -32,6 +32,11 @@ use recursive::NewtonEuler;
 /// Gravity along `-z` at the Earth's standard value (m/s^2), the default.
 pub const STANDARD_GRAVITY: [f64; 3] = [0.0, 0.0, -9.81];
 
+/// The most joints for which gravity is also written in the root's axes (each body's whole path
+/// folded: quadratic in a chain's length, as each tip's path from the base is for the poses);
+/// every robot in `robots/` has fewer.
+const ROOT_WAY_UP_TO: usize = 256;
+
 /// One function of the dynamics.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum DynamicsFunction {
@@ -158,8 +163,10 @@ pub fn compile_dynamics(
 ) -> Result<CompiledDynamics, CompileError> {
     check(tree, request)?;
     // Gravity is written two ways (each body in its own axes, or in the root's) and the cheaper
-    // kept, the first of equals; the other functions one way.
-    let ways: &[bool] = if function == DynamicsFunction::Gravity { &[false, true] } else { &[false] };
+    // kept, the first of equals; the other functions one way. The root's way folds each body's
+    // whole path, the square of a long chain's length: past `ROOT_WAY_UP_TO` joints it is not tried.
+    let few = tree.joints().len() <= ROOT_WAY_UP_TO;
+    let ways: &[bool] = if function == DynamicsFunction::Gravity && few { &[false, true] } else { &[false] };
     let mut best: Option<(usize, ExprGraph, Vec<ExprId>)> = None;
     for &from_root in ways {
         let mut g = ExprGraph::new();
@@ -263,25 +270,13 @@ pub(crate) fn check(tree: &KinematicTree, request: &DynamicsRequest) -> Result<(
     }
 }
 
-/// Every link, in tree order, whose mass is left to its geometry or whose inertia breaks a rigid
-/// body's rules, each named with the line of its `<inertial>`.
+/// Every link the dynamics refuse ([`KinematicTree::inertia_refusals`]), as errors.
 pub(crate) fn link_faults(tree: &KinematicTree, request: &DynamicsRequest) -> Vec<CompileError> {
-    let robot = || tree.name().to_owned();
-    let mut faults = Vec::new();
-    for link in tree.links() {
-        if tree.inertia_from_geometry().contains(&link.name) {
-            faults.push(CompileError::MassFromGeometry { robot: robot(), link: link.name.clone() });
-        } else if let Some(fault) = link.inertial.as_ref().and_then(|i| i.fault(request.inertia_as_written)) {
-            let line = tree.inertial_line(&link.name);
-            faults.push(CompileError::Inertia {
-                robot: robot(),
-                link: link.name.clone(),
-                line,
-                fault: Box::new(fault),
-            });
-        }
-    }
-    faults
+    let robot = tree.name();
+    tree.inertia_refusals(request.inertia_as_written)
+        .into_iter()
+        .map(|refusal| CompileError::Inertia { robot: robot.to_owned(), refusal: Box::new(refusal) })
+        .collect()
 }
 
 impl CompiledDynamics {

@@ -313,7 +313,7 @@ pub(super) fn gravity_from_root(
 ) -> Vec<ExprId> {
     let a = algebra::constant(g, gravity.map(|x| -x));
     let zero = g.constant(0.0);
-    let turns: Vec<_> = bodies.iter().map(|b| b.pose_in_root(g).r).collect();
+    let turns: Vec<_> = (0..bodies.len()).map(|i| super::bodies::pose_in_root(g, bodies, i).r).collect();
     let mut mass: Vec<ExprId> = bodies.iter().map(|b| b.inertia.map_or(zero, |i| i.mass)).collect();
     // Per body: its own first moment plus its children's masses at their origins, in its axes
     // (then turned into the root's), and its children's moments already in the root's axes.

@@ -1,6 +1,6 @@
 //! Errors of the reference dynamics.
 
-use kinematics_model::inertia::InertiaFault;
+use kinematics_model::inertia::InertiaRefusal;
 
 use crate::error::RuntimeError;
 
@@ -8,29 +8,15 @@ use crate::error::RuntimeError;
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[non_exhaustive]
 pub enum DynamicsError {
-    /// A link whose `<inertial>` is no rigid body's ([`kinematics_model::inertia::Inertial::fault`]).
-    #[error("robot `{robot}`: the <inertial> of link `{link}`{}: {fault}", at_line(*.line))]
-    Inertial {
+    /// A link whose mass the dynamics cannot take (its `<inertial>` is no rigid body's, or its
+    /// mass is left to its geometry: the reference does not infer inertias).
+    #[error("robot `{robot}`: {refusal}")]
+    Inertia {
         /// Robot name.
         robot: String,
-        /// The link.
-        link: String,
-        /// The line of its `<inertial>`, when read from a file.
-        line: Option<usize>,
-        /// What is wrong with it.
+        /// Which link, and why.
         #[source]
-        fault: InertiaFault,
-    },
-    /// A link whose mass the description leaves to its geometry (an MJCF body with geoms and no
-    /// `<inertial>`): the reference does not infer inertias.
-    #[error(
-        "robot `{robot}`: link `{link}` has no <inertial> and leaves its mass to be inferred from its geometry, which the dynamics do not do: give it an <inertial>"
-    )]
-    MassFromGeometry {
-        /// Robot name.
-        robot: String,
-        /// The link.
-        link: String,
+        refusal: InertiaRefusal,
     },
     /// A gravity vector with a NaN or infinite component.
     #[error("robot `{robot}`: gravity {gravity:?} is not a finite vector")]
@@ -92,10 +78,6 @@ pub enum DynamicsError {
         /// The velocities it cannot determine ([`kinematics_model::KinematicTree::velocity_names`]).
         velocities: Vec<String>,
     },
-}
-
-fn at_line(line: Option<usize>) -> String {
-    line.map(|l| format!(" (line {l})")).unwrap_or_default()
 }
 
 fn names(list: &[String]) -> String {
