@@ -113,3 +113,47 @@ fn forward_dynamics_names_the_joint_that_moves_no_mass() {
     assert_eq!(err, KinematicsError::SingularMassMatrix { robot: "massless_hand", velocity: "wrist" });
     assert!(err.to_string().contains("`wrist`"), "{err}");
 }
+
+/// The Panda with external forces on its hand (below a fixed joint, lumped onto link 7) and its
+/// fourth link.
+#[derive(Kinematics)]
+#[kinematics(urdf = "robots/panda.urdf", dynamics(forces("panda_hand", "panda_link4")), scalars(f64, f32))]
+struct PandaForces;
+
+#[test]
+fn forces_on_the_pandas_links_agree_with_the_reference() {
+    assert_eq!(PandaForces::FORCE_LINKS, ["panda_hand", "panda_link4"]);
+    let reference =
+        ReferenceDynamics::new(PandaForces::reference().unwrap().tree().clone(), [0.0, 0.0, -9.81], false).unwrap();
+    for (k, (q, v, a)) in states(PandaForces::DOF, PandaForces::VELOCITY_DOF, 100).into_iter().enumerate() {
+        let (qa, va, aa): ([f64; 8], [f64; 8], [f64; 8]) =
+            (q.clone().try_into().unwrap(), v.clone().try_into().unwrap(), a.clone().try_into().unwrap());
+        // A push of some newtons and a twist of some newton metres on each link, varied per state.
+        let forces: [[f64; 6]; 2] =
+            std::array::from_fn(|l| std::array::from_fn(|c| ((k + 3 * l + c) % 7) as f64 - 3.0));
+        let named = [("panda_hand", forces[0]), ("panda_link4", forces[1])];
+        let tau = reference.inverse_dynamics_with_forces(&q, &v, &a, &named).unwrap();
+        close(&PandaForces::inverse_dynamics_with_forces(&qa, &va, &aa, &forces), &tau, 1e-12, "inverse dynamics");
+        let taua: [f64; 8] = tau.clone().try_into().unwrap();
+        let back = PandaForces::forward_dynamics_with_forces(&qa, &va, &taua, &forces).unwrap();
+        close(&back, &a, 1e-9, "forward dynamics of inverse dynamics");
+        // Without forces, the plain function (to rounding: the sums are ordered otherwise).
+        let none = [[0.0; 6]; 2];
+        let plain = PandaForces::inverse_dynamics(&qa, &va, &aa);
+        close(&PandaForces::inverse_dynamics_with_forces(&qa, &va, &aa, &none), &plain, 1e-13, "no forces");
+        let tau32 = PandaForces::inverse_dynamics_with_forces_f32(
+            &qa.map(|x| x as f32),
+            &va.map(|x| x as f32),
+            &aa.map(|x| x as f32),
+            &forces.map(|f| f.map(|x| x as f32)),
+        );
+        close(&tau32.map(f64::from), &tau, 1e-4, "inverse dynamics f32");
+        let lanes = PandaForces::inverse_dynamics_with_forces_generic(
+            &qa.map(F64x4::splat),
+            &va.map(F64x4::splat),
+            &aa.map(F64x4::splat),
+            &forces.map(|f| f.map(F64x4::splat)),
+        );
+        close(&lanes.map(|l| l.to_array()[2]), &tau, 1e-12, "inverse dynamics in lanes");
+    }
+}

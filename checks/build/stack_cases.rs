@@ -68,6 +68,7 @@ pub fn write(
             tips: Some(options.tips.len()),
             spheres: checked.collision().map(|c| c.spheres.len()),
             held_words: None,
+            forces: 0,
         };
         let render = Render {
             p: "::kinematics::__private".parse()?,

@@ -10,6 +10,11 @@
 //! `M a + h` is inverse dynamics, the mass matrix is exactly symmetric and positive definite,
 //! `v^T M v / 2` is the links' kinetic energy and the gravity torques are the gradient of the
 //! potential energy (the energies from the reference's forward kinematics alone).
+//!
+//! With external forces on links: the compiled `inverse_dynamics_with_forces` and
+//! `forward_dynamics_with_forces` against the reference's, and against inverse dynamics less
+//! `J^T f` of each link's Jacobian in its own axes, from the reference's forward kinematics
+//! (`ReferenceFk::jacobian_in`, which shares nothing with either dynamics).
 #![allow(clippy::panic, clippy::unwrap_used, clippy::expect_used)] // test helpers fail loudly
 
 mod common;
@@ -17,7 +22,7 @@ mod common;
 use common::dynamics_robots::{Rng, assert_close_at, random_cases, random_q, random_robot, random_vector};
 use common::link_motions::{advance, kinetic_energy, link_motions, potential};
 use common::robot_path;
-use kinematics::model::{KinematicTree, LinkId};
+use kinematics::model::{JacobianFrame, JointMotion, KinematicTree, LinkId};
 use kinematics::runtime::ReferenceDynamics;
 use kinematics_compiler::dynamics::{CompiledDynamics, DynamicsFunction, DynamicsRequest, compile_dynamics};
 use nalgebra::{DMatrix, DVector};
@@ -25,7 +30,8 @@ use nalgebra::{DMatrix, DVector};
 /// Agreement relative to the scale of the values compared.
 const RELATIVE: f64 = 1e-12;
 
-const REQUEST: DynamicsRequest = DynamicsRequest { gravity: [0.1, -0.3, -9.81], inertia_as_written: false };
+const REQUEST: DynamicsRequest =
+    DynamicsRequest { gravity: [0.1, -0.3, -9.81], inertia_as_written: false, forces: Vec::new() };
 
 /// `got` within [`RELATIVE`] of `want`, relative to the largest of `scale`, `want`'s entries and
 /// 1 (N, N m, kg m^2, m/s^2 or J); NaN and infinities fail.
@@ -273,5 +279,88 @@ fn compiled_dynamics_keep_the_identities_on_every_robot_with_inertias() {
 fn compiled_dynamics_keep_the_identities_on_random_robots() {
     for tree in random_trees() {
         assert!(check_identities(&tree, 10), "{}: refused", tree.name());
+    }
+}
+
+/// Up to `count` links below a moving joint, spread over the tree (the last link, then every
+/// so many before it).
+fn force_links(tree: &KinematicTree, count: usize) -> Vec<String> {
+    let moving: Vec<&str> = tree
+        .links()
+        .iter()
+        .enumerate()
+        .filter(|(i, _)| {
+            tree.path_from_root(LinkId(*i)).into_iter().any(|j| !matches!(tree.joint(j).motion, JointMotion::Fixed))
+        })
+        .map(|(_, link)| link.name.as_str())
+        .collect();
+    let step = moving.len().div_ceil(count).max(1);
+    moving.iter().rev().step_by(step).take(count).map(|&name| name.to_owned()).collect()
+}
+
+/// Forces on up to three links of `tree`, at `cases` random states: the compiled functions with
+/// forces against the reference's, and inverse dynamics with forces against inverse dynamics less
+/// `J^T f` (each link's Jacobian in its own axes, from the reference's forward kinematics); forward
+/// dynamics with the forces undoes inverse dynamics with them. `false` when the reference refuses
+/// the robot's inertias.
+fn check_forces(tree: &KinematicTree, cases: usize) -> bool {
+    let Ok(reference) = ReferenceDynamics::new(tree.clone(), REQUEST.gravity, false) else { return false };
+    let links = force_links(tree, 3);
+    assert!(!links.is_empty(), "{}: no link below a moving joint", tree.name());
+    let request = DynamicsRequest { forces: links.clone(), ..REQUEST };
+    let [inverse, forward] = DynamicsFunction::WITH_FORCES.map(|f| compile_dynamics(tree, &request, f).unwrap());
+    let mut rng = Rng(0x2545_f491_4f6c_dd1d);
+    let root = &tree.link(tree.root()).name;
+    for case in 0..cases {
+        let (q, v, a) = random_state(tree, &mut rng);
+        let nv = v.len();
+        let forces: Vec<[f64; 6]> = links.iter().map(|_| std::array::from_fn(|_| 4.0 * rng.range(-1.5, 1.5))).collect();
+        let named: Vec<(&str, [f64; 6])> = links.iter().map(String::as_str).zip(forces.iter().copied()).collect();
+        let flat: Vec<f64> = forces.iter().flatten().copied().collect();
+        let name = format!("{} case {case} (forces on {links:?}: {forces:?}, q {q:?})", tree.name());
+        let want = reference.inverse_dynamics_with_forces(&q, &v, &a, &named).unwrap();
+        let input: Vec<f64> = a.iter().chain(&flat).copied().collect();
+        let got = inverse.eval(&q, &v, &input);
+        close(&got, &want, &format!("{name}: inverse dynamics with forces"));
+        // Inverse dynamics less each force's generalized force `J^T f`.
+        let mut by_jacobians = reference.inverse_dynamics(&q, &v, &a).unwrap();
+        for (link, f) in &named {
+            let j = reference.fk().jacobian_in(&q, root, link, JacobianFrame::Local).unwrap();
+            let f = DVector::from_column_slice(f);
+            let generalized = j.transpose() * f;
+            for (tau, g) in by_jacobians.iter_mut().zip(generalized.iter()) {
+                *tau -= g;
+            }
+        }
+        close(&got, &by_jacobians, &format!("{name}: inverse dynamics with forces against J^T f"));
+        // Forward dynamics with the same forces gives the accelerations back (in torque units).
+        let input: Vec<f64> = want.iter().chain(&flat).copied().collect();
+        let values = forward.eval(&q, &v, &input);
+        let (accelerations, pivots) = values.split_at(nv);
+        if pivots.iter().all(|&p| p > 1e-9) {
+            let m = reference.mass_matrix(&q).unwrap();
+            let difference = DVector::from_iterator(nv, accelerations.iter().zip(&a).map(|(x, y)| x - y));
+            let torques = m * difference;
+            let h = reference.nonlinear_effects(&q, &v).unwrap();
+            let scale = largest(&want).max(largest(&h));
+            close_at(torques.as_slice(), &vec![0.0; nv], scale, &format!("{name}: forward of inverse with forces"));
+        }
+    }
+    true
+}
+
+#[test]
+fn forces_on_links_agree_on_every_robot_with_inertias() {
+    let mut checked = 0;
+    for (_, tree) in robots_with_inertias() {
+        checked += usize::from(check_forces(&tree, 20));
+    }
+    assert!(checked >= 5, "{checked} robots with inertias");
+}
+
+#[test]
+fn forces_on_links_agree_on_random_robots() {
+    for tree in random_trees() {
+        assert!(check_forces(&tree, 5), "{}: refused", tree.name());
     }
 }

@@ -321,6 +321,17 @@ impl Robot {
         self
     }
 
+    /// [`Robot::dynamics`] with external forces on `links`: also generates
+    /// `inverse_dynamics_with_forces` and `forward_dynamics_with_forces`, whose `forces` argument
+    /// holds one `[fx, fy, fz, nx, ny, nz]` per link, in this order (the force and its moment about
+    /// the link's origin, in the link's own axes), and `FORCE_LINKS`. Each link must be one of the
+    /// robot's, named once, with a moving joint between it and the root.
+    pub fn forces<S: Into<String>>(mut self, links: impl IntoIterator<Item = S>) -> Self {
+        let request = self.options.dynamics.get_or_insert_with(DynamicsRequest::default);
+        request.forces.extend(links.into_iter().map(Into::into));
+        self
+    }
+
     /// The options the calls so far have set.
     pub fn options(&self) -> &Options {
         &self.options
@@ -402,6 +413,7 @@ impl Robot {
             OptionKey::Srdf => ".srdf(..)",
             OptionKey::Dynamics => ".dynamics()",
             OptionKey::Gravity => ".gravity(..)",
+            OptionKey::ForceLink(_) => ".forces(..)",
         }
     }
 
@@ -738,6 +750,29 @@ mod tests {
         assert!(message.contains("no collision geometry"), "{message}");
         let missing = fails(&robot().srdf("none.srdf"), |e| matches!(e, BuildError::Load(_)));
         assert!(missing.starts_with("none.srdf: cannot read the file"), "{missing}");
+    }
+
+    /// `.forces(..)` adds the two functions with external forces and `FORCE_LINKS`, implies
+    /// `.dynamics()`, and each link it cannot take is a fault naming the call.
+    #[test]
+    fn forces_write_their_functions_and_name_the_link_at_fault() {
+        let ur5 =
+            || Robot::urdf("ur5.urdf").manifest_dir(std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../robots"));
+        // Without whitespace (a long signature is written over several lines, with a final comma).
+        let bare = |text: &str| text.split_whitespace().collect::<String>().replace(",)", ")");
+        let source = bare(&ur5().forces(["tool0", "forearm_link"]).generate().unwrap());
+        for signature in [
+            "pub const FORCE_LINKS: [&'static str; 2] = [\"tool0\", \"forearm_link\"];",
+            "pub fn inverse_dynamics_with_forces(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6], forces: &[[f64; 6]; 2]) -> [f64; 6]",
+            "pub fn forward_dynamics_with_forces(q: &[f64; 6], qd: &[f64; 6], tau: &[f64; 6], forces: &[[f64; 6]; 2])",
+            "pub fn gravity_torques(q: &[f64; 6]) -> [f64; 6]",
+        ] {
+            assert!(source.contains(&bare(signature)), "{signature}");
+        }
+        assert!(!ur5().dynamics().generate().unwrap().contains("with_forces"));
+        let message =
+            fails(&ur5().forces(["tool9"]), |e| one_fault(e, ".forces(..)", |f| matches!(f, FaultKind::ForceLink(_))));
+        assert_eq!(message, "ur5.urdf: `.forces(..)`: force link `tool9` does not exist; did you mean `tool0`?");
     }
 
     /// `.dynamics()` on the UR5 writes each function of the dynamics in every form, as Rust that

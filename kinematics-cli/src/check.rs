@@ -65,8 +65,10 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
     // The dynamics' request is checked first too: a refused inertia fails before anything is printed.
     let dynamics = if args.dynamics {
         let request = args.dynamics_options.request();
-        let compiled = crate::dynamics::compile(&tree, &args.file, &request, &DynamicsFunction::ALL)?;
-        Some((crate::dynamics::reference(&tree, &args.file, &request)?, compiled))
+        let with_forces = if request.forces.is_empty() { &[][..] } else { &DynamicsFunction::WITH_FORCES[..] };
+        let functions: Vec<DynamicsFunction> = DynamicsFunction::ALL.iter().chain(with_forces).copied().collect();
+        let compiled = crate::dynamics::compile(&tree, &args.file, &request, &functions)?;
+        Some((crate::dynamics::reference(&tree, &args.file, &request)?, compiled, request.forces))
     } else {
         None
     };
@@ -104,9 +106,9 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), CliError> {
             None => writeln!(out, "collision: no <collision> geometry the cover reads")?,
         }
     }
-    if let Some((reference, compiled)) = &dynamics {
+    if let Some((reference, compiled, forces)) = &dynamics {
         let graphs = crate::dynamics::Graphs(compiled);
-        let report = crate::dynamics::compare(&tree, &args.file, reference, &graphs, args.dynamics_samples)?;
+        let report = crate::dynamics::compare(&tree, &args.file, reference, &graphs, forces, args.dynamics_samples)?;
         write!(out, "{}", crate::dynamics::report_text(&tree, &report))?;
         crate::dynamics::verdict(&args.file, &report)?;
     }

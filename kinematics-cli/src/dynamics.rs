@@ -41,6 +41,11 @@ pub struct DynamicsArgs {
     /// descriptions have them); they must still be positive semi-definite.
     #[arg(long, requires = "dynamics")]
     pub inertia_as_written: bool,
+    /// With `--dynamics`: links external forces act on, comma-separated; `generate` adds
+    /// `inverse_dynamics_with_forces` and `forward_dynamics_with_forces`, `check` compares them
+    /// too.
+    #[arg(long, value_name = "LINK,LINK", value_delimiter = ',', requires = "dynamics")]
+    pub forces: Vec<String>,
 }
 
 impl DynamicsArgs {
@@ -49,6 +54,7 @@ impl DynamicsArgs {
         DynamicsRequest {
             gravity: self.gravity.unwrap_or(STANDARD_GRAVITY),
             inertia_as_written: self.inertia_as_written,
+            forces: self.forces.clone(),
         }
     }
 }
@@ -68,7 +74,7 @@ fn gravity(text: &str) -> Result<[f64; 3], String> {
 /// [`CliError::Options`] naming `--gravity` or `--dynamics` and, for an inertia, the link and the
 /// line of its `<inertial>`.
 pub fn check_request(tree: &KinematicTree, file: &str, request: &DynamicsRequest) -> Result<(), CliError> {
-    let options = Options { dynamics: Some(*request), ..Options::default() };
+    let options = Options { dynamics: Some(request.clone()), ..Options::default() };
     match options.check(tree) {
         Ok(_) => Ok(()),
         Err(rejected) => Err(CliError::Options {
@@ -108,11 +114,13 @@ pub enum Evaluated {
 
 /// Something that computes the dynamics: the compiled graphs, or generated code (`demo`).
 pub trait Subject {
-    /// `function` at `q`, rates `qd` and its third argument `input` (`qdd`, `tau`, or unused).
+    /// `function` at `q`, rates `qd` and its inputs `input`: its third argument (`qdd`, `tau`, or
+    /// unused), then for the functions with external forces six per link, as
+    /// `CompiledDynamics::eval` takes them.
     fn eval(&self, function: DynamicsFunction, q: &[f64], qd: &[f64], input: &[f64]) -> Evaluated;
 }
 
-/// The compiled graphs, one per function of [`DynamicsFunction::ALL`], in that order.
+/// The compiled graphs, one per function compared.
 pub struct Graphs<'a>(pub &'a [CompiledDynamics]);
 
 impl Subject for Graphs<'_> {
@@ -121,7 +129,7 @@ impl Subject for Graphs<'_> {
             return Evaluated::Values(Vec::new());
         };
         let values = compiled.eval(q, qd, input);
-        if function != DynamicsFunction::ForwardDynamics {
+        if !function.is_forward() {
             return Evaluated::Values(values);
         }
         let (accelerations, pivots) = values.split_at(compiled.velocity_dof());
@@ -143,8 +151,9 @@ pub fn singular_pivot(pivots: &[f64]) -> Option<usize> {
 /// is singular.
 #[derive(Debug, Clone)]
 pub struct Report {
-    /// Per function of [`DynamicsFunction::ALL`], the largest error (see the module's measure);
-    /// none for forward dynamics when the mass matrix was singular at every state.
+    /// Per function of [`DynamicsFunction::ALL`] (then, with forces, of
+    /// [`DynamicsFunction::WITH_FORCES`]), the largest error (see the module's measure); none for
+    /// forward dynamics when the mass matrix was singular at every state.
     pub errors: Vec<(DynamicsFunction, Option<f64>)>,
     /// The states compared.
     pub states: usize,
@@ -205,11 +214,12 @@ pub fn compare(
     file: &str,
     reference: &ReferenceDynamics,
     subject: &dyn Subject,
+    forces: &[String],
     samples: usize,
 ) -> Result<Report, CliError> {
     let nv = tree.velocity_dof();
     let error = |source| CliError::Dynamics { file: file.to_owned(), source: Box::new(source) };
-    let mut worst = [0.0f64; 5];
+    let mut worst = [0.0f64; 7];
     let mut singular = 0;
     let mut rates = Rates(0x6b69_6e65_6d61_7469);
     let bar = crate::progress::bar(samples as u64, "checking the dynamics");
@@ -238,18 +248,45 @@ pub fn compare(
             Err(DynamicsError::SingularMassMatrix { velocities, .. }) => Err(velocities),
             Err(e) => return Err(error(e)),
         };
+        // M (a - a_ref): the torques the difference of accelerations stands for.
+        let in_torques = |got: &[f64], want: &[f64], torque_scale: f64| {
+            if got.len() == nv && got.iter().all(|a| a.is_finite()) {
+                let difference: Vec<f64> = got.iter().zip(want).map(|(g, w)| g - w).collect();
+                let torques: Vec<f64> = (0..nv).map(|i| (0..nv).map(|j| m[(i, j)] * difference[j]).sum()).collect();
+                relative(&torques, &vec![0.0; nv], torque_scale)
+            } else {
+                f64::INFINITY
+            }
+        };
+        if !forces.is_empty() {
+            // Forces of a few newtons (and newton metres) on each link, the functions' inputs after
+            // `qdd` or `tau`.
+            let applied: Vec<[f64; 6]> =
+                forces.iter().map(|_| std::array::from_fn(|_| 5.0 * rates.next() / RATES)).collect();
+            let named: Vec<(&str, [f64; 6])> = forces.iter().map(String::as_str).zip(applied.iter().copied()).collect();
+            let flat: Vec<f64> = applied.iter().flatten().copied().collect();
+            let tau_f = reference.inverse_dynamics_with_forces(&q, &qd, &qdd, &named).map_err(error)?;
+            let input: Vec<f64> = qdd.iter().chain(&flat).copied().collect();
+            let got = match subject.eval(DynamicsFunction::InverseDynamicsWithForces, &q, &qd, &input) {
+                Evaluated::Values(values) => values,
+                Evaluated::Singular(_) => vec![f64::NAN],
+            };
+            worst[5] = worst_of(worst[5], relative(&got, &tau_f, scale(&tau_f)));
+            // Forward dynamics with the forces of the torques `tau`: the accelerations `qdd`, where
+            // the mass matrix is regular (a singular one is counted below, without forces).
+            if let Ok(want) = reference.forward_dynamics_with_forces(&q, &qd, &tau_f, &named) {
+                let input: Vec<f64> = tau_f.iter().chain(&flat).copied().collect();
+                let e = match subject.eval(DynamicsFunction::ForwardDynamicsWithForces, &q, &qd, &input) {
+                    Evaluated::Values(got) => in_torques(&got, &want, scale(tau_f.iter().chain(&h))),
+                    Evaluated::Singular(_) => f64::INFINITY,
+                };
+                worst[6] = worst_of(worst[6], e);
+            }
+        }
         match (subject.eval(DynamicsFunction::ForwardDynamics, &q, &qd, &tau), by_reference) {
             (Evaluated::Singular(_), Err(_)) => singular += 1,
             (Evaluated::Values(got), Ok(want)) => {
-                let e = if got.len() == nv && got.iter().all(|a| a.is_finite()) {
-                    // M (a - a_ref): the torques the difference stands for.
-                    let difference: Vec<f64> = got.iter().zip(&want).map(|(g, w)| g - w).collect();
-                    let torques: Vec<f64> = (0..nv).map(|i| (0..nv).map(|j| m[(i, j)] * difference[j]).sum()).collect();
-                    relative(&torques, &vec![0.0; nv], scale(tau.iter().chain(&h)))
-                } else {
-                    f64::INFINITY
-                };
-                worst[4] = worst_of(worst[4], e);
+                worst[4] = worst_of(worst[4], in_torques(&got, &want, scale(tau.iter().chain(&h))));
             }
             (Evaluated::Singular(by_subject), Ok(_)) => {
                 bar.finish_and_clear();
@@ -273,9 +310,14 @@ pub fn compare(
         bar.inc(1);
     }
     bar.finish_and_clear();
-    let compared = |function| function != DynamicsFunction::ForwardDynamics || singular < samples;
+    let compared = |function: DynamicsFunction| !function.is_forward() || singular < samples;
+    let functions = DynamicsFunction::ALL.into_iter().chain(DynamicsFunction::WITH_FORCES).take(if forces.is_empty() {
+        DynamicsFunction::ALL.len()
+    } else {
+        worst.len()
+    });
     Ok(Report {
-        errors: DynamicsFunction::ALL.into_iter().zip(worst).map(|(f, e)| (f, compared(f).then_some(e))).collect(),
+        errors: functions.zip(worst).map(|(f, e)| (f, compared(f).then_some(e))).collect(),
         states: samples,
         singular,
         gravity: reference.gravity(),
@@ -300,7 +342,7 @@ pub fn report_text(tree: &KinematicTree, report: &Report) -> String {
     for (function, error) in &report.errors {
         let error = match error {
             None => "none compared: the mass matrix is singular at every state".to_owned(),
-            Some(e) if *function == DynamicsFunction::ForwardDynamics => {
+            Some(e) if function.is_forward() => {
                 format!("{e:.2e}  (M (qdd - qdd_ref), x the torques' scale)")
             }
             Some(e) => format!("{e:.2e}"),

@@ -164,6 +164,9 @@ pub fn builder(args: &Args) -> Result<Robot, CliError> {
         if args.dynamics_options.inertia_as_written {
             robot = robot.inertia_as_written();
         }
+        if !args.dynamics_options.forces.is_empty() {
+            robot = robot.forces(args.dynamics_options.forces.iter().cloned());
+        }
     }
     Ok(robot)
 }
@@ -213,5 +216,6 @@ pub fn flag(key: OptionKey) -> &'static str {
         OptionKey::Srdf => "--srdf",
         OptionKey::Dynamics => "--dynamics",
         OptionKey::Gravity => "--gravity",
+        OptionKey::ForceLink(_) => "--forces",
     }
 }

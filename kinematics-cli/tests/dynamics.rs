@@ -285,3 +285,36 @@ fn expr_and_check_take_a_floating_base() {
     assert!(checked.ends_with("within the tolerance 1e-12\n"), "{checked}");
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// `--forces`: `check` compares the two functions with external forces too, `generate` writes
+/// them, and a link they cannot take is refused naming the flag.
+#[test]
+fn forces_on_links_are_checked_generated_and_refused() {
+    let out = ok(&[
+        "check",
+        "robots/panda.urdf",
+        "--samples",
+        "5",
+        "--dynamics",
+        "--forces",
+        "panda_hand,panda_link3",
+        "--dynamics-samples",
+        "100",
+    ]);
+    let rows = dynamics_rows(&out);
+    let names: Vec<&str> = rows.iter().map(|(n, _)| n.as_str()).collect();
+    assert_eq!(names[5..], ["inverse_dynamics_with_forces", "forward_dynamics_with_forces"], "{out}");
+    for (name, error) in &rows {
+        let error: f64 = error.split_whitespace().next().unwrap().parse().unwrap();
+        assert!(error <= 1e-12, "{name}: {error}");
+    }
+    assert!(out.ends_with("within the tolerance 1e-12\n"), "{out}");
+    let source = ok(&["generate", "robots/ur5.urdf", "--dynamics", "--forces", "tool0"]);
+    assert!(source.contains("pub const FORCE_LINKS: [&'static str; 1] = [\"tool0\"];"));
+    assert!(source.contains("pub fn forward_dynamics_with_forces("));
+    assert_eq!(
+        fails(&["generate", "robots/ur5.urdf", "--dynamics", "--forces", "tool0,base_link"]),
+        "error: robots/ur5.urdf: `--forces`: link `base_link` is the root: a force on it moves nothing"
+    );
+    usage_error(&["generate", "robots/ur5.urdf", "--forces", "tool0"], "--dynamics");
+}

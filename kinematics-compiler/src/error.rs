@@ -48,6 +48,15 @@ pub enum CompileError {
         #[source]
         refusal: Box<kinematics_model::inertia::InertiaRefusal>,
     },
+    /// A link named for external forces that cannot take one.
+    #[error("robot `{robot}`: {fault}")]
+    ForceLink {
+        /// Robot name.
+        robot: String,
+        /// Which link, and why.
+        #[source]
+        fault: crate::dynamics::ForceLinkFault,
+    },
     /// A gravity vector with a NaN or infinite component.
     #[error("robot `{robot}`: gravity {gravity:?} is not a finite vector")]
     NonFiniteGravity {

@@ -153,6 +153,8 @@ pub enum OptionKey {
     Dynamics,
     /// `dynamics`' `gravity`.
     Gravity,
+    /// The link with this index in `dynamics`' `forces` ([`DynamicsRequest::forces`]).
+    ForceLink(usize),
 }
 
 impl OptionKey {
@@ -175,6 +177,7 @@ impl OptionKey {
             OptionKey::Srdf => "srdf",
             OptionKey::Dynamics => "dynamics",
             OptionKey::Gravity => "gravity",
+            OptionKey::ForceLink(_) => "forces",
         }
     }
 }
@@ -266,6 +269,9 @@ pub enum FaultKind {
     /// `gravity` that is not a finite vector.
     #[error("`gravity` is {0:?} (must be three finite numbers, m/s^2 in the root link's frame)")]
     Gravity([f64; 3]),
+    /// A link of `forces` that cannot take an external force.
+    #[error(transparent)]
+    ForceLink(crate::dynamics::ForceLinkFault),
 }
 
 /// Options that passed every rule against their robot: the only thing
@@ -515,9 +521,10 @@ fn collision_applies(options: &Options, tree: &KinematicTree) -> Result<Option<C
     Ok(Some(CollisionPlan { spheres, pairs, fixed, grids }))
 }
 
-/// Rule: `dynamics` needs a finite gravity, a link with mass, and inertias that keep a rigid
-/// body's rules (the triangle inequality unless taken as written) with none left to geometry:
-/// every link at fault is reported, not only the first.
+/// Rule: `dynamics` needs a finite gravity, a link with mass, inertias that keep a rigid body's
+/// rules (the triangle inequality unless taken as written) with none left to geometry, and
+/// `forces` naming links of the robot, each once, each below a moving joint: every link at fault
+/// is reported, not only the first.
 fn dynamics_applies(options: &Options, tree: &KinematicTree) -> Vec<OptionFault> {
     let Some(request) = options.dynamics.as_ref() else { return Vec::new() };
     let mut faults = Vec::new();
@@ -531,6 +538,11 @@ fn dynamics_applies(options: &Options, tree: &KinematicTree) -> Vec<OptionFault>
     if tree.links().iter().all(|l| l.inertial.is_none()) {
         faults.push(fault(FaultKind::NoMass));
     }
+    faults.extend(
+        crate::dynamics::force_link_faults(tree, request)
+            .into_iter()
+            .map(|(i, e)| OptionFault { key: OptionKey::ForceLink(i), kind: FaultKind::ForceLink(e) }),
+    );
     faults
 }
 

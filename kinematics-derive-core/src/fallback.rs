@@ -158,6 +158,7 @@ impl Implied {
             // The cover's count, when it can be made (a mesh refused leaves it unknown).
             spheres: spheres.as_ref().map(Vec::len),
             held_words: spheres.as_deref().map(held_words),
+            forces: self.dims.forces,
         };
         self
     }
@@ -174,6 +175,7 @@ impl Implied {
         Dims {
             links: self.dims.links.or(if self.links_read { listed } else { None }),
             tips: self.dims.tips.or(self.tips_counted.then_some(self.options.tips.len())),
+            forces: self.options.dynamics.as_ref().map_or(0, |d| d.forces.len()),
             ..self.dims
         }
     }
@@ -378,6 +380,7 @@ fn constant_value(render: &Render, constant: Constant, p: &TokenStream) -> Token
         Constant::Tips => count(dims.tips, quote!("")),
         Constant::SphereRadii => count(dims.spheres, quote!(0.0)),
         Constant::SphereLinks => count(dims.spheres, quote!("")),
+        Constant::ForceLinks => count(Some(dims.forces), quote!("")),
     }
 }
 
@@ -542,7 +545,16 @@ mod tests {
                 let options = Options {
                     floating_base: floating_base.map(str::to_owned),
                     scalars: Scalars { f64: scalars.0, f32: scalars.1 },
-                    dynamics: Some(DynamicsRequest { gravity: [0.0, 0.0, 0.0], inertia_as_written: true }),
+                    dynamics: Some(DynamicsRequest {
+                        gravity: [0.0, 0.0, 0.0],
+                        inertia_as_written: true,
+                        // External forces on the last link and one moved by the first joint.
+                        forces: if file == "panda.urdf" {
+                            vec!["panda_hand".to_owned(), "panda_link1".to_owned()]
+                        } else {
+                            vec!["tool0".to_owned()]
+                        },
+                    }),
                     ..Options::default()
                 };
                 assert!(stub_matches(file, &tree, &options), "{file}: the rules refused {options:?}");

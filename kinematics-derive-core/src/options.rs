@@ -114,9 +114,10 @@ pub struct OutputKeys {
     /// `<collision>` geometry, covered by spheres.
     #[darling(default)]
     pub collision: Option<SpannedValue<Override<CollisionKey>>>,
-    /// `dynamics` (or `dynamics(gravity = [0.0, 0.0, -9.81], inertia_as_written)`): also emit the
-    /// dynamics from the links' inertias: gravity torques, inverse dynamics, nonlinear effects,
-    /// the mass matrix and forward dynamics.
+    /// `dynamics` (or `dynamics(gravity = [0.0, 0.0, -9.81], inertia_as_written, forces("link"))`):
+    /// also emit the dynamics from the links' inertias: gravity torques, inverse dynamics,
+    /// nonlinear effects, the mass matrix and forward dynamics, and with `forces` inverse and
+    /// forward dynamics with external forces on those links.
     #[darling(default)]
     pub dynamics: Option<Keyed<Override<DynamicsKey>>>,
     /// `crate = "path"` for a renamed dependency.
@@ -156,6 +157,10 @@ pub struct DynamicsKey {
     /// (real descriptions have them); they must still be positive semi-definite.
     #[darling(default)]
     pub inertia_as_written: darling::util::Flag,
+    /// `forces("link", ...)`: the links external forces act on, which
+    /// `inverse_dynamics_with_forces` and `forward_dynamics_with_forces` take, in this order.
+    #[darling(default)]
+    pub forces: Option<ForceLinks>,
 }
 
 /// `gravity = [x, y, z]`: three numbers in square brackets (integers allowed, signs too).
@@ -198,6 +203,14 @@ impl OutputKeys {
         match &self.dynamics.as_ref()?.value {
             Override::Explicit(key) => key.gravity.as_ref(),
             Override::Inherit => None,
+        }
+    }
+
+    /// The links of `forces(...)` given in `dynamics(...)` (none when not given).
+    pub fn force_links(&self) -> &[SpannedValue<String>] {
+        match self.dynamics.as_ref().map(|key| &key.value) {
+            Some(Override::Explicit(DynamicsKey { forces: Some(ForceLinks(links)), .. })) => links,
+            _ => &[],
         }
     }
 
@@ -475,6 +488,7 @@ impl KinematicsInput {
                 Override::Explicit(key) => DynamicsRequest {
                     gravity: key.gravity.as_ref().map_or(STANDARD_GRAVITY, |g| g.as_ref().0),
                     inertia_as_written: key.inertia_as_written.is_present(),
+                    forces: output.force_links().iter().map(|link| link.as_ref().clone()).collect(),
                 },
             }),
             ..self.keys.options()
@@ -505,6 +519,12 @@ impl KinematicsInput {
             OptionKey::Gravity => {
                 output.gravity().map(SpannedValue::span).or_else(|| output.dynamics.as_ref().map(|key| key.span))
             }
+            // The link's own string, else the `dynamics` key's.
+            OptionKey::ForceLink(i) => output
+                .force_links()
+                .get(i)
+                .map(SpannedValue::span)
+                .or_else(|| output.dynamics.as_ref().map(|key| key.span)),
             // A bare word has no span of its own.
             OptionKey::Positions => None,
             source => self.keys.span_of(source),
@@ -554,19 +574,45 @@ pub struct Tips(pub Vec<SpannedValue<String>>);
 
 impl FromMeta for Tips {
     fn from_list(items: &[NestedMeta]) -> darling::Result<Self> {
-        let mut errors = Error::accumulator();
-        let mut tips = Vec::new();
-        for item in items {
-            match item {
-                NestedMeta::Lit(syn::Lit::Str(s)) => tips.push(SpannedValue::new(s.value(), s.span())),
-                other => errors.push(
-                    Error::custom("expected a link name in quotes, like `tips(\"left_hand\", \"right_hand\")`")
-                        .with_span(other),
-                ),
+        quoted_links(items, "tips(\"left_hand\", \"right_hand\")").map(Tips)
+    }
+}
+
+/// `forces("a", "b")` in `dynamics(...)`: the links external forces act on, string literals each
+/// with its span.
+#[derive(Debug, Clone)]
+pub struct ForceLinks(pub Vec<SpannedValue<String>>);
+
+/// What a `forces` that is no list is told.
+const FORCES_SYNTAX: &str = "expected link names in quotes in parentheses, like `forces(\"tool0\", \"wrist_3_link\")`";
+
+impl FromMeta for ForceLinks {
+    fn from_list(items: &[NestedMeta]) -> darling::Result<Self> {
+        quoted_links(items, "forces(\"tool0\", \"wrist_3_link\")").map(ForceLinks)
+    }
+
+    fn from_word() -> darling::Result<Self> {
+        Err(Error::custom(FORCES_SYNTAX))
+    }
+
+    fn from_expr(expr: &syn::Expr) -> darling::Result<Self> {
+        Err(Error::custom(FORCES_SYNTAX).with_span(expr))
+    }
+}
+
+/// The string literals of a list, each with its span; anything else is an error showing `example`.
+fn quoted_links(items: &[NestedMeta], example: &str) -> darling::Result<Vec<SpannedValue<String>>> {
+    let mut errors = Error::accumulator();
+    let mut links = Vec::new();
+    for item in items {
+        match item {
+            NestedMeta::Lit(syn::Lit::Str(s)) => links.push(SpannedValue::new(s.value(), s.span())),
+            other => {
+                errors.push(Error::custom(format!("expected a link name in quotes, like `{example}`")).with_span(other))
             }
         }
-        errors.finish_with(Tips(tips))
     }
+    errors.finish_with(links)
 }
 
 /// `links = ["a", "b"]`: string literals in an array, each with its span (an empty list is read,

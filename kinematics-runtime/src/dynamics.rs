@@ -66,6 +66,8 @@ use crate::fk::{ReferenceFk, fixed_isometry};
 /// | [`nonlinear_effects`](Self::nonlinear_effects)`(q, v)` | RNEA with `a = 0`: Coriolis, centrifugal and gravity |
 /// | [`mass_matrix`](Self::mass_matrix)`(q)` | composite rigid bodies (CRBA), symmetric |
 /// | [`forward_dynamics`](Self::forward_dynamics)`(q, v, tau)` | `M a = tau - h` by Cholesky |
+/// | [`inverse_dynamics_with_forces`](Self::inverse_dynamics_with_forces)`(q, v, a, forces)` | RNEA less the links' external forces |
+/// | [`forward_dynamics_with_forces`](Self::forward_dynamics_with_forces)`(q, v, tau, forces)` | `M a = tau - h + J^T f` |
 ///
 /// The module documentation gives the conventions (a floating base's velocities in its own
 /// axes, a mimic joint's torque folded into its source's).
@@ -221,7 +223,7 @@ impl ReferenceDynamics {
     /// Newton-Euler algorithm.
     pub fn inverse_dynamics(&self, q: &[f64], v: &[f64], a: &[f64]) -> Result<Vec<f64>, DynamicsError> {
         self.check(q, &[("v", v), ("a", a)])?;
-        self.finite("inverse dynamics", self.rnea(q, v, a))
+        self.finite("inverse dynamics", self.rnea(q, v, a, &[]))
     }
 
     /// The generalized forces that hold the robot still against gravity at `q` (the gradient of
@@ -229,7 +231,7 @@ impl ReferenceDynamics {
     pub fn gravity_torques(&self, q: &[f64]) -> Result<Vec<f64>, DynamicsError> {
         self.check(q, &[])?;
         let zero = vec![0.0; self.tree().velocity_dof()];
-        self.finite("gravity torques", self.rnea(q, &zero, &zero))
+        self.finite("gravity torques", self.rnea(q, &zero, &zero, &[]))
     }
 
     /// The Coriolis, centrifugal and gravity terms `h(q, v)`: inverse dynamics with zero
@@ -237,7 +239,7 @@ impl ReferenceDynamics {
     pub fn nonlinear_effects(&self, q: &[f64], v: &[f64]) -> Result<Vec<f64>, DynamicsError> {
         self.check(q, &[("v", v)])?;
         let zero = vec![0.0; self.tree().velocity_dof()];
-        self.finite("nonlinear effects", self.rnea(q, v, &zero))
+        self.finite("nonlinear effects", self.rnea(q, v, &zero, &[]))
     }
 
     /// The joint-space mass matrix `M(q)` (`velocity_dof` square, symmetric, positive
@@ -278,8 +280,57 @@ impl ReferenceDynamics {
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     pub fn forward_dynamics(&self, q: &[f64], v: &[f64], tau: &[f64]) -> Result<Vec<f64>, DynamicsError> {
+        self.forward_dynamics_with_forces(q, v, tau, &[])
+    }
+
+    /// [`inverse_dynamics`](Self::inverse_dynamics) while the world pushes on links: each of
+    /// `forces` names a link and gives `[fx, fy, fz, nx, ny, nz]`, the force and its moment about
+    /// the link's origin, both in the link's own axes, exerted on the link. The result is
+    /// `M(q) a + h(q, v) - sum J^T f` over the links' Jacobians in their own frames.
+    ///
+    /// ```
+    /// # use kinematics_model::{FixedTransform, InertialDescription, KinematicTree, inertia::Inertial, urdf::parse_urdf};
+    /// use kinematics_runtime::ReferenceDynamics;
+    /// // A massless hinge about z with a link 1 m along x: a push of 2 N along the link's y at
+    /// // its origin needs -2 N m at the hinge to hold.
+    /// let urdf = r#"<robot name="r"><link name="base"/><link name="arm"/><link name="tip"/>
+    ///   <joint name="hinge" type="continuous"><parent link="base"/><child link="arm"/><axis xyz="0 0 1"/></joint>
+    ///   <joint name="bolt" type="fixed"><parent link="arm"/><child link="tip"/><origin xyz="1 0 0"/></joint>
+    /// </robot>"#;
+    /// let mut description = parse_urdf(urdf)?;
+    /// let inertial = Inertial { mass: 1.0, origin: FixedTransform::identity(), inertia: [1.0, 0.0, 0.0, 1.0, 0.0, 1.0] };
+    /// description.inertials.push(InertialDescription { link: "arm".into(), line: None, inertial });
+    /// let dynamics = ReferenceDynamics::new(KinematicTree::from_description(&description)?, [0.0; 3], false)?;
+    /// let tau = dynamics.inverse_dynamics_with_forces(&[0.4], &[0.0], &[0.0], &[("tip", [0.0, 2.0, 0.0, 0.0, 0.0, 0.0])])?;
+    /// approx::assert_relative_eq!(tau[0], -2.0, max_relative = 1e-12);
+    /// assert!(dynamics.inverse_dynamics_with_forces(&[0.4], &[0.0], &[0.0], &[("tips", [0.0; 6])]).is_err());
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn inverse_dynamics_with_forces(
+        &self,
+        q: &[f64],
+        v: &[f64],
+        a: &[f64],
+        forces: &[(&str, [f64; 6])],
+    ) -> Result<Vec<f64>, DynamicsError> {
+        self.check(q, &[("v", v), ("a", a)])?;
+        let external = self.external(forces)?;
+        self.finite("inverse dynamics", self.rnea(q, v, a, &external))
+    }
+
+    /// [`forward_dynamics`](Self::forward_dynamics) while the world pushes on links (`forces` as
+    /// [`inverse_dynamics_with_forces`](Self::inverse_dynamics_with_forces) takes them): `M a = tau
+    /// - h + sum J^T f`.
+    pub fn forward_dynamics_with_forces(
+        &self,
+        q: &[f64],
+        v: &[f64],
+        tau: &[f64],
+        forces: &[(&str, [f64; 6])],
+    ) -> Result<Vec<f64>, DynamicsError> {
         self.check(q, &[("v", v), ("tau", tau)])?;
-        let h = self.rnea(q, v, &vec![0.0; v.len()]);
+        let external = self.external(forces)?;
+        let h = self.rnea(q, v, &vec![0.0; v.len()], &external);
         let m = self.crba(q);
         let robot = || self.tree().name().to_owned();
         if m.iter().chain(&h).any(|x| !x.is_finite()) {
@@ -325,6 +376,27 @@ impl ReferenceDynamics {
             }
         }
         Ok(())
+    }
+
+    /// Each external force as its link's index and a spatial force (moment first), checked: a link
+    /// of the tree, finite entries.
+    fn external(&self, forces: &[(&str, [f64; 6])]) -> Result<Vec<(usize, spatial::Spatial)>, DynamicsError> {
+        let tree = self.tree();
+        let robot = || tree.name().to_owned();
+        forces
+            .iter()
+            .map(|(name, f)| {
+                let link = tree
+                    .find_link("force", name)
+                    .map_err(|source| DynamicsError::UnknownLink { robot: robot(), source })?;
+                if let Some(index) = f.iter().position(|x| !x.is_finite()) {
+                    let link = (*name).to_owned();
+                    return Err(DynamicsError::NonFiniteForce { robot: robot(), link, index, value: f[index] });
+                }
+                let [fx, fy, fz, nx, ny, nz] = *f;
+                Ok((link.0, spatial::spatial(Vector3::new(nx, ny, nz), Vector3::new(fx, fy, fz))))
+            })
+            .collect()
     }
 
     /// `values`, unless one overflowed.

@@ -13,7 +13,7 @@
 //! frame with constants, and the fixed transforms between bodies fold into the next body's
 //! transform through the chain passes, so quarter turns stay exact.
 
-use kinematics_model::{JointKind, JointMotion, KinematicTree};
+use kinematics_model::{JointKind, JointMotion, KinematicTree, LinkId};
 
 use super::algebra::{Sym3, Vec3, constant};
 use crate::simplify::simplify;
@@ -97,6 +97,32 @@ struct Place {
 
 /// The bodies of `tree`, parents before children, with the inertias read from its links.
 pub(super) fn bodies(g: &mut ExprGraph, tree: &KinematicTree) -> Vec<Body> {
+    bodies_and_places(g, tree).0
+}
+
+/// The bodies of `tree` ([`bodies`]) and where each of `links` rides: its body and its frame in
+/// the body's (constants), or `None` for a link fixed to the root.
+pub(super) fn bodies_and_link_frames(
+    g: &mut ExprGraph,
+    tree: &KinematicTree,
+    links: &[LinkId],
+) -> (Vec<Body>, Vec<Option<(usize, SymTransform)>>) {
+    let (bodies, places) = bodies_and_places(g, tree);
+    let frames = links
+        .iter()
+        .map(|link| {
+            #[allow(clippy::expect_used, reason = "an invariant of the tree: every link is below its root")]
+            let place = places[link.0].as_ref().expect("every link of the tree is placed");
+            let body = place.body?;
+            let identity = SymTransform::identity(g);
+            Some((body, fold_from_base(g, identity, &place.steps)))
+        })
+        .collect();
+    (bodies, frames)
+}
+
+/// The bodies and where every link rides.
+fn bodies_and_places(g: &mut ExprGraph, tree: &KinematicTree) -> (Vec<Body>, Vec<Option<Place>>) {
     let of_entry = tree.velocity_of_entry();
     let mut places: Vec<Option<Place>> = vec![None; tree.links().len()];
     places[tree.root().0] = Some(Place { body: None, steps: Vec::new() });
@@ -146,7 +172,7 @@ pub(super) fn bodies(g: &mut ExprGraph, tree: &KinematicTree) -> Vec<Body> {
             });
         }
     }
-    bodies
+    (bodies, places)
 }
 
 /// Adds a body of `mass` whose centre of mass is at `c` with axes `r` (in the lumped body's

@@ -21,13 +21,14 @@ mod bodies;
 mod recursive;
 mod solve;
 
-use kinematics_model::KinematicTree;
+use kinematics_model::{JointMotion, KinematicTree, LinkId};
 
 use crate::error::CompileError;
 use crate::simplify::{EXPR_PASSES, run_expr_passes};
 use crate::stats::OpCount;
 use crate::symbolic::graph::{ExprGraph, ExprId};
-use recursive::NewtonEuler;
+use crate::symbolic::transform::SymTransform;
+use recursive::{External, NewtonEuler};
 
 /// Gravity along `-z` at the Earth's standard value (m/s^2), the default.
 pub const STANDARD_GRAVITY: [f64; 3] = [0.0, 0.0, -9.81];
@@ -51,6 +52,12 @@ pub enum DynamicsFunction {
     MassMatrix,
     /// `forward_dynamics(q, qd, tau)`: the accelerations the generalized forces `tau` give.
     ForwardDynamics,
+    /// `inverse_dynamics_with_forces(q, qd, qdd, forces)`: inverse dynamics with external forces
+    /// on the links [`DynamicsRequest::forces`] names.
+    InverseDynamicsWithForces,
+    /// `forward_dynamics_with_forces(q, qd, tau, forces)`: forward dynamics with external forces
+    /// on the links [`DynamicsRequest::forces`] names.
+    ForwardDynamicsWithForces,
 }
 
 impl DynamicsFunction {
@@ -63,6 +70,11 @@ impl DynamicsFunction {
         DynamicsFunction::ForwardDynamics,
     ];
 
+    /// The functions that take external forces, emitted when [`DynamicsRequest::forces`] names
+    /// links.
+    pub const WITH_FORCES: [DynamicsFunction; 2] =
+        [DynamicsFunction::InverseDynamicsWithForces, DynamicsFunction::ForwardDynamicsWithForces];
+
     /// Its name on the type.
     pub fn name(self) -> &'static str {
         match self {
@@ -71,49 +83,116 @@ impl DynamicsFunction {
             DynamicsFunction::NonlinearEffects => "nonlinear_effects",
             DynamicsFunction::MassMatrix => "mass_matrix",
             DynamicsFunction::ForwardDynamics => "forward_dynamics",
+            DynamicsFunction::InverseDynamicsWithForces => "inverse_dynamics_with_forces",
+            DynamicsFunction::ForwardDynamicsWithForces => "forward_dynamics_with_forces",
         }
     }
 
     /// Whether it takes the joint rates `qd`.
     pub fn takes_rates(self) -> bool {
-        matches!(
-            self,
-            DynamicsFunction::InverseDynamics | DynamicsFunction::NonlinearEffects | DynamicsFunction::ForwardDynamics
-        )
+        !matches!(self, DynamicsFunction::Gravity | DynamicsFunction::MassMatrix)
     }
 
     /// The name of its third argument, one value per velocity (`qdd` or `tau`), if it takes one.
     pub fn input(self) -> Option<&'static str> {
         match self {
-            DynamicsFunction::InverseDynamics => Some("qdd"),
-            DynamicsFunction::ForwardDynamics => Some("tau"),
+            DynamicsFunction::InverseDynamics | DynamicsFunction::InverseDynamicsWithForces => Some("qdd"),
+            DynamicsFunction::ForwardDynamics | DynamicsFunction::ForwardDynamicsWithForces => Some("tau"),
             _ => None,
         }
     }
+
+    /// Whether it takes external forces (a fourth argument `forces`, one spatial force per link
+    /// of [`DynamicsRequest::forces`]).
+    pub fn takes_forces(self) -> bool {
+        matches!(self, DynamicsFunction::InverseDynamicsWithForces | DynamicsFunction::ForwardDynamicsWithForces)
+    }
+
+    /// Whether it solves for accelerations (returning them and the factorisation's pivots).
+    pub fn is_forward(self) -> bool {
+        matches!(self, DynamicsFunction::ForwardDynamics | DynamicsFunction::ForwardDynamicsWithForces)
+    }
 }
 
-/// How to compile the dynamics: gravity, and whether inertia tensors that break the triangle
-/// inequality are taken as written.
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// How to compile the dynamics: gravity, whether inertia tensors that break the triangle
+/// inequality are taken as written, and the links external forces act on.
+#[derive(Debug, Clone, PartialEq)]
 pub struct DynamicsRequest {
     /// Gravity in the root link's frame (m/s^2).
     pub gravity: [f64; 3],
     /// Take tensors that break the triangle inequality as written (they must still be positive
     /// semi-definite).
     pub inertia_as_written: bool,
+    /// The links external forces act on, in the order of the `forces` argument of the
+    /// [`DynamicsFunction::WITH_FORCES`] functions (none: those are not emitted). Each force is
+    /// six numbers `[fx, fy, fz, nx, ny, nz]`, the force and the moment about the link's origin,
+    /// both in the link's own axes (Pinocchio's `fext` of `rnea` and `aba`, there per joint), acting
+    /// on the link (a contact pushing on it, a payload's weight, a sensed wrench).
+    pub forces: Vec<String>,
 }
 
 impl Default for DynamicsRequest {
     fn default() -> Self {
-        DynamicsRequest { gravity: STANDARD_GRAVITY, inertia_as_written: false }
+        DynamicsRequest { gravity: STANDARD_GRAVITY, inertia_as_written: false, forces: Vec::new() }
     }
+}
+
+/// Why a link named in [`DynamicsRequest::forces`] cannot take an external force.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum ForceLinkFault {
+    /// The robot has no such link.
+    #[error(transparent)]
+    Unknown(kinematics_model::UnknownLink),
+    /// Named twice (the second time is the fault).
+    #[error("link `{0}` is named twice in `forces`")]
+    Twice(String),
+    /// The root link: a force on it moves nothing.
+    #[error("link `{0}` is the root: a force on it moves nothing")]
+    Root(String),
+    /// Only fixed joints between it and the root: a force on it moves nothing.
+    #[error("link `{link}` is fixed to the root `{root}` (no joint between them moves): a force on it moves nothing")]
+    Fixed {
+        /// The link.
+        link: String,
+        /// The root link.
+        root: String,
+    },
+}
+
+/// Every link of `request.forces` that cannot take an external force, with its index in the
+/// list.
+pub fn force_link_faults(tree: &KinematicTree, request: &DynamicsRequest) -> Vec<(usize, ForceLinkFault)> {
+    let links = &request.forces;
+    links
+        .iter()
+        .enumerate()
+        .filter_map(|(i, name)| {
+            let link = match tree.find_link("force", name) {
+                Ok(link) => link,
+                Err(unknown) => return Some((i, ForceLinkFault::Unknown(unknown))),
+            };
+            if links[..i].contains(name) {
+                return Some((i, ForceLinkFault::Twice(name.clone())));
+            }
+            let moves =
+                tree.path_from_root(link).into_iter().any(|j| !matches!(tree.joint(j).motion, JointMotion::Fixed));
+            let root = &tree.link(tree.root()).name;
+            let fault = if name == root {
+                ForceLinkFault::Root(name.clone())
+            } else {
+                ForceLinkFault::Fixed { link: name.clone(), root: root.clone() }
+            };
+            (!moves).then_some((i, fault))
+        })
+        .collect()
 }
 
 /// One compiled function of the dynamics: the graph and its outputs.
 ///
 /// The graph's variables are `q` then `qd` (the joint rates) then each floating or spherical
-/// joint's rotation, as a twist's; the third argument (`qdd` or `tau`) is its inputs. The
-/// outputs are one per velocity (forces, or for [`DynamicsFunction::ForwardDynamics`] the
+/// joint's rotation, as a twist's; its inputs are the third argument (`qdd` or `tau`), then for
+/// the [`DynamicsFunction::WITH_FORCES`] functions six per link of [`CompiledDynamics::forces`]
+/// (the force, then its moment about the link's origin, in the link's axes). The outputs are one per velocity (forces, or for [`DynamicsFunction::ForwardDynamics`] the
 /// accelerations and then the pivots of the factorisation), or the mass matrix row by row.
 #[derive(Debug, Clone)]
 pub struct CompiledDynamics {
@@ -129,6 +208,8 @@ pub struct CompiledDynamics {
     pub quaternions: Vec<usize>,
     /// The gravity it was compiled for.
     pub gravity: [f64; 3],
+    /// The links its external forces act on (none unless it takes forces).
+    pub forces: Vec<String>,
     pub(crate) graph: ExprGraph,
     pub(crate) outputs: Vec<ExprId>,
 }
@@ -167,14 +248,20 @@ pub fn compile_dynamics(
     // whole path, the square of a long chain's length: past `ROOT_WAY_UP_TO` joints it is not tried.
     let few = tree.joints().len() <= ROOT_WAY_UP_TO;
     let ways: &[bool] = if function == DynamicsFunction::Gravity && few { &[false, true] } else { &[false] };
+    // The links the forces act on (checked: each exists, once, below a moving joint).
+    let links: Vec<LinkId> = if function.takes_forces() {
+        request.forces.iter().filter_map(|name| tree.link_id(name)).collect()
+    } else {
+        Vec::new()
+    };
     let mut best: Option<(usize, ExprGraph, Vec<ExprId>)> = None;
     for &from_root in ways {
         let mut g = ExprGraph::new();
-        let bodies = bodies::bodies(&mut g, tree);
+        let (bodies, frames) = bodies::bodies_and_link_frames(&mut g, tree, &links);
         let mut outputs = if from_root {
             recursive::gravity_from_root(&mut g, &bodies, tree.velocity_dof(), request.gravity)
         } else {
-            write(&mut g, tree, &bodies, request.gravity, function)
+            write(&mut g, tree, &bodies, &frames, request.gravity, function)
         };
         run_expr_passes(&mut g, &mut [], &mut outputs, EXPR_PASSES, false);
         let cost = OpCount::of(&g, outputs.iter().copied()).weighted();
@@ -191,16 +278,19 @@ pub fn compile_dynamics(
         velocity_names: tree.velocity_names(),
         quaternions: tree.quaternion_entries(),
         gravity: request.gravity,
+        forces: if function.takes_forces() { request.forces.clone() } else { Vec::new() },
         graph: g,
         outputs,
     })
 }
 
-/// `function`'s outputs over `bodies`, built in `g`.
+/// `function`'s outputs over `bodies`, built in `g`; `frames` are where the links the external
+/// forces act on ride (their body, and their frame in its), in the order of the forces.
 fn write(
     g: &mut ExprGraph,
     tree: &KinematicTree,
     bodies: &[bodies::Body],
+    frames: &[Option<(usize, SymTransform)>],
     gravity: [f64; 3],
     function: DynamicsFunction,
 ) -> Vec<ExprId> {
@@ -208,22 +298,36 @@ fn write(
     let rates = |g: &mut ExprGraph, i: usize| Some(g.var(n + i));
     let none = |_: &mut ExprGraph, _: usize| None;
     let inputs = |g: &mut ExprGraph, i: usize| Some(g.input(i));
+    // The forces are inputs after `qdd` or `tau`: six per link, the force then its moment.
+    let external: Vec<External> = frames
+        .iter()
+        .enumerate()
+        .filter_map(|(k, frame)| {
+            let (body, frame) = (*frame)?;
+            let at = nv + 6 * k;
+            let force = std::array::from_fn(|c| g.input(at + c));
+            let moment = std::array::from_fn(|c| g.input(at + 3 + c));
+            Some(External { body, frame, force, moment })
+        })
+        .collect();
     match function {
         DynamicsFunction::Gravity => recursive::gravity(g, bodies, nv, gravity),
-        DynamicsFunction::InverseDynamics => {
-            let input = NewtonEuler { rates: &rates, accelerations: &inputs, gravity };
+        DynamicsFunction::InverseDynamics | DynamicsFunction::InverseDynamicsWithForces => {
+            let input = NewtonEuler { rates: &rates, accelerations: &inputs, gravity, external: &external };
             recursive::newton_euler(g, bodies, nv, &input)
         }
         DynamicsFunction::NonlinearEffects => {
-            let input = NewtonEuler { rates: &rates, accelerations: &none, gravity };
+            let input = NewtonEuler { rates: &rates, accelerations: &none, gravity, external: &[] };
             recursive::newton_euler(g, bodies, nv, &input)
         }
         DynamicsFunction::MassMatrix => {
             let upper = recursive::mass_matrix(g, bodies, nv);
             (0..nv).flat_map(|i| (0..nv).map(move |j| (i, j))).map(|(i, j)| upper[i.min(j)][i.max(j)]).collect()
         }
-        DynamicsFunction::ForwardDynamics => {
-            let input = NewtonEuler { rates: &rates, accelerations: &none, gravity };
+        DynamicsFunction::ForwardDynamics | DynamicsFunction::ForwardDynamicsWithForces => {
+            // `M qdd = tau - h`, where `h` (inverse dynamics at zero acceleration) holds the
+            // external forces too.
+            let input = NewtonEuler { rates: &rates, accelerations: &none, gravity, external: &external };
             let h = recursive::newton_euler(g, bodies, nv, &input);
             let upper = recursive::mass_matrix(g, bodies, nv);
             let rhs: Vec<ExprId> = (0..nv)
@@ -254,15 +358,18 @@ pub fn plain_op_count(
     let bodies = bodies::bodies(&mut g, tree);
     // The robot's numbers are inputs after the function's own (`qdd`, `tau`).
     let opaque = bodies::opaque(&mut g, &bodies, tree.velocity_dof());
-    let outputs = write(&mut g, tree, &opaque, request.gravity, function);
+    let outputs = write(&mut g, tree, &opaque, &[], request.gravity, function);
     Ok(OpCount::of(&g, outputs))
 }
 
-/// The dynamics' refusals: a gravity that is not finite, then the first link at fault
-/// ([`link_faults`]).
+/// The dynamics' refusals: a gravity that is not finite, a link forces cannot act on
+/// ([`force_link_faults`]), then the first link at fault ([`link_faults`]).
 pub(crate) fn check(tree: &KinematicTree, request: &DynamicsRequest) -> Result<(), CompileError> {
     if request.gravity.iter().any(|x| !x.is_finite()) {
         return Err(CompileError::NonFiniteGravity { robot: tree.name().to_owned(), gravity: request.gravity });
+    }
+    if let Some((_, fault)) = force_link_faults(tree, request).into_iter().next() {
+        return Err(CompileError::ForceLink { robot: tree.name().to_owned(), fault });
     }
     match link_faults(tree, request).into_iter().next() {
         Some(fault) => Err(fault),
@@ -306,7 +413,8 @@ impl CompiledDynamics {
     }
 
     /// Evaluates the outputs with the graph (no Rust compiled) at `q`, the rates `qd` and the
-    /// third argument `input` (`qdd` or `tau`; ignored by functions that take none).
+    /// inputs `input`: the third argument (`qdd` or `tau`; ignored by functions that take none),
+    /// then each link's force and moment (six numbers per link of [`Self::forces`]).
     ///
     /// # Panics
     ///

@@ -13,6 +13,7 @@
 use super::algebra::{self, Sym3, Vec3, add, cross, dot, mat_t_vec, mat_vec, rotate_sym, scale, sym_index, sym_vec};
 use super::bodies::{Body, Inertia, Motion};
 use crate::symbolic::graph::{ExprGraph, ExprId};
+use crate::symbolic::transform::SymTransform;
 
 /// A spatial vector: angular part, then linear.
 #[derive(Debug, Clone, Copy)]
@@ -29,6 +30,12 @@ impl Spatial {
     fn add(self, g: &mut ExprGraph, other: Spatial) -> Self {
         Spatial { angular: add(g, self.angular, other.angular), linear: add(g, self.linear, other.linear) }
     }
+
+    fn sub(self, g: &mut ExprGraph, other: Spatial) -> Self {
+        let angular = std::array::from_fn(|i| g.sub(self.angular[i], other.angular[i]));
+        let linear = std::array::from_fn(|i| g.sub(self.linear[i], other.linear[i]));
+        Spatial { angular, linear }
+    }
 }
 
 /// A motion vector of the parent's frame in `body`'s frame.
@@ -42,7 +49,11 @@ fn motion_down(g: &mut ExprGraph, body: &Body, m: Spatial) -> Spatial {
 
 /// A force in `body`'s frame in its parent's frame.
 fn force_up(g: &mut ExprGraph, body: &Body, f: Spatial) -> Spatial {
-    let t = &body.transform;
+    force_out_of(g, &body.transform, f)
+}
+
+/// A force in the frame `t` (a frame placed in another by `t`) in that other frame.
+fn force_out_of(g: &mut ExprGraph, t: &SymTransform, f: Spatial) -> Spatial {
     let linear = mat_vec(g, &t.r, f.linear);
     let turned = mat_vec(g, &t.r, f.angular);
     let moment = cross(g, t.p, linear);
@@ -109,8 +120,22 @@ fn cross_motion(g: &mut ExprGraph, v: Spatial, m: Spatial) -> Spatial {
     Spatial { angular: cross(g, v.angular, m.angular), linear: add(g, wv, vw) }
 }
 
+/// An external force on a link: the body the link rides on, the link's frame in the body's, and
+/// the force and its moment about the link's origin in the link's axes.
+#[derive(Debug, Clone)]
+pub(super) struct External {
+    /// The body (its index).
+    pub(super) body: usize,
+    /// The link's frame in the body's (constants).
+    pub(super) frame: SymTransform,
+    /// The force.
+    pub(super) force: Vec3,
+    /// Its moment about the link's origin.
+    pub(super) moment: Vec3,
+}
+
 /// What the Newton-Euler algorithm takes besides `q`: each velocity's rate and acceleration as
-/// nodes (`None`: zero), and the gravity vector.
+/// nodes (`None`: zero), the gravity vector and the external forces.
 pub(super) struct NewtonEuler<'a> {
     /// The rates `qd`.
     pub(super) rates: &'a dyn Fn(&mut ExprGraph, usize) -> Option<ExprId>,
@@ -118,6 +143,8 @@ pub(super) struct NewtonEuler<'a> {
     pub(super) accelerations: &'a dyn Fn(&mut ExprGraph, usize) -> Option<ExprId>,
     /// Gravity in the root's frame.
     pub(super) gravity: [f64; 3],
+    /// External forces on links (none for plain inverse dynamics).
+    pub(super) external: &'a [External],
 }
 
 /// The generalized forces (one per velocity, `velocities` of them) that give the accelerations
@@ -157,6 +184,13 @@ pub(super) fn newton_euler(
         velocity.push(v);
         acceleration.push(a);
         force.push(f);
+    }
+    // What the world does to a link the joints need not do (Featherstone's `f_i - f_i^x`, Table
+    // 5.1): each external force in its body's frame, taken from the body's.
+    for external in input.external {
+        let applied = Spatial { angular: external.moment, linear: external.force };
+        let on_body = force_out_of(g, &external.frame, applied);
+        force[external.body] = force[external.body].sub(g, on_body);
     }
     let zero = g.constant(0.0);
     let mut tau = vec![zero; velocities];

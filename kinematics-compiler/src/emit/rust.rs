@@ -609,10 +609,16 @@ pub fn emit_dynamics(compiled: &CompiledDynamics, options: &EmitOptions, doc: &s
     let (n, nv) = (compiled.dof(), compiled.velocity_dof());
     let kind = compiled.function;
     let input = kind.input();
-    let input_names: Vec<Ident> = match input {
+    let mut input_names: Vec<Ident> = match input {
         Some(name) => (1..=nv).map(|i| format_ident!("{name}{i}")).collect(),
         None => Vec::new(),
     };
+    // The external forces' inputs follow: per link its force then its moment.
+    let forces = kind.takes_forces().then_some(compiled.forces.len());
+    let first_force = input_names.len();
+    for link in 1..=forces.unwrap_or(0) {
+        input_names.extend(["fx", "fy", "fz", "nx", "ny", "nz"].map(|c| format_ident!("{c}{link}")));
+    }
     let w = Writer { g, schedule: &schedule, private, sizes: (n, nv), inputs: &input_names };
     let mut marks = Marks::default();
     let rates = kind.takes_rates();
@@ -622,11 +628,22 @@ pub fn emit_dynamics(compiled: &CompiledDynamics, options: &EmitOptions, doc: &s
         if nv == 0 {
             body.extend(quote!(let _ = #argument;));
         } else {
-            let names = input_names
+            let names = input_names[..first_force]
                 .iter()
                 .enumerate()
                 .map(|(i, name)| if schedule.used_inputs.contains(&i) { name.into_token_stream() } else { quote!(_) });
             body.extend(quote!(let [#(#names),*] = *#argument;));
+        }
+    }
+    if let Some(k) = forces {
+        if k == 0 {
+            body.extend(quote!(let _ = forces;));
+        } else {
+            let names: Vec<TokenStream> = (first_force..input_names.len())
+                .map(|i| if schedule.used_inputs.contains(&i) { input_names[i].to_token_stream() } else { quote!(_) })
+                .collect();
+            let links = names.chunks(6).map(|link| quote!([#(#link),*]));
+            body.extend(quote!(let [#(#links),*] = *forces;));
         }
     }
     body.extend(prologue(&compiled.quaternions, &w, rates, options.trig, Some(&mut marks)));
@@ -654,7 +671,7 @@ pub fn emit_dynamics(compiled: &CompiledDynamics, options: &EmitOptions, doc: &s
             let rows = values.chunks(nv.max(1)).take(nv).map(|row| quote!([#(#row),*]));
             (quote!([#(#rows),*]), quote!([[T; #nv_lit]; #nv_lit]))
         }
-        DynamicsFunction::ForwardDynamics => {
+        _ if kind.is_forward() => {
             let (accelerations, pivots) = values.split_at(nv);
             (quote!(([#(#accelerations),*], [#(#pivots),*])), quote!(([T; #nv_lit], [T; #nv_lit])))
         }
@@ -669,6 +686,10 @@ pub fn emit_dynamics(compiled: &CompiledDynamics, options: &EmitOptions, doc: &s
     if let Some(name) = input {
         let argument = format_ident!("{name}");
         params.extend(quote!(, #argument: &[T; #nv_lit]));
+    }
+    if let Some(k) = forces {
+        let k = Literal::usize_unsuffixed(k);
+        params.extend(quote!(, forces: &[[T; 6]; #k]));
     }
     let name = Ident::new(&options.name, Span::call_site());
     let vis = if options.public { quote!(pub) } else { quote!() };

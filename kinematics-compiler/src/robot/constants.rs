@@ -65,6 +65,10 @@ fn doc(constant: Constant) -> &'static [&'static str] {
         Constant::Tips => &["The tip links."],
         Constant::SphereRadii => &["The collision spheres' radii (m), in the order of `sphere_centers`."],
         Constant::SphereLinks => &["The link each collision sphere moves with, in the order of `sphere_centers`."],
+        Constant::ForceLinks => &[
+            "The links the external forces of `inverse_dynamics_with_forces` and",
+            "`forward_dynamics_with_forces` act on, in the order of their `forces` argument.",
+        ],
     }
 }
 
@@ -98,6 +102,7 @@ fn value(cx: &Context<'_>, constant: Constant) -> TokenStream {
             let names: Vec<String> = cx.spheres().iter().map(|s| tree.link(s.link).name.clone()).collect();
             strs(&names)
         }
+        Constant::ForceLinks => strs(&cx.options().dynamics.as_ref().map(|d| d.forces.clone()).unwrap_or_default()),
     }
 }
 

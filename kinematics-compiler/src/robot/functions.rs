@@ -39,7 +39,7 @@ impl Functions {
         let g = format_ident!("{}", output.body(cx.one));
         let rates = output.takes_rates();
         let arguments = output.arguments();
-        let forward = output == Output::Dynamics(crate::dynamics::DynamicsFunction::ForwardDynamics);
+        let forward = output.is_forward();
         for (form, signature) in cx.render.functions(output, cx.one) {
             let sig = signature.tokens();
             let item = match form {

@@ -175,6 +175,7 @@ impl<'a> Context<'a> {
                 tips: Some(tips.len()),
                 spheres: spec.robot.collision().map(|c| c.spheres.len()),
                 held_words: spec.robot.collision().map(|c| crate::collision_layout::held_words(&c.spheres)),
+                forces: options.dynamics.as_ref().map_or(0, |d| d.forces.len()),
             },
         };
         Context { spec, p, base, one: tips.len() == 1, link_names, tips, render, tip_request }

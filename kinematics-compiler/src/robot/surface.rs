@@ -35,6 +35,8 @@ pub struct Dims {
     pub spheres: Option<usize>,
     /// The 64-bit words of a held object's set of links (one bit per link with spheres).
     pub held_words: Option<usize>,
+    /// The links external forces act on (`dynamics(forces(..))`; known from the options alone).
+    pub forces: usize,
 }
 
 /// One computation on the type: a value of `q` (and for twists `qd`), as a function per scalar,
@@ -104,8 +106,11 @@ fn collision_outputs(options: &Options, mut out: Vec<Output>) -> Vec<Output> {
     if options.collision.is_some() {
         out.push(Output::SphereCenters);
     }
-    if options.dynamics.is_some() {
+    if let Some(dynamics) = &options.dynamics {
         out.extend(DynamicsFunction::ALL.map(Output::Dynamics));
+        if !dynamics.forces.is_empty() {
+            out.extend(DynamicsFunction::WITH_FORCES.map(Output::Dynamics));
+        }
     }
     out
 }
@@ -165,7 +170,18 @@ impl Output {
         }
     }
 
-    /// The arguments the functions pass to the generic body: `q`, `q, qd` or `q, qd, tau`.
+    /// Whether the functions take external forces on links (a fourth argument `forces`).
+    pub fn takes_forces(self) -> bool {
+        matches!(self, Output::Dynamics(function) if function.takes_forces())
+    }
+
+    /// Whether it is forward dynamics, whose typed functions refuse a singular mass matrix.
+    pub fn is_forward(self) -> bool {
+        matches!(self, Output::Dynamics(function) if function.is_forward())
+    }
+
+    /// The arguments the functions pass to the generic body: `q`, `q, qd`, `q, qd, tau` or
+    /// `q, qd, tau, forces`.
     pub fn arguments(self) -> TokenStream {
         let rates = if self.takes_rates() { quote!(, qd) } else { quote!() };
         let third = match self.third_argument() {
@@ -175,7 +191,8 @@ impl Output {
             }
             None => quote!(),
         };
-        quote!(q #rates #third)
+        let forces = if self.takes_forces() { quote!(, forces) } else { quote!() };
+        quote!(q #rates #third #forces)
     }
 
     /// How many values it returns: one per link, per tip or per sphere.
@@ -384,14 +401,16 @@ impl Render {
         let rates = output.takes_rates();
         let error = quote!(::core::result::Result<(), #p::KinematicsError>);
         let mut out = Vec::new();
-        let forward = output == Output::Dynamics(DynamicsFunction::ForwardDynamics);
+        let forward = output.is_forward();
+        let k = literal(self.dims.forces);
         let extra = |t: &TokenStream| {
             let qd = if rates { quote!(, qd: &[#t; #nv]) } else { quote!() };
             let third = output.third_argument().map(|name| {
                 let name = format_ident!("{name}");
                 quote!(, #name: &[#t; #nv])
             });
-            quote!(#qd #third)
+            let forces = output.takes_forces().then(|| quote!(, forces: &[[#t; 6]; #k]));
+            quote!(#qd #third #forces)
         };
         for scalar in self.scalar_types() {
             let (suffix, t) = (scalar.suffix, &scalar.t);
@@ -456,6 +475,7 @@ impl Render {
             Constant::Tips => (quote!(&'static str), self.dims.tips),
             Constant::SphereRadii => (quote!(f64), self.dims.spheres),
             Constant::SphereLinks => (quote!(&'static str), self.dims.spheres),
+            Constant::ForceLinks => (quote!(&'static str), Some(self.dims.forces)),
         };
         let n = self::length(length);
         quote!([#element; #n])
@@ -577,14 +597,20 @@ pub enum Constant {
     SphereRadii,
     /// `SPHERE_LINKS` (with `collision`).
     SphereLinks,
+    /// `FORCE_LINKS` (with `dynamics(forces(..))`).
+    ForceLinks,
 }
 
 /// The type's own constants for `options`, in the order emitted: [`Constant::ALWAYS`], then with
-/// `collision` the spheres' radii and links.
+/// `collision` the spheres' radii and links, and with `dynamics(forces(..))` the links the forces
+/// act on.
 pub fn constants(options: &Options) -> Vec<Constant> {
     let mut out = Constant::ALWAYS.to_vec();
     if options.collision.is_some() {
         out.extend([Constant::SphereRadii, Constant::SphereLinks]);
+    }
+    if options.dynamics.as_ref().is_some_and(|d| !d.forces.is_empty()) {
+        out.push(Constant::ForceLinks);
     }
     out
 }
@@ -617,6 +643,7 @@ impl Constant {
             Constant::Tips => "TIPS",
             Constant::SphereRadii => "SPHERE_RADII",
             Constant::SphereLinks => "SPHERE_LINKS",
+            Constant::ForceLinks => "FORCE_LINKS",
         }
     }
 }

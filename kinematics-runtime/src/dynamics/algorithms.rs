@@ -19,8 +19,10 @@ impl ReferenceDynamics {
     }
 
     /// RNEA: the generalized forces that give accelerations `a` at `(q, v)` under gravity, each
-    /// link's motion and force in its own coordinates, gravity as the root's acceleration `-g`.
-    pub(super) fn rnea(&self, q: &[f64], v: &[f64], a: &[f64]) -> Vec<f64> {
+    /// link's motion and force in its own coordinates, gravity as the root's acceleration `-g`,
+    /// with `external` forces on links (each link's index and its spatial force in its own
+    /// coordinates, moment first).
+    pub(super) fn rnea(&self, q: &[f64], v: &[f64], a: &[f64], external: &[(usize, Spatial)]) -> Vec<f64> {
         let tree = self.fk.tree();
         let joints = self.joints_at(q);
         let links = tree.links().len();
@@ -40,6 +42,10 @@ impl ReferenceDynamics {
                 + cross_motion(&velocity[child], &v_joint);
             let inertia = &self.inertias[child];
             force[child] = inertia * acceleration[child] + cross_force(&velocity[child], &(inertia * velocity[child]));
+        }
+        // What the world exerts on a link, the joints need not (Table 5.1's `f_i - f_i^x`).
+        for (link, applied) in external {
+            force[*link] -= applied;
         }
         // Inward: each joint's generalized force `S^T f`, its child's force passed to the parent.
         let mut tau = vec![0.0; tree.velocity_dof()];

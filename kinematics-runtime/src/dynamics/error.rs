@@ -58,6 +58,27 @@ pub enum DynamicsError {
         /// The value.
         value: f64,
     },
+    /// An external force on a link the robot does not have.
+    #[error("robot `{robot}`: {source}")]
+    UnknownLink {
+        /// Robot name.
+        robot: String,
+        /// The link named, and the closest name the robot has.
+        #[source]
+        source: kinematics_model::UnknownLink,
+    },
+    /// A NaN or infinite entry of an external force.
+    #[error("robot `{robot}`: the external force on link `{link}` has {value} at [{index}], not a finite number")]
+    NonFiniteForce {
+        /// Robot name.
+        robot: String,
+        /// The link it acts on.
+        link: String,
+        /// Its index in `[fx, fy, fz, nx, ny, nz]`.
+        index: usize,
+        /// The value.
+        value: f64,
+    },
     /// A result that overflowed (finite inputs too large for it).
     #[error("robot `{robot}`: the {quantity} overflowed to values that are not finite")]
     NotFinite {
