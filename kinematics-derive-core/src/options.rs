@@ -546,6 +546,12 @@ pub struct Keyed<T> {
 
 impl<T: FromMeta> FromMeta for Keyed<T> {
     fn from_meta(item: &syn::Meta) -> darling::Result<Self> {
+        // A word or a list, never `key = value` (darling would say only "Unexpected type `bool`").
+        if let syn::Meta::NameValue(pair) = item {
+            let key = pair.path.get_ident().map_or_else(|| "the key".to_owned(), |i| format!("`{i}`"));
+            let message = format!("{key} takes no value: write it alone, or with its settings in parentheses");
+            return Err(Error::custom(message).with_span(&pair.value));
+        }
         let value = T::from_meta(item).map_err(|e| e.with_span(item))?;
         Ok(Keyed { value, span: syn::spanned::Spanned::span(item.path()) })
     }
