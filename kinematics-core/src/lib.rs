@@ -22,7 +22,8 @@
 // `doc_auto_cfg` into `doc_cfg`, rust-lang/rust#138907).
 #![cfg_attr(docsrs, feature(doc_cfg))]
 
-#[cfg(feature = "std")]
+// The unit tests use `std` (vectors, cells) whatever the features: a test build links it anyway.
+#[cfg(any(feature = "std", test))]
 extern crate std;
 
 mod batch;
