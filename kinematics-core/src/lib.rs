@@ -43,7 +43,7 @@ mod real;
 mod splitmix;
 pub mod trig;
 
-pub use batch::{any_wide, batch, batch_columns, batch_wide};
+pub use batch::{Input, Inputs, Packable, any_wide, batch, batch_columns, batch_inputs, batch_wide};
 pub use dispatch::{dispatch, dispatched_level};
 pub use error::KinematicsError;
 pub use floating::quaternion_matrix;
