@@ -135,3 +135,76 @@ fn several_tips_give_arrays_of_jacobians() {
     let _: [(kinematics::Pose<f64>, [[f64; 3]; 6]); 2] = Planar::tip_poses_and_jacobians(&q);
     assert_eq!(<Planar as Kinematics>::TIPS.len(), 2);
 }
+
+/// `count` pseudo-random rows of `N` values in [-2, 2).
+fn rows<const N: usize>(count: usize, seed: f64) -> Vec<[f64; N]> {
+    let mut x = seed;
+    (0..count)
+        .map(|_| {
+            std::array::from_fn(|_| {
+                x = (x * 7919.0 + 0.377).fract();
+                4.0 * x - 2.0
+            })
+        })
+        .collect()
+}
+
+/// The twists' batches are the twists, bit for bit (`to_bits`: `==` would take -0.0 for 0.0), in
+/// both frames, `f64` and `f32`, over 101 configurations (the last pack of four or eight padded).
+#[test]
+fn twist_batches_are_the_twists_bit_for_bit() {
+    let (qs, qds) = (rows::<6>(101, 0.123), rows::<6>(101, 0.456));
+    let bits = |t: &[f64; 6]| t.map(f64::to_bits);
+    let bits32 = |t: &[f32; 6]| t.map(f32::to_bits);
+    let mut out = vec![[0.0; 6]; qs.len()];
+    Ur5::tip_twist_batch(&qs, &qds, &mut out).unwrap();
+    for i in 0..qs.len() {
+        assert_eq!(bits(&out[i]), bits(&Ur5::tip_twist(&qs[i], &qds[i])), "tip_twist_batch {i}");
+    }
+    Ur5::tip_twist_local_batch(&qs, &qds, &mut out).unwrap();
+    for i in 0..qs.len() {
+        assert_eq!(bits(&out[i]), bits(&Ur5::tip_twist_local(&qs[i], &qds[i])), "tip_twist_local_batch {i}");
+    }
+    let narrow = |rows: &[[f64; 6]]| -> Vec<[f32; 6]> { rows.iter().map(|r| r.map(|x| x as f32)).collect() };
+    let (qs32, qds32) = (narrow(&qs), narrow(&qds));
+    let mut out32 = vec![[0.0f32; 6]; qs.len()];
+    Ur5::tip_twist_batch_f32(&qs32, &qds32, &mut out32).unwrap();
+    for i in 0..qs.len() {
+        assert_eq!(bits32(&out32[i]), bits32(&Ur5::tip_twist_f32(&qs32[i], &qds32[i])), "tip_twist_batch_f32 {i}");
+    }
+    Ur5::tip_twist_local_batch_f32(&qs32, &qds32, &mut out32).unwrap();
+    for i in 0..qs.len() {
+        let one = Ur5::tip_twist_local_f32(&qs32[i], &qds32[i]);
+        assert_eq!(bits32(&out32[i]), bits32(&one), "tip_twist_local_batch_f32 {i}");
+    }
+}
+
+/// Several tips: one array of twists per configuration.
+#[test]
+fn several_tips_give_batches_of_twists() {
+    let (qs, qds) = (rows::<3>(13, 0.321), rows::<3>(13, 0.654));
+    let mut out = vec![[[0.0; 6]; 2]; qs.len()];
+    Planar::tip_twists_batch(&qs, &qds, &mut out).unwrap();
+    Planar::tip_twists_local_batch(&qs, &qds, &mut out[..0]).expect_err("an output of another length");
+    for i in 0..qs.len() {
+        let want = Planar::tip_twists(&qs[i], &qds[i]);
+        assert_eq!(out[i].map(|t| t.map(f64::to_bits)), want.map(|t| t.map(f64::to_bits)), "tip_twists_batch {i}");
+    }
+}
+
+/// A `qs` or `qds` of another length than `out` is refused by name, and nothing is written.
+#[test]
+fn twist_batches_refuse_inputs_of_another_length() {
+    let (qs, qds) = (rows::<6>(9, 0.1), rows::<6>(9, 0.2));
+    let mut out = vec![[7.0; 6]; 9];
+    let error = Ur5::tip_twist_batch(&qs, &qds[..8], &mut out).unwrap_err();
+    assert_eq!(
+        error,
+        kinematics::KinematicsError::WrongInputLength { robot: "ur5", input: "qds", expected: 9, got: 8 }
+    );
+    assert!(error.to_string().contains("`qds` holds 8 values, but the output holds 9"), "{error}");
+    let error = Ur5::tip_twist_local_batch(&qs[..2], &qds, &mut out).unwrap_err();
+    assert_eq!(error, kinematics::KinematicsError::WrongInputLength { robot: "ur5", input: "qs", expected: 9, got: 2 });
+    Ur5::tip_twist_batch(&qs, &qds, &mut out[..4]).expect_err("an output of another length");
+    assert!(out.iter().all(|t| *t == [7.0; 6]), "nothing is written");
+}

@@ -23,7 +23,7 @@ use kinematics_compiler::options::{CheckedIk, CollisionOptions, IkMode, Options,
 use kinematics_compiler::robot::surface::{
     CollisionFunction, Dims, Form, IkFunction, IkItem, IkShape, Output, Render, outputs,
 };
-use kinematics_model::{KinematicTree, LinkId};
+use kinematics_model::{JointMotion, KinematicTree, LinkId};
 
 /// What the cases of one derived struct are built from.
 struct Derived<'a> {
@@ -180,10 +180,19 @@ fn option_sets(module: &str, tree: &KinematicTree, both: Scalars) -> Vec<OptionS
             vec![Output::SphereCenters],
         ));
     }
-    let dynamics = Options { dynamics: Some(DynamicsRequest::default()), scalars: both, ..Options::default() };
-    if dynamics.check(tree).is_ok() {
-        let functions = DynamicsFunction::ALL.map(Output::Dynamics).to_vec();
-        sets.push((format!("StackDynamics_{module}"), dynamics, Some("dynamics".to_owned()), functions));
+    // The dynamics with an external force on the deepest link a joint moves.
+    let moved = tree.links().iter().enumerate().rev().find(|(i, _)| {
+        tree.path_from_root(LinkId(*i)).iter().any(|&j| !matches!(tree.joint(j).motion, JointMotion::Fixed))
+    });
+    if let Some((_, link)) = moved {
+        let request = DynamicsRequest { forces: vec![link.name.clone()], ..DynamicsRequest::default() };
+        let dynamics = Options { dynamics: Some(request), scalars: both, ..Options::default() };
+        if dynamics.check(tree).is_ok() {
+            let functions =
+                DynamicsFunction::ALL.into_iter().chain(DynamicsFunction::WITH_FORCES).map(Output::Dynamics).collect();
+            let keys = format!("dynamics(forces({:?}))", link.name);
+            sets.push((format!("StackDynamics_{module}"), dynamics, Some(keys), functions));
+        }
     }
     sets
 }
@@ -210,33 +219,37 @@ impl Derived<'_> {
     }
 
     /// The inputs every case may use: `q` and `qd` in each scalar type, a batch of 17 (two
-    /// packs of eight and one more), its columns, and lanes (`F64x8`: the widest lanes, 64 bytes
-    /// a value like `F32x16`'s, so the most stack a body can take).
+    /// packs of eight and one more) of each, the configurations' columns, and lanes (`F64x8`: the
+    /// widest lanes, 64 bytes a value like `F32x16`'s, so the most stack a body can take).
     fn inputs(&self) -> String {
         let (n, nv) = (self.dof, self.velocities);
         format!(
             "let q: [f64; {n}] = ::core::array::from_fn(|j| 0.1 + 0.2 * j as f64); \
              let q32: [f32; {n}] = q.map(|x| x as f32); \
              let qd: [f64; {nv}] = [0.3; {nv}]; let qd32: [f32; {nv}] = [0.3; {nv}]; \
-             let qs = vec![q; 17]; let qs32 = vec![q32; 17]; \
+             let qs = vec![q; 17]; let qs32 = vec![q32; 17]; let qds = vec![qd; 17]; let qds32 = vec![qd32; 17]; \
              let cols: Vec<Vec<f64>> = (0..{n}).map(|j| vec![q[j]; 17]).collect(); \
              let cols32: Vec<Vec<f32>> = (0..{n}).map(|j| vec![q32[j]; 17]).collect(); \
              let columns: [&[f64]; {n}] = ::core::array::from_fn(|j| cols[j].as_slice()); \
              let columns32: [&[f32]; {n}] = ::core::array::from_fn(|j| cols32[j].as_slice()); \
              let lanes: [::kinematics::F64x8; {n}] = q.map(::kinematics::F64x8::splat); \
              let qd_lanes: [::kinematics::F64x8; {nv}] = qd.map(::kinematics::F64x8::splat); \
-             let _ = (&q, &q32, &qd, &qd32, &qs, &qs32, &columns, &columns32, &lanes, &qd_lanes);"
+             let forces = [[0.5f64; 6]; 1]; let forces32 = [[0.5f32; 6]; 1]; \
+             let forcess = vec![forces; 17]; let forcess32 = vec![forces32; 17]; \
+             let forces_lanes = [[::kinematics::F64x8::splat(0.5); 6]; 1]; \
+             let _ = (&q, &q32, &qd, &qd32, &qs, &qs32, &qds, &qds32, &columns, &columns32, &lanes, &qd_lanes); \
+             let _ = (&forces, &forces32, &forcess, &forcess32, &forces_lanes);"
         )
     }
 }
 
-/// The arguments a function of `form` takes in its scalar type: `(q, qs, columns)`.
-fn scalar_inputs(form: &Form) -> (&'static str, &'static str, &'static str, &'static str) {
+/// The arguments a function of `form` takes in its scalar type: `(q, qs, columns, qd, qds)`.
+fn scalar_inputs(form: &Form) -> (&'static str, &'static str, &'static str, &'static str, &'static str) {
     match form {
         Form::Typed(s) | Form::Batch(s) | Form::Columns(s) if s.suffix == "_f32" => {
-            ("q32", "qs32", "columns32", "qd32")
+            ("q32", "qs32", "columns32", "qd32", "qds32")
         }
-        _ => ("q", "qs", "columns", "qd"),
+        _ => ("q", "qs", "columns", "qd", "qds"),
     }
 }
 
@@ -244,13 +257,40 @@ fn scalar_inputs(form: &Form) -> (&'static str, &'static str, &'static str, &'st
 /// or `tau`, where it takes one).
 fn output_call(d: &Derived<'_>, output: Output, one_tip: bool, form: &Form, name: &str) -> String {
     let ty = &d.ty;
-    let (q, qs, columns, qd) = scalar_inputs(form);
+    let (q, qs, columns, qd, qds) = scalar_inputs(form);
     let rates = output.takes_rates();
-    let third = |rates: &str| if output.third_argument().is_some() { format!(", &{rates}") } else { String::new() };
+    // The third argument (the rates again, as `qdd` or `tau`) and, with forces, the one link's.
+    let forces = |name: &str| if output.takes_forces() { format!(", &{name}") } else { String::new() };
+    let f32_form = matches!(form, Form::Typed(s) | Form::Batch(s) if s.suffix == "_f32");
+    let (force, force_rows) = if f32_form { ("forces32", "forcess32") } else { ("forces", "forcess") };
+    let third_only =
+        |rates: &str| if output.third_argument().is_some() { format!(", &{rates}") } else { String::new() };
+    // Given a batch's rows of rates (`qds`, `qds32`), a batch's rows of forces.
+    let third = |rates: &str| {
+        let rows = rates.starts_with("qds");
+        format!("{}{}", third_only(rates), forces(if rows { force_rows } else { force }))
+    };
     match form {
         Form::Typed(_) if rates => {
             let third = third(qd);
             format!("let value = {ty}::{name}(&{q}, &{qd}{third}); ::std::hint::black_box(&value);")
+        }
+        // A batch of rows of `q`, `qd` (and the rates again as `qdd` or `tau`). Forward dynamics
+        // may refuse a robot's configuration (a joint moving no mass): its answer is kept, not
+        // expected to be `Ok`.
+        Form::Batch(s) if rates => {
+            let typed = format!("{}{}", output.name(one_tip), s.suffix);
+            let one = format!("{ty}::{typed}(&{q}, &{qd}{})", third(qd));
+            let call = format!("{ty}::{name}(&{qs}, &{qds}{}, &mut out)", third(qds));
+            if output.is_forward() {
+                let nv = d.velocities;
+                format!(
+                    "let mut out = vec![{one}.unwrap_or([0.0; {nv}]); 17]; let result = {call}; \
+                     ::std::hint::black_box((&out, &result));"
+                )
+            } else {
+                format!("let mut out = vec![{one}; 17]; {call}.expect(\"17 outputs\"); ::std::hint::black_box(&out);")
+            }
         }
         Form::Typed(_) => format!("let value = {ty}::{name}(&{q}); ::std::hint::black_box(&value);"),
         Form::Batch(s) | Form::Columns(s) => {
@@ -262,7 +302,7 @@ fn output_call(d: &Derived<'_>, output: Output, one_tip: bool, form: &Form, name
             )
         }
         Form::Generic if rates => {
-            let third = third("qd_lanes");
+            let third = format!("{}{}", third_only("qd_lanes"), forces("forces_lanes"));
             format!("let value = {ty}::{name}(&lanes, &qd_lanes{third}); ::std::hint::black_box(&value);")
         }
         Form::Generic => format!("let value = {ty}::{name}(&lanes); ::std::hint::black_box(&value);"),
@@ -291,7 +331,7 @@ fn ik_call(d: &Derived<'_>, function: IkFunction, name: &str, free: bool) -> Str
 /// (every test a check can reach: bounds, groups, spheres, obstacles of two kinds).
 fn collision_call(d: &Derived<'_>, function: CollisionFunction, form: &Form, name: &str) -> String {
     let ty = &d.ty;
-    let (q, qs, columns, _) = scalar_inputs(form);
+    let (q, qs, columns, _, _) = scalar_inputs(form);
     let scene = "let identity = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]; \
          let balls = [::kinematics::collision::SphereObstacle { center: [0.3, 0.1, 0.4], radius: 0.1 }]; \
          let boxes = [::kinematics::collision::BoxObstacle::from_pose(identity, [0.5, 0.0, 0.2], [0.2, 0.3, 0.4])]; \

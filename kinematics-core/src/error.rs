@@ -40,6 +40,18 @@ pub enum KinematicsError {
         /// Length of the column.
         got: usize,
     },
+    /// An input of a batch of several (`qds`, `qdds` or `taus` beside `qs`, as
+    /// `inverse_dynamics_batch` takes them) of another length than the output.
+    WrongInputLength {
+        /// Robot name.
+        robot: &'static str,
+        /// The input (`"qs"`, `"qds"`, `"qdds"`, `"taus"`).
+        input: &'static str,
+        /// Length of the output slice.
+        expected: usize,
+        /// Length of the input.
+        got: usize,
+    },
     /// A motion's resolution (`motion_collides`) that is not positive and finite.
     BadResolution {
         /// Robot name.
@@ -70,6 +82,52 @@ pub enum KinematicsError {
         /// What overflowed.
         quantity: &'static str,
     },
+    /// [`KinematicsError::SingularMassMatrix`] at a configuration of a batch
+    /// (`forward_dynamics_batch`): the first configuration refused.
+    SingularMassMatrixInBatch {
+        /// Robot name.
+        robot: &'static str,
+        /// The configuration's index in the batch.
+        configuration: usize,
+        /// The velocity whose pivot vanished (one of `VELOCITY_NAMES`).
+        velocity: &'static str,
+    },
+    /// [`KinematicsError::NotFinite`] at a configuration of a batch (`forward_dynamics_batch`):
+    /// the first configuration refused.
+    NotFiniteInBatch {
+        /// Robot name.
+        robot: &'static str,
+        /// The configuration's index in the batch.
+        configuration: usize,
+        /// What overflowed.
+        quantity: &'static str,
+    },
+}
+
+impl KinematicsError {
+    /// The error as configuration `configuration` of a batch gives it: a refusal of forward
+    /// dynamics (a singular mass matrix, an overflow) with the configuration's index; any other
+    /// error as it is.
+    pub(crate) fn in_batch(self, configuration: usize) -> Self {
+        match self {
+            KinematicsError::SingularMassMatrix { robot, velocity } => {
+                KinematicsError::SingularMassMatrixInBatch { robot, configuration, velocity }
+            }
+            KinematicsError::NotFinite { robot, quantity } => {
+                KinematicsError::NotFiniteInBatch { robot, configuration, quantity }
+            }
+            other => other,
+        }
+    }
+}
+
+/// What a singular mass matrix means, after the robot's name.
+fn singular(f: &mut fmt::Formatter<'_>, velocity: &str) -> fmt::Result {
+    write!(
+        f,
+        "the mass matrix is singular: forward dynamics cannot determine the acceleration of `{velocity}`, which moves \
+         no mass of its own"
+    )
 }
 
 impl fmt::Display for KinematicsError {
@@ -92,6 +150,9 @@ impl fmt::Display for KinematicsError {
                 f,
                 "robot `{robot}`: the column of joint `{joint}` holds {got} values, but the output holds {expected}"
             ),
+            KinematicsError::WrongInputLength { robot, input, expected, got } => {
+                write!(f, "robot `{robot}`: `{input}` holds {got} values, but the output holds {expected}")
+            }
             KinematicsError::BadResolution { robot, resolution } => write!(
                 f,
                 "robot `{robot}`: a motion's resolution (a joint step, or states per unit of joint-space \
@@ -102,14 +163,22 @@ impl fmt::Display for KinematicsError {
                 "robot `{robot}`: a proximity cost's margin must be finite and not negative (the distance \
                  within which pairs cost), not {margin}"
             ),
-            KinematicsError::SingularMassMatrix { robot, velocity } => write!(
-                f,
-                "robot `{robot}`: the mass matrix is singular: forward dynamics cannot determine the acceleration \
-                 of `{velocity}`, which moves no mass of its own"
-            ),
+            KinematicsError::SingularMassMatrix { robot, velocity } => {
+                write!(f, "robot `{robot}`: ")?;
+                singular(f, velocity)
+            }
             KinematicsError::NotFinite { robot, quantity } => {
                 write!(f, "robot `{robot}`: the {quantity} overflowed to values that are not finite")
             }
+            KinematicsError::SingularMassMatrixInBatch { robot, configuration, velocity } => {
+                write!(f, "robot `{robot}`, configuration {configuration} of the batch: ")?;
+                singular(f, velocity)
+            }
+            KinematicsError::NotFiniteInBatch { robot, configuration, quantity } => write!(
+                f,
+                "robot `{robot}`, configuration {configuration} of the batch: the {quantity} overflowed to values that \
+                 are not finite"
+            ),
         }
     }
 }

@@ -22,7 +22,8 @@
 // `doc_auto_cfg` into `doc_cfg`, rust-lang/rust#138907).
 #![cfg_attr(docsrs, feature(doc_cfg))]
 
-#[cfg(feature = "std")]
+// The unit tests use `std` (vectors, cells) whatever the features: a test build links it anyway.
+#[cfg(any(feature = "std", test))]
 extern crate std;
 
 mod batch;
@@ -42,7 +43,7 @@ mod real;
 mod splitmix;
 pub mod trig;
 
-pub use batch::{any_wide, batch, batch_columns, batch_wide};
+pub use batch::{Input, Inputs, Packable, any_wide, batch, batch_columns, batch_inputs, batch_wide};
 pub use dispatch::{dispatch, dispatched_level};
 pub use error::KinematicsError;
 pub use floating::quaternion_matrix;

@@ -39,8 +39,9 @@ pub struct Dims {
     pub forces: usize,
 }
 
-/// One computation on the type: a value of `q` (and for twists `qd`), as a function per scalar,
-/// a batch and a column batch per scalar (not for twists), and a generic one.
+/// One computation on the type: a value of `q` (and for twists and some of the dynamics `qd`, and
+/// `qdd` or `tau`), as a function per scalar, a batch per scalar, a column batch per scalar (only
+/// of functions of `q` alone), and a generic one.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Output {
     /// `link_poses`.
@@ -152,7 +153,7 @@ impl Output {
         }
     }
 
-    /// Whether the functions take the joint rates `qd` too (and have no batches).
+    /// Whether the functions take the joint rates `qd` too (and have no column batches).
     pub fn takes_rates(self) -> bool {
         match self {
             Output::Twist(_) => true,
@@ -180,19 +181,31 @@ impl Output {
         matches!(self, Output::Dynamics(function) if function.is_forward())
     }
 
+    /// The names of the per-configuration arguments in order: `q`, then `qd`, the third argument
+    /// and `forces` where it takes them. A batch takes a slice of each ([`Output::batch_name`]).
+    pub fn inputs(self) -> Vec<&'static str> {
+        let mut out = vec!["q"];
+        if self.takes_rates() {
+            out.push("qd");
+        }
+        out.extend(self.third_argument());
+        if self.takes_forces() {
+            out.push("forces");
+        }
+        out
+    }
+
+    /// The slice a batch takes of per-configuration argument `name`: `qs`, `qds`, `qdds`, `taus`,
+    /// and `forces` (already plural).
+    pub fn batch_name(name: &str) -> String {
+        if name == "forces" { name.to_owned() } else { format!("{name}s") }
+    }
+
     /// The arguments the functions pass to the generic body: `q`, `q, qd`, `q, qd, tau` or
     /// `q, qd, tau, forces`.
     pub fn arguments(self) -> TokenStream {
-        let rates = if self.takes_rates() { quote!(, qd) } else { quote!() };
-        let third = match self.third_argument() {
-            Some(name) => {
-                let name = format_ident!("{name}");
-                quote!(, #name)
-            }
-            None => quote!(),
-        };
-        let forces = if self.takes_forces() { quote!(, forces) } else { quote!() };
-        quote!(q #rates #third #forces)
+        let names = self.inputs().into_iter().map(|name| format_ident!("{name}"));
+        quote!(#(#names),*)
     }
 
     /// How many values it returns: one per link, per tip or per sphere.
@@ -394,7 +407,10 @@ impl Render {
     }
 
     /// Every function of `output`, in the order emitted: per scalar the typed function and its two
-    /// batches (or, taking rates, the typed function alone), then the generic one.
+    /// batches (or, taking rates, the typed function and its batch of rows), then the generic one.
+    /// A batch takes a slice per argument (`qs`, then `qds`, `qdds`, `taus`: `[[T; DOF]]`, then
+    /// `[[T; VELOCITY_DOF]]` each, and `forces`: `[[[T; 6]; K]]`) and fills `out` with the typed function's values (forward
+    /// dynamics' accelerations, its refusals the batch's error).
     pub fn functions(&self, output: Output, one_tip: bool) -> Vec<(Form, Signature)> {
         let (p, n, nv) = (&self.p, self.dof(), self.velocities());
         let name = output.name(one_tip);
@@ -426,8 +442,17 @@ impl Render {
                     value.clone()
                 },
             };
+            let rows = output.inputs().into_iter().map(|name| {
+                let slice = format_ident!("{}", Output::batch_name(name));
+                let row = match name {
+                    "q" => quote!([#t; #n]),
+                    "forces" => quote!([[#t; 6]; #k]),
+                    _ => quote!([#t; #nv]),
+                };
+                quote!(#slice: &[#row])
+            });
             let batches = [
-                (format_ident!("{name}_batch{suffix}"), quote!(qs: &[[#t; #n]])),
+                (format_ident!("{name}_batch{suffix}"), quote!(#(#rows),*)),
                 (format_ident!("{name}_batch_columns{suffix}"), quote!(columns: [&[#t]; #n])),
             ]
             .map(|(batch, input)| Signature {
@@ -437,9 +462,9 @@ impl Render {
                 output: error.clone(),
             });
             out.push((Form::Typed(scalar.clone()), typed));
+            let [batch, columns] = batches;
+            out.push((Form::Batch(scalar.clone()), batch));
             if !rates {
-                let [batch, columns] = batches;
-                out.push((Form::Batch(scalar.clone()), batch));
                 out.push((Form::Columns(scalar), columns));
             }
         }

@@ -24,6 +24,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let tau = Refused::inverse_dynamics(&q, &qd, &[1.0; 2]);
     let h = Refused::nonlinear_effects_f32(&[0.1f32; 2], &[0.2f32; 2]);
     let qdd: [f64; 2] = Refused::forward_dynamics(&q, &qd, &tau)?;
+    let mut rates = vec![[0.0; 2]; 2];
+    Refused::inverse_dynamics_batch(&[q, q], &[qd, qd], &[qdd, qdd], &mut rates)?;
+    Refused::nonlinear_effects_batch_f32(&[[0.1f32; 2]], &[[0.2f32; 2]], &mut [[0.0f32; 2]])?;
+    Refused::forward_dynamics_batch(&[q, q], &[qd, qd], &[tau, tau], &mut rates)?;
     let lanes: [F64x4; 2] = [F64x4::splat(0.1); 2];
     let (accelerations, pivots) = Refused::forward_dynamics_generic(&lanes, &lanes, &lanes);
     let generic = Refused::mass_matrix_generic(&lanes);
@@ -32,6 +36,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let g: [f64; 6] = Unreadable::gravity_torques(&six);
     let m6: [[f64; 6]; 6] = Unreadable::mass_matrix(&six);
     let a6: [f64; 6] = Unreadable::forward_dynamics(&six, &six, &g)?;
+    let mut a6s = vec![a6; 3];
+    Unreadable::forward_dynamics_batch(&[six; 3], &[six; 3], &[g; 3], &mut a6s)?;
+    Unreadable::inverse_dynamics_batch(&[six; 3], &[six; 3], &[g; 3], &mut a6s)?;
     let _ = (m6, a6, Unreadable::inverse_dynamics(&six, &six, &six), Unreadable::nonlinear_effects(&six, &six));
     Ok(())
 }

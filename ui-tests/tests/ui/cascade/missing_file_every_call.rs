@@ -36,6 +36,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let mut out = vec![[pose; 9]; 2];
     Robot::link_poses_batch(&[q, seed], &mut out)?;
     Robot::link_poses_batch_columns([&[0.1][..]; 6], &mut out[..1])?;
+    let mut twists = vec![twist; 2];
+    Robot::tip_twist_batch(&[q, seed], &[[1.0; 6]; 2], &mut twists)?;
+    Robot::tip_twist_local_batch_f32(&[[0.1; 6]], &[[1.0; 6]], &mut [[0.0f32; 6]])?;
     let solutions = Robot::tip_ik(&pose)?;
     let best = solutions.iter().map(|s| s.q).find(|s| *s == seed);
     let limited = Robot::tip_ik_within_limits(&pose)?;
