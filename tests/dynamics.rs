@@ -156,6 +156,37 @@ fn forces_on_the_pandas_links_agree_with_the_reference() {
         );
         close(&lanes.map(|l| l.to_array()[2]), &tau, 1e-12, "inverse dynamics in lanes");
     }
+}
+
+/// The batches with forces are the per-configuration functions, bit for bit, and refuse a slice
+/// of forces of another length.
+#[test]
+fn the_batches_with_forces_are_the_functions() {
+    let states = arrays::<8, 8>(37);
+    let forces: Vec<[[f64; 6]; 2]> = (0..states.len())
+        .map(|k| std::array::from_fn(|l| std::array::from_fn(|c| ((k + l + c) % 5) as f64 - 2.0)))
+        .collect();
+    let qs: Vec<[f64; 8]> = states.iter().map(|s| s.0).collect();
+    let qds: Vec<[f64; 8]> = states.iter().map(|s| s.1).collect();
+    let qdds: Vec<[f64; 8]> = states.iter().map(|s| s.2).collect();
+    let mut out = vec![[0.0; 8]; states.len()];
+    PandaForces::inverse_dynamics_with_forces_batch(&qs, &qds, &qdds, &forces, &mut out).unwrap();
+    let taus: Vec<[f64; 8]> = (0..states.len())
+        .map(|k| PandaForces::inverse_dynamics_with_forces(&qs[k], &qds[k], &qdds[k], &forces[k]))
+        .collect();
+    for k in 0..states.len() {
+        assert_eq!(bits(&out[k]), bits(&taus[k]), "inverse dynamics with forces, configuration {k}");
+    }
+    PandaForces::forward_dynamics_with_forces_batch(&qs, &qds, &taus, &forces, &mut out).unwrap();
+    for k in 0..states.len() {
+        let one = PandaForces::forward_dynamics_with_forces(&qs[k], &qds[k], &taus[k], &forces[k]).unwrap();
+        assert_eq!(bits(&out[k]), bits(&one), "forward dynamics with forces, configuration {k}");
+    }
+    let before = out.clone();
+    let short = PandaForces::inverse_dynamics_with_forces_batch(&qs, &qds, &qdds, &forces[1..], &mut out);
+    assert!(matches!(short, Err(KinematicsError::WrongInputLength { input: "forces", .. })), "{short:?}");
+    assert_eq!(out, before, "nothing written");
+}
 
 /// Bit patterns, so that a batch equal "bit for bit" is not merely `==` (which takes -0.0 for 0.0).
 fn bits<const V: usize>(values: &[f64; V]) -> [u64; V] {

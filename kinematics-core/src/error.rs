@@ -45,7 +45,7 @@ pub enum KinematicsError {
     WrongInputLength {
         /// Robot name.
         robot: &'static str,
-        /// The input (`"qs"`, `"qds"`, `"qdds"`, `"taus"`).
+        /// The input (`"qs"`, `"qds"`, `"qdds"`, `"taus"`, `"forces"`).
         input: &'static str,
         /// Length of the output slice.
         expected: usize,
