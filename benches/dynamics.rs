@@ -1,7 +1,10 @@
 //! Compiled dynamics (issue 61), per call, on the Panda (`robots/panda.urdf`, franka_ros's
 //! identified inertias; 8 velocities: the 7 arm joints and `panda_finger_joint1`, whose mimic
-//! `panda_finger_joint2` folds into it) and the UR5 (`robots/ur5.urdf`, 6 velocities), gravity
-//! along -z at 9.81 m/s^2:
+//! `panda_finger_joint2` folds into it), the UR5 (`robots/ur5.urdf`, 6 velocities) and the
+//! humanoid (`robots/humanoid.urdf`, the NAO with its published inertias, its torso free-flying
+//! as in Pinocchio's humanoid benchmarks: 32 entries of `q`, the base's position and quaternion
+//! then 25 joints, and 31 velocities, the base's six then the joints'; its 17 mimic joints, the
+//! right hip's and the fingers', fold into their sources), gravity along -z at 9.81 m/s^2:
 //!
 //! - the five functions, each a group `dynamics/{robot}/{function}`: `gravity`
 //!   (`gravity_torques`), `rnea` (`inverse_dynamics`), `nonlinear_effects`, `crba`
@@ -12,11 +15,19 @@
 //!   report their throughput, configurations per second, whose inverse is the time per
 //!   configuration), `reference` (`kinematics::runtime::ReferenceDynamics`, Featherstone's
 //!   algorithms on nalgebra with heap vectors) and `featherstone` (the `featherstone` crate, 0.1.0).
+//!   The humanoid has no `generated_f32` (it is derived for `f64` alone, lanes included) and no
+//!   `featherstone`: that crate has no mimic joints, and the NAO has 17 (its fingers follow their
+//!   hand, its right hip its left), so a model of it there would be another robot. The humanoid
+//!   is most of this benchmark's optimised build: 16 min 47 s with it, 32 s without (2026-12-06;
+//!   its five `f64` functions alone build in 8 to 9 s in a crate of their own, so its lanes,
+//!   inlined into `dispatch` for each instruction set, take the rest).
 //!
 //! The states: 256 configurations drawn uniformly within the joint limits, joint rates and
-//! accelerations uniform in [-2, 2] (rad/s, rad/s^2; m/s and m/s^2 for the finger), and for
-//! forward dynamics the torques `inverse_dynamics` gives for them, so `forward_dynamics` returns
-//! accelerations of that size. The timed loops cycle through them.
+//! accelerations uniform in [-2, 2] (rad/s, rad/s^2; m/s and m/s^2 for the finger and the
+//! humanoid's base), and for forward dynamics the torques `inverse_dynamics` gives for them, so
+//! `forward_dynamics` returns accelerations of that size. The humanoid's base position and
+//! quaternion entries are drawn in [-pi, pi] as the limits of a floating joint give them, the
+//! quaternion then scaled to unit length. The timed loops cycle through them.
 //!
 //! **featherstone 0.1.0.** `f32` only (its state and spatial algebra are `f32`), so its figures
 //! sit beside `generated_f32` as much as `generated`. It has ABA, RNEA and CRBA (no mimic joints,
@@ -42,10 +53,10 @@
 //! result, and ABA's `DMatrix` per joint).
 //!
 //! Setup checks every state before anything is timed (measuring or not): the generated `f64`
-//! functions against the reference (relative 1e-12, forward dynamics 1e-9), `f32` against it
-//! (1e-4; forward dynamics 1e-3), every lane of `F64x4` and `F64x8` equal to the `f64` function
-//! bit for bit, and featherstone against the reference (relative 1e-4, forward dynamics 1e-3:
-//! its `f32`). A model built wrong cannot be timed.
+//! functions against the reference (relative 1e-12, forward dynamics 1e-9), `f32` where derived
+//! against it (1e-4; forward dynamics 1e-3), every lane of `F64x4` and `F64x8` equal to the `f64`
+//! function bit for bit, and featherstone where there is a model against the reference (relative
+//! 1e-4, forward dynamics 1e-3: its `f32`). A model built wrong cannot be timed.
 //!
 //! Measuring also prints each generated function's operation count (its doc's "Cost:" line, from
 //! `kinematics_compiler::dynamics::compile_dynamics`).
@@ -54,8 +65,9 @@
 //! with both fingers (9 joints): RNEA 1,227, gravity 689, nonlinear effects 1,147, CRBA 630, ABA
 //! 2,578; UR5: RNEA 828, gravity 485, CRBA 419, ABA 1,746.
 //!
-//! `cargo bench --bench dynamics` measures (filter by group: `-- dynamics/panda/rnea`, or a
-//! variant: `-- featherstone`); under `cargo test` every check above runs, and nothing is timed.
+//! `cargo bench --bench dynamics` measures (filter by group: `-- dynamics/panda/rnea`, a robot:
+//! `-- humanoid`, or a variant: `-- featherstone`); under `cargo test` every check above runs, and
+//! nothing is timed.
 #![allow(missing_docs, clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 #[allow(dead_code)] // the helpers the fk and ik benchmarks use and this one does not
@@ -83,106 +95,135 @@ struct Panda;
 #[kinematics(urdf = "robots/ur5.urdf", dynamics, scalars(f64, f32))]
 struct Ur5;
 
+#[derive(Kinematics)]
+#[kinematics(urdf = "robots/humanoid.urdf", floating_base, dynamics)]
+struct Humanoid;
+
 /// Gravity (m/s^2, root frame): the derive's default.
 const GRAVITY: [f64; 3] = [0.0, 0.0, -9.81];
 
 /// States cycled through (a multiple of 8: whole packs of lanes).
 const STATES: usize = 256;
 
-/// A robot's generated dynamics, so that one generic function times both robots and the
-/// `_generic` bodies inline into `dispatch`.
-trait Compiled<const N: usize> {
+/// A robot's generated dynamics, so that one generic function times every robot and the
+/// `_generic` bodies inline into `dispatch`: `N` entries of `q`, `V` velocities (equal but for a
+/// floating base, whose quaternion is four entries for three velocities).
+trait Compiled<const N: usize, const V: usize> {
     const NAME: &'static str;
     const LIMITS: [JointLimits; N];
-    fn gravity(q: &[f64; N]) -> [f64; N];
-    fn rnea(q: &[f64; N], qd: &[f64; N], qdd: &[f64; N]) -> [f64; N];
-    fn nonlinear(q: &[f64; N], qd: &[f64; N]) -> [f64; N];
-    fn crba(q: &[f64; N]) -> [[f64; N]; N];
-    fn aba(q: &[f64; N], qd: &[f64; N], tau: &[f64; N]) -> [f64; N];
-    fn gravity_f32(q: &[f32; N]) -> [f32; N];
-    fn rnea_f32(q: &[f32; N], qd: &[f32; N], qdd: &[f32; N]) -> [f32; N];
-    fn nonlinear_f32(q: &[f32; N], qd: &[f32; N]) -> [f32; N];
-    fn crba_f32(q: &[f32; N]) -> [[f32; N]; N];
-    fn aba_f32(q: &[f32; N], qd: &[f32; N], tau: &[f32; N]) -> [f32; N];
-    fn gravity_generic<T: Real>(q: &[T; N]) -> [T; N];
-    fn rnea_generic<T: Real>(q: &[T; N], qd: &[T; N], qdd: &[T; N]) -> [T; N];
-    fn nonlinear_generic<T: Real>(q: &[T; N], qd: &[T; N]) -> [T; N];
-    fn crba_generic<T: Real>(q: &[T; N]) -> [[T; N]; N];
+    /// Whether the derive wrote the `_f32` functions (`scalars(f64, f32)`): the `*_f32` methods
+    /// are called only then.
+    const F32: bool = false;
+    fn gravity(q: &[f64; N]) -> [f64; V];
+    fn rnea(q: &[f64; N], qd: &[f64; V], qdd: &[f64; V]) -> [f64; V];
+    fn nonlinear(q: &[f64; N], qd: &[f64; V]) -> [f64; V];
+    fn crba(q: &[f64; N]) -> [[f64; V]; V];
+    fn aba(q: &[f64; N], qd: &[f64; V], tau: &[f64; V]) -> [f64; V];
+    fn gravity_f32(_: &[f32; N]) -> [f32; V] {
+        unreachable!("{} has no f32 functions", Self::NAME)
+    }
+    fn rnea_f32(_: &[f32; N], _: &[f32; V], _: &[f32; V]) -> [f32; V] {
+        unreachable!("{} has no f32 functions", Self::NAME)
+    }
+    fn nonlinear_f32(_: &[f32; N], _: &[f32; V]) -> [f32; V] {
+        unreachable!("{} has no f32 functions", Self::NAME)
+    }
+    fn crba_f32(_: &[f32; N]) -> [[f32; V]; V] {
+        unreachable!("{} has no f32 functions", Self::NAME)
+    }
+    fn aba_f32(_: &[f32; N], _: &[f32; V], _: &[f32; V]) -> [f32; V] {
+        unreachable!("{} has no f32 functions", Self::NAME)
+    }
+    fn gravity_generic<T: Real>(q: &[T; N]) -> [T; V];
+    fn rnea_generic<T: Real>(q: &[T; N], qd: &[T; V], qdd: &[T; V]) -> [T; V];
+    fn nonlinear_generic<T: Real>(q: &[T; N], qd: &[T; V]) -> [T; V];
+    fn crba_generic<T: Real>(q: &[T; N]) -> [[T; V]; V];
     /// The accelerations and the pivots of the mass matrix's factorisation.
-    fn aba_generic<T: Real>(q: &[T; N], qd: &[T; N], tau: &[T; N]) -> ([T; N], [T; N]);
+    fn aba_generic<T: Real>(q: &[T; N], qd: &[T; V], tau: &[T; V]) -> ([T; V], [T; V]);
 }
 
+/// `impl Compiled<N, V>` for a derived robot; with `f32`, its `_f32` functions too.
 macro_rules! compiled {
-    ($robot:ident, $name:literal, $n:literal) => {
-        impl Compiled<$n> for $robot {
-            const NAME: &'static str = $name;
-            const LIMITS: [JointLimits; $n] = $robot::JOINT_LIMITS;
+    ($robot:ident, $name:literal, $n:literal, $v:literal, f32) => {
+        compiled!($robot, $name, $n, $v, {
+            const F32: bool = true;
             #[inline(always)]
-            fn gravity(q: &[f64; $n]) -> [f64; $n] {
-                $robot::gravity_torques(q)
-            }
-            #[inline(always)]
-            fn rnea(q: &[f64; $n], qd: &[f64; $n], qdd: &[f64; $n]) -> [f64; $n] {
-                $robot::inverse_dynamics(q, qd, qdd)
-            }
-            #[inline(always)]
-            fn nonlinear(q: &[f64; $n], qd: &[f64; $n]) -> [f64; $n] {
-                $robot::nonlinear_effects(q, qd)
-            }
-            #[inline(always)]
-            fn crba(q: &[f64; $n]) -> [[f64; $n]; $n] {
-                $robot::mass_matrix(q)
-            }
-            #[inline(always)]
-            fn aba(q: &[f64; $n], qd: &[f64; $n], tau: &[f64; $n]) -> [f64; $n] {
-                $robot::forward_dynamics(q, qd, tau).unwrap()
-            }
-            #[inline(always)]
-            fn gravity_f32(q: &[f32; $n]) -> [f32; $n] {
+            fn gravity_f32(q: &[f32; $n]) -> [f32; $v] {
                 $robot::gravity_torques_f32(q)
             }
             #[inline(always)]
-            fn rnea_f32(q: &[f32; $n], qd: &[f32; $n], qdd: &[f32; $n]) -> [f32; $n] {
+            fn rnea_f32(q: &[f32; $n], qd: &[f32; $v], qdd: &[f32; $v]) -> [f32; $v] {
                 $robot::inverse_dynamics_f32(q, qd, qdd)
             }
             #[inline(always)]
-            fn nonlinear_f32(q: &[f32; $n], qd: &[f32; $n]) -> [f32; $n] {
+            fn nonlinear_f32(q: &[f32; $n], qd: &[f32; $v]) -> [f32; $v] {
                 $robot::nonlinear_effects_f32(q, qd)
             }
             #[inline(always)]
-            fn crba_f32(q: &[f32; $n]) -> [[f32; $n]; $n] {
+            fn crba_f32(q: &[f32; $n]) -> [[f32; $v]; $v] {
                 $robot::mass_matrix_f32(q)
             }
             #[inline(always)]
-            fn aba_f32(q: &[f32; $n], qd: &[f32; $n], tau: &[f32; $n]) -> [f32; $n] {
+            fn aba_f32(q: &[f32; $n], qd: &[f32; $v], tau: &[f32; $v]) -> [f32; $v] {
                 $robot::forward_dynamics_f32(q, qd, tau).unwrap()
             }
+        });
+    };
+    ($robot:ident, $name:literal, $n:literal, $v:literal) => {
+        compiled!($robot, $name, $n, $v, {});
+    };
+    ($robot:ident, $name:literal, $n:literal, $v:literal, { $($f32:tt)* }) => {
+        impl Compiled<$n, $v> for $robot {
+            const NAME: &'static str = $name;
+            const LIMITS: [JointLimits; $n] = $robot::JOINT_LIMITS;
             #[inline(always)]
-            fn gravity_generic<T: Real>(q: &[T; $n]) -> [T; $n] {
+            fn gravity(q: &[f64; $n]) -> [f64; $v] {
+                $robot::gravity_torques(q)
+            }
+            #[inline(always)]
+            fn rnea(q: &[f64; $n], qd: &[f64; $v], qdd: &[f64; $v]) -> [f64; $v] {
+                $robot::inverse_dynamics(q, qd, qdd)
+            }
+            #[inline(always)]
+            fn nonlinear(q: &[f64; $n], qd: &[f64; $v]) -> [f64; $v] {
+                $robot::nonlinear_effects(q, qd)
+            }
+            #[inline(always)]
+            fn crba(q: &[f64; $n]) -> [[f64; $v]; $v] {
+                $robot::mass_matrix(q)
+            }
+            #[inline(always)]
+            fn aba(q: &[f64; $n], qd: &[f64; $v], tau: &[f64; $v]) -> [f64; $v] {
+                $robot::forward_dynamics(q, qd, tau).unwrap()
+            }
+            $($f32)*
+            #[inline(always)]
+            fn gravity_generic<T: Real>(q: &[T; $n]) -> [T; $v] {
                 $robot::gravity_torques_generic(q)
             }
             #[inline(always)]
-            fn rnea_generic<T: Real>(q: &[T; $n], qd: &[T; $n], qdd: &[T; $n]) -> [T; $n] {
+            fn rnea_generic<T: Real>(q: &[T; $n], qd: &[T; $v], qdd: &[T; $v]) -> [T; $v] {
                 $robot::inverse_dynamics_generic(q, qd, qdd)
             }
             #[inline(always)]
-            fn nonlinear_generic<T: Real>(q: &[T; $n], qd: &[T; $n]) -> [T; $n] {
+            fn nonlinear_generic<T: Real>(q: &[T; $n], qd: &[T; $v]) -> [T; $v] {
                 $robot::nonlinear_effects_generic(q, qd)
             }
             #[inline(always)]
-            fn crba_generic<T: Real>(q: &[T; $n]) -> [[T; $n]; $n] {
+            fn crba_generic<T: Real>(q: &[T; $n]) -> [[T; $v]; $v] {
                 $robot::mass_matrix_generic(q)
             }
             #[inline(always)]
-            fn aba_generic<T: Real>(q: &[T; $n], qd: &[T; $n], tau: &[T; $n]) -> ([T; $n], [T; $n]) {
+            fn aba_generic<T: Real>(q: &[T; $n], qd: &[T; $v], tau: &[T; $v]) -> ([T; $v], [T; $v]) {
                 $robot::forward_dynamics_generic(q, qd, tau)
             }
         }
     };
 }
 
-compiled!(Panda, "panda", 8);
-compiled!(Ur5, "ur5", 6);
+compiled!(Panda, "panda", 8, 8, f32);
+compiled!(Ur5, "ur5", 6, 6, f32);
+compiled!(Humanoid, "humanoid", 32, 31);
 
 /// A joint of the hand-built featherstone models (axes in the child link's frame, as URDF's).
 #[derive(Clone, Copy)]
@@ -453,35 +494,41 @@ fn featherstone_model(parts: &[Part]) -> (ArticulatedBody, Vec<bool>) {
 
 /// One state of the robot: positions, rates, accelerations, and the torques that give them.
 #[derive(Clone, Copy)]
-struct State<T, const N: usize> {
+struct State<T, const N: usize, const V: usize> {
     q: [T; N],
-    qd: [T; N],
-    qdd: [T; N],
-    tau: [T; N],
+    qd: [T; V],
+    qdd: [T; V],
+    tau: [T; V],
 }
 
-fn draw_states<R: Compiled<N>, const N: usize>() -> Vec<State<f64, N>> {
-    let rates = [JointLimits { lower: -2.0, upper: 2.0 }; N];
+/// The states, each configuration passed through `finish` (a floating base's quaternion made
+/// unit) before its torques are computed.
+fn draw_states<R: Compiled<N, V>, const N: usize, const V: usize>(
+    finish: impl Fn(&mut [f64; N]),
+) -> Vec<State<f64, N, V>> {
+    let rates = [JointLimits { lower: -2.0, upper: 2.0 }; V];
     let mut q = Configurations::within(&R::LIMITS).uniform();
     let mut qd = Configurations::within(&rates).uniform().seeded(1);
     let mut qdd = Configurations::within(&rates).uniform().seeded(2);
     (0..STATES)
         .map(|_| {
-            let (q, qd, qdd) = (q.next_array().unwrap(), qd.next_array().unwrap(), qdd.next_array().unwrap());
+            let (mut q, qd, qdd) = (q.next_array().unwrap(), qd.next_array().unwrap(), qdd.next_array().unwrap());
+            finish(&mut q);
             State { q, qd, qdd, tau: R::rnea(&q, &qd, &qdd) }
         })
         .collect()
 }
 
 /// The states `lanes` at a time: pack `i`'s lane `l` is state `lanes * i + l`.
-fn packs<L: Lanes<Scalar = f64>, const N: usize>(states: &[State<f64, N>]) -> Vec<State<L, N>> {
+fn packs<L: Lanes<Scalar = f64>, const N: usize, const V: usize>(states: &[State<f64, N, V>]) -> Vec<State<L, N, V>> {
     let lanes = L::LANES;
     (0..states.len() / lanes)
         .map(|i| {
-            let pack = |f: &dyn Fn(&State<f64, N>) -> [f64; N]| -> [L; N] {
-                std::array::from_fn(|j| L::from_fn(|l| f(&states[lanes * i + l])[j]))
-            };
-            State { q: pack(&|s| s.q), qd: pack(&|s| s.qd), qdd: pack(&|s| s.qdd), tau: pack(&|s| s.tau) }
+            fn pack<L: Lanes<Scalar = f64>, const M: usize>(of: impl Fn(usize) -> [f64; M]) -> [L; M] {
+                std::array::from_fn(|j| L::from_fn(|l| of(l)[j]))
+            }
+            let s = |l: usize| &states[lanes * i + l];
+            State { q: pack(|l| s(l).q), qd: pack(|l| s(l).qd), qdd: pack(|l| s(l).qdd), tau: pack(|l| s(l).tau) }
         })
         .collect()
 }
@@ -525,7 +572,7 @@ impl Peer {
     fn new<const N: usize>(
         parts: &[Part],
         reference: &ReferenceDynamics,
-        states: &[State<f64, N>],
+        states: &[State<f64, N, N>],
         expand: impl Fn(&[f64; N]) -> Vec<f64>,
         name: &str,
     ) -> Peer {
@@ -620,26 +667,27 @@ fn per_pack<O>(group: &mut BenchmarkGroup<'_, WallTime>, id: &str, lanes: usize,
     group.throughput(Throughput::Elements(1));
 }
 
-/// One robot: its checks, then (measuring) its groups.
-fn robot<R: Compiled<N>, const N: usize>(
+/// One robot: its checks, then (measuring) its groups; `peer`, the featherstone model, where there
+/// is one.
+fn robot<R: Compiled<N, V>, const N: usize, const V: usize>(
     criterion: Option<&mut Criterion>,
     tree: kinematics::model::KinematicTree,
-    peer: Peer,
-    states: &[State<f64, N>],
+    peer: Option<Peer>,
+    states: &[State<f64, N, V>],
 ) {
     let name = R::NAME;
     let reference = ReferenceDynamics::new(tree.clone(), GRAVITY, false).unwrap();
-    let s32: Vec<State<f32, N>> = states
+    let s32: Vec<State<f32, N, V>> = states
         .iter()
         .map(|s| State { q: narrow(&s.q), qd: narrow(&s.qd), qdd: narrow(&s.qdd), tau: narrow(&s.tau) })
         .collect();
-    let (p4, p8): (Vec<State<F64x4, N>>, Vec<State<F64x8, N>>) = (packs(states), packs(states));
+    let (p4, p8): (Vec<State<F64x4, N, V>>, Vec<State<F64x8, N, V>>) = (packs(states), packs(states));
     // The generated functions against the reference, in f64 and f32, and every lane against f64.
     for (k, s) in states.iter().enumerate() {
         let what = |f: &str| format!("{name} {f} at state {k}");
         let (q, qd, qdd, tau) = (&s.q[..], &s.qd[..], &s.qdd[..], &s.tau[..]);
         let m = reference.mass_matrix(q).unwrap();
-        let m: Vec<f64> = (0..N).flat_map(|i| (0..N).map(move |j| (i, j))).map(|(i, j)| m[(i, j)]).collect();
+        let m: Vec<f64> = (0..V).flat_map(|i| (0..V).map(move |j| (i, j))).map(|(i, j)| m[(i, j)]).collect();
         let wanted = [
             reference.gravity_torques(q).unwrap(),
             reference.inverse_dynamics(q, qd, qdd).unwrap(),
@@ -654,18 +702,21 @@ fn robot<R: Compiled<N>, const N: usize>(
             rows(&R::crba(&s.q)),
             R::aba(&s.q, &s.qd, &s.tau).to_vec(),
         ];
-        let t = &s32[k];
-        let ours32 = [
-            widen(&R::gravity_f32(&t.q)),
-            widen(&R::rnea_f32(&t.q, &t.qd, &t.qdd)),
-            widen(&R::nonlinear_f32(&t.q, &t.qd)),
-            rows(&R::crba_f32(&t.q)),
-            widen(&R::aba_f32(&t.q, &t.qd, &t.tau)),
-        ];
         for (i, f) in ["gravity", "rnea", "nonlinear effects", "crba", "forward dynamics"].into_iter().enumerate() {
-            let (relative, relative32) = if i == 4 { (1e-9, 1e-3) } else { (1e-12, 1e-4) };
-            close(&ours[i], &wanted[i], relative, &what(f));
-            close(&ours32[i], &wanted[i], relative32, &what(&format!("{f} f32")));
+            close(&ours[i], &wanted[i], if i == 4 { 1e-9 } else { 1e-12 }, &what(f));
+        }
+        if R::F32 {
+            let t = &s32[k];
+            let ours32 = [
+                widen(&R::gravity_f32(&t.q)),
+                widen(&R::rnea_f32(&t.q, &t.qd, &t.qdd)),
+                widen(&R::nonlinear_f32(&t.q, &t.qd)),
+                rows(&R::crba_f32(&t.q)),
+                widen(&R::aba_f32(&t.q, &t.qd, &t.tau)),
+            ];
+            for (i, f) in ["gravity", "rnea", "nonlinear effects", "crba", "forward dynamics"].into_iter().enumerate() {
+                close(&ours32[i], &wanted[i], if i == 4 { 1e-3 } else { 1e-4 }, &what(&format!("{f} f32")));
+            }
         }
         let (i4, l4, i8, l8) = (k / 4, k % 4, k / 8, k % 8);
         let (a, b) = (&p4[i4], &p8[i8]);
@@ -699,12 +750,14 @@ fn robot<R: Compiled<N>, const N: usize>(
         let cost = compile_dynamics(&tree, &request, function).unwrap().op_count();
         println!("dynamics/{name}/{short}: {} Cost: {cost}.", function.name());
     }
-    let body = &mut peer.body.clone();
+    let mut peer = peer.map(|p| (p.body.clone(), p));
     let (st, s32) = (states, &s32[..]);
 
     let mut g = c.benchmark_group(format!("dynamics/{name}/gravity"));
     per_call(&mut g, "generated", |k| R::gravity(&st[k].q));
-    per_call(&mut g, "generated_f32", |k| R::gravity_f32(&s32[k].q));
+    if R::F32 {
+        per_call(&mut g, "generated_f32", |k| R::gravity_f32(&s32[k].q));
+    }
     per_pack(
         &mut g,
         "f64x4",
@@ -720,16 +773,20 @@ fn robot<R: Compiled<N>, const N: usize>(
         |i| R::gravity_generic(&p8[i].q),
     );
     per_call(&mut g, "reference", |k| reference.gravity_torques(&st[k].q).unwrap());
-    peer.set(body, 0, [true, false, false, false]);
-    per_call(&mut g, "featherstone", |k| {
-        body.q.as_mut_slice().copy_from_slice(&peer.q[k]);
-        rnea_inverse_dynamics(body).0
-    });
+    if let Some((body, peer)) = &mut peer {
+        peer.set(body, 0, [true, false, false, false]);
+        per_call(&mut g, "featherstone", |k| {
+            body.q.as_mut_slice().copy_from_slice(&peer.q[k]);
+            rnea_inverse_dynamics(body).0
+        });
+    }
     g.finish();
 
     let mut g = c.benchmark_group(format!("dynamics/{name}/rnea"));
     per_call(&mut g, "generated", |k| R::rnea(&st[k].q, &st[k].qd, &st[k].qdd));
-    per_call(&mut g, "generated_f32", |k| R::rnea_f32(&s32[k].q, &s32[k].qd, &s32[k].qdd));
+    if R::F32 {
+        per_call(&mut g, "generated_f32", |k| R::rnea_f32(&s32[k].q, &s32[k].qd, &s32[k].qdd));
+    }
     per_pack(
         &mut g,
         "f64x4",
@@ -745,15 +802,19 @@ fn robot<R: Compiled<N>, const N: usize>(
         |i| R::rnea_generic(&p8[i].q, &p8[i].qd, &p8[i].qdd),
     );
     per_call(&mut g, "reference", |k| reference.inverse_dynamics(&st[k].q, &st[k].qd, &st[k].qdd).unwrap());
-    per_call(&mut g, "featherstone", |k| {
-        peer.set(body, k, [true, true, true, false]);
-        rnea_inverse_dynamics(body).0
-    });
+    if let Some((body, peer)) = &mut peer {
+        per_call(&mut g, "featherstone", |k| {
+            peer.set(body, k, [true, true, true, false]);
+            rnea_inverse_dynamics(body).0
+        });
+    }
     g.finish();
 
     let mut g = c.benchmark_group(format!("dynamics/{name}/nonlinear_effects"));
     per_call(&mut g, "generated", |k| R::nonlinear(&st[k].q, &st[k].qd));
-    per_call(&mut g, "generated_f32", |k| R::nonlinear_f32(&s32[k].q, &s32[k].qd));
+    if R::F32 {
+        per_call(&mut g, "generated_f32", |k| R::nonlinear_f32(&s32[k].q, &s32[k].qd));
+    }
     per_pack(
         &mut g,
         "f64x4",
@@ -769,17 +830,21 @@ fn robot<R: Compiled<N>, const N: usize>(
         |i| R::nonlinear_generic(&p8[i].q, &p8[i].qd),
     );
     per_call(&mut g, "reference", |k| reference.nonlinear_effects(&st[k].q, &st[k].qd).unwrap());
-    peer.set(body, 0, [true, true, false, false]);
-    per_call(&mut g, "featherstone", |k| {
-        body.q.as_mut_slice().copy_from_slice(&peer.q[k]);
-        body.qd.as_mut_slice().copy_from_slice(&peer.qd[k]);
-        rnea_inverse_dynamics(body).0
-    });
+    if let Some((body, peer)) = &mut peer {
+        peer.set(body, 0, [true, true, false, false]);
+        per_call(&mut g, "featherstone", |k| {
+            body.q.as_mut_slice().copy_from_slice(&peer.q[k]);
+            body.qd.as_mut_slice().copy_from_slice(&peer.qd[k]);
+            rnea_inverse_dynamics(body).0
+        });
+    }
     g.finish();
 
     let mut g = c.benchmark_group(format!("dynamics/{name}/crba"));
     per_call(&mut g, "generated", |k| R::crba(&st[k].q));
-    per_call(&mut g, "generated_f32", |k| R::crba_f32(&s32[k].q));
+    if R::F32 {
+        per_call(&mut g, "generated_f32", |k| R::crba_f32(&s32[k].q));
+    }
     per_pack(
         &mut g,
         "f64x4",
@@ -795,15 +860,19 @@ fn robot<R: Compiled<N>, const N: usize>(
         |i| R::crba_generic(&p8[i].q),
     );
     per_call(&mut g, "reference", |k| reference.mass_matrix(&st[k].q).unwrap());
-    per_call(&mut g, "featherstone", |k| {
-        body.q.as_mut_slice().copy_from_slice(&peer.q[k]);
-        crba_mass_matrix(body)
-    });
+    if let Some((body, peer)) = &mut peer {
+        per_call(&mut g, "featherstone", |k| {
+            body.q.as_mut_slice().copy_from_slice(&peer.q[k]);
+            crba_mass_matrix(body)
+        });
+    }
     g.finish();
 
     let mut g = c.benchmark_group(format!("dynamics/{name}/forward_dynamics"));
     per_call(&mut g, "generated", |k| R::aba(&st[k].q, &st[k].qd, &st[k].tau));
-    per_call(&mut g, "generated_f32", |k| R::aba_f32(&s32[k].q, &s32[k].qd, &s32[k].tau));
+    if R::F32 {
+        per_call(&mut g, "generated_f32", |k| R::aba_f32(&s32[k].q, &s32[k].qd, &s32[k].tau));
+    }
     per_pack(
         &mut g,
         "f64x4",
@@ -819,17 +888,19 @@ fn robot<R: Compiled<N>, const N: usize>(
         |i| R::aba_generic(&p8[i].q, &p8[i].qd, &p8[i].tau),
     );
     per_call(&mut g, "reference", |k| reference.forward_dynamics(&st[k].q, &st[k].qd, &st[k].tau).unwrap());
-    per_call(&mut g, "featherstone", |k| {
-        peer.set(body, k, [true, true, false, true]);
-        aba_forward_dynamics(body)[0]
-    });
+    if let Some((body, peer)) = &mut peer {
+        per_call(&mut g, "featherstone", |k| {
+            peer.set(body, k, [true, true, false, true]);
+            aba_forward_dynamics(body)[0]
+        });
+    }
     g.finish();
 }
 
 fn run(mut criterion: Option<&mut Criterion>) {
     // The Panda: featherstone's has both fingers, checked against the reference on the Panda with
     // the `<mimic>` removed.
-    let states = draw_states::<Panda, 8>();
+    let states = draw_states::<Panda, 8, 8>(|_| ());
     let urdf = std::fs::read_to_string(format!("{}/robots/panda.urdf", env!("CARGO_MANIFEST_DIR"))).unwrap();
     let mimic = r#"<mimic joint="panda_finger_joint1" multiplier="1" offset="0"/>"#;
     assert!(urdf.contains(mimic));
@@ -837,13 +908,22 @@ fn run(mut criterion: Option<&mut Criterion>) {
     let both = ReferenceDynamics::new(both, GRAVITY, false).unwrap();
     let expand = |v: &[f64; 8]| -> Vec<f64> { v.iter().copied().chain([v[7]]).collect() };
     let peer = Peer::new(PANDA, &both, &states, expand, "panda");
-    robot::<Panda, 8>(criterion.as_deref_mut(), Panda::reference().unwrap().tree().clone(), peer, &states);
+    robot::<Panda, 8, 8>(criterion.as_deref_mut(), Panda::reference().unwrap().tree().clone(), Some(peer), &states);
 
-    let states = draw_states::<Ur5, 6>();
+    let states = draw_states::<Ur5, 6, 6>(|_| ());
     let tree = Ur5::reference().unwrap().tree().clone();
     let reference = ReferenceDynamics::new(tree.clone(), GRAVITY, false).unwrap();
     let peer = Peer::new(UR5, &reference, &states, |v: &[f64; 6]| v.to_vec(), "ur5");
-    robot::<Ur5, 6>(criterion, tree, peer, &states);
+    robot::<Ur5, 6, 6>(criterion.as_deref_mut(), tree, Some(peer), &states);
+
+    // The humanoid on its free-flying torso: `q[3..7]` is the base's quaternion, made unit. No
+    // featherstone model (see the module doc).
+    assert_eq!(Humanoid::JOINT_NAMES[3..7], ["root_joint.qx", "root_joint.qy", "root_joint.qz", "root_joint.qw"]);
+    let states = draw_states::<Humanoid, 32, 31>(|q| {
+        let norm = q[3..7].iter().map(|x| x * x).sum::<f64>().sqrt();
+        q[3..7].iter_mut().for_each(|x| *x /= norm);
+    });
+    robot::<Humanoid, 32, 31>(criterion, Humanoid::reference().unwrap().tree().clone(), None, &states);
 }
 
 fn main() {

@@ -107,6 +107,36 @@ fn a_floating_base_agrees_with_the_reference() {
     }
 }
 
+/// The humanoid (the NAO with its published inertias) on a free-flying torso: 32 entries of `q`,
+/// 31 velocities; its 17 mimic joints (the right hip, the fingers) fold into their sources.
+#[derive(Kinematics)]
+#[kinematics(urdf = "robots/humanoid.urdf", floating_base, dynamics)]
+struct FlyingHumanoid;
+
+#[test]
+fn a_free_flying_humanoid_agrees_with_the_reference() {
+    let reference =
+        ReferenceDynamics::new(FlyingHumanoid::reference().unwrap().tree().clone(), [0.0, 0.0, -9.81], false).unwrap();
+    assert_eq!((FlyingHumanoid::DOF, FlyingHumanoid::VELOCITY_DOF), (32, 31));
+    for (mut q, v, a) in states(32, 31, 100) {
+        let norm = q[3..7].iter().map(|x| x * x).sum::<f64>().sqrt();
+        q[3..7].iter_mut().for_each(|x| *x /= norm);
+        let (qa, va, aa): ([f64; 32], [f64; 31], [f64; 31]) =
+            (q.clone().try_into().unwrap(), v.clone().try_into().unwrap(), a.clone().try_into().unwrap());
+        let tau = reference.inverse_dynamics(&q, &v, &a).unwrap();
+        close(&FlyingHumanoid::inverse_dynamics(&qa, &va, &aa), &tau, 1e-12, "inverse dynamics");
+        close(&FlyingHumanoid::gravity_torques(&qa), &reference.gravity_torques(&q).unwrap(), 1e-12, "gravity");
+        let h = reference.nonlinear_effects(&q, &v).unwrap();
+        close(&FlyingHumanoid::nonlinear_effects(&qa, &va), &h, 1e-12, "h");
+        let m = reference.mass_matrix(&q).unwrap();
+        for (i, row) in FlyingHumanoid::mass_matrix(&qa).iter().enumerate() {
+            close(row, &m.row(i).iter().copied().collect::<Vec<_>>(), 1e-12, "mass matrix");
+        }
+        let taua: [f64; 31] = tau.try_into().unwrap();
+        close(&FlyingHumanoid::forward_dynamics(&qa, &va, &taua).unwrap(), &a, 1e-9, "forward dynamics");
+    }
+}
+
 #[test]
 fn forward_dynamics_names_the_joint_that_moves_no_mass() {
     let err = MasslessHand::forward_dynamics(&[0.1, 0.2], &[0.0; 2], &[1.0, 0.0]).unwrap_err();

@@ -124,7 +124,8 @@ fn a_second_inertial_is_refused_at_its_line() {
 }
 
 /// Every robot of `robots/` with `<inertial>` elements, and how many.
-const WITH_INERTIALS: [(&str, usize); 6] = [
+const WITH_INERTIALS: [(&str, usize); 7] = [
+    ("humanoid.urdf", 51),
     ("panda.urdf", 11),
     ("panda_spherized.urdf", 13),
     ("ur5.urdf", 7),
@@ -225,4 +226,17 @@ fn spot_checks_against_the_files() {
     assert_eq!(panda.inertial_line(&root.name), Some(4));
     let inertial = root.inertial.clone().unwrap();
     assert_eq!((inertial.mass, inertial.inertia), (2.9, [0.1, 0.0, 0.0, 0.1, 0.0, 0.1]));
+    // humanoid.urdf, lines 52-56: the NAO's torso; lines 258-261: a placeholder with no <origin>.
+    let humanoid = load_robot("humanoid.urdf");
+    let torso = humanoid.link_by_name("torso").unwrap().inertial.clone().unwrap();
+    assert_eq!(torso.mass, 1.04956);
+    assert_eq!(torso.origin, FixedTransform::identity().translate([-0.00413, 0.0, 0.04342]));
+    assert_eq!(torso.inertia, [0.00308361, 1.43116e-05, -3.30211e-05, 0.0028835, -2.70793e-05, 0.0015924]);
+    assert_eq!(humanoid.inertial_line("torso"), Some(52));
+    let gripper = humanoid.link_by_name("l_gripper").unwrap().inertial.clone().unwrap();
+    assert_eq!((gripper.mass, gripper.inertia), (2e-06, [1.1e-09, 0.0, 0.0, 1.1e-09, 0.0, 1.1e-09]));
+    assert_eq!(gripper.origin, FixedTransform::identity());
+    assert_eq!(humanoid.link_by_name("l_sole").unwrap().inertial, None);
+    // Every published tensor keeps a rigid body's rules, the triangle inequality included.
+    assert_eq!(humanoid.inertia_refusals(false), vec![]);
 }
