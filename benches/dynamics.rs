@@ -15,12 +15,12 @@
 //!   report their throughput, configurations per second, whose inverse is the time per
 //!   configuration), `reference` (`kinematics::runtime::ReferenceDynamics`, Featherstone's
 //!   algorithms on nalgebra with heap vectors) and `featherstone` (the `featherstone` crate, 0.1.0).
-//!   The humanoid has no `generated_f32` (it is derived for `f64` alone, lanes included) and no
-//!   `featherstone`: that crate has no mimic joints, and the NAO has 17 (its fingers follow their
-//!   hand, its right hip its left), so a model of it there would be another robot. The humanoid
-//!   is most of this benchmark's optimised build: 16 min 47 s with it, 32 s without (2026-12-06;
-//!   its five `f64` functions alone build in 8 to 9 s in a crate of their own, so its lanes,
-//!   inlined into `dispatch` for each instruction set, take the rest).
+//!   The humanoid has `generated` and `reference` only: no `generated_f32` (it is derived for
+//!   `f64` alone), no `featherstone` (that crate has no mimic joints, and the NAO has 17: its
+//!   fingers follow their hand, its right hip its left, so a model of it there would be another
+//!   robot), and no lanes: with its `_generic` bodies in `F64x4` and `F64x8` inlined into
+//!   `dispatch`, this benchmark's optimised build took 16 min 47 s against 32 s without the
+//!   humanoid (2026-12-06), past the ten minutes a benchmark run may take here.
 //!
 //! The states: 256 configurations drawn uniformly within the joint limits, joint rates and
 //! accelerations uniform in [-2, 2] (rad/s, rad/s^2; m/s and m/s^2 for the finger and the
@@ -134,15 +134,28 @@ trait Compiled<const N: usize, const V: usize> {
     fn aba_f32(_: &[f32; N], _: &[f32; V], _: &[f32; V]) -> [f32; V] {
         unreachable!("{} has no f32 functions", Self::NAME)
     }
-    fn gravity_generic<T: Real>(q: &[T; N]) -> [T; V];
-    fn rnea_generic<T: Real>(q: &[T; N], qd: &[T; V], qdd: &[T; V]) -> [T; V];
-    fn nonlinear_generic<T: Real>(q: &[T; N], qd: &[T; V]) -> [T; V];
-    fn crba_generic<T: Real>(q: &[T; N]) -> [[T; V]; V];
+    /// Whether the `_generic` bodies are timed in lanes: the `*_generic` methods are called only
+    /// then (a robot without them never builds its bodies in lanes here).
+    const LANES: bool = false;
+    fn gravity_generic<T: Real>(_: &[T; N]) -> [T; V] {
+        unreachable!("{} is not timed in lanes", Self::NAME)
+    }
+    fn rnea_generic<T: Real>(_: &[T; N], _: &[T; V], _: &[T; V]) -> [T; V] {
+        unreachable!("{} is not timed in lanes", Self::NAME)
+    }
+    fn nonlinear_generic<T: Real>(_: &[T; N], _: &[T; V]) -> [T; V] {
+        unreachable!("{} is not timed in lanes", Self::NAME)
+    }
+    fn crba_generic<T: Real>(_: &[T; N]) -> [[T; V]; V] {
+        unreachable!("{} is not timed in lanes", Self::NAME)
+    }
     /// The accelerations and the pivots of the mass matrix's factorisation.
-    fn aba_generic<T: Real>(q: &[T; N], qd: &[T; V], tau: &[T; V]) -> ([T; V], [T; V]);
+    fn aba_generic<T: Real>(_: &[T; N], _: &[T; V], _: &[T; V]) -> ([T; V], [T; V]) {
+        unreachable!("{} is not timed in lanes", Self::NAME)
+    }
 }
 
-/// `impl Compiled<N, V>` for a derived robot; with `f32`, its `_f32` functions too.
+/// `impl Compiled<N, V>` for a derived robot; with `f32`, its `_f32` functions and its lanes too.
 macro_rules! compiled {
     ($robot:ident, $name:literal, $n:literal, $v:literal, f32) => {
         compiled!($robot, $name, $n, $v, {
@@ -166,6 +179,27 @@ macro_rules! compiled {
             #[inline(always)]
             fn aba_f32(q: &[f32; $n], qd: &[f32; $v], tau: &[f32; $v]) -> [f32; $v] {
                 $robot::forward_dynamics_f32(q, qd, tau).unwrap()
+            }
+            const LANES: bool = true;
+            #[inline(always)]
+            fn gravity_generic<T: Real>(q: &[T; $n]) -> [T; $v] {
+                $robot::gravity_torques_generic(q)
+            }
+            #[inline(always)]
+            fn rnea_generic<T: Real>(q: &[T; $n], qd: &[T; $v], qdd: &[T; $v]) -> [T; $v] {
+                $robot::inverse_dynamics_generic(q, qd, qdd)
+            }
+            #[inline(always)]
+            fn nonlinear_generic<T: Real>(q: &[T; $n], qd: &[T; $v]) -> [T; $v] {
+                $robot::nonlinear_effects_generic(q, qd)
+            }
+            #[inline(always)]
+            fn crba_generic<T: Real>(q: &[T; $n]) -> [[T; $v]; $v] {
+                $robot::mass_matrix_generic(q)
+            }
+            #[inline(always)]
+            fn aba_generic<T: Real>(q: &[T; $n], qd: &[T; $v], tau: &[T; $v]) -> ([T; $v], [T; $v]) {
+                $robot::forward_dynamics_generic(q, qd, tau)
             }
         });
     };
@@ -197,26 +231,6 @@ macro_rules! compiled {
                 $robot::forward_dynamics(q, qd, tau).unwrap()
             }
             $($f32)*
-            #[inline(always)]
-            fn gravity_generic<T: Real>(q: &[T; $n]) -> [T; $v] {
-                $robot::gravity_torques_generic(q)
-            }
-            #[inline(always)]
-            fn rnea_generic<T: Real>(q: &[T; $n], qd: &[T; $v], qdd: &[T; $v]) -> [T; $v] {
-                $robot::inverse_dynamics_generic(q, qd, qdd)
-            }
-            #[inline(always)]
-            fn nonlinear_generic<T: Real>(q: &[T; $n], qd: &[T; $v]) -> [T; $v] {
-                $robot::nonlinear_effects_generic(q, qd)
-            }
-            #[inline(always)]
-            fn crba_generic<T: Real>(q: &[T; $n]) -> [[T; $v]; $v] {
-                $robot::mass_matrix_generic(q)
-            }
-            #[inline(always)]
-            fn aba_generic<T: Real>(q: &[T; $n], qd: &[T; $v], tau: &[T; $v]) -> ([T; $v], [T; $v]) {
-                $robot::forward_dynamics_generic(q, qd, tau)
-            }
         }
     };
 }
@@ -718,6 +732,9 @@ fn robot<R: Compiled<N, V>, const N: usize, const V: usize>(
                 close(&ours32[i], &wanted[i], if i == 4 { 1e-3 } else { 1e-4 }, &what(&format!("{f} f32")));
             }
         }
+        if !R::LANES {
+            continue;
+        }
         let (i4, l4, i8, l8) = (k / 4, k % 4, k / 8, k % 8);
         let (a, b) = (&p4[i4], &p8[i8]);
         let lanes4 = [
@@ -758,20 +775,22 @@ fn robot<R: Compiled<N, V>, const N: usize, const V: usize>(
     if R::F32 {
         per_call(&mut g, "generated_f32", |k| R::gravity_f32(&s32[k].q));
     }
-    per_pack(
-        &mut g,
-        "f64x4",
-        4,
-        #[inline(always)]
-        |i| R::gravity_generic(&p4[i].q),
-    );
-    per_pack(
-        &mut g,
-        "f64x8",
-        8,
-        #[inline(always)]
-        |i| R::gravity_generic(&p8[i].q),
-    );
+    if R::LANES {
+        per_pack(
+            &mut g,
+            "f64x4",
+            4,
+            #[inline(always)]
+            |i| R::gravity_generic(&p4[i].q),
+        );
+        per_pack(
+            &mut g,
+            "f64x8",
+            8,
+            #[inline(always)]
+            |i| R::gravity_generic(&p8[i].q),
+        );
+    }
     per_call(&mut g, "reference", |k| reference.gravity_torques(&st[k].q).unwrap());
     if let Some((body, peer)) = &mut peer {
         peer.set(body, 0, [true, false, false, false]);
@@ -787,20 +806,22 @@ fn robot<R: Compiled<N, V>, const N: usize, const V: usize>(
     if R::F32 {
         per_call(&mut g, "generated_f32", |k| R::rnea_f32(&s32[k].q, &s32[k].qd, &s32[k].qdd));
     }
-    per_pack(
-        &mut g,
-        "f64x4",
-        4,
-        #[inline(always)]
-        |i| R::rnea_generic(&p4[i].q, &p4[i].qd, &p4[i].qdd),
-    );
-    per_pack(
-        &mut g,
-        "f64x8",
-        8,
-        #[inline(always)]
-        |i| R::rnea_generic(&p8[i].q, &p8[i].qd, &p8[i].qdd),
-    );
+    if R::LANES {
+        per_pack(
+            &mut g,
+            "f64x4",
+            4,
+            #[inline(always)]
+            |i| R::rnea_generic(&p4[i].q, &p4[i].qd, &p4[i].qdd),
+        );
+        per_pack(
+            &mut g,
+            "f64x8",
+            8,
+            #[inline(always)]
+            |i| R::rnea_generic(&p8[i].q, &p8[i].qd, &p8[i].qdd),
+        );
+    }
     per_call(&mut g, "reference", |k| reference.inverse_dynamics(&st[k].q, &st[k].qd, &st[k].qdd).unwrap());
     if let Some((body, peer)) = &mut peer {
         per_call(&mut g, "featherstone", |k| {
@@ -815,20 +836,22 @@ fn robot<R: Compiled<N, V>, const N: usize, const V: usize>(
     if R::F32 {
         per_call(&mut g, "generated_f32", |k| R::nonlinear_f32(&s32[k].q, &s32[k].qd));
     }
-    per_pack(
-        &mut g,
-        "f64x4",
-        4,
-        #[inline(always)]
-        |i| R::nonlinear_generic(&p4[i].q, &p4[i].qd),
-    );
-    per_pack(
-        &mut g,
-        "f64x8",
-        8,
-        #[inline(always)]
-        |i| R::nonlinear_generic(&p8[i].q, &p8[i].qd),
-    );
+    if R::LANES {
+        per_pack(
+            &mut g,
+            "f64x4",
+            4,
+            #[inline(always)]
+            |i| R::nonlinear_generic(&p4[i].q, &p4[i].qd),
+        );
+        per_pack(
+            &mut g,
+            "f64x8",
+            8,
+            #[inline(always)]
+            |i| R::nonlinear_generic(&p8[i].q, &p8[i].qd),
+        );
+    }
     per_call(&mut g, "reference", |k| reference.nonlinear_effects(&st[k].q, &st[k].qd).unwrap());
     if let Some((body, peer)) = &mut peer {
         peer.set(body, 0, [true, true, false, false]);
@@ -845,20 +868,22 @@ fn robot<R: Compiled<N, V>, const N: usize, const V: usize>(
     if R::F32 {
         per_call(&mut g, "generated_f32", |k| R::crba_f32(&s32[k].q));
     }
-    per_pack(
-        &mut g,
-        "f64x4",
-        4,
-        #[inline(always)]
-        |i| R::crba_generic(&p4[i].q),
-    );
-    per_pack(
-        &mut g,
-        "f64x8",
-        8,
-        #[inline(always)]
-        |i| R::crba_generic(&p8[i].q),
-    );
+    if R::LANES {
+        per_pack(
+            &mut g,
+            "f64x4",
+            4,
+            #[inline(always)]
+            |i| R::crba_generic(&p4[i].q),
+        );
+        per_pack(
+            &mut g,
+            "f64x8",
+            8,
+            #[inline(always)]
+            |i| R::crba_generic(&p8[i].q),
+        );
+    }
     per_call(&mut g, "reference", |k| reference.mass_matrix(&st[k].q).unwrap());
     if let Some((body, peer)) = &mut peer {
         per_call(&mut g, "featherstone", |k| {
@@ -873,20 +898,22 @@ fn robot<R: Compiled<N, V>, const N: usize, const V: usize>(
     if R::F32 {
         per_call(&mut g, "generated_f32", |k| R::aba_f32(&s32[k].q, &s32[k].qd, &s32[k].tau));
     }
-    per_pack(
-        &mut g,
-        "f64x4",
-        4,
-        #[inline(always)]
-        |i| R::aba_generic(&p4[i].q, &p4[i].qd, &p4[i].tau),
-    );
-    per_pack(
-        &mut g,
-        "f64x8",
-        8,
-        #[inline(always)]
-        |i| R::aba_generic(&p8[i].q, &p8[i].qd, &p8[i].tau),
-    );
+    if R::LANES {
+        per_pack(
+            &mut g,
+            "f64x4",
+            4,
+            #[inline(always)]
+            |i| R::aba_generic(&p4[i].q, &p4[i].qd, &p4[i].tau),
+        );
+        per_pack(
+            &mut g,
+            "f64x8",
+            8,
+            #[inline(always)]
+            |i| R::aba_generic(&p8[i].q, &p8[i].qd, &p8[i].tau),
+        );
+    }
     per_call(&mut g, "reference", |k| reference.forward_dynamics(&st[k].q, &st[k].qd, &st[k].tau).unwrap());
     if let Some((body, peer)) = &mut peer {
         per_call(&mut g, "featherstone", |k| {
