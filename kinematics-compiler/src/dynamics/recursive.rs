@@ -17,21 +17,21 @@ use crate::symbolic::transform::SymTransform;
 
 /// A spatial vector: angular part, then linear.
 #[derive(Debug, Clone, Copy)]
-struct Spatial {
-    angular: Vec3,
-    linear: Vec3,
+pub(super) struct Spatial {
+    pub(super) angular: Vec3,
+    pub(super) linear: Vec3,
 }
 
 impl Spatial {
-    fn zero(g: &mut ExprGraph) -> Self {
+    pub(super) fn zero(g: &mut ExprGraph) -> Self {
         Spatial { angular: algebra::zero(g), linear: algebra::zero(g) }
     }
 
-    fn add(self, g: &mut ExprGraph, other: Spatial) -> Self {
+    pub(super) fn add(self, g: &mut ExprGraph, other: Spatial) -> Self {
         Spatial { angular: add(g, self.angular, other.angular), linear: add(g, self.linear, other.linear) }
     }
 
-    fn sub(self, g: &mut ExprGraph, other: Spatial) -> Self {
+    pub(super) fn sub(self, g: &mut ExprGraph, other: Spatial) -> Self {
         let angular = std::array::from_fn(|i| g.sub(self.angular[i], other.angular[i]));
         let linear = std::array::from_fn(|i| g.sub(self.linear[i], other.linear[i]));
         Spatial { angular, linear }
@@ -39,7 +39,7 @@ impl Spatial {
 }
 
 /// A motion vector of the parent's frame in `body`'s frame.
-fn motion_down(g: &mut ExprGraph, body: &Body, m: Spatial) -> Spatial {
+pub(super) fn motion_down(g: &mut ExprGraph, body: &Body, m: Spatial) -> Spatial {
     let t = &body.transform;
     let angular = mat_t_vec(g, &t.r, m.angular);
     let arm = cross(g, m.angular, t.p);
@@ -48,12 +48,12 @@ fn motion_down(g: &mut ExprGraph, body: &Body, m: Spatial) -> Spatial {
 }
 
 /// A force in `body`'s frame in its parent's frame.
-fn force_up(g: &mut ExprGraph, body: &Body, f: Spatial) -> Spatial {
+pub(super) fn force_up(g: &mut ExprGraph, body: &Body, f: Spatial) -> Spatial {
     force_out_of(g, &body.transform, f)
 }
 
 /// A force in the frame `t` (a frame placed in another by `t`) in that other frame.
-fn force_out_of(g: &mut ExprGraph, t: &SymTransform, f: Spatial) -> Spatial {
+pub(super) fn force_out_of(g: &mut ExprGraph, t: &SymTransform, f: Spatial) -> Spatial {
     let linear = mat_vec(g, &t.r, f.linear);
     let turned = mat_vec(g, &t.r, f.angular);
     let moment = cross(g, t.p, linear);
@@ -61,7 +61,7 @@ fn force_out_of(g: &mut ExprGraph, t: &SymTransform, f: Spatial) -> Spatial {
 }
 
 /// A motion's direction as a spatial vector of constants, times `k`.
-fn direction(g: &mut ExprGraph, motion: &Motion, k: ExprId) -> Spatial {
+pub(super) fn direction(g: &mut ExprGraph, motion: &Motion, k: ExprId) -> Spatial {
     let angular = motion.angular.map(|x| {
         let x = g.constant(x);
         g.mul(x, k)
@@ -83,7 +83,11 @@ fn project(g: &mut ExprGraph, motion: &Motion, f: Spatial) -> ExprId {
 }
 
 /// The joint's own velocity (or acceleration) from per-velocity values `x` (`None`: zero).
-fn joint_motion(g: &mut ExprGraph, body: &Body, x: &dyn Fn(&mut ExprGraph, usize) -> Option<ExprId>) -> Spatial {
+pub(super) fn joint_motion(
+    g: &mut ExprGraph,
+    body: &Body,
+    x: &dyn Fn(&mut ExprGraph, usize) -> Option<ExprId>,
+) -> Spatial {
     let mut sum = Spatial::zero(g);
     for motion in &body.motions {
         if let Some(value) = x(g, motion.column) {
@@ -97,7 +101,7 @@ fn joint_motion(g: &mut ExprGraph, body: &Body, x: &dyn Fn(&mut ExprGraph, usize
 }
 
 /// A rigid body's force for acceleration `a` (the inertia times `a`).
-fn inertia_times(g: &mut ExprGraph, inertia: &Inertia, a: Spatial) -> Spatial {
+pub(super) fn inertia_times(g: &mut ExprGraph, inertia: &Inertia, a: Spatial) -> Spatial {
     let (h, m) = (inertia.first_moment, inertia.mass);
     let i_a = sym_vec(g, &inertia.rotational, a.angular);
     let h_a = cross(g, h, a.linear);
@@ -107,14 +111,14 @@ fn inertia_times(g: &mut ExprGraph, inertia: &Inertia, a: Spatial) -> Spatial {
 }
 
 /// `v x* f`, the spatial force cross product.
-fn cross_force(g: &mut ExprGraph, v: Spatial, f: Spatial) -> Spatial {
+pub(super) fn cross_force(g: &mut ExprGraph, v: Spatial, f: Spatial) -> Spatial {
     let wn = cross(g, v.angular, f.angular);
     let vf = cross(g, v.linear, f.linear);
     Spatial { angular: add(g, wn, vf), linear: cross(g, v.angular, f.linear) }
 }
 
 /// `v x m`, the spatial motion cross product.
-fn cross_motion(g: &mut ExprGraph, v: Spatial, m: Spatial) -> Spatial {
+pub(super) fn cross_motion(g: &mut ExprGraph, v: Spatial, m: Spatial) -> Spatial {
     let wv = cross(g, v.angular, m.linear);
     let vw = cross(g, v.linear, m.angular);
     Spatial { angular: cross(g, v.angular, m.angular), linear: add(g, wv, vw) }
