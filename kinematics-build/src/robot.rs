@@ -801,8 +801,15 @@ mod tests {
             let flat = |s: &str| s.split_whitespace().collect::<String>().replace(",)", ")");
             assert!(flat(&source).contains(&flat(expected)), "missing `{expected}` in\n{source}");
         }
-        // Rates and inputs take no batch.
-        assert!(!source.contains("fn inverse_dynamics_batch") && !source.contains("fn forward_dynamics_batch"));
+        // Functions of rates take a batch of rows of each argument, and no columns form.
+        for expected in [
+            "pub fn inverse_dynamics_batch(qs: &[[f64; 6]], qds: &[[f64; 6]], qdds: &[[f64; 6]], out: &mut [[f64; 6]])",
+            "pub fn forward_dynamics_batch_f32(qs: &[[f32; 6]], qds: &[[f32; 6]], taus: &[[f32; 6]], out: &mut [[f32; 6]])",
+        ] {
+            let flat = |s: &str| s.split_whitespace().collect::<String>().replace(",)", ")");
+            assert!(flat(&source).contains(&flat(expected)), "missing `{expected}`");
+        }
+        assert!(!source.contains("fn inverse_dynamics_batch_columns"));
         // The default gravity, and another one given: the constants differ, nothing else is asked.
         let default = ur5().dynamics().generate().unwrap();
         assert_eq!(default, ur5().gravity([0.0, 0.0, -9.81]).generate().unwrap());
