@@ -505,6 +505,12 @@ mod tests {
     }
 
     /// Whether `e` is exactly one option fault, set by `method`, of a kind `is` accepts.
+    /// Code as tokens, whatever the lines prettyplease breaks it into: no whitespace, and no final
+    /// comma of a signature written over several lines.
+    fn bare(text: &str) -> String {
+        text.split_whitespace().collect::<String>().replace(",)", ")")
+    }
+
     fn one_fault(e: &BuildError, method: &str, is: fn(&FaultKind) -> bool) -> bool {
         matches!(e, BuildError::Options { faults, .. } if matches!(faults.as_slice(), [CallFault { method: m, fault }] if *m == method && is(&fault.kind)))
     }
@@ -758,8 +764,6 @@ mod tests {
     fn forces_write_their_functions_and_name_the_link_at_fault() {
         let ur5 =
             || Robot::urdf("ur5.urdf").manifest_dir(std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../robots"));
-        // Without whitespace (a long signature is written over several lines, with a final comma).
-        let bare = |text: &str| text.split_whitespace().collect::<String>().replace(",)", ")");
         let source = bare(&ur5().forces(["tool0", "forearm_link"]).generate().unwrap());
         for signature in [
             "pub const FORCE_LINKS: [&'static str; 2] = [\"tool0\", \"forearm_link\"];",
@@ -797,17 +801,14 @@ mod tests {
             "pub fn forward_dynamics(q: &[f64; 6], qd: &[f64; 6], tau: &[f64; 6])",
             "pub fn forward_dynamics_f32(q: &[f32; 6], qd: &[f32; 6], tau: &[f32; 6])",
         ] {
-            // Signatures as tokens, whatever the lines prettyplease breaks them into.
-            let flat = |s: &str| s.split_whitespace().collect::<String>().replace(",)", ")");
-            assert!(flat(&source).contains(&flat(expected)), "missing `{expected}` in\n{source}");
+            assert!(bare(&source).contains(&bare(expected)), "missing `{expected}` in\n{source}");
         }
         // Functions of rates take a batch of rows of each argument, and no columns form.
         for expected in [
             "pub fn inverse_dynamics_batch(qs: &[[f64; 6]], qds: &[[f64; 6]], qdds: &[[f64; 6]], out: &mut [[f64; 6]])",
             "pub fn forward_dynamics_batch_f32(qs: &[[f32; 6]], qds: &[[f32; 6]], taus: &[[f32; 6]], out: &mut [[f32; 6]])",
         ] {
-            let flat = |s: &str| s.split_whitespace().collect::<String>().replace(",)", ")");
-            assert!(flat(&source).contains(&flat(expected)), "missing `{expected}`");
+            assert!(bare(&source).contains(&bare(expected)), "missing `{expected}`");
         }
         assert!(!source.contains("fn inverse_dynamics_batch_columns"));
         // The default gravity, and another one given: the constants differ, nothing else is asked.
