@@ -522,11 +522,10 @@ impl<L: Lanes, O: LaneValue<L>> Unpack<L, O, O::Scalar> for Write {
 /// Another unpacking behind a fence: the pack's value is in memory (a `black_box` of it, as the
 /// collision tables' `fence`) before its lanes are taken, so the compiler interleaves nothing of
 /// the body with the lane-by-lane writes. Without it LLVM left inverse dynamics' body in scalar
-/// pieces. Measured in a scratch harness (1,024 configurations, `F64x8` under AVX-512, shared
-/// 2-core EPYC, 2026-12): the Panda's `inverse_dynamics_batch` 190 ns a configuration unfenced,
-/// 38 fenced, its body alone on the same lanes 29; `nonlinear_effects_batch` 173 and 34;
-/// the UR5's `tip_twist_batch` 14.8 and 10.6; `forward_dynamics_batch` 55 either way. The
-/// batches of `q` alone keep their unfenced [`Write`].
+/// pieces, and the Panda's `inverse_dynamics_batch` took longer per configuration than calling
+/// `inverse_dynamics` in a loop (seen in the disassembly and a harness outside the tree; no
+/// committed benchmark times the unfenced form). The batches of `q` alone keep their unfenced
+/// [`Write`].
 pub(crate) struct Fenced<U>(pub(crate) U);
 
 impl<L: Lanes, O, T, U: Unpack<L, O, T>> Unpack<L, O, T> for Fenced<U> {

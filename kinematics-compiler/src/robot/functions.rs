@@ -82,53 +82,7 @@ impl Functions {
                         #sig { #p::dispatch(#[inline(always)] || #g(q)) }
                     }
                 }
-                // A function of several inputs (`q` and the rates): a slice of each, packed
-                // together (`batch_inputs`); forward dynamics checks each configuration's pivots
-                // as its typed function does (`accelerations_batch`).
-                Form::Batch(scalar) if rates => {
-                    let ScalarType { suffix, lanes, wide, .. } = &scalar;
-                    let typed = format_ident!("{}{suffix}", output.name(cx.one));
-                    let names = output.inputs();
-                    let arguments: Vec<_> = names.iter().map(|name| format_ident!("{name}")).collect();
-                    let slices: Vec<_> = names.iter().map(|name| Output::batch_name(name)).collect();
-                    let slice_idents = slices.iter().map(|slice| format_ident!("{slice}"));
-                    let inputs = quote!((#(#p::Input::new(#slices, #slice_idents)),*));
-                    let body = quote!(#[inline(always)] |(#(#arguments),*)| #g(#(#arguments),*));
-                    let listed = match slices.as_slice() {
-                        [rest @ .., last] => format!(
-                            "{} and `{last}`",
-                            rest.iter().map(|s| format!("`{s}`")).collect::<Vec<_>>().join(", ")
-                        ),
-                        [] => String::new(),
-                    };
-                    let lanes_doc = scalar.lanes_doc();
-                    let mut many = format!(
-                        "[`Self::{typed}`] for every configuration, row `i` of {listed} into `out[i]`, in SIMD lanes \
-                         ({lanes_doc}). An input of another length than `out` is an error naming it, and nothing is \
-                         written."
-                    );
-                    let call = if forward {
-                        many.push_str(&format!(
-                            " Otherwise every configuration is computed and written: one that [`Self::{typed}`] \
-                             refuses (a singular mass matrix, a value that is not finite) as NaN in every entry, and \
-                             the error names the first of them and its index (`SingularMassMatrixInBatch`, \
-                             `NotFiniteInBatch`); the others hold what [`Self::{typed}`] returns."
-                        ));
-                        let nv = cx.render.velocities();
-                        quote! {
-                            #p::dynamics::accelerations_batch::<#lanes, #wide, _, #nv>(
-                                Self::ROBOT, &Self::VELOCITY_NAMES, #inputs, out, #body, #body,
-                            )
-                        }
-                    } else {
-                        quote!(#p::batch_inputs::<#lanes, #wide, _, _, _>(Self::ROBOT, #inputs, out, #body, #body))
-                    };
-                    quote! {
-                        #[doc = #many]
-                        #[inline]
-                        #sig { #call }
-                    }
-                }
+                Form::Batch(scalar) if rates => rate_batch(cx, output, &scalar, &sig, &g),
                 Form::Batch(scalar) => {
                     let ScalarType { suffix, lanes, wide, .. } = &scalar;
                     let typed = format_ident!("{}{suffix}", output.name(cx.one));
@@ -193,5 +147,60 @@ impl Functions {
             };
             self.typed.push(item);
         }
+    }
+}
+
+/// The batch of a function of several inputs (`q` and the rates, and `qdd`, `tau` or `forces`): a
+/// slice of each, packed together (`batch_inputs`); forward dynamics checks each configuration's
+/// pivots as its typed function does (`accelerations_batch`).
+fn rate_batch(
+    cx: &Context<'_>,
+    output: Output,
+    scalar: &ScalarType,
+    sig: &TokenStream,
+    g: &proc_macro2::Ident,
+) -> TokenStream {
+    let p = &cx.p;
+    let forward = output.is_forward();
+    let ScalarType { suffix, lanes, wide, .. } = scalar;
+    let typed = format_ident!("{}{suffix}", output.name(cx.one));
+    let names = output.inputs();
+    let arguments: Vec<_> = names.iter().map(|name| format_ident!("{name}")).collect();
+    let slices: Vec<_> = names.iter().map(|name| Output::batch_name(name)).collect();
+    let slice_idents = slices.iter().map(|slice| format_ident!("{slice}"));
+    let inputs = quote!((#(#p::Input::new(#slices, #slice_idents)),*));
+    let body = quote!(#[inline(always)] |(#(#arguments),*)| #g(#(#arguments),*));
+    let listed = match slices.as_slice() {
+        [rest @ .., last] => {
+            format!("{} and `{last}`", rest.iter().map(|s| format!("`{s}`")).collect::<Vec<_>>().join(", "))
+        }
+        [] => String::new(),
+    };
+    let lanes_doc = scalar.lanes_doc();
+    let mut many = format!(
+        "[`Self::{typed}`] for every configuration, row `i` of {listed} into `out[i]`, in SIMD lanes \
+             ({lanes_doc}). An input of another length than `out` is an error naming it, and nothing is \
+             written."
+    );
+    let call = if forward {
+        many.push_str(&format!(
+            " Otherwise every configuration is computed and written: one that [`Self::{typed}`] \
+                 refuses (a singular mass matrix, a value that is not finite) as NaN in every entry, and \
+                 the error names the first of them and its index (`SingularMassMatrixInBatch`, \
+                 `NotFiniteInBatch`); the others hold what [`Self::{typed}`] returns."
+        ));
+        let nv = cx.render.velocities();
+        quote! {
+            #p::dynamics::accelerations_batch::<#lanes, #wide, _, #nv>(
+                Self::ROBOT, &Self::VELOCITY_NAMES, #inputs, out, #body, #body,
+            )
+        }
+    } else {
+        quote!(#p::batch_inputs::<#lanes, #wide, _, _, _>(Self::ROBOT, #inputs, out, #body, #body))
+    };
+    quote! {
+        #[doc = #many]
+        #[inline]
+        #sig { #call }
     }
 }
